@@ -1,0 +1,254 @@
+"""Exact geometric predicates on float (or int) coordinates.
+
+Every decision that depends on a sign goes through this module. Each predicate
+first tries a float evaluation guarded by a rigorous error bound and falls back
+to exact rational arithmetic (:class:`fractions.Fraction`, exact for every
+finite float) when the float result cannot be trusted.
+
+Examples
+--------
+>>> orient((0, 0), (1, 0), (0, 1))
+1
+>>> orient((0.5, 0.5), (12, 12), (24, 24))
+0
+>>> in_triangle((0, 0), (0, 0), (2, 0), (0, 2))
+True
+>>> in_triangle((0, 0), (0, 0), (2, 0), (0, 2), closed=False)
+False
+"""
+
+from __future__ import annotations
+
+import sys
+from enum import Enum
+from fractions import Fraction
+
+Point = tuple[float, float]
+
+_EPS = sys.float_info.epsilon / 2  # unit round-off, 2**-53
+# Shewchuk's bound for the 2-D orientation determinant.
+_ORIENT_BOUND = (3.0 + 16.0 * _EPS) * _EPS
+# Below this magnitude products may have underflowed: trust nothing, go exact.
+_TINY = 2.0**-900
+# Relative bound for sums of a few products (distances, dot products).
+_LOOSE_BOUND = 1e-12
+
+
+def _sign(x: float | Fraction) -> int:
+    return (x > 0) - (x < 0)
+
+
+def orient_det(a: Point, b: Point, c: Point) -> Fraction:
+    """Exact value of the orientation determinant (twice the signed area of abc).
+
+    >>> orient_det((0, 0), (2, 0), (0, 1))
+    Fraction(2, 1)
+    """
+    ax, ay = Fraction(a[0]), Fraction(a[1])
+    return (Fraction(b[0]) - ax) * (Fraction(c[1]) - ay) - (Fraction(b[1]) - ay) * (
+        Fraction(c[0]) - ax
+    )
+
+
+def orient(a: Point, b: Point, c: Point) -> int:
+    """Sign of the turn a → b → c: 1 left (counter-clockwise), -1 right, 0 collinear.
+
+    Exact for every finite float input: a filtered float evaluation, then
+    exact rational arithmetic when the float sign is not certain.
+
+    >>> orient((0, 0), (1, 1e-17), (2, 0))
+    -1
+    """
+    left = (a[0] - c[0]) * (b[1] - c[1])
+    right = (a[1] - c[1]) * (b[0] - c[0])
+    det = left - right
+    bound = _ORIENT_BOUND * (abs(left) + abs(right)) + _TINY
+    if det > bound:
+        return 1
+    if -det > bound:
+        return -1
+    return _sign(orient_det(a, b, c))
+
+
+def _exact_sign_of_difference(x: float, y: float, exact) -> int:
+    """Sign of x - y for float approximations x, y of sums of a few products."""
+    diff = x - y
+    bound = _LOOSE_BOUND * (abs(x) + abs(y)) + _TINY
+    if diff > bound:
+        return 1
+    if -diff > bound:
+        return -1
+    return exact()
+
+
+def squared_distance(p: Point, q: Point) -> Fraction:
+    """Exact squared distance between p and q."""
+    dx = Fraction(p[0]) - Fraction(q[0])
+    dy = Fraction(p[1]) - Fraction(q[1])
+    return dx * dx + dy * dy
+
+
+def compare_distance(origin: Point, p: Point, q: Point) -> int:
+    """Sign of |origin p| − |origin q|, exactly.
+
+    >>> compare_distance((0, 0), (3, 4), (5, 0))
+    0
+    >>> compare_distance((0, 0), (1, 0), (0, 2))
+    -1
+    """
+    dp = (p[0] - origin[0]) ** 2 + (p[1] - origin[1]) ** 2
+    dq = (q[0] - origin[0]) ** 2 + (q[1] - origin[1]) ** 2
+    return _exact_sign_of_difference(
+        dp, dq, lambda: _sign(squared_distance(origin, p) - squared_distance(origin, q))
+    )
+
+
+def compare_line_distance(a: Point, b: Point, p: Point, q: Point) -> int:
+    """Sign of dist(p, line ab) − dist(q, line ab), exactly.
+
+    >>> compare_line_distance((0, 0), (1, 0), (5, 2), (-7, -2))
+    0
+    >>> compare_line_distance((0, 0), (1, 0), (5, 1), (0, 3))
+    -1
+    """
+    dp = abs(orient_det(a, b, p))
+    dq = abs(orient_det(a, b, q))
+    return _sign(dp - dq)
+
+
+def _cos_key(apex: Point, ref: Point, p: Point) -> Fraction:
+    """sign(cos θ)·cos²θ·|ref−apex|², θ = angle ref–apex–p; monotone decreasing in θ ∈ [0, π]."""
+    ux, uy = Fraction(ref[0]) - Fraction(apex[0]), Fraction(ref[1]) - Fraction(apex[1])
+    vx, vy = Fraction(p[0]) - Fraction(apex[0]), Fraction(p[1]) - Fraction(apex[1])
+    dot = ux * vx + uy * vy
+    return _sign(dot) * dot * dot / (vx * vx + vy * vy)
+
+
+def compare_angle(apex: Point, ref: Point, p: Point, q: Point) -> int:
+    """Sign of angle(ref, apex, p) − angle(ref, apex, q), both unsigned in [0, π].
+
+    Exact: compares cosines without square roots or ``acos``.
+
+    >>> compare_angle((0, 0), (1, 0), (1, 1), (0, 1))
+    -1
+    >>> compare_angle((0, 0), (1, 0), (2, 2), (1, 1))
+    0
+    """
+    if p == apex or q == apex:
+        raise ValueError("angle at apex is undefined for a point equal to the apex")
+    # Larger cosine means smaller angle.
+    return _sign(_cos_key(apex, ref, q) - _cos_key(apex, ref, p))
+
+
+def in_triangle(p: Point, a: Point, b: Point, c: Point, *, closed: bool = True) -> bool:
+    """Whether p lies in triangle abc (either orientation); closed includes the boundary.
+
+    >>> in_triangle((1, 0), (0, 0), (2, 0), (0, 2))
+    True
+    """
+    turn = orient(a, b, c)
+    if turn == 0:
+        raise ValueError("triangle is degenerate")
+    s1 = orient(a, b, p) * turn
+    s2 = orient(b, c, p) * turn
+    s3 = orient(c, a, p) * turn
+    if closed:
+        return s1 >= 0 and s2 >= 0 and s3 >= 0
+    return s1 > 0 and s2 > 0 and s3 > 0
+
+
+def _between(p: Point, a: Point, b: Point) -> bool:
+    """For p collinear with ab: whether p lies in the closed box of ab."""
+    return min(a[0], b[0]) <= p[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= p[1] <= max(
+        a[1], b[1]
+    )
+
+
+def on_segment(p: Point, a: Point, b: Point) -> bool:
+    """Whether p lies on the closed segment ab.
+
+    >>> on_segment((1, 1), (0, 0), (3, 3))
+    True
+    >>> on_segment((4, 4), (0, 0), (3, 3))
+    False
+    """
+    return orient(a, b, p) == 0 and _between(p, a, b)
+
+
+class Contact(Enum):
+    """How two closed segments meet."""
+
+    NONE = "none"
+    PROPER = "proper"  # interiors cross at one point
+    TOUCH = "touch"  # they meet at a point that is an endpoint of at least one
+    OVERLAP = "overlap"  # collinear and sharing more than one point
+
+
+def segment_contact(a: Point, b: Point, c: Point, d: Point) -> Contact:
+    """Classify how segments ab and cd meet, exactly.
+
+    >>> segment_contact((0, 0), (2, 2), (0, 2), (2, 0))
+    <Contact.PROPER: 'proper'>
+    >>> segment_contact((0, 0), (2, 0), (2, 0), (3, 5))
+    <Contact.TOUCH: 'touch'>
+    >>> segment_contact((0, 0), (2, 0), (1, 0), (3, 0))
+    <Contact.OVERLAP: 'overlap'>
+    >>> segment_contact((0, 0), (1, 0), (2, 0), (3, 0))
+    <Contact.NONE: 'none'>
+    """
+    o1, o2 = orient(a, b, c), orient(a, b, d)
+    o3, o4 = orient(c, d, a), orient(c, d, b)
+    if o1 == o2 == 0:
+        return _collinear_contact(a, b, c, d)
+    if o1 * o2 < 0 and o3 * o4 < 0:
+        return Contact.PROPER
+    touching = (
+        (o1 == 0 and _between(c, a, b))
+        or (o2 == 0 and _between(d, a, b))
+        or (o3 == 0 and _between(a, c, d))
+        or (o4 == 0 and _between(b, c, d))
+    )
+    return Contact.TOUCH if touching else Contact.NONE
+
+
+def _collinear_contact(a: Point, b: Point, c: Point, d: Point) -> Contact:
+    # Project on the dominant axis; float comparisons of coordinates are exact.
+    axis = 0 if a[0] != b[0] or c[0] != d[0] else 1
+    lo1, hi1 = sorted((a[axis], b[axis]))
+    lo2, hi2 = sorted((c[axis], d[axis]))
+    lo, hi = max(lo1, lo2), min(hi1, hi2)
+    if lo > hi:
+        return Contact.NONE
+    return Contact.TOUCH if lo == hi else Contact.OVERLAP
+
+
+def intersection_point(a: Point, b: Point, c: Point, d: Point) -> Point:
+    """Intersection of the lines ab and cd, computed exactly and then rounded to floats.
+
+    >>> intersection_point((0, 0), (2, 2), (0, 2), (2, 0))
+    (1.0, 1.0)
+    """
+    d1 = orient_det(c, d, a)
+    d2 = orient_det(c, d, b)
+    if d1 == d2:
+        raise ValueError("lines are parallel")
+    t = d1 / (d1 - d2)
+    ax, ay = Fraction(a[0]), Fraction(a[1])
+    x = ax + t * (Fraction(b[0]) - ax)
+    y = ay + t * (Fraction(b[1]) - ay)
+    return (float(x), float(y))
+
+
+def signed_area2(points: list[Point] | tuple[Point, ...]) -> Fraction:
+    """Exact twice-signed area of a closed ring (positive when counter-clockwise).
+
+    >>> signed_area2([(0, 0), (1, 0), (0, 1)])
+    Fraction(1, 1)
+    """
+    total = Fraction(0)
+    n = len(points)
+    for i in range(n):
+        x1, y1 = points[i]
+        x2, y2 = points[(i + 1) % n]
+        total += Fraction(x1) * Fraction(y2) - Fraction(x2) * Fraction(y1)
+    return total
