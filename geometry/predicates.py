@@ -96,8 +96,8 @@ def compare_distance(origin: Point, p: Point, q: Point) -> int:
     >>> compare_distance((0, 0), (1, 0), (0, 2))
     -1
     """
-    dp = (p[0] - origin[0]) ** 2 + (p[1] - origin[1]) ** 2
-    dq = (q[0] - origin[0]) ** 2 + (q[1] - origin[1]) ** 2
+    px, py, qx, qy = p[0] - origin[0], p[1] - origin[1], q[0] - origin[0], q[1] - origin[1]
+    dp, dq = px * px + py * py, qx * qx + qy * qy  # inf on overflow, then exact
     return _exact_sign_of_difference(
         dp, dq, lambda: _sign(squared_distance(origin, p) - squared_distance(origin, q))
     )

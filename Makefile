@@ -1,0 +1,51 @@
+# The two commands of the README do all set-up: `make demo` and `make test`.
+# Both are idempotent: the venv is rebuilt only when pyproject.toml changes.
+
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed
+# Debian packages manim needs to build pycairo/manimpango, the font the theme uses,
+# and xdg-open (manim's preview crashes after rendering without it).
+DEB_PACKAGES := libpango1.0-dev pkg-config fonts-dejavu-core xdg-utils
+
+.PHONY: demo test lint system-deps bench clean
+
+demo: $(STAMP)
+	$(BIN)/manim -ql --disable_caching scenes/polygon.py PolygonScene
+	@echo "video: $(CURDIR)/media/videos/polygon/480p15/PolygonScene.mp4"
+
+test: $(STAMP)
+	$(BIN)/ruff check .
+	$(BIN)/python -m pytest
+
+lint: $(STAMP)
+	$(BIN)/ruff check .
+
+bench: $(STAMP)
+	$(BIN)/pip install -q -e ".[bench]"
+	$(BIN)/python bench/trace_overhead.py
+
+$(STAMP): pyproject.toml | system-deps
+	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install -q --upgrade pip
+	$(BIN)/python -m pip install -q -e ".[test,bench]"
+	touch $(STAMP)
+
+system-deps:
+	@missing=""; \
+	pkg-config --exists pangocairo 2>/dev/null || missing="$$missing libpango1.0-dev pkg-config"; \
+	test -e /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf || missing="$$missing fonts-dejavu-core"; \
+	command -v xdg-open >/dev/null || missing="$$missing xdg-utils"; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "installing Debian packages:$$missing"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(DEB_PACKAGES); \
+	  else \
+	    echo "missing system packages; run:  sudo apt-get install -y --no-install-recommends $(DEB_PACKAGES)"; \
+	    exit 1; \
+	  fi; \
+	fi
+
+clean:
+	rm -rf $(VENV) media/videos media/images media/texts media/Tex

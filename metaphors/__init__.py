@@ -1,0 +1,1 @@
+"""Manim side: theme, the algorithm panel, one module per metaphor, the storyboard."""

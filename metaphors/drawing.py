@@ -1,0 +1,76 @@
+"""Mobjects for the geometry: a polygon with labelled vertices, triangles, fitting into a frame."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+from manim import DOWN, Dot, Text, VGroup
+from manim import Polygon as MPolygon
+
+from geometry.polygon import Polygon
+from metaphors.theme import THEME, Theme
+
+
+class Frame:
+    """Maps polygon coordinates into a box of the Manim scene (uniform scale, centred).
+
+    >>> f = Frame([(0, 0), (4, 0), (4, 2)], center=(0, 0), width=4, height=4)
+    >>> f.to_scene((4, 2)).tolist()
+    [2.0, 1.0, 0.0]
+    """
+
+    def __init__(self, points: Sequence[tuple[float, float]], center, width: float, height: float):
+        arr = np.asarray(points, dtype=float)
+        lo, hi = arr.min(axis=0), arr.max(axis=0)
+        span = np.maximum(hi - lo, 1e-12)
+        self.scale = float(min(width / span[0], height / span[1]))
+        self.mid = (lo + hi) / 2
+        self.center = np.array([center[0], center[1], 0.0])
+
+    def to_scene(self, p: Sequence[float]) -> np.ndarray:
+        x, y = (np.asarray(p[:2], dtype=float) - self.mid) * self.scale
+        return self.center + np.array([x, y, 0.0])
+
+    def many(self, points: Sequence[Sequence[float]]) -> list[np.ndarray]:
+        return [self.to_scene(p) for p in points]
+
+
+def polygon_mobject(polygon: Polygon, frame: Frame, theme: Theme = THEME) -> MPolygon:
+    """The polygon's outline with a light fill."""
+    return MPolygon(
+        *frame.many(polygon.points),
+        color=theme.ink,
+        stroke_width=theme.stroke,
+        fill_color=theme.polygon_fill,
+        fill_opacity=theme.fill_opacity,
+    )
+
+
+def vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME) -> VGroup:
+    """A dot and a label per vertex; the label sits outside the polygon, away from its centre."""
+    centre = np.mean(frame.many(polygon.points), axis=0)
+    group = VGroup()
+    for point, label in zip(polygon.points, polygon.labels, strict=True):
+        at = frame.to_scene(point)
+        away = at - centre
+        norm = np.linalg.norm(away)
+        direction = away / norm if norm > 1e-9 else DOWN
+        dot = Dot(at, radius=theme.dot_radius, color=theme.ink)
+        text = Text(label, font=theme.font, font_size=theme.label_size, color=theme.ink)
+        text.move_to(at + direction * 0.32)
+        group.add(VGroup(dot, text))
+    return group
+
+
+def triangle_mobject(
+    polygon: Polygon, tri: Sequence[int], frame: Frame, colour, theme: Theme = THEME
+) -> MPolygon:
+    """One triangle of a triangulation, filled in the given colour."""
+    return MPolygon(
+        *frame.many([polygon.points[k] for k in tri]),
+        color=colour,
+        stroke_width=theme.thin_stroke,
+        fill_color=colour,
+        fill_opacity=theme.fill_opacity,
+    )

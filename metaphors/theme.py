@@ -1,0 +1,48 @@
+"""Colours by role, fonts, stroke widths and sizes: the only place they are written.
+
+Roles follow the seed's viewer: the object a call runs on is blue, its
+arguments amber while the call runs, the result green, a rejected object red,
+everything idle grey.
+
+>>> THEME.role_colour("result") == THEME.result
+True
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+ROLES = ("called", "argument", "result", "rejected", "idle")
+
+
+@dataclass(frozen=True)
+class Theme:
+    """Everything visual a scene needs besides geometry (colours as hex strings manim reads)."""
+
+    background: str = "#10141c"
+    called: str = "#4f8ff7"
+    argument: str = "#f2b134"
+    result: str = "#4cc46b"
+    rejected: str = "#ef4b4b"
+    idle: str = "#8a93a3"
+    ink: str = "#e8ecf2"
+    polygon_fill: str = "#2a3a55"
+    water: str = "#3aa0ff"
+    font: str = "DejaVu Sans"
+    mono_font: str = "DejaVu Sans Mono"
+    stroke: float = 3.0
+    thin_stroke: float = 1.5
+    dot_radius: float = 0.06
+    label_size: int = 22
+    caption_size: int = 26
+    title_size: int = 40
+    fill_opacity: float = 0.35
+
+    def role_colour(self, role: str) -> str:
+        """Colour of a role name (one of :data:`ROLES`)."""
+        if role not in ROLES:
+            raise ValueError(f"unknown role {role!r}; expected one of {', '.join(ROLES)}")
+        return getattr(self, role)
+
+
+THEME = Theme()
