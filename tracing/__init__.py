@@ -1,0 +1,48 @@
+"""The shared logger: record real runs of algorithms as JSON-serialisable event logs.
+
+Standard library only. Open a recording with :func:`record`; decorate the algorithm's
+functions with :func:`traced` and classes with :func:`traced_class`; make the objects
+to draw :class:`Traceable` (or use :class:`Shape`) and mark their lifetimes with
+:func:`enter` / :func:`change` / :func:`exit` or ``with``. With no recording open,
+all of it is a cheap no-op. The log format is described in ``docs/log-format.md``.
+
+Examples
+--------
+>>> import tracing
+>>> @tracing.traced
+... def halve(n):
+...     return n // 2
+>>> with tracing.record(algorithm="demo") as log:
+...     halve(10)
+5
+>>> [(e.seq, e.kind, e.name, e.args, e.result) for e in log.events]
+[(0, 'call', 'halve', {'n': 10}, None), (1, 'return', 'halve', None, 5)]
+>>> tracing.Log.from_json(log.to_json()) == log
+True
+"""
+
+from tracing.decorators import traced, traced_class
+from tracing.encoding import Traceable, encode
+from tracing.events import EVENT_KINDS, SCHEMA, Event, Log
+from tracing.recorder import Recording, alive, change, enter, exit, note, record
+from tracing.shapes import SHAPE_KINDS, Shape
+
+__all__ = [
+    "EVENT_KINDS",
+    "SCHEMA",
+    "SHAPE_KINDS",
+    "Event",
+    "Log",
+    "Recording",
+    "Shape",
+    "Traceable",
+    "alive",
+    "change",
+    "encode",
+    "enter",
+    "exit",
+    "note",
+    "record",
+    "traced",
+    "traced_class",
+]
