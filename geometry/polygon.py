@@ -73,6 +73,22 @@ def _ccw_order(points: list[Point]) -> list[int]:
     return [(start + step * k) % n for k in range(n)]
 
 
+@dataclass(frozen=True)
+class Vertex:
+    """A vertex as the algorithms speak of it: index, label, point (traceable by its label)."""
+
+    index: int
+    label: str
+    point: Point
+
+    @property
+    def trace_key(self) -> str:
+        return self.label
+
+    def trace_state(self) -> dict:
+        return {"kind": "point", "at": list(self.point), "label": self.label}
+
+
 @dataclass(frozen=True, eq=False)
 class Polygon:
     """A simple polygon, counter-clockwise, with labelled vertices.
@@ -119,6 +135,23 @@ class Polygon:
             source=tuple(self.source[i] for i in indices),
             input_clockwise=self.input_clockwise,
         )
+
+    def vertex(self, i: int) -> Vertex:
+        return Vertex(i, self.labels[i], self.points[i])
+
+    @property
+    def trace_key(self) -> str:
+        """``P(ABCDE)``; long polygons are named by their first and last labels and size."""
+        if self.n <= 16:
+            return f"P({''.join(self.labels)})"
+        return f"P({''.join(self.labels[:3])}…{''.join(self.labels[-3:])}, n={self.n})"
+
+    def trace_state(self) -> dict:
+        return {
+            "kind": "polygon",
+            "points": [list(p) for p in self.points],
+            "labels": list(self.labels),
+        }
 
     def __len__(self) -> int:
         return len(self.points)

@@ -1,0 +1,277 @@
+"""The inner-diagonal heuristics of the thesis (ch. 2.1), wrong and correct, all traced.
+
+Frame shared by the triangle heuristics: B = the left-most vertex (lowest on
+ties), A and C its neighbours, T = the closed triangle ABC. Candidates are the
+other vertices lying in T. No candidate: AC is the claim. Otherwise the rule
+picks D and the claim is BD. A heuristic returns its claim; it never checks it
+(:func:`geometry.check.is_inner_diagonal` does).
+
+Tie rule (every heuristic): among candidates equal under the rule, the one
+nearest to the metaphor's origin (B; C for ``rotation-correct``) wins, then
+the one that comes first counter-clockwise after B. Every comparison is exact.
+
+Each step is a traced call a scene maps to its metaphor: ``leftmost_vertex``,
+``triangle_at``, ``candidates_in_triangle``, ``nearest_to`` (water),
+``first_hit_rotating`` (clock), ``first_hit_sweeping`` (sweep line),
+``last_dry`` (water rising from the shore), ``nearest_visible`` /
+``sees`` (water that respects walls), and for gravity ``reflex_vertex``,
+``gravity_direction``, ``drop_ball``, ``slide_to_vertex``, ``band_snag``.
+Temporary drawables (the water disk, the clock hand, the sweep line, the
+ball, the band) are :class:`tracing.Shape` objects whose change events carry
+the radii, angles, offsets and points the scene animates.
+
+Examples
+--------
+>>> from geometry.polygon import Polygon
+>>> p = Polygon.from_points([(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)])
+>>> {name: find_diagonal(p, name).name for name in HEURISTICS}  # doctest: +NORMALIZE_WHITESPACE
+{'scaling': 'BD', 'rotation': 'BD', 'rotation-ccw': 'BE', 'translation': 'BD',
+ 'translation-correct': 'BE', 'scaling-correct': 'BE', 'rotation-correct': 'BE',
+ 'scaling-walled': 'BE', 'gravity': 'EC'}
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from functools import cmp_to_key
+
+import tracing
+from geometry.check import is_inner_diagonal
+from geometry.frame import (
+    Diagonal,
+    Triangle,
+    candidates_in_triangle,
+    claim,
+    leftmost_vertex,
+    triangle_at,
+)
+from geometry.gravity import gravity, gravity_at
+from geometry.polygon import Polygon, Vertex
+from geometry.predicates import (
+    compare_angle,
+    compare_distance,
+    compare_line_distance,
+)
+
+__all__ = [
+    "HEURISTICS",
+    "Diagonal",
+    "Triangle",
+    "find_diagonal",
+    "gravity_at",
+    "sweep_at",
+]
+
+
+def _ranked(
+    candidates: list[Vertex], rule: Callable[[Vertex, Vertex], int], origin: Vertex, n: int, b: int
+) -> list[Vertex]:
+    """Candidates sorted by the rule, then by distance from origin, then ccw order after B."""
+
+    def compare(u: Vertex, v: Vertex) -> int:
+        return (
+            rule(u, v)
+            or compare_distance(origin.point, u.point, v.point)
+            or ((u.index - b) % n) - ((v.index - b) % n)
+        )
+
+    return sorted(candidates, key=cmp_to_key(compare))
+
+
+def _distance(p, q) -> float:
+    return math.hypot(q[0] - p[0], q[1] - p[1])
+
+
+# --- water: scaling ------------------------------------------------------------------------------
+
+
+@tracing.traced
+def nearest_to(b: Vertex, candidates: list[Vertex], n: int) -> Vertex:
+    """Water spilled at B spreads as a growing circle; the first candidate it wets is D."""
+    order = _ranked(candidates, lambda u, v: 0, b, n, b.index)
+    with tracing.Shape("water", "circle", center=list(b.point), radius=0.0) as water:
+        for v in order:
+            water.update(radius=_distance(b.point, v.point), reached=v.label)
+    return order[0]
+
+
+@tracing.traced
+def last_dry(t: Triangle, candidates: list[Vertex], n: int) -> Vertex:
+    """Water rises from the shore AC towards B; the last candidate to get wet is D."""
+
+    def rule(u: Vertex, v: Vertex) -> int:  # farther from AC first
+        return -compare_line_distance(t.a.point, t.c.point, u.point, v.point)
+
+    order = _ranked(candidates, rule, t.b, n, t.b.index)
+    shore = [list(t.a.point), list(t.c.point)]
+    with tracing.Shape("flood", "band", shore=shore, towards=list(t.b.point), level=0.0) as flood:
+        for v in reversed(order):
+            flood.update(level=_line_distance(t.a.point, t.c.point, v.point), reached=v.label)
+    return order[0]
+
+
+def _line_distance(a, c, p) -> float:
+    cross = (c[0] - a[0]) * (p[1] - a[1]) - (c[1] - a[1]) * (p[0] - a[0])
+    return abs(cross) / _distance(a, c)
+
+
+@tracing.traced
+def sees(polygon: Polygon, b: Vertex, v: Vertex) -> bool:
+    """Whether the segment Bv is an inner diagonal (v is visible from B, through the inside)."""
+    return bool(is_inner_diagonal(polygon, b.index, v.index))
+
+
+@tracing.traced
+def nearest_visible(polygon: Polygon, t: Triangle) -> Vertex:
+    """Water that respects the walls: the vertex nearest to B among those B sees (not A, C)."""
+    b, n = t.b, polygon.n
+    others = [polygon.vertex((b.index + k) % n) for k in range(2, n - 1)]
+    order = _ranked(others, lambda u, v: 0, b, n, b.index)
+    with tracing.Shape("water", "circle", center=list(b.point), radius=0.0, walled=True) as water:
+        for v in order:
+            water.update(radius=_distance(b.point, v.point), reached=v.label)
+            if sees(polygon, b, v):
+                return v
+    raise AssertionError("a convex vertex with candidates always sees one")  # thesis, lemma 2
+
+
+# --- clock: rotation -----------------------------------------------------------------------------
+
+
+@tracing.traced
+def first_hit_rotating(centre: Vertex, start: Vertex, candidates: list[Vertex], n: int) -> Vertex:
+    """A clock hand at `centre`, set to `start`, turns; the first candidate it passes is D."""
+
+    def rule(u: Vertex, v: Vertex) -> int:
+        return compare_angle(centre.point, start.point, u.point, v.point)
+
+    order = _ranked(candidates, rule, centre, n, centre.index)
+    base = _heading(centre.point, start.point)
+    with tracing.Shape(
+        "hand", "ray", origin=list(centre.point), heading=base, angle=0.0
+    ) as hand:
+        for v in order:
+            turned = abs(_wrap_degrees(_heading(centre.point, v.point) - base))
+            hand.update(angle=turned, reached=v.label)
+    return order[0]
+
+
+def _heading(p, q) -> float:
+    return math.degrees(math.atan2(q[1] - p[1], q[0] - p[0]))
+
+
+def _wrap_degrees(a: float) -> float:
+    return (a + 180.0) % 360.0 - 180.0
+
+
+# --- sweep: translation --------------------------------------------------------------------------
+
+
+@tracing.traced
+def first_hit_sweeping(
+    b: Vertex, direction: list[float], candidates: list[Vertex], n: int, shore: Triangle | None
+) -> Vertex:
+    """A line through B, along `direction`, moves across T; the first candidate it touches is D.
+
+    ``shore`` None: the vertical line moved rightwards (left-most candidate). Otherwise the
+    line is parallel to AC and moves from B towards AC (farthest candidate from AC).
+    """
+    if shore is None:
+        def rule(u: Vertex, v: Vertex) -> int:
+            return (u.point[0] > v.point[0]) - (u.point[0] < v.point[0])
+    else:
+        def rule(u: Vertex, v: Vertex) -> int:
+            return -compare_line_distance(shore.a.point, shore.c.point, u.point, v.point)
+
+    order = _ranked(candidates, rule, b, n, b.index)
+    with tracing.Shape(
+        "sweep", "line", through=list(b.point), direction=direction, offset=0.0
+    ) as line:
+        for v in order:
+            line.update(offset=_sweep_offset(b.point, direction, v.point), reached=v.label)
+    return order[0]
+
+
+def _sweep_offset(b, direction, p) -> float:
+    """Signed distance the line through b (along direction) travels to reach p."""
+    dx, dy = direction
+    return abs(dx * (p[1] - b[1]) - dy * (p[0] - b[0])) / math.hypot(dx, dy)
+
+
+# --- the heuristics ------------------------------------------------------------------------------
+
+
+def _triangle_heuristic(pick: Callable[[Polygon, Triangle, list[Vertex]], Vertex]):
+    """Build a heuristic from its rule: the frame, then AC or B–pick (T lives meanwhile)."""
+
+    def heuristic(polygon: Polygon) -> Diagonal:
+        _check_size(polygon)
+        t = triangle_at(polygon, leftmost_vertex(polygon))
+        with tracing.alive(t):
+            candidates = candidates_in_triangle(polygon, t)
+            if not candidates:
+                return claim(t.a, t.c)
+            return claim(t.b, pick(polygon, t, candidates))
+
+    return heuristic
+
+
+def _check_size(polygon: Polygon) -> None:
+    if polygon.n < 4:
+        raise ValueError("a triangle has no diagonal")
+
+
+def _direction(p, q) -> list[float]:
+    return [q[0] - p[0], q[1] - p[1]]
+
+
+_PICKS: dict[str, Callable[[Polygon, Triangle, list[Vertex]], Vertex]] = {
+    "scaling": lambda p, t, cs: nearest_to(t.b, cs, p.n),
+    "rotation": lambda p, t, cs: first_hit_rotating(t.b, t.a, cs, p.n),
+    "rotation-ccw": lambda p, t, cs: first_hit_rotating(t.b, t.c, cs, p.n),
+    "translation": lambda p, t, cs: first_hit_sweeping(t.b, [0.0, 1.0], cs, p.n, None),
+    "translation-correct": lambda p, t, cs: first_hit_sweeping(
+        t.b, _direction(t.a.point, t.c.point), cs, p.n, t
+    ),
+    "scaling-correct": lambda p, t, cs: last_dry(t, cs, p.n),
+    "rotation-correct": lambda p, t, cs: first_hit_rotating(t.c, t.b, cs, p.n),
+    "scaling-walled": lambda p, t, cs: nearest_visible(p, t),
+}
+
+
+def _named(name: str, function: Callable[[Polygon], Diagonal]) -> Callable[[Polygon], Diagonal]:
+    return tracing.traced(name=name)(function)
+
+
+HEURISTICS: dict[str, Callable[[Polygon], Diagonal]] = {
+    name: _named(name, _triangle_heuristic(pick)) for name, pick in _PICKS.items()
+}
+HEURISTICS["gravity"] = gravity
+
+CORRECT = (
+    "translation-correct", "scaling-correct", "rotation-correct", "scaling-walled", "gravity"
+)
+WRONG = ("scaling", "rotation", "rotation-ccw", "translation")
+
+
+def find_diagonal(polygon: Polygon, heuristic: str) -> Diagonal:
+    """Run the named heuristic; raises KeyError naming the known ones for an unknown name."""
+    if heuristic not in HEURISTICS:
+        raise KeyError(f"unknown heuristic {heuristic!r}; expected one of {', '.join(HEURISTICS)}")
+    with tracing.alive(polygon):
+        return HEURISTICS[heuristic](polygon)
+
+
+@tracing.traced
+def sweep_at(polygon: Polygon, b: Vertex) -> Diagonal | None:
+    """The correct sweep at any strictly convex vertex b: AC, or b to the farthest candidate.
+
+    Used by prune-and-search ear finding; None when T holds no candidate (b is an ear).
+    """
+    t = triangle_at(polygon, b)
+    with tracing.alive(t):
+        candidates = candidates_in_triangle(polygon, t)
+        if not candidates:
+            return None
+        return claim(b, _PICKS["translation-correct"](polygon, t, candidates))

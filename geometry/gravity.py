@@ -1,0 +1,289 @@
+"""Gravity (Forišek–Steinová): a ball on a rubber band finds an inner diagonal, traced.
+
+Pick a reflex vertex V: the first one counter-clockwise from the left-most
+vertex B. Gravity points along the inward bisector at V, so both edges at V
+go up. If some edge is exactly perpendicular to gravity, gravity is tilted by
+the smallest angle ±2^-k rad (k = 10, 11, …; + before −) that leaves no edge
+perpendicular and both edges at V still going up. The ball drops from V along
+gravity, hits the first edge (or lands on a vertex), slides down the edge to
+its lower end X; the band from V to the ball sweeps the triangle V–hit–X and
+snags the first vertex Y it meets (smallest angle from the drop line, nearest
+to V on ties). The claim is VY, or VX when the band stays straight.
+
+A polygon without reflex vertices is convex: the fallback claim is AC around
+the left-most vertex B, and a ``no-reflex-vertex`` note says so.
+
+The gravity vector is a float, but once chosen it is used exactly: every
+side, order and height comparison below is decided in rational arithmetic
+(behind float filters), so the claim is always an inner diagonal.
+
+>>> from geometry.polygon import Polygon
+>>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
+>>> gravity(p).name
+'EC'
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import cmp_to_key
+
+import numpy as np
+
+import tracing
+from geometry.frame import Diagonal, claim, leftmost_vertex, triangle_at
+from geometry.polygon import Polygon, Vertex
+from geometry.predicates import compare_angle, compare_distance, in_triangle
+
+_EPS = 2.0**-53
+_TINY = 2.0**-900
+Exact = tuple[Fraction, Fraction]
+
+
+@dataclass(frozen=True)
+class Gravity:
+    """Which way is down, and how the picture turns so that it points down on screen."""
+
+    down: tuple[float, float]
+    tilt: float  # radians added to the bisector's direction (0 when none was needed)
+    turn_picture: float  # degrees to rotate the polygon so that `down` points down
+
+
+@dataclass(frozen=True)
+class Hit:
+    """Where the falling ball first meets the boundary: inside an edge, or on a vertex."""
+
+    point: Exact
+    edge: tuple[int, int] | None
+    vertex: Vertex | None
+
+    @property
+    def at(self) -> tuple[float, float]:
+        return (float(self.point[0]), float(self.point[1]))
+
+    @property
+    def trace_key(self) -> str:
+        return "hit"
+
+    def trace_state(self) -> dict:
+        return {"kind": "point", "at": list(self.at)}
+
+
+def _dot_sign(d: tuple, g: tuple) -> int:
+    """Exact sign of d·g for a difference vector d given by its two end points."""
+    (p, q), (gx, gy) = d, g
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    value = dx * gx + dy * gy
+    bound = 4 * _EPS * (abs(dx * gx) + abs(dy * gy)) + _TINY
+    if value > bound:
+        return 1
+    if -value > bound:
+        return -1
+    exact = (Fraction(q[0]) - Fraction(p[0])) * Fraction(gx) + (
+        Fraction(q[1]) - Fraction(p[1])
+    ) * Fraction(gy)
+    return (exact > 0) - (exact < 0)
+
+
+def _cross_sign(g: tuple, v: tuple, p: tuple) -> int:
+    """Exact sign of g × (p − v): which side of the drop line through v the point p is on."""
+    return _dot_sign((v, p), (g[1], -g[0])) * -1
+
+
+@tracing.traced
+def reflex_vertex(polygon: Polygon) -> Vertex | None:
+    """The first reflex vertex counter-clockwise from the left-most vertex B, or None."""
+    b = polygon.leftmost()
+    for k in range(polygon.n):
+        i = (b + k) % polygon.n
+        if polygon.turns[i] < 0:
+            return polygon.vertex(i)
+    return None
+
+
+@tracing.traced
+def gravity_direction(polygon: Polygon, v: Vertex) -> Gravity:
+    """Gravity along the inward bisector at V (the inward normal at a straight vertex)."""
+    u, w = polygon.points[polygon.prev(v.index)], polygon.points[polygon.next(v.index)]
+    if polygon.turns[v.index] < 0:
+        e1, e2 = _unit(v.point, u), _unit(v.point, w)
+        bisector = (-(e1[0] + e2[0]), -(e1[1] + e2[1]))
+        down = _tilted(polygon, v, bisector)
+    else:  # straight angle: both edges lie across gravity, there is nothing to tilt
+        bisector = down = _unit((0.0, 0.0), (u[1] - w[1], w[0] - u[0]))
+    tilt = _wrap(math.atan2(down[1], down[0]) - math.atan2(bisector[1], bisector[0]))
+    turn = -90.0 - math.degrees(math.atan2(down[1], down[0]))
+    return Gravity(down=down, tilt=tilt, turn_picture=(turn + 180.0) % 360.0 - 180.0)
+
+
+def _unit(p, q) -> tuple[float, float]:
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    r = math.hypot(dx, dy)
+    return (dx / r, dy / r)
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+def _goes_up(polygon: Polygon, v: Vertex, down: tuple) -> bool:
+    ends = (polygon.points[polygon.prev(v.index)], polygon.points[polygon.next(v.index)])
+    return all(_dot_sign((v.point, q), down) < 0 for q in ends)
+
+
+def _perpendicular_edges(polygon: Polygon, down: tuple) -> bool:
+    arr = np.asarray(polygon.points, dtype=float)
+    d = np.roll(arr, -1, 0) - arr
+    value = d[:, 0] * down[0] + d[:, 1] * down[1]
+    bound = 4 * _EPS * (np.abs(d[:, 0] * down[0]) + np.abs(d[:, 1] * down[1])) + _TINY
+    unsure = np.flatnonzero(np.abs(value) <= bound)
+    n = polygon.n
+    return any(
+        _dot_sign((polygon.points[k], polygon.points[(k + 1) % n]), down) == 0 for k in unsure
+    )
+
+
+def _tilted(polygon: Polygon, v: Vertex, down: tuple) -> tuple[float, float]:
+    if _goes_up(polygon, v, down) and not _perpendicular_edges(polygon, down):
+        return down
+    for k in range(10, 60):
+        for sign in (1.0, -1.0):
+            t = sign * 2.0**-k
+            c, s = math.cos(t), math.sin(t)
+            turned = (c * down[0] - s * down[1], s * down[0] + c * down[1])
+            if _goes_up(polygon, v, turned) and not _perpendicular_edges(polygon, turned):
+                return turned
+    raise AssertionError("no tilt avoids perpendicular edges")  # finitely many edges
+
+
+@tracing.traced
+def drop_ball(polygon: Polygon, v: Vertex, g: Gravity, ball: tracing.Shape) -> Hit:
+    """The ball falls from V along gravity; the first edge (or vertex) it meets."""
+    down, p, n = g.down, v.point, polygon.n
+    sides = [_cross_sign(down, p, q) for q in polygon.points]
+    best: tuple[Fraction, Hit] | None = None
+    for k in range(n):
+        if k == v.index:
+            continue
+        q = polygon.points[k]
+        if sides[k] == 0 and _dot_sign((p, q), down) > 0:
+            best = _nearer(best, _vertex_time(p, q, down), Hit(_exact(q), None, polygon.vertex(k)))
+        m = (k + 1) % n
+        if v.index in (k, m) or sides[k] * sides[m] >= 0:
+            continue
+        t, point = _edge_time(p, down, q, polygon.points[m])
+        if t > 0:
+            best = _nearer(best, t, Hit(point, (k, m), None))
+    if best is None:
+        raise AssertionError("a ray from inside meets the boundary")
+    hit = best[1]
+    tracing.enter(hit)  # the impact point stays marked until the diagonal is found
+    ball.update(at=list(hit.at))
+    return hit
+
+
+def _exact(q) -> Exact:
+    return (Fraction(q[0]), Fraction(q[1]))
+
+
+def _nearer(best, t: Fraction, hit: Hit):
+    return (t, hit) if best is None or t < best[0] else best
+
+
+def _vertex_time(p, q, down) -> Fraction:
+    gx, gy = Fraction(down[0]), Fraction(down[1])
+    return ((Fraction(q[0]) - Fraction(p[0])) * gx + (Fraction(q[1]) - Fraction(p[1])) * gy) / (
+        gx * gx + gy * gy
+    )
+
+
+def _edge_time(p, down, a, b) -> tuple[Fraction, Exact]:
+    """Where p + t·down meets the line ab: (t, point), exactly."""
+    px, py = Fraction(p[0]), Fraction(p[1])
+    gx, gy = Fraction(down[0]), Fraction(down[1])
+    ax, ay = Fraction(a[0]), Fraction(a[1])
+    ex, ey = Fraction(b[0]) - ax, Fraction(b[1]) - ay
+    t = ((ax - px) * ey - (ay - py) * ex) / (gx * ey - gy * ex)
+    return t, (px + t * gx, py + t * gy)
+
+
+@tracing.traced
+def slide_to_vertex(polygon: Polygon, hit: Hit, g: Gravity, ball: tracing.Shape) -> Vertex:
+    """The ball slides down the edge it hit to the edge's lower end X."""
+    if hit.vertex is not None:
+        return hit.vertex
+    k, m = hit.edge
+    lower = m if _dot_sign((polygon.points[k], polygon.points[m]), g.down) > 0 else k
+    ball.update(at=list(polygon.points[lower]))
+    return polygon.vertex(lower)
+
+
+@tracing.traced
+def band_snag(
+    polygon: Polygon, v: Vertex, hit: Hit, x: Vertex, band: tracing.Shape
+) -> Vertex | None:
+    """The band V–ball sweeps the triangle V–hit–X; the first vertex it snags, if any."""
+    if hit.vertex is not None:
+        return None
+    h = hit.point
+    inside = [
+        polygon.vertex(k)
+        for k in _near_triangle(polygon, v.point, hit.at, x.point)
+        if k not in (v.index, x.index) and in_triangle(polygon.points[k], v.point, h, x.point)
+    ]
+    if not inside:
+        band.update(points=[list(v.point), list(x.point)])
+        return None
+
+    def order(a: Vertex, b: Vertex) -> int:
+        return compare_angle(v.point, h, a.point, b.point) or compare_distance(
+            v.point, a.point, b.point
+        )
+
+    y = min(inside, key=cmp_to_key(order))
+    band.update(points=[list(v.point), list(y.point), list(x.point)], snag=y.label)
+    return y
+
+
+def _near_triangle(polygon: Polygon, a, b, c) -> list[int]:
+    """Vertices in the triangle's bounding box, widened a little (a float pre-filter)."""
+    arr = np.asarray(polygon.points, dtype=float)
+    corners = np.asarray([a, b, c], dtype=float)
+    lo, hi = corners.min(axis=0), corners.max(axis=0)
+    pad = 1e-9 * (np.abs(corners).max() + 1.0)
+    mask = np.all((arr >= lo - pad) & (arr <= hi + pad), axis=1)
+    return [int(k) for k in np.flatnonzero(mask)]
+
+
+@tracing.traced
+def gravity_at(polygon: Polygon, v: Vertex) -> Diagonal:
+    """Gravity's diagonal from a given reflex (or straight) vertex V."""
+    g = gravity_direction(polygon, v)
+    with (
+        tracing.Shape("ball", "point", at=list(v.point)) as ball,
+        tracing.Shape("band", "band", points=[list(v.point), list(v.point)]) as band,
+    ):
+        hit = drop_ball(polygon, v, g, ball)
+        x = slide_to_vertex(polygon, hit, g, ball)
+        y = band_snag(polygon, v, hit, x, band)
+    tracing.exit(hit)
+    return claim(v, y if y is not None else x)
+
+
+@tracing.traced(name="gravity")
+def gravity(polygon: Polygon) -> Diagonal:
+    """The gravity heuristic on the whole polygon (first reflex vertex from B)."""
+    if polygon.n < 4:
+        raise ValueError("a triangle has no diagonal")
+    v = reflex_vertex(polygon)
+    if v is None:
+        t = triangle_at(polygon, leftmost_vertex(polygon))
+        tracing.note(
+            "no-reflex-vertex",
+            reason="convex polygon: no reflex vertex, so the claim is AC around the left-most B",
+            diagonal=[t.a.label, t.c.label],
+        )
+        return claim(t.a, t.c)
+    return gravity_at(polygon, v)
