@@ -10,8 +10,11 @@ its lower end X; the band from V to the ball sweeps the triangle V–hit–X and
 snags the first vertex Y it meets (smallest angle from the drop line, nearest
 to V on ties). The claim is VY, or VX when the band stays straight.
 
-A polygon without reflex vertices is convex: the fallback claim is AC around
-the left-most vertex B, and a ``no-reflex-vertex`` note says so.
+A polygon without reflex vertices is convex. If it has a straight vertex (its
+two edges collinear) the ball drops from the first one, gravity along the
+inward normal; a strictly convex polygon gets the claim AC around the
+left-most vertex B (there every diagonal is inner). A ``no-reflex-vertex``
+note says which.
 
 The gravity vector is a float, but once chosen it is used exactly: every
 side, order and height comparison below is decided in rational arithmetic
@@ -95,10 +98,20 @@ def _cross_sign(g: tuple, v: tuple, p: tuple) -> int:
 @tracing.traced
 def reflex_vertex(polygon: Polygon) -> Vertex | None:
     """The first reflex vertex counter-clockwise from the left-most vertex B, or None."""
+    return _first_turn(polygon, -1)
+
+
+@tracing.traced
+def straight_vertex(polygon: Polygon) -> Vertex | None:
+    """In a polygon with no reflex vertex: the first straight (collinear) vertex from B, or None."""
+    return _first_turn(polygon, 0)
+
+
+def _first_turn(polygon: Polygon, turn: int) -> Vertex | None:
     b = polygon.leftmost()
     for k in range(polygon.n):
         i = (b + k) % polygon.n
-        if polygon.turns[i] < 0:
+        if polygon.turns[i] == turn:
             return polygon.vertex(i)
     return None
 
@@ -279,11 +292,23 @@ def gravity(polygon: Polygon) -> Diagonal:
         raise ValueError("a triangle has no diagonal")
     v = reflex_vertex(polygon)
     if v is None:
-        t = triangle_at(polygon, leftmost_vertex(polygon))
+        v = straight_vertex(polygon)
+        if v is None:
+            return _convex_fallback(polygon)
         tracing.note(
             "no-reflex-vertex",
-            reason="convex polygon: no reflex vertex, so the claim is AC around the left-most B",
-            diagonal=[t.a.label, t.c.label],
+            reason=f"no reflex vertex: the ball drops from the straight vertex {v.label}",
+            vertex=v.label,
         )
-        return claim(t.a, t.c)
     return gravity_at(polygon, v)
+
+
+def _convex_fallback(polygon: Polygon) -> Diagonal:
+    """Strictly convex: every diagonal is inner; claim AC around the left-most vertex B."""
+    t = triangle_at(polygon, leftmost_vertex(polygon))
+    tracing.note(
+        "no-reflex-vertex",
+        reason="strictly convex: no reflex vertex, so the claim is AC around the left-most B",
+        diagonal=[t.a.label, t.c.label],
+    )
+    return claim(t.a, t.c)

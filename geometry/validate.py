@@ -114,8 +114,8 @@ def orient_array(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
         bound = _ORIENT_BOUND * (np.abs(left) + np.abs(right)) + _TINY
         signs = np.where(det > bound, 1, np.where(-det > bound, -1, 0))
         unsure = ~((det > bound) | (-det > bound))
-    for k in np.flatnonzero(unsure):
-        signs[k] = orient(tuple(a[k]), tuple(b[k]), tuple(c[k]))
+    for k in np.flatnonzero(unsure):  # plain floats: numpy scalars would warn on overflow
+        signs[k] = orient(*(tuple(map(float, m[k])) for m in (a, b, c)))
     return signs
 
 

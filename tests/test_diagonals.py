@@ -1,0 +1,163 @@
+"""Heuristics pick exactly what their rule says; the correct ones always claim inner diagonals."""
+
+from fractions import Fraction
+
+import pytest
+from hypothesis import given, settings
+
+import tracing
+from geometry.check import is_inner_diagonal
+from geometry.diagonals import CORRECT, HEURISTICS, WRONG, find_diagonal
+from geometry.polygon import Polygon
+from geometry.predicates import in_triangle, orient, orient_det
+from geometry.samples import make_sample
+from tests.strategies import generated_polygons
+
+
+def sq(p, q):
+    return (Fraction(p[0]) - Fraction(q[0])) ** 2 + (Fraction(p[1]) - Fraction(q[1])) ** 2
+
+
+def brute_force(p: Polygon, name: str) -> tuple[int, int]:
+    """An independent statement of each rule, by minima over exact keys (no shared ranking code)."""
+    b = min(range(p.n), key=lambda i: p.points[i])
+    a, c = (b - 1) % p.n, (b + 1) % p.n
+    pa, pb, pc = p.points[a], p.points[b], p.points[c]
+    cands = [k for k in range(p.n) if k not in (a, b, c) and in_triangle(p.points[k], pa, pb, pc)]
+    if not cands:
+        return (a, c)  # the frame's rule, for every triangle heuristic
+    if name == "scaling-walled":
+        seen = [k for k in range(p.n) if k not in (a, b, c) and is_inner_diagonal(p, b, k)]
+        return (b, _first(p, seen, b, lambda k: sq(pb, p.points[k])))
+    if name == "scaling":
+        return (b, _first(p, cands, b, lambda k: sq(pb, p.points[k])))
+    if name == "translation":
+        return (b, _first(p, cands, b, lambda k: p.points[k][0]))
+    if name in ("translation-correct", "scaling-correct"):
+        return (b, _first(p, cands, b, lambda k: -abs(orient_det(pa, pc, p.points[k]))))
+    if name == "rotation":  # clockwise from BA: nothing may lie strictly clockwise-before it
+        return (b, _first_hit(p, cands, b, -1))
+    if name == "rotation-ccw":
+        return (b, _first_hit(p, cands, b, +1))
+    if name == "rotation-correct":
+        return (b, _first_hit(p, cands, c, orient(pc, pb, pa)))
+    raise KeyError(name)
+
+
+def _first(p, cands, b, key):
+    """Minimum of key; ties: nearest to B, then counter-clockwise order after B."""
+    return min(cands, key=lambda k: (key(k), sq(p.points[b], p.points[k]), (k - b) % p.n))
+
+
+def _first_hit(p, cands, centre, turn):
+    """The candidate no other candidate precedes when turning in direction `turn` around centre."""
+    o = p.points[centre]
+    pts = p.points
+    first = [x for x in cands if all(orient(o, pts[x], pts[y]) * turn >= 0 for y in cands)]
+    b = min(range(p.n), key=lambda i: p.points[i])
+    return min(first, key=lambda k: (sq(p.points[b], p.points[k]), (k - b) % p.n))
+
+
+@settings(max_examples=400)
+@given(generated_polygons())
+def test_rules_match_brute_force(p):
+    for name in [*WRONG, "translation-correct", "scaling-correct", "rotation-correct",
+                 "scaling-walled"]:
+        assert set(find_diagonal(p, name).pair) == set(brute_force(p, name)), name
+
+
+@settings(max_examples=2000)
+@given(generated_polygons())
+def test_correct_heuristics_claim_inner_diagonals(p):
+    for name in CORRECT:
+        claim = find_diagonal(p, name)
+        assert is_inner_diagonal(p, *claim.pair), (name, claim.name)
+
+
+@pytest.mark.parametrize(
+    ("sample", "wrong"),
+    [("counterexample", ["scaling", "rotation", "translation"]),
+     ("counterexample-twin", ["rotation-ccw"])],
+)
+def test_counterexample_pair_defeats_the_wrong_heuristics(sample, wrong):
+    p = Polygon.from_points(make_sample(sample))
+    for name in wrong:
+        verdict = is_inner_diagonal(p, *find_diagonal(p, name).pair)
+        assert verdict.code == "crosses", name
+    for name in CORRECT:
+        assert is_inner_diagonal(p, *find_diagonal(p, name).pair), name
+
+
+def test_counterexample_claims_and_crossed_edge():
+    p = Polygon.from_points(make_sample("counterexample"))
+    assert find_diagonal(p, "scaling").name == "BD"
+    verdict = is_inner_diagonal(p, *find_diagonal(p, "scaling").pair)
+    assert [p.labels[k] for k in verdict.edge] == ["E", "A"]
+    assert find_diagonal(p, "translation-correct").name == "BE"
+
+
+def test_convex_polygon_gravity_falls_back_and_says_so():
+    p = Polygon.from_points([(0, 0), (2, 0), (3, 2), (1, 3), (-1, 2)])
+    with tracing.record() as log:
+        claim = find_diagonal(p, "gravity")
+    notes = log.find(kind="note")
+    assert [n.name for n in notes] == ["no-reflex-vertex"]
+    assert notes[0].args["diagonal"] == [claim.u.label, claim.v.label]
+    assert is_inner_diagonal(p, *claim.pair)
+
+
+def test_gravity_tilts_when_an_edge_is_perpendicular():
+    # The drop from the notch lands on the horizontal bottom edge.
+    p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
+    with tracing.record() as log:
+        claim = find_diagonal(p, "gravity")
+    (ret,) = [e for e in log.events if e.kind == "return" and e.name == "gravity_direction"]
+    assert ret.result["tilt"] == pytest.approx(2.0**-10)
+    assert is_inner_diagonal(p, *claim.pair)
+
+
+def test_triangle_has_no_diagonal():
+    p = Polygon.from_points([(0, 0), (1, 0), (0, 1)])
+    for name in HEURISTICS:
+        with pytest.raises(ValueError, match="no diagonal"):
+            find_diagonal(p, name)
+
+
+def test_unknown_heuristic():
+    p = Polygon.from_points(make_sample("counterexample"))
+    with pytest.raises(KeyError, match="expected one of"):
+        find_diagonal(p, "magic")
+
+
+def test_trace_names_a_scene_can_map():
+    p = Polygon.from_points(make_sample("counterexample"))
+    expected = {
+        "scaling": "nearest_to", "rotation": "first_hit_rotating",
+        "translation": "first_hit_sweeping", "scaling-correct": "last_dry",
+        "scaling-walled": "nearest_visible", "gravity": "band_snag",
+    }
+    for name, step in expected.items():
+        with tracing.record() as log:
+            find_diagonal(p, name)
+        assert step in {e.name for e in log.events if e.kind == "call"}, name
+        assert log.events[-1].kind == "exit"  # the polygon leaves last
+
+
+def test_logs_are_deterministic():
+    p = Polygon.from_points(make_sample("random-2opt", 20, 7))
+    texts = set()
+    for _ in range(2):
+        for name in HEURISTICS:
+            with tracing.record(heuristic=name) as log:
+                find_diagonal(p, name)
+            texts.add((name, log.to_json()))
+    assert len(texts) == len(HEURISTICS)
+
+
+@pytest.mark.parametrize("scale", [1e-200, 1e-9, 1.0, 1e9, 1e200])
+def test_huge_and_tiny_coordinates(scale):
+    pts = [(x * scale, y * scale) for x, y in make_sample("counterexample")]
+    p = Polygon.from_points(pts)
+    for name in CORRECT:
+        assert is_inner_diagonal(p, *find_diagonal(p, name).pair), (name, scale)
+    assert not is_inner_diagonal(p, *find_diagonal(p, "scaling").pair)
