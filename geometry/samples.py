@@ -1,0 +1,188 @@
+"""Named sample polygons and seeded generators of valid simple polygons.
+
+Three kinds of names share one namespace (see :func:`sample_names`):
+
+* fixed samples (``counterexample``, ``square``, ``lecture`` …): a fixed list of points;
+* deterministic families (``star``, ``spiral``, ``comb``): a small default, or
+  any ``n`` up to 100,000 for benchmarks;
+* random generators (``random-star``, ``random-2opt``, ``random-orthogonal``,
+  ``random-spiral``, ``random-comb``): ``n`` vertices from ``random.Random(seed)``.
+
+Every list returned forms a valid simple polygon with exactly ``n`` vertices; the
+deterministic families are built with margins far larger than float rounding.
+
+Examples
+--------
+>>> make_sample("counterexample")
+[(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)]
+>>> len(make_sample("random-star", n=7, seed=3))
+7
+>>> make_sample("random-star", n=7, seed=3) == make_sample("random-star", n=7, seed=3)
+True
+>>> make_sample("random-star", n=2)
+Traceback (most recent call last):
+...
+geometry.errors.InputFormatError: sample random-star needs n ≥ 3, got 2
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Callable
+from dataclasses import dataclass
+from types import MappingProxyType
+
+from geometry.errors import InputFormatError, UnknownSampleError
+from geometry.predicates import Point
+from geometry.sample_generators import (
+    comb,
+    random_2opt,
+    random_comb,
+    random_orthogonal,
+    random_spiral,
+    random_star,
+    spiral,
+    star,
+    two_ears,
+)
+
+__all__ = ["UnknownSampleError", "make_sample", "parse_spec", "sample_names"]
+
+_COUNTEREXAMPLE: tuple[Point, ...] = ((1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8))
+
+# 13 vertices, 5 reflex; triangle ABC at the left-most vertex B holds three
+# candidates (G, H, M), so every inner-diagonal heuristic has a choice to make.
+_LECTURE: tuple[Point, ...] = (
+    (0, 6), (5, 0), (9, 2), (14, 1), (13, 5), (3, 5), (5, 7),
+    (12, 8), (14, 12), (9, 11), (8, 15), (4, 10), (6, 13),
+)  # fmt: skip
+
+_FIXED: MappingProxyType[str, tuple[Point, ...]] = MappingProxyType(
+    {
+        "counterexample": _COUNTEREXAMPLE,
+        "counterexample-twin": tuple((x, -y) for x, y in _COUNTEREXAMPLE),
+        "square": ((0, 0), (1, 0), (1, 1), (0, 1)),
+        "triangle": ((0, 0), (4, 0), (1, 3)),
+        "lecture": _LECTURE,
+        "two-ears": tuple(two_ears()),
+    }
+)
+
+
+@dataclass(frozen=True)
+class _Family:
+    """A sample made on demand: ``make(n, rng)``; ``n`` defaults to ``default``."""
+
+    make: Callable[[int, random.Random], list[Point]]
+    minimum: int
+    default: int
+    seeded: bool
+
+
+def _deterministic(func: Callable[[int], list[Point]]) -> Callable[[int, random.Random], list]:
+    return lambda n, _rng: func(n)
+
+
+_FAMILIES: MappingProxyType[str, _Family] = MappingProxyType(
+    {
+        "star": _Family(_deterministic(star), 3, 10, False),
+        "spiral": _Family(_deterministic(spiral), 6, 30, False),
+        "comb": _Family(_deterministic(comb), 12, 20, False),
+        "random-star": _Family(random_star, 3, 12, True),
+        "random-2opt": _Family(random_2opt, 3, 12, True),
+        "random-orthogonal": _Family(random_orthogonal, 4, 16, True),
+        "random-spiral": _Family(random_spiral, 6, 24, True),
+        "random-comb": _Family(random_comb, 12, 16, True),
+    }
+)
+
+
+def sample_names() -> list[str]:
+    """Every sample and generator name, sorted.
+
+    >>> sample_names()[:3]
+    ['comb', 'counterexample', 'counterexample-twin']
+    """
+    return sorted([*_FIXED, *_FAMILIES])
+
+
+def make_sample(name: str, n: int | None = None, seed: int = 0) -> list[Point]:
+    """The points of sample ``name`` (``n`` vertices for families, seeded by ``seed``).
+
+    Parameters
+    ----------
+    name : str
+        One of :func:`sample_names`.
+    n : int, optional
+        Number of vertices; fixed samples take none, families default to a small size.
+    seed : int
+        Seed of the ``random.Random`` used by the random generators (others ignore it).
+
+    Raises
+    ------
+    UnknownSampleError
+        For an unknown name.
+    InputFormatError
+        For an ``n`` that the sample cannot take.
+
+    Examples
+    --------
+    >>> make_sample("square")
+    [(0, 0), (1, 0), (1, 1), (0, 1)]
+    >>> len(make_sample("comb", n=100_000))
+    100000
+    """
+    if name in _FIXED:
+        if n is not None and n != len(_FIXED[name]):
+            raise InputFormatError(f"sample {name} has a fixed size of {len(_FIXED[name])}")
+        return list(_FIXED[name])
+    family = _FAMILIES.get(name)
+    if family is None:
+        raise UnknownSampleError(f"unknown sample '{name}'; known: {', '.join(sample_names())}")
+    size = family.default if n is None else n
+    if isinstance(size, bool) or not isinstance(size, int) or size < family.minimum:
+        raise InputFormatError(f"sample {name} needs n ≥ {family.minimum}, got {size}")
+    return family.make(size, random.Random(seed))
+
+
+def parse_spec(spec: str) -> tuple[str, int | None, int]:
+    """Split ``NAME[:N[:SEED]]`` (as the command line accepts it) into its parts.
+
+    >>> parse_spec("random-star:50:7")
+    ('random-star', 50, 7)
+    >>> parse_spec("lecture")
+    ('lecture', None, 0)
+    >>> parse_spec("star:many")
+    Traceback (most recent call last):
+    ...
+    geometry.errors.InputFormatError: sample spec 'star:many': n and seed must be integers
+    """
+    name, *numbers = spec.split(":")
+    if len(numbers) > 2:
+        raise InputFormatError(f"sample spec '{spec}': expected NAME[:N[:SEED]]")
+    try:
+        values = [int(v) for v in numbers]
+    except ValueError:
+        raise InputFormatError(f"sample spec '{spec}': n and seed must be integers") from None
+    n = values[0] if values else None
+    seed = values[1] if len(values) > 1 else 0
+    return name, n, seed
+
+
+def is_sample(spec: str) -> bool:
+    """Whether ``spec`` names a sample (its numbers are checked later).
+
+    >>> is_sample("star:100"), is_sample("star.json")
+    (True, False)
+    """
+    return spec.split(":")[0] in _FIXED or spec.split(":")[0] in _FAMILIES
+
+
+def sample_from_spec(spec: str) -> list[Point]:
+    """Points of ``NAME[:N[:SEED]]``.
+
+    >>> len(sample_from_spec("random-2opt:9:4"))
+    9
+    """
+    name, n, seed = parse_spec(spec)
+    return make_sample(name, n, seed)

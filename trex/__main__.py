@@ -1,0 +1,5 @@
+"""``python -m trex`` runs the command line."""
+
+from trex.cli import main
+
+main()

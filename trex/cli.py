@@ -1,0 +1,119 @@
+"""The ``trex`` command group.
+
+Every command reports bad input as one line on stderr and exits with status 2;
+usage errors too (click's multi-line usage report is folded into one line).
+"""
+
+from __future__ import annotations
+
+import sys
+from typing import Any
+
+import click
+
+from geometry.errors import GeometryError
+from geometry.io import to_json, write_polygon
+from geometry.polygon import Polygon
+from geometry.samples import make_sample
+from trex.inputs import EXIT_INVALID, error_line, fail, try_load
+
+_SHOWN_LABELS = 8
+
+
+class _OneLineGroup(click.Group):
+    """A group whose usage errors print as ``error: <message> (try '… --help')``."""
+
+    def main(self, *args: Any, standalone_mode: bool = True, **kwargs: Any) -> Any:
+        if not standalone_mode:
+            return super().main(*args, standalone_mode=False, **kwargs)
+        kwargs.setdefault("prog_name", "trex")
+        try:
+            code = super().main(*args, standalone_mode=False, **kwargs)
+        except click.UsageError as exc:
+            where = exc.ctx.command_path if exc.ctx is not None else "trex"
+            click.echo(f"error: {error_line(exc)} (try '{where} --help')", err=True)
+            sys.exit(exc.exit_code)
+        except click.ClickException as exc:
+            click.echo(f"error: {error_line(exc)}", err=True)
+            sys.exit(exc.exit_code)
+        except click.Abort:
+            click.echo("aborted", err=True)
+            sys.exit(1)
+        sys.exit(code if isinstance(code, int) else 0)
+
+
+@click.group(cls=_OneLineGroup, context_settings={"help_option_names": ["-h", "--help"]})
+def main() -> None:
+    """Triangulation Explained: real runs of triangulation algorithms, as videos.
+
+    A POLYGON is a file (.json, .geojson, .wkt, .dat) or a sample name such as
+    counterexample, lecture or random-star:50:7 (NAME[:N[:SEED]]).
+    """
+
+
+def _reflex_text(polygon: Polygon) -> str:
+    reflex = polygon.reflex_vertices()
+    if not reflex:
+        return "0 reflex vertices (convex)"
+    labels = [polygon.labels[i] for i in reflex[:_SHOWN_LABELS]]
+    if len(reflex) > _SHOWN_LABELS:
+        labels.append(f"… {len(reflex) - _SHOWN_LABELS} more")
+    noun = "vertex" if len(reflex) == 1 else "vertices"
+    return f"{len(reflex)} reflex {noun} ({', '.join(labels)})"
+
+
+def summary(polygon: Polygon) -> str:
+    """One line about a valid polygon, orientation as given in the input.
+
+    >>> summary(Polygon.from_points([(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)]))
+    'valid, 5 vertices, counter-clockwise, area 12.92, 1 reflex vertex (E)'
+    """
+    orientation = "clockwise" if polygon.input_clockwise else "counter-clockwise"
+    return (
+        f"valid, {polygon.n} vertices, {orientation}, "
+        f"area {polygon.area:.6g}, {_reflex_text(polygon)}"
+    )
+
+
+@main.command()
+@click.argument("polygons", nargs=-1, required=True, metavar="POLYGON...")
+def check(polygons: tuple[str, ...]) -> None:
+    """Validate each POLYGON and print one line about it.
+
+    Exits with status 2 when any POLYGON is invalid.
+    """
+    invalid = False
+    for arg in polygons:
+        polygon = try_load(arg)
+        if polygon is None:
+            invalid = True
+        else:
+            click.echo(f"{arg}: {summary(polygon)}")
+    if invalid:
+        raise click.exceptions.Exit(EXIT_INVALID)
+
+
+@main.command()
+@click.argument("name")
+@click.option("-n", "--n", "n", type=int, help="Number of vertices (families and generators).")
+@click.option("--seed", type=int, default=0, show_default=True, help="Seed of the generator.")
+@click.option("-o", "--output", metavar="FILE", help="Write here (format by extension).")
+def sample(name: str, n: int | None, seed: int, output: str | None) -> None:
+    """Write sample NAME as JSON points to stdout, or to FILE (format by extension)."""
+    try:
+        points = make_sample(name, n, seed)
+    except GeometryError as exc:
+        fail(error_line(exc))
+    if output is None:
+        click.echo(to_json(points))
+        return
+    try:
+        write_polygon(points, output)
+    except GeometryError as exc:
+        fail(f"{output}: {error_line(exc)}")
+    except OSError as exc:
+        fail(f"{output}: cannot write: {exc.strerror or error_line(exc)}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,67 @@
+"""Polygon arguments shared by every command: load, report, exit with status 2.
+
+A polygon argument is a file path or a sample spec ``NAME[:N[:SEED]]`` (see
+:func:`geometry.io.read_polygon`). Every failure becomes one line on stderr,
+``error: <arg>: <reason>``, and the command exits with :data:`EXIT_INVALID`;
+warnings are ``warning: <arg>: <message>``.
+
+>>> error_line(ValueError("bad\\nsecond line"))
+'bad'
+>>> error_line(OSError())
+'OSError'
+"""
+
+from __future__ import annotations
+
+from typing import NoReturn
+
+import click
+
+from geometry.errors import GeometryError
+from geometry.io import read_polygon
+from geometry.polygon import Polygon
+
+EXIT_INVALID = 2
+# Reading can also fail outside the GeometryError family (an unexpected OS
+# error, a value shapely rejects); those must still end as one line.
+READ_ERRORS = (GeometryError, OSError, ValueError, RecursionError, MemoryError)
+
+
+def error_line(exc: BaseException) -> str:
+    """The first line of an exception's message (its class name when it has none)."""
+    text = str(exc).strip()
+    return text.splitlines()[0] if text else type(exc).__name__
+
+
+def report_error(arg: str, exc: BaseException) -> None:
+    click.echo(f"error: {arg}: {error_line(exc)}", err=True)
+
+
+def report_warnings(arg: str, polygon: Polygon) -> None:
+    for message in polygon.warnings:
+        click.echo(f"warning: {arg}: {message}", err=True)
+
+
+def fail(message: str) -> NoReturn:
+    """Print ``error: <message>`` and exit with status 2."""
+    click.echo(f"error: {message}", err=True)
+    raise click.exceptions.Exit(EXIT_INVALID)
+
+
+def try_load(arg: str) -> Polygon | None:
+    """The polygon of ``arg`` with its warnings reported, or None after reporting the error."""
+    try:
+        polygon = read_polygon(arg)
+    except READ_ERRORS as exc:
+        report_error(arg, exc)
+        return None
+    report_warnings(arg, polygon)
+    return polygon
+
+
+def load_or_exit(arg: str) -> Polygon:
+    """The polygon of ``arg``; on failure report it and exit with status 2."""
+    polygon = try_load(arg)
+    if polygon is None:
+        raise click.exceptions.Exit(EXIT_INVALID)
+    return polygon
