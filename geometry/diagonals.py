@@ -86,7 +86,7 @@ def _distance(p, q) -> float:
 # --- water: scaling ------------------------------------------------------------------------------
 
 
-@tracing.traced
+@tracing.traced(exclude_args=("n",))
 def nearest_to(b: Vertex, candidates: list[Vertex], n: int) -> Vertex:
     """Water spilled at B spreads as a growing circle; the first candidate it wets is D."""
     order = _ranked(candidates, lambda u, v: 0, b, n, b.index)
@@ -96,7 +96,7 @@ def nearest_to(b: Vertex, candidates: list[Vertex], n: int) -> Vertex:
     return order[0]
 
 
-@tracing.traced
+@tracing.traced(exclude_args=("n",))
 def last_dry(t: Triangle, candidates: list[Vertex], n: int) -> Vertex:
     """Water rises from the shore AC towards B; the last candidate to get wet is D."""
 
@@ -139,7 +139,7 @@ def nearest_visible(polygon: Polygon, t: Triangle) -> Vertex:
 # --- clock: rotation -----------------------------------------------------------------------------
 
 
-@tracing.traced
+@tracing.traced(exclude_args=("n",))
 def first_hit_rotating(centre: Vertex, start: Vertex, candidates: list[Vertex], n: int) -> Vertex:
     """A clock hand at `centre`, set to `start`, turns; the first candidate it passes is D."""
 
@@ -168,7 +168,7 @@ def _wrap_degrees(a: float) -> float:
 # --- sweep: translation --------------------------------------------------------------------------
 
 
-@tracing.traced
+@tracing.traced(exclude_args=("n",))
 def first_hit_sweeping(
     b: Vertex, direction: list[float], candidates: list[Vertex], n: int, shore: Triangle | None
 ) -> Vertex:
@@ -212,7 +212,8 @@ def _triangle_heuristic(pick: Callable[[Polygon, Triangle, list[Vertex]], Vertex
             candidates = candidates_in_triangle(polygon, t)
             if not candidates:
                 return claim(t.a, t.c)
-            return claim(t.b, pick(polygon, t, candidates))
+            d = pick(polygon, t, candidates)
+            return claim(t.b, d)
 
     return heuristic
 
@@ -244,8 +245,10 @@ def _named(name: str, function: Callable[[Polygon], Diagonal]) -> Callable[[Poly
     return tracing.traced(name=name)(function)
 
 
+# The pick is traced too, so the log shows the line of the heuristic that asked for it.
+_pick = tracing.traced(name="pick", exclude_args=("p",))
 HEURISTICS: dict[str, Callable[[Polygon], Diagonal]] = {
-    name: _named(name, _triangle_heuristic(pick)) for name, pick in _PICKS.items()
+    name: _named(name, _triangle_heuristic(_pick(pick))) for name, pick in _PICKS.items()
 }
 HEURISTICS["gravity"] = gravity
 

@@ -1,0 +1,330 @@
+"""From a log to beats: plain data saying what each moment of the video shows.
+
+A beat names its metaphor action, the objects and their roles (called,
+argument, result, rejected, idle), the numbers the animation needs (radii,
+angles, offsets, points — all read from the log, never recomputed), the
+call line, the pseudocode line and a caption. The only thing computed here
+is the verdict on each claimed diagonal, by :mod:`geometry.check`.
+
+This module does not import manim: beats are data, so a log saved as JSON
+and loaded again gives the same beats, hence the same video.
+
+>>> import tracing
+>>> from geometry.diagonals import find_diagonal
+>>> from geometry.polygon import Polygon
+>>> from geometry.samples import make_sample
+>>> p = Polygon.from_points(make_sample("counterexample"))
+>>> with tracing.record(algorithm="scaling") as log:
+...     _ = find_diagonal(p, "scaling")
+>>> [b.action for b in storyboard(log)]
+['polygon', 'pick', 'triangle', 'candidates', 'water', 'claim', 'verdict']
+>>> storyboard(log)[4].call
+'nearest_to(B, [D, E]) → D'
+>>> storyboard(log)[-1].caption
+'✗ BD is not an inner diagonal: B–D crosses edge E–A at (2.86087, 6.36087)'
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from geometry.check import is_inner_diagonal
+from geometry.polygon import Polygon
+from tracing import Event, Log
+
+#: Steps whose call and return become one metaphor beat, with the shape they animate.
+METAPHOR_STEPS = {
+    "nearest_to": ("water", "water"),
+    "nearest_visible": ("walled-water", "water"),
+    "last_dry": ("flood", "flood"),
+    "first_hit_rotating": ("clock", "hand"),
+    "first_hit_sweeping": ("sweep", "sweep"),
+    "drop_ball": ("drop", "ball"),
+    "slide_to_vertex": ("slide", "ball"),
+    "band_snag": ("snag", "band"),
+}
+
+CAPTIONS = {
+    "leftmost_vertex": "{result} is the left-most vertex (lowest on ties): always convex, it plays B",
+    "reflex_vertex": "{result} is a reflex vertex: the ball will hang there",
+    "straight_vertex": "{result} is a straight vertex: the ball hangs there instead",
+}
+NONE_CAPTIONS = {
+    "reflex_vertex": "No reflex vertex: the polygon is convex",
+}
+
+
+@dataclass(frozen=True)
+class Beat:
+    """One moment of the video, as plain data."""
+
+    action: str
+    caption: str
+    step: int
+    call: str | None = None
+    line: int | None = None
+    roles: dict[str, str] = field(default_factory=dict)
+    data: dict = field(default_factory=dict)
+    pace: float = 1.0
+
+    def to_dict(self) -> dict:
+        return {
+            "action": self.action, "caption": self.caption, "step": self.step,
+            "call": self.call, "line": self.line, "roles": self.roles, "data": self.data,
+            "pace": self.pace,
+        }
+
+
+@dataclass(frozen=True)
+class Pacing:
+    """Full detail for the first `full` claims, then `fast` × the run time."""
+
+    full: int = 2
+    fast: float = 0.35
+
+
+# --- call lines ----------------------------------------------------------------------------------
+
+
+def show(value) -> str:
+    """A value as the call line writes it: refs by key, polygons as P, lists in brackets.
+
+    >>> show({"ref": "P(ABCDE)"}), show([{"ref": "D"}, {"ref": "E"}]), show(2.5), show(None)
+    ('P', '[D, E]', '2.5', '—')
+    """
+    if isinstance(value, dict) and "ref" in value:
+        key = value["ref"]
+        return "P" if key.startswith("P(") else key
+    if isinstance(value, list):
+        return "[" + ", ".join(show(v) for v in value) + "]"
+    if isinstance(value, float):
+        return f"{value:.3g}"
+    if value is None:
+        return "—"
+    if isinstance(value, dict):
+        return "{…}"
+    return str(value)
+
+
+def call_line(call: Event, ret: Event | None) -> str:
+    args = ", ".join(show(v) for v in (call.args or {}).values())
+    text = f"{call.name}({args})"
+    return f"{text} → {show(ret.result)}" if ret is not None else text
+
+
+def _refs(value) -> list[str]:
+    if isinstance(value, dict) and "ref" in value:
+        return [value["ref"]]
+    if isinstance(value, list):
+        return [k for v in value for k in _refs(v)]
+    return []
+
+
+def call_roles(call: Event, ret: Event | None) -> dict[str, str]:
+    """First referenced argument (not the polygon) is called, the others arguments, result green."""
+    refs = [k for v in (call.args or {}).values() for k in _refs(v) if not k.startswith("P(")]
+    roles = {k: "argument" for k in refs[1:]}
+    if refs:
+        roles[refs[0]] = "called"
+    for k in _refs(ret.result) if ret is not None else []:
+        roles[k] = "result"
+    return roles
+
+
+# --- the walk ------------------------------------------------------------------------------------
+
+
+class _Walk:
+    """State of one pass over the log: live objects, open calls, claims seen."""
+
+    def __init__(self, log: Log, pacing: Pacing, shown_code: str | None):
+        self.log, self.pacing = log, pacing
+        self.live: dict[str, dict] = {}
+        self.returns = {e.call: e for e in log.events if e.kind == "return"}
+        self.claims = 0
+        self.heuristic_polygon: list[str] = []
+        self.shown_polygon = False
+        self.stack: list[Event] = []  # open calls, outermost first
+        self.shown_code = shown_code
+
+    def code_line(self, event: Event) -> int | None:
+        """The line lit in the shown function: the line of its direct callee, or of the event."""
+        for k, call in enumerate(self.stack):
+            if call.name == self.shown_code:
+                inner = self.stack[k + 1] if k + 1 < len(self.stack) else event
+                return inner.line
+        return None
+
+    def pace(self) -> float:
+        return 1.0 if self.claims < self.pacing.full else self.pacing.fast
+
+    def beat(self, action: str, caption: str, event: Event, **kw) -> Beat:
+        return Beat(action, caption, event.seq, line=self.code_line(event), pace=self.pace(), **kw)
+
+    def changes(self, call: Event, target: str) -> list[dict]:
+        ret = self.returns.get(call.seq)
+        end = ret.seq if ret is not None else len(self.log.events)
+        return [
+            e.state for e in self.log.events[call.seq:end]
+            if e.kind in ("enter", "change") and e.target == target
+        ]
+
+
+def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = None) -> list[Beat]:
+    """The beats of a log, in order.
+
+    ``shown_code`` names the traced function whose source the panel shows (default: the
+    log's ``algorithm`` meta); each beat's ``line`` is the source line lit in it.
+    """
+    walk = _Walk(log, pacing or Pacing(), shown_code or log.meta.get("algorithm"))
+    beats: list[Beat] = []
+    for event in log.events:
+        beats.extend(_beats_for(walk, event))
+        _track(walk, event)
+    return beats
+
+
+def _track(walk: _Walk, event: Event) -> None:
+    if event.kind == "call":
+        walk.stack.append(event)
+    elif event.kind == "return":
+        walk.stack.pop()
+    elif event.kind in ("enter", "change"):
+        walk.live[event.target] = event.state
+    elif event.kind == "exit":
+        walk.live.pop(event.target, None)
+
+
+def _beats_for(walk: _Walk, e: Event) -> Iterator[Beat]:
+    if e.kind == "enter" and e.state.get("kind") == "polygon" and e.target.startswith("P("):
+        if not walk.shown_polygon:
+            walk.shown_polygon = True
+            yield walk.beat("polygon", "The polygon", e, data=_polygon_data(e.state))
+        return
+    if e.kind == "call" and "polygon" in (e.args or {}) and e.name in _HEURISTIC_NAMES:
+        walk.heuristic_polygon.append(e.args["polygon"]["ref"])
+        return
+    if e.kind == "return" and e.name in _HEURISTIC_NAMES and walk.heuristic_polygon:
+        walk.heuristic_polygon.pop()
+        return
+    if e.kind == "enter" and e.target.startswith("T("):
+        labels = "".join(e.state["labels"])
+        yield walk.beat("triangle", f"T = {labels}: B and its two neighbours", e,
+                        data={"points": e.state["points"], "labels": e.state["labels"]})
+        return
+    if e.kind == "return":
+        yield from _return_beats(walk, e)
+        return
+    if e.kind == "enter" and e.state.get("kind") == "segment" and "labels" in e.state:
+        yield from _claim_beats(walk, e)
+        return
+    if e.kind == "note":
+        yield walk.beat("note", e.args.get("reason", e.name) if e.args else e.name, e,
+                        data=dict(e.args or {}))
+
+
+_HEURISTIC_NAMES = {
+    "scaling", "rotation", "rotation-ccw", "translation", "translation-correct",
+    "scaling-correct", "rotation-correct", "scaling-walled", "gravity", "sweep_at", "gravity_at",
+}
+
+
+def _return_beats(walk: _Walk, ret: Event) -> Iterator[Beat]:
+    call = walk.log.events[ret.call]
+    roles = call_roles(call, ret)
+    line = call_line(call, ret)
+    kw = {"call": line, "roles": roles}
+    if ret.name in CAPTIONS:
+        if ret.result is None:
+            if ret.name in NONE_CAPTIONS:
+                yield walk.beat("note", NONE_CAPTIONS[ret.name], call, **kw)
+            return
+        caption = CAPTIONS[ret.name].format(result=show(ret.result))
+        yield walk.beat("pick", caption, call, data={"vertex": show(ret.result)}, **kw)
+    elif ret.name == "candidates_in_triangle":
+        found = [show(v) for v in ret.result or []]
+        caption = (f"Candidates inside T: {', '.join(found)}" if found
+                   else "No vertex inside T: AC is an inner diagonal")
+        yield walk.beat("candidates", caption, call, data={"candidates": found}, **kw)
+    elif ret.name == "gravity_direction":
+        yield walk.beat("gravity-turn", "Turn the polygon so that gravity points down", call,
+                        data=dict(ret.result), **kw)
+    elif ret.name in METAPHOR_STEPS:
+        action, shape = METAPHOR_STEPS[ret.name]
+        data = {"states": walk.changes(call, shape), "result": show(ret.result)}
+        data.update(_extra(walk, call, ret))
+        yield walk.beat(action, _metaphor_caption(action, data), call, data=data, **kw)
+    elif ret.name == "split":
+        pieces = [r["ref"] for r in ret.result]
+        yield walk.beat("split", "Split along the diagonal into two smaller polygons", call,
+                        data={"pieces": pieces}, **kw)
+
+
+def _extra(walk: _Walk, call: Event, ret: Event) -> dict:
+    """Per-step data from the log besides the shape's states."""
+    if call.name == "nearest_visible":
+        sees = [e for e in walk.log.events[call.seq:ret.seq] if e.kind == "call" and e.name == "sees"]
+        return {"visible": [(show(s.args["v"]), bool(walk.returns[s.seq].result)) for s in sees]}
+    if call.name == "drop_ball":
+        hit = next(e.state for e in walk.log.events[call.seq:ret.seq]
+                   if e.kind == "enter" and e.target == "hit")
+        return {"hit": hit["at"]}
+    return {}
+
+
+_METAPHOR_CAPTIONS = {
+    "water": "Water spilled at B spreads; the first candidate it wets is {result}",
+    "walled-water": "Water that respects the walls reaches {result} first",
+    "flood": "Water rises from the shore AC; the last dry candidate is {result}",
+    "clock": "The clock hand turns; the first candidate it passes is {result}",
+    "sweep": "The line sweeps across T; the first candidate it touches is {result}",
+    "drop": "The ball falls until it hits the boundary",
+    "slide": "It slides down the edge to {result}",
+    "snag": "The rubber band snags {result}",
+}
+
+
+def _metaphor_caption(action: str, data: dict) -> str:
+    if action == "snag" and data["result"] == "—":
+        return "The rubber band stays straight"
+    return _METAPHOR_CAPTIONS[action].format(result=data["result"])
+
+
+def _claim_beats(walk: _Walk, e: Event) -> Iterator[Beat]:
+    u, v = e.state["labels"]
+    name = f"{u}{v}"
+    yield walk.beat("claim", f"Claim: {name} is an inner diagonal", e,
+                    roles={u: "result", v: "result"},
+                    data={"labels": [u, v], "points": e.state["points"]})
+    polygon = _claim_polygon(walk)
+    walk.claims += 1
+    if polygon is None:
+        return
+    i, j = polygon.labels.index(u), polygon.labels.index(v)
+    verdict = is_inner_diagonal(polygon, i, j)
+    data = {"ok": verdict.ok, "labels": [u, v], "why": verdict.why, "code": verdict.code,
+            "point": list(verdict.point) if verdict.point else None,
+            "edge": [polygon.labels[k] for k in verdict.edge] if verdict.edge else None}
+    caption = f"✓ {name} is an inner diagonal" if verdict else (
+        f"✗ {name} is not an inner diagonal: {verdict.why}")
+    roles = {u: "result", v: "result"} if verdict else {u: "rejected", v: "rejected"}
+    yield walk.beat("verdict", caption, e, roles=roles, data=data)
+
+
+def _claim_polygon(walk: _Walk) -> Polygon | None:
+    """The polygon the running heuristic works on, from the live states of the log."""
+    if not walk.heuristic_polygon:
+        return None
+    state = walk.live.get(walk.heuristic_polygon[-1])
+    if state is None:
+        return None
+    return Polygon(
+        points=tuple(tuple(p) for p in state["points"]),
+        labels=tuple(state["labels"]),
+        source=tuple(range(len(state["points"]))),
+    )
+
+
+def _polygon_data(state: dict) -> dict:
+    return {"points": state["points"], "labels": state["labels"]}
