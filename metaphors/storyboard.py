@@ -46,7 +46,7 @@ METAPHOR_STEPS = {
 }
 
 CAPTIONS = {
-    "leftmost_vertex": "{result} is the left-most vertex (lowest on ties): always convex, it plays B",
+    "leftmost_vertex": "{result} is the left-most vertex (lowest on ties): convex, it plays B",
     "reflex_vertex": "{result} is a reflex vertex: the ball will hang there",
     "straight_vertex": "{result} is a straight vertex: the ball hangs there instead",
 }
@@ -264,7 +264,8 @@ def _return_beats(walk: _Walk, ret: Event) -> Iterator[Beat]:
 def _extra(walk: _Walk, call: Event, ret: Event) -> dict:
     """Per-step data from the log besides the shape's states."""
     if call.name == "nearest_visible":
-        sees = [e for e in walk.log.events[call.seq:ret.seq] if e.kind == "call" and e.name == "sees"]
+        inside = walk.log.events[call.seq:ret.seq]
+        sees = [e for e in inside if e.kind == "call" and e.name == "sees"]
         return {"visible": [(show(s.args["v"]), bool(walk.returns[s.seq].result)) for s in sees]}
     if call.name == "drop_ball":
         hit = next(e.state for e in walk.log.events[call.seq:ret.seq]
