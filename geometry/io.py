@@ -214,9 +214,12 @@ def _geojson_rings(obj: dict) -> list[Ring]:
         if geometry is None:
             raise InputFormatError("GeoJSON Feature has no geometry")
         return _geojson_rings(_expect_object(geometry, "geometry"))
+    if kind is None:
+        raise InputFormatError(
+            "JSON object has no 'type'; expected [x, y] points, rings or a GeoJSON Polygon"
+        )
     if kind != "Polygon":
-        name = kind if isinstance(kind, str) else "object without a 'type'"
-        raise InputFormatError(f"GeoJSON {name} is not supported; expected a Polygon")
+        raise InputFormatError(f"GeoJSON {kind} is not supported; expected a Polygon")
     rings = obj.get("coordinates")
     if not isinstance(rings, list) or (rings and not _is_ring_list(rings)):
         raise InputFormatError("GeoJSON Polygon 'coordinates' must be a list of rings")

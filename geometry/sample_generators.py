@@ -160,16 +160,17 @@ def random_comb(n: int, rng: random.Random) -> list[Point]:
 # --- the fixed two-ears polygon ----------------------------------------------
 
 
-def two_ears(bends: int = 4, amplitude: int = 3, thickness: int = 2) -> list[Point]:
+def two_ears(bends: int = 4) -> list[Point]:
     """A zig-zag strip with pointed ends: its only ears are the two tips.
 
-    Every other convex vertex sees the opposite reflex vertex inside its triangle.
+    Every other convex vertex has the opposite chain's reflex vertex inside its
+    triangle; the tips stick out far enough (2 beyond a strip 2 thick, zig-zag
+    6 high) for the vertices next to them to see the other chain too.
     """
-    lower = [(2 * k, amplitude * (k % 2)) for k in range(bends + 1)]
-    upper = [(x, y + thickness) for x, y in reversed(lower)]
-    right_tip = (2 * bends + 1, lower[-1][1] + thickness // 2)
-    left_tip = (-1, thickness // 2)
-    return [*lower, right_tip, *upper, left_tip]
+    lower = [(4 * k, 6 * (k % 2)) for k in range(bends + 1)]
+    upper = [(x, y + 2) for x, y in reversed(lower)]
+    right_tip = (4 * bends + 2, lower[-1][1] + 1)
+    return [*lower, right_tip, *upper, (-2, 1)]
 
 
 # --- random 2-opt ------------------------------------------------------------

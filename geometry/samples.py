@@ -46,7 +46,15 @@ from geometry.sample_generators import (
     two_ears,
 )
 
-__all__ = ["UnknownSampleError", "make_sample", "parse_spec", "sample_names"]
+__all__ = [
+    "UnknownSampleError",
+    "is_sample",
+    "make_sample",
+    "minimum_n",
+    "parse_spec",
+    "sample_from_spec",
+    "sample_names",
+]
 
 _COUNTEREXAMPLE: tuple[Point, ...] = ((1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8))
 
@@ -106,6 +114,23 @@ def sample_names() -> list[str]:
     return sorted([*_FIXED, *_FAMILIES])
 
 
+def _unknown(name: str) -> UnknownSampleError:
+    return UnknownSampleError(f"unknown sample '{name}'; known: {', '.join(sample_names())}")
+
+
+def minimum_n(name: str) -> int:
+    """Smallest ``n`` sample ``name`` takes (a fixed sample's own size).
+
+    >>> minimum_n("comb"), minimum_n("counterexample")
+    (12, 5)
+    """
+    if name in _FIXED:
+        return len(_FIXED[name])
+    if name not in _FAMILIES:
+        raise _unknown(name)
+    return _FAMILIES[name].minimum
+
+
 def make_sample(name: str, n: int | None = None, seed: int = 0) -> list[Point]:
     """The points of sample ``name`` (``n`` vertices for families, seeded by ``seed``).
 
@@ -138,7 +163,7 @@ def make_sample(name: str, n: int | None = None, seed: int = 0) -> list[Point]:
         return list(_FIXED[name])
     family = _FAMILIES.get(name)
     if family is None:
-        raise UnknownSampleError(f"unknown sample '{name}'; known: {', '.join(sample_names())}")
+        raise _unknown(name)
     size = family.default if n is None else n
     if isinstance(size, bool) or not isinstance(size, int) or size < family.minimum:
         raise InputFormatError(f"sample {name} needs n ≥ {family.minimum}, got {size}")

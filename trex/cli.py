@@ -15,7 +15,7 @@ from geometry.errors import GeometryError
 from geometry.io import to_json, write_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
-from trex.inputs import EXIT_INVALID, error_line, fail, try_load
+from trex.inputs import EXIT_INVALID, error_line, fail, first_line, try_load
 
 _SHOWN_LABELS = 8
 
@@ -29,12 +29,16 @@ class _OneLineGroup(click.Group):
         kwargs.setdefault("prog_name", "trex")
         try:
             code = super().main(*args, standalone_mode=False, **kwargs)
+        except click.exceptions.NoArgsIsHelpError as exc:
+            click.echo(exc.format_message())  # bare `trex`: the help, status 2 as click does
+            sys.exit(exc.exit_code)
         except click.UsageError as exc:
             where = exc.ctx.command_path if exc.ctx is not None else "trex"
-            click.echo(f"error: {error_line(exc)} (try '{where} --help')", err=True)
+            message = first_line(exc.format_message())
+            click.echo(f"error: {message} (try '{where} --help')", err=True)
             sys.exit(exc.exit_code)
         except click.ClickException as exc:
-            click.echo(f"error: {error_line(exc)}", err=True)
+            click.echo(f"error: {first_line(exc.format_message())}", err=True)
             sys.exit(exc.exit_code)
         except click.Abort:
             click.echo("aborted", err=True)

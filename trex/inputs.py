@@ -27,10 +27,15 @@ EXIT_INVALID = 2
 READ_ERRORS = (GeometryError, OSError, ValueError, RecursionError, MemoryError)
 
 
+def first_line(text: str) -> str:
+    """The first non-blank line of ``text`` (stripped), or ``""``."""
+    lines = text.strip().splitlines()
+    return lines[0].strip() if lines else ""
+
+
 def error_line(exc: BaseException) -> str:
     """The first line of an exception's message (its class name when it has none)."""
-    text = str(exc).strip()
-    return text.splitlines()[0] if text else type(exc).__name__
+    return first_line(str(exc)) or type(exc).__name__
 
 
 def report_error(arg: str, exc: BaseException) -> None:

@@ -1,0 +1,212 @@
+"""Named samples and generators: exact points, validity, size, determinism."""
+
+from __future__ import annotations
+
+import json
+import random
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import shapely
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from geometry.errors import InputFormatError, UnknownSampleError
+from geometry.polygon import Polygon
+from geometry.predicates import orient
+from geometry.samples import (
+    is_sample,
+    make_sample,
+    minimum_n,
+    parse_spec,
+    sample_from_spec,
+    sample_names,
+)
+
+FIXED = ["counterexample", "counterexample-twin", "square", "triangle", "lecture", "two-ears"]
+FAMILIES = ["star", "spiral", "comb"]
+ROOT = Path(__file__).resolve().parent.parent
+GENERATORS = ["random-star", "random-2opt", "random-orthogonal", "random-spiral", "random-comb"]
+
+
+def ears(points: list) -> list[int]:
+    """Ears by definition, via shapely only: the segment prev–next runs through the interior.
+
+    DE-9IM "1FF******": the segment's interior meets the polygon's interior and
+    neither its boundary nor its exterior. Independent of geometry.predicates.
+    """
+    shape = shapely.Polygon(points)
+    n = len(points)
+    return [
+        i
+        for i in range(n)
+        if shapely.LineString([points[i - 1], points[(i + 1) % n]]).relate_pattern(
+            shape, "1FF******"
+        )
+    ]
+
+
+def test_names_cover_every_kind():
+    assert sorted(FIXED + FAMILIES + GENERATORS) == sample_names()
+
+
+def test_counterexample_is_exact_and_in_order():
+    assert make_sample("counterexample") == [(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)]
+
+
+def test_twin_mirrors_y():
+    twin = make_sample("counterexample-twin")
+    assert twin == [(x, -y) for x, y in make_sample("counterexample")]
+
+
+@pytest.mark.parametrize("name", FIXED + FAMILIES + GENERATORS)
+def test_default_sample_is_valid(name):
+    points = make_sample(name)
+    assert Polygon.from_points(points).n == len(points)
+
+
+def test_lecture_is_interesting():
+    polygon = Polygon.from_points(make_sample("lecture"))
+    assert 10 <= polygon.n <= 14
+    assert len(polygon.reflex_vertices()) >= 3
+
+
+def test_two_ears_has_exactly_two_ears():
+    points = make_sample("two-ears")
+    assert len(ears(points)) == 2
+    assert len(ears(points[::-1])) == 2
+
+
+def test_ear_oracle_sanity():
+    assert len(ears([(0, 0), (1, 0), (1, 1), (0, 1)])) == 4
+    assert len(ears(make_sample("comb"))) == 10  # the two top corners of each of 5 teeth
+
+
+@pytest.mark.parametrize("name", FAMILIES)
+def test_family_sizes_are_exact_and_valid(name):
+    for n in range(minimum_n(name), 160):
+        points = make_sample(name, n)
+        assert len(points) == n
+        Polygon.from_points(points)
+
+
+@pytest.mark.parametrize("name", ["spiral", "comb"])
+def test_ten_thousand_vertex_families_are_valid(name):
+    assert Polygon.from_points(make_sample(name, 10_000)).n == 10_000
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("name", "n"), [("star", 10_000), ("spiral", 100_000), ("comb", 100_000)])
+def test_large_families_are_valid(name, n):
+    assert Polygon.from_points(make_sample(name, n)).n == n
+
+
+@pytest.mark.parametrize("name", GENERATORS)
+def test_generators_sizes_and_seeds(name):
+    for n in (minimum_n(name), minimum_n(name) + 1, 17, 40, 150):
+        for seed in range(3):
+            points = make_sample(name, n, seed)
+            assert len(points) == n
+            Polygon.from_points(points)
+
+
+@settings(max_examples=150)
+@given(
+    name=st.sampled_from(GENERATORS),
+    extra=st.integers(0, 70),
+    seed=st.integers(0, 2**32),
+)
+def test_generated_polygons_validate(name, extra, seed):
+    n = minimum_n(name) + extra
+    assert Polygon.from_points(make_sample(name, n, seed)).n == n
+
+
+@pytest.mark.parametrize("name", GENERATORS)
+def test_generators_are_seeded(name):
+    a = make_sample(name, 30, seed=5)
+    assert make_sample(name, 30, seed=5) == a
+    assert make_sample(name, 30, seed=6) != a
+
+
+@pytest.mark.parametrize("name", GENERATORS)
+def test_generators_ignore_the_global_random(name):
+    random.seed(1)
+    a = make_sample(name, 25, seed=2)
+    random.seed(99)
+    assert make_sample(name, 25, seed=2) == a
+
+
+def test_generators_are_stable_across_processes():
+    code = (
+        "import json; from geometry.samples import make_sample; "
+        "print(json.dumps([make_sample(g, 40, 3) for g in "
+        f"{GENERATORS!r}]))"
+    )
+    runs = [
+        subprocess.run(
+            [sys.executable, "-c", code],
+            capture_output=True,
+            text=True,
+            check=True,
+            env={"PYTHONHASHSEED": seed, "PATH": ""},
+            cwd=ROOT,
+        ).stdout
+        for seed in ("1", "2")
+    ]
+    assert runs[0] == runs[1]
+    assert json.loads(runs[0])
+
+
+def test_random_star_is_star_shaped_around_the_origin():
+    polygon = Polygon.from_points(make_sample("random-star", 60, 4))
+    pts = polygon.points
+    assert all(orient(pts[i], pts[(i + 1) % len(pts)], (0, 0)) > 0 for i in range(len(pts)))
+
+
+def test_random_orthogonal_is_orthogonal_on_a_grid_with_collinear_runs():
+    points = make_sample("random-orthogonal", 60, 1)
+    polygon = Polygon.from_points(points)
+    assert all(isinstance(c, int) for p in points for c in p)
+    for (x1, y1), (x2, y2) in zip(points, points[1:] + points[:1], strict=True):
+        assert x1 == x2 or y1 == y2
+    assert (polygon.turns == 0).sum() >= 5
+    assert len({x for x, _ in points}) < len(points) / 2
+
+
+def test_random_comb_uses_integers():
+    assert all(isinstance(c, int) for p in make_sample("random-comb", 33, 2) for c in p)
+
+
+def test_unknown_sample_lists_the_names():
+    with pytest.raises(UnknownSampleError, match=r"unknown sample 'stra'; known: comb, .*two-ears"):
+        make_sample("stra")
+
+
+@pytest.mark.parametrize(
+    ("name", "n", "message"),
+    [
+        ("square", 5, "sample square has a fixed size of 4"),
+        ("random-star", 2, "sample random-star needs n ≥ 3, got 2"),
+        ("comb", 11, "sample comb needs n ≥ 12, got 11"),
+        ("spiral", True, "needs n ≥ 6"),
+    ],
+)
+def test_bad_sizes(name, n, message):
+    with pytest.raises(InputFormatError, match=message):
+        make_sample(name, n)
+
+
+def test_fixed_sample_accepts_its_own_size():
+    assert make_sample("square", 4) == make_sample("square")
+
+
+def test_specs():
+    assert parse_spec("random-comb:20:9") == ("random-comb", 20, 9)
+    assert is_sample("lecture") and is_sample("star:20") and not is_sample("lecture.json")
+    assert sample_from_spec("random-comb:20:9") == make_sample("random-comb", 20, 9)
+    with pytest.raises(InputFormatError, match="expected NAME"):
+        parse_spec("star:1:2:3")
+    with pytest.raises(UnknownSampleError):
+        minimum_n("nope")
