@@ -177,7 +177,8 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
     ``shown_code`` names the traced function whose source the panel shows (default: the
     log's ``algorithm`` meta); each beat's ``line`` is the source line lit in it.
     """
-    walk = _Walk(log, pacing or Pacing(), shown_code or log.meta.get("algorithm"))
+    shown = shown_code or log.meta.get("shown") or log.meta.get("algorithm")
+    walk = _Walk(log, pacing or Pacing(), shown)
     beats: list[Beat] = []
     for event in log.events:
         beats.extend(_beats_for(walk, event))
@@ -216,9 +217,6 @@ def _beats_for(walk: _Walk, e: Event) -> Iterator[Beat]:
     if e.kind == "return":
         yield from _return_beats(walk, e)
         return
-    if e.kind == "enter" and e.state.get("kind") == "segment" and "labels" in e.state:
-        yield from _claim_beats(walk, e)
-        return
     if e.kind == "note":
         yield walk.beat("note", e.args.get("reason", e.name) if e.args else e.name, e,
                         data=dict(e.args or {}))
@@ -255,6 +253,8 @@ def _return_beats(walk: _Walk, ret: Event) -> Iterator[Beat]:
         data = {"states": walk.changes(call, shape), "result": show(ret.result)}
         data.update(_extra(walk, call, ret))
         yield walk.beat(action, _metaphor_caption(action, data), call, data=data, **kw)
+    elif ret.name == "claim":
+        yield from _claim_beats(walk, call, walk.live[ret.result["ref"]], line)
     elif ret.name == "split":
         pieces = [r["ref"] for r in ret.result]
         yield walk.beat("split", "Split along the diagonal into two smaller polygons", call,
@@ -292,12 +292,12 @@ def _metaphor_caption(action: str, data: dict) -> str:
     return _METAPHOR_CAPTIONS[action].format(result=data["result"])
 
 
-def _claim_beats(walk: _Walk, e: Event) -> Iterator[Beat]:
-    u, v = e.state["labels"]
+def _claim_beats(walk: _Walk, e: Event, state: dict, call: str) -> Iterator[Beat]:
+    u, v = state["labels"]
     name = f"{u}{v}"
-    yield walk.beat("claim", f"Claim: {name} is an inner diagonal", e,
+    yield walk.beat("claim", f"Claim: {name} is an inner diagonal", e, call=call,
                     roles={u: "result", v: "result"},
-                    data={"labels": [u, v], "points": e.state["points"]})
+                    data={"labels": [u, v], "points": state["points"]})
     polygon = _claim_polygon(walk)
     walk.claims += 1
     if polygon is None:

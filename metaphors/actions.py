@@ -1,0 +1,23 @@
+"""Which performer plays which beat action. A beat with no performer plays as a caption only."""
+
+from __future__ import annotations
+
+from metaphors import basics, water
+
+PERFORMERS = {
+    "polygon": basics.polygon,
+    "pick": basics.pick,
+    "triangle": basics.triangle,
+    "candidates": basics.candidates,
+    "claim": basics.claim,
+    "verdict": basics.verdict,
+    "note": basics.note,
+    "water": water.water,
+    "walled-water": water.walled_water,
+    "flood": water.flood,
+}
+
+
+def perform(board, beat) -> None:
+    """Play one beat on the board."""
+    PERFORMERS.get(beat.action, basics.note)(board, beat)

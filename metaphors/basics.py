@@ -1,0 +1,96 @@
+"""Beats every algorithm shares: the polygon, a picked vertex, the triangle T, the candidates,
+the claim, the verdict (✓, or a red flash where the claim crosses an edge), notes."""
+
+from __future__ import annotations
+
+from manim import (
+    Create,
+    DashedLine,
+    Dot,
+    FadeIn,
+    Flash,
+    Indicate,
+    Line,
+    Text,
+    Write,
+)
+from manim import (
+    Polygon as MPolygon,
+)
+
+from metaphors.panel import tag
+
+
+def polygon(board, beat) -> None:
+    board.scene.add(*board.panel.mobjects())
+    board.play(beat, Write(board.title), Create(board.shape), FadeIn(*board.markers.values()),
+               run_time=1.5)
+
+
+def pick(board, beat) -> None:
+    marker = board.markers[beat.data["vertex"]]
+    board.play(beat, Indicate(marker, color=board.theme.result), run_time=1.0)
+
+
+def triangle(board, beat) -> None:
+    t = tag(MPolygon(*[board.at(p) for p in beat.data["points"]], color=board.theme.called,
+                     stroke_width=board.theme.thin_stroke, fill_color=board.theme.called,
+                     fill_opacity=0.15), "called", "T")
+    board.keep("T", t)
+    board.play(beat, Create(t), run_time=1.0)
+
+
+def candidates(board, beat) -> None:
+    board.play(beat, *[Indicate(board.markers[c], color=board.theme.argument, scale_factor=1.4)
+                       for c in beat.data["candidates"]], run_time=1.0)
+
+
+def claim(board, beat) -> None:
+    u, v = beat.data["points"]
+    line = tag(Line(board.at(u), board.at(v), color=board.theme.result,
+                    stroke_width=board.theme.stroke * 1.5), "result", "claim")
+    board.keep("claim", line)
+    board.play(beat, Create(line), run_time=1.0)
+
+
+def verdict(board, beat) -> None:
+    line = board.objects.get("claim")
+    theme = board.theme
+    if "T" in board.objects:
+        board.scene.play(*board.drop("T"), run_time=0.3 * beat.pace)
+    if beat.data["ok"]:
+        mark = tag(Text("✓", font=theme.font, font_size=48, color=theme.result), "result", "tick")
+        if line is not None:
+            mark.next_to(line.get_center(), direction=[0, 1, 0], buff=0.15)
+        board.keep("verdict", mark)
+        board.play(beat, FadeIn(mark, scale=1.5), run_time=1.0)
+        return
+    anims = []
+    if line is not None:
+        anims.append(line.animate.set_color(theme.rejected))
+    edge = beat.data.get("edge")
+    if edge:
+        crossed = tag(Line(board.vertex(edge[0]), board.vertex(edge[1]), color=theme.rejected,
+                           stroke_width=theme.stroke * 2.5), "rejected", f"edge:{'–'.join(edge)}")
+        board.keep("crossed", crossed)
+        anims.append(Create(crossed))
+    if beat.data.get("point"):
+        at = board.at(beat.data["point"])
+        spot = tag(Dot(at, radius=0.09, color=theme.rejected), "rejected", "crossing")
+        board.keep("crossing", spot)
+        anims += [FadeIn(spot), Flash(at, color=theme.rejected, flash_radius=0.5)]
+    mark = tag(Text("✗", font=theme.font, font_size=48, color=theme.rejected), "rejected", "cross")
+    if line is not None:
+        mark.next_to(line.get_center(), direction=[0, 1, 0], buff=0.15)
+    board.keep("verdict", mark)
+    board.play(beat, *anims, FadeIn(mark, scale=1.5), run_time=1.5)
+
+
+def note(board, beat) -> None:
+    board.play(beat, run_time=1.5)
+
+
+def dashed(board, a, b, role: str, name: str):
+    """A dashed segment between polygon points (used for lines outside the polygon)."""
+    return tag(DashedLine(board.at(a), board.at(b), color=board.theme.role_colour(role),
+                          stroke_width=board.theme.thin_stroke), role, name)

@@ -1,0 +1,100 @@
+"""The board a scene plays on: the metaphor's polygon (left), the panel (right), the subtitle.
+
+Performers (one module per metaphor family) receive the board and a beat, build mobjects at
+the log's coordinates with :meth:`Board.at`, and hand their animations to :meth:`Board.play`,
+which adds the panel's updates and the subtitle, applies the beat's pacing, and writes the
+caption as a Manim subcaption (so every render also writes an ``.srt``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from manim import FadeIn, FadeOut, Scene, Text, VGroup
+
+from geometry.polygon import Polygon
+from metaphors.drawing import Frame, polygon_mobject, vertex_markers
+from metaphors.layout import METAPHOR, SUBTITLE_Y, TITLE_Y
+from metaphors.panel import Panel, tag
+from metaphors.theme import THEME, Theme
+
+
+class Board:
+    """Everything on screen, and the play loop's helpers."""
+
+    def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
+                 theme: Theme = THEME):
+        self.scene, self.theme = scene, theme
+        self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
+                               tuple(range(len(labels))))
+        self.frame = Frame(self.polygon.points, METAPHOR.center, METAPHOR.width, METAPHOR.height)
+        self.shape = tag(polygon_mobject(self.polygon, self.frame, theme), "idle", "polygon")
+        self.markers = {
+            label: tag(m, "idle", f"vertex:{label}")
+            for label, m in zip(labels, vertex_markers(self.polygon, self.frame, theme),
+                                strict=True)
+        }
+        self.panel = Panel(points, labels, shown, theme)
+        self.title = tag(Text(title, font=theme.font, font_size=30, color=theme.ink), None, "title")
+        self.title.move_to((0, TITLE_Y, 0))
+        self.subtitle = tag(Text(" ", font=theme.font, font_size=theme.caption_size), None,
+                            "subtitle")
+        self.objects: dict[str, object] = {}  # persistent metaphor objects by key
+        self.caption = ""
+        self.roles: dict[str, str] = {}
+
+    # --- coordinates -----------------------------------------------------------------------------
+
+    def at(self, p) -> np.ndarray:
+        """Scene point of a polygon-coordinate point (follows the metaphor's rotation)."""
+        return self.frame.to_scene(p)
+
+    def vertex(self, label: str) -> np.ndarray:
+        return self.at(self.polygon.points[self.polygon.labels.index(label)])
+
+    def length(self, d: float) -> float:
+        """Scene length of a polygon-coordinate length."""
+        return d * self.frame.scale
+
+    def left_group(self) -> VGroup:
+        """What turns when the metaphor turns the polygon: outline, vertices, metaphor objects."""
+        return VGroup(self.shape, *self.markers.values(), *self.objects.values())
+
+    # --- playing ----------------------------------------------------------------------------------
+
+    def play(self, beat, *anims, run_time: float = 1.0) -> None:
+        """Play a beat: its own animations, the panel's, the roles on the left, the subtitle."""
+        everything = list(anims) + self.panel.follow(beat) + self._recolour(beat.roles)
+        everything += self._subtitle(beat.caption)
+        if not everything:
+            return
+        self.scene.play(*everything, run_time=max(0.1, run_time * beat.pace),
+                        subcaption=beat.caption if beat.caption != self.caption else None)
+        self.caption = beat.caption
+
+    def _recolour(self, roles: dict[str, str]) -> list:
+        anims = []
+        for label, marker in self.markers.items():
+            role = roles.get(label, "idle")
+            if self.roles.get(label, "idle") != role:
+                anims.append(tag(marker, role).animate.set_color(self.theme.role_colour(role)))
+        self.roles = {k: v for k, v in roles.items() if k in self.markers}
+        return anims
+
+    def _subtitle(self, caption: str) -> list:
+        if caption == self.caption:
+            return []
+        new = tag(Text(caption, font=self.theme.font, font_size=self.theme.caption_size,
+                       color=self.theme.ink), None, "subtitle")
+        if new.width > 13.4:
+            new.scale_to_fit_width(13.4)
+        new.move_to((0, SUBTITLE_Y, 0))
+        old, self.subtitle = self.subtitle, new
+        return [FadeOut(old), FadeIn(new)]
+
+    def keep(self, key: str, mobject) -> None:
+        """Remember a metaphor object (it turns with the polygon and is cleared by ``drop``)."""
+        self.objects[key] = mobject
+
+    def drop(self, *keys: str) -> list:
+        """Fade-outs for remembered objects."""
+        return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]

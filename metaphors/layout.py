@@ -1,0 +1,27 @@
+"""Where things go on the 16:9 frame (14.2 × 8 units): metaphor left, panel right, subtitle below."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Box:
+    """A rectangle of the frame: centre and size."""
+
+    x: float
+    y: float
+    width: float
+    height: float
+
+    @property
+    def center(self) -> tuple[float, float]:
+        return (self.x, self.y)
+
+
+TITLE_Y = 3.55
+METAPHOR = Box(-3.45, -0.05, 5.6, 5.6)
+PANEL_POLYGON = Box(3.6, 1.75, 4.6, 2.5)
+PANEL_CODE = Box(3.6, -0.95, 6.2, 2.55)
+PANEL_CALL_Y = -2.65
+SUBTITLE_Y = -3.55

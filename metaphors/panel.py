@@ -1,0 +1,119 @@
+"""The algorithm panel (right half): the polygon plainly, the running code with its line lit,
+and the call line ``nearest_to(B, [D, E]) → D``; every object coloured by its role."""
+
+from __future__ import annotations
+
+from manim import (
+    LEFT,
+    Animation,
+    FadeIn,
+    FadeOut,
+    Rectangle,
+    Text,
+    VGroup,
+)
+
+from metaphors.drawing import Frame, polygon_mobject, vertex_markers
+from metaphors.layout import PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON
+from metaphors.pseudocode import source_of
+from metaphors.theme import THEME, Theme
+
+
+def tag(mobject, role: str | None = None, name: str | None = None):
+    """Attach the role (and a name) a snapshot reports for a mobject; returns it."""
+    mobject.trex_role = role
+    if name:
+        mobject.name = name
+    return mobject
+
+
+class Panel:
+    """The right half of every scene. ``follow(beat)`` returns the animations that bring it
+    up to date with a beat (roles, lit line, call line)."""
+
+    def __init__(self, points, labels, shown: str | None, theme: Theme = THEME):
+        from geometry.polygon import Polygon
+
+        self.theme = theme
+        polygon = Polygon(tuple(map(tuple, points)), tuple(labels), tuple(range(len(labels))))
+        self.frame = Frame(polygon.points, PANEL_POLYGON.center, PANEL_POLYGON.width,
+                           PANEL_POLYGON.height)
+        self.outline = tag(polygon_mobject(polygon, self.frame, theme), "idle", "panel:polygon")
+        self.outline.set_fill(opacity=0.12)
+        self.markers = {
+            label: tag(m, "idle", f"panel:{label}")
+            for label, m in zip(labels, vertex_markers(polygon, self.frame, theme), strict=True)
+        }
+        self.code_lines = source_of(shown) if shown else ()
+        self.code = self._code_block()
+        self.light = tag(Rectangle(width=PANEL_CODE.width, height=0.2, stroke_width=0,
+                                   fill_color=theme.called, fill_opacity=0.3), "called", "panel:lit")
+        self.light.set_opacity(0)
+        self.call = tag(Text(" ", font=theme.mono_font, font_size=20), None, "panel:call")
+        self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
+        self.roles: dict[str, str] = {}
+
+    def mobjects(self) -> list:
+        return [self.outline, *self.markers.values(), self.light, self.code, self.call]
+
+    def _code_block(self) -> VGroup:
+        size = 15 if len(self.code_lines) <= 12 else 11
+        font = self.theme.mono_font
+        rows = VGroup(*[
+            tag(Text(text.strip() or " ", font=font, font_size=size, color=self.theme.idle),
+                "idle", f"code:{number}")
+            for number, text in self.code_lines
+        ])
+        if not len(rows):
+            return rows
+        rows.arrange(direction=[0, -1, 0], aligned_edge=LEFT, buff=0.07)
+        # Text drops leading spaces: indent each row by hand, one monospace cell per space.
+        cell = Text("M" * 20, font=font, font_size=size).width / 20
+        for row, (_, text) in zip(rows, self.code_lines, strict=True):
+            row.shift([cell * (len(text) - len(text.lstrip(" "))), 0, 0])
+        rows.scale_to_fit_height(min(rows.height, PANEL_CODE.height))
+        if rows.width > PANEL_CODE.width:
+            rows.scale_to_fit_width(PANEL_CODE.width)
+        rows.move_to((PANEL_CODE.x, PANEL_CODE.y, 0))
+        return rows
+
+    def follow(self, beat) -> list[Animation]:
+        """Animations for this beat's roles, lit line and call line (none if nothing changes)."""
+        anims = self._recolour(beat.roles)
+        anims += self._light_line(beat.line)
+        if beat.call is not None:
+            anims += self._call_line(beat.call)
+        return anims
+
+    def _recolour(self, roles: dict[str, str]) -> list[Animation]:
+        anims = []
+        wanted = {label: roles.get(label, "idle") for label in self.markers}
+        for label, role in wanted.items():
+            if self.roles.get(label, "idle") != role:
+                colour = self.theme.role_colour(role)
+                marker = tag(self.markers[label], role)
+                anims.append(marker.animate.set_color(colour))
+        self.roles = wanted
+        return anims
+
+    def _light_line(self, line: int | None) -> list[Animation]:
+        index = next((k for k, (number, _) in enumerate(self.code_lines) if number == line), None)
+        if index is None:
+            return []
+        row = self.code[index]
+        anims = [self.light.animate.set_opacity(0.3).stretch_to_fit_height(row.height + 0.08)
+                 .move_to((PANEL_CODE.x, row.get_y(), 0))]
+        for k, text in enumerate(self.code):
+            colour = self.theme.ink if k == index else self.theme.idle
+            if text.get_color().to_hex().lower() != colour.lower():
+                anims.append(tag(text, "called" if k == index else "idle").animate.set_color(colour))
+        return anims
+
+    def _call_line(self, text: str) -> list[Animation]:
+        new = tag(Text(text, font=self.theme.mono_font, font_size=20, color=self.theme.ink),
+                  "called", "panel:call")
+        if new.width > PANEL_CODE.width:
+            new.scale_to_fit_width(PANEL_CODE.width)
+        new.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
+        old, self.call = self.call, new
+        return [FadeOut(old), FadeIn(new)]

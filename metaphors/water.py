@@ -1,0 +1,98 @@
+"""Water: spilled at B it spreads as a growing disk (``scaling``); it rises from the shore AC
+towards B (``scaling-correct``); it spreads but respects the walls (``scaling-walled``).
+
+Radii, levels and the order in which vertices get wet are read from the log's shape states.
+"""
+
+from __future__ import annotations
+
+import shapely
+from manim import Circle, FadeIn, FadeOut, Indicate, Transform
+from manim import Polygon as MPolygon
+
+from geometry.visibility import visible_region
+from metaphors.panel import tag
+
+
+def _disk(board, center, radius: float):
+    return tag(Circle(radius=max(board.length(radius), 1e-3), color=board.theme.water,
+                      stroke_width=board.theme.thin_stroke, fill_color=board.theme.water,
+                      fill_opacity=0.3).move_to(board.at(center)), "argument", "water")
+
+
+def water(board, beat) -> None:
+    """The disk grows through each radius in turn; the first vertex it wets is the pick."""
+    states = beat.data["states"]
+    disk = _disk(board, states[0]["center"], 0.0)
+    board.play(beat, FadeIn(disk), run_time=0.5)
+    for k, state in enumerate(states[1:]):
+        grown = _disk(board, state["center"], state["radius"])
+        colour = board.theme.result if k == 0 else board.theme.argument
+        board.play(beat, Transform(disk, grown),
+                   Indicate(board.markers[state["reached"]], color=colour), run_time=1.2)
+    board.play(beat, FadeOut(disk), run_time=0.5)
+
+
+def walled_water(board, beat) -> None:
+    """The disk clipped to what B sees: water that cannot flow through walls."""
+    states = beat.data["states"]
+    centre = states[0]["center"]
+    region = visible_region(board.polygon, board.polygon.points.index(tuple(centre)))
+    disk = tag(MPolygon(board.at(centre), board.at(centre)), "argument", "water")
+    board.play(beat, FadeIn(disk), run_time=0.3)
+    visible = dict(beat.data.get("visible", []))
+    for state in states[1:]:
+        clipped = region.intersection(shapely.Point(centre).buffer(state["radius"], 64))
+        grown = _region_mobject(board, clipped)
+        seen = visible.get(state["reached"], False)
+        colour = board.theme.result if seen else board.theme.rejected
+        board.play(beat, Transform(disk, grown),
+                   Indicate(board.markers[state["reached"]], color=colour), run_time=1.2)
+    board.play(beat, FadeOut(disk), run_time=0.5)
+
+
+def _region_mobject(board, geometry):
+    parts = list(shapely.get_parts(geometry))
+    largest = max(parts, key=lambda g: g.area) if parts else None
+    if largest is None or largest.is_empty or largest.geom_type != "Polygon":
+        return tag(MPolygon(board.at((0, 0)), board.at((0, 0))), "argument", "water")
+    corners = [board.at(p) for p in list(largest.exterior.coords)[:-1]]
+    return tag(MPolygon(*corners, color=board.theme.water, stroke_width=board.theme.thin_stroke,
+                        fill_color=board.theme.water, fill_opacity=0.3), "argument", "water")
+
+
+def flood(board, beat) -> None:
+    """A band of water rises from AC towards B; each candidate goes under in turn, the last
+    one still dry is the pick."""
+    states = beat.data["states"]
+    a, c = states[0]["shore"]
+    towards = states[0]["towards"]
+    triangle = shapely.Polygon([a, c, towards])
+    band = tag(MPolygon(board.at(a), board.at(c)), "argument", "flood")
+    board.play(beat, FadeIn(band), run_time=0.3)
+    for state in states[1:]:
+        wet = triangle.intersection(_strip(a, c, towards, state["level"]))
+        drowned = board.markers[state["reached"]]
+        is_last = state is states[-1]
+        colour = board.theme.result if is_last else board.theme.rejected
+        board.play(beat, Transform(band, _region_mobject(board, wet)),
+                   Indicate(drowned, color=colour), run_time=1.2)
+    board.play(beat, FadeOut(band), run_time=0.5)
+
+
+def _strip(a, c, towards, level: float):
+    """Points of the plane within `level` of line AC on B's side."""
+    import math
+
+    dx, dy = c[0] - a[0], c[1] - a[1]
+    length = math.hypot(dx, dy)
+    nx, ny = -dy / length, dx / length
+    side = (towards[0] - a[0]) * nx + (towards[1] - a[1]) * ny
+    if side < 0:
+        nx, ny = -nx, -ny
+    far = 1e3 * length
+    ux, uy = dx / length * far, dy / length * far
+    return shapely.Polygon([
+        (a[0] - ux, a[1] - uy), (a[0] + ux, a[1] + uy),
+        (a[0] + ux + nx * level, a[1] + uy + ny * level), (a[0] - ux + nx * level, a[1] - uy + ny * level),
+    ])
