@@ -360,7 +360,7 @@ _WRITERS = {
 
 def write_json(shape: Polygon | Sequence[Point], path: str | os.PathLike[str]) -> None:
     """Write the points as JSON to ``path``, atomically."""
-    _write_atomic(Path(path), to_json(shape) + "\n")
+    write_atomic(Path(path), to_json(shape) + "\n")
 
 
 def write_polygon(shape: Polygon | Sequence[Point], path: str | os.PathLike[str]) -> None:
@@ -376,10 +376,10 @@ def write_polygon(shape: Polygon | Sequence[Point], path: str | os.PathLike[str]
     if writer is None:
         raise InputFormatError(f"unknown format '{path.suffix}'; expected {_FORMATS}")
     text = writer(shape)
-    _write_atomic(path, text if text.endswith("\n") else text + "\n")
+    write_atomic(path, text if text.endswith("\n") else text + "\n")
 
 
-def _write_atomic(path: Path, text: str) -> None:
+def write_atomic(path: Path, text: str) -> None:
     """Write a temp file next to ``path``, then rename it over ``path``.
 
     A crash or error at any point leaves either the old file or the new one,

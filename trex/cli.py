@@ -18,6 +18,7 @@ from geometry.io import to_json, write_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from trex.inputs import EXIT_INVALID, error_line, fail, first_line, try_load
+from trex.run_commands import COMMANDS
 
 _SHOWN_LABELS = 8
 
@@ -135,6 +136,9 @@ def sample(name: str, n: int | None, seed: int, output: str | None) -> None:
     except OSError as exc:
         fail(f"{output}: cannot write: {exc.strerror or error_line(exc)}")
 
+
+for _command in COMMANDS:
+    main.add_command(_command)
 
 if __name__ == "__main__":
     main()

@@ -1,0 +1,124 @@
+"""trex diagonal / triangulate / log: JSON lines in input order, bad input as one line, exit 2."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+from click.testing import CliRunner
+
+import tracing
+from geometry.check import is_inner_diagonal, verify_triangulation
+from geometry.polygon import Polygon
+from geometry.samples import make_sample
+from trex.cli import main
+
+CE = make_sample("counterexample")
+
+
+def run(*args):
+    result = CliRunner().invoke(main, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+def test_diagonal_json_in_input_order():
+    code, out, _ = run("diagonal", "counterexample", "counterexample-twin", "--heuristic",
+                       "scaling", "--json")
+    assert code == 0
+    first, second = (json.loads(line) for line in out.splitlines())
+    assert first["polygon"] == "counterexample"
+    assert first["vertices"] == [list(map(float, p)) for p in CE]
+    assert first["inner"] is False
+    assert first["why"].startswith("B–D crosses edge E–A")
+    # Independent check in input indices: the claim joins input points 0 and 2.
+    assert sorted(first["diagonal"]) == [0, 2]
+    p = Polygon.from_points(first["vertices"])
+    i, j = (p.source.index(k) for k in first["diagonal"])
+    assert not is_inner_diagonal(p, i, j)
+    assert second["polygon"] == "counterexample-twin" and second["inner"] is False
+
+
+@pytest.mark.parametrize("heuristic", ["gravity", "translation-correct", "scaling-walled"])
+def test_correct_heuristics_through_the_cli(heuristic):
+    code, out, _ = run("diagonal", "lecture", "random-2opt:30:4", "--heuristic", heuristic,
+                       "--json")
+    assert code == 0
+    for line in out.splitlines():
+        record = json.loads(line)
+        assert record["inner"] is True and record["why"] is None
+
+
+def test_triangulate_json_is_valid_in_input_order():
+    code, out, _ = run("triangulate", "random-2opt:25:3", "--algorithm", "divide-and-conquer",
+                       "--heuristic", "rotation-correct", "--json")
+    assert code == 0
+    record = json.loads(out)
+    p = Polygon.from_points(record["vertices"])
+    local = [tuple(p.source.index(k) for k in t) for t in record["triangles"]]
+    assert record["valid"] is True and record["why"] is None
+    assert verify_triangulation(p, local)
+
+
+def test_triangulate_stops_with_a_wrong_heuristic():
+    code, out, _ = run("triangulate", "counterexample", "--heuristic", "translation", "--json")
+    assert code == 0
+    record = json.loads(out)
+    assert record["valid"] is False and record["triangles"] == []
+    assert record["why"].startswith("B–D crosses edge E–A")
+
+
+def test_human_lines():
+    code, out, _ = run("triangulate", "lecture", "counterexample", "--heuristic", "rotation")
+    assert code == 0
+    assert out.splitlines() == [
+        "lecture: divide-and-conquer: 11 triangles, valid",
+        "counterexample: divide-and-conquer: stopped after 0 triangles: "
+        "B–D crosses edge E–A at (2.86087, 6.36087)",
+    ]
+
+
+def test_log_round_trips_and_is_deterministic(tmp_path):
+    a, b = tmp_path / "a.json", tmp_path / "b.json"
+    for path in (a, b):
+        code, out, _ = run("log", "gravity", "counterexample", "-o", str(path))
+        assert code == 0 and out.startswith(str(path))
+    assert a.read_bytes() == b.read_bytes()
+    log = tracing.Log.load(a)
+    assert log.meta == {"algorithm": "gravity", "polygon": "counterexample"}
+    assert "drop_ball" in {e.name for e in log.events}
+    code, _, _ = run("log", "divide-and-conquer", "lecture", "--heuristic", "gravity", "-o",
+                     str(a))
+    assert code == 0 and tracing.Log.load(a).meta["heuristic"] == "gravity"
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["diagonal", "triangle", "--heuristic", "scaling"], "triangle: a triangle has no diagonal"),
+        (["diagonal", "nosuch.json", "--heuristic", "scaling"], "nosuch.json"),
+        (["diagonal", "counterexample", "--heuristic", "magic"], "magic"),
+        (["triangulate", "tests/data/bad/bow-tie.json"], "cross"),
+        (["log", "gravity", "tests/data/bad/bow-tie.json", "-o", "/tmp/never.json"], "cross"),
+        (["log", "gravity", "triangle", "-o", "/tmp/never.json"], "no diagonal"),
+    ],
+)
+def test_bad_input_is_one_line_and_exit_2(args, message):
+    proc = subprocess.run([sys.executable, "-m", "trex", *args], capture_output=True, text=True)
+    assert proc.returncode == 2
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error:") and message in lines[0]
+    assert "Traceback" not in proc.stderr
+
+
+def test_a_bad_log_run_leaves_no_file(tmp_path):
+    out = tmp_path / "log.json"
+    code, _, _ = run("log", "gravity", "triangle", "-o", str(out))
+    assert code == 2 and not out.exists() and not list(tmp_path.iterdir())
+
+
+def test_run_commands_do_not_import_manim():
+    code = ("import sys; from click.testing import CliRunner; from trex.cli import main; "
+            "r = CliRunner().invoke(main, ['triangulate', 'lecture']); "
+            "assert r.exit_code == 0, r.output; assert 'manim' not in sys.modules; print('ok')")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert proc.stdout.strip() == "ok", proc.stderr

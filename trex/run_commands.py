@@ -1,0 +1,146 @@
+"""``trex diagonal``, ``trex triangulate`` and ``trex log``: run algorithms, print or save.
+
+JSON output indexes the input's own vertex order (``vertices`` lists the polygon's points
+in that order, every one kept); human output uses the polygon's labels. None of these
+commands imports manim.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+import tracing
+from geometry.check import is_inner_diagonal
+from geometry.diagonals import HEURISTICS, find_diagonal
+from geometry.io import write_atomic
+from geometry.polygon import Polygon
+from geometry.triangulate import ALGORITHMS, triangulate
+from trex.inputs import EXIT_INVALID, fail, load_or_exit, report_error, try_load
+
+HEURISTIC = click.Choice(list(HEURISTICS))
+ALGORITHM = click.Choice(list(ALGORITHMS))
+
+
+def _vertices(polygon: Polygon) -> list[list[float]]:
+    return [list(p) for p in polygon.input_points()]
+
+
+def _to_input(polygon: Polygon, indices) -> list[int]:
+    return [polygon.source[i] for i in indices]
+
+
+def diagonal_record(arg: str, polygon: Polygon, heuristic: str) -> dict:
+    """The claim of a heuristic and its exact verdict, in input indices."""
+    claim = find_diagonal(polygon, heuristic)
+    verdict = is_inner_diagonal(polygon, *claim.pair)
+    return {
+        "polygon": arg,
+        "vertices": _vertices(polygon),
+        "diagonal": _to_input(polygon, claim.pair),
+        "inner": verdict.ok,
+        "why": verdict.why,
+        "labels": [claim.u.label, claim.v.label],
+    }
+
+
+def triangulation_record(arg: str, polygon: Polygon, algorithm: str, heuristic: str) -> dict:
+    """The triangles of an algorithm and the exact verdict on them, in input indices."""
+    result = triangulate(polygon, algorithm, heuristic)
+    return {
+        "polygon": arg,
+        "vertices": _vertices(polygon),
+        "triangles": [_to_input(polygon, t) for t in result.triangles],
+        "valid": result.valid,
+        "why": result.failure.why if result.failure is not None else None,
+    }
+
+
+def _run_each(polygons, make, show_human, as_json: bool) -> None:
+    """Load each polygon, build its record, print it; exit 2 if any input was bad."""
+    bad = False
+    for arg in polygons:
+        polygon = try_load(arg)
+        if polygon is None:
+            bad = True
+            continue
+        try:
+            record = make(arg, polygon)
+        except ValueError as exc:  # e.g. a triangle has no diagonal
+            report_error(arg, exc)
+            bad = True
+            continue
+        if as_json:
+            record.pop("labels", None)
+            click.echo(json.dumps(record, separators=(",", ":"), ensure_ascii=False))
+        else:
+            click.echo(show_human(record))
+    if bad:
+        raise click.exceptions.Exit(EXIT_INVALID)
+
+
+@click.command()
+@click.argument("polygons", nargs=-1, required=True, metavar="POLYGON...")
+@click.option("--heuristic", type=HEURISTIC, required=True, help="Which inner-diagonal heuristic.")
+@click.option("--json", "as_json", is_flag=True, help="One JSON object per line.")
+def diagonal(polygons: tuple[str, ...], heuristic: str, as_json: bool) -> None:
+    """Claim an inner diagonal of each POLYGON with a heuristic, and check the claim exactly."""
+
+    def human(r: dict) -> str:
+        name = "".join(r["labels"])
+        verdict = "inner diagonal" if r["inner"] else f"NOT an inner diagonal: {r['why']}"
+        return f"{r['polygon']}: {heuristic} claims {name} (input vertices {r['diagonal'][0]} and {r['diagonal'][1]}): {verdict}"
+
+    _run_each(polygons, lambda arg, p: diagonal_record(arg, p, heuristic), human, as_json)
+
+
+@click.command(name="triangulate")
+@click.argument("polygons", nargs=-1, required=True, metavar="POLYGON...")
+@click.option("--algorithm", type=ALGORITHM, default="divide-and-conquer", show_default=True)
+@click.option("--heuristic", type=HEURISTIC, default="gravity", show_default=True,
+              help="For divide-and-conquer: how each diagonal is found.")
+@click.option("--json", "as_json", is_flag=True, help="One JSON object per line.")
+def triangulate_command(polygons: tuple[str, ...], algorithm: str, heuristic: str,
+                        as_json: bool) -> None:
+    """Triangulate each POLYGON and verify the triangles exactly."""
+
+    def human(r: dict) -> str:
+        n = len(r["triangles"])
+        if r["valid"]:
+            return f"{r['polygon']}: {algorithm}: {n} triangles, valid"
+        return f"{r['polygon']}: {algorithm}: stopped after {n} triangles: {r['why']}"
+
+    _run_each(polygons, lambda arg, p: triangulation_record(arg, p, algorithm, heuristic),
+              human, as_json)
+
+
+@click.command(name="log")
+@click.argument("algorithm", type=click.Choice(list(HEURISTICS) + list(ALGORITHMS)))
+@click.argument("polygon")
+@click.option("--heuristic", type=HEURISTIC, default="gravity", show_default=True,
+              help="For divide-and-conquer: how each diagonal is found.")
+@click.option("-o", "--output", required=True, metavar="FILE.json", help="Where to write the log.")
+def log_command(algorithm: str, polygon: str, heuristic: str, output: str) -> None:
+    """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
+    p = load_or_exit(polygon)
+    meta = {"algorithm": algorithm, "polygon": polygon}
+    if algorithm in ALGORITHMS:
+        meta["heuristic"] = heuristic
+    try:
+        with tracing.record(**meta) as log, tracing.alive(p):
+            if algorithm in HEURISTICS:
+                find_diagonal(p, algorithm)
+            else:
+                triangulate(p, algorithm, heuristic)
+    except ValueError as exc:
+        fail(f"{polygon}: {exc}")
+    try:
+        write_atomic(Path(output), log.to_json())
+    except OSError as exc:
+        fail(f"{output}: cannot write: {exc.strerror or exc}")
+    click.echo(f"{output}: {len(log.events)} events")
+
+
+COMMANDS = (diagonal, triangulate_command, log_command)
