@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from metaphors import basics, water
+from metaphors import basics, clock, sweep, water
 
 PERFORMERS = {
     "polygon": basics.polygon,
@@ -15,6 +15,8 @@ PERFORMERS = {
     "water": water.water,
     "walled-water": water.walled_water,
     "flood": water.flood,
+    "clock": clock.clock,
+    "sweep": sweep.sweep,
 }
 
 

@@ -28,6 +28,10 @@ class Theme:
     ink: str = "#e8ecf2"
     polygon_fill: str = "#2a3a55"
     water: str = "#3aa0ff"
+    hand: str = "#c792ea"  # the clock hand (drawn solid inside the polygon, dashed outside)
+    sweep: str = "#c792ea"  # the sweep line (likewise)
+    dial: str = "#8a93a3"  # the clock face and its hour marks before the hand passes them
+    dash_length: float = 0.09
     font: str = "DejaVu Sans"
     mono_font: str = "DejaVu Sans Mono"
     stroke: float = 3.0

@@ -1,0 +1,105 @@
+"""The clock: B is the middle of a clock face, the candidates are its hour marks; set the hand
+to A and let it turn — the first mark it passes is D (``rotation``). ``rotation-ccw`` sets it
+to C and turns the other way; ``rotation-correct`` moves the clock to C and sets it to B.
+
+The hand is drawn solid inside the polygon and dashed outside; the part outside the polygon
+but inside T is dashed red — when the hand reaches its first mark with that part, the claim
+will cross an edge. The angles and the order of the marks are the log's shape states (each
+``angle`` unsigned, from the start ``heading``); the way the hand turns is the way towards the
+candidates.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from manim import DEGREES, Circle, Dot, FadeIn, FadeOut, Line, Rotate, VGroup
+
+from metaphors.panel import tag
+from metaphors.sweep import follower, light
+
+#: Radius of the clock face (scene units); the hand reaches past the farthest mark.
+FACE_RADIUS = 0.55
+HAND_MARGIN = 0.35
+
+
+def turn_sign(origin, heading: float, point) -> int:
+    """+1 if the hand turns counter-clockwise from `heading` (degrees) to reach `point`, else −1.
+
+    >>> turn_sign([1.0, 4.5], 80.27, [3.0, 6.5])  # from A towards D: clockwise
+    -1
+    >>> turn_sign([1.0, -4.5], -80.27, [3.0, -6.5])  # the twin, from C: counter-clockwise
+    1
+    """
+    towards = math.degrees(math.atan2(point[1] - origin[1], point[0] - origin[0]))
+    delta = (towards - heading + 180.0) % 360.0 - 180.0
+    return 1 if delta > 0 else -1
+
+
+def clock(board, beat) -> None:
+    """The face appears at the centre with a mark towards each candidate, the hand towards the
+    start vertex; it turns through the log's angles, and each mark lights as the hand passes it
+    (the first green, the others amber)."""
+    theme = board.theme
+    states = beat.data["states"]
+    first = states[0]
+    origin, heading = first["origin"], first["heading"]
+    hits = [s for s in states[1:] if "reached" in s]
+    if not hits:
+        board.play(beat, run_time=1.0)
+        return
+    labels = [s["reached"] for s in hits]
+    sign = turn_sign(origin, heading, _point(board, labels[0]))
+    centre = board.at(origin)
+    reach = max(float(np.linalg.norm(board.vertex(label) - centre)) for label in labels)
+    tip = centre + _unit(board.at(_ahead(origin, heading)) - centre) * (reach + HAND_MARGIN)
+
+    face = tag(Circle(radius=FACE_RADIUS, color=theme.dial, stroke_width=theme.thin_stroke,
+                      fill_color=theme.dial, fill_opacity=0.12).move_to(centre), "idle", "dial")
+    marks = {label: _mark(board, centre, board.vertex(label), theme.dial, f"mark:{label}")
+             for label in labels}
+    twelve = _mark(board, centre, tip, theme.hand, "mark:start", long=True)
+    hub = tag(Dot(centre, radius=theme.dot_radius * 1.4, color=theme.hand), "argument", "hub")
+    dial = VGroup(face, twelve, *marks.values()).set_z_index(2)  # lit marks show over the hand
+    axis = tag(Line(centre, tip, stroke_opacity=0), "argument", "hand")
+    hand = follower(board, axis, theme.hand, "hand").set_z_index(1)  # over the lit rings
+    board.scene.add(axis)
+    board.play(beat, FadeIn(dial), FadeIn(hand), FadeIn(hub), run_time=0.8)
+
+    lit, turned = [], 0.0
+    for k, state in enumerate(hits):
+        step = state["angle"] - turned
+        turned = state["angle"]
+        board.play(beat, Rotate(axis, angle=sign * step * DEGREES, about_point=centre),
+                   run_time=0.6 + abs(step) / 60)
+        kept, anims = light(board, state["reached"], k == 0, axis)
+        lit += kept
+        mark = marks[state["reached"]]
+        colour = theme.result if k == 0 else theme.argument
+        anims.append(tag(mark, "result" if k == 0 else "argument").animate.set_color(colour))
+        board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
+    hand.clear_updaters()
+    board.scene.remove(axis)
+    board.play(beat, *[FadeOut(m) for m in (dial, hand, hub, *lit)], run_time=0.5)
+
+
+def _mark(board, centre, towards, colour, name: str, long: bool = False):
+    """An hour mark: a short tick on the rim of the face, in the direction of `towards`."""
+    direction = _unit(towards - centre)
+    inner = FACE_RADIUS * (0.45 if long else 0.65)
+    return tag(Line(centre + direction * inner, centre + direction * FACE_RADIUS * 1.08,
+                    color=colour, stroke_width=board.theme.stroke * 1.3), "idle", name)
+
+
+def _point(board, label: str):
+    return board.polygon.points[board.polygon.labels.index(label)]
+
+
+def _ahead(origin, heading: float):
+    return (origin[0] + math.cos(math.radians(heading)),
+            origin[1] + math.sin(math.radians(heading)))
+
+
+def _unit(v) -> np.ndarray:
+    return v / np.linalg.norm(v)

@@ -1,0 +1,285 @@
+"""The sweep line: a line through B moves across T and the first candidate it touches is D.
+
+``translation`` sweeps a vertical line rightwards (wrong); ``translation-correct`` sweeps a line
+parallel to AC from B towards AC (right). The line is drawn solid where it lies in the polygon
+and dashed outside; the part outside the polygon but inside T — the part that can touch a
+wrong vertex first — is dashed red. That is the whole story of why one fails and the other
+cannot (thesis ch. 2.1.2, Correct Translation).
+
+Offsets and the order of the hits are the log's shape states; the side the line moves to is
+the side the candidates lie on. The solid/dashed split (shared with the clock hand) is plain
+shapely on the scene's own outlines.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import shapely
+from manim import (
+    Circle,
+    Create,
+    DashedLine,
+    FadeIn,
+    FadeOut,
+    Flash,
+    Indicate,
+    Line,
+    Text,
+    VGroup,
+    config,
+)
+
+from metaphors.layout import METAPHOR
+from metaphors.panel import tag
+
+#: How far inside/outside counts as "on the boundary" (scene units).
+EPS = 1e-6
+
+
+# --- plain geometry (any coordinates) ------------------------------------------------------------
+
+
+def side_normal(direction, through, point) -> tuple[float, float]:
+    """Unit normal of the line through `through` along `direction`, pointing to `point`'s side.
+
+    >>> side_normal([0.0, 1.0], [1.0, 4.5], [3.0, 6.5])
+    (1.0, 0.0)
+    >>> [round(v, 4) for v in side_normal([7.4, -6.0], [1.0, 4.5], [4.6, 4.1])]  # towards AC
+    [0.6298, 0.7768]
+    """
+    dx, dy = direction
+    norm = math.hypot(dx, dy)
+    nx, ny = dy / norm, -dx / norm
+    if nx * (point[0] - through[0]) + ny * (point[1] - through[1]) < 0:
+        nx, ny = -nx, -ny
+    return (nx + 0.0, ny + 0.0)
+
+
+def split_segment(a, b, region, zone=None) -> dict[str, list[tuple[tuple, tuple]]]:
+    """Pieces of the segment a–b, each from the end nearer `a`, ordered from `a`.
+
+    ``inside``: in `region` (its boundary counts as inside); ``outside``: the rest, minus
+    ``astray``: the outside pieces that lie in `zone` (the triangle T), if a zone is given.
+
+    >>> square = shapely.box(0, 0, 2, 2)
+    >>> split_segment((-1, 1), (3, 1), square)
+    {'inside': [((0.0, 1.0), (2.0, 1.0))], 'outside': [((-1.0, 1.0), (0.0, 1.0)), ((2.0, 1.0), (3.0, 1.0))], 'astray': []}
+    >>> split_segment((0, 0), (0, 2), square)["inside"]  # along the boundary: inside
+    [((0.0, 0.0), (0.0, 2.0))]
+    >>> split_segment((1, 1), (4, 1), square, zone=shapely.box(2.5, 0, 5, 2))["astray"]
+    [((2.5, 1.0), (4.0, 1.0))]
+    """
+    segment = shapely.LineString([tuple(a[:2]), tuple(b[:2])])
+    grown = region.buffer(EPS)
+    inside = segment.intersection(grown)
+    outside = segment.difference(grown)
+    astray = shapely.GeometryCollection()
+    if zone is not None:
+        near = zone.buffer(EPS)
+        astray = outside.intersection(near)
+        outside = outside.difference(near)
+    return {"inside": _pieces(inside, a), "outside": _pieces(outside, a),
+            "astray": _pieces(astray, a)}
+
+
+def _pieces(geometry, a) -> list[tuple[tuple, tuple]]:
+    """The line pieces of a shapely result as (start, end) pairs, oriented and ordered from a."""
+    found = []
+    for part in _lines(geometry):
+        p, q = part.coords[0], part.coords[-1]
+        if math.dist(p, q) <= 10 * EPS:
+            continue
+        if math.dist(a[:2], q) < math.dist(a[:2], p):
+            p, q = q, p
+        found.append(((round(p[0], 5) + 0.0, round(p[1], 5) + 0.0),
+                      (round(q[0], 5) + 0.0, round(q[1], 5) + 0.0)))
+    return sorted(found, key=lambda pq: math.dist(a[:2], pq[0]))
+
+
+def _lines(geometry):
+    if geometry.is_empty:
+        return
+    if geometry.geom_type == "LineString":
+        yield geometry
+    elif hasattr(geometry, "geoms"):
+        for part in geometry.geoms:
+            yield from _lines(part)
+
+
+# --- on the board (scene coordinates) ------------------------------------------------------------
+
+
+def outline(mobject):
+    """The shapely polygon of a drawn polygon mobject (scene coordinates), or None."""
+    if mobject is None:
+        return None
+    corners = [tuple(p[:2]) for p in mobject.get_vertices()]
+    shape = shapely.Polygon(corners)
+    return shape if shape.is_valid and shape.area > 0 else shapely.make_valid(shape)
+
+
+def drawn_segment(board, start, end, colour, name: str, clip=None) -> VGroup:
+    """The segment start–end (scene points): solid in the polygon, dashed outside it, dashed red
+    where it is outside the polygon but inside T. ``clip``: a shapely box to cut it to first."""
+    theme = board.theme
+    if clip is not None:
+        start, end = _cut(start, end, clip)
+    parts = split_segment(start, end, outline(board.shape), outline(board.objects.get("T")))
+    group = VGroup()
+    for p, q in parts["inside"]:
+        group.add(tag(Line(_3d(p), _3d(q), color=colour, stroke_width=theme.stroke),
+                      "argument", f"{name}:inside"))
+    for p, q in parts["outside"]:
+        group.add(tag(DashedLine(_3d(p), _3d(q), color=colour, stroke_width=theme.thin_stroke * 1.5,
+                                 dash_length=theme.dash_length), "idle", f"{name}:outside"))
+    for p, q in parts["astray"]:
+        group.add(tag(DashedLine(_3d(p), _3d(q), color=theme.rejected,
+                                 stroke_width=theme.stroke * 1.3,
+                                 dash_length=theme.dash_length), "rejected", f"{name}:astray"))
+    if not group.submobjects:  # keeps `become` happy: always at least one (empty) piece
+        group.add(Line(_3d(start), _3d(start), stroke_opacity=0))
+    return group
+
+
+def follower(board, axis, colour, name: str, clip=None) -> VGroup:
+    """The visible drawing of an (invisible) axis line: redrawn whenever the axis moves."""
+    def draw():
+        return drawn_segment(board, axis.get_start(), axis.get_end(), colour, name, clip)
+
+    drawing = draw()
+    drawing.add_updater(lambda m: m.become(draw()))
+    return drawing
+
+
+def light(board, label: str, first: bool, axis, clip=None) -> tuple[list, list]:
+    """A ring round a candidate the tool has just reached: green for the first, amber after.
+
+    If the first one is reached by a part of the tool outside the polygon but inside T, that
+    part is traced over in red and named: the claim to come will cross an edge there.
+    Returns the new objects (to fade with the tool) and the animations.
+    """
+    theme = board.theme
+    colour = theme.result if first else theme.argument
+    at = board.vertex(label)
+    ring = tag(Circle(radius=0.13, color=colour, stroke_width=theme.stroke).move_to(at),
+               "result" if first else "argument", f"lit:{label}")
+    kept, anims = [ring], [FadeIn(ring, scale=1.6), Indicate(board.markers[label], color=colour)]
+    piece = _astray_at(board, axis, clip, at) if first else None
+    if piece is not None:
+        p, q = _3d(piece[0]), _3d(piece[1])
+        trace = tag(Line(p, q, color=theme.rejected, stroke_width=theme.stroke * 2),
+                    "rejected", f"astray:{label}")
+        note = tag(Text("outside P, inside T", font=theme.font, font_size=theme.label_size * 0.8,
+                        color=theme.rejected), "rejected", "astray:note")
+        _place(board, note, (p + q) / 2, _tool(axis, clip))
+        kept += [trace, note]
+        anims += [Create(trace), FadeIn(note), Flash(at, color=theme.rejected, flash_radius=0.35)]
+    return kept, anims
+
+
+def _place(board, note, near, tool) -> None:
+    """Put a note beside a point: on screen, off the polygon, T and the tool if it can, and
+    clear of the vertex labels."""
+    spots = [(np.array(d, dtype=float), buff) for buff in (0.12, 0.45) for d in
+             ((0, 1, 0), (1, 1, 0), (1, 0, 0), (1, -1, 0), (0, -1, 0), (-1, -1, 0), (-1, 0, 0),
+              (-1, 1, 0))]
+    marks = [m.get_center() for marker in board.markers.values() for m in marker]
+    left, right = -config.frame_width / 2 + 0.1, METAPHOR.x + METAPHOR.width / 2 + 0.4
+    shapes = [outline(board.shape), outline(board.objects.get("T")), tool.buffer(0.08)]
+    busy = shapely.union_all([g for g in shapes if g is not None])
+
+    def score(spot):
+        note.next_to(near, direction=spot[0], buff=spot[1])
+        (x0, y0), (x1, y1) = note.get_corner(np.array([-1, -1, 0]))[:2], note.get_corner(
+            np.array([1, 1, 0]))[:2]
+        on_screen = x0 >= left and x1 <= right
+        covered = shapely.box(x0, y0, x1, y1).intersection(busy).area
+        clearance = min(float(np.linalg.norm(note.get_center() - m)) for m in marks)
+        return (on_screen, -round(covered, 3), min(clearance, 0.6), -spot[1])
+
+    best = max(spots, key=score)
+    note.next_to(near, direction=best[0], buff=best[1])
+
+
+def _tool(axis, clip=None):
+    """The tool's segment as shapely (scene coordinates)."""
+    start, end = axis.get_start(), axis.get_end()
+    if clip is not None:
+        start, end = _cut(start, end, clip)
+    return shapely.LineString([tuple(start[:2]), tuple(end[:2])])
+
+
+def _astray_at(board, axis, clip, at):
+    """The piece of the tool outside the polygon but inside T that passes through `at`."""
+    (x0, y0), (x1, y1) = _tool(axis, clip).coords
+    start, end = np.array([x0, y0, 0.0]), np.array([x1, y1, 0.0])
+    parts = split_segment(start, end, outline(board.shape), outline(board.objects.get("T")))
+    point = shapely.Point(at[:2])
+    for p, q in parts["astray"]:
+        if shapely.LineString([p, q]).distance(point) < 1e-3:
+            return p, q
+    return None
+
+
+def _3d(p) -> np.ndarray:
+    return np.array([p[0], p[1], 0.0])
+
+
+# --- the performer -------------------------------------------------------------------------------
+
+
+def sweep(board, beat) -> None:
+    """The line starts through B and moves across T by the log's offsets; each candidate lights
+    when the line reaches it (the first green, the others amber)."""
+    states = beat.data["states"]
+    first = states[0]
+    through, direction = first["through"], first["direction"]
+    hits = [s for s in states[1:] if "reached" in s]
+    if not hits:
+        board.play(beat, run_time=1.0)
+        return
+    normal = side_normal(direction, through, board.polygon.points[
+        board.polygon.labels.index(hits[0]["reached"])])
+    start, end, box = _long_line(board, through, direction)
+    axis = tag(Line(start, end, stroke_opacity=0), "argument", "sweep")
+    drawing = follower(board, axis, board.theme.sweep, "sweep", clip=box).set_z_index(1)
+    origin = board.at(through)
+    step = board.at((through[0] + normal[0], through[1] + normal[1])) - origin  # one unit, scene
+    board.scene.add(axis)
+    board.play(beat, FadeIn(drawing), run_time=0.6)
+    lit, offset = [], 0.0
+    for k, state in enumerate(hits):
+        travel = state["offset"] - offset
+        offset = state["offset"]
+        board.play(beat, axis.animate.shift(step * travel),
+                   run_time=0.6 + board.length(abs(travel)) / 2.5)
+        kept, anims = light(board, state["reached"], k == 0, axis, box)
+        lit += kept
+        board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
+    drawing.clear_updaters()
+    board.scene.remove(axis)
+    board.play(beat, FadeOut(drawing), *[FadeOut(r) for r in lit], run_time=0.5)
+
+
+def _long_line(board, through, direction):
+    """A line through `through` along `direction`, far longer than the polygon (scene points),
+    and the box the drawing is cut to: the polygon's bounding box grown by a margin, so the line
+    never leaves the metaphor's half of the screen."""
+    margin = 0.35
+    lo = board.shape.get_corner(np.array([-1, -1, 0]))[:2] - margin
+    hi = board.shape.get_corner(np.array([1, 1, 0]))[:2] + margin
+    origin = board.at(through)[:2]
+    ahead = board.at((through[0] + direction[0], through[1] + direction[1]))[:2] - origin
+    ahead = ahead / np.linalg.norm(ahead)
+    reach = float(np.linalg.norm(hi - lo)) * 3
+    return _3d(origin - ahead * reach), _3d(origin + ahead * reach), shapely.box(*lo, *hi)
+
+
+def _cut(start, end, box):
+    """The part of start–end inside the box (a zero-length segment at start if none)."""
+    cut = shapely.LineString([tuple(start[:2]), tuple(end[:2])]).intersection(box)
+    if cut.is_empty or cut.geom_type != "LineString":
+        return start, start
+    return _3d(cut.coords[0]), _3d(cut.coords[-1])
