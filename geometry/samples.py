@@ -65,6 +65,12 @@ _LECTURE: tuple[Point, ...] = (
     (12, 8), (14, 12), (9, 11), (8, 15), (4, 10), (6, 13),
 )  # fmt: skip
 
+# 8 vertices, 2 reflex; gravity hangs the ball at C, it falls onto FG, slides to G, and the
+# rubber band C–ball snags H on the way: the claim is CH, not CG.
+_GRAVITY_SNAG: tuple[Point, ...] = (
+    (7, 0), (4, 8), (4, 4), (0, 7), (-3, 2), (0, 0), (-1, -4), (2, -5),
+)  # fmt: skip
+
 _FIXED: MappingProxyType[str, tuple[Point, ...]] = MappingProxyType(
     {
         "counterexample": _COUNTEREXAMPLE,
@@ -73,6 +79,7 @@ _FIXED: MappingProxyType[str, tuple[Point, ...]] = MappingProxyType(
         "triangle": ((0, 0), (4, 0), (1, 3)),
         "lecture": _LECTURE,
         "two-ears": tuple(two_ears()),
+        "gravity-snag": _GRAVITY_SNAG,
     }
 )
 

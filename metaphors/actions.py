@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from metaphors import basics, clock, sweep, water
+from metaphors import basics, clock, gravity, sweep, water
 
 PERFORMERS = {
     "polygon": basics.polygon,
@@ -10,11 +10,16 @@ PERFORMERS = {
     "triangle": basics.triangle,
     "candidates": basics.candidates,
     "claim": basics.claim,
-    "verdict": basics.verdict,
+    "verdict": gravity.verdict,  # the shared verdict, then a turned picture turns back
     "note": basics.note,
     "water": water.water,
     "walled-water": water.walled_water,
     "flood": water.flood,
+    "gravity-turn": gravity.gravity_turn,
+    "drop": gravity.drop,
+    "slide": gravity.slide,
+    "snag": gravity.snag,
+    "split": gravity.split,
     "clock": clock.clock,
     "sweep": sweep.sweep,
 }

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Sequence
 
 import numpy as np
@@ -13,24 +14,52 @@ from metaphors.theme import THEME, Theme
 
 
 class Frame:
-    """Maps polygon coordinates into a box of the Manim scene (uniform scale, centred).
+    """Maps polygon coordinates into a box of the Manim scene (uniform scale, centred),
+    optionally turned by ``angle`` degrees (counter-clockwise) and zoomed about ``pivot``.
 
     >>> f = Frame([(0, 0), (4, 0), (4, 2)], center=(0, 0), width=4, height=4)
     >>> f.to_scene((4, 2)).tolist()
     [2.0, 1.0, 0.0]
+    >>> t = f.turned(90)
+    >>> t.to_scene((4, 2)).round(6).tolist(), f.angle, t.angle
+    ([-1.0, 2.0, 0.0], 0.0, 90.0)
     """
 
     def __init__(self, points: Sequence[tuple[float, float]], center, width: float, height: float):
         arr = np.asarray(points, dtype=float)
         lo, hi = arr.min(axis=0), arr.max(axis=0)
         span = np.maximum(hi - lo, 1e-12)
-        self.scale = float(min(width / span[0], height / span[1]))
+        self.base_scale = float(min(width / span[0], height / span[1]))
         self.mid = (lo + hi) / 2
         self.center = np.array([center[0], center[1], 0.0])
+        self.angle = 0.0  # degrees, counter-clockwise on screen
+        self.pivot = self.center.copy()
+        self.zoom = 1.0
+
+    @property
+    def scale(self) -> float:
+        """Scene length of one polygon unit (the zoom of a turn included)."""
+        return self.base_scale * self.zoom
+
+    def turned(self, angle: float, pivot=None, zoom: float = 1.0) -> Frame:
+        """A copy of this frame turned to ``angle`` degrees (absolute, not added) about
+        ``pivot`` (default: the box's centre) and zoomed by ``zoom``; ``turned(0)`` is upright."""
+        other = copy.copy(self)
+        other.angle = float(angle)
+        other.pivot = self.center.copy() if pivot is None else np.array(
+            [pivot[0], pivot[1], 0.0], dtype=float)
+        other.zoom = float(zoom)
+        return other
 
     def to_scene(self, p: Sequence[float]) -> np.ndarray:
-        x, y = (np.asarray(p[:2], dtype=float) - self.mid) * self.scale
-        return self.center + np.array([x, y, 0.0])
+        x, y = (np.asarray(p[:2], dtype=float) - self.mid) * self.base_scale
+        at = self.center + np.array([x, y, 0.0])
+        if self.angle == 0.0 and self.zoom == 1.0:
+            return at
+        t = np.radians(self.angle)
+        c, s = np.cos(t), np.sin(t)
+        dx, dy = (at - self.pivot)[:2] * self.zoom
+        return self.pivot + np.array([c * dx - s * dy, s * dx + c * dy, 0.0])
 
     def many(self, points: Sequence[Sequence[float]]) -> list[np.ndarray]:
         return [self.to_scene(p) for p in points]

@@ -247,7 +247,7 @@ def _return_beats(walk: _Walk, ret: Event) -> Iterator[Beat]:
         yield walk.beat("candidates", caption, call, data={"candidates": found}, **kw)
     elif ret.name == "gravity_direction":
         yield walk.beat("gravity-turn", "Turn the polygon so that gravity points down", call,
-                        data=dict(ret.result), **kw)
+                        data={**ret.result, "polygon": call.args["polygon"]["ref"]}, **kw)
     elif ret.name in METAPHOR_STEPS:
         action, shape = METAPHOR_STEPS[ret.name]
         data = {"states": walk.changes(call, shape), "result": show(ret.result)}
@@ -257,8 +257,13 @@ def _return_beats(walk: _Walk, ret: Event) -> Iterator[Beat]:
         yield from _claim_beats(walk, call, walk.live[ret.result["ref"]], line)
     elif ret.name == "split":
         pieces = [r["ref"] for r in ret.result]
+        entered = {e.target: e.state for e in walk.log.events[ret.seq:]
+                   if e.kind == "enter" and e.target in pieces}
         yield walk.beat("split", "Split along the diagonal into two smaller polygons", call,
-                        data={"pieces": pieces}, **kw)
+                        data={"pieces": pieces, "parent": call.args["piece"]["ref"],
+                              "points": [entered[k]["points"] for k in pieces if k in entered],
+                              "labels": [entered[k]["labels"] for k in pieces if k in entered]},
+                        **kw)
 
 
 def _extra(walk: _Walk, call: Event, ret: Event) -> dict:

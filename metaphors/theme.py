@@ -28,6 +28,14 @@ class Theme:
     ink: str = "#e8ecf2"
     polygon_fill: str = "#2a3a55"
     water: str = "#3aa0ff"
+    ball: str = "#ff8c42"
+    band: str = "#ff5fa2"
+    gravity: str = "#c7cfdb"
+    #: tints of the sub-polygons of divide and conquer (the two halves of a split differ)
+    pieces: tuple[str, ...] = ("#8e6cf0", "#2bb5a8", "#c9a25a", "#5b8fd5", "#9cbf4a")
+    piece_opacity: float = 0.3
+    done_opacity: float = 0.62
+    active_opacity: float = 0.5  # the piece divide and conquer works on
     hand: str = "#c792ea"  # the clock hand (drawn solid inside the polygon, dashed outside)
     sweep: str = "#c792ea"  # the sweep line (likewise)
     dial: str = "#8a93a3"  # the clock face and its hour marks before the hand passes them
