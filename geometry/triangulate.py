@@ -131,13 +131,28 @@ def _failure(
     )
 
 
-ALGORITHMS = ("divide-and-conquer",)
+ALGORITHMS = (
+    "divide-and-conquer",
+    "ear-clipping-naive",
+    "ear-clipping",
+    "prune-and-search",
+    "monotone",
+    "cdt",
+)
 
 
 def triangulate(polygon: Polygon, algorithm: str, heuristic: str | None = None) -> Triangulation:
-    """Run a triangulation algorithm by name and verify its answer exactly."""
+    """Run a triangulation algorithm by name and verify its answer exactly.
+
+    ``heuristic`` is divide-and-conquer's diagonal rule (gravity when None); the
+    other algorithms take none and ignore it.
+    """
     if algorithm == "divide-and-conquer":
         result = divide_and_conquer(polygon, heuristic or "gravity")
+    elif algorithm in ALGORITHMS:
+        from geometry.algorithms import RUNNERS  # those modules import this one
+
+        result = RUNNERS[algorithm](polygon)
     else:
         raise KeyError(f"unknown algorithm {algorithm!r}; expected one of {', '.join(ALGORITHMS)}")
     if result.valid:

@@ -1,0 +1,124 @@
+"""Exact predicates for one triangle (or line) against many points at once.
+
+The ear tests of ear clipping and prune-and-search ask the same question of
+many points: which of them lie in the closed triangle abc? Here it is asked of
+numpy arrays. Each orientation is first evaluated in floats with the same
+rigorous error bound as :func:`geometry.predicates.orient`; only the points
+whose sign that bound cannot certify are decided exactly, one by one.
+
+Examples
+--------
+>>> xs = np.array([0.5, 3.0, 1.0, 0.0])
+>>> ys = np.array([0.5, 3.0, 0.0, 2.0])
+>>> orient_many((0, 0), (2, 0), xs, ys)
+array([1, 1, 0, 1], dtype=int8)
+>>> in_triangle_many((0, 0), (2, 0), (0, 2), xs, ys)
+array([ True, False,  True,  True])
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from geometry.predicates import Point, orient
+
+_EPS = 2.0**-53
+_ORIENT_BOUND = (3.0 + 16.0 * _EPS) * _EPS  # Shewchuk's bound, as in geometry.predicates
+_TINY = 2.0**-900
+_SMALL = 2.0**25
+
+
+def orient_many(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
+    """``orient(a, b, p)`` for every point p = (xs[k], ys[k]), exactly, as int8 signs."""
+    with np.errstate(all="ignore"):
+        left = (a[0] - xs) * (b[1] - ys)
+        right = (a[1] - ys) * (b[0] - xs)
+        det = left - right
+        bound = _ORIENT_BOUND * (np.abs(left) + np.abs(right)) + _TINY
+        positive, negative = det > bound, det < -bound
+    signs = positive.astype(np.int8) - negative.astype(np.int8)
+    unsure = np.flatnonzero(~(positive | negative))
+    if len(unsure) == 0:
+        return signs
+    ux, uy = xs[unsure], ys[unsure]
+    # A product is exactly zero when a factor is (float differences vanish only for
+    # equal floats): p equal to a or b, or on an axis-parallel line through both.
+    zero = ((a[0] == ux) | (b[1] == uy)) & ((a[1] == uy) | (b[0] == ux))
+    signs[unsure[zero]] = 0
+    unsure = unsure[~zero]
+    if len(unsure) == 0:
+        return signs
+    exact = _small_integers(a, b, xs[unsure], ys[unsure])
+    signs[unsure[exact]] = np.sign(det[unsure[exact]])
+    for k in unsure[~exact]:  # rare: decide these one by one in rationals
+        signs[k] = orient(a, b, (float(xs[k]), float(ys[k])))
+    return signs
+
+
+def orient_fast(a: Point, b: Point, c: Point) -> int:
+    """:func:`geometry.predicates.orient`, deciding small-integer inputs without rationals.
+
+    The float filter cannot certify a zero, so every collinear triple would go
+    to rational arithmetic; on integer grids (collinear runs everywhere) that is
+    most of the time. With integer coordinates below 2**25 the float
+    determinant is itself exact, so its sign is the answer.
+
+    >>> orient_fast((0, 0), (1, 1), (5, 5)), orient_fast((0, 0), (1, 0), (0.5, 1e-300))
+    (0, 1)
+    """
+    left = (a[0] - c[0]) * (b[1] - c[1])
+    right = (a[1] - c[1]) * (b[0] - c[0])
+    det = left - right
+    bound = _ORIENT_BOUND * (abs(left) + abs(right)) + _TINY
+    if det > bound:
+        return 1
+    if -det > bound:
+        return -1
+    if _small_integer(a) and _small_integer(b) and _small_integer(c):
+        return (det > 0) - (det < 0)
+    return orient(a, b, c)
+
+
+def _small_integer(p: Point) -> bool:
+    x, y = p
+    return -_SMALL < x < _SMALL and -_SMALL < y < _SMALL and x == int(x) and y == int(y)
+
+
+def in_closed_triangle(p: Point, a: Point, b: Point, c: Point) -> bool:
+    """Whether p lies in the closed counter-clockwise triangle abc (one point, exact).
+
+    >>> in_closed_triangle((1, 0), (0, 0), (2, 0), (0, 2))
+    True
+    """
+    return orient_fast(a, b, p) >= 0 and orient_fast(b, c, p) >= 0 and orient_fast(c, a, p) >= 0
+
+
+def _small_integers(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
+    """Mask of points for which the float determinant is exact.
+
+    With integer coordinates below 2**25 in magnitude, every difference (< 2**26)
+    and product (< 2**52) and their difference (< 2**53) is an exact float. This
+    decides the many exact zeros of integer grids (collinear runs) at numpy speed.
+    """
+    ends = np.array([a[0], a[1], b[0], b[1]], dtype=float)
+    if not (np.all(np.abs(ends) < _SMALL) and np.all(ends == np.round(ends))):
+        return np.zeros(len(xs), dtype=bool)
+    return (np.abs(xs) < _SMALL) & (np.abs(ys) < _SMALL) & (xs == np.round(xs)) & (
+        ys == np.round(ys)
+    )
+
+
+def in_triangle_many(
+    a: Point, b: Point, c: Point, xs: np.ndarray, ys: np.ndarray
+) -> np.ndarray:
+    """Mask of the points lying in the closed counter-clockwise triangle abc.
+
+    Points are thinned out edge by edge, so the later edges see only the
+    points still in question.
+    """
+    inside = np.zeros(len(xs), dtype=bool)
+    keep = np.flatnonzero(orient_many(a, b, xs, ys) >= 0)
+    keep = keep[orient_many(b, c, xs[keep], ys[keep]) >= 0]
+    keep = keep[orient_many(c, a, xs[keep], ys[keep]) >= 0]
+    inside[keep] = True
+    return inside

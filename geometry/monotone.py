@@ -1,0 +1,171 @@
+"""Monotone partition and stack triangulation (Garey, Johnson, Preparata, Tarjan 1978), traced.
+
+As in de Berg et al., *Computational Geometry*, ch. 3. A horizontal line
+sweeps down over the vertices. Each vertex is classified by its neighbours:
+
+* **start**: both neighbours lower, interior angle < π;  **split**: both lower, > π;
+* **end**: both neighbours higher, angle < π;  **merge**: both higher, > π;
+* **regular**: one higher, one lower (every straight vertex is regular).
+
+Split and merge vertices are where the polygon fails to be y-monotone. Every
+edge crossing the line with the inside on its right has a *helper*: the
+lowest vertex above the line that sees it. A split vertex is joined to the
+helper of the edge directly left of it; a merge vertex becomes a helper and
+is joined to the next vertex that replaces it. The diagonals cut the polygon
+into y-monotone pieces (:mod:`geometry.monotone_pieces`), and each piece is
+triangulated greedily with a stack in one more sweep. O(n log n).
+
+"Higher" is lexicographic (larger y, then smaller x), so equal y
+coordinates need no special case, and every side test is exact.
+
+Traced steps: ``classify_vertex`` (the sweep line, a ``line`` shape, reaches
+the vertex), ``handle_start`` … ``handle_regular``, ``add_diagonal``,
+``monotone_pieces``, ``triangulate_monotone_piece``.
+
+>>> from geometry.polygon import Polygon
+>>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
+>>> [classify_vertex(Sweep(p), p.vertex(i)) for i in range(p.n)]
+['start', 'regular', 'end', 'start', 'merge']
+>>> make_monotone(p)  # the merge vertex E is joined to B, the next vertex below it
+[(1, 4)]
+>>> monotone(p).triangles
+[(0, 1, 4), (1, 2, 4), (2, 3, 4)]
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+import tracing
+from geometry.monotone_pieces import monotone_pieces, triangulate_monotone_piece
+from geometry.polygon import Polygon, Vertex
+from geometry.sweep_status import SweepStatus
+from geometry.triangles import finished
+from geometry.triangulate import Triangulation
+
+
+class Sweep:
+    """What the sweep knows: the order of the vertices, their kinds, the status, the diagonals."""
+
+    def __init__(self, polygon: Polygon) -> None:
+        self.polygon = polygon
+        arr = np.asarray(polygon.points, dtype=float)
+        self.order = np.lexsort((arr[:, 0], -arr[:, 1])).tolist()  # highest first
+        self.rank = [0] * polygon.n
+        for r, v in enumerate(self.order):
+            self.rank[v] = r
+        self.turns = polygon.turns.tolist()
+        self.kind = [""] * polygon.n
+        self.status = SweepStatus(polygon.points)
+        self.diagonals: list[tuple[int, int]] = []
+        top = polygon.points[self.order[0]]
+        self.line = tracing.Shape("sweep", "line", through=list(top), direction=[1.0, 0.0])
+
+
+@tracing.traced(exclude_args=("sweep",))
+def classify_vertex(sweep: Sweep, v: Vertex) -> str:
+    """The line reaches v: start, split, end, merge or regular, from its neighbours' heights."""
+    sweep.line.update(through=list(v.point))
+    n, i, rank = sweep.polygon.n, v.index, sweep.rank
+    before_lower, after_lower = rank[(i - 1) % n] > rank[i], rank[(i + 1) % n] > rank[i]
+    convex = sweep.turns[i] > 0
+    if before_lower and after_lower:
+        kind = "start" if convex else "split"
+    elif not before_lower and not after_lower:
+        kind = "end" if convex else "merge"
+    else:
+        kind = "regular"
+    sweep.kind[i] = kind
+    return kind
+
+
+@tracing.traced(exclude_args=("sweep",))
+def add_diagonal(sweep: Sweep, u: Vertex, w: Vertex) -> tuple[int, int]:
+    """Join u to the helper w: one more cut towards monotone pieces."""
+    sweep.diagonals.append((u.index, w.index))
+    return (u.index, w.index)
+
+
+def _finish_edge(sweep: Sweep, v: Vertex, e: int) -> None:
+    """Edge e ends or gets a new helper at v: a merge-vertex helper is joined to v first."""
+    helper = sweep.status.helper[e]
+    if sweep.kind[helper] == "merge":
+        add_diagonal(sweep, v, sweep.polygon.vertex(helper))
+
+
+def _end_edge_above(sweep: Sweep, v: Vertex) -> None:
+    """The edge from v's predecessor ends at v."""
+    e = (v.index - 1) % sweep.polygon.n
+    _finish_edge(sweep, v, e)
+    sweep.status.remove(e)
+
+
+def _help_edge_left(sweep: Sweep, v: Vertex) -> None:
+    """v becomes the helper of the edge directly left of it."""
+    left = sweep.status.left_of(v.index)
+    _finish_edge(sweep, v, left)
+    sweep.status.helper[left] = v.index
+
+
+@tracing.traced(exclude_args=("sweep",))
+def handle_start(sweep: Sweep, v: Vertex) -> None:
+    sweep.status.insert(v.index, helper=v.index)
+
+
+@tracing.traced(exclude_args=("sweep",))
+def handle_end(sweep: Sweep, v: Vertex) -> None:
+    _end_edge_above(sweep, v)
+
+
+@tracing.traced(exclude_args=("sweep",))
+def handle_split(sweep: Sweep, v: Vertex) -> None:
+    left = sweep.status.left_of(v.index)
+    add_diagonal(sweep, v, sweep.polygon.vertex(sweep.status.helper[left]))
+    sweep.status.helper[left] = v.index
+    sweep.status.insert(v.index, helper=v.index)
+
+
+@tracing.traced(exclude_args=("sweep",))
+def handle_merge(sweep: Sweep, v: Vertex) -> None:
+    _end_edge_above(sweep, v)
+    _help_edge_left(sweep, v)
+
+
+@tracing.traced(exclude_args=("sweep",))
+def handle_regular(sweep: Sweep, v: Vertex) -> None:
+    n, i = sweep.polygon.n, v.index
+    if sweep.rank[(i - 1) % n] < sweep.rank[i]:  # coming down a left side: inside on the right
+        _end_edge_above(sweep, v)
+        sweep.status.insert(i, helper=i)
+    else:
+        _help_edge_left(sweep, v)
+
+
+HANDLERS = {
+    "start": handle_start,
+    "end": handle_end,
+    "split": handle_split,
+    "merge": handle_merge,
+    "regular": handle_regular,
+}
+
+
+@tracing.traced
+def make_monotone(polygon: Polygon) -> list[tuple[int, int]]:
+    """The sweep: diagonals that cut the polygon into y-monotone pieces."""
+    sweep = Sweep(polygon)
+    with sweep.line:
+        for i in sweep.order:
+            v = polygon.vertex(i)
+            HANDLERS[classify_vertex(sweep, v)](sweep, v)
+    return sweep.diagonals
+
+
+@tracing.traced(name="monotone")
+def monotone(polygon: Polygon) -> Triangulation:
+    """Cut into y-monotone pieces, then triangulate each piece with a stack."""
+    diagonals = make_monotone(polygon)
+    triangles = []
+    for piece in monotone_pieces(polygon, diagonals):
+        triangles.extend(triangulate_monotone_piece(polygon, piece))
+    return finished(triangles, steps=len(diagonals), diagonals=len(diagonals))

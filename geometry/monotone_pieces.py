@@ -1,0 +1,164 @@
+"""The second half of the monotone algorithm: the pieces, and a stack to triangulate each.
+
+:func:`monotone_pieces` walks the faces of the polygon cut by its diagonals:
+around each vertex the edges and diagonals are sorted counter-clockwise (an
+exact angular order), and a face is followed by always taking, at the end of
+a half-edge a→b, the edge out of b that comes next clockwise from b→a.
+
+:func:`triangulate_monotone_piece` is the greedy stack triangulation of a
+y-monotone polygon (de Berg et al., ch. 3.3): merge its two chains top to
+bottom; a vertex on the other chain than the stack's top sees every stacked
+vertex (fan them); a vertex on the same chain cuts off triangles while the
+stack's top is strictly convex, then waits. Straight angles are not convex,
+so no triangle has zero area.
+
+>>> from geometry.polygon import Polygon
+>>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
+>>> [piece.ids for piece in monotone_pieces(p, [(1, 4)])]
+[(0, 1, 4), (1, 2, 3, 4)]
+>>> triangulate_monotone_piece(p, monotone_pieces(p, [(1, 4)])[1])
+[(3, 4, 2), (4, 1, 2)]
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cmp_to_key
+from itertools import pairwise
+
+import numpy as np
+
+import tracing
+from geometry.batch import orient_fast
+from geometry.polygon import Polygon
+from geometry.triangulate import Triangle
+
+
+@dataclass(frozen=True)
+class MonotonePiece:
+    """A y-monotone piece: polygon vertex indices, counter-clockwise (key ``M1``, ``M2`` …)."""
+
+    polygon: Polygon
+    ids: tuple[int, ...]
+    number: int
+
+    @property
+    def trace_key(self) -> str:
+        return f"M{self.number}"
+
+    def trace_state(self) -> dict:
+        p = self.polygon
+        return {
+            "kind": "polygon",
+            "points": [list(p.points[i]) for i in self.ids],
+            "labels": [p.labels[i] for i in self.ids],
+        }
+
+
+@tracing.traced(exclude_args=("diagonals",))
+def monotone_pieces(polygon: Polygon, diagonals: list[tuple[int, int]]) -> list[MonotonePiece]:
+    """The faces of the polygon cut along the diagonals, each counter-clockwise."""
+    n = polygon.n
+    around = _fans(polygon, diagonals)
+    seen_edge = bytearray(n)
+    seen_diagonal: set[tuple[int, int]] = set()
+    starts = [(i, (i + 1) % n) for i in range(n)]
+    starts += [pair for u, w in diagonals for pair in ((u, w), (w, u))]
+    pieces: list[MonotonePiece] = []
+    for a, b in starts:
+        if (b == (a + 1) % n and seen_edge[a]) or (a, b) in seen_diagonal:
+            continue
+        ids = []
+        start = (a, b)
+        while True:
+            ids.append(a)
+            if b == (a + 1) % n:
+                seen_edge[a] = 1
+            else:
+                seen_diagonal.add((a, b))
+            fan = around.get(b)
+            c = (b + 1) % n if fan is None else fan[fan.index(a) - 1]
+            a, b = b, c
+            if (a, b) == start:
+                break
+        pieces.append(MonotonePiece(polygon, tuple(ids), len(pieces) + 1))
+    return pieces
+
+
+def _fans(polygon: Polygon, diagonals: list[tuple[int, int]]) -> dict[int, list[int]]:
+    """For each vertex with diagonals: its neighbours counter-clockwise, from next to prev."""
+    n, points = polygon.n, polygon.points
+    partners: dict[int, list[int]] = {}
+    for u, w in diagonals:
+        partners.setdefault(u, []).append(w)
+        partners.setdefault(w, []).append(u)
+    fans = {}
+    for v, others in partners.items():
+        nxt, prv = (v + 1) % n, (v - 1) % n
+        pv, ref = points[v], points[nxt]
+
+        def half(p: int, pv=pv, ref=ref) -> int:  # 0: within π counter-clockwise of v→next
+            return 0 if orient_fast(pv, ref, points[p]) > 0 else 1
+
+        def compare(p: int, q: int, pv=pv, half=half) -> int:
+            return (half(p) - half(q)) or -orient_fast(pv, points[p], points[q])
+
+        fans[v] = [nxt, *sorted(others, key=cmp_to_key(compare)), prv]
+    return fans
+
+
+@tracing.traced
+def triangulate_monotone_piece(polygon: Polygon, piece: MonotonePiece) -> list[Triangle]:
+    """The stack triangulation of one y-monotone piece, counter-clockwise triples."""
+    ids = piece.ids
+    if len(ids) == 3:
+        return [ids]
+    points = polygon.points
+    order, on_left = _merged_chains(polygon, ids)
+    triangles: list[Triangle] = []
+    stack = [order[0], order[1]]
+    for u in order[2:-1]:
+        if on_left[u] != on_left[stack[-1]]:
+            _fan(points, u, stack, triangles)
+            stack = [stack[-1], u]
+        else:
+            last = stack.pop()
+            while stack and _cuts_off(points, stack[-1], last, u, on_left[u]):
+                triangles.append(_ccw(points, stack[-1], last, u))
+                last = stack.pop()
+            stack += [last, u]
+    _fan(points, order[-1], stack, triangles)
+    return triangles
+
+
+def _merged_chains(polygon: Polygon, ids: tuple[int, ...]) -> tuple[list[int], dict[int, bool]]:
+    """The piece's vertices from highest to lowest, and which lie on its left chain."""
+    pts = np.asarray([polygon.points[i] for i in ids], dtype=float)
+    by_height = np.lexsort((pts[:, 0], -pts[:, 1])).tolist()  # highest first, as in the sweep
+    top, bottom = by_height[0], by_height[-1]
+    k = len(ids)
+    on_left = {ids[i]: False for i in range(k)}
+    i = top
+    while i != bottom:  # counter-clockwise from the top runs down the left chain
+        on_left[ids[i]] = True
+        i = (i + 1) % k
+    return [ids[i] for i in by_height], on_left
+
+
+def _cuts_off(points, s: int, last: int, u: int, left: bool) -> bool:
+    """Whether u sees s past last: last is strictly convex on u's chain."""
+    turn = orient_fast(points[s], points[last], points[u])
+    return turn > 0 if left else turn < 0
+
+
+def _fan(points, u: int, stack: list[int], triangles: list[Triangle]) -> None:
+    """u sees every stacked vertex: one triangle per consecutive pair on the stack."""
+    for s, t in pairwise(stack):
+        triangles.append(_ccw(points, s, t, u))
+
+
+def _ccw(points, a: int, b: int, c: int) -> Triangle:
+    turn = orient_fast(points[a], points[b], points[c])
+    if turn == 0:
+        raise AssertionError("a monotone piece produced a zero-area triangle")
+    return (a, b, c) if turn > 0 else (a, c, b)
