@@ -1,11 +1,27 @@
 """Turning raw point lists into a clean ring, and proving the ring simple.
 
 Cleaning names the first defect it meets in one short line (see
-:mod:`geometry.errors`). The simplicity test is O(n log n): shapely's STRtree
-finds the pairs of edges whose bounding boxes meet (comparisons of floats are
-exact, so no pair is missed), a vectorised float filter with a rigorous error
-bound discards the pairs that are certainly apart, and the exact predicates
-decide the rest.
+:mod:`geometry.errors`). The simplicity test first looks for pinches (a point
+twice) and fold-backs (zero-width spikes), then for two edges that meet, on one
+of two paths:
+
+* **Candidate pairs** (most polygons): shapely's STRtree lists the pairs of
+  edges whose bounding boxes meet (comparisons of floats are exact, so no pair
+  is missed), a vectorised float filter with a rigorous error bound discards the
+  pairs that are certainly apart, and the exact predicates decide the rest. It is
+  fast when the boxes are small (a 100,000-vertex spiral or comb has almost no
+  pairs), and it reports the defect with the smallest edge indices.
+* **Plane sweep** (:func:`geometry.sweep.first_contact`): many long, nearly
+  parallel edges (a star) make the pairs quadratic in number, tens of millions at
+  20,000 vertices and more than memory holds at 100,000. So the tree is queried
+  a chunk of edges at a time (edges in a fixed pseudo-random order, chunks
+  doubling, so the running count estimates the total early); once the count
+  passes ``_PAIRS_PER_EDGE`` pairs per edge it stops and the Shamos–Hoey sweep,
+  O(n log n) whatever the shape, takes over. It reports the first contact the
+  sweep meets (near the left-most one), not the one with the smallest indices.
+
+Both paths decide each sign with the exact predicates and word their defects
+alike (:func:`_contact_error`).
 
 >>> clean_points([[0, 0], [4, 0], [4, 0], [0, 3], [0, 0]])
 ([(0.0, 0.0), (4.0, 0.0), (0.0, 3.0)], ['dropped 1 repeated consecutive point'])
@@ -38,10 +54,15 @@ from geometry.predicates import (
     orient,
     segment_contact,
 )
+from geometry.sweep import first_contact
 
 _EPS = 2.0**-53
 _ORIENT_BOUND = (3.0 + 16.0 * _EPS) * _EPS
 _TINY = 2.0**-900
+# Candidate pairs per edge beyond which the plane sweep is cheaper than deciding each pair.
+_PAIRS_PER_EDGE = 16
+# Edges in the first STRtree query (later ones grow while the pairs stay few).
+_FIRST_CHUNK = 64
 
 
 def fmt(x: float) -> str:
@@ -132,8 +153,9 @@ def check_simple(points: list[Point], label: Callable[[int], str]) -> None:
     """Raise :class:`SelfIntersectionError` unless the ring is simple.
 
     ``label(i)`` names input point i in messages. Pinches, fold-backs (zero-width
-    spikes), crossings, touchings and overlaps are each named; when there are
-    several defects the one with the smallest edge indices is reported.
+    spikes), crossings, touchings and overlaps are each named. When edges meet in
+    several places, the candidate-pair path reports the pair with the smallest
+    edge indices, the sweep (many long edges) the first contact it meets.
     """
     _check_repeated_vertices(points)
     _check_fold_backs(points, label)
@@ -161,14 +183,32 @@ def _check_fold_backs(points: list[Point], label: Callable[[int], str]) -> None:
             )
 
 
-def _candidate_pairs(arr: np.ndarray) -> np.ndarray:
-    """Pairs (i, j), i < j, of non-adjacent edges whose bounding boxes meet."""
+def _candidate_pairs(arr: np.ndarray, budget: int) -> np.ndarray | None:
+    """Pairs (i, j), i < j, of non-adjacent edges whose bounding boxes meet.
+
+    None as soon as there are more than ``budget``. The tree is queried for
+    chunks of edges in a fixed pseudo-random order, so the pairs seen so far per
+    edge estimate the rest; each chunk is at most twice the one before and
+    expected to bring at most ``budget`` pairs. A polygon with quadratically many
+    pairs thus stops after a few small queries, holding O(budget) pairs.
+    """
     n = len(arr)
     edges = shapely.linestrings(np.stack([arr, np.roll(arr, -1, 0)], axis=1))
-    pairs = shapely.STRtree(edges).query(edges)
-    i, j = pairs
-    keep = (i < j) & (j != i + 1) & ~((i == 0) & (j == n - 1))
-    return np.stack([i[keep], j[keep]], axis=1)
+    tree = shapely.STRtree(edges)
+    order = np.random.default_rng(0).permutation(n)
+    found, count, seen, start, size = [], 0, 0, 0, _FIRST_CHUNK
+    while start < n:
+        chunk = order[start : start + size]
+        k, j = tree.query(edges[chunk])
+        i = chunk[k]
+        keep = (i < j) & (j != i + 1) & ~((i == 0) & (j == n - 1))
+        found.append(np.stack([i[keep], j[keep]], axis=1))
+        count += len(found[-1])
+        if count > budget:
+            return None
+        start, seen = start + len(chunk), seen + len(k)
+        size = min(2 * size, max(_FIRST_CHUNK, budget * start // max(seen, 1)))
+    return np.concatenate(found)
 
 
 def _certainly_apart(arr: np.ndarray, pairs: np.ndarray) -> np.ndarray:
@@ -184,26 +224,44 @@ def _certainly_apart(arr: np.ndarray, pairs: np.ndarray) -> np.ndarray:
 def _check_edge_pairs(points: list[Point], label: Callable[[int], str]) -> None:
     arr = np.asarray(points, dtype=float)
     n = len(arr)
-    pairs = _candidate_pairs(arr)
+    pairs = _candidate_pairs(arr, _PAIRS_PER_EDGE * n)
+    if pairs is None:  # too many pairs to decide one by one: sweep instead
+        found = first_contact(points)
+        if found is not None:
+            i, j = found
+            raise _contact_error(points, i, j, _contact(points, i, j), label)
+        return
     if len(pairs) == 0:
         return
     pairs = pairs[~_certainly_apart(arr, pairs)]
     order = np.lexsort((pairs[:, 1], pairs[:, 0])) if len(pairs) else []
     for k in order:
         i, j = int(pairs[k, 0]), int(pairs[k, 1])
-        a, b = points[i], points[(i + 1) % n]
-        c, d = points[j], points[(j + 1) % n]
-        contact = segment_contact(a, b, c, d)
-        if contact is Contact.NONE:
-            continue
-        name1 = f"{label(i)}–{label((i + 1) % n)}"
-        name2 = f"{label(j)}–{label((j + 1) % n)}"
-        if contact is Contact.PROPER:
-            where = fmt_point(intersection_point(a, b, c, d))
-            raise SelfIntersectionError(f"edges {name1} and {name2} cross at {where}")
-        if contact is Contact.OVERLAP:
-            raise SelfIntersectionError(f"edges {name1} and {name2} overlap")
-        raise SelfIntersectionError(_touch_message(points, i, j, label))
+        contact = _contact(points, i, j)
+        if contact is not Contact.NONE:
+            raise _contact_error(points, i, j, contact, label)
+
+
+def _contact(points: list[Point], i: int, j: int) -> Contact:
+    """How ring edges i and j meet."""
+    n = len(points)
+    return segment_contact(points[i], points[(i + 1) % n], points[j], points[(j + 1) % n])
+
+
+def _contact_error(
+    points: list[Point], i: int, j: int, contact: Contact, label: Callable[[int], str]
+) -> SelfIntersectionError:
+    """The error naming how edges i < j meet (``contact`` is not NONE)."""
+    n = len(points)
+    name1 = f"{label(i)}–{label((i + 1) % n)}"
+    name2 = f"{label(j)}–{label((j + 1) % n)}"
+    if contact is Contact.PROPER:
+        a, b, c, d = points[i], points[(i + 1) % n], points[j], points[(j + 1) % n]
+        where = fmt_point(intersection_point(a, b, c, d))
+        return SelfIntersectionError(f"edges {name1} and {name2} cross at {where}")
+    if contact is Contact.OVERLAP:
+        return SelfIntersectionError(f"edges {name1} and {name2} overlap")
+    return SelfIntersectionError(_touch_message(points, i, j, label))
 
 
 def _touch_message(points: list[Point], i: int, j: int, label: Callable[[int], str]) -> str:
