@@ -12,8 +12,8 @@ DEB_PACKAGES := libpango1.0-dev pkg-config fonts-dejavu-core xdg-utils
 .PHONY: demo test lint system-deps bench clean
 
 demo: $(STAMP)
-	$(BIN)/manim -ql --disable_caching scenes/polygon.py PolygonScene
-	@echo "video: $(CURDIR)/media/videos/polygon/480p15/PolygonScene.mp4"
+	$(BIN)/manim -ql --disable_caching scenes/gravity.py Gravity
+	@echo "video: $(CURDIR)/media/videos/gravity/480p15/Gravity.mp4"
 
 test: $(STAMP)
 	$(BIN)/ruff check .
