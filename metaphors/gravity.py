@@ -140,7 +140,7 @@ def gravity_turn(board, beat) -> None:
 
 def drop(board, beat) -> None:
     """A ball hangs from V on its band, falls straight down and hits the boundary."""
-    v = board.vertex(_called(beat))
+    v = board.vertex(beat.data.get("vertex") or _called(beat))
     hit = board.at(beat.data["hit"])
     ball, band = _ball(board, v), _band(board, [v, v])
     board.keep("band", band)

@@ -275,7 +275,7 @@ def _extra(walk: _Walk, call: Event, ret: Event) -> dict:
     if call.name == "drop_ball":
         hit = next(e.state for e in walk.log.events[call.seq:ret.seq]
                    if e.kind == "enter" and e.target == "hit")
-        return {"hit": hit["at"]}
+        return {"hit": hit["at"], "vertex": show(call.args["v"])}
     return {}
 
 
