@@ -1,0 +1,180 @@
+"""trex render: real low-quality renders checked with PyAV, bad input before any rendering,
+and no truncated or temporary file left by an interrupted or failed render."""
+
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import av
+import pytest
+from click.testing import CliRunner
+from PIL import Image
+
+from trex import render_command
+from trex.cli import main
+
+LOW = (854, 480)  # -ql
+
+
+def run(*args):
+    result = CliRunner().invoke(main, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+def leftovers(directory: Path, keep=()) -> list[str]:
+    return sorted(p.name for p in directory.iterdir() if p.name not in keep)
+
+
+@pytest.fixture(scope="module")
+def scaling_mp4(tmp_path_factory):
+    out = tmp_path_factory.mktemp("mp4") / "scaling.mp4"
+    code, stdout, stderr = run("render", "scaling", "-q", "l", "-o", str(out))
+    assert code == 0, stderr
+    return out, stdout
+
+
+def test_mp4_is_a_real_video_with_subtitles(scaling_mp4):
+    out, stdout = scaling_mp4
+    assert stdout.strip() == str(out)
+    with av.open(str(out)) as container:
+        stream = container.streams.video[0]
+        assert (stream.width, stream.height) == LOW
+        frames = sum(1 for _ in container.decode(video=0))
+    assert frames > 0
+    srt = out.with_suffix(".srt").read_text(encoding="utf-8")
+    assert "00:00:00,000 -->" in srt
+    assert leftovers(out.parent, keep={"scaling.mp4", "scaling.srt"}) == []
+
+
+def test_png_is_the_last_frame(tmp_path):
+    out = tmp_path / "still.png"
+    code, stdout, stderr = run("render", "scaling", "-ql", "--format", "png", "-o", str(out))
+    assert code == 0, stderr
+    assert stdout.strip() == str(out)
+    with Image.open(out) as image:
+        assert image.size == LOW
+        assert len(image.getcolors(1 << 16) or range(2)) > 1  # not a blank frame
+    assert leftovers(tmp_path, keep={"still.png"}) == []
+
+
+def test_format_follows_the_output_extension(tmp_path, monkeypatch):
+    seen = {}
+
+    def fake_render(make_scene, output, fmt, quality, **kw):
+        seen.update(fmt=fmt, quality=quality, scene=make_scene.__name__)
+        output.write_bytes(b"x")
+        return output
+
+    monkeypatch.setattr(render_command, "render_into", fake_render)
+    code, _, stderr = run("render", "rotation:RotationCcw", "-q", "m", "-o",
+                          str(tmp_path / "a.gif"))
+    assert code == 0, stderr
+    assert seen == {"fmt": "gif", "quality": "medium_quality", "scene": "RotationCcw"}
+
+
+def test_bad_polygon_fails_before_manim_is_imported(tmp_path):
+    bad = tmp_path / "bowtie.json"
+    bad.write_text("[[0,0],[2,2],[2,0],[0,2]]")
+    out = tmp_path / "x.mp4"
+    script = textwrap.dedent(f"""
+        import sys
+        from trex.cli import main
+        try:
+            main(["render", "scaling", "--polygon", {str(bad)!r}, "-o", {str(out)!r}])
+        except SystemExit as exc:
+            assert "manim" not in sys.modules, "manim was imported"
+            sys.exit(exc.code)
+    """)
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                            timeout=60)
+    assert result.returncode == 2, result.stderr
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"error: {bad}: "), result.stderr
+    assert leftovers(tmp_path, keep={"bowtie.json"}) == []
+
+
+def test_polygon_the_algorithm_rejects_is_one_line(tmp_path, monkeypatch):
+    monkeypatch.setattr(render_command, "render_into", lambda *a, **k: pytest.fail("rendered"))
+    code, _, stderr = run("render", "scaling", "--polygon", "triangle", "-o",
+                          str(tmp_path / "x.mp4"))
+    assert code == 2
+    assert stderr == "error: triangle: a triangle has no diagonal\n"
+    assert leftovers(tmp_path) == []
+
+
+@pytest.mark.parametrize("scene", ["nonesuch", "no/such/file.py"])
+def test_unknown_scene(scene, tmp_path):
+    code, _, stderr = run("render", scene, "-o", str(tmp_path / "x.mp4"))
+    assert code == 2
+    assert len(stderr.splitlines()) == 1 and stderr.startswith(f"error: {scene}: ")
+    if "/" not in scene:
+        assert "known: " in stderr and "scaling" in stderr
+    assert leftovers(tmp_path) == []
+
+
+def test_unknown_class_lists_the_classes(tmp_path):
+    code, _, stderr = run("render", "rotation:Nope", "-o", str(tmp_path / "x.mp4"))
+    assert code == 2
+    assert stderr == "error: rotation:Nope: rotation.py has no scene class 'Nope'; it has: Rotation, RotationCcw\n"
+
+
+def test_output_that_is_a_directory(tmp_path):
+    code, _, stderr = run("render", "scaling", "-o", str(tmp_path))
+    assert code == 2
+    assert stderr == f"error: {tmp_path}: is a directory; give a file path\n"
+
+
+def test_failed_render_leaves_nothing(tmp_path):
+    scene = tmp_path / "broken.py"
+    scene.write_text(textwrap.dedent("""
+        from manim import Circle, Create, Scene
+
+        class Broken(Scene):
+            def construct(self):
+                self.play(Create(Circle()), run_time=0.2)
+                raise RuntimeError("the scene broke")
+    """))
+    out_dir = tmp_path / "out"
+    code, _, stderr = run("render", str(scene), "-o", str(out_dir / "broken.mp4"))
+    assert code == 1
+    assert stderr.splitlines()[-1] == (
+        f"error: {scene}: render failed: RuntimeError: the scene broke")
+    assert leftovers(out_dir) == []
+
+
+def _partial_files(directory: Path) -> list[Path]:
+    return list(directory.glob(".*.render/media/videos/*/partial_movie_files/*/*.mp4"))
+
+
+def test_interrupted_render_leaves_nothing(tmp_path):
+    """SIGINT and SIGTERM, each sent to a real `trex render` once it has written frames."""
+    trex = Path(sys.executable).with_name("trex")
+    jobs = {}
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        out_dir = tmp_path / sig.name
+        out_dir.mkdir()
+        out = out_dir / "scaling.mp4"
+        proc = subprocess.Popen([str(trex), "render", "scaling", "-ql", "-o", str(out)],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        jobs[sig] = (proc, out_dir)
+    try:
+        for sig, (proc, out_dir) in jobs.items():
+            deadline = time.monotonic() + 90
+            while not _partial_files(out_dir) and proc.poll() is None:
+                assert time.monotonic() < deadline, "render never started"
+                time.sleep(0.1)
+            assert proc.poll() is None, "render finished before it could be interrupted"
+            proc.send_signal(sig)
+        for sig, (proc, out_dir) in jobs.items():
+            _, stderr = proc.communicate(timeout=60)
+            assert proc.returncode == 128 + sig, stderr
+            assert stderr.rstrip().endswith("error: scaling: render interrupted; nothing written")
+            assert leftovers(out_dir) == []
+    finally:
+        for proc, _ in jobs.values():
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()

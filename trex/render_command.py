@@ -1,0 +1,363 @@
+"""``trex render``: one scene to an mp4, gif or png, written atomically.
+
+The scene is a name (``scaling`` → ``scenes/scaling.py``, ``rotation:RotationCcw``) or a
+path (``my_scene.py[:Class]``). Everything that can be checked without manim is checked
+first: the polygon (as ``trex check`` does), the scene's file, the output path. Manim is
+imported only then. It renders into a temporary directory beside the output; the finished
+file is moved into place with ``os.replace``, so an interrupted (Ctrl-C, SIGTERM) or failed
+render leaves nothing at the output path, and no temporary files behind.
+
+:func:`render_into` is the shared machinery (``trex exercises`` renders its stills with it).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib.util
+import os
+import shutil
+import signal
+import sys
+import tempfile
+import threading
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import click
+
+from geometry.errors import GeometryError
+from trex.inputs import error_line, fail, load_or_exit
+
+SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
+QUALITIES = {"l": "low_quality", "m": "medium_quality", "h": "high_quality", "k": "fourk_quality"}
+FORMATS = ("mp4", "gif", "png")
+EXIT_FAILED = 1
+EXIT_SIGNAL = 128  # + the signal's number, as a shell reports it
+
+
+class Interrupted(KeyboardInterrupt):
+    """Ctrl-C or SIGTERM during a render (``signum`` says which)."""
+
+    def __init__(self, signum: int = signal.SIGINT) -> None:
+        super().__init__(signal.Signals(signum).name)
+        self.signum = signum
+
+
+# --- finding the scene (no manim) ----------------------------------------------------------------
+
+
+def known_scenes() -> list[str]:
+    """Names of the scene files in ``scenes/``.
+
+    >>> "scaling" in known_scenes()
+    True
+    """
+    return sorted(p.stem for p in SCENES_DIR.glob("*.py") if not p.stem.startswith("_"))
+
+
+def resolve_scene(arg: str) -> tuple[Path, str | None]:
+    """The file and the class name (None: the first one) of a SCENE argument.
+
+    >>> path, name = resolve_scene("rotation:RotationCcw")
+    >>> path.name, name
+    ('rotation.py', 'RotationCcw')
+    >>> resolve_scene("divide-and-conquer")[0].name
+    'divide_and_conquer.py'
+    >>> resolve_scene("nonesuch")
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown scene 'nonesuch'; known: ...
+    """
+    target, _, class_name = arg.partition(":")
+    if not target:
+        raise ValueError("empty scene name")
+    if target.endswith(".py") or os.sep in target or "/" in target:
+        path = Path(target)
+        if not path.is_file():
+            raise ValueError(f"no such scene file: {target}")
+        return path.resolve(), class_name or None
+    path = SCENES_DIR / f"{target.replace('-', '_')}.py"
+    if not path.is_file():
+        raise ValueError(f"unknown scene '{target}'; known: {', '.join(known_scenes())}")
+    return path, class_name or None
+
+
+def default_output(path: Path, class_name: str | None, fmt: str) -> Path:
+    """``media/<scene>.<ext>`` (``media/<scene>-<Class>.<ext>`` when a class is named).
+
+    >>> default_output(Path("scenes/rotation.py"), "RotationCcw", "gif").as_posix()
+    'media/rotation-RotationCcw.gif'
+    """
+    stem = path.stem if class_name is None else f"{path.stem}-{class_name}"
+    return Path("media") / f"{stem}.{fmt}"
+
+
+def prepare_output(output: Path) -> Path:
+    """Make sure the output's directory exists and the output is not a directory.
+
+    Raises ValueError with a one-line reason.
+    """
+    if output.is_dir():
+        raise ValueError("is a directory; give a file path")
+    try:
+        output.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"cannot create its directory: {exc.strerror or exc}") from None
+    if not os.access(output.parent, os.W_OK):
+        raise ValueError(f"cannot write to directory {output.parent}")
+    return output
+
+
+# --- loading the scene (imports manim) -----------------------------------------------------------
+
+
+def load_scene_class(path: Path, class_name: str | None) -> type:
+    """Import a scene file and return its named Scene class, or the first one it defines."""
+    from manim import Scene
+
+    module_name = f"_trex_scene_{path.stem}"
+    spec = importlib.util.spec_from_file_location(module_name, path)
+    if spec is None or spec.loader is None:
+        raise ValueError(f"cannot load {path}")
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[module_name] = module
+    try:
+        spec.loader.exec_module(module)
+    except Exception as exc:
+        sys.modules.pop(module_name, None)
+        raise ValueError(f"cannot load {path.name}: {type(exc).__name__}: {error_line(exc)}") from None
+    classes = [
+        value for value in vars(module).values()
+        if isinstance(value, type) and issubclass(value, Scene) and value.__module__ == module_name
+    ]
+    if not classes:
+        raise ValueError(f"{path.name} defines no Scene class")
+    if class_name is None:
+        return classes[0]
+    for cls in classes:
+        if cls.__name__ == class_name:
+            return cls
+    names = ", ".join(c.__name__ for c in classes)
+    raise ValueError(f"{path.name} has no scene class '{class_name}'; it has: {names}")
+
+
+def dry_run(cls: type, polygon: str) -> None:
+    """Run the scene's algorithm on the polygon once, without drawing: an input the algorithm
+    rejects (a triangle has no diagonal …) is then reported before rendering starts."""
+    algorithm = getattr(cls, "algorithm", None)
+    if not isinstance(algorithm, str) or getattr(cls, "runs", None):
+        return
+    from metaphors.runs import run_logged
+
+    run_logged(algorithm, polygon, getattr(cls, "heuristic", None))
+
+
+# --- rendering --------------------------------------------------------------------------------------
+
+
+class Signals:
+    """What :func:`interrupts_raise` has seen: ``signum`` of the first SIGINT/SIGTERM, or None."""
+
+    def __init__(self) -> None:
+        self.signum: int | None = None
+        self.done = False  # the output is in place: a signal now interrupts nothing
+
+    def check(self) -> None:
+        """Raise :class:`Interrupted` if a signal came (its exception may have been swallowed
+        where Python ignores exceptions, such as a finalizer: this is the second chance)."""
+        if self.signum is not None:
+            raise Interrupted(self.signum)
+
+
+@contextlib.contextmanager
+def interrupts_raise() -> Iterator[Signals]:
+    """SIGINT and SIGTERM raise :class:`Interrupted` (so cleanup runs) while inside; later
+    signals are only recorded, so the cleanup is not interrupted in turn."""
+    seen = Signals()
+    if threading.current_thread() is not threading.main_thread():
+        yield seen
+        return
+
+    def handler(signum, _frame):
+        if seen.signum is None:
+            seen.signum = signum
+            if not seen.done:
+                raise Interrupted(signum)
+
+    previous = {s: signal.signal(s, handler) for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        yield seen
+    finally:
+        for s, h in previous.items():
+            signal.signal(s, h)
+
+
+@contextlib.contextmanager
+def _environment(**values: str | None) -> Iterator[None]:
+    """Set (or, for None, remove) environment variables inside; restore them after."""
+    saved = {k: os.environ.get(k) for k in values}
+    try:
+        for k, v in values.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+        yield
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+
+
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """SIGINT and SIGTERM wait (blocked) until the block ends: the moves happen together."""
+    held = {signal.SIGINT, signal.SIGTERM}
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, before)
+
+
+def _artifact(scene, fmt: str, media: Path) -> Path:
+    """The file manim wrote for this scene (asked from its writer, else found in media/)."""
+    writer = getattr(scene.renderer, "file_writer", None)
+    with contextlib.suppress(AttributeError, TypeError):
+        path = Path(writer.image_file_path if fmt == "png" else writer.movie_file_path)
+        if path.is_file():
+            return path
+    found = [p for p in media.rglob(f"*.{fmt}") if "partial_movie_files" not in p.parts]
+    if len(found) != 1:
+        raise RuntimeError(f"manim wrote no single .{fmt} file ({len(found)} found)")
+    return found[0]
+
+
+def _abort_encoders(scene) -> None:
+    """Stop manim's encoder threads after an interrupt (they would keep the process alive)."""
+    writer = getattr(getattr(scene, "renderer", None), "file_writer", None)
+    abort = getattr(writer, "abort_encode_jobs", None)
+    if abort is not None:
+        with contextlib.suppress(Exception):
+            abort()
+
+
+def render_into(make_scene: Callable[[], object], output: Path, fmt: str, quality: str,
+                *, progress: bool = True, srt: bool = True,
+                signals: Signals | None = None) -> Path:
+    """Render ``make_scene()`` with manim and move the finished file to ``output``.
+
+    Renders inside a temporary directory next to ``output`` (same filesystem, so the final
+    ``os.replace`` is atomic) and removes it whatever happens. With ``srt``, the subtitle
+    file manim writes beside a video is moved to ``output`` with suffix ``.srt``.
+    With ``signals`` (from :func:`interrupts_raise`), a signal whose exception got lost
+    still cancels the move, and one arriving after the move no longer counts.
+    """
+    from manim import tempconfig
+
+    temp = Path(tempfile.mkdtemp(prefix=f".{output.name}.", suffix=".render", dir=output.parent))
+    try:
+        media = temp / "media"
+        settings = {
+            "quality": quality,
+            "format": fmt,
+            "media_dir": str(media),
+            "disable_caching": True,
+            "verbosity": "WARNING",
+            "progress_bar": "display" if progress else "none",
+            "preview": False,
+        }
+        with tempconfig(settings):
+            scene = make_scene()
+            try:
+                scene.render()
+            except BaseException:
+                _abort_encoders(scene)
+                raise
+            produced = _artifact(scene, fmt, media)
+        subtitles = produced.with_suffix(".srt")
+        with _signals_held():
+            if signals is not None:
+                signals.check()
+            if srt and fmt != "png" and subtitles.is_file():
+                os.replace(subtitles, output.with_suffix(".srt"))
+            os.replace(produced, output)
+            if signals is not None:
+                signals.done = True
+        return output
+    finally:
+        shutil.rmtree(temp, ignore_errors=True)
+
+
+def _format_of(fmt: str | None, output: str | None) -> str:
+    if fmt:
+        return fmt
+    suffix = Path(output).suffix.lower().lstrip(".") if output else ""
+    return suffix if suffix in FORMATS else "mp4"
+
+
+@click.command()
+@click.argument("scene")
+@click.option("--polygon", metavar="POLYGON", help="Polygon file or sample (default: the scene's).")
+@click.option("-q", "--quality", type=click.Choice(list(QUALITIES)), default="l",
+              show_default=True, help="l 480p15, m 720p30, h 1080p60, k 2160p60.")
+@click.option("--format", "fmt", type=click.Choice(FORMATS),
+              help="png = the last frame. Default: from -o's extension, else mp4.")
+@click.option("-o", "--output", metavar="PATH", help="Where to write (default media/<scene>.<ext>).")
+def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
+           output: str | None) -> None:
+    """Render SCENE (a name such as gravity or rotation:RotationCcw, or a file.py[:Class]).
+
+    Prints the output path. An interrupted or failed render leaves nothing at it.
+    """
+    if polygon is not None:
+        load_or_exit(polygon)  # bad input: one line, exit 2, before manim is even imported
+    try:
+        path, class_name = resolve_scene(scene)
+    except ValueError as exc:
+        fail(f"{scene}: {exc}")
+    fmt = _format_of(fmt, output)
+    target = Path(output) if output else default_output(path, class_name, fmt)
+    try:
+        prepare_output(target)
+    except ValueError as exc:
+        fail(f"{target}: {exc}")
+    with interrupts_raise() as signals:
+        try:
+            _render(scene, path, class_name, polygon, target, fmt, quality, signals)
+        except Interrupted as exc:
+            click.echo(f"error: {scene}: render interrupted; nothing written", err=True)
+            raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
+    click.echo(str(target))
+
+
+def _render(scene: str, path: Path, class_name: str | None, polygon: str | None, target: Path,
+            fmt: str, quality: str, signals: Signals) -> None:
+    try:
+        cls = load_scene_class(path, class_name)
+    except ValueError as exc:
+        fail(f"{scene}: {exc}")
+    if polygon is not None:
+        try:
+            dry_run(cls, polygon)
+        except (GeometryError, ValueError, KeyError) as exc:
+            fail(f"{polygon}: {error_line(exc)}")
+    env = {"TREX_POLYGON": polygon, "TREX_LOG": None} if polygon is not None else {}
+    try:
+        with _environment(**env):
+            render_into(cls, target, fmt, QUALITIES[quality], signals=signals)
+    except (KeyboardInterrupt, click.exceptions.Exit):
+        raise
+    except Exception as exc:
+        click.echo(f"error: {scene}: render failed: {type(exc).__name__}: {error_line(exc)}",
+                   err=True)
+        raise click.exceptions.Exit(EXIT_FAILED) from None
+
+
+COMMANDS = (render,)
+__all__ = ["COMMANDS", "render", "render_into"]
