@@ -1,0 +1,296 @@
+"""Exercises on the frame of the inner-diagonal heuristics, with answers the geometry checks.
+
+Three kinds, mixed in turn:
+
+``pick``
+    "Which vertex does rotation pick?" — the answer is the label of D from
+    :func:`geometry.diagonals.find_diagonal`; the reason quotes the metaphor's own numbers
+    from the run's log (the water's radius, the clock hand's angle, the sweep's offset).
+``claim``
+    "Is the claim of scaling an inner diagonal?" (a wrong heuristic) — yes or no from
+    :func:`geometry.check.is_inner_diagonal`, with its reason. Yes and no alternate in a
+    seeded order, so a set of two or more holds both.
+``inner``
+    "Which of these diagonals are inner: AC, BD, BE?" — AC and B to every candidate; each
+    checked exactly. Always a mix: AC is not inner when T holds a candidate, the farthest
+    candidate from AC is (thesis, lemma 2), and at least one other one is not.
+
+Every polygon is a seeded sample spec (``random-2opt:11:48213``) that any ``trex`` command
+reads again; its triangle T = ABC holds 2–4 candidates. The search is a deterministic
+function of the seed, so the same seed gives the same exercises. No manim here.
+
+>>> exercises = make_exercises(3, seed=1)
+>>> [e.kind for e in exercises]
+['pick', 'claim', 'inner']
+>>> exercises == make_exercises(3, seed=1)
+True
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import random
+from dataclasses import dataclass, field
+
+import tracing
+from geometry.check import is_inner_diagonal
+from geometry.diagonals import WRONG, find_diagonal
+from geometry.errors import GeometryError
+from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
+from geometry.polygon import Polygon
+from geometry.samples import sample_from_spec
+
+__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "make_exercises"]
+
+KINDS = ("pick", "claim", "inner")
+#: Heuristics that pick a candidate of T by a rule a student can apply by hand.
+PICKABLE = (
+    "scaling", "rotation", "rotation-ccw", "translation",
+    "translation-correct", "scaling-correct", "rotation-correct",
+)
+#: (generator, smallest n, largest n): shapes whose T often holds several candidates.
+GENERATORS = (("random-2opt", 8, 13), ("random-comb", 12, 16))
+MIN_CANDIDATES, MAX_CANDIDATES = 2, 4
+MIN_GAP = 0.04  # closest two vertices, as a fraction of the bounding box's diagonal (legibility)
+MAX_TRIES = 20_000
+
+# How each rule's metaphor reads its log: the value a reached candidate carries, and the words.
+_VALUE_KEY = {"circle": "radius", "ray": "angle", "line": "offset", "band": "level"}
+_STORY = {
+    "scaling": ("the water spilled at B reaches", "distance ", "{:.2f}"),
+    "rotation": ("the clock hand at B, set to A, passes", "after ", "{:.1f}°"),
+    "rotation-ccw": ("the clock hand at B, set to C, turning back, passes", "after ", "{:.1f}°"),
+    "rotation-correct": ("the clock hand at C, set to B, passes", "after ", "{:.1f}°"),
+    "translation": ("the vertical line swept rightwards from B reaches", "after ", "{:.2f}"),
+    "translation-correct": ("the line parallel to AC, swept from B, reaches", "after ", "{:.2f}"),
+    "scaling-correct": ("the water rising from the shore AC wets", "height ", "{:.2f}"),
+}
+
+
+@dataclass(frozen=True)
+class Exercise:
+    """One exercise: the question, its checked answer and reason, and what its still shows."""
+
+    number: int
+    kind: str
+    spec: str
+    heuristic: str | None
+    question: str
+    answer: str
+    reason: str
+    triangle: tuple[int, int, int]  # indices of A, B, C
+    candidates: tuple[int, ...]  # indices of the candidates in T
+    options: tuple[tuple[int, int], ...] = ()  # the diagonals a question names (inner)
+    polygon: Polygon = field(compare=False, repr=False, default=None)  # type: ignore[assignment]
+
+    @property
+    def title(self) -> str:
+        return f"{self.number}. {self.question}"
+
+    @property
+    def still(self) -> str:
+        """File name of the exercise's picture."""
+        return f"exercise-{self.number:02d}.png"
+
+
+# --- the search -----------------------------------------------------------------------------------
+
+
+def _specs(rng: random.Random, used: set[str], generator: tuple[str, int, int]):
+    """An endless, seeded stream of fresh sample specs of one generator."""
+    name, lo, hi = generator
+    while True:
+        spec = f"{name}:{rng.randint(lo, hi)}:{rng.randrange(100_000)}"
+        if spec not in used:
+            yield spec
+
+
+def _legible(polygon: Polygon) -> bool:
+    pts = polygon.points
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    size = math.hypot(max(xs) - min(xs), max(ys) - min(ys))
+    closest = min(math.dist(p, q) for p, q in itertools.combinations(pts, 2))
+    return closest >= MIN_GAP * size
+
+
+@dataclass(frozen=True)
+class _Frame:
+    spec: str
+    polygon: Polygon
+    triangle: tuple[int, int, int]
+    candidates: tuple[int, ...]
+
+
+def _frame(spec: str) -> _Frame | None:
+    """The polygon of ``spec`` with its T and candidates, if it makes a fair exercise."""
+    try:
+        polygon = Polygon.from_points(sample_from_spec(spec))
+    except GeometryError:
+        return None
+    t = triangle_at(polygon, leftmost_vertex(polygon))
+    candidates = tuple(v.index for v in candidates_in_triangle(polygon, t))
+    if not MIN_CANDIDATES <= len(candidates) <= MAX_CANDIDATES or not _legible(polygon):
+        return None
+    return _Frame(spec, polygon, (t.a.index, t.b.index, t.c.index), candidates)
+
+
+def _search(rng: random.Random, used: set[str], generator: tuple[str, int, int], build):
+    """The first exercise ``build(frame)`` accepts, over the seeded stream of polygons."""
+    for spec in itertools.islice(_specs(rng, used, generator), MAX_TRIES):
+        frame = _frame(spec)
+        made = build(frame) if frame is not None else None
+        if made is not None:
+            used.add(spec)
+            return made
+    raise RuntimeError(f"no fitting polygon in {MAX_TRIES} tries")  # never seen in practice
+
+
+# --- the three kinds ------------------------------------------------------------------------------
+
+
+def _and(items: list[str]) -> str:
+    """``D``, ``D and E``, ``D, E and F``."""
+    return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} and {items[-1]}"
+
+
+def _label(polygon: Polygon, *indices: int) -> str:
+    return "".join(polygon.labels[i] for i in indices)
+
+
+def _reached(polygon: Polygon, heuristic: str) -> tuple[int, list[tuple[str, float]]]:
+    """The heuristic's D and, from its log, each candidate its metaphor reaches, in order."""
+    with tracing.record(heuristic=heuristic) as log:
+        claim = find_diagonal(polygon, heuristic)
+    steps = []
+    for e in log.events:
+        state = e.state or {}
+        if e.kind == "change" and "reached" in state:
+            steps.append((state["reached"], float(state[_VALUE_KEY[state["kind"]]])))
+    return claim.v.index, steps
+
+
+def _pick_reason(heuristic: str, steps: list[tuple[str, float]]) -> str | None:
+    """"the water spilled at B reaches D (distance 2.83) before E (3.62)"; None when the
+    deciding two values would print alike (the tie rule would be the real reason)."""
+    lead, unit, fmt = _STORY[heuristic]
+    shown = [(label, fmt.format(value)) for label, value in steps]
+    if heuristic == "scaling-correct":  # the last candidate reached is the pick
+        if shown[-1][1] == shown[-2][1]:
+            return None
+        wet = [f"{label} ({unit if k == 0 else ''}{v})" for k, (label, v) in enumerate(shown[:-1])]
+        last, v = shown[-1]
+        return f"{lead} {_and(wet)} before {last} ({v}), so {last} stays dry longest"
+    if shown[0][1] == shown[1][1]:
+        return None
+    (first, v), rest = shown[0], shown[1:]
+    others = _and([f"{label} ({value})" for label, value in rest])
+    return f"{lead} {first} ({unit}{v}) before {others}"
+
+
+def _pick(number: int, heuristic: str):
+    def build(frame: _Frame) -> Exercise | None:
+        d, steps = _reached(frame.polygon, heuristic)
+        reason = _pick_reason(heuristic, steps)
+        if reason is None:
+            return None
+        return _exercise(number, "pick", frame, heuristic, f"Which vertex does {heuristic} pick?",
+                         frame.polygon.labels[d], reason)
+
+    return build
+
+
+def _claim(number: int, heuristics: list[str], wanted: bool):
+    def build(frame: _Frame) -> Exercise | None:
+        p = frame.polygon
+        for heuristic in heuristics:
+            claim = find_diagonal(p, heuristic)
+            verdict = is_inner_diagonal(p, *claim.pair)
+            if verdict.ok != wanted:
+                continue
+            name = claim.name
+            answer = f"{'yes' if verdict.ok else 'no'} ({heuristic} claims {name})"
+            reason = verdict.why if not verdict.ok else _inside(p, *claim.pair)
+            question = f"Is the claim of {heuristic} an inner diagonal?"
+            return _exercise(number, "claim", frame, heuristic, question, answer, reason)
+        return None
+
+    return build
+
+
+def _inside(polygon: Polygon, i: int, j: int) -> str:
+    return f"{_label(polygon, i)}–{_label(polygon, j)} crosses no edge and touches no vertex: " \
+        "it runs inside the polygon"
+
+
+def _inner(number: int):
+    def build(frame: _Frame) -> Exercise | None:
+        p = frame.polygon
+        a, b, c = frame.triangle
+        options = ((a, c), *((b, d) for d in sorted(frame.candidates, key=p.labels.__getitem__)))
+        verdicts = [is_inner_diagonal(p, *pair) for pair in options]
+        if all(v.ok for v in verdicts[1:]) or not any(v.ok for v in verdicts):
+            return None  # no B-diagonal to reject: too easy
+        names = [_label(p, *pair) for pair in options]
+        yes = [n for n, v in zip(names, verdicts, strict=True) if v.ok]
+        reasons = [v.why for v in verdicts if not v.ok]
+        reasons.append(f"{_and(yes)} {'runs' if len(yes) == 1 else 'run'} inside the polygon")
+        question = f"Which of these diagonals are inner: {', '.join(names)}?"
+        return _exercise(number, "inner", frame, None, question, ", ".join(yes),
+                         "; ".join(reasons), options)
+
+    return build
+
+
+def _exercise(number, kind, frame: _Frame, heuristic, question, answer, reason,
+              options=()) -> Exercise:
+    return Exercise(number, kind, frame.spec, heuristic, question, answer, reason,
+                    frame.triangle, frame.candidates, tuple(options), frame.polygon)
+
+
+def make_exercises(n: int = 6, seed: int = 0) -> list[Exercise]:
+    """``n`` exercises, kinds in turn (pick, claim, inner, pick …), polygons from the
+    generators in turn, all from ``seed``."""
+    if n < 1:
+        raise ValueError("need at least one exercise")
+    rng = random.Random(seed)
+    claims = sum(1 for k in range(n) if KINDS[k % len(KINDS)] == "claim")
+    wanted = [k % 2 == 0 for k in range(claims)]  # as many yes as no (±1) …
+    rng.shuffle(wanted)  # … in a seeded order
+    used: set[str] = set()
+    out = []
+    for k in range(n):
+        kind = KINDS[k % len(KINDS)]
+        if kind == "pick":
+            build = _pick(k + 1, rng.choice(PICKABLE))
+        elif kind == "claim":
+            build = _claim(k + 1, rng.sample(WRONG, len(WRONG)), wanted.pop())
+        else:
+            build = _inner(k + 1)
+        out.append(_search(rng, used, GENERATORS[k % len(GENERATORS)], build))
+    return out
+
+
+# --- answers.md -----------------------------------------------------------------------------------
+
+
+def answers_markdown(exercises: list[Exercise], seed: int) -> str:
+    """The answer sheet: per exercise its question, polygon, picture, answer and reason."""
+    lines = [
+        "# Exercises: inner diagonals",
+        "",
+        f"{len(exercises)} exercises from seed {seed}. B is the left-most vertex (lowest on ties),",
+        "A and C its neighbours, T = ABC; the candidates are the other vertices in T.",
+        "Each polygon is a sample any `trex` command reads, e.g. "
+        f"`trex check {exercises[0].spec}`.",
+    ]
+    for e in exercises:
+        lines += [
+            "",
+            f"## {e.title}",
+            "",
+            f"- polygon: `{e.spec}` (picture: `{e.still}`)",
+            f"- answer: **{e.answer}**",
+            f"- reason: {e.reason}",
+        ]
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,71 @@
+"""Still pictures of exercises: the polygon with labelled vertices, T = ABC marked, the
+candidates lit, the diagonals a question names dashed, the question as a title line.
+
+A still is a one-frame Scene (nothing is played), rendered with ``format=png``.
+Colours come from the theme: T and its corners in the *called* colour, candidates in the
+*argument* colour, the named diagonals *idle*.
+"""
+
+from __future__ import annotations
+
+from manim import DashedLine, Scene, Text, VGroup
+from manim import Polygon as MPolygon
+
+from geometry.exercises import Exercise
+from metaphors.drawing import Frame, polygon_mobject, vertex_markers
+from metaphors.theme import THEME, Theme
+
+TITLE_Y, LEGEND_Y = 3.45, -3.6
+BOX_CENTER, BOX_WIDTH, BOX_HEIGHT = (0.0, -0.1), 12.4, 5.6
+MAX_TEXT_WIDTH = 13.4
+T_OPACITY = 0.15  # as the scenes draw T
+
+
+def _text(text: str, size: int, colour: str, theme: Theme) -> Text:
+    mob = Text(text, font=theme.font, font_size=size, color=colour)
+    if mob.width > MAX_TEXT_WIDTH:
+        mob.scale_to_fit_width(MAX_TEXT_WIDTH)
+    return mob
+
+
+def still_mobjects(exercise: Exercise, theme: Theme = THEME) -> list:
+    """Everything the still shows, back to front."""
+    p = exercise.polygon
+    frame = Frame(p.points, center=BOX_CENTER, width=BOX_WIDTH, height=BOX_HEIGHT)
+    a, b, c = exercise.triangle
+    t = MPolygon(*frame.many([p.points[k] for k in (a, b, c)]), color=theme.called,
+                 stroke_width=theme.thin_stroke, fill_color=theme.called, fill_opacity=T_OPACITY)
+    options = [
+        DashedLine(frame.to_scene(p.points[i]), frame.to_scene(p.points[j]), color=theme.idle,
+                   stroke_width=theme.stroke, dash_length=theme.dash_length * 1.5)
+        for i, j in exercise.options
+    ]
+    markers = vertex_markers(p, frame, theme)
+    for k in (a, b, c):
+        markers[k].set_color(theme.called)
+    for k in exercise.candidates:
+        markers[k].set_color(theme.argument)
+        markers[k][0].scale(1.5)
+    title = _text(exercise.title, theme.caption_size + 4, theme.ink, theme)
+    title.move_to((0, TITLE_Y, 0))
+    names = ", ".join(p.labels[k] for k in exercise.candidates)
+    legend = VGroup(
+        _text(f"T = {''.join(p.labels[k] for k in (a, b, c))}", theme.label_size, theme.called,
+              theme),
+        _text(f"candidates in T: {names}", theme.label_size, theme.argument, theme),
+    ).arrange(buff=0.6)
+    legend.move_to((0, LEGEND_Y, 0))
+    return [polygon_mobject(p, frame, theme), t, *options, markers, title, legend]
+
+
+class ExerciseStill(Scene):
+    """One exercise as a single frame."""
+
+    def __init__(self, exercise: Exercise, theme: Theme = THEME, **kwargs) -> None:
+        self.exercise = exercise
+        self.theme = theme
+        super().__init__(**kwargs)
+
+    def construct(self) -> None:
+        self.camera.background_color = self.theme.background
+        self.add(*still_mobjects(self.exercise, self.theme))

@@ -1,0 +1,150 @@
+"""trex exercises: reproducible stills and answers, every answer re-checked here."""
+
+import re
+
+import pytest
+from click.testing import CliRunner
+from PIL import Image
+
+from geometry.check import is_inner_diagonal
+from geometry.diagonals import WRONG, find_diagonal
+from geometry.exercises import PICKABLE, answers_markdown, make_exercises
+from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
+from geometry.io import read_polygon
+from trex.cli import main
+
+ENTRY = re.compile(
+    r"^## (\d+)\. (.+)\n\n"
+    r"- polygon: `([^`]+)` \(picture: `([^`]+)`\)\n"
+    r"- answer: \*\*(.+)\*\*\n"
+    r"- reason: (.+)$",
+    re.MULTILINE,
+)
+MEDIUM = (1280, 720)
+
+
+def run(*args):
+    result = CliRunner().invoke(main, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+def entries(markdown: str) -> list[tuple]:
+    found = ENTRY.findall(markdown)
+    assert found, markdown
+    return found
+
+
+def _index(polygon, label: str) -> int:
+    return polygon.labels.index(label)
+
+
+def check_entry(number, question, spec, picture, answer, reason) -> str:
+    """Recompute one answer from scratch; returns the exercise's kind."""
+    p = read_polygon(spec)
+    t = triangle_at(p, leftmost_vertex(p))
+    assert len(candidates_in_triangle(p, t)) >= 2, spec  # an exercise worth asking
+    assert picture == f"exercise-{int(number):02d}.png"
+    if m := re.fullmatch(r"Which vertex does (\S+) pick\?", question):
+        heuristic = m[1]
+        assert heuristic in PICKABLE
+        claim = find_diagonal(p, heuristic)
+        assert claim.u.label == "B" and answer == claim.v.label
+        assert f" {answer} (" in reason  # the reason quotes the winner's number
+        return "pick"
+    if m := re.fullmatch(r"Is the claim of (\S+) an inner diagonal\?", question):
+        heuristic = m[1]
+        assert heuristic in WRONG
+        claim = find_diagonal(p, heuristic)
+        verdict = is_inner_diagonal(p, *claim.pair)
+        expected = "yes" if verdict else "no"
+        assert answer == f"{expected} ({heuristic} claims {claim.name})"
+        if not verdict:
+            assert reason == verdict.why
+        return "claim"
+    m = re.fullmatch(r"Which of these diagonals are inner: (.+)\?", question)
+    assert m, question
+    options = m[1].split(", ")
+    assert options[0] == "AC" and all(o.startswith("B") for o in options[1:])
+    inner = [o for o in options if is_inner_diagonal(p, _index(p, o[0]), _index(p, o[1]))]
+    assert answer == ", ".join(inner)
+    assert 0 < len(inner) < len(options)
+    for o in options:
+        verdict = is_inner_diagonal(p, _index(p, o[0]), _index(p, o[1]))
+        if not verdict:
+            assert verdict.why in reason
+    return "inner"
+
+
+@pytest.fixture(scope="module")
+def two_runs(tmp_path_factory):
+    dirs = []
+    for name in ("first", "second"):
+        out = tmp_path_factory.mktemp(name) / "exercises"  # created by the command
+        code, stdout, stderr = run("exercises", "--n", "3", "--seed", "7", "-o", str(out))
+        assert code == 0, stderr
+        assert stdout.splitlines() == [str(out / f) for f in (
+            "exercise-01.png", "exercise-02.png", "exercise-03.png", "answers.md")]
+        dirs.append(out)
+    return dirs
+
+
+def test_same_seed_gives_identical_files(two_runs):
+    first, second = two_runs
+    names = sorted(p.name for p in first.iterdir())
+    assert names == ["answers.md", "exercise-01.png", "exercise-02.png", "exercise-03.png"]
+    assert names == sorted(p.name for p in second.iterdir())  # no temporary files either
+    for name in names:
+        assert (first / name).read_bytes() == (second / name).read_bytes(), name
+
+
+def test_stills_are_real_pictures(two_runs):
+    for png in sorted(two_runs[0].glob("*.png")):
+        with Image.open(png) as image:
+            assert image.format == "PNG" and image.size == MEDIUM
+            colours = image.convert("RGB").getcolors(1 << 20)
+            assert colours is not None and len(colours) > 50, png  # drawn, not blank
+
+
+def test_cli_answers_check_out(two_runs):
+    found = entries((two_runs[0] / "answers.md").read_text(encoding="utf-8"))
+    assert [check_entry(*e) for e in found] == ["pick", "claim", "inner"]
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_answers_check_out_and_mix(seed):
+    exercises = make_exercises(9, seed)
+    markdown = answers_markdown(exercises, seed)
+    assert markdown == answers_markdown(make_exercises(9, seed), seed)
+    kinds = [check_entry(*e) for e in entries(markdown)]
+    assert kinds == ["pick", "claim", "inner"] * 3
+    claims = [e.answer.split()[0] for e in exercises if e.kind == "claim"]
+    assert {"yes", "no"} <= set(claims), claims
+    assert len({e.spec for e in exercises}) == len(exercises)
+
+
+def test_different_seeds_differ():
+    assert answers_markdown(make_exercises(3, 0), 0) != answers_markdown(make_exercises(3, 1), 1)
+
+
+def test_output_is_a_file(tmp_path):
+    target = tmp_path / "taken"
+    target.write_text("keep me")
+    code, stdout, stderr = run("exercises", "--n", "1", "-o", str(target))
+    assert code == 2 and stdout == ""
+    assert stderr == f"error: {target}: not a directory\n"
+    assert target.read_text() == "keep me"
+
+
+def test_output_below_a_file(tmp_path):
+    target = tmp_path / "taken"
+    target.write_text("keep me")
+    code, _, stderr = run("exercises", "-o", str(target / "sub"))
+    assert code == 2
+    assert len(stderr.splitlines()) == 1 and stderr.startswith(f"error: {target / 'sub'}: ")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["taken"]
+
+
+def test_bad_count_is_one_line(tmp_path):
+    code, _, stderr = run("exercises", "--n", "0", "-o", str(tmp_path))
+    assert code == 2 and len(stderr.splitlines()) == 1 and stderr.startswith("error: ")
+    assert list(tmp_path.iterdir()) == []

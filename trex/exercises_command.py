@@ -1,0 +1,74 @@
+"""``trex exercises``: exercise stills (PNG) and ``answers.md``, every answer checked.
+
+The exercises come from :mod:`geometry.exercises` (no manim); each still is rendered by
+manim at medium quality into a temporary directory beside it and moved into place, and
+``answers.md`` is written atomically last. The same seed gives the same files.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+from pathlib import Path
+
+import click
+
+from geometry.exercises import answers_markdown, make_exercises
+from geometry.io import write_atomic
+from trex.inputs import error_line, fail
+from trex.render_command import EXIT_FAILED, EXIT_SIGNAL, Interrupted, interrupts_raise, render_into
+
+STILL_QUALITY = "medium_quality"
+ANSWERS = "answers.md"
+
+
+def prepare_directory(arg: str) -> Path:
+    """The output directory, created if missing; ValueError with a one-line reason if not usable."""
+    directory = Path(arg)
+    if directory.exists() and not directory.is_dir():
+        raise ValueError("not a directory")
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"cannot create directory: {exc.strerror or exc}") from None
+    if not os.access(directory, os.W_OK | os.X_OK):
+        raise ValueError("directory is not writable")
+    return directory
+
+
+@click.command()
+@click.option("--n", "n", type=click.IntRange(1, 99), default=6, show_default=True,
+              help="How many exercises (kinds in turn: pick, claim, inner).")
+@click.option("--seed", type=int, default=0, show_default=True, help="Seed of the search.")
+@click.option("-o", "--output", "out_dir", required=True, metavar="DIR",
+              help="Directory for the PNG stills and answers.md (created if missing).")
+def exercises(n: int, seed: int, out_dir: str) -> None:
+    """Write N exercise stills and answers.md (each answer checked by the geometry code)."""
+    try:
+        directory = prepare_directory(out_dir)
+    except ValueError as exc:
+        fail(f"{out_dir}: {exc}")
+    items = make_exercises(n, seed)
+    from metaphors.stills import ExerciseStill
+
+    try:
+        for exercise in items:
+            target = directory / exercise.still
+            with interrupts_raise() as signals:
+                render_into(functools.partial(ExerciseStill, exercise), target, "png",
+                            STILL_QUALITY, progress=False, srt=False, signals=signals)
+            click.echo(str(target))
+        answers = directory / ANSWERS
+        write_atomic(answers, answers_markdown(items, seed))
+    except Interrupted as exc:
+        click.echo("error: exercises interrupted; the files listed above are complete", err=True)
+        raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
+    except OSError as exc:
+        fail(f"{out_dir}: cannot write: {exc.strerror or error_line(exc)}")
+    except Exception as exc:
+        click.echo(f"error: exercises: {type(exc).__name__}: {error_line(exc)}", err=True)
+        raise click.exceptions.Exit(EXIT_FAILED) from None
+    click.echo(str(answers))
+
+
+COMMANDS = (exercises,)
