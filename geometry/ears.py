@@ -18,7 +18,7 @@ Two versions:
   on from the clip, where the changed vertices are. O(n²), usually far less.
 
 Traced steps: ``is_ear(v) → bool`` and ``clip_ear(a, b, c) → [a, b, c]``, the
-slice with its three corners (ear ``b`` between ``a`` and ``c``).
+slice with its three corners as vertex references (ear ``b`` between ``a`` and ``c``).
 
 >>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
@@ -33,11 +33,14 @@ from __future__ import annotations
 import numpy as np
 
 import tracing
-from geometry.batch import in_triangle_many, orient_fast
+from geometry.batch import in_closed_triangle, in_triangle_many, orient_fast
 from geometry.polygon import Polygon, Vertex
 from geometry.ring import Ring
-from geometry.triangles import finished
-from geometry.triangulate import Triangle, Triangulation
+from geometry.triangles import Corners, finished, indices
+from geometry.triangulate import Triangulation
+
+# Below this many vertices a plain loop beats setting up numpy.
+_LOOP_UP_TO = 32
 
 # --- the naive search (Meisters) ----------------------------------------------------------------
 
@@ -67,17 +70,22 @@ def is_ear_naive(remaining: Remaining, k: int, v: Vertex) -> bool:
     a, b, c = (remaining.points[i] for i in remaining.corners(k))
     if orient_fast(a, b, c) <= 0:
         return False
+    order, m = remaining.order, len(remaining.order)
+    corners = {(k - 1) % m, k, (k + 1) % m}
+    if m <= _LOOP_UP_TO:
+        points = remaining.points
+        others = (points[i] for j, i in enumerate(order) if j not in corners)
+        return not any(in_closed_triangle(p, a, b, c) for p in others)
     inside = in_triangle_many(a, b, c, remaining.xs, remaining.ys)
-    m = len(inside)
-    inside[[(k - 1) % m, k, (k + 1) % m]] = False  # the corners themselves
+    inside[list(corners)] = False
     return not inside.any()
 
 
 @tracing.traced(name="clip_ear", exclude_args=("remaining", "k"))
-def clip_ear_naive(remaining: Remaining, k: int, a: Vertex, b: Vertex, c: Vertex) -> Triangle:
+def clip_ear_naive(remaining: Remaining, k: int, a: Vertex, b: Vertex, c: Vertex) -> Corners:
     """Slice off the triangle abc at ear b."""
     remaining.remove(k)
-    return (a.index, b.index, c.index)
+    return (a, b, c)
 
 
 @tracing.traced(name="ear-clipping-naive")
@@ -90,7 +98,7 @@ def ear_clipping_naive(polygon: Polygon) -> Triangulation:
             tests += 1
             if is_ear_naive(remaining, k, vertex[remaining.order[k]]):
                 a, b, c = remaining.corners(k)
-                triangles.append(clip_ear_naive(remaining, k, vertex[a], vertex[b], vertex[c]))
+                triangles.append(indices(clip_ear_naive(remaining, k, vertex[a], vertex[b], vertex[c])))
                 break
         else:
             raise AssertionError("no ear: the polygon is not simple")  # two-ears theorem
@@ -112,10 +120,10 @@ def is_ear(ring: Ring, v: Vertex) -> bool:
 
 
 @tracing.traced(exclude_args=("ring",))
-def clip_ear(ring: Ring, a: Vertex, b: Vertex, c: Vertex) -> Triangle:
+def clip_ear(ring: Ring, a: Vertex, b: Vertex, c: Vertex) -> Corners:
     """Slice off the triangle abc at ear b; a and c must be tested again."""
     ring.remove(b.index)
-    return (a.index, b.index, c.index)
+    return (a, b, c)
 
 
 @tracing.traced(name="ear-clipping")
@@ -128,7 +136,7 @@ def ear_clipping(polygon: Polygon) -> Triangulation:
             ring.ear[v] = is_ear(ring, vertex[v])
         if ring.ear[v]:
             a, c = ring.prev[v], ring.next[v]
-            triangles.append(clip_ear(ring, vertex[a], vertex[v], vertex[c]))
+            triangles.append(indices(clip_ear(ring, vertex[a], vertex[v], vertex[c])))
             v, passed = c, 0  # go on from the cut: c and a are the only vertices that changed
         else:
             v, passed = ring.next[v], passed + 1

@@ -45,7 +45,7 @@ import tracing
 from geometry.batch import in_closed_triangle, in_triangle_many, orient_fast
 from geometry.diagonals import Diagonal, gravity_at, sweep_at
 from geometry.polygon import Polygon, Vertex
-from geometry.triangles import finished
+from geometry.triangles import Corners, finished, indices
 from geometry.triangulate import Triangle, Triangulation
 
 # Below this size a plain loop over G beats setting up numpy.
@@ -150,17 +150,17 @@ def good_subpolygon(g: GoodSubpolygon, diagonal: Diagonal) -> GoodSubpolygon:
 
 
 @tracing.traced
-def clip_ear(g: GoodSubpolygon, v: Vertex) -> Triangle:
+def clip_ear(g: GoodSubpolygon, v: Vertex) -> Corners:
     """Slice off the ear v (the middle of G); every good sub-polygon around it shrinks."""
     m, remaining = g.middle(), g.remaining
-    a, b, c = (int(k) for k in remaining.order[m - 1 : m + 2])
+    corners = (g.vertex_at(m - 1), v, g.vertex_at(m + 1))
     remaining.order = np.delete(remaining.order, m)
     around: GoodSubpolygon | None = g
     while around is not None:
         around.size -= 1
         tracing.change(around)
         around = around.parent
-    return (a, b, c)
+    return corners
 
 
 @tracing.traced(name="find_an_ear")
@@ -197,7 +197,7 @@ def _clip_ears_in(g: GoodSubpolygon, triangles: list[Triangle]) -> None:
         while g.size > floor:
             v = g.vertex_at(g.middle())
             if is_ear(g, v):
-                triangles.append(clip_ear(g, v))
+                triangles.append(indices(clip_ear(g, v)))
             else:
                 diagonal = diagonal_at(g, v)
                 with tracing.alive(diagonal):

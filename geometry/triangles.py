@@ -13,7 +13,10 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
+from geometry.polygon import Vertex
 from geometry.triangulate import Triangle, Triangulation
+
+Corners = tuple[Vertex, Vertex, Vertex]
 
 
 def canonical(tri: Triangle) -> Triangle:
@@ -28,6 +31,12 @@ def canonical(tri: Triangle) -> Triangle:
     if b < c:
         return (b, c, a)
     return (c, a, b)
+
+
+def indices(corners: Corners) -> Triangle:
+    """The index triple of a triangle given by its corner vertices."""
+    a, b, c = corners
+    return (a.index, b.index, c.index)
 
 
 def finished(triangles: Iterable[Triangle], steps: int = 0, **extra) -> Triangulation:

@@ -1,0 +1,150 @@
+"""Monotone partition + stack triangulation: vertex kinds, known pieces, monotone pieces, valid."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given, settings
+
+import tracing
+from geometry.check import is_inner_diagonal
+from geometry.monotone import Sweep, classify_vertex, make_monotone, monotone
+from geometry.monotone_pieces import MonotonePiece, monotone_pieces, triangulate_monotone_piece
+from geometry.polygon import Polygon
+from geometry.samples import make_sample
+from geometry.triangulate import triangulate
+from tests.strategies import generated_polygons
+from tests.test_ears import CORPUS, NAMED, assert_valid, collinear_polygons
+
+# A rectangle with a notch up from the bottom (split vertex D) and one down from the top
+# (merge vertex I). Stored counter-clockwise from A = (0, 6), so B = (0, 0) is left-most.
+NOTCHED = Polygon.from_points(
+    [(0, 0), (2, 0), (3, 2), (4, 0), (6, 0), (6, 6), (4, 6), (3, 4), (2, 6), (0, 6)]
+)
+
+
+def height_rank(p: Polygon) -> dict[int, int]:
+    """0 for the highest vertex: larger y first, then smaller x (the sweep's order)."""
+    order = sorted(range(p.n), key=lambda i: (-p.points[i][1], p.points[i][0]))
+    return {v: r for r, v in enumerate(order)}
+
+
+def is_y_monotone(p: Polygon, ids: tuple[int, ...]) -> bool:
+    """Going round, heights change direction exactly twice (once at the top, once at the bottom)."""
+    rank = height_rank(p)
+    k = len(ids)
+    down = [rank[ids[(i + 1) % k]] > rank[ids[i]] for i in range(k)]
+    return sum(down[i] != down[i - 1] for i in range(k)) == 2
+
+
+def labels(p: Polygon, ids) -> str:
+    return "".join(p.labels[i] for i in ids)
+
+
+def cyclic_sets(p: Polygon, pieces: list[MonotonePiece]) -> set[str]:
+    return {"".join(sorted(labels(p, piece.ids))) for piece in pieces}
+
+
+# --- known answers -------------------------------------------------------------------------------
+
+
+def test_vertex_kinds_of_the_notched_rectangle():
+    p = NOTCHED
+    assert labels(p, range(p.n)) == "ABCDEFGHIJ"
+    kinds = {p.labels[i]: classify_vertex(Sweep(p), p.vertex(i)) for i in range(p.n)}
+    assert kinds == {
+        "A": "start", "B": "regular", "C": "end", "D": "split", "E": "regular",
+        "F": "end", "G": "regular", "H": "start", "I": "merge", "J": "regular",
+    }
+
+
+def test_equal_heights_are_ordered_left_first():
+    # The bottom side B–C is level: B (left) counts as higher, so C is an end vertex and
+    # B a regular one; the top side J–A likewise makes A a start vertex.
+    p = NOTCHED
+    sweep = Sweep(p)
+    assert labels(p, sweep.order) == "AJHGIDBCEF"
+
+
+def test_split_and_merge_are_joined_into_two_known_pieces():
+    p = NOTCHED
+    with tracing.record() as log:
+        diagonals = make_monotone(p)
+    assert [labels(p, d) for d in diagonals] == ["DI"]
+    (call,) = log.find(kind="call", name="add_diagonal")
+    assert (call.args["u"]["ref"], call.args["w"]["ref"]) == ("D", "I")
+    pieces = monotone_pieces(p, diagonals)
+    assert cyclic_sets(p, pieces) == {"ABCDIJ", "DEFGHI"}
+    assert all(is_y_monotone(p, piece.ids) for piece in pieces)
+    assert_valid(p, monotone(p))
+
+
+def test_lecture_pieces_are_monotone_and_cut_by_inner_diagonals():
+    p = Polygon.from_points(make_sample("lecture"))
+    diagonals = make_monotone(p)
+    assert diagonals
+    for u, w in diagonals:
+        assert is_inner_diagonal(p, u, w), labels(p, (u, w))
+    pieces = monotone_pieces(p, diagonals)
+    assert len(pieces) == len(diagonals) + 1
+    assert sum(len(piece.ids) for piece in pieces) == p.n + 2 * len(diagonals)
+    assert all(is_y_monotone(p, piece.ids) for piece in pieces)
+
+
+def test_stack_triangulation_of_a_zigzag():
+    # Already monotone: left chain A…E goes down in steps, the right chain is one edge.
+    p = Polygon.from_points([(0, 10), (-1, 8), (0, 6), (-1, 4), (0, 2), (-1, 0), (3, 5)])
+    assert make_monotone(p) == []
+    (piece,) = monotone_pieces(p, [])
+    triangles = triangulate_monotone_piece(p, piece)
+    assert len(triangles) == p.n - 2
+    assert_valid(p, monotone(p))
+
+
+def test_collinear_chain_gives_no_flat_triangle():
+    # A straight left side of five vertices and a straight bottom: the stack must wait at
+    # straight angles instead of cutting off a zero-area triangle.
+    p = Polygon.from_points([(0, 0), (4, 0), (8, 0), (8, 1), (0, 4), (0, 3), (0, 2), (0, 1)])
+    assert_valid(p, monotone(p))
+
+
+def test_traced_steps():
+    p = NOTCHED
+    with tracing.record() as log:
+        result = triangulate(p, "monotone")
+    assert_valid(p, result)
+    assert len(log.find(kind="call", name="classify_vertex")) == p.n
+    kinds = [e.result for e in log.find(kind="return", name="classify_vertex")]
+    assert kinds.count("split") == kinds.count("merge") == 1
+    assert len(log.find(kind="call", name="triangulate_monotone_piece")) == 2
+    sweep_moves = log.find(kind="change", target="sweep")
+    assert len(sweep_moves) == p.n
+
+
+# --- every input --------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("sample", NAMED)
+def test_named_samples(sample):
+    p = Polygon.from_points(make_sample(sample))
+    assert_valid(p, monotone(p))
+
+
+@pytest.mark.parametrize("polygon", CORPUS)
+def test_earcut_corpus(polygon):
+    assert_valid(polygon, triangulate(polygon, "monotone"))
+
+
+@settings(max_examples=2000)
+@given(generated_polygons(max_n=30))
+def test_generated_polygons(p):
+    diagonals = make_monotone(p)
+    pieces = monotone_pieces(p, diagonals)
+    assert len(pieces) == len(diagonals) + 1
+    assert all(is_y_monotone(p, piece.ids) for piece in pieces)
+    assert_valid(p, monotone(p))
+
+
+@settings(max_examples=300)
+@given(collinear_polygons())
+def test_collinear_runs(p):
+    assert_valid(p, monotone(p))
