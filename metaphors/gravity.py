@@ -180,7 +180,14 @@ def snag(board, beat) -> None:
     straight."""
     theme = board.theme
     band = board.objects.get("band")
-    corners = [board.at(p) for p in beat.data["states"][-1]["points"]]
+    states = beat.data["states"]
+    if not states:  # the ball landed on a vertex: the band never moved off the drop line
+        if band is None:
+            board.play(beat, run_time=0.8)
+        else:
+            board.play(beat, Indicate(band, color=theme.result, scale_factor=1.0), run_time=0.8)
+        return
+    corners = [board.at(p) for p in states[-1]["points"]]
     hit = board.objects.get("hit")
     swept = None
     if hit is not None and len(corners) >= 2:
