@@ -73,7 +73,7 @@ class ChunkedList:
     [1, 5, 6, 8, 9]
     """
 
-    def __init__(self, load: int = _LOAD) -> None:
+    def __init__(self, load: int) -> None:
         self.load = load
         self.chunks: list[list] = []
 
@@ -278,7 +278,7 @@ def first_contact(points: Sequence[Point]) -> tuple[int, int] | None:
     if n < 4:  # every pair of edges of a triangle is adjacent
         return None
     order = sorted(range(n), key=points.__getitem__)
-    status = ChunkedList()
+    status = ChunkedList(_LOAD)
     for k, v in enumerate(order):
         contact = _repeated_vertex(points, order, k) or _visit(points, segments, status, v)
         if contact:

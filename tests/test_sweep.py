@@ -18,6 +18,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import geometry.sweep as sweep
 import geometry.validate as validate
 from geometry.errors import GeometryError, SelfIntersectionError
 from geometry.io import read_rings
@@ -195,6 +196,14 @@ def test_grid_rings_agree(ring):
 @given(moved_vertex_rings())
 def test_moved_vertex_rings_agree(ring):
     assert_agrees(ring)
+
+
+@settings(max_examples=300)
+@given(st.one_of(grid_rings(), moved_vertex_rings()), st.integers(1, 3))
+def test_tiny_chunks_agree(ring, load):
+    """Chunks of 2 to 6 edges: neighbours and removals across chunk boundaries."""
+    with patch.object(sweep, "_LOAD", load):
+        assert_agrees(ring)
 
 
 @settings(max_examples=200)
