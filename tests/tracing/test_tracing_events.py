@@ -41,7 +41,7 @@ def test_round_trip_is_exact():
 
 def test_json_document_layout():
     document = json.loads(sample_log().to_json())
-    assert list(document) == ["events", "meta", "schema"]
+    assert list(document) == ["schema", "meta", "events"]
     assert document["schema"] == "trex-log/1"
     assert document["events"][4] == {
         "seq": 4, "kind": "exit", "name": "circle", "target": "W(B)", "line": 11,
@@ -50,16 +50,34 @@ def test_json_document_layout():
     assert document["events"][5]["result"] == {"ref": "E"}
 
 
-def test_json_keys_are_sorted_and_compact():
+def test_json_keeps_written_order_and_is_compact():
     text = sample_log().to_json()
-    assert text.startswith('{"events":[{"args":{"b":{"ref":"B"},"d":[0.1,1e-300]},"call":0,')
+    assert text.startswith('{"schema":"trex-log/1","meta":')
+    first = json.loads(text)["events"][0]
+    assert list(first) == [k for k in ("seq", "kind", "name", "target", "args", "result",
+                                       "state", "line", "depth", "call") if k in first]
     assert ", " not in text
+
+
+def test_arguments_keep_signature_order_through_json():
+    """A replayed log must show the same call line: (zeta, alpha), not sorted (alpha, zeta)."""
+    import tracing
+
+    @tracing.traced
+    def f(zeta, alpha):
+        return zeta
+
+    with tracing.record() as log:
+        f(1, 2)
+    again = Log.from_json(log.to_json())
+    assert list(again.events[0].args) == ["zeta", "alpha"]
+    assert again.to_json() == log.to_json()
 
 
 def test_indented_json_reads_back():
     log = sample_log()
     text = log.to_json(indent=2)
-    assert text.splitlines()[1] == '  "events": ['
+    assert text.splitlines()[1] == '  "schema": "trex-log/1",'
     assert Log.from_json(text) == log
 
 
