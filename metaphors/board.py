@@ -13,7 +13,7 @@ from manim import FadeIn, FadeOut, Scene, Text, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
-from metaphors.layout import METAPHOR, SUBTITLE_Y, TITLE_Y
+from metaphors.layout import METAPHOR, SUBTITLE_Y, TITLE_Y, Box
 from metaphors.panel import Panel, tag
 from metaphors.theme import THEME, Theme
 
@@ -22,11 +22,11 @@ class Board:
     """Everything on screen, and the play loop's helpers."""
 
     def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
-                 theme: Theme = THEME):
+                 theme: Theme = THEME, box: Box = METAPHOR):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
-        self.frame = Frame(self.polygon.points, METAPHOR.center, METAPHOR.width, METAPHOR.height)
+        self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
         self.shape = tag(polygon_mobject(self.polygon, self.frame, theme), "idle", "polygon")
         self.markers = {
             label: tag(m, "idle", f"vertex:{label}")
@@ -63,22 +63,34 @@ class Board:
 
     def play(self, beat, *anims, run_time: float = 1.0) -> None:
         """Play a beat: its own animations, the panel's, the roles on the left, the subtitle."""
-        everything = list(anims) + self.panel.follow(beat) + self._recolour(beat.roles)
+        # A marker the beat already animates (a pulse) is recoloured after the play: two
+        # animations of one mobject in one play would cancel the first.
+        busy = {id(getattr(a, "mobject", None)) for a in anims}
+        recolour, after = self._recolour(beat.roles, busy)
+        everything = list(anims) + self.panel.follow(beat) + recolour
         everything += self._subtitle(beat.caption)
         if not everything:
             return
         self.scene.play(*everything, run_time=max(0.1, run_time * beat.pace),
                         subcaption=beat.caption if beat.caption != self.caption else None)
+        for marker, colour in after:
+            marker.set_color(colour)
         self.caption = beat.caption
 
-    def _recolour(self, roles: dict[str, str]) -> list:
-        anims = []
+    def _recolour(self, roles: dict[str, str], busy: set[int]) -> tuple[list, list]:
+        """Animations for markers whose role changed, and (marker, colour) to set after."""
+        anims, after = [], []
         for label, marker in self.markers.items():
             role = roles.get(label, "idle")
             if self.roles.get(label, "idle") != role:
-                anims.append(tag(marker, role).animate.set_color(self.theme.role_colour(role)))
+                colour = self.theme.role_colour(role)
+                tag(marker, role)
+                if id(marker) in busy:
+                    after.append((marker, colour))
+                else:
+                    anims.append(marker.animate.set_color(colour))
         self.roles = {k: v for k, v in roles.items() if k in self.markers}
-        return anims
+        return anims, after
 
     def _subtitle(self, caption: str) -> list:
         if caption == self.caption:

@@ -13,6 +13,7 @@ import inspect
 import textwrap
 from functools import cache
 
+from geometry import ears
 from geometry import gravity as gravity_module
 from geometry import triangulate as triangulate_module
 from geometry.diagonals import HEURISTICS
@@ -22,6 +23,8 @@ def _functions() -> dict:
     found = {name: fn.__wrapped__ for name, fn in HEURISTICS.items()}
     found["gravity_at"] = gravity_module.gravity_at.__wrapped__
     found["divide_and_conquer"] = triangulate_module.divide_and_conquer.__wrapped__
+    found["ear-clipping-naive"] = ears.ear_clipping_naive.__wrapped__
+    found["ear-clipping"] = ears.ear_clipping.__wrapped__
     return found
 
 

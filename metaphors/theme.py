@@ -39,6 +39,10 @@ class Theme:
     hand: str = "#c792ea"  # the clock hand (drawn solid inside the polygon, dashed outside)
     sweep: str = "#c792ea"  # the sweep line (likewise)
     dial: str = "#8a93a3"  # the clock face and its hour marks before the hand passes them
+    fruit: str = "#f4a259"  # the fruit's flesh (ear clipping)
+    rind: str = "#7a9e3d"  # its rind
+    plate: str = "#d9dee7"  # where the slices go
+    knife: str = "#f5f7fa"
     dash_length: float = 0.09
     font: str = "DejaVu Sans"
     mono_font: str = "DejaVu Sans Mono"

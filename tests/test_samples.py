@@ -25,7 +25,10 @@ from geometry.samples import (
     sample_names,
 )
 
-FIXED = ["counterexample", "counterexample-twin", "square", "triangle", "lecture", "two-ears"]
+FIXED = [
+    "counterexample", "counterexample-twin", "square", "triangle", "lecture", "two-ears",
+    "gravity-snag",
+]
 FAMILIES = ["star", "spiral", "comb"]
 ROOT = Path(__file__).resolve().parent.parent
 GENERATORS = ["random-star", "random-2opt", "random-orthogonal", "random-spiral", "random-comb"]

@@ -1,0 +1,97 @@
+"""Fruit (ear clipping): the polygon is a fruit with a rind; a knife cuts along an ear's
+diagonal, the slice moves to a plate, and a counter shows ``k / n−2 slices``.
+
+Every slice, and what is left of the fruit after it, comes from the log (the beats' data).
+"""
+
+from __future__ import annotations
+
+from manim import (
+    Create,
+    Ellipse,
+    FadeIn,
+    FadeOut,
+    Indicate,
+    Line,
+    Text,
+    Transform,
+)
+from manim import (
+    Polygon as MPolygon,
+)
+
+from metaphors.panel import tag
+
+PLATE_Y = -2.55
+PLATE_WIDTH = 5.6
+
+
+def _fruit(board, points):
+    theme = board.theme
+    return tag(MPolygon(*[board.at(p) for p in points], color=theme.rind,
+                        stroke_width=theme.stroke * 2.2, fill_color=theme.fruit,
+                        fill_opacity=0.75), "idle", "fruit")
+
+
+def _setup(board, beat) -> None:
+    """The first time: the polygon turns into a fruit, a plate and a counter appear."""
+    if "fruit" in board.objects:
+        return
+    theme = board.theme
+    x = board.frame.center[0]
+    plate = tag(Ellipse(width=PLATE_WIDTH, height=0.9, color=theme.plate, stroke_width=2,
+                        fill_color=theme.plate, fill_opacity=0.12), None, "plate")
+    plate.move_to((x, PLATE_Y, 0))
+    fruit = _fruit(board, board.polygon.points)
+    board.keep("plate", plate)
+    board.keep("fruit", fruit)
+    board.keep("counter", _counter(board, 0, beat.data.get("total", board.polygon.n - 2)))
+    board.scene.play(Transform(board.shape, fruit), FadeIn(plate),
+                     FadeIn(board.objects["counter"]), run_time=0.8 * beat.pace)
+    board.scene.remove(fruit)
+    board.objects["fruit"] = board.shape
+
+
+def _counter(board, k: int, total: int):
+    theme = board.theme
+    text = tag(Text(f"{k} / {total} slices", font=theme.font, font_size=theme.label_size,
+                    color=theme.ink), None, "counter")
+    return text.move_to((board.frame.center[0], PLATE_Y + 0.68, 0))
+
+
+def ear_test(board, beat) -> None:
+    _setup(board, beat)
+    colour = board.theme.result if beat.data["ear"] else board.theme.rejected
+    board.play(beat, Indicate(board.markers[beat.data["vertex"]], color=colour), run_time=0.6)
+
+
+def clip(board, beat) -> None:
+    """The knife cuts along the ear's diagonal; the slice goes to its place on the plate."""
+    _setup(board, beat)
+    theme, data = board.theme, beat.data
+    a, b, c = data["points"]
+    knife = tag(Line(board.at(a), board.at(c), color=theme.knife, stroke_width=theme.stroke * 2),
+                "called", "knife")
+    board.play(beat, Create(knife), run_time=0.6)
+    piece = tag(MPolygon(*[board.at(p) for p in (a, b, c)], color=theme.rind,
+                         stroke_width=theme.thin_stroke, fill_color=theme.fruit,
+                         fill_opacity=0.9), "result", f"slice:{''.join(data['corners'])}")
+    target = piece.copy()
+    slot = PLATE_WIDTH / max(data["total"], 1)
+    target.scale_to_fit_width(min(slot * 0.85, target.width)).scale_to_fit_height(
+        min(0.6, target.height))
+    left = board.frame.center[0] - PLATE_WIDTH / 2
+    target.move_to((left + slot * (data["k"] - 0.5), PLATE_Y, 0))
+    counter = _counter(board, data["k"], data["total"])
+    anims = [Transform(piece, target), FadeOut(knife),
+             Transform(board.objects["counter"], counter)]
+    if data["rest"]:
+        anims.append(Transform(board.shape, _fruit(board, data["rest"])))
+    else:
+        anims.append(FadeOut(board.shape))
+    board.scene.add(piece)
+    board.play(beat, *anims, run_time=1.0)
+    board.keep(f"slice:{data['k']}", piece)
+
+
+last_slice = clip
