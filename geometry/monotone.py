@@ -93,23 +93,25 @@ def _finish_edge(sweep: Sweep, v: Vertex, e: int) -> None:
         add_diagonal(sweep, v, sweep.polygon.vertex(helper))
 
 
-def _end_edge_above(sweep: Sweep, v: Vertex) -> None:
-    """The edge from v's predecessor ends at v."""
+def _end_edge_above(sweep: Sweep, v: Vertex) -> int:
+    """The edge from v's predecessor ends at v; where v is in the status."""
     e = (v.index - 1) % sweep.polygon.n
+    at = sweep.status.find(v.index, own=e)
     _finish_edge(sweep, v, e)
-    sweep.status.remove(e)
+    sweep.status.remove(at, e)
+    return at
 
 
-def _help_edge_left(sweep: Sweep, v: Vertex) -> None:
-    """v becomes the helper of the edge directly left of it."""
-    left = sweep.status.left_of(v.index)
+def _help_edge_left(sweep: Sweep, v: Vertex, at: int) -> None:
+    """v, found at ``at``, becomes the helper of the edge directly left of it."""
+    left = sweep.status.left(at)
     _finish_edge(sweep, v, left)
     sweep.status.helper[left] = v.index
 
 
 @tracing.traced(exclude_args=("sweep",))
 def handle_start(sweep: Sweep, v: Vertex) -> None:
-    sweep.status.insert(v.index, helper=v.index)
+    sweep.status.insert(sweep.status.find(v.index), v.index, helper=v.index)
 
 
 @tracing.traced(exclude_args=("sweep",))
@@ -119,26 +121,28 @@ def handle_end(sweep: Sweep, v: Vertex) -> None:
 
 @tracing.traced(exclude_args=("sweep",))
 def handle_split(sweep: Sweep, v: Vertex) -> None:
-    left = sweep.status.left_of(v.index)
+    at = sweep.status.find(v.index)
+    left = sweep.status.left(at)
     add_diagonal(sweep, v, sweep.polygon.vertex(sweep.status.helper[left]))
     sweep.status.helper[left] = v.index
-    sweep.status.insert(v.index, helper=v.index)
+    sweep.status.insert(at, v.index, helper=v.index)
 
 
 @tracing.traced(exclude_args=("sweep",))
 def handle_merge(sweep: Sweep, v: Vertex) -> None:
-    _end_edge_above(sweep, v)
-    _help_edge_left(sweep, v)
+    _help_edge_left(sweep, v, _end_edge_above(sweep, v))
 
 
 @tracing.traced(exclude_args=("sweep",))
 def handle_regular(sweep: Sweep, v: Vertex) -> None:
     n, i = sweep.polygon.n, v.index
-    if sweep.rank[(i - 1) % n] < sweep.rank[i]:  # coming down a left side: inside on the right
-        _end_edge_above(sweep, v)
-        sweep.status.insert(i, helper=i)
+    e = (i - 1) % n
+    if sweep.rank[e] < sweep.rank[i]:  # coming down a left side: inside on the right
+        at = sweep.status.find(i, own=e)
+        _finish_edge(sweep, v, e)
+        sweep.status.replace(at, e, i, helper=i)
     else:
-        _help_edge_left(sweep, v)
+        _help_edge_left(sweep, v, sweep.status.find(i))
 
 
 HANDLERS = {

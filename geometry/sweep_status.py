@@ -9,12 +9,15 @@ two vertices are level. That turn keeps every orientation, so the order needs
 no coordinates at the sweep line: edge k lies left of a point p exactly when
 ``orient(v_k, v_k+1, p) > 0``. A sorted list searched by bisection with that
 exact test is the balanced tree of the textbook (insertions and deletions
-shift the list in C, which is cheap at these sizes).
+shift the list in C, which is cheap at these sizes). Each vertex needs one
+search: :meth:`find` gives its place, and the edge ending there, the edge
+starting there and the edge directly left of it are all next to that place.
 
 >>> s = SweepStatus([(0, 0), (4, 0), (4, 4), (0, 4)])
->>> s.insert(3, helper=3)  # edge (0, 4)–(0, 0), the left side
->>> s.left_of(2), s.helper[3]  # the edge left of vertex (4, 4)
-(3, 3)
+>>> s.insert(s.find(3), 3, helper=3)  # edge (0, 4)–(0, 0), the left side
+>>> at = s.find(2)  # vertex (4, 4): one edge lies left of it
+>>> at, s.left(at), s.helper[3]
+(1, 3, 3)
 """
 
 from __future__ import annotations
@@ -40,8 +43,8 @@ class SweepStatus:
         self.edges: list[int] = []
         self.helper: dict[int, int] = {}
 
-    def _count_left(self, v: int, own: int = -1) -> int:
-        """How many edges lie strictly left of vertex v; v's own edge ``own`` does not."""
+    def find(self, v: int, own: int = -1) -> int:
+        """Where vertex v is: how many edges lie strictly left of it (its own edge ``own`` not)."""
         xs, ys, edges, n = self.xs, self.ys, self.edges, self.n
         px, py = xs[v], ys[v]
         lo, hi = 0, len(edges)
@@ -67,22 +70,25 @@ class SweepStatus:
         points = self.points
         return orient_fast(points[k], points[after], points[v]) > 0
 
-    def insert(self, k: int, helper: int) -> None:
-        """Edge k starts at the vertex the line has reached (vertex k)."""
-        self.edges.insert(self._count_left(k), k)
+    def insert(self, at: int, k: int, helper: int) -> None:
+        """Edge k starts at the vertex the line has reached, found at ``at``."""
+        self.edges.insert(at, k)
         self.helper[k] = helper
 
-    def remove(self, k: int) -> None:
-        """Edge k ends at the vertex the line has reached (vertex k+1)."""
-        at = self._count_left((k + 1) % self.n, own=k)
+    def remove(self, at: int, k: int) -> None:
+        """Edge k, found at ``at``, ends at the vertex the line has reached."""
         if self.edges[at] != k:
             raise AssertionError("sweep status out of order")  # a simple polygon never gets here
         del self.edges[at]
         del self.helper[k]
 
-    def left_of(self, v: int) -> int:
-        """The edge directly left of vertex v."""
-        at = self._count_left(v)
+    def replace(self, at: int, k: int, new: int, helper: int) -> None:
+        """Edge k ends where edge ``new`` starts: the new one takes its place in the order."""
+        self.remove(at, k)
+        self.insert(at, new, helper)
+
+    def left(self, at: int) -> int:
+        """The edge directly left of a vertex found at ``at``."""
         if at == 0:
             raise AssertionError("no edge left of a vertex inside the sweep")
         return self.edges[at - 1]
