@@ -342,7 +342,9 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
         cls = load_scene_class(path, class_name)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
-    if polygon is not None:
+    if polygon is not None and getattr(cls, "runs", None):
+        click.echo(f"warning: {scene}: plays its own polygons; --polygon is ignored", err=True)
+    elif polygon is not None:
         try:
             dry_run(cls, polygon)
         except (GeometryError, ValueError, KeyError) as exc:
@@ -354,6 +356,7 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
     except (KeyboardInterrupt, click.exceptions.Exit):
         raise
     except Exception as exc:
+        signals.check()  # an interrupt that surfaced as another error is still an interrupt
         click.echo(f"error: {scene}: render failed: {type(exc).__name__}: {error_line(exc)}",
                    err=True)
         raise click.exceptions.Exit(EXIT_FAILED) from None
