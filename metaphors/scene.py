@@ -7,13 +7,20 @@ re-decides what the algorithm decided.
 
 from __future__ import annotations
 
-from manim import Scene
+import os
+from dataclasses import replace
+from types import MappingProxyType
+
+from manim import DOWN, FadeIn, FadeOut, Scene, Text, VGroup
 
 from metaphors.actions import perform
 from metaphors.board import Board
-from metaphors.runs import scene_log
-from metaphors.storyboard import Pacing, storyboard
+from metaphors.layout import METAPHOR
+from metaphors.panel import tag
+from metaphors.runs import run_logged, scene_log
+from metaphors.storyboard import Beat, Pacing, storyboard
 from metaphors.theme import THEME
+from tracing import Log
 
 
 class TraceScene(Scene):
@@ -25,17 +32,79 @@ class TraceScene(Scene):
     title = "Scaling: the nearest candidate"
     theme = THEME
     pacing = Pacing()
+    metaphor_box = METAPHOR  # where the metaphor's polygon goes (left half by default)
 
     def log(self):
         return scene_log(self.algorithm, self.polygon, self.heuristic)
 
     def construct(self) -> None:
         self.camera.background_color = self.theme.background
-        log = self.log()
-        beats = storyboard(log, self.pacing)
+        self.play_log(self.log(), self.title)
+        self.wait(1.0)
+
+    def beats(self, log) -> list[Beat]:
+        return storyboard(log, self.pacing)
+
+    def play_log(self, log, title: str) -> Board:
+        """Turn one log into beats and play them on a fresh board."""
+        beats = self.beats(log)
         first = beats[0]
         board = Board(self, first.data["points"], first.data["labels"], log.meta.get("shown"),
-                      self.title, self.theme)
+                      title, self.theme, self.metaphor_box)
         for beat in beats:
             perform(board, beat)
-        self.wait(1.0)
+        return board
+
+
+class SequenceScene(TraceScene):
+    """Plays several runs one after another: a short title card, the run, then a clean board.
+
+    ``runs`` lists (algorithm, polygon, title). The runs name their own polygons, so
+    ``TREX_POLYGON`` is not read; ``TREX_LOG`` may list one saved log per run, joined with
+    ``os.pathsep`` (``a.json:b.json:…``), to replay them instead of running live.
+    """
+
+    runs: tuple[tuple[str, str, str], ...] = ()
+    #: × run time of each beat action: the set-up every run repeats goes quickly, the verdict
+    #: stays long enough to read; ``pace`` for the rest
+    paces = MappingProxyType({"polygon": 0.15, "pick": 0.15, "triangle": 0.2, "candidates": 0.2,
+                              "claim": 0.3, "verdict": 0.55})
+    pace = 0.32
+    card_time = 0.8
+
+    def beats(self, log) -> list[Beat]:
+        return [replace(b, pace=self.paces.get(b.action, self.pace)) for b in storyboard(log)]
+
+    def logs(self) -> list[Log]:
+        saved = os.environ.get("TREX_LOG")
+        if not saved:
+            return [run_logged(algorithm, polygon) for algorithm, polygon, _ in self.runs]
+        paths = saved.split(os.pathsep)
+        if len(paths) != len(self.runs):
+            raise ValueError(f"TREX_LOG lists {len(paths)} logs; this scene plays "
+                             f"{len(self.runs)} runs (join their paths with {os.pathsep!r})")
+        return [Log.load(path) for path in paths]
+
+    def construct(self) -> None:
+        self.camera.background_color = self.theme.background
+        for k, (log, (_, _, title)) in enumerate(zip(self.logs(), self.runs, strict=True)):
+            if self.mobjects:
+                self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.3)
+                self.clear()
+            self.card(k, title)
+            self.play_log(log, title)
+            self.wait(0.4)
+        self.wait(0.5)
+
+    def card(self, k: int, title: str) -> None:
+        """A title card between runs: the run's number and its title."""
+        theme = self.theme
+        number = Text(f"{k + 1} / {len(self.runs)}", font=theme.font, font_size=theme.label_size,
+                      color=theme.idle)
+        name = Text(title, font=theme.font, font_size=theme.title_size, color=theme.ink)
+        if name.width > 13:
+            name.scale_to_fit_width(13)
+        card = tag(VGroup(number, name).arrange(DOWN, buff=0.3), None, "card")
+        self.play(FadeIn(card), run_time=0.25)
+        self.wait(self.card_time - 0.5)
+        self.play(FadeOut(card), run_time=0.25)

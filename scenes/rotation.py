@@ -16,4 +16,4 @@ class Rotation(TraceScene):
 class RotationCcw(TraceScene):
     algorithm = "rotation-ccw"
     polygon = "counterexample-twin"
-    title = "Rotation the other way: the clock set to C turns back towards A"
+    title = "Rotation the other way: the clock at B set to C"
