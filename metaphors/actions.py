@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from metaphors import basics, clock, gravity, sweep, water
+from metaphors import basics, clock, generic, gravity, sweep, water
 
 PERFORMERS = {
     "polygon": basics.polygon,
@@ -22,6 +22,8 @@ PERFORMERS = {
     "split": gravity.split,
     "clock": clock.clock,
     "sweep": sweep.sweep,
+    "call": generic.call,  # a heuristic of one's own: its traced calls and shapes
+    "shape": generic.shape,
 }
 
 

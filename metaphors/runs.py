@@ -16,13 +16,17 @@ import tracing
 from geometry.diagonals import HEURISTICS, find_diagonal
 from geometry.io import read_polygon
 from geometry.triangulate import triangulate
+from geometry.user_heuristics import is_user_spec, load_user_heuristic
 
 #: Which traced function's source the panel shows for each algorithm.
 SHOWN = {"gravity": "gravity_at", "divide-and-conquer": "divide_and_conquer"}
 
 
 def run_logged(algorithm: str, polygon: str, heuristic: str | None = None) -> tracing.Log:
-    """Run a heuristic (by name) or a triangulation algorithm on a polygon file or sample."""
+    """Run a heuristic (by name, or ``file.py:function`` of one's own) or a triangulation
+    algorithm on a polygon file or sample."""
+    if is_user_spec(algorithm):
+        return _run_user(algorithm, polygon)
     p = read_polygon(polygon)
     shown = SHOWN.get(algorithm, algorithm)
     meta = {"algorithm": algorithm, "polygon": polygon, "shown": shown}
@@ -34,6 +38,18 @@ def run_logged(algorithm: str, polygon: str, heuristic: str | None = None) -> tr
         else:
             with tracing.alive(p):
                 triangulate(p, algorithm, heuristic)
+    return log
+
+
+def _run_user(spec: str, polygon: str) -> tracing.Log:
+    """A heuristic of one's own: the meta names it (``user_heuristic``, which turns on the
+    storyboard's generic beats) and carries its source, so a saved log shows it too."""
+    heuristic = load_user_heuristic(spec)
+    p = read_polygon(polygon)
+    meta = {"algorithm": spec, "polygon": polygon, "shown": heuristic.name,
+            "user_heuristic": heuristic.name, "code": [list(row) for row in heuristic.source()]}
+    with tracing.record(**meta) as log:
+        heuristic.run(p)
     return log
 
 

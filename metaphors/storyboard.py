@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 
 from geometry.check import is_inner_diagonal
 from geometry.polygon import Polygon
+from metaphors.theme import ROLES
 from tracing import Event, Log
 
 #: Steps whose call and return become one metaphor beat, with the shape they animate.
@@ -147,6 +148,8 @@ class _Walk:
         self.shown_polygon = False
         self.stack: list[Event] = []  # open calls, outermost first
         self.shown_code = shown_code
+        self.user = log.meta.get("user_heuristic")  # a heuristic of one's own: generic beats
+        self.drawn: set[str] = set()  # keys of the shapes the generic beats drew
 
     def code_line(self, event: Event) -> int | None:
         """The line lit in the shown function: the line of its direct callee, or of the event."""
@@ -203,10 +206,10 @@ def _beats_for(walk: _Walk, e: Event) -> Iterator[Beat]:
             walk.shown_polygon = True
             yield walk.beat("polygon", "The polygon", e, data=_polygon_data(e.state))
         return
-    if e.kind == "call" and "polygon" in (e.args or {}) and e.name in _HEURISTIC_NAMES:
+    if e.kind == "call" and "polygon" in (e.args or {}) and _is_heuristic(walk, e.name):
         walk.heuristic_polygon.append(e.args["polygon"]["ref"])
         return
-    if e.kind == "return" and e.name in _HEURISTIC_NAMES and walk.heuristic_polygon:
+    if e.kind == "return" and _is_heuristic(walk, e.name) and walk.heuristic_polygon:
         walk.heuristic_polygon.pop()
         return
     if e.kind == "enter" and e.target.startswith("T("):
@@ -220,6 +223,8 @@ def _beats_for(walk: _Walk, e: Event) -> Iterator[Beat]:
     if e.kind == "note":
         yield walk.beat("note", e.args.get("reason", e.name) if e.args else e.name, e,
                         data=dict(e.args or {}))
+    elif walk.user and e.kind in ("enter", "change", "exit"):
+        yield from _shape_beats(walk, e)
 
 
 _HEURISTIC_NAMES = {
@@ -264,6 +269,51 @@ def _return_beats(walk: _Walk, ret: Event) -> Iterator[Beat]:
                               "points": [entered[k]["points"] for k in pieces if k in entered],
                               "labels": [entered[k]["labels"] for k in pieces if k in entered]},
                         **kw)
+    elif walk.user:
+        yield walk.beat("call", _call_caption(call, ret), call, **kw)
+
+
+# --- generic beats: a heuristic of one's own (log meta ``user_heuristic``) ----------------------
+
+#: Calls whose shapes a metaphor (or the claim) already draws.
+_MAPPED = set(METAPHOR_STEPS) | {"claim", "candidates_in_triangle", "gravity_direction", "split"}
+
+
+def _is_heuristic(walk: _Walk, name: str) -> bool:
+    return name in _HEURISTIC_NAMES or name == walk.user
+
+
+def _call_caption(call: Event, ret: Event) -> str:
+    if isinstance(ret.result, dict) and "raised" in ret.result:
+        return f"{call.name} raised {ret.result['raised']}"
+    return f"{call.name} is done" if ret.result is None else f"{call.name} gives {show(ret.result)}"
+
+
+def _shape_beats(walk: _Walk, e: Event) -> Iterator[Beat]:
+    """A shape of the user's run appears, changes or goes; data = its state (None on exit)."""
+    key = e.target
+    if key is None or key.startswith(("P(", "T(")):
+        return
+    if any(c.name in _MAPPED or c.name in _HEURISTIC_NAMES for c in walk.stack):
+        return
+    if e.kind != "enter" and key not in walk.drawn:
+        return
+    state = e.state if e.kind != "exit" else None
+    if state is None:
+        walk.drawn.discard(key)
+        caption = f"Gone: {key}"
+    else:
+        walk.drawn.add(key)
+        kind = state.get("kind", "shape")
+        caption = state.get("caption") or (
+            f"Drawn: {key} ({kind})" if e.kind == "enter" else f"Changed: {key}")
+    inner = walk.stack[-1] if walk.stack and walk.stack[-1].name != walk.user else None
+    roles = call_roles(inner, None) if inner is not None else {}
+    if state is not None:
+        role = state.get("role")
+        roles[key] = role if role in ROLES else "argument"
+    yield walk.beat("shape", str(caption), e, call=call_line(inner, None) if inner else None,
+                    roles=roles, data={"key": key, "event": e.kind, "state": state})
 
 
 def _extra(walk: _Walk, call: Event, ret: Event) -> dict:

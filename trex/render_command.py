@@ -339,7 +339,12 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
 def _render(scene: str, path: Path, class_name: str | None, polygon: str | None, target: Path,
             fmt: str, quality: str, signals: Signals) -> None:
     try:
-        cls = load_scene_class(path, class_name)
+        if ".py:" in scene:  # the file's Scene class, or a heuristic of one's own
+            from metaphors.generic import scene_for_heuristic
+
+            cls = scene_for_heuristic(scene)
+        else:
+            cls = load_scene_class(path, class_name)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
     if polygon is not None and getattr(cls, "runs", None):

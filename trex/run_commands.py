@@ -18,9 +18,40 @@ from geometry.diagonals import HEURISTICS, find_diagonal
 from geometry.io import write_atomic
 from geometry.polygon import Polygon
 from geometry.triangulate import ALGORITHMS, triangulate
+from geometry.user_heuristics import (
+    UserHeuristic,
+    UserHeuristicError,
+    is_user_spec,
+    load_user_heuristic,
+    run_heuristic,
+)
 from trex.inputs import EXIT_INVALID, fail, load_or_exit, report_error, try_load
 
 HEURISTIC = click.Choice(list(HEURISTICS))
+
+
+class HeuristicOrFile(click.ParamType):
+    """A built-in heuristic's name (click's Choice error for an unknown one), or
+    ``path/to/file.py:function``: a heuristic of one's own, loaded here so a bad spec is one
+    line before any polygon is read."""
+
+    name = "heuristic"
+
+    def get_metavar(self, param, ctx=None) -> str:
+        return "[" + "|".join(HEURISTICS) + "|FILE.py:FUNCTION]"
+
+    def convert(self, value, param, ctx):
+        if isinstance(value, UserHeuristic):
+            return value
+        if is_user_spec(value):
+            try:
+                return load_user_heuristic(value)
+            except UserHeuristicError as exc:
+                self.fail(str(exc), param, ctx)
+        try:
+            return HEURISTIC.convert(value, param, ctx)
+        except click.BadParameter as exc:
+            self.fail(f"{exc.message.rstrip('.')}, or FILE.py:FUNCTION of your own", param, ctx)
 ALGORITHM = click.Choice(list(ALGORITHMS))
 
 
@@ -32,9 +63,9 @@ def _to_input(polygon: Polygon, indices) -> list[int]:
     return [polygon.source[i] for i in indices]
 
 
-def diagonal_record(arg: str, polygon: Polygon, heuristic: str) -> dict:
-    """The claim of a heuristic and its exact verdict, in input indices."""
-    claim = find_diagonal(polygon, heuristic)
+def diagonal_record(arg: str, polygon: Polygon, heuristic: str | UserHeuristic) -> dict:
+    """The claim of a heuristic (a name, or one's own) and its exact verdict, in input indices."""
+    claim = run_heuristic(polygon, heuristic)
     verdict = is_inner_diagonal(polygon, *claim.pair)
     return {
         "polygon": arg,
@@ -83,9 +114,10 @@ def _run_each(polygons, make, show_human, as_json: bool) -> None:
 
 @click.command()
 @click.argument("polygons", nargs=-1, required=True, metavar="POLYGON...")
-@click.option("--heuristic", type=HEURISTIC, required=True, help="Which inner-diagonal heuristic.")
+@click.option("--heuristic", type=HeuristicOrFile(), required=True,
+              help="Which inner-diagonal heuristic: a name, or FILE.py:FUNCTION of your own.")
 @click.option("--json", "as_json", is_flag=True, help="One JSON object per line.")
-def diagonal(polygons: tuple[str, ...], heuristic: str, as_json: bool) -> None:
+def diagonal(polygons: tuple[str, ...], heuristic: str | UserHeuristic, as_json: bool) -> None:
     """Claim an inner diagonal of each POLYGON with a heuristic, and check the claim exactly."""
 
     def human(r: dict) -> str:

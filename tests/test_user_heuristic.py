@@ -1,0 +1,260 @@
+"""A heuristic of one's own (examples/my_heuristic.py): loaded, run, rendered with the generic
+panel (dry run), checked through `trex diagonal`; bad specs are one line and exit 2."""
+
+import json
+import os
+import tempfile
+import textwrap
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+import tracing
+from geometry.io import read_polygon
+from geometry.user_heuristics import UserHeuristicError, load_user_heuristic
+from metaphors.runs import run_logged
+from metaphors.storyboard import storyboard
+from trex.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+EXAMPLE = f"{ROOT / 'examples' / 'my_heuristic.py'}:biggest_angle"
+
+
+def run(*args):
+    result = CliRunner().invoke(main, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+def write(folder: Path, name: str, text: str) -> str:
+    path = folder / name
+    path.write_text(textwrap.dedent(text))
+    return str(path)
+
+
+# --- the run and its beats ----------------------------------------------------------------------
+
+
+def test_the_log_names_the_heuristic_and_carries_its_source():
+    log = run_logged(EXAMPLE, "counterexample")
+    assert log.meta["user_heuristic"] == "biggest_angle"
+    assert log.meta["shown"] == "biggest_angle"
+    code = dict((line, text) for line, text in log.meta["code"])
+    assert "def biggest_angle(polygon):" in code.values()
+    # one traced call for the whole run, and the claim entered like the built-ins do
+    calls = [e for e in log.events if e.kind == "call" and e.depth == 0]
+    assert [c.name for c in calls] == ["biggest_angle"]
+    claims = log.find(kind="enter", target="BE")
+    assert len(claims) == 1 and claims[0].state["labels"] == ["B", "E"]
+    # a saved log gives the same beats
+    assert storyboard(tracing.Log.from_json(log.to_json())) == storyboard(log)
+
+
+def test_storyboard_generic_beats_light_the_users_lines():
+    log = run_logged(EXAMPLE, "counterexample")
+    beats = storyboard(log)
+    actions = [b.action for b in beats]
+    assert actions[0] == "polygon" and actions[-2:] == ["claim", "verdict"]
+    shapes = [b for b in beats if b.action == "shape"]
+    assert [b.data["event"] for b in shapes] == ["enter", "change", "exit"]
+    assert shapes[0].data["key"] == "best"
+    assert shapes[0].data["state"] == {"kind": "segment", "points": [[1.0, 4.5], [3.0, 6.5]]}
+    calls = [b for b in beats if b.action == "call" and b.call.startswith("angle_at_b")]
+    assert [b.call for b in calls] == ["angle_at_b(B, A, D) → 35.3", "angle_at_b(B, A, E) → 86.6"]
+    assert calls[0].roles == {"B": "called", "A": "argument", "D": "argument"}
+    code = dict((line, text.strip()) for line, text in log.meta["code"])
+    assert code[beats[-1].line] == "return b, best"  # the claim lights the user's return
+    assert beats[-1].data["ok"] is True
+
+
+def test_builtin_logs_get_no_generic_beats():
+    for algorithm in ("scaling", "gravity"):
+        actions = {b.action for b in storyboard(run_logged(algorithm, "counterexample"))}
+        assert not actions & {"shape", "call"}
+
+
+# --- the scene, in dry run ------------------------------------------------------------------------
+
+
+def _dry_render(spec: str, polygon: str | None, monkeypatch):
+    from manim import tempconfig
+
+    from metaphors.generic import scene_for_heuristic
+
+    monkeypatch.delenv("TREX_LOG", raising=False)
+    if polygon is None:
+        monkeypatch.delenv("TREX_POLYGON", raising=False)
+    else:
+        monkeypatch.setenv("TREX_POLYGON", polygon)
+    cls = scene_for_heuristic(spec)
+    played = []
+    settings = {"dry_run": True, "disable_caching": True, "verbosity": "WARNING",
+                "progress_bar": "none", "media_dir": tempfile.mkdtemp(prefix="trex-test-")}
+    with tempconfig(settings):
+        scene = cls(skip_animations=True)  # end states only: no frames drawn
+        original = scene.play
+
+        def play(*args, **kwargs):
+            animations = scene.compile_animations(*args, **{k: v for k, v in kwargs.items()
+                                                            if k == "run_time"})
+            played.extend((type(a).__name__, getattr(a.mobject, "name", "")) for a in animations)
+            return original(*args, **kwargs)
+
+        scene.play = play
+        scene.render()
+    return cls, scene, played
+
+
+@pytest.mark.parametrize(("polygon", "ok"), [(None, True), ("counterexample-twin", False)])
+def test_scene_plays_the_generic_beats(polygon, ok, monkeypatch):
+    cls, scene, played = _dry_render(EXAMPLE, polygon, monkeypatch)
+    assert cls.title.startswith("biggest_angle: Claim BD for the candidate D")
+    actions = [b.action for b in scene.trex_beats]
+    assert {"shape", "call", "claim", "verdict"} <= set(actions)
+    assert ("Create", "shape:best") in played  # the shape appeared …
+    assert ("Transform", "shape:best") in played  # … moved to the better candidate …
+    assert ("FadeOut", "shape:best") in played  # … and went
+    assert "shape:best" not in scene.trex_board.objects
+    verdict = scene.trex_beats[-1]
+    assert verdict.action == "verdict" and verdict.data["ok"] is ok
+    assert ("FadeIn", "tick" if ok else "cross") in played
+    if not ok:
+        assert ("Create", "edge:C–D") in played  # the edge the claim crosses
+    rows = [text.strip() for _, text in scene.trex_board.panel.code_lines]
+    assert rows[0] == "def biggest_angle(polygon):" and rows[-1] == "return b, best"
+
+
+def test_scene_for_heuristic_errors_and_scene_classes(tmp_path):
+    from metaphors.generic import scene_for_heuristic
+
+    with pytest.raises(UserHeuristicError, match="no such file"):
+        scene_for_heuristic(f"{tmp_path}/missing.py:f")
+    path = write(tmp_path, "scene_file.py", """
+        from manim import Scene
+
+        class Still(Scene):
+            pass
+    """)
+    assert scene_for_heuristic(f"{path}:Still").__name__ == "Still"
+
+
+# --- trex diagonal -------------------------------------------------------------------------------
+
+
+def test_trex_diagonal_with_the_example_json():
+    code, out, err = run("diagonal", "--heuristic", EXAMPLE, "counterexample",
+                         "counterexample-twin", "--json")
+    assert code == 0, err
+    first, second = (json.loads(line) for line in out.splitlines())
+    assert first["polygon"] == "counterexample"
+    assert first["inner"] is True and first["why"] is None and sorted(first["diagonal"]) == [0, 3]
+    assert second["inner"] is False and second["why"].startswith("B–E crosses edge C–D")
+
+
+def test_trex_diagonal_with_the_example_relative_path_human():
+    cwd = os.getcwd()
+    os.chdir(ROOT)
+    try:
+        code, out, _ = run("diagonal", "--heuristic", "examples/my_heuristic.py:biggest_angle",
+                           "counterexample")
+    finally:
+        os.chdir(cwd)
+    assert code == 0
+    assert out == ("counterexample: examples/my_heuristic.py:biggest_angle claims BE "
+                   "(input vertices 0 and 3): inner diagonal\n")
+
+
+@pytest.mark.parametrize("answer", [
+    "claim(polygon.vertex(1), polygon.vertex(3))",  # a Diagonal it claimed itself
+    "Diagonal(polygon.vertex(1), polygon.vertex(3))",
+    "(1, 3)", "['B', 'D']", "(polygon.vertex(1), 'D')", "(numpy.int64(1), 3)",
+])
+def test_every_answer_form_is_one_claim(tmp_path, answer):
+    path = write(tmp_path, "forms.py", f"""
+        import numpy
+        from geometry.frame import Diagonal, claim
+
+        def mine(polygon):
+            return {answer}
+    """)
+    heuristic = load_user_heuristic(f"{path}:mine")
+    with tracing.record(user_heuristic=heuristic.name) as log:
+        diagonal = heuristic.run(read_polygon("counterexample"))
+    assert diagonal.name == "BD"
+    assert len(log.find(kind="call", name="claim")) == 1
+    assert [b.action for b in storyboard(log)][-2:] == ["claim", "verdict"]
+
+
+BAD_SPECS = {
+    "missing file": ("{d}/nope.py:f", "error: Invalid value for '--heuristic': {d}/nope.py: "
+                     "no such file"),
+    "no function named": ("{d}/good.py", "name the function too, as {d}/good.py:FUNCTION"),
+    "syntax error": ("{d}/broken.py:f", "{d}/broken.py:2: syntax error: '(' was never closed"),
+    "fails to import": ("{d}/imports.py:f", "{d}/imports.py:1: ModuleNotFoundError while "
+                        "loading: No module named 'no_such_module_here'"),
+    "missing function": ("{d}/good.py:nothing", "{d}/good.py: no function 'nothing' "
+                         "(it defines: good, pair)"),
+    "not callable": ("{d}/good.py:LIMIT", "{d}/good.py: 'LIMIT' is an int, not a function"),
+    "wrong arity": ("{d}/good.py:pair", "{d}/good.py: pair() must take one argument, the "
+                    "polygon"),
+    "unknown name": ("nonesuch", "'nonesuch' is not one of 'scaling', 'rotation', "),
+    "raises": ("{d}/good.py:good", "error: counterexample: good raised ZeroDivisionError: "
+               "division by zero (good.py, line 5)"),
+    "bad answer": ("{d}/answers.py:f", "error: counterexample: f returned ('B', 'Q'): 'Q' is not "
+                   "a vertex label (A … E)"),
+}
+
+
+@pytest.mark.parametrize("case", list(BAD_SPECS))
+def test_bad_specs_are_one_line_and_exit_2(tmp_path, case):
+    write(tmp_path, "good.py", """
+        LIMIT = 3
+
+        def good(polygon):
+            return 1 / 0
+
+        def pair(a, b):
+            return a, b
+    """)
+    write(tmp_path, "broken.py", "def f(polygon):\n    return (1,\n")
+    write(tmp_path, "imports.py", "import no_such_module_here\n")
+    write(tmp_path, "answers.py", "def f(polygon):\n    return 'B', 'Q'\n")
+    spec, expected = (s.format(d=tmp_path) for s in BAD_SPECS[case])
+    code, out, err = run("diagonal", "--heuristic", spec, "counterexample")
+    assert code == 2
+    assert out == ""
+    assert err.count("\n") == 1 and err.startswith("error: ")
+    assert expected in err
+    assert "Traceback" not in err
+
+
+# --- trex render routes file.py:function to the generic scene -------------------------------------
+
+
+def test_trex_render_builds_the_generic_scene(tmp_path, monkeypatch):
+    from trex import render_command
+
+    seen = {}
+
+    def fake_render_into(cls, target, fmt, quality, **kwargs):
+        seen["cls"] = cls
+        target.write_bytes(b"")
+        return target
+
+    monkeypatch.setattr(render_command, "render_into", fake_render_into)
+    code, out, err = run("render", EXAMPLE, "--polygon", "counterexample-twin",
+                         "-o", str(tmp_path / "mine.mp4"))
+    assert code == 0, err
+    assert out == f"{tmp_path / 'mine.mp4'}\n"
+    assert seen["cls"].algorithm == EXAMPLE
+    assert seen["cls"].title.startswith("biggest_angle: ")
+
+
+def test_trex_render_bad_spec_is_one_line(tmp_path, monkeypatch):
+    from trex import render_command
+
+    monkeypatch.setattr(render_command, "render_into", lambda *a, **k: pytest.fail("rendered"))
+    path = write(tmp_path, "mine.py", "def f(polygon):\n    return 1, 3\n")
+    code, out, err = run("render", f"{path}:g", "-o", str(tmp_path / "x.mp4"))
+    assert code == 2 and out == ""
+    assert err == f"error: {path}:g: {path}: no function 'g' (it defines: f)\n"
