@@ -1,0 +1,311 @@
+"""trex lecture: real -ql renders of a short chapter list, joined and checked with PyAV and srt.
+
+The chapter list is scenes/polygon.py (a real scene; it reads TREX_POLYGON) and two tiny
+subtitled scenes written here: the project's subtitled scenes take 25-60 s each at -ql,
+too long for a test that renders the lecture twice (-j 1 and -j 2).
+"""
+
+import hashlib
+import itertools
+import json
+import re
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from dataclasses import dataclass
+from datetime import timedelta
+from fractions import Fraction
+from pathlib import Path
+
+import av
+import click
+import numpy as np
+import pytest
+import srt
+from click.testing import CliRunner
+
+from metaphors import assemble
+from trex import lecture_command
+from trex.cli import main
+
+TINY = textwrap.dedent("""
+    from manim import BLUE, Circle, Create, FadeOut, Scene, Square
+
+    class Cues(Scene):
+        def construct(self):
+            self.next_section("Cues")
+            square = Square(color=BLUE)
+            self.play(Create(square), subcaption="a square", subcaption_duration=1.0,
+                      run_time=1.0)
+            self.add_subcaption("it waits", duration=0.5)
+            self.wait(0.8)
+            self.play(FadeOut(square), subcaption="gone", run_time=0.6)
+
+    class MoreCues(Scene):
+        def construct(self):
+            self.next_section("More cues")
+            circle = Circle()
+            self.play(Create(circle), subcaption="a circle", run_time=1.2)
+            self.add_subcaption("and again", duration=0.4, offset=0.2)
+            self.wait(0.7)
+""")
+BROKEN = textwrap.dedent("""
+    from manim import Circle, Create, Scene
+
+    class Boom(Scene):
+        def construct(self):
+            self.play(Create(Circle()), run_time=0.2)
+            raise RuntimeError("the chapter broke")
+""")
+
+
+@dataclass(frozen=True)
+class Chapter:  # the shape of metaphors.lecture.Chapter
+    number: int
+    slug: str
+    title: str
+    scene_file: str
+    scene_class: str
+
+
+def run(*args):
+    result = CliRunner().invoke(main, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+def leftovers(directory: Path, keep=()) -> list[str]:
+    return sorted(p.name for p in directory.iterdir() if p.name not in keep)
+
+
+def frame_sums(path: Path) -> list[str]:
+    with av.open(str(path)) as container:
+        return [hashlib.sha1(f.to_ndarray(format="rgb24").tobytes()).hexdigest()
+                for f in container.decode(video=0)]
+
+
+@pytest.fixture(scope="module")
+def tiny(tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("scenes") / "tiny.py"
+    path.write_text(TINY)
+    return path
+
+
+@pytest.fixture(scope="module")
+def chapters(tiny):
+    return [Chapter(1, "polygon", "The polygon", "scenes/polygon.py", "PolygonScene"),
+            Chapter(2, "cues", "Cues", str(tiny), "Cues"),
+            Chapter(3, "more-cues", "More cues", str(tiny), "MoreCues")]
+
+
+@pytest.fixture(scope="module")
+def serial(tmp_path_factory, tiny):
+    """`trex lecture -j 1` through the command line, the chapters picked with --chapters."""
+    out = tmp_path_factory.mktemp("serial") / "lecture"
+    began = time.monotonic()
+    code, stdout, stderr = run("lecture", "-ql", "-j", "1", "--polygon", "counterexample",
+                               "--chapters", f"polygon,{tiny}:Cues,{tiny}:MoreCues",
+                               "-o", str(out))
+    assert code == 0, stderr
+    return out, stdout, time.monotonic() - began
+
+
+@pytest.fixture(scope="module")
+def parallel(tmp_path_factory, chapters):
+    """The same lecture with -j 2, the chapter list passed as a parameter."""
+    out = tmp_path_factory.mktemp("parallel") / "lecture"
+    with CliRunner().isolation() as (_, _, stderr):
+        try:
+            lecture_command.run_lecture(chapters, out, "l", 2, "counterexample")
+        except click.exceptions.Exit as exc:
+            pytest.fail(f"run_lecture exited {exc.exit_code}: {stderr.getvalue()!r}")
+    return out
+
+
+def chapter_videos(out: Path) -> list[Path]:
+    return sorted((out / "chapters").glob("*.mp4"))
+
+
+def test_progress_lines_and_outputs(serial):
+    out, stdout, _ = serial
+    lines = stdout.splitlines()
+    pattern = r"chapter (\d)/3 ([\w-]+): \d+\.\d s of video in \d+\.\d s"
+    done = [re.fullmatch(pattern, line) for line in lines[:3]]
+    assert all(done), stdout
+    assert sorted(m.group(1) for m in done) == ["1", "2", "3"]
+    assert re.fullmatch(r"lecture: \d+\.\d s of video, 3 chapters, in \d+\.\d s", lines[3])
+    assert lines[4] == str(out / "lecture.mp4")
+    assert leftovers(out) == ["chapters", "chapters.json", "chapters.md", "lecture.mp4",
+                              "lecture.srt"]
+    assert [p.name for p in chapter_videos(out)] == [
+        "01-polygon.mp4", "02-tiny-Cues.mp4", "03-tiny-MoreCues.mp4"]
+    assert leftovers(out.parent) == ["lecture"]  # no temporary directory left beside
+
+
+def test_joined_video_is_the_chapters_one_after_another(serial):
+    out = serial[0]
+    parts = [assemble.probe(p) for p in chapter_videos(out)]
+    joined = assemble.probe(out / "lecture.mp4")
+    frame = Fraction(1, 15)
+    assert abs(joined.duration - sum(p.duration for p in parts)) <= frame
+    assert joined.frames == sum(p.frames for p in parts)
+    for part in parts:
+        assert (joined.width, joined.height) == (part.width, part.height) == (854, 480)
+        assert joined.rate == part.rate == 15
+        assert joined.codec == part.codec and joined.pix_fmt == part.pix_fmt
+    with av.open(str(out / "lecture.mp4")) as container:
+        assert abs(container.duration / 1e6 - float(sum(p.duration for p in parts))) <= 1 / 15
+    # remuxed, not encoded again: the decoded frames are the chapters' frames
+    expected = [s for p in chapter_videos(out) for s in frame_sums(p)]
+    assert frame_sums(out / "lecture.mp4") == expected
+
+
+def test_subtitles_are_the_chapters_cues_shifted(serial):
+    out = serial[0]
+    entries = json.loads((out / "chapters.json").read_text())
+    expected = []
+    for entry in entries:
+        srt_file = (out / entry["file"]).with_suffix(".srt")
+        if not srt_file.is_file():
+            continue  # the polygon scene has no subtitles
+        shift = timedelta(seconds=entry["start_seconds"])
+        expected += [(c.start + shift, c.end + shift, c.content)
+                     for c in srt.parse(srt_file.read_text())]
+    assert len(expected) == 5
+    cues = list(srt.parse((out / "lecture.srt").read_text()))
+    assert [c.index for c in cues] == list(range(1, len(cues) + 1))
+    assert len(cues) == len(expected)
+    for cue, (start, end, content) in zip(cues, expected, strict=True):
+        assert cue.content == content
+        assert abs(cue.start - start) <= timedelta(milliseconds=1)
+        assert abs(cue.end - end) <= timedelta(milliseconds=1)
+    starts = [c.start for c in cues]
+    assert all(a < b for a, b in itertools.pairwise(starts))
+    chapter_start = timedelta(seconds=entries[1]["start_seconds"])  # after the polygon's
+    assert abs(cues[0].start - chapter_start) <= timedelta(milliseconds=1)
+
+
+def test_chapter_list_starts_are_cumulative_durations(serial):
+    out = serial[0]
+    entries = json.loads((out / "chapters.json").read_text())
+    durations = [float(assemble.probe(p).duration) for p in chapter_videos(out)]
+    assert [e["number"] for e in entries] == [1, 2, 3]
+    assert [e["file"] for e in entries] == [
+        f"chapters/{p.name}" for p in chapter_videos(out)]
+    assert [e["duration_seconds"] for e in entries] == pytest.approx(durations, abs=1e-6)
+    assert [e["start_seconds"] for e in entries] == pytest.approx(
+        list(np.cumsum([0, *durations[:-1]])), abs=1e-6)
+    table = (out / "chapters.md").read_text().splitlines()
+    rows = [line for line in table if re.match(r"\| \d", line)]
+    assert len(rows) == 3
+    assert rows[0].startswith("| 1 | Polygon | 00:00 |")
+    assert f"| {assemble.format_clock(entries[2]['start_seconds'])} |" in rows[2]
+
+
+def test_parallel_gives_the_same_bytes(serial, parallel):
+    """manim's output is deterministic (same scene, same bytes), so is the joined mp4."""
+    out = serial[0]
+    for a, b in zip(chapter_videos(out), chapter_videos(parallel), strict=True):
+        assert a.read_bytes() == b.read_bytes(), a.name
+    assert (out / "lecture.mp4").read_bytes() == (parallel / "lecture.mp4").read_bytes()
+    assert (out / "lecture.srt").read_text() == (parallel / "lecture.srt").read_text()
+    serial_list = json.loads((out / "chapters.json").read_text())
+    parallel_list = json.loads((parallel / "chapters.json").read_text())
+    assert [e["start_seconds"] for e in serial_list] == [
+        e["start_seconds"] for e in parallel_list]
+
+
+def test_bad_polygon_exits_2_before_rendering(tmp_path, monkeypatch):
+    monkeypatch.setattr(lecture_command, "_start", lambda *a: pytest.fail("rendered"))
+    bad = tmp_path / "bowtie.json"
+    bad.write_text("[[0,0],[2,2],[2,0],[0,2]]")
+    out = tmp_path / "out" / "lecture"
+    code, stdout, stderr = run("lecture", "--polygon", str(bad), "--chapters", "polygon",
+                               "-o", str(out))
+    assert code == 2
+    assert len(stderr.splitlines()) == 1 and stderr.startswith(f"error: {bad}: "), stderr
+    assert stdout == ""
+    assert leftovers(tmp_path) == ["bowtie.json"]
+
+
+def test_polygon_an_algorithm_rejects_exits_2_before_rendering(tmp_path, monkeypatch):
+    monkeypatch.setattr(lecture_command, "_start", lambda *a: pytest.fail("rendered"))
+    code, _, stderr = run("lecture", "--polygon", "triangle", "--chapters", "polygon,scaling",
+                          "-o", str(tmp_path / "lecture"))
+    assert code == 2
+    assert stderr == "error: triangle: a triangle has no diagonal\n"
+    assert leftovers(tmp_path) == []
+
+
+def test_output_that_is_a_file(tmp_path):
+    out = tmp_path / "lecture"
+    out.write_text("mine")
+    code, _, stderr = run("lecture", "--chapters", "polygon", "-o", str(out))
+    assert code == 2
+    assert stderr == f"error: {out}: exists and is not a directory\n"
+    assert out.read_text() == "mine"
+
+
+def test_failing_chapter_exits_1_and_leaves_dir_as_it_was(tmp_path, tiny):
+    broken = tmp_path / "broken.py"
+    broken.write_text(BROKEN)
+    out = tmp_path / "lecture"
+    out.mkdir()
+    (out / "lecture.mp4").write_bytes(b"old lecture")
+    (out / "notes.txt").write_text("mine")
+    code, _, stderr = run("lecture", "-j", "2", "--chapters", f"{tiny}:Cues,{broken}:Boom",
+                          "-o", str(out))
+    assert code == 1
+    assert stderr == ("error: chapter 2/2 broken-Boom: render failed: "
+                      "RuntimeError: the chapter broke\n")
+    assert leftovers(tmp_path) == ["broken.py", "lecture"]
+    assert leftovers(out) == ["lecture.mp4", "notes.txt"]
+    assert (out / "lecture.mp4").read_bytes() == b"old lecture"
+
+
+def test_interrupt_stops_the_renders_and_leaves_nothing(tmp_path):
+    trex = Path(sys.executable).with_name("trex")
+    out = tmp_path / "lecture"
+    proc = subprocess.Popen([str(trex), "lecture", "-j", "2", "--chapters", "polygon,scaling",
+                             "-o", str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
+    try:
+        deadline = time.monotonic() + 60
+        while not list(tmp_path.glob(".lecture.*.lecture/lecture/chapters/.*.render")):
+            assert proc.poll() is None, proc.communicate()
+            assert time.monotonic() < deadline, "rendering never started"
+            time.sleep(0.1)
+        proc.send_signal(signal.SIGINT)
+        _, stderr = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 128 + signal.SIGINT, stderr
+    assert stderr == "error: lecture interrupted; nothing written\n"
+    assert leftovers(tmp_path) == []
+
+
+def test_remux_refused_for_different_videos_encodes_again(tmp_path):
+    """Joining videos whose parameters differ encodes again, and says why."""
+    paths = []
+    for k, (width, height) in enumerate([(64, 48), (80, 48)]):
+        path = tmp_path / f"part{k}.mp4"
+        with av.open(str(path), "w") as container:
+            stream = container.add_stream("libx264", rate=15)
+            stream.width, stream.height, stream.pix_fmt = width, height, "yuv420p"
+            for i in range(10 + k):
+                image = np.full((height, width, 3), 20 * i, dtype=np.uint8)
+                frame = av.VideoFrame.from_ndarray(image, format="rgb24")
+                container.mux(stream.encode(frame))
+            container.mux(stream.encode(None))
+        paths.append(path)
+    videos = [assemble.probe(p) for p in paths]
+    same = assemble.join_videos([videos[0], videos[0]], tmp_path / "same.mp4")
+    assert same is None
+    assert frame_sums(tmp_path / "same.mp4") == frame_sums(paths[0]) * 2
+    reason = assemble.join_videos(videos, tmp_path / "mixed.mp4")
+    assert reason == "part1.mp4 differs from part0.mp4 in size (80x48, not 64x48)"
+    mixed = assemble.probe(tmp_path / "mixed.mp4")
+    assert (mixed.width, mixed.height, mixed.frames) == (64, 48, 21)

@@ -1,0 +1,442 @@
+"""``trex lecture``: every chapter rendered, in parallel, then joined into one lecture.
+
+The chapters are ``metaphors.lecture.CHAPTERS`` (``--chapters`` picks some of them by slug,
+or names scenes to play as chapters instead). Each chapter renders in a process of its own,
+``python -m trex.lecture_command`` (:func:`render_chapter`: ``render_into`` of
+``trex render``, so each has its own temporary media directory), at most ``-j`` at a time.
+When all are done, :mod:`metaphors.assemble` joins them: one mp4 (packets remuxed, not
+encoded again), one .srt, ``chapters.json`` and ``chapters.md``; the chapter mp4s are kept
+in ``chapters/``.
+
+Everything is built in a temporary directory beside DIR and moved into place at the end,
+with SIGINT and SIGTERM held for the moves. Ctrl-C, SIGTERM or a failing chapter stop the
+other renders and leave DIR as it was. Bad input (the polygon, or a polygon a chapter's
+algorithm rejects, an output that is not a directory) is one line and status 2 before any
+rendering; a chapter that fails to render is one line naming it and status 1.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import click
+
+from geometry.errors import GeometryError
+from trex.inputs import error_line, fail, first_line, load_or_exit
+from trex.render_command import (
+    EXIT_FAILED,
+    EXIT_SIGNAL,
+    QUALITIES,
+    SCENES_DIR,
+    Interrupted,
+    _signals_held,
+    dry_run,
+    interrupts_raise,
+    load_scene_class,
+    render_into,
+    resolve_scene,
+)
+
+REPO = SCENES_DIR.parent
+DEFAULT_DIR = Path("media") / "lecture"
+VIDEO, SUBTITLES, LIST_JSON, LIST_MD, CHAPTER_DIR = (
+    "lecture.mp4", "lecture.srt", "chapters.json", "chapters.md", "chapters")
+OUTPUTS = (CHAPTER_DIR, VIDEO, SUBTITLES, LIST_JSON, LIST_MD)  # what DIR receives
+POLL = 0.05  # seconds between looks at the running renders
+STOP_WAIT = 20.0  # seconds a stopped render may take to clean up before it is killed
+
+
+@dataclass(frozen=True)
+class SceneChapter:
+    """A scene played as a chapter (``--chapters scaling,polygon``); the fields of
+    ``metaphors.lecture.Chapter``, which the lecture's own chapters are."""
+
+    number: int
+    slug: str
+    title: str
+    scene_file: str
+    scene_class: str | None
+
+
+class ChapterFailed(Exception):
+    """A chapter could not be rendered (its one-line reason is the message)."""
+
+
+def lecture_chapters() -> tuple:
+    """The lecture's chapters (imported only when asked for)."""
+    from metaphors.lecture import CHAPTERS
+
+    return tuple(CHAPTERS)
+
+
+def pick_chapters(spec: str, chapters: Sequence | None) -> list:
+    """Chapters named in ``spec`` (comma-separated): a slug of ``chapters``, else a scene
+    (``scaling``, ``rotation:RotationCcw``, ``my.py:Mine``) played as a chapter numbered by
+    its place. Raises ValueError with a one-line reason.
+
+    >>> [(c.number, c.slug, c.scene_class) for c in pick_chapters("scaling,rotation:RotationCcw",
+    ...                                                           None)]
+    [(1, 'scaling', None), (2, 'rotation-RotationCcw', 'RotationCcw')]
+    """
+    by_slug = {c.slug: c for c in chapters or ()}
+    picked = []
+    for k, item in enumerate((s.strip() for s in spec.split(",")), 1):
+        if not item:
+            raise ValueError("empty chapter name")
+        if item in by_slug:
+            picked.append(by_slug[item])
+            continue
+        path, class_name = resolve_scene(item)
+        slug = path.stem if class_name is None else f"{path.stem}-{class_name}"
+        title = path.stem.replace("_", " ").capitalize()
+        title = title if class_name is None else f"{title} ({class_name})"
+        picked.append(SceneChapter(k, slug.replace("_", "-"), title, str(path), class_name))
+    return picked
+
+
+def scene_path(chapter) -> Path:
+    """A chapter's scene file (relative paths are from the repository root)."""
+    path = Path(chapter.scene_file)
+    return path if path.is_absolute() else REPO / path
+
+
+def chapter_stem(chapter) -> str:
+    """``01-overview``: the chapter's files in ``chapters/``.
+
+    >>> chapter_stem(SceneChapter(3, "gravity", "Gravity", "scenes/gravity.py", None))
+    '03-gravity'
+    """
+    return f"{chapter.number:02d}-{chapter.slug}"
+
+
+def _label(k: int, n: int, chapter) -> str:
+    return f"chapter {k + 1}/{n} {chapter.slug}"
+
+
+# --- checks before rendering ------------------------------------------------------------------------
+
+
+def check_chapters(chapters: Sequence, polygon: str | None) -> None:
+    """Load every chapter's scene class and, with a polygon, run its algorithm on it once.
+
+    A scene that does not load raises :class:`ChapterFailed`; a polygon an algorithm
+    rejects exits with status 2 (bad input).
+    """
+    stems = [chapter_stem(c) for c in chapters]
+    if len(set(stems)) != len(stems):
+        raise ChapterFailed(f"chapters repeat: {', '.join(stems)}")
+    for k, chapter in enumerate(chapters):
+        path = scene_path(chapter)
+        try:
+            if not path.is_file():
+                raise ValueError(f"no such scene file: {chapter.scene_file}")
+            cls = load_scene_class(path, chapter.scene_class or None)
+        except ValueError as exc:
+            raise ChapterFailed(f"{_label(k, len(chapters), chapter)}: {exc}") from None
+        if polygon is not None and not getattr(cls, "runs", None):
+            try:
+                dry_run(cls, polygon)
+            except (GeometryError, ValueError, KeyError) as exc:
+                fail(f"{polygon}: {error_line(exc)}")
+
+
+def check_output_dir(out_dir: Path) -> None:
+    """DIR must be a directory (or not exist yet) whose entries we write are of the right
+    kind; its parent is created. Raises ValueError with a one-line reason."""
+    if out_dir.exists() and not out_dir.is_dir():
+        raise ValueError("exists and is not a directory")
+    for name in OUTPUTS:
+        target = out_dir / name
+        if target.exists() and target.is_dir() != (name == CHAPTER_DIR):
+            kind = "not a directory" if name == CHAPTER_DIR else "a directory"
+            raise ValueError(f"{name} in it is {kind}")
+    try:
+        out_dir.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"cannot create its parent: {exc.strerror or exc}") from None
+    if not os.access(out_dir.parent, os.W_OK) or (out_dir.is_dir()
+                                                  and not os.access(out_dir, os.W_OK)):
+        raise ValueError("cannot write there")
+
+
+# --- rendering the chapters in processes of their own ------------------------------------------------
+
+
+@dataclass
+class _Render:
+    k: int
+    chapter: object
+    process: subprocess.Popen
+    log: Path
+    output: Path
+    began: float
+
+
+def _start(k: int, chapter, folder: Path, logs: Path, quality: str,
+           polygon: str | None) -> _Render:
+    output = folder / f"{chapter_stem(chapter)}.mp4"
+    log = logs / f"{chapter_stem(chapter)}.log"
+    env = dict(os.environ)
+    if polygon is not None:
+        env["TREX_POLYGON"] = polygon
+        env.pop("TREX_LOG", None)
+    command = [sys.executable, "-m", "trex.lecture_command", str(scene_path(chapter)),
+               chapter.scene_class or "", str(output), quality]
+    with open(log, "wb") as sink:
+        # its own session: Ctrl-C at the terminal reaches only us, and we stop it
+        process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=sink,
+                                   stderr=subprocess.STDOUT, env=env, start_new_session=True)
+    return _Render(k, chapter, process, log, output, time.monotonic())
+
+
+def _reason(render: _Render, code: int) -> str:
+    try:
+        lines = render.log.read_text(encoding="utf-8", errors="replace").splitlines()
+    except OSError:
+        lines = []
+    said = next((first_line(line) for line in reversed(lines) if line.strip()), "")
+    if said.startswith("error: "):
+        said = said[len("error: "):]
+    if code < 0:
+        killed = f"render process killed by {signal.Signals(-code).name}"
+        return f"{killed}: {said}" if said else killed
+    return said or f"render process exited with status {code}"
+
+
+def _stop(renders: Sequence[_Render]) -> None:
+    """Stop running renders (SIGTERM: each removes its own temporary files), then wait."""
+    for render in renders:
+        if render.process.poll() is None:
+            render.process.terminate()
+    deadline = time.monotonic() + STOP_WAIT
+    for render in renders:
+        try:
+            render.process.wait(max(0.0, deadline - time.monotonic()))
+        except subprocess.TimeoutExpired:
+            render.process.kill()
+            render.process.wait()
+
+
+def render_chapters(chapters: Sequence, folder: Path, logs: Path, quality: str, jobs: int,
+                    polygon: str | None,
+                    done: Callable[[int, object, object, float], None] | None = None) -> list:
+    """Render every chapter to ``folder/NN-slug.mp4`` (+ .srt), ``jobs`` at a time.
+
+    Returns the chapters' :class:`metaphors.assemble.Video` in chapter order; calls
+    ``done(k, chapter, video, seconds)`` as each one finishes. The first failure stops the
+    others and raises :class:`ChapterFailed`; so does an exception (an interrupt) here.
+    """
+    from metaphors.assemble import probe
+
+    pending = list(enumerate(chapters))
+    running: list[_Render] = []
+    videos: list = [None] * len(chapters)
+    try:
+        while pending or running:
+            while pending and len(running) < jobs:
+                k, chapter = pending.pop(0)
+                running.append(_start(k, chapter, folder, logs, quality, polygon))
+            time.sleep(POLL)
+            for render in list(running):
+                code = render.process.poll()
+                if code is None:
+                    continue
+                running.remove(render)
+                label = _label(render.k, len(chapters), render.chapter)
+                if code != 0:
+                    raise ChapterFailed(f"{label}: {_reason(render, code)}")
+                try:
+                    video = probe(render.output)
+                except (OSError, ValueError, RuntimeError) as exc:  # av errors are OSErrors
+                    raise ChapterFailed(f"{label}: unreadable video: {error_line(exc)}") from None
+                videos[render.k] = video
+                if done is not None:
+                    done(render.k, render.chapter, video, time.monotonic() - render.began)
+    finally:
+        _stop(running)
+    return videos
+
+
+# --- assembling and moving into place ------------------------------------------------------------
+
+
+def assemble(chapters: Sequence, videos: Sequence, stage: Path) -> str | None:
+    """Write the lecture's files into ``stage`` (which holds ``chapters/``); returns why the
+    video had to be encoded again (None: remuxed)."""
+    from metaphors import assemble as joiner
+
+    reason = joiner.join_videos(videos, stage / VIDEO)
+    starts = joiner.starts_of(videos)
+    texts = []
+    for video in videos:
+        srt_file = video.path.with_suffix(".srt")
+        texts.append(srt_file.read_text(encoding="utf-8") if srt_file.is_file() else None)
+    durations = [v.duration for v in videos]
+    (stage / SUBTITLES).write_text(joiner.join_subtitles(texts, starts, durations),
+                                   encoding="utf-8")
+    files = [f"{CHAPTER_DIR}/{v.path.name}" for v in videos]
+    entries = joiner.chapter_entries(chapters, videos, files)
+    (stage / LIST_JSON).write_text(joiner.chapters_json(entries), encoding="utf-8")
+    (stage / LIST_MD).write_text(joiner.chapters_markdown(entries, VIDEO), encoding="utf-8")
+    return reason
+
+
+def move_into_place(stage: Path, out_dir: Path, trash: Path) -> None:
+    """Put the staged lecture at ``out_dir``: the whole directory when there is none yet,
+    else its entries one by one (an old ``chapters/`` goes to ``trash``); other files in
+    ``out_dir`` stay. Call with signals held."""
+    if not out_dir.exists():
+        os.rename(stage, out_dir)
+        return
+    for name in OUTPUTS:
+        target = out_dir / name
+        if name == CHAPTER_DIR and target.exists():
+            os.rename(target, trash / name)
+        os.replace(stage / name, target)
+
+
+def build_lecture(chapters: Sequence, out_dir: Path, quality: str, jobs: int,
+                  polygon: str | None, signals=None,
+                  echo: Callable[[str], None] = click.echo) -> tuple[Path, float]:
+    """Render and join ``chapters`` into ``out_dir``; returns the lecture mp4 and its length
+    in seconds. Raises :class:`ChapterFailed`, or :class:`Interrupted` on a signal (with
+    ``signals`` from ``interrupts_raise``); then nothing at ``out_dir`` has changed."""
+    temp = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.", suffix=".lecture",
+                                 dir=out_dir.parent))
+    try:
+        stage, logs, trash = temp / "lecture", temp / "logs", temp / "trash"
+        for folder in (stage / CHAPTER_DIR, logs, trash):
+            folder.mkdir(parents=True)
+
+        def done(k, chapter, video, seconds):
+            echo(f"{_label(k, len(chapters), chapter)}: {float(video.duration):.1f} s of video "
+                 f"in {seconds:.1f} s")
+
+        videos = render_chapters(chapters, stage / CHAPTER_DIR, logs, quality,
+                                 max(1, min(jobs, len(chapters))), polygon, done)
+        reason = assemble(chapters, videos, stage)
+        if reason is not None:
+            click.echo(f"note: the lecture was encoded again (no remux): {reason}", err=True)
+        with _signals_held():
+            if signals is not None:
+                signals.check()
+            move_into_place(stage, out_dir, trash)
+            if signals is not None:
+                signals.done = True
+        return out_dir / VIDEO, float(sum(v.duration for v in videos))
+    finally:
+        shutil.rmtree(temp, ignore_errors=True)
+
+
+@click.command()
+@click.option("-q", "--quality", type=click.Choice(list(QUALITIES)), default="l",
+              show_default=True, help="l 480p15, m 720p30, h 1080p60, k 2160p60.")
+@click.option("-j", "--jobs", type=click.IntRange(min=1), default=1, show_default=True,
+              help="Chapters rendered at once (one process each).")
+@click.option("--polygon", metavar="POLYGON",
+              help="Polygon file or sample for the chapters (those with fixed polygons ignore it).")
+@click.option("-o", "--output", "out_dir", metavar="DIR", default=str(DEFAULT_DIR),
+              show_default=True, help="Directory of the lecture.")
+@click.option("--chapters", "only", metavar="NAME,...",
+              help="Only these chapters (slugs), or scenes played as chapters.")
+def lecture(quality: str, jobs: int, polygon: str | None, out_dir: str,
+            only: str | None) -> None:
+    """Render every chapter of the lecture and join them: DIR/lecture.mp4, lecture.srt,
+    chapters.json, chapters.md and the chapter videos in DIR/chapters/.
+
+    Prints one line per chapter as it finishes, then the lecture's path. An interrupted or
+    failed run leaves DIR as it was.
+    """
+    if polygon is not None:
+        load_or_exit(polygon)  # bad input: one line, exit 2, before anything else
+    run_lecture(None, Path(out_dir), quality, jobs, polygon, only)
+
+
+def run_lecture(chapters: Sequence | None, out_dir: Path, quality: str = "l", jobs: int = 1,
+                polygon: str | None = None, only: str | None = None) -> Path:
+    """The command after its polygon check: ``chapters`` None = the lecture's own."""
+    if chapters is None:
+        try:
+            chapters = lecture_chapters()
+        except ModuleNotFoundError as exc:
+            if only is None or exc.name != "metaphors.lecture":
+                _failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
+            chapters = ()  # not written yet: --chapters names scenes
+        except Exception as exc:  # the chapter list itself is broken
+            _failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
+    if only is not None:
+        try:
+            chapters = pick_chapters(only, chapters)
+        except ValueError as exc:
+            fail(f"--chapters {only}: {exc}")
+    if not chapters:
+        _failed("the lecture has no chapters")
+    try:
+        check_output_dir(out_dir)
+    except ValueError as exc:
+        fail(f"{out_dir}: {exc}")
+    began = time.monotonic()
+    with interrupts_raise() as signals:
+        try:
+            check_chapters(chapters, polygon)
+            video, seconds = build_lecture(chapters, out_dir, quality, jobs, polygon, signals)
+        except Interrupted as exc:
+            click.echo("error: lecture interrupted; nothing written", err=True)
+            raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
+        except ChapterFailed as exc:
+            signals.check()
+            _failed(str(exc))
+        except (KeyboardInterrupt, click.exceptions.Exit):
+            raise
+        except Exception as exc:
+            signals.check()  # an interrupt that surfaced as another error is still one
+            _failed(f"lecture failed: {type(exc).__name__}: {error_line(exc)}")
+    click.echo(f"lecture: {seconds:.1f} s of video, {len(chapters)} chapters, "
+               f"in {time.monotonic() - began:.1f} s")
+    click.echo(str(video))
+    return video
+
+
+def _failed(message: str):
+    click.echo(f"error: {message}", err=True)
+    raise click.exceptions.Exit(EXIT_FAILED)
+
+
+# --- one chapter, in its own process ------------------------------------------------------------
+
+
+def render_chapter(scene_file: str, class_name: str | None, output: str, quality: str) -> int:
+    """Render one scene to ``output`` (mp4 + .srt) with ``render_into``; the exit status.
+
+    Failures are one line on stderr; SIGTERM/SIGINT stop it with nothing left behind.
+    """
+    with interrupts_raise() as signals:
+        try:
+            try:
+                cls = load_scene_class(Path(scene_file), class_name or None)
+                render_into(cls, Path(output), "mp4", QUALITIES[quality], progress=False,
+                            signals=signals)
+            except Exception as exc:
+                signals.check()
+                print(f"error: render failed: {type(exc).__name__}: {error_line(exc)}",
+                      file=sys.stderr)
+                return EXIT_FAILED
+        except Interrupted as exc:
+            return EXIT_SIGNAL + exc.signum
+    return 0
+
+
+COMMANDS = (lecture,)
+__all__ = ["COMMANDS", "build_lecture", "lecture", "render_chapter", "run_lecture"]
+
+if __name__ == "__main__":
+    sys.exit(render_chapter(*sys.argv[1:5]))
