@@ -309,3 +309,19 @@ def test_remux_refused_for_different_videos_encodes_again(tmp_path):
     assert reason == "part1.mp4 differs from part0.mp4 in size (80x48, not 64x48)"
     mixed = assemble.probe(tmp_path / "mixed.mp4")
     assert (mixed.width, mixed.height, mixed.frames) == (64, 48, 21)
+
+
+def test_existing_dir_gets_new_lecture_and_keeps_other_files(tmp_path, tiny):
+    out = tmp_path / "lecture"
+    (out / "chapters").mkdir(parents=True)
+    (out / "chapters" / "09-old.mp4").write_bytes(b"old chapter")
+    (out / "lecture.mp4").write_bytes(b"old lecture")
+    (out / "notes.txt").write_text("mine")
+    code, stdout, stderr = run("lecture", "--chapters", f"{tiny}:Cues", "-o", str(out))
+    assert code == 0, stderr
+    assert stdout.splitlines()[-1] == str(out / "lecture.mp4")
+    assert leftovers(out) == ["chapters", "chapters.json", "chapters.md", "lecture.mp4",
+                              "lecture.srt", "notes.txt"]
+    assert leftovers(out / "chapters") == ["01-tiny-Cues.mp4", "01-tiny-Cues.srt"]
+    assert (out / "lecture.mp4").read_bytes() == (out / "chapters/01-tiny-Cues.mp4").read_bytes()
+    assert leftovers(tmp_path) == ["lecture"]

@@ -310,8 +310,9 @@ def build_lecture(chapters: Sequence, out_dir: Path, quality: str, jobs: int,
     """Render and join ``chapters`` into ``out_dir``; returns the lecture mp4 and its length
     in seconds. Raises :class:`ChapterFailed`, or :class:`Interrupted` on a signal (with
     ``signals`` from ``interrupts_raise``); then nothing at ``out_dir`` has changed."""
-    temp = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.", suffix=".lecture",
-                                 dir=out_dir.parent))
+    where = out_dir.resolve()  # "." has no name and is its own parent
+    temp = Path(tempfile.mkdtemp(prefix=f".{where.name}.", suffix=".lecture",
+                                 dir=where.parent))
     try:
         stage, logs, trash = temp / "lecture", temp / "logs", temp / "trash"
         for folder in (stage / CHAPTER_DIR, logs, trash):
@@ -323,6 +324,10 @@ def build_lecture(chapters: Sequence, out_dir: Path, quality: str, jobs: int,
 
         videos = render_chapters(chapters, stage / CHAPTER_DIR, logs, quality,
                                  max(1, min(jobs, len(chapters))), polygon, done)
+        for chapter, video in zip(chapters, videos, strict=True):
+            if video.audio:
+                click.echo(f"warning: {chapter.slug}: has sound; the lecture keeps its video only",
+                           err=True)
         reason = assemble(chapters, videos, stage)
         if reason is not None:
             click.echo(f"note: the lecture was encoded again (no remux): {reason}", err=True)
