@@ -1,0 +1,291 @@
+"""Every scene in ``scenes/*.py``, built without rendering, checked through its scene graph.
+
+Scenes are discovered, not listed: each file of ``scenes/`` is imported with importlib and
+every manim ``Scene`` subclass defined in it is a case. For each one:
+
+(a) its graph on its default polygon matches the snapshot in ``tests/__snapshots__/``
+    (one JSON file per scene; regenerate with ``pytest tests/test_scenes.py --snapshot-update``);
+(b) building it twice gives identical JSON;
+(c) replaying the logs it plays, saved as JSON (``TREX_LOG``), gives the same graph as the
+    live run;
+(d) every scene of a wrong heuristic shows the ✗ verdict with the crossed edge in red.
+
+Builds are cached per (scene, input) for the session, so (a), (b) and (d) share the live build.
+A dry-run build costs about 1.5 s for a one-run scene and 8-15 s for a long one (several runs,
+a whole triangulation), so (b) and (c), which build again, run for a long scene (more than
+:data:`HEAVY_ANIMATIONS` animations) only with ``--runslow``. The mark ``xdist_group`` keeps a
+scene's tests on one worker under ``pytest -n 2 --dist loadgroup``.
+"""
+
+from __future__ import annotations
+
+import difflib
+import importlib.util
+import inspect
+import json
+import os
+import sys
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+from manim import DOWN, UP, FadeIn, FadeOut, Indicate, Scene, Text, Transform, Write, tempconfig
+from syrupy.extensions.single_file import SingleFileSnapshotExtension, WriteMode
+
+from geometry.check import is_inner_diagonal
+from geometry.diagonals import WRONG, find_diagonal
+from geometry.io import read_polygon
+from metaphors.snapshot import build_graph, environment
+
+SCENES_DIR = Path(__file__).resolve().parents[1] / "scenes"
+
+#: A scene's default input: no saved log, no polygon override.
+DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
+
+#: The polygon on which each wrong heuristic fails (thesis ch. 2.1; DESIGN.md).
+COUNTEREXAMPLES = {
+    "scaling": "counterexample",
+    "rotation": "counterexample",
+    "translation": "counterexample",
+    "rotation-ccw": "counterexample-twin",
+}
+
+
+#: A scene playing more animations than this is rebuilt for (b) and (c) only with --runslow.
+HEAVY_ANIMATIONS = 300
+
+
+# --- discovery -----------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class SceneCase:
+    """One Scene class of one scene file (or the error that file raised on import)."""
+
+    file: str
+    name: str
+    cls: type[Scene] | None = None
+    error: str | None = None
+
+    @property
+    def id(self) -> str:
+        return f"{self.file}.{self.name}"
+
+    def scene_class(self) -> type[Scene]:
+        if self.cls is None:
+            pytest.fail(f"scenes/{self.file}.py does not import: {self.error}")
+        return self.cls
+
+
+def _import(path: Path):
+    name = f"trex_scenes_{path.stem}"
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def discover_scenes() -> list[SceneCase]:
+    """Every Scene subclass defined in a file of ``scenes/`` (imported ones are not counted)."""
+    cases = []
+    for path in sorted(SCENES_DIR.glob("*.py")):
+        if path.name.startswith("_"):
+            continue
+        try:
+            module = _import(path)
+        except Exception as error:  # a scene being written right now: report, don't hide others
+            cases.append(SceneCase(path.stem, "<import>", error=f"{type(error).__name__}: {error}"))
+            continue
+        for name, value in sorted(vars(module).items()):
+            if (inspect.isclass(value) and issubclass(value, Scene)
+                    and value.__module__ == module.__name__):
+                cases.append(SceneCase(path.stem, name, value))
+    return cases
+
+
+SCENES = discover_scenes()
+
+
+def _params(cases) -> list:
+    return [pytest.param(c, id=c.id, marks=pytest.mark.xdist_group(c.id)) for c in cases]
+
+
+def _single_run_scenes(heuristic: str) -> list[SceneCase]:
+    """Scenes that play one run of this algorithm (named in their own class body)."""
+    return [c for c in SCENES if c.cls is not None and vars(c.cls).get("algorithm") == heuristic
+            and not getattr(c.cls, "runs", None)]
+
+
+# --- builds (cached for the session) -------------------------------------------------------------
+
+_graphs: dict[tuple[str, tuple], str] = {}
+
+
+def graph(case: SceneCase, env: dict | None = None) -> str:
+    """The scene graph of a case for an environment (default: its default input), built once."""
+    env = {**DEFAULT_ENV, **(env or {})}
+    key = (case.id, tuple(sorted(env.items(), key=lambda kv: kv[0])))
+    if key not in _graphs:
+        _graphs[key] = build_graph(case.scene_class(), env)
+    return _graphs[key]
+
+
+def skip_if_heavy(case: SceneCase, request) -> None:
+    """Skip a rebuild of a long scene unless --runslow (its snapshot test still runs)."""
+    if request.config.getoption("--runslow"):
+        return
+    count = sum(len(p["animations"]) for p in json.loads(graph(case))["plays"])
+    if count > HEAVY_ANIMATIONS:
+        pytest.skip(f"{case.id} plays {count} animations: rebuilt only with --runslow")
+
+
+def assert_same(actual: str, expected: str, what: str) -> None:
+    """Equal texts, or a short unified diff of where they part."""
+    if actual == expected:
+        return
+    diff = difflib.unified_diff(expected.splitlines(), actual.splitlines(), "expected", "actual",
+                                n=2, lineterm="")
+    shown = list(diff)[:60]
+    pytest.fail(f"{what}:\n" + "\n".join(shown))
+
+
+def nodes(graph_json: str, *, final_only: bool = False) -> Iterator[dict]:
+    """Every mobject node of a graph (animations' mobjects and targets, and the final ones)."""
+    data = json.loads(graph_json)
+
+    def walk(node):
+        yield node
+        for child in node.get("submobjects", ()):
+            yield from walk(child)
+
+    def animation(node):
+        for key in ("mobject", "target"):
+            if key in node:
+                yield from walk(node[key])
+        for child in node.get("animations", ()):
+            yield from animation(child)
+
+    if not final_only:
+        for play in data["plays"]:
+            for anim in play["animations"]:
+                yield from animation(anim)
+    for mobject in data.get("final", ()):
+        yield from walk(mobject)
+
+
+# --- snapshots -----------------------------------------------------------------------------------
+
+
+class JSONText(SingleFileSnapshotExtension):
+    """One readable JSON file per snapshot, written as the text the graph already is."""
+
+    file_extension = "json"
+    _write_mode = WriteMode.TEXT
+
+
+@pytest.fixture
+def snapshot_json(snapshot):
+    return snapshot.use_extension(JSONText)
+
+
+# --- the tests -------------------------------------------------------------------------------------
+
+
+def test_scenes_are_discovered():
+    names = {c.name for c in SCENES}
+    assert {"PolygonScene", "Scaling"} <= names, names
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_scene_graph_matches_snapshot(case, snapshot_json):
+    assert graph(case) == snapshot_json
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_same_input_gives_identical_graph(case, request):
+    skip_if_heavy(case, request)
+    again = build_graph(case.scene_class(), DEFAULT_ENV)
+    assert_same(again, graph(case), f"{case.id} built twice differs")
+
+
+def _save_logs(cls: type[Scene], folder: Path) -> str | None:
+    """The logs the scene plays, saved as JSON; the ``TREX_LOG`` value that replays them
+    (paths joined with ``os.pathsep`` for a scene of several runs), or None if it plays none."""
+    with environment(DEFAULT_ENV), tempconfig({"dry_run": True, "media_dir": str(folder),
+                                               "verbosity": "WARNING"}):
+        scene = cls(skip_animations=True)
+        if callable(getattr(scene, "logs", None)):
+            logs = scene.logs()
+        elif callable(getattr(scene, "log", None)):
+            logs = [scene.log()]
+        else:
+            return None
+    paths = []
+    for k, log in enumerate(logs):
+        path = folder / f"log-{k}.json"
+        log.save(path)
+        paths.append(str(path))
+    return os.pathsep.join(paths)
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_replayed_log_gives_the_live_graph(case, tmp_path, request):
+    skip_if_heavy(case, request)
+    saved = _save_logs(case.scene_class(), tmp_path)
+    if saved is None:
+        pytest.skip(f"{case.id} plays no log")
+    before = os.environ.get("TREX_LOG")
+    replayed = build_graph(case.scene_class(), {**DEFAULT_ENV, "TREX_LOG": saved})
+    assert os.environ.get("TREX_LOG") == before  # restored after the build
+    assert_same(replayed, graph(case), f"{case.id} replayed from its saved log differs")
+
+
+def _expected_crossed_edge(heuristic: str, polygon_name: str) -> str:
+    if polygon_name == "counterexample":
+        return "E–A"  # the seed's counterexample: BD crosses edge E–A
+    # Computed independently of any scene: the heuristic's claim, checked exactly.
+    polygon = read_polygon(polygon_name)
+    claim = find_diagonal(polygon, heuristic)
+    verdict = is_inner_diagonal(polygon, *claim.pair)
+    assert not verdict.ok and verdict.edge, f"{heuristic} on {polygon_name}: {verdict}"
+    return "–".join(polygon.labels[k] for k in verdict.edge)
+
+
+@pytest.mark.parametrize("heuristic", WRONG)
+def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
+    polygon = COUNTEREXAMPLES[heuristic]
+    cases = _single_run_scenes(heuristic)
+    if not cases:
+        pytest.fail(f"no scene in scenes/ plays the wrong heuristic {heuristic!r}")
+    expected = f"edge:{_expected_crossed_edge(heuristic, polygon)}"
+    for case in cases:
+        env = {} if case.cls.polygon == polygon else {"TREX_POLYGON": polygon}
+        text = graph(case, env)
+        rejected_edges = {n["name"] for n in nodes(text)
+                          if n["name"].startswith("edge:") and n["role"] == "rejected"}
+        assert rejected_edges == {expected}, f"{case.id} on {polygon}"
+        final = list(nodes(text, final_only=True))
+        assert any(n["name"] == expected and n["role"] == "rejected" for n in final), case.id
+        assert any(n.get("text") == "✗" and n["role"] == "rejected" for n in final), case.id
+
+
+class _CopyHeavy(Scene):
+    """Text copied by fades, transforms and ``.animate``: what the accelerations touch."""
+
+    def construct(self):
+        title = Text("Copies of glyphs", font="DejaVu Sans", font_size=30)
+        line = Text("A → B", font="DejaVu Sans Mono", font_size=20).shift(DOWN)
+        self.play(FadeIn(title), Write(line))
+        self.play(title.animate.set_color("#4cc46b").shift(UP), Indicate(line, color="#ef4b4b"))
+        again = Text("Copies of glyphs", font="DejaVu Sans", font_size=30).to_edge(DOWN)
+        self.play(Transform(line, again), FadeOut(title))
+        self.wait(0.5)
+
+
+def test_quick_copies_change_nothing():
+    """The build accelerations (``metaphors.snapshot.quick_copies``) give the same graph."""
+    fast = build_graph(_CopyHeavy)
+    assert_same(fast, build_graph(_CopyHeavy, fast=False), "fast and plain builds differ")
+    assert_same(build_graph(_CopyHeavy), fast, "a second fast build (SVG cache warm) differs")
