@@ -171,5 +171,6 @@ def monotone(polygon: Polygon) -> Triangulation:
     diagonals = make_monotone(polygon)
     triangles = []
     for piece in monotone_pieces(polygon, diagonals):
-        triangles.extend(triangulate_monotone_piece(polygon, piece))
+        with tracing.alive(piece):  # drawn while the stack triangulates it
+            triangles.extend(triangulate_monotone_piece(polygon, piece))
     return finished(triangles, steps=len(diagonals), diagonals=len(diagonals))

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from metaphors import basics, clock, generic, gravity, sweep, water
+from metaphors import basics, clock, fruit, generic, gravity, monotone, sweep, water
 
 PERFORMERS = {
     "polygon": basics.polygon,
@@ -24,6 +24,14 @@ PERFORMERS = {
     "sweep": sweep.sweep,
     "call": generic.call,  # a heuristic of one's own: its traced calls and shapes
     "shape": generic.shape,
+    "ear-test": fruit.ear_test,
+    "clip": fruit.clip,
+    "last-slice": fruit.last_slice,
+    "good": fruit.good,
+    "classify": monotone.classify,
+    "monotone-diagonal": monotone.monotone_diagonal,
+    "pieces": monotone.pieces,
+    "stack": monotone.stack,
 }
 
 

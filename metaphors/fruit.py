@@ -95,3 +95,13 @@ def clip(board, beat) -> None:
 
 
 last_slice = clip
+
+
+def good(board, beat) -> None:
+    """Prune and search: the good sub-polygon kept, tinted; the previous one fades."""
+    theme = board.theme
+    region = tag(MPolygon(*[board.at(p) for p in beat.data["points"]], color=theme.called,
+                          stroke_width=theme.stroke, fill_color=theme.called,
+                          fill_opacity=theme.piece_opacity), "called", "good")
+    board.play(beat, *board.drop("good"), FadeIn(region), run_time=1.2)
+    board.keep("good", region)

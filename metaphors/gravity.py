@@ -37,7 +37,7 @@ from metaphors.layout import METAPHOR
 from metaphors.panel import tag
 
 #: board objects that stay put on screen when the polygon turns (keys of ``board.objects``)
-FIXED = ("gravity",)
+FIXED = ("gravity", "plate", "counter")  # and every slice on the plate (fruit)
 #: things that keep their size and stay upright when the picture turns and zooms
 _UPRIGHT = (Text, Circle)
 
@@ -62,6 +62,7 @@ def _fit_zoom(board, angle: float) -> float:
 def _movers(board) -> list:
     """What turns with the polygon: outline, vertices, metaphor objects (not the fixed ones)."""
     fixed = [board.objects.get(k) for k in FIXED]
+    fixed += [m for k, m in board.objects.items() if k.startswith("slice:")]
     return [m for m in board.left_group().submobjects if not any(m is f for f in fixed)]
 
 

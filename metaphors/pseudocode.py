@@ -13,7 +13,7 @@ import inspect
 import textwrap
 from functools import cache
 
-from geometry import ears
+from geometry import ears, monotone, prune_search
 from geometry import gravity as gravity_module
 from geometry import triangulate as triangulate_module
 from geometry.diagonals import HEURISTICS
@@ -25,6 +25,8 @@ def _functions() -> dict:
     found["divide_and_conquer"] = triangulate_module.divide_and_conquer.__wrapped__
     found["ear-clipping-naive"] = ears.ear_clipping_naive.__wrapped__
     found["ear-clipping"] = ears.ear_clipping.__wrapped__
+    found["monotone"] = monotone.monotone.__wrapped__
+    found["prune-and-search"] = prune_search.prune_and_search.__wrapped__
     return found
 
 

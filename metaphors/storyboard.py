@@ -150,6 +150,28 @@ class _Walk:
         self.shown_code = shown_code
         self.user = log.meta.get("user_heuristic")  # a heuristic of one's own: generic beats
         self.drawn: set[str] = set()  # keys of the shapes the generic beats drew
+        self.clipped: list[list[str]] = []  # the ears cut so far (fruit)
+
+    def entered_after(self, event: Event, key: str) -> dict:
+        """The state with which object `key` enters the log after `event`."""
+        for later in self.log.events[event.seq:]:
+            if later.kind == "enter" and later.target == key:
+                return later.state
+        return self.live.get(key, {})
+
+    def root_points(self) -> dict[str, list]:
+        """Label → point of the first polygon of the log."""
+        for event in self.log.events:
+            if event.kind == "enter" and event.target.startswith("P("):
+                return dict(zip(event.state["labels"], event.state["points"], strict=True))
+        return {}
+
+    def fruit_polygon(self, call: Event, ret: Event):
+        """Labels and points of the polygon the ear clipping runs on (its first state)."""
+        for event in self.log.events:
+            if event.kind == "enter" and event.target.startswith("P("):
+                return event.state["labels"], event.state["points"]
+        return None
 
     def code_line(self, event: Event) -> int | None:
         """The line lit in the shown function: the line of its direct callee, or of the event."""
@@ -260,6 +282,15 @@ def _return_beats(walk: _Walk, ret: Event) -> Iterator[Beat]:
         yield walk.beat(action, _metaphor_caption(action, data), call, data=data, **kw)
     elif ret.name == "claim":
         yield from _claim_beats(walk, call, walk.live[ret.result["ref"]], line)
+    elif ret.name in SWEEP_STEPS:
+        yield from _monotone_beats(walk, call, ret, kw)
+    elif ret.name == "good_subpolygon":
+        state = walk.entered_after(ret, ret.result["ref"])
+        yield walk.beat("good", "A good sub-polygon: one cut edge, about half the vertices; "
+                        "its middle vertex is tested next", call,
+                        data={"points": state["points"], "labels": state["labels"]}, **kw)
+    elif ret.name in FRUIT_STEPS:
+        yield from _fruit_beats(walk, call, ret, kw)
     elif ret.name == "split":
         pieces = [r["ref"] for r in ret.result]
         entered = {e.target: e.state for e in walk.log.events[ret.seq:]
@@ -374,7 +405,12 @@ def _claim_polygon(walk: _Walk) -> Polygon | None:
         return None
     state = walk.live.get(walk.heuristic_polygon[-1])
     if state is None:
-        return None
+        # A sub-polygon the algorithm did not log (what ear clipping left): it is cut from the
+        # whole polygon by inner diagonals, so a diagonal inside it is inside the whole too.
+        where = walk.root_points()
+        if not where:
+            return None
+        state = {"points": list(where.values()), "labels": list(where)}
     return Polygon(
         points=tuple(tuple(p) for p in state["points"]),
         labels=tuple(state["labels"]),
@@ -384,3 +420,91 @@ def _claim_polygon(walk: _Walk) -> Polygon | None:
 
 def _polygon_data(state: dict) -> dict:
     return {"points": state["points"], "labels": state["labels"]}
+
+
+# --- fruit: ear clipping ---------------------------------------------------------------------------
+
+FRUIT_STEPS = {"is_ear", "clip_ear", "ear-clipping", "ear-clipping-naive"}
+
+
+def _fruit_beats(walk: _Walk, call: Event, ret: Event, kw: dict) -> Iterator[Beat]:
+    """An ear test, a slice cut off, and at the end the last slice (the triangle left over)."""
+    if ret.name == "is_ear":
+        v, ear = show(call.args["v"]), bool(ret.result)
+        caption = f"Is {v} an ear? " + ("yes: its triangle holds no other vertex" if ear
+                                         else "no: a cut between its neighbours is not a clean slice")
+        kw["roles"] = {v: "result" if ear else "rejected"}
+        yield walk.beat("ear-test", caption, call, data={"vertex": v, "ear": ear}, **kw)
+        return
+    fruit = walk.fruit_polygon(call, ret)
+    if fruit is None:
+        return
+    labels, points = fruit
+    if ret.name == "clip_ear":
+        corners = [show(r) for r in ret.result]
+        walk.clipped.append(corners)
+        walk.claims += 1
+        yield walk.beat("clip", _slice_caption(corners, len(walk.clipped), len(labels)), call,
+                        data=_slice_data(corners, labels, points, walk.clipped), **kw)
+        return
+    gone = {c[1] for c in walk.clipped}
+    corners = [x for x in labels if x not in gone]
+    if len(corners) == 3:
+        walk.clipped.append(corners)
+        yield walk.beat("last-slice", _slice_caption(corners, len(walk.clipped), len(labels)),
+                        call, data=_slice_data(corners, labels, points, walk.clipped), **kw)
+
+
+def _slice_caption(corners: list[str], k: int, n: int) -> str:
+    return f"Slice {''.join(corners)}: {k} / {n - 2} slices"
+
+
+def _slice_data(corners, labels, points, clipped) -> dict:
+    where = dict(zip(labels, points, strict=True))
+    gone = {c[1] for c in clipped[:-1]}
+    return {
+        "corners": corners,
+        "points": [where[c] for c in corners],
+        "k": len(clipped),
+        "total": len(labels) - 2,
+        # what is left of the fruit once this slice is off (empty after the last one)
+        "rest": [where[x] for x in labels if x not in gone | {corners[1]}]
+        if len(clipped) < len(labels) - 2 else [],
+    }
+
+
+# --- monotone: the sweep, the partition, the stack ------------------------------------------------
+
+SWEEP_STEPS = {"classify_vertex", "add_diagonal", "monotone_pieces", "triangulate_monotone_piece"}
+KINDS = {
+    "start": "both neighbours below, interior below: a start vertex",
+    "end": "both neighbours above, interior above: an end vertex",
+    "split": "both neighbours below, interior above: a split vertex needs a diagonal up",
+    "merge": "both neighbours above, interior below: a merge vertex needs a diagonal down",
+    "regular": "one neighbour above, one below: a regular vertex",
+}
+
+
+def _monotone_beats(walk: _Walk, call: Event, ret: Event, kw: dict) -> Iterator[Beat]:
+    where = walk.root_points()
+    labels = list(where)
+    if ret.name == "classify_vertex":
+        v, kind = show(call.args["v"]), ret.result
+        kw["roles"] = {v: "rejected" if kind in ("split", "merge") else "called"}
+        yield walk.beat("classify", f"{v}: {KINDS.get(kind, kind)}", call,
+                        data={"vertex": v, "kind": kind, "at": where[v]}, **kw)
+    elif ret.name == "add_diagonal":
+        u, w = (labels[k] for k in ret.result)
+        walk.claims += 1
+        yield walk.beat("monotone-diagonal", f"Diagonal {u}{w} removes a split or merge vertex",
+                        call, data={"labels": [u, w], "points": [where[u], where[w]]}, **kw)
+    elif ret.name == "monotone_pieces":
+        pieces = [walk.entered_after(call, r["ref"]) for r in ret.result]
+        yield walk.beat("pieces", f"The diagonals cut the polygon into {len(pieces)} y-monotone "
+                        "pieces", call, data={"pieces": [p.get("points", []) for p in pieces]},
+                        **kw)
+    else:
+        triangles = [[where[labels[k]] for k in t] for t in ret.result]
+        yield walk.beat("stack", f"The stack triangulates a monotone piece: "
+                        f"{len(triangles)} triangle{'s' if len(triangles) != 1 else ''}", call,
+                        data={"triangles": triangles}, **kw)
