@@ -6,8 +6,9 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 # Debian packages manim needs to build pycairo/manimpango, the font the theme uses,
-# and xdg-open (manim's preview crashes after rendering without it).
-DEB_PACKAGES := libpango1.0-dev pkg-config fonts-dejavu-core xdg-utils
+# xdg-open (manim's preview crashes after rendering without it), and chromium (the `trex player`
+# test drives the page in it headless, through playwright; no browser is ever downloaded).
+DEB_PACKAGES := libpango1.0-dev pkg-config fonts-dejavu-core xdg-utils chromium
 
 .PHONY: demo test lint system-deps bench clean
 
@@ -37,6 +38,7 @@ system-deps:
 	pkg-config --exists pangocairo 2>/dev/null || missing="$$missing libpango1.0-dev pkg-config"; \
 	test -e /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf || missing="$$missing fonts-dejavu-core"; \
 	command -v xdg-open >/dev/null || missing="$$missing xdg-utils"; \
+	test -x /usr/bin/chromium || missing="$$missing chromium"; \
 	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
 	    echo "installing Debian packages:$$missing"; \

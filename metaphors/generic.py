@@ -39,11 +39,12 @@ _PREFIX = "shape:"
 
 
 def board_for(scene: Scene, log, beats, title: str, theme) -> Board:
-    """The board a log plays on: its first beat's polygon; the log's own ``code`` (a user's
-    source, ``[[line, text], …]``) in the panel when it carries one; the title fitted."""
+    """The board a log plays on, as :class:`~metaphors.scene.TraceScene` builds it (the first
+    beat's polygon, the scene's ``metaphor_box``), plus the log's own ``code`` (a user's source,
+    ``[[line, text], …]``) in the panel when it carries one, and the title fitted to the frame."""
     first = beats[0]
     board = Board(scene, first.data["points"], first.data["labels"], log.meta.get("shown"),
-                  title, theme)
+                  title, theme, getattr(scene, "metaphor_box", METAPHOR))
     code = log.meta.get("code")
     if code:
         show_code(board.panel, code)
@@ -257,15 +258,12 @@ class GenericScene:
     """Mixed into a TraceScene: plays its log on :func:`board_for` (the user's source shown);
     keeps the beats and the board (``trex_beats``, ``trex_board``) for tests."""
 
-    def construct(self) -> None:
+    def play_log(self, log, title: str) -> Board:
         from metaphors.actions import perform
-        from metaphors.storyboard import storyboard
 
-        self.camera.background_color = self.theme.background
-        log = self.log()
-        beats = storyboard(log, self.pacing)
-        board = board_for(self, log, beats, self.title, self.theme)
+        beats = self.beats(log)
+        board = board_for(self, log, beats, title, self.theme)
         self.trex_beats, self.trex_board = beats, board
         for beat in beats:
             perform(board, beat)
-        self.wait(1.0)
+        return board

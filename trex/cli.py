@@ -20,6 +20,7 @@ from geometry.samples import make_sample
 from trex.exercises_command import COMMANDS as EXERCISE_COMMANDS
 from trex.inputs import EXIT_INVALID, error_line, fail, first_line, try_load
 from trex.lecture_command import COMMANDS as LECTURE_COMMANDS
+from trex.player_command import COMMANDS as PLAYER_COMMANDS
 from trex.render_command import COMMANDS as RENDER_COMMANDS
 from trex.run_commands import COMMANDS
 
@@ -140,7 +141,8 @@ def sample(name: str, n: int | None, seed: int, output: str | None) -> None:
         fail(f"{output}: cannot write: {exc.strerror or error_line(exc)}")
 
 
-for _command in (*COMMANDS, *RENDER_COMMANDS, *EXERCISE_COMMANDS, *LECTURE_COMMANDS):
+for _command in (*COMMANDS, *RENDER_COMMANDS, *EXERCISE_COMMANDS, *LECTURE_COMMANDS,
+                 *PLAYER_COMMANDS):
     main.add_command(_command)
 
 if __name__ == "__main__":
