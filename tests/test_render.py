@@ -1,0 +1,149 @@
+"""Pixels and video: two last-frame comparisons, one real low-quality render read back with PyAV.
+
+The last-frame tests use manim's ``frames_comparison``; their control frames live in
+``tests/control_data/render/`` and are rewritten with ``pytest tests/test_render.py --set_test``
+(after a deliberate visual change). ``tests/conftest.py`` lets them run on Debian's cairo 1.16.
+
+The render test runs ``manim -ql scenes/gravity.py Gravity`` into a temporary media directory
+and checks the video (854×480, 15 fps, duration and frame count from the scene's own plays)
+and the ``.srt`` beside it (one well-formed cue per caption change, in order, at the time of
+the play that changed it).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import av
+import pytest
+from manim.utils.testing.frames_comparison import frames_comparison
+
+from metaphors.snapshot import build_graph, environment, quick_copies
+
+__module_test__ = "render"
+
+ROOT = Path(__file__).resolve().parents[1]
+DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
+
+#: The scene rendered for real.
+RENDERED = ("gravity", "Gravity")
+FPS, WIDTH, HEIGHT = 15, 854, 480
+
+
+def scene_class(file: str, name: str):
+    """A Scene class of ``scenes/<file>.py`` (imported by path: scenes/ is not a package)."""
+    module_name = f"trex_scenes_{file}"
+    module = sys.modules.get(module_name)
+    if module is None:
+        spec = importlib.util.spec_from_file_location(module_name, ROOT / "scenes" / f"{file}.py")
+        module = importlib.util.module_from_spec(spec)
+        sys.modules[module_name] = module
+        spec.loader.exec_module(module)
+    return getattr(module, name)
+
+
+# --- last frames ---------------------------------------------------------------------------------
+
+PolygonScene = scene_class("polygon", "PolygonScene")
+Scaling = scene_class("scaling", "Scaling")
+
+
+@frames_comparison(last_frame=True, base_scene=PolygonScene)
+def test_polygon_last_frame(scene):
+    with environment(DEFAULT_ENV):
+        PolygonScene.construct(scene)
+    scene.wait()
+
+
+@frames_comparison(last_frame=True, base_scene=Scaling)
+def test_scaling_last_frame(scene):
+    with environment(DEFAULT_ENV), quick_copies():  # same mobjects, cheaper copies
+        Scaling.construct(scene)
+    scene.wait()
+
+
+# --- one real render -----------------------------------------------------------------------------
+
+_CUE = re.compile(
+    r"(\d+)\n(\d\d):(\d\d):(\d\d),(\d{3}) --> (\d\d):(\d\d):(\d\d),(\d{3})\n(.+?)(?:\n\n|\n?$)",
+    re.S,
+)
+
+
+def parse_srt(text: str) -> list[tuple[int, float, float, str]]:
+    """(number, start, end, text) per cue; the whole file must be cues and nothing else."""
+    cues, position = [], 0
+    text = text.replace("\r\n", "\n").strip("\n") + "\n"
+    for match in _CUE.finditer(text):
+        assert match.start() == position, f"not a cue at {text[position:position + 60]!r}"
+        g = match.groups()
+        start = int(g[1]) * 3600 + int(g[2]) * 60 + int(g[3]) + int(g[4]) / 1000
+        end = int(g[5]) * 3600 + int(g[6]) * 60 + int(g[7]) + int(g[8]) / 1000
+        cues.append((int(g[0]), start, end, g[9].strip()))
+        position = match.end()
+    assert position == len(text), f"trailing text {text[position:position + 60]!r}"
+    return cues
+
+
+def frames_of(run_time: float) -> int:
+    """Frames manim renders for a play of this run time at FPS."""
+    return math.ceil(round(run_time * FPS, 6))
+
+
+@pytest.fixture(scope="module")
+def rendered(tmp_path_factory):
+    file, name = RENDERED
+    media = tmp_path_factory.mktemp("media")
+    env = {k: v for k, v in os.environ.items() if k not in DEFAULT_ENV}
+    # Caching off: a first render in a fresh directory has nothing to reuse, and hashing
+    # every play's mobjects would only slow it down.
+    command = [sys.executable, "-m", "manim", "-ql", "--disable_caching", "--media_dir",
+               str(media), f"scenes/{file}.py", name]
+    done = subprocess.run(command, cwd=ROOT, env=env, capture_output=True, text=True,
+                          timeout=600)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    video = media / "videos" / file / f"{HEIGHT}p{FPS}" / f"{name}.mp4"
+    assert video.is_file(), sorted(str(p) for p in media.rglob("*"))
+    graph = json.loads(build_graph(scene_class(file, name), DEFAULT_ENV))
+    return video, graph
+
+
+def test_render_video_stream(rendered):
+    video, graph = rendered
+    expected_frames = sum(frames_of(p["run_time"]) for p in graph["plays"])
+    with av.open(str(video)) as container:
+        stream = container.streams.video[0]
+        assert (stream.codec_context.width, stream.codec_context.height) == (WIDTH, HEIGHT)
+        assert stream.guessed_rate == FPS
+        assert float(stream.average_rate) == pytest.approx(FPS, rel=1e-3)
+        frames = sum(1 for _ in container.decode(stream))
+        duration = float(stream.duration * stream.time_base)
+    assert abs(frames - expected_frames) <= 1, (frames, expected_frames)
+    assert duration == pytest.approx(frames / FPS, abs=1.5 / FPS)
+
+
+def test_render_subtitles(rendered):
+    video, graph = rendered
+    srt = video.with_suffix(".srt")
+    assert srt.is_file()
+    cues = parse_srt(srt.read_text(encoding="utf-8"))
+    # One cue per caption change, at the time of the play that changed it.
+    expected, t = [], 0.0
+    for play in graph["plays"]:
+        if play["subcaption"]:
+            expected.append((t, play["subcaption"]))
+        t += frames_of(play["run_time"]) / FPS
+    assert [c[3] for c in cues] == [text for _, text in expected]
+    assert [c[0] for c in cues] == list(range(1, len(cues) + 1))
+    for (_, start, end, text), (at, _) in zip(cues, expected, strict=True):
+        assert text and 0 <= start < end <= t + 1 / FPS, (start, end, text)
+        assert start == pytest.approx(at, abs=1.5 / FPS), text
+    starts = [c[1] for c in cues]
+    assert starts == sorted(starts)
