@@ -1,0 +1,214 @@
+"""How fast our scenes render, beside bare manim doing the same animations.
+
+In one run, all at ``-ql`` (854×480, 15 fps), each render into a fresh temporary media
+directory, in this process (so imports are not counted):
+
+1. ``scenes/gravity.py`` (``Gravity``) rendered with caching off: video seconds per wall second;
+2. a bare manim scene with the same plays — the same animation classes, as many per play, with
+   the same run times — on simple mobjects (squares), built from Gravity's scene graph
+   (:mod:`metaphors.snapshot`): video seconds per wall second (and, for comparison, ours
+   again under :func:`metaphors.snapshot.quick_copies`);
+3. the dry-run build time of every scene in ``scenes/*.py`` (what ``tests/test_scenes.py``
+   pays per build, under :func:`metaphors.snapshot.quick_copies`; with ``--plain`` also
+   without it, which takes minutes);
+4. Gravity rendered twice with manim's cache on, in one media directory: the time of the
+   second render and how many plays it took from the cache ("Using cached data" in manim's
+   log; the cache key hashes the mobjects and animations, so every play hits only if the
+   scene builds the same points every time). Target: ≤ 2 s.
+
+It prints numbers and never fails on timings. The last line is exactly
+``render throughput ratio vs bare manim: N.NN`` (ours ÷ bare; target ≥ 0.8).
+
+Run from the repository root: ``python bench/render.py`` (``--skip-builds`` leaves out 3).
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import inspect
+import logging
+import shutil
+import sys
+import tempfile
+import time
+from contextlib import nullcontext
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+if str(ROOT) not in sys.path:  # run as ``python bench/render.py``
+    sys.path.insert(0, str(ROOT))
+
+import av  # noqa: E402
+import manim  # noqa: E402
+from manim import RED, Scene, Square, tempconfig  # noqa: E402
+
+from metaphors.snapshot import build, environment, quick_copies, scene_graph  # noqa: E402
+
+#: The scene rendered.
+SCENE_FILE, SCENE_NAME = "gravity", "Gravity"
+#: A scene's default input: no saved log, no polygon override.
+DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
+
+
+# --- scenes ----------------------------------------------------------------------------------------
+
+
+def load_module(file: str):
+    name = f"trex_scenes_{file}"
+    if name not in sys.modules:
+        spec = importlib.util.spec_from_file_location(name, ROOT / "scenes" / f"{file}.py")
+        module = importlib.util.module_from_spec(spec)
+        sys.modules[name] = module
+        spec.loader.exec_module(module)
+    return sys.modules[name]
+
+
+def all_scenes() -> list[tuple[str, type[Scene]]]:
+    found = []
+    for path in sorted((ROOT / "scenes").glob("*.py")):
+        if path.name.startswith("_"):
+            continue
+        module = load_module(path.stem)
+        for name, value in sorted(vars(module).items()):
+            if (inspect.isclass(value) and issubclass(value, Scene)
+                    and value.__module__ == module.__name__):
+                found.append((f"{path.stem}.{name}", value))
+    return found
+
+
+def bare_scene(plays: list[dict]) -> tuple[type[Scene], list[str]]:
+    """A Scene class playing the same animation classes and run times on plain squares;
+    also the class names it had to stand in for (played as ``FadeIn``)."""
+    stand_ins: list[str] = []
+
+    def animation(node: dict, k: int):
+        kind, run_time = node["type"], node["run_time"]
+        square = Square(side_length=0.5).shift([(k % 12) - 5.5, (k // 12 % 6) - 2.5, 0])
+        if kind == "Wait":
+            return manim.Wait(run_time=run_time)
+        if kind == "_MethodAnimation":
+            return square.animate(run_time=run_time).set_color(RED).shift([0.1, 0, 0])
+        if kind in ("AnimationGroup", "Succession", "LaggedStart"):  # the same members inside
+            members = [animation(child, k + j) for j, child in enumerate(node["animations"])]
+            return getattr(manim, kind)(*members, run_time=run_time)
+        cls = getattr(manim, kind, None)
+        try:
+            if cls is None:
+                raise TypeError(kind)
+            if kind == "Flash":
+                return cls(square.get_center(), run_time=run_time)
+            if "target" in node:  # a transform given its target (Transform, ReplacementTransform …)
+                return cls(square, Square(side_length=0.7).move_to(square), run_time=run_time)
+            return cls(square, run_time=run_time)
+        except TypeError:
+            stand_ins.append(kind)
+            return manim.FadeIn(square, run_time=run_time)
+
+    class Bare(Scene):
+        def construct(self):
+            for play in plays:
+                self.play(*[animation(a, k) for k, a in enumerate(play["animations"])])
+                self.clear()
+
+    return Bare, stand_ins
+
+
+# --- rendering -------------------------------------------------------------------------------------
+
+
+class CacheHits(logging.Handler):
+    """Counts manim's "Using cached data" log records."""
+
+    def __init__(self):
+        super().__init__(logging.INFO)
+        self.hits = 0
+
+    def emit(self, record):
+        if "Using cached data" in record.getMessage():
+            self.hits += 1
+
+
+def render(cls: type[Scene], media: Path, caching: bool, quick: bool = False
+           ) -> tuple[float, float, int]:
+    """Render at -ql into ``media``: (wall seconds, video seconds, cache hits); ``quick``
+    renders under :func:`metaphors.snapshot.quick_copies` (same frames, cheaper copies)."""
+    settings = {"quality": "low_quality", "media_dir": str(media), "disable_caching": not caching,
+                "verbosity": "INFO", "progress_bar": "none"}
+    counter = CacheHits()
+    log = logging.getLogger("manim")
+    quiet = [(h, h.level) for h in log.handlers]
+    for handler, _ in quiet:  # manim's console: warnings only; the counter sees INFO
+        handler.setLevel(logging.WARNING)
+    log.addHandler(counter)
+    try:
+        with environment(DEFAULT_ENV), tempconfig(settings), (
+                quick_copies() if quick else nullcontext()):
+            start = time.perf_counter()
+            cls().render()
+            wall = time.perf_counter() - start
+    finally:
+        log.removeHandler(counter)
+        for handler, level in quiet:
+            handler.setLevel(level)
+    videos = [p for p in media.rglob(f"{cls.__name__}.mp4") if "partial" not in str(p)]
+    with av.open(str(videos[0])) as container:
+        seconds = container.duration / av.time_base
+    return wall, seconds, counter.hits
+
+
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--skip-builds", action="store_true", help="no dry-run build times")
+    parser.add_argument("--plain", action="store_true",
+                        help="also time every build without quick_copies (slow)")
+    args = parser.parse_args(argv)
+    logging.getLogger("manim").setLevel(logging.INFO)
+    scratch = Path(tempfile.mkdtemp(prefix="trex-bench-render-"))
+    try:
+        ours_cls = getattr(load_module(SCENE_FILE), SCENE_NAME)
+        scene, plays = build(ours_cls, DEFAULT_ENV)
+        graph = scene_graph(plays, scene)["plays"]
+        bare_cls, stand_ins = bare_scene(graph)
+        kinds = sorted({a["type"] for p in graph for a in p["animations"]})
+        count = sum(len(p["animations"]) for p in graph)
+        print(f"{SCENE_NAME}: {len(graph)} plays, {count} animations ({', '.join(kinds)})")
+        if stand_ins:
+            print(f"  bare scene plays FadeIn for: {', '.join(sorted(set(stand_ins)))}")
+
+        render(bare_cls, scratch / "warm", caching=False)  # encoder and caches warm, not counted
+        ours_wall, ours_video, _ = render(ours_cls, scratch / "ours", caching=False)
+        bare_wall, bare_video, _ = render(bare_cls, scratch / "bare", caching=False)
+        ours_rate, bare_rate = ours_video / ours_wall, bare_video / bare_wall
+        print(f"ours  (-ql, no cache): {ours_video:6.2f} s video in {ours_wall:6.2f} s "
+              f"= {ours_rate:.2f} video s / wall s")
+        print(f"bare  (-ql, no cache): {bare_video:6.2f} s video in {bare_wall:6.2f} s "
+              f"= {bare_rate:.2f} video s / wall s")
+        quick_wall, quick_video, _ = render(ours_cls, scratch / "quick", caching=False, quick=True)
+        print(f"ours with quick_copies (same frames; not how scenes render today): "
+              f"{quick_video / quick_wall:.2f} video s / wall s, ratio "
+              f"{quick_video / quick_wall / bare_rate:.2f}")
+
+        if not args.skip_builds:
+            print("dry-run build, s            quick copies" + ("    plain" if args.plain else ""))
+            for name, cls in all_scenes():
+                times = []
+                for fast in (True, False) if args.plain else (True,):
+                    start = time.perf_counter()
+                    build(cls, DEFAULT_ENV, fast=fast)
+                    times.append(time.perf_counter() - start)
+                print(f"  {name:38s}" + "".join(f"{t:9.2f}" for t in times))
+
+        cached = scratch / "cached"
+        first_wall, _, first_hits = render(ours_cls, cached, caching=True)
+        second_wall, _, hits = render(ours_cls, cached, caching=True)
+        total = len(graph)
+        print(f"cached render: first {first_wall:.2f} s ({first_hits} hits), second "
+              f"{second_wall:.2f} s with {hits}/{total} plays from cache (target ≤ 2 s)")
+        print(f"render throughput ratio vs bare manim: {ours_rate / bare_rate:.2f}")
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
