@@ -18,14 +18,16 @@ demo: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/ruff check .
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n 2
 
 lint: $(STAMP)
 	$(BIN)/ruff check .
 
 bench: $(STAMP)
-	$(BIN)/pip install -q -e ".[bench]"
-	$(BIN)/python bench/trace_overhead.py
+	$(BIN)/python -m bench.trace_overhead
+	$(BIN)/python -m bench.algorithms
+	$(BIN)/python -m bench.render
+	$(BIN)/python -m bench.lecture
 
 $(STAMP): pyproject.toml | system-deps
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
