@@ -20,11 +20,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from geometry.predicates import Point, orient
+from geometry.predicates import ORIENT_BOUND, TINY, Point, orient  # the float filters' bounds
 
-_EPS = 2.0**-53
-_ORIENT_BOUND = (3.0 + 16.0 * _EPS) * _EPS  # Shewchuk's bound, as in geometry.predicates
-_TINY = 2.0**-900
 _SMALL = 2.0**25
 
 
@@ -34,7 +31,7 @@ def orient_many(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarra
         left = (a[0] - xs) * (b[1] - ys)
         right = (a[1] - ys) * (b[0] - xs)
         det = left - right
-        bound = _ORIENT_BOUND * (np.abs(left) + np.abs(right)) + _TINY
+        bound = ORIENT_BOUND * (np.abs(left) + np.abs(right)) + TINY
         positive, negative = det > bound, det < -bound
     signs = positive.astype(np.int8) - negative.astype(np.int8)
     unsure = np.flatnonzero(~(positive | negative))
@@ -69,7 +66,7 @@ def orient_fast(a: Point, b: Point, c: Point) -> int:
     left = (a[0] - c[0]) * (b[1] - c[1])
     right = (a[1] - c[1]) * (b[0] - c[0])
     det = left - right
-    bound = _ORIENT_BOUND * (abs(left) + abs(right)) + _TINY
+    bound = ORIENT_BOUND * (abs(left) + abs(right)) + TINY
     if det > bound:
         return 1
     if -det > bound:

@@ -38,10 +38,14 @@ import numpy as np
 import tracing
 from geometry.frame import Diagonal, claim, leftmost_vertex, triangle_at
 from geometry.polygon import Polygon, Vertex
-from geometry.predicates import compare_angle, compare_distance, in_triangle
+from geometry.predicates import (  # the float filters' bounds
+    EPS,
+    TINY,
+    compare_angle,
+    compare_distance,
+    in_triangle,
+)
 
-_EPS = 2.0**-53
-_TINY = 2.0**-900
 Exact = tuple[Fraction, Fraction]
 
 
@@ -79,7 +83,7 @@ def _dot_sign(d: tuple, g: tuple) -> int:
     (p, q), (gx, gy) = d, g
     dx, dy = q[0] - p[0], q[1] - p[1]
     value = dx * gx + dy * gy
-    bound = 4 * _EPS * (abs(dx * gx) + abs(dy * gy)) + _TINY
+    bound = 4 * EPS * (abs(dx * gx) + abs(dy * gy)) + TINY
     if value > bound:
         return 1
     if -value > bound:
@@ -150,7 +154,7 @@ def _perpendicular_edges(polygon: Polygon, down: tuple) -> bool:
     arr = np.asarray(polygon.points, dtype=float)
     d = np.roll(arr, -1, 0) - arr
     value = d[:, 0] * down[0] + d[:, 1] * down[1]
-    bound = 4 * _EPS * (np.abs(d[:, 0] * down[0]) + np.abs(d[:, 1] * down[1])) + _TINY
+    bound = 4 * EPS * (np.abs(d[:, 0] * down[0]) + np.abs(d[:, 1] * down[1])) + TINY
     unsure = np.flatnonzero(np.abs(value) <= bound)
     n = polygon.n
     return any(

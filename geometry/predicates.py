@@ -25,11 +25,11 @@ from fractions import Fraction
 
 Point = tuple[float, float]
 
-_EPS = sys.float_info.epsilon / 2  # unit round-off, 2**-53
+EPS = sys.float_info.epsilon / 2  # unit round-off, 2**-53
 # Shewchuk's bound for the 2-D orientation determinant.
-_ORIENT_BOUND = (3.0 + 16.0 * _EPS) * _EPS
+ORIENT_BOUND = (3.0 + 16.0 * EPS) * EPS
 # Below this magnitude products may have underflowed: trust nothing, go exact.
-_TINY = 2.0**-900
+TINY = 2.0**-900
 # Relative bound for sums of a few products (distances, dot products).
 _LOOSE_BOUND = 1e-12
 
@@ -62,7 +62,7 @@ def orient(a: Point, b: Point, c: Point) -> int:
     left = (a[0] - c[0]) * (b[1] - c[1])
     right = (a[1] - c[1]) * (b[0] - c[0])
     det = left - right
-    bound = _ORIENT_BOUND * (abs(left) + abs(right)) + _TINY
+    bound = ORIENT_BOUND * (abs(left) + abs(right)) + TINY
     if det > bound:
         return 1
     if -det > bound:
@@ -73,7 +73,7 @@ def orient(a: Point, b: Point, c: Point) -> int:
 def _exact_sign_of_difference(x: float, y: float, exact) -> int:
     """Sign of x - y for float approximations x, y of sums of a few products."""
     diff = x - y
-    bound = _LOOSE_BOUND * (abs(x) + abs(y)) + _TINY
+    bound = _LOOSE_BOUND * (abs(x) + abs(y)) + TINY
     if diff > bound:
         return 1
     if -diff > bound:

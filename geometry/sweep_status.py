@@ -25,11 +25,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from geometry.batch import orient_fast
-from geometry.predicates import Point
-
-_EPS = 2.0**-53
-_ORIENT_BOUND = (3.0 + 16.0 * _EPS) * _EPS  # as in geometry.predicates.orient
-_TINY = 2.0**-900
+from geometry.predicates import ORIENT_BOUND, TINY, Point  # the float filters' bounds
 
 
 class SweepStatus:
@@ -59,7 +55,7 @@ class SweepStatus:
             # inlined: this test is the inner loop of the whole sweep.
             left = (xs[k] - px) * (ys[after] - py)
             right = (ys[k] - py) * (xs[after] - px)
-            det, bound = left - right, _ORIENT_BOUND * (abs(left) + abs(right)) + _TINY
+            det, bound = left - right, ORIENT_BOUND * (abs(left) + abs(right)) + TINY
             if det > bound or (det >= -bound and self._exactly_left(k, after, v)):
                 lo = mid + 1
             else:

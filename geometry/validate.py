@@ -46,7 +46,9 @@ from geometry.errors import (
     SelfIntersectionError,
     TooFewPointsError,
 )
-from geometry.predicates import (
+from geometry.predicates import (  # the float filters' bounds
+    ORIENT_BOUND,
+    TINY,
     Contact,
     Point,
     intersection_point,
@@ -56,9 +58,6 @@ from geometry.predicates import (
 )
 from geometry.sweep import first_contact
 
-_EPS = 2.0**-53
-_ORIENT_BOUND = (3.0 + 16.0 * _EPS) * _EPS
-_TINY = 2.0**-900
 # Candidate pairs per edge beyond which the plane sweep is cheaper than deciding each pair.
 _PAIRS_PER_EDGE = 16
 # Edges in the first STRtree query (later ones grow while the pairs stay few).
@@ -132,7 +131,7 @@ def orient_array(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
         left = (a[:, 0] - c[:, 0]) * (b[:, 1] - c[:, 1])
         right = (a[:, 1] - c[:, 1]) * (b[:, 0] - c[:, 0])
         det = left - right
-        bound = _ORIENT_BOUND * (np.abs(left) + np.abs(right)) + _TINY
+        bound = ORIENT_BOUND * (np.abs(left) + np.abs(right)) + TINY
         signs = np.where(det > bound, 1, np.where(-det > bound, -1, 0))
         unsure = ~((det > bound) | (-det > bound))
     for k in np.flatnonzero(unsure):  # plain floats: numpy scalars would warn on overflow
