@@ -14,6 +14,7 @@ Run from the repository root: ``python -m bench.lecture [--chapters …] [-q l]`
 from __future__ import annotations
 
 import argparse
+import hashlib
 import importlib.util
 import json
 import subprocess
@@ -23,6 +24,15 @@ import time
 from pathlib import Path
 
 FALLBACK = "polygon,translation,scaling"  # while metaphors/lecture.py does not exist
+
+
+def frame_sums(path: Path) -> list[str]:
+    """SHA-1 of every decoded frame (x264 may vary its bits between runs, not the frames)."""
+    import av
+
+    with av.open(str(path)) as container:
+        return [hashlib.sha1(f.to_ndarray(format="rgb24").tobytes()).hexdigest()
+                for f in container.decode(video=0)]
 
 
 def timed_lecture(trex: Path, out: Path, jobs: int, quality: str,
@@ -59,11 +69,14 @@ def main(argv: list[str] | None = None) -> None:
         entries = json.loads((serial_dir / "chapters.json").read_text(encoding="utf-8"))
         same = ((serial_dir / "lecture.mp4").read_bytes()
                 == (parallel_dir / "lecture.mp4").read_bytes())
+        same_frames = (frame_sums(serial_dir / "lecture.mp4")
+                       == frame_sums(parallel_dir / "lecture.mp4"))
     for e in entries:
         print(f"  {e['number']:2d} {e['title']}: start {e['start_seconds']:.1f} s, "
               f"{e['duration_seconds']:.1f} s")
     video = sum(e["duration_seconds"] for e in entries)
-    print(f"chapters: {len(entries)}; -j 1 and -j 2 mp4 byte-identical: {same}")
+    print(f"chapters: {len(entries)}; -j 1 and -j 2 mp4: byte-identical {same}, "
+          f"decoded frames identical {same_frames}")
     print(f"lecture: {video:.1f} s of video, serial {serial:.1f} s, -j 2 {parallel:.1f} s "
           f"({serial / parallel:.2f}x)")
 

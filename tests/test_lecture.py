@@ -203,17 +203,28 @@ def test_chapter_list_starts_are_cumulative_durations(serial):
     assert f"| {assemble.format_clock(entries[2]['start_seconds'])} |" in rows[2]
 
 
-def test_parallel_gives_the_same_bytes(serial, parallel):
-    """manim's output is deterministic (same scene, same bytes), so is the joined mp4."""
+def test_parallel_gives_the_same_lecture(serial, parallel, tmp_path):
+    """-j 2 and -j 1 give the same frames, subtitles and chapter list.
+
+    manim's mp4 is not always byte-for-byte reproducible: x264 runs with sliced threads, and
+    two renders of the lecture's longer chapters (overview, ears) differed in one keyframe's
+    bits while decoding to identical frames. So the lectures are compared by decoded frame
+    checksums; bytes are compared when the chapter files came out byte-identical (they do
+    for these short scenes), and joining itself is checked to be deterministic.
+    """
     out = serial[0]
-    for a, b in zip(chapter_videos(out), chapter_videos(parallel), strict=True):
-        assert a.read_bytes() == b.read_bytes(), a.name
-    assert (out / "lecture.mp4").read_bytes() == (parallel / "lecture.mp4").read_bytes()
+    assert frame_sums(out / "lecture.mp4") == frame_sums(parallel / "lecture.mp4")
     assert (out / "lecture.srt").read_text() == (parallel / "lecture.srt").read_text()
-    serial_list = json.loads((out / "chapters.json").read_text())
-    parallel_list = json.loads((parallel / "chapters.json").read_text())
-    assert [e["start_seconds"] for e in serial_list] == [
-        e["start_seconds"] for e in parallel_list]
+    times = [[(e["start_seconds"], e["duration_seconds"]) for e in json.loads(
+        (where / "chapters.json").read_text())] for where in (out, parallel)]
+    assert times[0] == times[1]  # (titles and file names differ: --chapters names its own)
+    rejoined = tmp_path / "rejoined.mp4"
+    assert assemble.join_videos([assemble.probe(p) for p in chapter_videos(parallel)],
+                                rejoined) is None
+    assert rejoined.read_bytes() == (parallel / "lecture.mp4").read_bytes()
+    pairs = list(zip(chapter_videos(out), chapter_videos(parallel), strict=True))
+    if all(a.read_bytes() == b.read_bytes() for a, b in pairs):
+        assert (out / "lecture.mp4").read_bytes() == (parallel / "lecture.mp4").read_bytes()
 
 
 def test_bad_polygon_exits_2_before_rendering(tmp_path, monkeypatch):
