@@ -20,9 +20,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from geometry.predicates import ORIENT_BOUND, TINY, Point, orient  # the float filters' bounds
-
-_SMALL = 2.0**25
+from geometry.predicates import (  # the float filters' bounds
+    ORIENT_BOUND,
+    SMALL_INTEGER,
+    TINY,
+    Point,
+    orient,
+)
 
 
 def orient_many(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
@@ -52,42 +56,13 @@ def orient_many(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarra
     return signs
 
 
-def orient_fast(a: Point, b: Point, c: Point) -> int:
-    """:func:`geometry.predicates.orient`, deciding small-integer inputs without rationals.
-
-    The float filter cannot certify a zero, so every collinear triple would go
-    to rational arithmetic; on integer grids (collinear runs everywhere) that is
-    most of the time. With integer coordinates below 2**25 the float
-    determinant is itself exact, so its sign is the answer.
-
-    >>> orient_fast((0, 0), (1, 1), (5, 5)), orient_fast((0, 0), (1, 0), (0.5, 1e-300))
-    (0, 1)
-    """
-    left = (a[0] - c[0]) * (b[1] - c[1])
-    right = (a[1] - c[1]) * (b[0] - c[0])
-    det = left - right
-    bound = ORIENT_BOUND * (abs(left) + abs(right)) + TINY
-    if det > bound:
-        return 1
-    if -det > bound:
-        return -1
-    if _small_integer(a) and _small_integer(b) and _small_integer(c):
-        return (det > 0) - (det < 0)
-    return orient(a, b, c)
-
-
-def _small_integer(p: Point) -> bool:
-    x, y = p
-    return -_SMALL < x < _SMALL and -_SMALL < y < _SMALL and x == int(x) and y == int(y)
-
-
 def in_closed_triangle(p: Point, a: Point, b: Point, c: Point) -> bool:
     """Whether p lies in the closed counter-clockwise triangle abc (one point, exact).
 
     >>> in_closed_triangle((1, 0), (0, 0), (2, 0), (0, 2))
     True
     """
-    return orient_fast(a, b, p) >= 0 and orient_fast(b, c, p) >= 0 and orient_fast(c, a, p) >= 0
+    return orient(a, b, p) >= 0 and orient(b, c, p) >= 0 and orient(c, a, p) >= 0
 
 
 def _small_integers(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
@@ -98,9 +73,9 @@ def _small_integers(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.nd
     decides the many exact zeros of integer grids (collinear runs) at numpy speed.
     """
     ends = np.array([a[0], a[1], b[0], b[1]], dtype=float)
-    if not (np.all(np.abs(ends) < _SMALL) and np.all(ends == np.round(ends))):
+    if not (np.all(np.abs(ends) < SMALL_INTEGER) and np.all(ends == np.round(ends))):
         return np.zeros(len(xs), dtype=bool)
-    return (np.abs(xs) < _SMALL) & (np.abs(ys) < _SMALL) & (xs == np.round(xs)) & (
+    return (np.abs(xs) < SMALL_INTEGER) & (np.abs(ys) < SMALL_INTEGER) & (xs == np.round(xs)) & (
         ys == np.round(ys)
     )
 

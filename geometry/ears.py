@@ -33,8 +33,9 @@ from __future__ import annotations
 import numpy as np
 
 import tracing
-from geometry.batch import in_closed_triangle, in_triangle_many, orient_fast
+from geometry.batch import in_closed_triangle, in_triangle_many
 from geometry.polygon import Polygon, Vertex
+from geometry.predicates import orient
 from geometry.ring import Ring
 from geometry.triangles import Corners, finished, indices
 from geometry.triangulate import Triangulation
@@ -68,7 +69,7 @@ class Remaining:
 def is_ear_naive(remaining: Remaining, k: int, v: Vertex) -> bool:
     """The definition, checked against every remaining vertex: O(n)."""
     a, b, c = (remaining.points[i] for i in remaining.corners(k))
-    if orient_fast(a, b, c) <= 0:
+    if orient(a, b, c) <= 0:
         return False
     order, m = remaining.order, len(remaining.order)
     corners = {(k - 1) % m, k, (k + 1) % m}

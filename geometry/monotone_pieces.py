@@ -29,8 +29,8 @@ from itertools import pairwise
 import numpy as np
 
 import tracing
-from geometry.batch import orient_fast
 from geometry.polygon import Polygon
+from geometry.predicates import orient
 from geometry.triangulate import Triangle
 
 
@@ -98,10 +98,10 @@ def _fans(polygon: Polygon, diagonals: list[tuple[int, int]]) -> dict[int, list[
         pv, ref = points[v], points[nxt]
 
         def half(p: int, pv=pv, ref=ref) -> int:  # 0: within π counter-clockwise of v→next
-            return 0 if orient_fast(pv, ref, points[p]) > 0 else 1
+            return 0 if orient(pv, ref, points[p]) > 0 else 1
 
         def compare(p: int, q: int, pv=pv, half=half) -> int:
-            return (half(p) - half(q)) or -orient_fast(pv, points[p], points[q])
+            return (half(p) - half(q)) or -orient(pv, points[p], points[q])
 
         fans[v] = [nxt, *sorted(others, key=cmp_to_key(compare)), prv]
     return fans
@@ -147,7 +147,7 @@ def _merged_chains(polygon: Polygon, ids: tuple[int, ...]) -> tuple[list[int], d
 
 def _cuts_off(points, s: int, last: int, u: int, left: bool) -> bool:
     """Whether u sees s past last: last is strictly convex on u's chain."""
-    turn = orient_fast(points[s], points[last], points[u])
+    turn = orient(points[s], points[last], points[u])
     return turn > 0 if left else turn < 0
 
 
@@ -158,7 +158,7 @@ def _fan(points, u: int, stack: list[int], triangles: list[Triangle]) -> None:
 
 
 def _ccw(points, a: int, b: int, c: int) -> Triangle:
-    turn = orient_fast(points[a], points[b], points[c])
+    turn = orient(points[a], points[b], points[c])
     if turn == 0:
         raise AssertionError("a monotone piece produced a zero-area triangle")
     return (a, b, c) if turn > 0 else (a, c, b)

@@ -30,6 +30,8 @@ EPS = sys.float_info.epsilon / 2  # unit round-off, 2**-53
 ORIENT_BOUND = (3.0 + 16.0 * EPS) * EPS
 # Below this magnitude products may have underflowed: trust nothing, go exact.
 TINY = 2.0**-900
+# Integers below this give exact float products and determinants in orient().
+SMALL_INTEGER = 2.0**25
 # Relative bound for sums of a few products (distances, dot products).
 _LOOSE_BOUND = 1e-12
 
@@ -67,7 +69,15 @@ def orient(a: Point, b: Point, c: Point) -> int:
         return 1
     if -det > bound:
         return -1
+    if _small_integer(a) and _small_integer(b) and _small_integer(c):
+        return (det > 0) - (det < 0)  # exact: integers below 2**25 give an exact determinant
     return _sign(orient_det(a, b, c))
+
+
+def _small_integer(p: Point) -> bool:
+    x, y = p
+    return (-SMALL_INTEGER < x < SMALL_INTEGER and -SMALL_INTEGER < y < SMALL_INTEGER
+            and x == int(x) and y == int(y))
 
 
 def _exact_sign_of_difference(x: float, y: float, exact) -> int:

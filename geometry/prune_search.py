@@ -42,9 +42,10 @@ from __future__ import annotations
 import numpy as np
 
 import tracing
-from geometry.batch import in_closed_triangle, in_triangle_many, orient_fast
+from geometry.batch import in_closed_triangle, in_triangle_many
 from geometry.diagonals import Diagonal, gravity_at, sweep_at
 from geometry.polygon import Polygon, Vertex
+from geometry.predicates import orient
 from geometry.triangles import Corners, finished, indices
 from geometry.triangulate import Triangle, Triangulation
 
@@ -119,7 +120,7 @@ def is_ear(g: GoodSubpolygon, v: Vertex) -> bool:
     m, order = g.middle(), g.remaining.order
     points = g.remaining.polygon.points
     a, b, c = points[order[m - 1]], points[order[m]], points[order[m + 1]]
-    if orient_fast(a, b, c) <= 0:
+    if orient(a, b, c) <= 0:
         return False
     ids, k = g.indices(), m - g.start
     if g.size <= _LOOP_UP_TO:

@@ -29,9 +29,9 @@ from bisect import bisect_left, bisect_right
 
 import numpy as np
 
-from geometry.batch import in_closed_triangle, in_triangle_many, orient_fast
+from geometry.batch import in_closed_triangle, in_triangle_many
 from geometry.polygon import Polygon
-from geometry.predicates import Point
+from geometry.predicates import Point, orient
 
 # Below this many candidates a plain loop beats setting up numpy.
 _VECTOR_FROM = 48
@@ -57,7 +57,7 @@ class Ring:
         self.next[p], self.prev[q] = q, p
         self.size -= 1
         for u in (p, q):
-            self.turn[u] = orient_fast(self.points[self.prev[u]], self.points[u], self.points[self.next[u]])
+            self.turn[u] = orient(self.points[self.prev[u]], self.points[u], self.points[self.next[u]])
             self.ear[u] = None
             if self.turn[u] > 0:
                 self.obstacles.discard(u)

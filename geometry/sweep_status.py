@@ -24,8 +24,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from geometry.batch import orient_fast
-from geometry.predicates import ORIENT_BOUND, TINY, Point  # the float filters' bounds
+from geometry.predicates import ORIENT_BOUND, TINY, Point, orient  # the float filters' bounds
 
 
 class SweepStatus:
@@ -64,7 +63,7 @@ class SweepStatus:
 
     def _exactly_left(self, k: int, after: int, v: int) -> bool:
         points = self.points
-        return orient_fast(points[k], points[after], points[v]) > 0
+        return orient(points[k], points[after], points[v]) > 0
 
     def insert(self, at: int, k: int, helper: int) -> None:
         """Edge k starts at the vertex the line has reached, found at ``at``."""
