@@ -20,6 +20,13 @@ def pytest_addoption(parser):
     parser.addoption("--show_diff", action="store_true", help="show manim's frame differences")
 
 
+def pytest_configure(config):
+    # Under `-n N` (xdist's default --dist load), still keep tests marked xdist_group on one
+    # worker: tests/test_scenes.py groups a scene's tests so its builds are cached, not redone.
+    if getattr(config.option, "dist", "no") == "load":
+        config.option.dist = "loadgroup"
+
+
 def pytest_runtest_setup(item):
     # manim's frames_comparison skips on cairo < 1.18; Debian's 1.16 renders our frames fine.
     frames = sys.modules.get("manim.utils.testing.frames_comparison")
