@@ -157,8 +157,12 @@ def test_interrupted_render_leaves_nothing(tmp_path):
         out_dir = tmp_path / sig.name
         out_dir.mkdir()
         out = out_dir / "scaling.mp4"
-        proc = subprocess.Popen([str(trex), "render", "scaling", "-ql", "-o", str(out)],
-                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        # Output to files, not pipes: an undrained pipe full of progress bars would block the
+        # child in a write, and the test would measure the pipe, not the interrupt handling.
+        log = tmp_path / f"{sig.name}.stderr"
+        with open(log, "w") as err:
+            proc = subprocess.Popen([str(trex), "render", "scaling", "-ql", "-o", str(out)],
+                                    stdout=subprocess.DEVNULL, stderr=err, text=True)
         jobs[sig] = (proc, out_dir)
     try:
         for sig, (proc, out_dir) in jobs.items():
@@ -169,7 +173,8 @@ def test_interrupted_render_leaves_nothing(tmp_path):
             assert proc.poll() is None, "render finished before it could be interrupted"
             proc.send_signal(sig)
         for sig, (proc, out_dir) in jobs.items():
-            _, stderr = proc.communicate(timeout=60)
+            proc.wait(timeout=60)
+            stderr = (tmp_path / f"{sig.name}.stderr").read_text()
             assert proc.returncode == 128 + sig, stderr
             assert stderr.rstrip().endswith("error: scaling: render interrupted; nothing written")
             assert leftovers(out_dir) == []
