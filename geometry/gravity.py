@@ -126,7 +126,10 @@ def gravity_direction(polygon: Polygon, v: Vertex) -> Gravity:
     u, w = polygon.points[polygon.prev(v.index)], polygon.points[polygon.next(v.index)]
     if polygon.turns[v.index] < 0:
         e1, e2 = _unit(v.point, u), _unit(v.point, w)
-        bisector = (-(e1[0] + e2[0]), -(e1[1] + e2[1]))
+        # The inward bisector −(e1 + e2), written as e2 − e1 turned left (they are parallel for
+        # unit vectors): well-conditioned even when the angle is within 1e-12 of straight,
+        # where e1 + e2 cancels to rounding noise.
+        bisector = (-(e2[1] - e1[1]), e2[0] - e1[0])
         down = _tilted(polygon, v, bisector)
     else:  # straight angle: both edges lie across gravity, there is nothing to tilt
         bisector = down = _unit((0.0, 0.0), (u[1] - w[1], w[0] - u[0]))

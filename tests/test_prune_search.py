@@ -26,7 +26,6 @@ from tests.test_ears import (
 # gravity_at (geometry/gravity.py, not this algorithm) raises "no tilt avoids perpendicular
 # edges" at a reflex vertex whose angle is within ~1e-12 of π: its bisector −(e1 + e2) of two
 # nearly opposite unit vectors is rounding noise. eberly-6's outer ring has such a vertex.
-GRAVITY_NEAR_STRAIGHT = {"eberly-6"}
 
 
 def good_subpolygons(log: tracing.Log) -> list[dict]:
@@ -115,16 +114,7 @@ def test_named_samples(sample):
         assert is_ear_by_definition(p, find_an_ear(p).index)
 
 
-@pytest.mark.parametrize(
-    "polygon",
-    [
-        pytest.param(*param.values, marks=pytest.mark.xfail(raises=AssertionError,
-                                                            reason="gravity_at bug", strict=False),
-                     id=param.id)
-        if param.id in GRAVITY_NEAR_STRAIGHT else param
-        for param in CORPUS
-    ],
-)
+@pytest.mark.parametrize("polygon", CORPUS)
 def test_earcut_corpus(polygon):
     assert_valid(polygon, triangulate(polygon, "prune-and-search"))
 
@@ -148,3 +138,23 @@ def test_find_an_ear_finds_an_ear(p):
 def test_collinear_runs(p):
     assert_valid(p, prune_and_search(p))
     assert is_ear_by_definition(p, find_an_ear(p).index)
+
+
+def test_gravity_at_nearly_straight_reflex_vertices():
+    """eberly-6 has reflex vertices within ~1e-12 of straight: −(e1 + e2) cancelled there."""
+    import math
+
+    from geometry.check import is_inner_diagonal
+    from geometry.gravity import gravity_at
+    from geometry.io import polygon_from_rings, read_rings
+
+    p = polygon_from_rings(read_rings("tests/data/earcut/eberly-6.json"), ignore_holes=True)
+    nearly = []
+    for i in p.reflex_vertices():
+        (ux, uy), (vx, vy), (wx, wy) = p.points[i - 1], p.points[i], p.points[(i + 1) % p.n]
+        cross = (vx - ux) * (wy - vy) - (vy - uy) * (wx - vx)
+        if abs(cross) < 1e-9 * math.dist((ux, uy), (vx, vy)) * math.dist((vx, vy), (wx, wy)):
+            nearly.append(i)
+    assert nearly
+    for i in nearly:
+        assert is_inner_diagonal(p, *gravity_at(p, p.vertex(i)).pair)
