@@ -11,7 +11,6 @@ from manim import (
     Flash,
     Indicate,
     Line,
-    Text,
     Write,
 )
 from manim import (
@@ -19,6 +18,7 @@ from manim import (
 )
 
 from metaphors.panel import tag
+from metaphors.typeset import text
 
 
 def polygon(board, beat) -> None:
@@ -59,7 +59,7 @@ def verdict(board, beat) -> None:
     if "T" in board.objects:
         board.scene.play(*board.drop("T"), run_time=0.3 * beat.pace)
     if beat.data["ok"]:
-        mark = tag(Text("✓", font=theme.font, font_size=48, color=theme.result), "result", "tick")
+        mark = tag(text("✓", font=theme.font, size=48, colour=theme.result), "result", "tick")
         if line is not None:
             mark.next_to(line.get_center(), direction=[0, 1, 0], buff=0.15)
         board.keep("verdict", mark)
@@ -79,7 +79,7 @@ def verdict(board, beat) -> None:
         spot = tag(Dot(at, radius=0.09, color=theme.rejected), "rejected", "crossing")
         board.keep("crossing", spot)
         anims += [FadeIn(spot), Flash(at, color=theme.rejected, flash_radius=0.5)]
-    mark = tag(Text("✗", font=theme.font, font_size=48, color=theme.rejected), "rejected", "cross")
+    mark = tag(text("✗", font=theme.font, size=48, colour=theme.rejected), "rejected", "cross")
     if line is not None:
         mark.next_to(line.get_center(), direction=[0, 1, 0], buff=0.15)
     board.keep("verdict", mark)

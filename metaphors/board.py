@@ -9,13 +9,14 @@ caption as a Manim subcaption (so every render also writes an ``.srt``).
 from __future__ import annotations
 
 import numpy as np
-from manim import FadeIn, FadeOut, Scene, Text, VGroup
+from manim import FadeIn, FadeOut, Scene, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
-from metaphors.layout import METAPHOR, SUBTITLE_Y, TITLE_Y, Box
+from metaphors.layout import BACKDROP_Z, METAPHOR, SUBTITLE_Y, TITLE_Y, Box
 from metaphors.panel import Panel, tag
 from metaphors.theme import THEME, Theme
+from metaphors.typeset import text
 
 
 class Board:
@@ -34,9 +35,9 @@ class Board:
                                 strict=True)
         }
         self.panel = Panel(points, labels, shown, theme)
-        self.title = tag(Text(title, font=theme.font, font_size=30, color=theme.ink), None, "title")
+        self.title = tag(text(title, font=theme.font, size=30, colour=theme.ink), None, "title")
         self.title.move_to((0, TITLE_Y, 0))
-        self.subtitle = tag(Text(" ", font=theme.font, font_size=theme.caption_size), None,
+        self.subtitle = tag(text(" ", font=theme.font, size=theme.caption_size), None,
                             "subtitle")
         self.objects: dict[str, object] = {}  # persistent metaphor objects by key
         self.caption = ""
@@ -76,6 +77,20 @@ class Board:
         for marker, colour in after:
             marker.set_color(colour)
         self.caption = beat.caption
+        self.settle()
+
+    def settle(self) -> None:
+        """Put the text that seldom changes (title, code, call line, subtitle) at the bottom of
+        the scene's drawing order. manim redraws, in every frame of a play, each mobject from
+        the first animated one upwards (ordered by z-index, then by when it was added); text
+        below everything else stays in the play's static image. Nothing else on screen overlaps
+        it, so the picture does not change."""
+        backdrop = [m for m in (self.title, *self.panel.backdrop(), self.subtitle)
+                    if m in self.scene.mobjects]
+        for mobject in backdrop:
+            if mobject.z_index != BACKDROP_Z:
+                mobject.set_z_index(BACKDROP_Z)
+        self.scene.bring_to_back(*backdrop)
 
     def _recolour(self, roles: dict[str, str], busy: set[int]) -> tuple[list, list]:
         """Animations for markers whose role changed, and (marker, colour) to set after."""
@@ -95,8 +110,8 @@ class Board:
     def _subtitle(self, caption: str) -> list:
         if caption == self.caption:
             return []
-        new = tag(Text(caption, font=self.theme.font, font_size=self.theme.caption_size,
-                       color=self.theme.ink), None, "subtitle")
+        new = tag(text(caption, font=self.theme.font, size=self.theme.caption_size,
+                       colour=self.theme.ink), None, "subtitle")
         if new.width > 13.4:
             new.scale_to_fit_width(13.4)
         new.move_to((0, SUBTITLE_Y, 0))

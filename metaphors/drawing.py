@@ -6,10 +6,11 @@ import copy
 from collections.abc import Sequence
 
 import numpy as np
-from manim import DOWN, Dot, Text, VGroup
+from manim import DOWN, Dot, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
+from metaphors import typeset
 from metaphors.theme import THEME, Theme
 
 
@@ -86,7 +87,7 @@ def vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME) -> VGro
         norm = np.linalg.norm(away)
         direction = away / norm if norm > 1e-9 else DOWN
         dot = Dot(at, radius=theme.dot_radius, color=theme.ink)
-        text = Text(label, font=theme.font, font_size=theme.label_size, color=theme.ink)
+        text = typeset.text(label, font=theme.font, size=theme.label_size, colour=theme.ink)
         text.move_to(at + direction * 0.32)
         group.add(VGroup(dot, text))
     return group

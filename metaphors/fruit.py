@@ -13,13 +13,13 @@ from manim import (
     FadeOut,
     Indicate,
     Line,
-    Text,
     Transform,
 )
 from manim import (
     Polygon as MPolygon,
 )
 
+from metaphors import typeset
 from metaphors.panel import tag
 
 PLATE_Y = -2.55
@@ -54,8 +54,8 @@ def _setup(board, beat) -> None:
 
 def _counter(board, k: int, total: int):
     theme = board.theme
-    text = tag(Text(f"{k} / {total} slices", font=theme.font, font_size=theme.label_size,
-                    color=theme.ink), None, "counter")
+    text = tag(typeset.text(f"{k} / {total} slices", font=theme.font, size=theme.label_size,
+                            colour=theme.ink), None, "counter")
     return text.move_to((board.frame.center[0], PLATE_Y + 0.68, 0))
 
 

@@ -22,9 +22,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from manim import Circle, Create, Dot, FadeIn, Line, Scene, Text, Transform, VGroup
+from manim import Circle, Create, Dot, FadeIn, Line, Scene, Transform, VGroup
 from manim import Polygon as MPolygon
 
+from metaphors import typeset
 from metaphors.board import Board
 from metaphors.layout import METAPHOR
 from metaphors.panel import tag
@@ -134,7 +135,8 @@ def _point(board, state, colour):
     label = state.get("label")
     if not label:
         return dot
-    text = Text(str(label), font=board.theme.font, font_size=board.theme.label_size, color=colour)
+    text = typeset.text(str(label), font=board.theme.font, size=board.theme.label_size,
+                         colour=colour)
     return VGroup(dot, text.next_to(dot, direction=np.array([1.0, 1.0, 0.0]), buff=0.08))
 
 
@@ -188,8 +190,8 @@ def _ray(board, state, colour):
 
 
 def _text(board, state, colour):
-    return Text(str(state["text"]), font=board.theme.font, font_size=board.theme.label_size,
-                color=colour).move_to(board.at(_xy(state["at"])))
+    return typeset.text(str(state["text"]), font=board.theme.font, size=board.theme.label_size,
+                        colour=colour).move_to(board.at(_xy(state["at"])))
 
 
 _DRAW = {"point": _point, "segment": _segment, "polygon": _polygon, "circle": _circle,

@@ -24,7 +24,6 @@ from manim import (
     FadeOut,
     Flash,
     Indicate,
-    Text,
     Transform,
     VGroup,
     VMobject,
@@ -35,11 +34,12 @@ from manim import Polygon as MPolygon
 from metaphors import basics
 from metaphors.layout import METAPHOR
 from metaphors.panel import tag
+from metaphors.typeset import FlatText, text
 
 #: board objects that stay put on screen when the polygon turns (keys of ``board.objects``)
 FIXED = ("gravity", "plate", "counter")  # and every slice on the plate (fruit)
 #: things that keep their size and stay upright when the picture turns and zooms
-_UPRIGHT = (Text, Circle)
+_UPRIGHT = (FlatText, Circle)
 
 
 # --- helpers -------------------------------------------------------------------------------------
@@ -115,8 +115,8 @@ def _gravity_arrow(board):
     top = METAPHOR.y + METAPHOR.height / 2 - 0.1
     arrow = Arrow((left, top, 0), (left, top - 1.0, 0), buff=0, color=theme.gravity,
                   stroke_width=4, max_tip_length_to_length_ratio=0.3)
-    g = Text("g", font=theme.font, font_size=theme.label_size + 4, slant="ITALIC",
-             color=theme.gravity).next_to(arrow, DOWN, buff=0.08)
+    g = text("g", font=theme.font, size=theme.label_size + 4, slant="ITALIC",
+             colour=theme.gravity).next_to(arrow, DOWN, buff=0.08)
     return tag(VGroup(arrow, g), None, "gravity")
 
 

@@ -25,3 +25,6 @@ PANEL_POLYGON = Box(3.6, 1.75, 4.6, 2.5)
 PANEL_CODE = Box(3.6, -0.95, 6.2, 2.55)
 PANEL_CALL_Y = -2.65
 SUBTITLE_Y = -3.55
+#: z-index of the text around the picture (title, code, call line, subtitle): below everything,
+#: so that manim keeps it in a play's static image (see ``Board.settle``); nothing overlaps it
+BACKDROP_Z = -10

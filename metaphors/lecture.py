@@ -12,7 +12,7 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, replace
 
-from manim import DOWN, LEFT, UP, Create, Dot, FadeIn, FadeOut, Line, Text, VGroup, Write
+from manim import DOWN, LEFT, UP, Create, Dot, FadeIn, FadeOut, Line, VGroup, Write
 
 from geometry.cdt import constrained_delaunay
 from geometry.check import is_inner_diagonal
@@ -22,6 +22,7 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import triangulate
+from metaphors import typeset
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
 from metaphors.panel import tag
@@ -29,6 +30,7 @@ from metaphors.runs import run_logged
 from metaphors.scene import TraceScene
 from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
 from metaphors.storyboard import Pacing, storyboard
+from metaphors.typeset import FlatText
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
@@ -135,8 +137,8 @@ class LectureScene(TraceScene):
             self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.4)
             self.clear()
 
-    def text(self, text: str, size: int, colour: str | None = None) -> Text:
-        mob = Text(text, font=self.theme.font, font_size=size, color=colour or self.theme.ink)
+    def text(self, text: str, size: int, colour: str | None = None) -> FlatText:
+        mob = typeset.text(text, font=self.theme.font, size=size, colour=colour or self.theme.ink)
         if mob.width > 13.2:
             mob.scale_to_fit_width(13.2)
         return mob

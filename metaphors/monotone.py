@@ -6,10 +6,11 @@ Positions, kinds, diagonals, pieces and triangles come from the log (the beats' 
 
 from __future__ import annotations
 
-from manim import Create, DashedLine, FadeIn, FadeOut, Indicate, Line, Text, Transform
+from manim import Create, DashedLine, FadeIn, FadeOut, Indicate, Line, Transform
 from manim import Polygon as MPolygon
 
 from metaphors.panel import tag
+from metaphors.typeset import text
 
 
 def _sweep_line(board, y: float):
@@ -24,8 +25,8 @@ def classify(board, beat) -> None:
     """The sweep line reaches a vertex; the vertex shows its kind."""
     theme, data = board.theme, beat.data
     line = _sweep_line(board, data["at"][1])
-    kind = tag(Text(data["kind"], font=theme.font, font_size=18,
-                    color=theme.rejected if data["kind"] in ("split", "merge") else theme.called),
+    kind = tag(text(data["kind"], font=theme.font, size=18,
+                    colour=theme.rejected if data["kind"] in ("split", "merge") else theme.called),
                None, "kind")
     kind.next_to(board.markers[data["vertex"]], direction=[1, 0, 0], buff=0.1)
     anims = [FadeIn(kind), Indicate(board.markers[data["vertex"]])]

@@ -9,10 +9,10 @@ from manim import (
     FadeIn,
     FadeOut,
     Rectangle,
-    Text,
     VGroup,
 )
 
+from metaphors import typeset
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.layout import PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON
 from metaphors.pseudocode import source_of
@@ -49,18 +49,24 @@ class Panel:
         self.light = tag(Rectangle(width=PANEL_CODE.width, height=0.2, stroke_width=0,
                                    fill_color=theme.called, fill_opacity=0.3), "called", "panel:lit")
         self.light.set_opacity(0)
-        self.call = tag(Text(" ", font=theme.mono_font, font_size=20), None, "panel:call")
+        self.lit: tuple[int, object] | None = None  # (row, its copy in ink on top of it)
+        self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
         self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         self.roles: dict[str, str] = {}
 
     def mobjects(self) -> list:
-        return [self.outline, *self.markers.values(), self.light, self.code, self.call]
+        return [self.outline, *self.markers.values(), self.code, self.light, self.call]
+
+    def backdrop(self) -> list:
+        """The panel's text, bottom first: the code, the light, the lit row, the call line.
+        (See :meth:`metaphors.board.Board.settle`.)"""
+        return [self.code, self.light, *([self.lit[1]] if self.lit else []), self.call]
 
     def _code_block(self) -> VGroup:
         size = 15 if len(self.code_lines) <= 12 else 11
         font = self.theme.mono_font
         rows = VGroup(*[
-            tag(Text(text.strip() or " ", font=font, font_size=size, color=self.theme.idle),
+            tag(typeset.text(text.strip() or " ", font=font, size=size, colour=self.theme.idle),
                 "idle", f"code:{number}")
             for number, text in self.code_lines
         ])
@@ -68,7 +74,7 @@ class Panel:
             return rows
         rows.arrange(direction=[0, -1, 0], aligned_edge=LEFT, buff=0.07)
         # Text drops leading spaces: indent each row by hand, one monospace cell per space.
-        cell = Text("M" * 20, font=font, font_size=size).width / 20
+        cell = typeset.text("M" * 20, font=font, size=size).width / 20
         for row, (_, text) in zip(rows, self.code_lines, strict=True):
             row.shift([cell * (len(text) - len(text.lstrip(" "))), 0, 0])
         rows.scale_to_fit_height(min(rows.height, PANEL_CODE.height))
@@ -97,20 +103,23 @@ class Panel:
         return anims
 
     def _light_line(self, line: int | None) -> list[Animation]:
+        """Light the row of ``line``: the light moves behind it, and a copy of the row in ink
+        fades in over the grey row (the rows themselves never change, so they stay in the
+        static part of every frame)."""
         index = next((k for k, (number, _) in enumerate(self.code_lines) if number == line), None)
-        if index is None:
+        if index is None or (self.lit is not None and self.lit[0] == index):
             return []
         row = self.code[index]
         anims = [self.light.animate.set_opacity(0.3).stretch_to_fit_height(row.height + 0.08)
                  .move_to((PANEL_CODE.x, row.get_y(), 0))]
-        for k, text in enumerate(self.code):
-            colour = self.theme.ink if k == index else self.theme.idle
-            if text.get_color().to_hex().lower() != colour.lower():
-                anims.append(tag(text, "called" if k == index else "idle").animate.set_color(colour))
-        return anims
+        if self.lit is not None:
+            anims.append(FadeOut(self.lit[1]))
+        copy = tag(row.copy().set_color(self.theme.ink), "called", row.name)
+        self.lit = (index, copy)
+        return [*anims, FadeIn(copy)]
 
     def _call_line(self, text: str) -> list[Animation]:
-        new = tag(Text(text, font=self.theme.mono_font, font_size=20, color=self.theme.ink),
+        new = tag(typeset.text(text, font=self.theme.mono_font, size=20, colour=self.theme.ink),
                   "called", "panel:call")
         if new.width > PANEL_CODE.width:
             new.scale_to_fit_width(PANEL_CODE.width)

@@ -11,7 +11,7 @@ import os
 from dataclasses import replace
 from types import MappingProxyType
 
-from manim import DOWN, FadeIn, FadeOut, Scene, Text, VGroup
+from manim import DOWN, FadeIn, FadeOut, Scene, VGroup
 
 from metaphors.actions import perform
 from metaphors.board import Board
@@ -20,6 +20,7 @@ from metaphors.panel import tag
 from metaphors.runs import run_logged, scene_log
 from metaphors.storyboard import Beat, Pacing, storyboard
 from metaphors.theme import THEME
+from metaphors.typeset import text
 from tracing import Log
 
 
@@ -99,9 +100,9 @@ class SequenceScene(TraceScene):
     def card(self, k: int, title: str) -> None:
         """A title card between runs: the run's number and its title."""
         theme = self.theme
-        number = Text(f"{k + 1} / {len(self.runs)}", font=theme.font, font_size=theme.label_size,
-                      color=theme.idle)
-        name = Text(title, font=theme.font, font_size=theme.title_size, color=theme.ink)
+        number = text(f"{k + 1} / {len(self.runs)}", font=theme.font, size=theme.label_size,
+                      colour=theme.idle)
+        name = text(title, font=theme.font, size=theme.title_size, colour=theme.ink)
         if name.width > 13:
             name.scale_to_fit_width(13)
         card = tag(VGroup(number, name).arrange(DOWN, buff=0.3), None, "card")

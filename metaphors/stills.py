@@ -8,12 +8,14 @@ Colours come from the theme: T and its corners in the *called* colour, candidate
 
 from __future__ import annotations
 
-from manim import DashedLine, Scene, Text, VGroup
+from manim import DashedLine, Scene, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.exercises import Exercise
+from metaphors import typeset
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.theme import THEME, Theme
+from metaphors.typeset import FlatText
 
 TITLE_Y, LEGEND_Y = 3.45, -3.6
 BOX_CENTER, BOX_WIDTH, BOX_HEIGHT = (0.0, -0.1), 12.4, 5.6
@@ -21,8 +23,8 @@ MAX_TEXT_WIDTH = 13.4
 T_OPACITY = 0.15  # as the scenes draw T
 
 
-def _text(text: str, size: int, colour: str, theme: Theme) -> Text:
-    mob = Text(text, font=theme.font, font_size=size, color=colour)
+def _text(text: str, size: int, colour: str, theme: Theme) -> FlatText:
+    mob = typeset.text(text, font=theme.font, size=size, colour=colour)
     if mob.width > MAX_TEXT_WIDTH:
         mob.scale_to_fit_width(MAX_TEXT_WIDTH)
     return mob

@@ -26,13 +26,13 @@ from manim import (
     Flash,
     Indicate,
     Line,
-    Text,
     VGroup,
     config,
 )
 
 from metaphors.layout import METAPHOR
 from metaphors.panel import tag
+from metaphors.typeset import text
 
 #: How far inside/outside counts as "on the boundary" (scene units).
 EPS = 1e-6
@@ -171,8 +171,8 @@ def light(board, label: str, first: bool, axis, clip=None) -> tuple[list, list]:
         p, q = _3d(piece[0]), _3d(piece[1])
         trace = tag(Line(p, q, color=theme.rejected, stroke_width=theme.stroke * 2),
                     "rejected", f"astray:{label}")
-        note = tag(Text("outside P, inside T", font=theme.font, font_size=theme.label_size * 0.8,
-                        color=theme.rejected), "rejected", "astray:note")
+        note = tag(text("outside P, inside T", font=theme.font, size=theme.label_size * 0.8,
+                        colour=theme.rejected), "rejected", "astray:note")
         _place(board, note, (p + q) / 2, _tool(axis, clip))
         kept += [trace, note]
         anims += [Create(trace), FadeIn(note), Flash(at, color=theme.rejected, flash_radius=0.35)]

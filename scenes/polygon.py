@@ -5,12 +5,13 @@ Run: ``manim -pql scenes/polygon.py`` (``TREX_POLYGON=<file or sample>`` picks t
 
 import os
 
-from manim import UP, Create, FadeIn, Scene, Text, Write
+from manim import UP, Create, FadeIn, Scene, Write
 
 from geometry.cdt import constrained_delaunay
 from geometry.io import read_polygon
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.theme import THEME
+from metaphors.typeset import text
 
 
 class PolygonScene(Scene):
@@ -18,9 +19,9 @@ class PolygonScene(Scene):
         polygon = read_polygon(os.environ.get("TREX_POLYGON", "counterexample"))
         self.camera.background_color = THEME.background
         frame = Frame(polygon.points, center=(0, -0.3), width=9, height=5.5)
-        title = Text(
+        title = text(
             f"A simple polygon: {polygon.n} vertices → {polygon.n - 2} triangles",
-            font=THEME.font, font_size=THEME.caption_size, color=THEME.ink,
+            font=THEME.font, size=THEME.caption_size, colour=THEME.ink,
         ).to_edge(UP)
         self.play(Write(title), run_time=1)
         self.play(Create(polygon_mobject(polygon, frame)), run_time=1.5)

@@ -1,0 +1,175 @@
+"""Text for the scenes: manim's ``Text``, typeset faster and drawn as one path.
+
+A ``Text`` is a group of glyphs, one ``VMobject`` each, and that is what makes a text-heavy scene
+slow: every play deep-copies the glyphs of every text it animates (a panel row, a caption),
+every frame draws each glyph as its own Cairo path, and manim's cache hashes them one by one.
+:class:`FlatText` holds the same outline — the same points, in the same order — in one
+``VMobject``, so a copy is one array copy and a frame draws one path per text. Its glyph
+subpaths stay apart (the pen lifts between glyphs), so it fills as the glyphs did.
+
+Typesetting is the other cost. ``Text`` asks Pango for an SVG (under a millisecond) and then
+parses the whole SVG with svgelements (tens of milliseconds). :func:`outline` asks Pango for the
+same SVG, reads where each glyph goes with the standard library's XML parser, and converts each
+distinct glyph outline once per process with manim's own SVG path reader; the text's outline is
+those glyphs moved into place, with the transform ``Text`` applies (y flipped, centred, scaled
+to manim units). ``tests/test_typeset.py`` checks it point for point against ``Text``. An
+SVG with anything but glyphs placed by ``<use>`` is read by ``Text`` itself.
+
+>>> a = text("B", size=22, colour="#e8ecf2")
+>>> b = text("B", size=22, colour="#4cc46b")
+>>> a.original_text, a.get_fill_color().to_hex(), b.get_fill_color().to_hex()
+('B', '#E8ECF2', '#4CC46B')
+>>> bool((a.points == b.points).all()) and a.points is not b.points
+True
+"""
+
+from __future__ import annotations
+
+import hashlib
+import xml.etree.ElementTree as ET
+from functools import lru_cache
+from pathlib import Path
+
+import manimpango
+import numpy as np
+import svgelements as se
+from manim import NORMAL, Text, VMobject, config
+from manim.constants import START_X, START_Y
+from manim.mobject.svg.svg_mobject import VMobjectFromSVGPath
+from manim.mobject.text.text_mobject import (
+    DEFAULT_LINE_SPACING_SCALE,
+    TEXT2SVG_ADJUSTMENT_FACTOR,
+    TEXT_MOB_SCALE_FACTOR,
+)
+
+from metaphors.theme import THEME
+
+_SVG = "{http://www.w3.org/2000/svg}"
+_HREF = "{http://www.w3.org/1999/xlink}href"
+
+
+class FlatText(VMobject):
+    """A line of text as one ``VMobject``: the outline of manim's ``Text`` with its glyphs
+    merged into one path. ``original_text`` is the string (scene-graph snapshots read it)."""
+
+    def __init__(self, original_text: str, points: np.ndarray, **kwargs):
+        kwargs.setdefault("fill_opacity", 1.0)
+        kwargs.setdefault("stroke_width", 0)
+        super().__init__(**kwargs)
+        self.original_text = original_text
+        if len(points):
+            self.set_points(points)
+
+
+def text(string: str, *, size: float, colour: str | None = None, font: str = THEME.font,
+         slant: str = NORMAL, weight: str = NORMAL) -> FlatText:
+    """A :class:`FlatText` of ``string`` in ``font`` at ``size`` (manim's ``font_size``), filled
+    with ``colour`` (default: the theme's ink)."""
+    points = outline(string, font, float(size), slant, weight)
+    return FlatText(string, points.copy(), color=colour or THEME.ink)
+
+
+@lru_cache(maxsize=4096)
+def outline(string: str, font: str, size: float, slant: str = NORMAL,
+            weight: str = NORMAL) -> np.ndarray:
+    """The points of ``Text(string, font=font, font_size=size, …)``, its glyphs one after
+    another, centred at the origin as ``Text`` centres itself (read only: :func:`text` copies
+    it). One line of text: a newline or a tab is typeset by ``Text``."""
+    placed = None
+    if "\n" not in string and "\t" not in string:
+        placed = _placed_glyphs(_svg(string, font, size, slant, weight))
+    points = _from_text(string, font, size, slant, weight) if placed is None else _compose(placed)
+    points.setflags(write=False)
+    return points
+
+
+# --- the fast path: Pango's SVG, glyphs read once ---------------------------------------------------
+
+
+def _svg(string: str, font: str, size: float, slant: str, weight: str) -> Path:
+    """Pango's SVG of the string, as ``Text`` asks for it (kept in manim's text directory)."""
+    folder = config.get_dir("text_dir")
+    folder.mkdir(parents=True, exist_ok=True)
+    key = repr((string, font, size, slant, weight, manimpango.__version__)).encode()
+    path = folder / f"trex-{hashlib.sha256(key).hexdigest()[:20]}.svg"
+    if not path.exists():
+        spacing = (size + size * DEFAULT_LINE_SPACING_SCALE) / TEXT2SVG_ADJUSTMENT_FACTOR
+        setting = manimpango.TextSetting(0, len(string), font, slant, weight, line_num=0,
+                                         color="#FFFFFF")
+        scratch = path.with_suffix(".part.svg")
+        manimpango.text2svg([setting], size / TEXT2SVG_ADJUSTMENT_FACTOR, spacing, False,
+                            str(scratch), START_X, START_Y, config["pixel_width"],
+                            config["pixel_height"], string)
+        manimpango.PangoUtils.remove_last_M(str(scratch))
+        scratch.replace(path)  # whole or not at all: another process may read it
+    return path
+
+
+def _placed_glyphs(path: Path) -> list[tuple[str, float, float]] | None:
+    """[(glyph outline, x, y)] in document order; None when the SVG holds anything else, or a
+    transform, that this reader does not follow. (Like ``Text``, it ignores the root's size and
+    viewBox: manim re-roots the SVG before parsing it.)"""
+    root = ET.parse(path).getroot()
+    glyphs: dict[str, str] = {}
+    uses: list[tuple[str, float, float]] = []
+    for element in root.iter():
+        tag = element.tag.removeprefix(_SVG)
+        if tag not in ("svg", "defs", "g", "symbol", "path", "use") or "transform" in element.attrib:
+            return None
+        if tag == "use":
+            uses.append((element.get(_HREF, "").removeprefix("#"),
+                         float(element.get("x", 0)), float(element.get("y", 0))))
+        elif tag in ("symbol", "g") and element.get("id"):
+            paths = element.findall(f"{_SVG}path")
+            if len(paths) == 1 and len(element) == 1 and paths[0].get("d") is not None:
+                glyphs[element.get("id")] = paths[0].get("d")
+    if any(href not in glyphs for href, _, _ in uses):
+        return None
+    if sum(1 for e in root.iter() if e.tag == f"{_SVG}path") != len(glyphs):
+        return None  # a path outside the glyph definitions
+    return [(glyphs[href], x, y) for href, x, y in uses]
+
+
+@lru_cache(maxsize=4096)
+def _glyph(d: str) -> np.ndarray:
+    """One glyph's outline in SVG units at its origin, as ``Text`` keeps it: manim's SVG path
+    reader, then every open subpath closed with a straight line."""
+    points = VMobjectFromSVGPath(se.Path(d)).points
+    points = _closed(points) if len(points) else points
+    points.setflags(write=False)
+    return points
+
+
+def _closed(points: np.ndarray) -> np.ndarray:
+    """``Text``'s closing of a glyph: where a curve ends away from the next curve's start, and
+    after the last curve, a line back to the start of the current subpath."""
+    curves = points.reshape(-1, 4, 3)
+    out, start = [], curves[0, 0]
+    for k, curve in enumerate(curves):
+        out.append(curve)
+        last = k == len(curves) - 1
+        if last or (curve[3] != curves[k + 1, 0]).any():
+            end = curve[3]
+            out.append(np.array([end, (end + end + start) / 3, (end + start + start) / 3, start]))
+            if not last:
+                start = curves[k + 1, 0]
+    return np.concatenate(out)
+
+
+def _compose(glyphs: list[tuple[str, float, float]]) -> np.ndarray:
+    """The glyphs moved into place, then ``Text``'s transform: y up, centred, scaled to manim
+    units."""
+    parts = [_glyph(d) + np.array([x, y, 0.0]) for d, x, y in glyphs]
+    parts = [p for p in parts if len(p)]
+    if not parts:
+        return np.zeros((0, 3))
+    points = np.concatenate(parts) * (1.0, -1.0, 0.0)
+    centre = (points.min(axis=0) + points.max(axis=0)) / 2
+    return (points - centre) * TEXT_MOB_SCALE_FACTOR
+
+
+def _from_text(string: str, font: str, size: float, slant: str, weight: str) -> np.ndarray:
+    """The slow path: manim's ``Text``, its glyphs' points one after another."""
+    typeset = Text(string, font=font, font_size=size, slant=slant, weight=weight)
+    glyphs = [g.points for g in typeset.family_members_with_points()]
+    return np.concatenate(glyphs) if glyphs else np.zeros((0, 3))

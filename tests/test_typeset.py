@@ -1,0 +1,136 @@
+"""metaphors.typeset: the fast typesetting gives manim's ``Text`` outline, point for point, and
+one merged path draws the same picture as the glyphs did."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from manim import BOLD, ITALIC, NORMAL, Text, tempconfig
+from manim.camera.camera import Camera
+
+from metaphors import typeset
+from metaphors.typeset import FlatText, text
+
+SANS, MONO = "DejaVu Sans", "DejaVu Sans Mono"
+
+
+@pytest.fixture(autouse=True)
+def _media(tmp_path):
+    with tempconfig({"media_dir": str(tmp_path / "media"), "quality": "low_quality"}):
+        yield
+
+
+def manim_points(string: str, font: str, size: float, slant=NORMAL, weight=NORMAL) -> np.ndarray:
+    """What ``Text`` builds, its glyphs' points one after another."""
+    glyphs = Text(string, font=font, font_size=size, slant=slant, weight=weight)
+    parts = [g.points for g in glyphs.family_members_with_points()]
+    return np.concatenate(parts) if parts else np.zeros((0, 3))
+
+
+def fast_points(string: str, font: str, size: float, slant=NORMAL, weight=NORMAL) -> np.ndarray:
+    """The fast path alone (no fallback to ``Text``)."""
+    placed = typeset._placed_glyphs(typeset._svg(string, font, size, slant, weight))
+    assert placed is not None, f"the fast path gave up on {string!r}"
+    return typeset._compose(placed)
+
+
+def assert_same_outline(string, font, size, slant=NORMAL, weight=NORMAL):
+    expected = manim_points(string, font, size, slant, weight)
+    got = fast_points(string, font, size, slant, weight)
+    assert got.shape == expected.shape, string
+    if len(expected):
+        # the same numbers up to rounding (Text flips y by a rotation, leaving z ≈ 1e-17)
+        assert np.abs(got - expected).max() < 1e-9, string
+
+
+@pytest.mark.parametrize(("string", "font", "size"), [
+    ("B", SANS, 22),
+    ("nearest_to(B, [D, E]) → E", MONO, 20),
+    ("    while todo:", MONO, 11),
+    ("The ball slides down to X; the band snags Y.", SANS, 26),
+    ("fi fl ffi AV To Wa", SANS, 30),  # ligatures and kerning: Pango's, as Text has them
+    ("✓", SANS, 48),
+    ("✗", SANS, 48),
+    ("3 / 7 slices", SANS, 22),
+    ("Ünïcödé — ½ ≤ ∞", SANS, 24),
+    ("a  b", SANS, 26),  # two spaces
+    (" ", SANS, 26),  # nothing drawn
+])
+def test_outline_is_texts_outline(string, font, size):
+    assert_same_outline(string, font, float(size))
+
+
+@pytest.mark.parametrize(("slant", "weight"), [(ITALIC, NORMAL), (NORMAL, BOLD), (ITALIC, BOLD)])
+def test_slant_and_weight(slant, weight):
+    assert_same_outline("g = 9.81 m/s²", SANS, 26.0, slant, weight)
+
+
+@settings(max_examples=25)
+@given(st.text(st.characters(codec="latin-1", categories=("L", "N", "P", "S", "Zs")),
+               min_size=1, max_size=24),
+       st.sampled_from([SANS, MONO]), st.sampled_from([11.0, 15.0, 22.0, 26.0, 48.0]))
+def test_outline_is_texts_outline_for_any_line(string, font, size):
+    assert_same_outline(string, font, size)
+
+
+def test_text_falls_back_to_manim_for_several_lines():
+    got = typeset.outline("two\nlines", SANS, 20.0)
+    assert np.array_equal(got, manim_points("two\nlines", SANS, 20.0))
+
+
+def test_anything_but_placed_glyphs_is_left_to_text(tmp_path):
+    glyph = ('<symbol id="glyph0-1"><path d="M 0 0 L 1 0 L 1 -1 Z"/></symbol>')
+    head = ('<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink">'
+            f"<defs><g>{glyph}</g></defs>")
+    cases = {
+        "plain": '<g><use xlink:href="#glyph0-1" x="3" y="4"/></g>',
+        "rect": '<g><use xlink:href="#glyph0-1" x="3" y="4"/><rect width="1" height="1"/></g>',
+        "transform": '<g transform="scale(2)"><use xlink:href="#glyph0-1" x="3" y="4"/></g>',
+        "loose path": '<g><use xlink:href="#glyph0-1" x="3" y="4"/><path d="M 0 0 L 2 2"/></g>',
+        "unknown glyph": '<g><use xlink:href="#glyph9-9" x="3" y="4"/></g>',
+    }
+    read = {}
+    for name, body in cases.items():
+        path = tmp_path / f"{name}.svg"
+        path.write_text(head + body + "</svg>")
+        read[name] = typeset._placed_glyphs(path)
+    assert read.pop("plain") == [("M 0 0 L 1 0 L 1 -1 Z", 3.0, 4.0)]
+    assert read == dict.fromkeys(read)  # every other one: None
+
+
+def test_open_subpaths_are_closed_as_text_closes_them():
+    # a square drawn as an open path of three lines: Text adds the fourth, back to the start
+    closed = typeset._glyph("M 0 0 L 1 0 L 1 1 L 0 1")
+    anchors = closed.reshape(-1, 4, 3)[:, [0, 3], :2]
+    assert anchors.tolist() == [[[0, 0], [1, 0]], [[1, 0], [1, 1]], [[1, 1], [0, 1]],
+                                [[0, 1], [0, 0]]]
+
+
+def test_text_copies_the_cached_outline():
+    a, b = text("D", size=22), text("D", size=22)
+    a.shift([1, 0, 0])
+    assert not np.array_equal(a.points, b.points)
+    assert np.array_equal(b.points, typeset.outline("D", SANS, 22.0))  # the theme's font
+    assert isinstance(a, FlatText) and a.original_text == "D"
+
+
+def pixels(mobject) -> np.ndarray:
+    camera = Camera()
+    camera.background_color = "#000000"
+    camera.reset()
+    camera.capture_mobject(mobject)
+    return np.asarray(camera.get_image()).astype(int)
+
+
+@pytest.mark.parametrize("string", ["nearest_to(B, [D, E]) → E", "Gravity: a ball ✓"])
+def test_one_path_draws_what_the_glyphs_drew(string):
+    glyphs = Text(string, font=MONO, font_size=30, color="#e8ecf2").shift([0.5, 0.3, 0])
+    flat = text(string, font=MONO, size=30, colour="#e8ecf2").shift([0.5, 0.3, 0])
+    before, after = pixels(glyphs), pixels(flat)
+    assert (before > 0).any()  # something was drawn
+    differ = (before != after).any(axis=2)
+    # anti-aliasing where two glyphs' edges meet may differ by a few levels, nothing more
+    assert np.abs(before - after).max() <= 8
+    assert differ.sum() <= 0.002 * differ.size
