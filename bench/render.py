@@ -6,11 +6,11 @@ directory, in this process (so imports are not counted):
 1. ``scenes/gravity.py`` (``Gravity``) rendered with caching off: video seconds per wall second;
 2. a bare manim scene with the same plays — the same animation classes, as many per play, with
    the same run times — on simple mobjects (squares), built from Gravity's scene graph
-   (:mod:`metaphors.snapshot`): video seconds per wall second (and, for comparison, ours
-   again under :func:`metaphors.snapshot.quick_copies`);
+   (:mod:`metaphors.snapshot`): video seconds per wall second. Both are rendered ``--repeat``
+   times, alternately, and the best time of each counts (this machine's speed wanders by a
+   third between runs; the median is printed beside it);
 3. the dry-run build time of every scene in ``scenes/*.py`` (what ``tests/test_scenes.py``
-   pays per build, under :func:`metaphors.snapshot.quick_copies`; with ``--plain`` also
-   without it, which takes minutes);
+   pays per build), and their sum;
 4. Gravity rendered twice with manim's cache on, in one media directory: the time of the
    second render and how many plays it took from the cache ("Using cached data" in manim's
    log; the cache key hashes the mobjects and animations, so every play hits only if the
@@ -29,10 +29,10 @@ import importlib.util
 import inspect
 import logging
 import shutil
+import statistics
 import sys
 import tempfile
 import time
-from contextlib import nullcontext
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -43,7 +43,7 @@ import av  # noqa: E402
 import manim  # noqa: E402
 from manim import RED, Scene, Square, tempconfig  # noqa: E402
 
-from metaphors.snapshot import build, environment, quick_copies, scene_graph  # noqa: E402
+from metaphors.snapshot import build, environment, scene_graph  # noqa: E402
 
 #: The scene rendered.
 SCENE_FILE, SCENE_NAME = "gravity", "Gravity"
@@ -129,10 +129,8 @@ class CacheHits(logging.Handler):
             self.hits += 1
 
 
-def render(cls: type[Scene], media: Path, caching: bool, quick: bool = False
-           ) -> tuple[float, float, int]:
-    """Render at -ql into ``media``: (wall seconds, video seconds, cache hits); ``quick``
-    renders under :func:`metaphors.snapshot.quick_copies` (same frames, cheaper copies)."""
+def render(cls: type[Scene], media: Path, caching: bool) -> tuple[float, float, int]:
+    """Render at -ql into ``media``: (wall seconds, video seconds, cache hits)."""
     settings = {"quality": "low_quality", "media_dir": str(media), "disable_caching": not caching,
                 "verbosity": "INFO", "progress_bar": "none"}
     counter = CacheHits()
@@ -142,8 +140,7 @@ def render(cls: type[Scene], media: Path, caching: bool, quick: bool = False
         handler.setLevel(logging.WARNING)
     log.addHandler(counter)
     try:
-        with environment(DEFAULT_ENV), tempconfig(settings), (
-                quick_copies() if quick else nullcontext()):
+        with environment(DEFAULT_ENV), tempconfig(settings):
             start = time.perf_counter()
             cls().render()
             wall = time.perf_counter() - start
@@ -160,8 +157,8 @@ def render(cls: type[Scene], media: Path, caching: bool, quick: bool = False
 def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--skip-builds", action="store_true", help="no dry-run build times")
-    parser.add_argument("--plain", action="store_true",
-                        help="also time every build without quick_copies (slow)")
+    parser.add_argument("--repeat", type=int, default=3,
+                        help="renders of each scene for the throughput (the best counts)")
     args = parser.parse_args(argv)
     logging.getLogger("manim").setLevel(logging.INFO)
     scratch = Path(tempfile.mkdtemp(prefix="trex-bench-render-"))
@@ -177,27 +174,28 @@ def main(argv: list[str] | None = None) -> None:
             print(f"  bare scene plays FadeIn for: {', '.join(sorted(set(stand_ins)))}")
 
         render(bare_cls, scratch / "warm", caching=False)  # encoder and caches warm, not counted
-        ours_wall, ours_video, _ = render(ours_cls, scratch / "ours", caching=False)
-        bare_wall, bare_video, _ = render(bare_cls, scratch / "bare", caching=False)
-        ours_rate, bare_rate = ours_video / ours_wall, bare_video / bare_wall
-        print(f"ours  (-ql, no cache): {ours_video:6.2f} s video in {ours_wall:6.2f} s "
-              f"= {ours_rate:.2f} video s / wall s")
-        print(f"bare  (-ql, no cache): {bare_video:6.2f} s video in {bare_wall:6.2f} s "
-              f"= {bare_rate:.2f} video s / wall s")
-        quick_wall, quick_video, _ = render(ours_cls, scratch / "quick", caching=False, quick=True)
-        print(f"ours with quick_copies (same frames; not how scenes render today): "
-              f"{quick_video / quick_wall:.2f} video s / wall s, ratio "
-              f"{quick_video / quick_wall / bare_rate:.2f}")
+        ours_walls, bare_walls = [], []
+        for k in range(args.repeat):  # interleaved, so that a slow spell of the machine hits both
+            ours_wall, ours_video, _ = render(ours_cls, scratch / f"ours{k}", caching=False)
+            bare_wall, bare_video, _ = render(bare_cls, scratch / f"bare{k}", caching=False)
+            ours_walls.append(ours_wall)
+            bare_walls.append(bare_wall)
+        ours_rate, bare_rate = ours_video / min(ours_walls), bare_video / min(bare_walls)
+        for name, video, walls, rate in (("ours", ours_video, ours_walls, ours_rate),
+                                         ("bare", bare_video, bare_walls, bare_rate)):
+            print(f"{name}  (-ql, no cache): {video:6.2f} s video in {min(walls):6.2f} s "
+                  f"= {rate:.2f} video s / wall s (best of {len(walls)}; median "
+                  f"{statistics.median(walls):.2f} s)")
 
         if not args.skip_builds:
-            print("dry-run build, s            quick copies" + ("    plain" if args.plain else ""))
+            print("dry-run build, s")
+            total = 0.0
             for name, cls in all_scenes():
-                times = []
-                for fast in (True, False) if args.plain else (True,):
-                    start = time.perf_counter()
-                    build(cls, DEFAULT_ENV, fast=fast)
-                    times.append(time.perf_counter() - start)
-                print(f"  {name:38s}" + "".join(f"{t:9.2f}" for t in times))
+                start = time.perf_counter()
+                build(cls, DEFAULT_ENV)
+                total += time.perf_counter() - start
+                print(f"  {name:38s}{time.perf_counter() - start:7.2f}")
+            print(f"  {'all scenes':38s}{total:7.2f}")
 
         cached = scratch / "cached"
         first_wall, _, first_hits = render(ours_cls, cached, caching=True)

@@ -13,10 +13,17 @@ from manim import FadeIn, FadeOut, Scene, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
-from metaphors.layout import BACKDROP_Z, METAPHOR, SUBTITLE_Y, TITLE_Y, Box
+from metaphors.layout import BACKDROP_Z, METAPHOR, STILL_Z, SUBTITLE_Y, TITLE_Y, Box
 from metaphors.panel import Panel, tag
 from metaphors.theme import THEME, Theme
 from metaphors.typeset import text
+
+#: seconds the words of a beat take to change (at most half the beat)
+WORDS_TIME = 0.3
+#: a shorter play is not split (a frame at 15 fps lasts 1/15 s)
+MIN_PLAY = 0.1
+#: z-index of the words while they change: above everything
+WORDS_Z = 10
 
 
 class Board:
@@ -63,34 +70,58 @@ class Board:
     # --- playing ----------------------------------------------------------------------------------
 
     def play(self, beat, *anims, run_time: float = 1.0) -> None:
-        """Play a beat: its own animations, the panel's, the roles on the left, the subtitle."""
+        """Play a beat: first its words (subtitle, lit line, call line) change, briefly; then its
+        own animations play with the roles on both sides, for the rest of the beat's time.
+
+        Two plays, not one: manim redraws, in every frame of a play, what it animates and all
+        that lies above that. The words change on top of everything (:data:`WORDS_Z`), so their
+        short play redraws only them; then they go to the bottom (:meth:`settle`), so the
+        picture's play does not redraw them. Nothing overlaps the words, so their place in the
+        drawing order does not show."""
         # A marker the beat already animates (a pulse) is recoloured after the play: two
         # animations of one mobject in one play would cancel the first.
         busy = {id(getattr(a, "mobject", None)) for a in anims}
         recolour, after = self._recolour(beat.roles, busy)
-        everything = list(anims) + self.panel.follow(beat) + recolour
-        everything += self._subtitle(beat.caption)
-        if not everything:
-            return
-        self.scene.play(*everything, run_time=max(0.1, run_time * beat.pace),
-                        subcaption=beat.caption if beat.caption != self.caption else None)
+        action = [*anims, *self.panel.follow_roles(beat), *recolour]
+        words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption)]
+        total = max(0.1, run_time * beat.pace)
+        caption = {"subcaption": beat.caption, "subcaption_duration": total} if (
+            beat.caption != self.caption) else {}
+        lead = min(WORDS_TIME, total / 2)
+        if words and lead >= MIN_PLAY:
+            for animation in words:
+                animation.mobject.set_z_index(WORDS_Z)
+            self.scene.play(*words, run_time=lead, **caption)
+            self.settle()
+            if action:
+                self.scene.play(*action, run_time=total - lead)
+            else:
+                self.scene.wait(total - lead)
+        elif words or action:
+            self.scene.play(*words, *action, run_time=total, **caption)
         for marker, colour in after:
             marker.set_color(colour)
         self.caption = beat.caption
         self.settle()
 
     def settle(self) -> None:
-        """Put the text that seldom changes (title, code, call line, subtitle) at the bottom of
-        the scene's drawing order. manim redraws, in every frame of a play, each mobject from
-        the first animated one upwards (ordered by z-index, then by when it was added); text
-        below everything else stays in the play's static image. Nothing else on screen overlaps
-        it, so the picture does not change."""
-        backdrop = [m for m in (self.title, *self.panel.backdrop(), self.subtitle)
-                    if m in self.scene.mobjects]
-        for mobject in backdrop:
-            if mobject.z_index != BACKDROP_Z:
-                mobject.set_z_index(BACKDROP_Z)
-        self.scene.bring_to_back(*backdrop)
+        """Put the text at the bottom of the scene's drawing order: title and code lowest
+        (:data:`~metaphors.layout.STILL_Z`), then the text that changes from beat to beat
+        (:data:`~metaphors.layout.BACKDROP_Z`). manim redraws, in every frame of a play, each
+        mobject from the first animated one upwards (ordered by z-index, then by when it was
+        added); text below everything else stays in the play's static image, and the title and
+        code stay in :class:`~metaphors.renderer.BackdropRenderer`'s kept layer. Nothing else
+        on screen overlaps the text, so the picture does not change."""
+        layers = ((STILL_Z, [self.title, self.panel.code]),
+                  (BACKDROP_Z, [*self.panel.changing(), self.subtitle]))
+        bottom = []
+        for z, mobjects in layers:
+            for mobject in mobjects:
+                if mobject in self.scene.mobjects:
+                    if mobject.z_index != z:
+                        mobject.set_z_index(z)
+                    bottom.append(mobject)
+        self.scene.bring_to_back(*bottom)
 
     def _recolour(self, roles: dict[str, str], busy: set[int]) -> tuple[list, list]:
         """Animations for markers whose role changed, and (marker, colour) to set after."""

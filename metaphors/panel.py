@@ -28,8 +28,8 @@ def tag(mobject, role: str | None = None, name: str | None = None):
 
 
 class Panel:
-    """The right half of every scene. ``follow(beat)`` returns the animations that bring it
-    up to date with a beat (roles, lit line, call line)."""
+    """The right half of every scene. ``follow_roles(beat)`` and ``follow_text(beat)`` return
+    the animations that bring it up to date with a beat (roles; lit line and call line)."""
 
     def __init__(self, points, labels, shown: str | None, theme: Theme = THEME):
         from geometry.polygon import Polygon
@@ -57,10 +57,11 @@ class Panel:
     def mobjects(self) -> list:
         return [self.outline, *self.markers.values(), self.code, self.light, self.call]
 
-    def backdrop(self) -> list:
-        """The panel's text, bottom first: the code, the light, the lit row, the call line.
-        (See :meth:`metaphors.board.Board.settle`.)"""
-        return [self.code, self.light, *([self.lit[1]] if self.lit else []), self.call]
+    def changing(self) -> list:
+        """The panel's text that changes from beat to beat, bottom first: the light, the lit
+        row, the call line (the code itself never changes). See
+        :meth:`metaphors.board.Board.settle`."""
+        return [self.light, *([self.lit[1]] if self.lit else []), self.call]
 
     def _code_block(self) -> VGroup:
         size = 15 if len(self.code_lines) <= 12 else 11
@@ -83,10 +84,14 @@ class Panel:
         rows.move_to((PANEL_CODE.x, PANEL_CODE.y, 0))
         return rows
 
-    def follow(self, beat) -> list[Animation]:
-        """Animations for this beat's roles, lit line and call line (none if nothing changes)."""
-        anims = self._recolour(beat.roles)
-        anims += self._light_line(beat.line)
+    def follow_roles(self, beat) -> list[Animation]:
+        """Animations recolouring the panel's vertices to this beat's roles."""
+        return self._recolour(beat.roles)
+
+    def follow_text(self, beat) -> list[Animation]:
+        """Animations moving the light to this beat's line and showing its call line (none if
+        neither changes)."""
+        anims = self._light_line(beat.line)
         if beat.call is not None:
             anims += self._call_line(beat.call)
         return anims

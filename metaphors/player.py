@@ -3,8 +3,7 @@
 :func:`render_steps` plays the scene's beats once on a real (Cairo) renderer that skips
 animations — every ``play`` jumps to its end state and draws no frames in between — and,
 after each beat, draws the board as it then stands into a PNG. One pass, so the cost is one
-skipped run of the scene (with :func:`metaphors.snapshot.quick_copies`) plus one frame per
-beat, not a render per prefix of beats.
+skipped run of the scene plus one frame per beat, not a render per prefix of beats.
 
 :func:`write_player` writes ``index.html`` beside the pictures: inline CSS and JavaScript, no
 font, script or image from anywhere else (pictures are referenced relatively, ``steps/…``);
@@ -52,7 +51,6 @@ def render_steps(scene_class: type, log, folder: Path, pixels: tuple[int, int] =
 
     from metaphors.actions import perform
     from metaphors.generic import board_for
-    from metaphors.snapshot import quick_copies
 
     out = folder / STEPS_DIR
     out.mkdir(parents=True, exist_ok=True)
@@ -64,7 +62,7 @@ def render_steps(scene_class: type, log, folder: Path, pixels: tuple[int, int] =
             "save_last_frame": False, "preview": False, "verbosity": "WARNING",
             "progress_bar": "none",
         }
-        with tempconfig(settings), quick_copies():  # same mobjects, copied faster
+        with tempconfig(settings):
             scene = scene_class(skip_animations=True)
             scene.camera.background_color = scene.theme.background
             beats: list[Beat] = scene.beats(log)

@@ -11,12 +11,14 @@ import os
 from dataclasses import replace
 from types import MappingProxyType
 
-from manim import DOWN, FadeIn, FadeOut, Scene, VGroup
+from manim import DOWN, Camera, FadeIn, FadeOut, Scene, VGroup, config
+from manim.constants import RendererType
 
 from metaphors.actions import perform
 from metaphors.board import Board
 from metaphors.layout import METAPHOR
 from metaphors.panel import tag
+from metaphors.renderer import BackdropRenderer
 from metaphors.runs import run_logged, scene_log
 from metaphors.storyboard import Beat, Pacing, storyboard
 from metaphors.theme import THEME
@@ -34,6 +36,12 @@ class TraceScene(Scene):
     theme = THEME
     pacing = Pacing()
     metaphor_box = METAPHOR  # where the metaphor's polygon goes (left half by default)
+
+    def __init__(self, renderer=None, **kwargs):
+        if renderer is None and config.renderer == RendererType.CAIRO:
+            renderer = BackdropRenderer(camera_class=kwargs.get("camera_class", Camera),
+                                        skip_animations=kwargs.get("skip_animations", False))
+        super().__init__(renderer=renderer, **kwargs)
 
     def log(self):
         return scene_log(self.algorithm, self.polygon, self.heuristic)

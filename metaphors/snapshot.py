@@ -34,22 +34,19 @@ True
 from __future__ import annotations
 
 import atexit
-import copy
 import json
 import os
 import re
 import shutil
 import tempfile
 from collections.abc import Iterator, Mapping
-from contextlib import contextmanager, nullcontext
+from contextlib import contextmanager
 from dataclasses import dataclass
-from enum import Enum
-from pathlib import Path, PurePosixPath, PureWindowsPath
+from pathlib import Path
 from typing import Any
 
 import numpy as np
-from manim import Animation, AnimationGroup, ManimColor, Mobject, Scene, VMobject, tempconfig
-from manim.mobject.svg.svg_mobject import SVGMobject, VMobjectFromSVGPath
+from manim import Animation, AnimationGroup, Mobject, Scene, VMobject, tempconfig
 from manim.renderer.cairo_renderer import CairoRenderer
 
 #: Decimal places kept for points, bounding boxes, run times, widths and opacities.
@@ -256,82 +253,6 @@ def to_json(graph: Mapping[str, Any]) -> str:
 # --- building a scene without video ------------------------------------------------------------
 
 
-_ATOMIC = frozenset({int, float, bool, str, bytes, complex, type(None), np.float64, np.int64,
-                     np.bool_, PurePosixPath, PureWindowsPath, type(Path())})
-
-
-def _quick_deepcopy(self: Mobject, memo: dict) -> Mobject:
-    """``Mobject.__deepcopy__`` with the same result and fewer calls: immutable attribute
-    values are shared, numeric arrays copied directly, the parsed SVG path of a glyph shared;
-    everything else goes through :func:`copy.deepcopy` with the same memo."""
-    cls = self.__class__
-    result = cls.__new__(cls)
-    memo[id(self)] = result
-    out = result.__dict__
-    for key, value in self.__dict__.items():
-        kind = type(value)
-        if kind in _ATOMIC or isinstance(value, Enum):
-            out[key] = value
-        elif kind is np.ndarray and value.dtype.kind in "biufc":
-            copied = memo.get(id(value))
-            if copied is None:
-                copied = memo[id(value)] = value.copy(order="K")
-            out[key] = copied
-        elif key == "path_obj" and isinstance(self, VMobjectFromSVGPath):
-            out[key] = value
-        elif kind is ManimColor:
-            copied = memo.get(id(value))
-            if copied is None:
-                copied = memo[id(value)] = _copy_colour(value)
-            out[key] = copied
-        else:
-            out[key] = copy.deepcopy(value, memo)
-    result.original_id = str(id(self))
-    return result
-
-
-def _copy_colour(colour: ManimColor) -> ManimColor:
-    """A deep copy of a colour (its state is numeric arrays and plain values)."""
-    result = ManimColor.__new__(ManimColor)
-    for key, value in colour.__dict__.items():
-        result.__dict__[key] = value.copy() if isinstance(value, np.ndarray) else (
-            value if type(value) in _ATOMIC else copy.deepcopy(value))
-    return result
-
-
-@contextmanager
-def quick_copies() -> Iterator[None]:
-    """Within the block, copy mobjects in a fraction of the time, with the same result.
-
-    A dry-run build of a text-heavy scene spends most of its time deep-copying mobjects
-    (every transform copies its mobject and target), above all ``Text`` glyphs. Two changes,
-    neither of which alters a point, a colour or any other attribute value:
-
-    * :func:`_quick_deepcopy` replaces ``Mobject.__deepcopy__``: immutable values (numbers,
-      strings, enums, paths) are not traversed, numeric arrays are copied with
-      ``ndarray.copy``, colours by copying their arrays (sharing preserved through the
-      memo), and copies of a glyph share the
-      parsed SVG path it was made from (``path_obj``: read only when the glyph's points are
-      first generated, never changed);
-    * every SVG mobject, ``Text`` included, uses manim's parsed-SVG cache
-      (``SVG_HASH_TO_MOB_MAP``, keyed by the SVG file, whose name hashes the text and its
-      font settings) instead of parsing the same file again.
-    """
-    deepcopy_before = Mobject.__dict__["__deepcopy__"]
-    init_svg_before = SVGMobject.__dict__["init_svg_mobject"]
-
-    def init_svg_cached(self, use_svg_cache: bool = True):
-        return init_svg_before(self, use_svg_cache=True)
-
-    Mobject.__deepcopy__ = _quick_deepcopy
-    SVGMobject.init_svg_mobject = init_svg_cached
-    try:
-        yield
-    finally:
-        SVGMobject.init_svg_mobject = init_svg_before
-        Mobject.__deepcopy__ = deepcopy_before
-
-
 class GraphRenderer(CairoRenderer):
     """A Cairo renderer that draws no pixels: frames stay blank, the scene logic runs as usual."""
 
@@ -378,13 +299,12 @@ def environment(env: Mapping[str, str | None] | None) -> Iterator[None]:
 
 
 def build(scene_class: type[Scene], env: Mapping[str, str | None] | None = None,
-          media_dir: str | Path | None = None, fast: bool = True) -> tuple[Scene, list[Play]]:
+          media_dir: str | Path | None = None) -> tuple[Scene, list[Play]]:
     """Build a scene in dry run (no video, no pixels, animations skipped to their ends) and
     return it with its recorded plays.
 
     ``env`` sets or unsets environment variables during the build; ``media_dir`` is where
-    manim may cache text SVGs (default: a temporary directory of this process); ``fast``
-    builds under :func:`quick_copies`.
+    manim may cache text SVGs (default: a temporary directory of this process).
     """
     settings = {
         "dry_run": True,
@@ -395,8 +315,7 @@ def build(scene_class: type[Scene], env: Mapping[str, str | None] | None = None,
         "verbosity": "WARNING",
         "progress_bar": "none",
     }
-    speed = quick_copies() if fast else nullcontext()
-    with environment(env), tempconfig(settings), speed:
+    with environment(env), tempconfig(settings):
         scene = scene_class(renderer=GraphRenderer(skip_animations=True), skip_animations=True)
         with recording(scene) as plays:
             scene.render()
@@ -404,7 +323,7 @@ def build(scene_class: type[Scene], env: Mapping[str, str | None] | None = None,
 
 
 def build_graph(scene_class: type[Scene], env: Mapping[str, str | None] | None = None,
-                media_dir: str | Path | None = None, fast: bool = True) -> str:
+                media_dir: str | Path | None = None) -> str:
     """The scene graph of a Scene subclass as JSON text (see the module docs).
 
     Parameters
@@ -416,8 +335,6 @@ def build_graph(scene_class: type[Scene], env: Mapping[str, str | None] | None =
         ``{"TREX_LOG": "run.json", "TREX_POLYGON": None}``; restored afterwards.
     media_dir
         Scratch media directory (default: a temporary one); nothing else is written.
-    fast
-        Build under :func:`quick_copies` (same graph, a fraction of the time).
 
     Returns
     -------
@@ -438,5 +355,5 @@ def build_graph(scene_class: type[Scene], env: Mapping[str, str | None] | None =
     >>> graph["final"][0]["points"][:2]
     [[1.0, 1.0, 0.0], [0.333, 1.0, 0.0]]
     """
-    scene, plays = build(scene_class, env, media_dir, fast)
+    scene, plays = build(scene_class, env, media_dir)
     return to_json(scene_graph(plays, scene))

@@ -25,7 +25,7 @@ import av
 import pytest
 from manim.utils.testing.frames_comparison import frames_comparison
 
-from metaphors.snapshot import build_graph, environment, quick_copies
+from metaphors.snapshot import build_graph, environment
 
 __module_test__ = "render"
 
@@ -64,7 +64,7 @@ def test_polygon_last_frame(scene):
 
 @frames_comparison(last_frame=True, base_scene=Scaling)
 def test_scaling_last_frame(scene):
-    with environment(DEFAULT_ENV), quick_copies():  # same mobjects, cheaper copies
+    with environment(DEFAULT_ENV):
         Scaling.construct(scene)
     scene.wait()
 
