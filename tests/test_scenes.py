@@ -36,8 +36,7 @@ from syrupy.extensions.single_file import SingleFileSnapshotExtension, WriteMode
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import WRONG, find_diagonal
 from geometry.io import read_polygon
-from metaphors.snapshot import build, build_graph, environment
-from metaphors.storyboard import Pacing
+from metaphors.snapshot import build_graph, environment
 
 SCENES_DIR = Path(__file__).resolve().parents[1] / "scenes"
 
@@ -273,33 +272,3 @@ def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
 
 
 
-
-# --- pacing --------------------------------------------------------------------------------------
-
-
-def _video_seconds(scene_class, polygon: str) -> float:
-    scene, _ = build(scene_class, {**DEFAULT_ENV, "TREX_POLYGON": polygon})
-    return scene.renderer.time
-
-
-@pytest.mark.parametrize("polygon", [
-    "random-orthogonal:20:0",  # the longest of the generators' first 20-gons (97 s)
-    pytest.param("random-star:20:1", marks=pytest.mark.slow),
-])
-def test_twenty_vertex_triangulation_stays_under_two_minutes(polygon):
-    """Divide and conquer on 20 vertices (18 triangles, 17 claims) plays in under 2 minutes:
-    full detail for the first claims, then faster (the scene's ``Pacing``)."""
-    scene_class = next(c for c in SCENES if c.id == "divide_and_conquer.DivideAndConquer").cls
-    seconds = _video_seconds(scene_class, polygon)
-    assert 30 < seconds < 120, f"{polygon}: {seconds:.1f} s of video"
-
-
-@pytest.mark.slow
-def test_pacing_is_what_keeps_it_short():
-    scene_class = next(c for c in SCENES if c.id == "divide_and_conquer.DivideAndConquer").cls
-
-    class Unpaced(scene_class):
-        pacing = Pacing(full=100, fast=1.0)
-
-    polygon = "random-orthogonal:20:0"
-    assert _video_seconds(Unpaced, polygon) > 1.5 * _video_seconds(scene_class, polygon)

@@ -271,6 +271,8 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
             "verbosity": "WARNING",
             "progress_bar": "display" if progress else "none",
             "preview": False,
+            # encode one play while drawing the next (as manim.cfg sets it for `manim`)
+            "max_inflight_encoders": 4,
         }
         with tempconfig(settings):
             scene = make_scene()
