@@ -23,8 +23,10 @@ from metaphors.typeset import text
 
 def polygon(board, beat) -> None:
     board.scene.add(*board.panel.mobjects())
-    board.play(beat, Write(board.title), Create(board.shape), FadeIn(*board.markers.values()),
-               run_time=1.5)
+    # one FadeIn per marker: FadeIn(*markers) would put them on screen as one group, and manim
+    # redraws a whole group in every frame when any member of it changes colour
+    board.play(beat, Write(board.title), Create(board.shape),
+               *[FadeIn(m) for m in board.markers.values()], run_time=1.5)
 
 
 def pick(board, beat) -> None:
