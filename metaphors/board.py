@@ -8,6 +8,8 @@ caption as a Manim subcaption (so every render also writes an ``.srt``).
 
 from __future__ import annotations
 
+from datetime import timedelta
+
 import numpy as np
 from manim import FadeIn, FadeOut, Scene, VGroup
 
@@ -85,8 +87,10 @@ class Board:
         action = [*anims, *self.panel.follow_roles(beat), *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption)]
         total = max(0.1, run_time * beat.pace)
-        caption = {"subcaption": beat.caption, "subcaption_duration": total} if (
-            beat.caption != self.caption) else {}
+        caption = {}
+        if beat.caption != self.caption:
+            self.close()
+            caption = {"subcaption": beat.caption, "subcaption_duration": total}
         lead = min(WORDS_TIME, total / 2)
         if words and lead >= MIN_PLAY:
             for animation in words:
@@ -103,6 +107,15 @@ class Board:
             marker.set_color(colour)
         self.caption = beat.caption
         self.settle()
+
+    def close(self) -> None:
+        """The subtitle on screen stays there until the next one: stretch its ``.srt`` cue
+        (written when the caption appeared, as long as that beat) to now. Called when the
+        caption changes and when the board's run is over."""
+        cues = getattr(getattr(self.scene.renderer, "file_writer", None), "subcaptions", None)
+        if cues and self.caption and cues[-1].content == self.caption:
+            now = timedelta(seconds=float(self.scene.renderer.time))
+            cues[-1].end = max(cues[-1].end, now)
 
     def settle(self) -> None:
         """Put the text at the bottom of the scene's drawing order: title and code lowest

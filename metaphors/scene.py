@@ -62,6 +62,7 @@ class TraceScene(Scene):
                       title, self.theme, self.metaphor_box)
         for beat in beats:
             perform(board, beat)
+        board.close()
         return board
 
 

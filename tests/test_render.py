@@ -147,3 +147,6 @@ def test_render_subtitles(rendered):
         assert start == pytest.approx(at, abs=1.5 / FPS), text
     starts = [c[1] for c in cues]
     assert starts == sorted(starts)
+    # a subtitle stays on screen until the next one replaces it, and so does its cue
+    for (_, _, end, text), (_, start, _, _) in zip(cues, cues[1:], strict=False):
+        assert end == pytest.approx(start, abs=1.5 / FPS), text
