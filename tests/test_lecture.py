@@ -336,3 +336,89 @@ def test_existing_dir_gets_new_lecture_and_keeps_other_files(tmp_path, tiny):
     assert leftovers(out / "chapters") == ["01-tiny-Cues.mp4", "01-tiny-Cues.srt"]
     assert (out / "lecture.mp4").read_bytes() == (out / "chapters/01-tiny-Cues.mp4").read_bytes()
     assert leftovers(tmp_path) == ["lecture"]
+
+
+# --- --polygon is checked against what the chapters play (dry runs, no rendering) ----------------
+
+PICKY = textwrap.dedent('''
+    from geometry.diagonals import find_diagonal
+
+
+    def picky(polygon):
+        """The corrected scaling heuristic, except on quadrilaterals."""
+        if polygon.n == 4:
+            raise ValueError("no quadrilaterals, please")
+        return find_diagonal(polygon, "scaling-correct").pair
+''')
+PICKY_CHAPTER = textwrap.dedent('''
+    from metaphors.lecture import Card, LectureScene, Run
+
+    SPEC = __file__.replace("picky_chapter.py", "picky.py:picky")
+
+
+    class Picky(LectureScene):
+        chapter_title = "Picky"
+        slug = "picky"
+
+        def chapter_segments(self):
+            return (Card("Picky"), Run(SPEC, None, "picky on the lecture's polygon"),
+                    Run(SPEC, "counterexample", "picky on the counterexample"))
+''')
+
+
+@pytest.fixture
+def no_rendering(monkeypatch):
+    """build_lecture replaced: records the chapters it was given, renders nothing."""
+    built = []
+
+    def fake(chapters, out_dir, *args, **kwargs):
+        built.append([c.slug for c in chapters])
+        return out_dir / "lecture.mp4", 1.0
+
+    monkeypatch.setattr(lecture_command, "_start", lambda *a: pytest.fail("rendered"))
+    monkeypatch.setattr(lecture_command, "build_lecture", fake)
+    return built
+
+
+def test_polygon_a_chapters_own_run_rejects_exits_2_before_rendering(tmp_path, no_rendering):
+    """The chapter's class attribute `algorithm` (scaling) accepts a square; its Run does not."""
+    (tmp_path / "picky.py").write_text(PICKY)
+    chapter = tmp_path / "picky_chapter.py"
+    chapter.write_text(PICKY_CHAPTER)
+    out = tmp_path / "lecture"
+    code, stdout, stderr = run("lecture", "--polygon", "square", "--chapters",
+                               f"{chapter}:Picky", "-o", str(out))
+    assert code == 2 and stdout == ""
+    assert stderr.startswith(f"error: square: chapter 1/1 picky-chapter-Picky: {tmp_path}"), stderr
+    assert "no quadrilaterals, please" in stderr and stderr.count("\n") == 1
+    assert no_rendering == [] and not out.exists()
+    # on a polygon its run accepts, the lecture goes on to render
+    code, _, stderr = run("lecture", "--polygon", "star", "--chapters", f"{chapter}:Picky",
+                          "-o", str(out))
+    assert code == 0, stderr
+    assert no_rendering == [["picky-chapter-Picky"]]
+
+
+def test_lecture_chapters_are_checked_by_their_runs_not_their_class_algorithm(
+        tmp_path, monkeypatch, no_rendering):
+    """A triangle has no diagonal for `scaling` (LectureScene's inherited default), but every
+    run of these chapters plays it; each of those runs is dry-run once."""
+    from metaphors import lecture
+
+    ran = []
+
+    def spy(algorithm, polygon, heuristic=None):
+        ran.append((algorithm, polygon, heuristic))
+        return real(algorithm, polygon, heuristic)
+
+    real = lecture.run_logged
+    monkeypatch.setattr(lecture, "run_logged", spy)
+    code, _, stderr = run("lecture", "--polygon", "triangle", "--chapters",
+                          "overview,ears,faster,experience,exercises", "-o",
+                          str(tmp_path / "lecture"))
+    assert code == 0, stderr
+    assert no_rendering == [["overview", "ears", "faster", "experience", "exercises"]]
+    assert ran == [("divide-and-conquer", "triangle", "gravity"),
+                   ("ear-clipping-naive", "triangle", None),
+                   ("prune-and-search", "triangle", None),
+                   ("monotone", "triangle", None)]

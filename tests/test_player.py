@@ -196,3 +196,115 @@ def test_a_heuristic_of_ones_own_and_a_polygon(tmp_path, fake_steps):
     assert fake_steps["log"].meta["polygon"] == "counterexample-twin"
     page = (tmp_path / "mine" / "index.html").read_text()
     assert "<title>biggest_angle: Claim BD for the candidate D" in page
+
+
+# --- a saved log (--log, TREX_LOG) ---------------------------------------------------------------
+
+
+def page_data(folder: Path) -> dict:
+    page = (folder / "index.html").read_text()
+    return json.loads(re.search(r'<script id="player-data" type="application/json">(.*?)</script>',
+                                page, re.S).group(1))
+
+
+def saved_log(folder: Path, *args) -> Path:
+    """``trex log ARGS -o folder/NAME.json``: a log as users save them."""
+    path = folder / f"{'-'.join(args)}.json"
+    code, _, err = run("log", *args, "-o", str(path))
+    assert code == 0, err
+    return path
+
+
+def test_a_saved_log_gives_the_live_runs_steps(scaling_player, tmp_path):
+    saved = saved_log(tmp_path, "scaling", "counterexample")
+    out = tmp_path / "replayed"
+    code, stdout, err = run("player", "scaling", "--log", str(saved), "-o", str(out))
+    assert code == 0, err
+    assert stdout == f"{out / 'index.html'}\n"
+    assert page_data(out)["steps"] == page_data(scaling_player)["steps"]
+    live = sorted((scaling_player / "steps").glob("*.png"))
+    replayed = sorted((out / "steps").glob("*.png"))
+    assert [p.read_bytes() for p in replayed] == [p.read_bytes() for p in live]
+    assert "scaling on counterexample, saved in" in (out / "index.html").read_text()
+
+
+def test_trex_log_is_read_as_scenes_read_it(tmp_path, monkeypatch, fake_steps):
+    saved = saved_log(tmp_path, "gravity", "star")
+    live = storyboard(run_logged("gravity", "star"))
+
+    def played():
+        return [(b.caption, b.call, b.line) for b in storyboard(fake_steps["log"])]
+
+    monkeypatch.setenv("TREX_LOG", str(saved))
+    assert run("player", "gravity", "-o", str(tmp_path / "env"))[0] == 0
+    assert fake_steps["log"].meta["polygon"] == "star"  # not the scene's gravity-snag
+    assert fake_steps["log"].meta["shown"] == "gravity_at"  # as a live run (trex log omits it)
+    assert played() == [(b.caption, b.call, b.line) for b in live]
+    # --polygon wins over TREX_LOG, as for `trex render --polygon`
+    assert run("player", "gravity", "--polygon", "counterexample", "-o",
+               str(tmp_path / "polygon"))[0] == 0
+    assert fake_steps["log"].meta["polygon"] == "counterexample"
+    monkeypatch.delenv("TREX_LOG")
+    monkeypatch.setenv("TREX_POLYGON", "two-ears")
+    assert run("player", "gravity", "-o", str(tmp_path / "polygon"))[0] == 0
+    assert fake_steps["log"].meta["polygon"] == "two-ears"
+
+
+@pytest.mark.parametrize(("make", "message"), [
+    (lambda d: d / "missing.json", "{log}: cannot read: No such file or directory"),
+    (lambda d: d, "{log}: cannot read: Is a directory"),
+    (lambda d: write(d / "notes.json", "not json"), "{log}: not a trex log: Expecting value"),
+    (lambda d: write(d / "other.json", '{"schema": "x", "events": []}'),
+     "{log}: not a trex log: unsupported log schema 'x'"),
+    (lambda d: write(d / "bad-event.json",
+                     '{"schema": "trex-log/1", "meta": {"algorithm": "gravity"}, "events": [1]}'),
+     "{log}: not a trex log: an event must be a JSON object"),
+    (lambda d: write(d / "empty.json",
+                     '{"schema": "trex-log/1", "meta": {"algorithm": "gravity"}, "events": []}'),
+     "{log}: cannot be played: it does not start with the polygon"),
+    (lambda d: write(d / "nameless.json", '{"schema": "trex-log/1", "meta": {}, "events": []}'),
+     "{log}: not the log of a run: its meta names no algorithm"),
+    (lambda d: saved_log(d, "scaling", "counterexample"),
+     "{log}: is a log of scaling, but gravity plays gravity"),
+], ids=["missing", "directory", "not-json", "not-a-log", "bad-event", "no-events", "no-algorithm",
+        "other-algorithm"])
+def test_a_bad_saved_log_is_one_line_before_rendering(tmp_path, monkeypatch, make, message):
+    monkeypatch.setattr(player_module, "render_steps", lambda *a, **k: pytest.fail("rendered"))
+    inputs = tmp_path / "in"
+    inputs.mkdir()
+    log = make(inputs)
+
+    def refused(label, *args):
+        code, out, err = run("player", "gravity", *args, "-o", str(tmp_path / "out"))
+        assert code == 2 and out == ""
+        assert err.startswith("error: " + message.format(log=label)), err
+        assert err.count("\n") == 1
+        assert sorted(p.name for p in tmp_path.iterdir()) == ["in"]  # nothing written
+        return True
+
+    assert refused(str(log), "--log", str(log))
+    monkeypatch.setenv("TREX_LOG", str(log))
+    assert refused(f"TREX_LOG={log}")
+
+
+def test_a_saved_log_of_another_heuristic_or_with_a_polygon_is_refused(tmp_path, fake_steps):
+    saved = saved_log(tmp_path, "divide-and-conquer", "lecture", "--heuristic", "scaling")
+    code, _, err = run("player", "divide_and_conquer", "--log", str(saved), "-o",
+                       str(tmp_path / "out"))
+    assert code == 2
+    assert err == (f"error: {saved}: is a log of divide-and-conquer with scaling, but "
+                   "divide_and_conquer plays divide-and-conquer with gravity\n")
+    code, _, err = run("player", "gravity", "--log", str(saved), "--polygon", "star", "-o",
+                       str(tmp_path / "out"))
+    assert code == 2
+    assert err == ("error: --polygon and --log: give one of them (a saved log has its own "
+                   "polygon)\n")
+    assert not (tmp_path / "out").exists() and "log" not in fake_steps
+    ok = saved_log(tmp_path, "divide-and-conquer", "lecture")
+    assert run("player", "divide_and_conquer", "--log", str(ok), "-o", str(tmp_path / "out"))[0] == 0
+    assert fake_steps["log"].meta["shown"] == "divide_and_conquer"
+
+
+def write(path: Path, text: str) -> Path:
+    path.write_text(text)
+    return path

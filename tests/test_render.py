@@ -13,6 +13,7 @@ the play that changed it).
 from __future__ import annotations
 
 import importlib.util
+import itertools
 import json
 import math
 import os
@@ -148,5 +149,5 @@ def test_render_subtitles(rendered):
     starts = [c[1] for c in cues]
     assert starts == sorted(starts)
     # a subtitle stays on screen until the next one replaces it, and so does its cue
-    for (_, _, end, text), (_, start, _, _) in zip(cues, cues[1:], strict=False):
+    for (_, _, end, text), (_, start, _, _) in itertools.pairwise(cues):
         assert end == pytest.approx(start, abs=1.5 / FPS), text

@@ -13,6 +13,11 @@ with SIGINT and SIGTERM held for the moves. Ctrl-C, SIGTERM or a failing chapter
 other renders and leave DIR as it was. Bad input (the polygon, or a polygon a chapter's
 algorithm rejects, an output that is not a directory) is one line and status 2 before any
 rendering; a chapter that fails to render is one line naming it and status 1.
+
+With ``--polygon``, a lecture chapter is checked by what it plays: each of its segments that
+runs on the lecture's polygon (a ``Run`` or ``Compare`` whose polygon is None) is computed
+once on it, as :class:`metaphors.lecture.LectureScene` would, without drawing
+(:func:`polygon_checks`); a scene played as a chapter dry-runs its ``algorithm``.
 """
 
 from __future__ import annotations
@@ -38,6 +43,7 @@ from trex.render_command import (
     QUALITIES,
     SCENES_DIR,
     Interrupted,
+    _environment,
     _signals_held,
     dry_run,
     interrupts_raise,
@@ -125,15 +131,59 @@ def _label(k: int, n: int, chapter) -> str:
 # --- checks before rendering ------------------------------------------------------------------------
 
 
-def check_chapters(chapters: Sequence, polygon: str | None) -> None:
-    """Load every chapter's scene class and, with a polygon, run its algorithm on it once.
+def lecture_segments(cls: type) -> tuple | None:
+    """The segments a lecture chapter's class plays (None: not a lecture chapter). Listed
+    without building the scene: ``chapter_segments`` needs only the class's attributes."""
+    from metaphors.lecture import LectureScene
 
-    A scene that does not load raises :class:`ChapterFailed`; a polygon an algorithm
+    if not (isinstance(cls, type) and issubclass(cls, LectureScene)):
+        return None
+    return tuple(cls.__new__(cls).chapter_segments())
+
+
+def polygon_checks(segments: Sequence) -> list[tuple[str, tuple, Callable[[], object]]]:
+    """``(what, key, check)`` for each segment that plays the lecture's polygon: ``check()``
+    computes what the chapter would show — a Run's log, a Compare's two triangulations — by
+    the chapter's own calls, on ``lecture_polygon()`` (``TREX_POLYGON``, set by the caller).
+    Equal keys are the same computation."""
+    from geometry.cdt import constrained_delaunay
+    from geometry.triangulate import triangulate
+    from metaphors import lecture
+    from metaphors.lecture import Compare, Run, lecture_polygon
+
+    def run(segment: Run):
+        return lecture.run_logged(segment.algorithm, segment.polygon or lecture_polygon(),
+                                  segment.heuristic)
+
+    def compare(segment: Compare):
+        polygon = lecture.read_polygon(segment.polygon or lecture_polygon())
+        return triangulate(polygon, segment.ours), constrained_delaunay(polygon)
+
+    checks = []
+    for segment in segments:
+        if isinstance(segment, Run) and segment.polygon is None:
+            what = segment.algorithm + (f" with {segment.heuristic}" if segment.heuristic
+                                        else "")
+            checks.append((what, ("run", segment.algorithm, segment.heuristic),
+                           lambda segment=segment: run(segment)))
+        elif isinstance(segment, Compare) and segment.polygon is None:
+            checks.append((f"{segment.ours} beside constrained Delaunay",
+                           ("compare", segment.ours), lambda segment=segment: compare(segment)))
+    return checks
+
+
+def check_chapters(chapters: Sequence, polygon: str | None) -> None:
+    """Load every chapter's scene class and, with a polygon, compute on it what the chapter
+    plays on it (:func:`polygon_checks`; a scene that is not a lecture chapter: its
+    ``algorithm``, once), drawing nothing.
+
+    A scene that does not load raises :class:`ChapterFailed`; a polygon a chapter's run
     rejects exits with status 2 (bad input).
     """
     stems = [chapter_stem(c) for c in chapters]
     if len(set(stems)) != len(stems):
         raise ChapterFailed(f"chapters repeat: {', '.join(stems)}")
+    done: set = set()  # computations already checked (chapters share runs)
     for k, chapter in enumerate(chapters):
         path = scene_path(chapter)
         try:
@@ -142,11 +192,33 @@ def check_chapters(chapters: Sequence, polygon: str | None) -> None:
             cls = load_scene_class(path, chapter.scene_class or None)
         except ValueError as exc:
             raise ChapterFailed(f"{_label(k, len(chapters), chapter)}: {exc}") from None
-        if polygon is not None and not getattr(cls, "runs", None):
+        if polygon is not None:
+            _check_polygon(cls, polygon, _label(k, len(chapters), chapter), done)
+
+
+def _check_polygon(cls: type, polygon: str, label: str, done: set) -> None:
+    """One chapter's part of :func:`check_chapters`; ``done`` holds the keys already run."""
+    try:
+        segments = lecture_segments(cls)
+    except Exception as exc:  # the chapter's own list is broken: it would not render either
+        raise ChapterFailed(f"{label}: cannot list its segments: {type(exc).__name__}: "
+                            f"{error_line(exc)}") from None
+    if segments is None:
+        if not getattr(cls, "runs", None):
             try:
                 dry_run(cls, polygon)
             except (GeometryError, ValueError, KeyError) as exc:
                 fail(f"{polygon}: {error_line(exc)}")
+        return
+    with _environment(TREX_POLYGON=polygon, TREX_LOG=None):  # as the chapter's process has it
+        for what, key, check in polygon_checks(segments):
+            if key in done:
+                continue
+            try:
+                check()
+            except (GeometryError, ValueError, KeyError) as exc:
+                fail(f"{polygon}: {label}: {what}: {error_line(exc)}")
+            done.add(key)
 
 
 def check_output_dir(out_dir: Path) -> None:

@@ -1,12 +1,19 @@
 """``trex player``: a self-contained offline HTML page stepping through a run, beat by beat.
 
-``trex player SCENE [--polygon P] -o DIR`` writes ``DIR/index.html`` and ``DIR/steps/*.png``
-(one picture per beat, see :mod:`metaphors.player`). SCENE is what ``trex render`` takes: a
-name from ``scenes/`` (``gravity``, ``rotation:RotationCcw``), a scene file, or a heuristic of
-one's own (``file.py:function``). The scene's algorithm, heuristic, default polygon, title,
-theme and pacing are its class attributes; a scene that plays several runs is refused.
+``trex player SCENE [--polygon P | --log FILE] -o DIR`` writes ``DIR/index.html`` and
+``DIR/steps/*.png`` (one picture per beat, see :mod:`metaphors.player`). SCENE is what
+``trex render`` takes: a name from ``scenes/`` (``gravity``, ``rotation:RotationCcw``), a scene
+file, or a heuristic of one's own (``file.py:function``). The scene's algorithm, heuristic,
+default polygon, title, theme and pacing are its class attributes; a scene that plays several
+runs is refused.
 
-Checked before anything is drawn, each as one line and exit status 2: the polygon, the scene,
+The run played is the one ``trex render SCENE`` would play (see
+:func:`metaphors.runs.scene_log`): ``--log FILE`` (a saved log, as ``trex log`` writes) or
+``--polygon`` if given, else ``TREX_LOG``, else a live run on ``TREX_POLYGON`` or the scene's
+default polygon. A saved log must be of the algorithm (and heuristic) the scene plays.
+
+Checked before anything is drawn, each as one line and exit status 2: the polygon or saved
+log (a missing file, not a trex log, a log of another algorithm than the scene's), the scene,
 the output directory, the run itself. The page is built in a temporary directory beside DIR
 and renamed into place; an existing DIR is replaced only if it is empty or an earlier player
 (it holds the marker file ``.trex-player``). Failure or Ctrl-C leaves DIR as it was.
@@ -22,6 +29,7 @@ from pathlib import Path
 import click
 
 from geometry.errors import GeometryError
+from geometry.user_heuristics import is_user_spec
 from trex.inputs import error_line, fail, load_or_exit
 
 MARKER = ".trex-player"
@@ -47,6 +55,57 @@ def load_scene(scene: str) -> type:
         raise ValueError(f"{cls.__name__} plays several runs; the player steps through one "
                          "(pick a scene of one algorithm)")
     return cls
+
+
+def read_log(path: str):
+    """The saved log at ``path`` (a :class:`tracing.Log` of one run). Raises ValueError (one
+    line) for a file that cannot be read or is not a trex log of a run."""
+    from tracing import Log
+
+    try:
+        log = Log.load(path)
+    except OSError as exc:
+        raise ValueError(f"cannot read: {exc.strerror or error_line(exc)}") from None
+    except (ValueError, KeyError, TypeError, RecursionError) as exc:  # JSON, UTF-8, schema
+        raise ValueError(f"not a trex log: {error_line(exc)}") from None
+    algorithm = log.meta.get("algorithm")
+    if not isinstance(algorithm, str) or not algorithm:
+        raise ValueError("not the log of a run: its meta names no algorithm")
+    if "shown" not in log.meta and not log.meta.get("user_heuristic"):
+        # `trex log` does not record which function the panel shows; a live run does
+        from metaphors.runs import SHOWN
+
+        log.meta["shown"] = SHOWN.get(algorithm, algorithm)
+    return log
+
+
+def _same_algorithm(plays: str, logged: str) -> bool:
+    """A heuristic of one's own is the same when its function is (the path may be spelled
+    differently)."""
+    if plays == logged:
+        return True
+    return (is_user_spec(plays) and is_user_spec(logged)
+            and plays.rpartition(":")[2] == logged.rpartition(":")[2])
+
+
+def check_log(cls: type, log, scene: str | None = None) -> None:
+    """A saved log must be a run of what the scene (named ``scene``) plays and give steps
+    that start with the polygon. Raises ValueError (one line)."""
+    from metaphors.storyboard import storyboard
+
+    logged, plays, name = log.meta["algorithm"], cls.algorithm, scene or cls.__name__
+    if not _same_algorithm(plays, logged):
+        raise ValueError(f"is a log of {logged}, but {name} plays {plays}")
+    ran_with, wants = log.meta.get("heuristic"), getattr(cls, "heuristic", None)
+    if ran_with and wants and ran_with != wants:
+        raise ValueError(f"is a log of {logged} with {ran_with}, but {name} plays "
+                         f"{plays} with {wants}")
+    try:
+        beats = storyboard(log)
+    except Exception as exc:  # a malformed event: whatever it breaks, the log is at fault
+        raise ValueError(f"cannot be played: {type(exc).__name__}: {error_line(exc)}") from None
+    if not beats or not {"points", "labels"} <= set(beats[0].data):
+        raise ValueError("cannot be played: it does not start with the polygon")
 
 
 def check_output(target: Path) -> None:
@@ -82,39 +141,67 @@ def move_into_place(built: Path, target: Path) -> None:
 
 @click.command()
 @click.argument("scene")
-@click.option("--polygon", metavar="POLYGON", help="Polygon file or sample (default: the scene's).")
+@click.option("--polygon", metavar="POLYGON",
+              help="Polygon file or sample (default: TREX_POLYGON, else the scene's).")
+@click.option("--log", "saved", metavar="FILE.json",
+              help="Play a saved log (`trex log` writes them) instead of running live; "
+                   "as TREX_LOG for scenes, which is read when neither option is given.")
 @click.option("-o", "--output", "output", required=True, metavar="DIR",
               help="Directory to write index.html and steps/ into.")
-def player(scene: str, polygon: str | None, output: str) -> None:
+def player(scene: str, polygon: str | None, saved: str | None, output: str) -> None:
     """Write an offline HTML page that steps through SCENE's run, one picture per step.
 
     SCENE as for `trex render` (gravity, rotation:RotationCcw, my_scene.py:Class, or
     file.py:function for a heuristic of your own). Open DIR/index.html; ← → step, Home End
     jump. Prints the page's path.
     """
-    if polygon is not None:
-        load_or_exit(polygon)  # bad input: one line, exit 2, before anything is drawn
+    if polygon is not None and saved is not None:
+        fail("--polygon and --log: give one of them (a saved log has its own polygon)")
+    saved_as = saved
+    if polygon is None and saved is None:  # as scenes do: TREX_LOG, else TREX_POLYGON
+        if os.environ.get("TREX_LOG"):
+            saved, saved_as = os.environ["TREX_LOG"], f"TREX_LOG={os.environ['TREX_LOG']}"
+        else:
+            polygon = os.environ.get("TREX_POLYGON") or None
+    log = None
+    if saved is not None:  # bad input: one line, exit 2, before anything is drawn
+        try:
+            log = read_log(saved)
+        except ValueError as exc:
+            fail(f"{saved_as}: {exc}")
+    elif polygon is not None:
+        load_or_exit(polygon)
     try:
         cls = load_scene(scene)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
+    if log is not None:
+        try:
+            check_log(cls, log, scene)
+        except ValueError as exc:
+            fail(f"{saved_as}: {exc}")
     target = Path(output)
     try:
         check_output(target)
     except ValueError as exc:
         fail(f"{output}: {exc}")
-    polygon = polygon if polygon is not None else cls.polygon
-    from metaphors.runs import run_logged
+    if log is None:
+        polygon = polygon if polygon is not None else cls.polygon
+        from metaphors.runs import run_logged
 
-    try:
-        log = run_logged(cls.algorithm, polygon, cls.heuristic)
-    except (GeometryError, ValueError, KeyError) as exc:
-        fail(f"{polygon}: {error_line(exc)}")
+        try:
+            log = run_logged(cls.algorithm, polygon, cls.heuristic)
+        except (GeometryError, ValueError, KeyError) as exc:
+            fail(f"{polygon}: {error_line(exc)}")
+        subtitle = f"{log.meta.get('algorithm')} on {polygon}"
+    else:
+        subtitle = (f"{log.meta.get('algorithm')} on {log.meta.get('polygon', '?')}, "
+                    f"saved in {Path(saved).name}")
     from trex.render_command import EXIT_SIGNAL, Interrupted, interrupts_raise
 
     with interrupts_raise() as signals:
         try:
-            page = _build(cls, log, polygon, target)
+            page = _build(cls, log, subtitle, target)
             signals.done = True
         except Interrupted as exc:
             click.echo(f"error: {scene}: interrupted; {output} left as it was", err=True)
@@ -128,14 +215,14 @@ def player(scene: str, polygon: str | None, output: str) -> None:
     click.echo(str(page))
 
 
-def _build(cls: type, log, polygon: str, target: Path) -> Path:
+def _build(cls: type, log, subtitle: str, target: Path) -> Path:
     from metaphors.player import render_steps, write_player
 
     built = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".player",
                                   dir=target.parent))
     try:
         steps = render_steps(cls, log, built)
-        write_player(built, steps, cls.title, f"{log.meta.get('algorithm')} on {polygon}")
+        write_player(built, steps, cls.title, subtitle)
         (built / MARKER).write_text("written by trex player\n", encoding="utf-8")
         built.chmod(0o755)  # mkdtemp makes it private
         move_into_place(built, target)
