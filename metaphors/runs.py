@@ -15,6 +15,7 @@ import os
 import tracing
 from geometry.diagonals import HEURISTICS, find_diagonal
 from geometry.io import read_polygon
+from geometry.polygon import Polygon
 from geometry.triangulate import triangulate
 from geometry.user_heuristics import is_user_spec, load_user_heuristic
 
@@ -27,9 +28,14 @@ def run_logged(algorithm: str, polygon: str, heuristic: str | None = None) -> tr
     algorithm on a polygon file or sample."""
     if is_user_spec(algorithm):
         return _run_user(algorithm, polygon)
-    p = read_polygon(polygon)
-    shown = SHOWN.get(algorithm, algorithm)
-    meta = {"algorithm": algorithm, "polygon": polygon, "shown": shown}
+    return record_run(algorithm, read_polygon(polygon), polygon, heuristic)
+
+
+def record_run(algorithm: str, p: Polygon, polygon: str,
+               heuristic: str | None = None) -> tracing.Log:
+    """The log of a named heuristic or triangulation algorithm on the polygon ``p`` (read from
+    ``polygon``, the name the log records). ``trex log`` writes exactly this log."""
+    meta = {"algorithm": algorithm, "polygon": polygon, "shown": SHOWN.get(algorithm, algorithm)}
     if heuristic:
         meta["heuristic"] = heuristic
     with tracing.record(**meta) as log:
@@ -38,6 +44,17 @@ def run_logged(algorithm: str, polygon: str, heuristic: str | None = None) -> tr
         else:
             with tracing.alive(p):
                 triangulate(p, algorithm, heuristic)
+    return log
+
+
+def saved_log(path: str) -> tracing.Log:
+    """A saved log, as a scene plays it. A log written before logs named the function the
+    panel shows gets the one a live run names."""
+    log = tracing.Log.load(path)
+    algorithm = log.meta.get("algorithm")
+    if isinstance(algorithm, str) and "shown" not in log.meta and not log.meta.get(
+            "user_heuristic"):
+        log.meta["shown"] = SHOWN.get(algorithm, algorithm)
     return log
 
 
@@ -58,5 +75,5 @@ def scene_log(algorithm: str, default_polygon: str, heuristic: str | None = None
     ``TREX_POLYGON`` (a file or sample name), else on the scene's default polygon."""
     saved = os.environ.get("TREX_LOG")
     if saved:
-        return tracing.Log.load(saved)
+        return saved_log(saved)
     return run_logged(algorithm, os.environ.get("TREX_POLYGON", default_polygon), heuristic)

@@ -84,11 +84,27 @@ def test_log_round_trips_and_is_deterministic(tmp_path):
         assert code == 0 and out.startswith(str(path))
     assert a.read_bytes() == b.read_bytes()
     log = tracing.Log.load(a)
-    assert log.meta == {"algorithm": "gravity", "polygon": "counterexample"}
+    assert log.meta == {"algorithm": "gravity", "polygon": "counterexample", "shown": "gravity_at"}
     assert "drop_ball" in {e.name for e in log.events}
     code, _, _ = run("log", "divide-and-conquer", "lecture", "--heuristic", "gravity", "-o",
                      str(a))
     assert code == 0 and tracing.Log.load(a).meta["heuristic"] == "gravity"
+
+
+@pytest.mark.parametrize(("args", "live"), [
+    (["gravity", "gravity-snag"], ("gravity", "gravity-snag")),
+    (["scaling", "counterexample"], ("scaling", "counterexample")),
+    (["divide-and-conquer", "lecture", "--heuristic", "rotation-correct"],
+     ("divide-and-conquer", "lecture", "rotation-correct")),
+])
+def test_log_is_the_log_a_scene_records(tmp_path, args, live):
+    """A scene replaying a `trex log` file (TREX_LOG) plays exactly what its live run plays."""
+    from metaphors.runs import run_logged
+
+    path = tmp_path / "run.json"
+    code, _, _ = run("log", *args, "-o", str(path))
+    assert code == 0
+    assert path.read_text() == run_logged(*live).to_json()
 
 
 @pytest.mark.parametrize(

@@ -60,10 +60,10 @@ def load_scene(scene: str) -> type:
 def read_log(path: str):
     """The saved log at ``path`` (a :class:`tracing.Log` of one run). Raises ValueError (one
     line) for a file that cannot be read or is not a trex log of a run."""
-    from tracing import Log
+    from metaphors.runs import saved_log
 
     try:
-        log = Log.load(path)
+        log = saved_log(path)
     except OSError as exc:
         raise ValueError(f"cannot read: {exc.strerror or error_line(exc)}") from None
     except (ValueError, KeyError, TypeError, RecursionError) as exc:  # JSON, UTF-8, schema
@@ -71,11 +71,6 @@ def read_log(path: str):
     algorithm = log.meta.get("algorithm")
     if not isinstance(algorithm, str) or not algorithm:
         raise ValueError("not the log of a run: its meta names no algorithm")
-    if "shown" not in log.meta and not log.meta.get("user_heuristic"):
-        # `trex log` does not record which function the panel shows; a live run does
-        from metaphors.runs import SHOWN
-
-        log.meta["shown"] = SHOWN.get(algorithm, algorithm)
     return log
 
 

@@ -12,9 +12,8 @@ from pathlib import Path
 
 import click
 
-import tracing
 from geometry.check import is_inner_diagonal
-from geometry.diagonals import HEURISTICS, find_diagonal
+from geometry.diagonals import HEURISTICS
 from geometry.io import write_atomic
 from geometry.polygon import Polygon
 from geometry.triangulate import ALGORITHMS, triangulate
@@ -156,16 +155,11 @@ def triangulate_command(polygons: tuple[str, ...], algorithm: str, heuristic: st
 @click.option("-o", "--output", required=True, metavar="FILE.json", help="Where to write the log.")
 def log_command(algorithm: str, polygon: str, heuristic: str, output: str) -> None:
     """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
+    from metaphors.runs import record_run  # geometry and tracing only: no manim
+
     p = load_or_exit(polygon)
-    meta = {"algorithm": algorithm, "polygon": polygon}
-    if algorithm in ALGORITHMS:
-        meta["heuristic"] = heuristic
-    try:
-        with tracing.record(**meta) as log, tracing.alive(p):
-            if algorithm in HEURISTICS:
-                find_diagonal(p, algorithm)
-            else:
-                triangulate(p, algorithm, heuristic)
+    try:  # the very log a scene records for this run, so that it replays the same video
+        log = record_run(algorithm, p, polygon, heuristic if algorithm in ALGORITHMS else None)
     except ValueError as exc:
         fail(f"{polygon}: {exc}")
     try:
