@@ -1,7 +1,8 @@
 """How fast our scenes render, beside bare manim doing the same animations.
 
 In one run, all at ``-ql`` (854×480, 15 fps), each render into a fresh temporary media
-directory, in this process (so imports are not counted):
+directory, in this process (so imports are not counted; the text caches of
+:mod:`metaphors.typeset` are emptied before each render, so each typesets as a fresh process):
 
 1. ``scenes/gravity.py`` (``Gravity``) rendered with caching off: video seconds per wall second;
 2. a bare manim scene with the same plays — the same animation classes, as many per play, with
@@ -43,6 +44,7 @@ import av  # noqa: E402
 import manim  # noqa: E402
 from manim import RED, Scene, Square, tempconfig  # noqa: E402
 
+from metaphors import typeset  # noqa: E402
 from metaphors.snapshot import build, environment, scene_graph  # noqa: E402
 
 #: The scene rendered.
@@ -139,6 +141,7 @@ def render(cls: type[Scene], media: Path, caching: bool) -> tuple[float, float, 
     for handler, _ in quiet:  # manim's console: warnings only; the counter sees INFO
         handler.setLevel(logging.WARNING)
     log.addHandler(counter)
+    typeset.forget()  # typeset every text again, as a fresh process would
     try:
         with environment(DEFAULT_ENV), tempconfig(settings):
             start = time.perf_counter()

@@ -18,7 +18,7 @@ from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.layout import BACKDROP_Z, METAPHOR, STILL_Z, SUBTITLE_Y, TITLE_Y, Box
 from metaphors.panel import Panel, tag
 from metaphors.theme import THEME, Theme
-from metaphors.typeset import text
+from metaphors.typeset import glyphs, text
 
 #: seconds the words of a beat take to change (at most half the beat)
 WORDS_TIME = 0.3
@@ -44,7 +44,7 @@ class Board:
                                 strict=True)
         }
         self.panel = Panel(points, labels, shown, theme)
-        self.title = tag(text(title, font=theme.font, size=30, colour=theme.ink), None, "title")
+        self.title = tag(glyphs(title, font=theme.font, size=30, colour=theme.ink), None, "title")
         self.title.move_to((0, TITLE_Y, 0))
         self.subtitle = tag(text(" ", font=theme.font, size=theme.caption_size), None,
                             "subtitle")

@@ -21,7 +21,9 @@ class Box:
 
 TITLE_Y = 3.55
 METAPHOR = Box(-3.45, -0.05, 5.6, 5.6)
-PANEL_POLYGON = Box(3.6, 1.75, 4.6, 2.5)
+# the panel's polygon leaves room for its vertex labels (up to 0.47 outside it) below the title
+# and above the code
+PANEL_POLYGON = Box(3.6, 1.82, 4.6, 2.0)
 PANEL_CODE = Box(3.6, -0.95, 6.2, 2.55)
 PANEL_CALL_Y = -2.65
 SUBTITLE_Y = -3.55

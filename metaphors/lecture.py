@@ -146,7 +146,10 @@ class LectureScene(TraceScene):
     # --- segments ---------------------------------------------------------------------------------
 
     def play_card(self, card: Card) -> None:
-        title = tag(self.text(card.title, self.theme.title_size), None, "card:title")
+        title = tag(typeset.glyphs(card.title, font=self.theme.font, size=self.theme.title_size,
+                                   colour=self.theme.ink), None, "card:title")  # written
+        if title.width > 13.2:
+            title.scale_to_fit_width(13.2)
         lines = [tag(self.text("• " + line, self.theme.caption_size, self.theme.idle), None,
                      "card:line") for line in card.lines]
         group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)

@@ -14,7 +14,7 @@ from manim import (
 
 from metaphors import typeset
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
-from metaphors.layout import PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON
+from metaphors.layout import BACKDROP_Z, PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON
 from metaphors.pseudocode import source_of
 from metaphors.theme import THEME, Theme
 
@@ -46,22 +46,20 @@ class Panel:
         }
         self.code_lines = source_of(shown) if shown else ()
         self.code = self._code_block()
-        self.light = tag(Rectangle(width=PANEL_CODE.width, height=0.2, stroke_width=0,
-                                   fill_color=theme.called, fill_opacity=0.3), "called", "panel:lit")
-        self.light.set_opacity(0)
-        self.lit: tuple[int, object] | None = None  # (row, its copy in ink on top of it)
+        # (row, the light behind it, the row's copy in ink over the grey row)
+        self.lit: tuple[int, Rectangle, object] | None = None
         self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
         self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         self.roles: dict[str, str] = {}
 
     def mobjects(self) -> list:
-        return [self.outline, *self.markers.values(), self.code, self.light, self.call]
+        return [self.outline, *self.markers.values(), self.code, self.call]
 
     def changing(self) -> list:
         """The panel's text that changes from beat to beat, bottom first: the light, the lit
         row, the call line (the code itself never changes). See
         :meth:`metaphors.board.Board.settle`."""
-        return [self.light, *([self.lit[1]] if self.lit else []), self.call]
+        return [*(self.lit[1:] if self.lit else ()), self.call]
 
     def _code_block(self) -> VGroup:
         size = 15 if len(self.code_lines) <= 12 else 11
@@ -108,20 +106,23 @@ class Panel:
         return anims
 
     def _light_line(self, line: int | None) -> list[Animation]:
-        """Light the row of ``line``: the light moves behind it, and a copy of the row in ink
-        fades in over the grey row (the rows themselves never change, so they stay in the
-        static part of every frame)."""
+        """Light the row of ``line``: a light fades in behind it and a copy of the row in ink
+        over the grey row, while the last ones fade out. The rows themselves never change, and
+        nothing slides over them, so they stay in the still layer of every frame."""
         index = next((k for k, (number, _) in enumerate(self.code_lines) if number == line), None)
         if index is None or (self.lit is not None and self.lit[0] == index):
             return []
         row = self.code[index]
-        anims = [self.light.animate.set_opacity(0.3).stretch_to_fit_height(row.height + 0.08)
-                 .move_to((PANEL_CODE.x, row.get_y(), 0))]
-        if self.lit is not None:
-            anims.append(FadeOut(self.lit[1]))
+        light = tag(Rectangle(width=PANEL_CODE.width, height=row.height + 0.08, stroke_width=0,
+                              fill_color=self.theme.called, fill_opacity=0.3), "called",
+                    "panel:lit")
+        light.move_to((PANEL_CODE.x, row.get_y(), 0))
         copy = tag(row.copy().set_color(self.theme.ink), "called", row.name)
-        self.lit = (index, copy)
-        return [*anims, FadeIn(copy)]
+        for mobject in (light, copy):
+            mobject.set_z_index(BACKDROP_Z)  # the copy would keep the row's STILL_Z
+        anims = [FadeOut(m) for m in self.lit[1:]] if self.lit is not None else []
+        self.lit = (index, light, copy)
+        return [*anims, FadeIn(light), FadeIn(copy)]
 
     def _call_line(self, text: str) -> list[Animation]:
         new = tag(typeset.text(text, font=self.theme.mono_font, size=20, colour=self.theme.ink),

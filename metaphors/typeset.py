@@ -25,15 +25,17 @@ True
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
+import os
+import tempfile
 import xml.etree.ElementTree as ET
 from functools import lru_cache
-from pathlib import Path
 
 import manimpango
 import numpy as np
 import svgelements as se
-from manim import NORMAL, Text, VMobject, config
+from manim import NORMAL, Text, VGroup, VMobject, config
 from manim.constants import START_X, START_Y
 from manim.mobject.svg.svg_mobject import VMobjectFromSVGPath
 from manim.mobject.text.text_mobject import (
@@ -61,6 +63,20 @@ class FlatText(VMobject):
             self.set_points(points)
 
 
+class GlyphText(VGroup):
+    """A line of text as a group of glyphs, as manim's ``Text`` is, so that ``Write`` writes
+    it glyph after glyph. For the few texts that are written (titles); the same outline as
+    :class:`FlatText`, cut where one glyph ends and the next begins."""
+
+    def __init__(self, original_text: str, points: np.ndarray, ends: tuple[int, ...],
+                 colour: str):
+        glyphs = [VMobject(fill_color=colour, fill_opacity=1.0, stroke_width=0)
+                  .set_points(points[start:end])
+                  for start, end in zip((0, *ends[:-1]), ends, strict=True) if end > start]
+        super().__init__(*glyphs)
+        self.original_text = original_text
+
+
 def text(string: str, *, size: float, colour: str | None = None, font: str = THEME.font,
          slant: str = NORMAL, weight: str = NORMAL) -> FlatText:
     """A :class:`FlatText` of ``string`` in ``font`` at ``size`` (manim's ``font_size``), filled
@@ -69,47 +85,83 @@ def text(string: str, *, size: float, colour: str | None = None, font: str = THE
     return FlatText(string, points.copy(), color=colour or THEME.ink)
 
 
-@lru_cache(maxsize=4096)
+def glyphs(string: str, *, size: float, colour: str | None = None, font: str = THEME.font,
+           slant: str = NORMAL, weight: str = NORMAL) -> GlyphText:
+    """A :class:`GlyphText` of ``string``: for text that is written with ``Write``."""
+    points, ends = _layout(string, font, float(size), slant, weight, config["pixel_width"],
+                           config["pixel_height"])
+    return GlyphText(string, points.copy(), ends, colour or THEME.ink)
+
+
 def outline(string: str, font: str, size: float, slant: str = NORMAL,
             weight: str = NORMAL) -> np.ndarray:
     """The points of ``Text(string, font=font, font_size=size, …)``, its glyphs one after
     another, centred at the origin as ``Text`` centres itself (read only: :func:`text` copies
     it). One line of text: a newline or a tab is typeset by ``Text``."""
+    return _layout(string, font, size, slant, weight, config["pixel_width"],
+                   config["pixel_height"])[0]
+
+
+def forget() -> None:
+    """Empty the caches of this process (typeset strings, converted glyphs), so that the next
+    text is typeset from scratch, as in a fresh process: for benchmarks."""
+    _layout.cache_clear()
+    _glyph.cache_clear()
+
+
+@lru_cache(maxsize=4096)
+def _layout(string: str, font: str, size: float, slant: str, weight: str, width: int,
+            height: int) -> tuple[np.ndarray, tuple[int, ...]]:
+    """(points, ends): the outline and the index where each glyph's points end. ``width`` and
+    ``height`` are the pixel size Pango lays the text out in (it wraps at the width)."""
     placed = None
     if "\n" not in string and "\t" not in string:
-        placed = _placed_glyphs(_svg(string, font, size, slant, weight))
-    points = _from_text(string, font, size, slant, weight) if placed is None else _compose(placed)
+        placed = _placed_glyphs(_svg(string, font, size, slant, weight, width, height))
+    if placed is None:
+        points, ends = _from_text(string, font, size, slant, weight)
+    else:
+        points, ends = _compose(placed)
     points.setflags(write=False)
-    return points
+    return points, ends
 
 
 # --- the fast path: Pango's SVG, glyphs read once ---------------------------------------------------
 
 
-def _svg(string: str, font: str, size: float, slant: str, weight: str) -> Path:
-    """Pango's SVG of the string, as ``Text`` asks for it (kept in manim's text directory)."""
+def _svg(string: str, font: str, size: float, slant: str, weight: str, width: int,
+         height: int):
+    """The root element of Pango's SVG of the string, as ``Text`` asks for it. Kept in manim's
+    text directory; written under a name of its own and then renamed into place, so that
+    several processes sharing a media directory never read a half-written file, and a file
+    that does not parse (say, cut short by a crash) is written again."""
     folder = config.get_dir("text_dir")
     folder.mkdir(parents=True, exist_ok=True)
-    key = repr((string, font, size, slant, weight, manimpango.__version__)).encode()
-    path = folder / f"trex-{hashlib.sha256(key).hexdigest()[:20]}.svg"
-    if not path.exists():
+    key = repr((string, font, size, slant, weight, width, height, manimpango.__version__))
+    path = folder / f"trex-{hashlib.sha256(key.encode()).hexdigest()[:20]}.svg"
+    if path.exists():
+        with contextlib.suppress(ET.ParseError, OSError):
+            return ET.parse(path).getroot()
+    handle, scratch = tempfile.mkstemp(prefix=".trex-", suffix=".svg", dir=folder)
+    os.close(handle)
+    try:
         spacing = (size + size * DEFAULT_LINE_SPACING_SCALE) / TEXT2SVG_ADJUSTMENT_FACTOR
         setting = manimpango.TextSetting(0, len(string), font, slant, weight, line_num=0,
                                          color="#FFFFFF")
-        scratch = path.with_suffix(".part.svg")
         manimpango.text2svg([setting], size / TEXT2SVG_ADJUSTMENT_FACTOR, spacing, False,
-                            str(scratch), START_X, START_Y, config["pixel_width"],
-                            config["pixel_height"], string)
-        manimpango.PangoUtils.remove_last_M(str(scratch))
-        scratch.replace(path)  # whole or not at all: another process may read it
-    return path
+                            scratch, START_X, START_Y, width, height, string)
+        manimpango.PangoUtils.remove_last_M(scratch)
+        root = ET.parse(scratch).getroot()
+        os.replace(scratch, path)
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(scratch)
+    return root
 
 
-def _placed_glyphs(path: Path) -> list[tuple[str, float, float]] | None:
+def _placed_glyphs(root) -> list[tuple[str, float, float]] | None:
     """[(glyph outline, x, y)] in document order; None when the SVG holds anything else, or a
     transform, that this reader does not follow. (Like ``Text``, it ignores the root's size and
     viewBox: manim re-roots the SVG before parsing it.)"""
-    root = ET.parse(path).getroot()
     glyphs: dict[str, str] = {}
     uses: list[tuple[str, float, float]] = []
     for element in root.iter():
@@ -156,20 +208,27 @@ def _closed(points: np.ndarray) -> np.ndarray:
     return np.concatenate(out)
 
 
-def _compose(glyphs: list[tuple[str, float, float]]) -> np.ndarray:
+def _compose(glyphs: list[tuple[str, float, float]]) -> tuple[np.ndarray, tuple[int, ...]]:
     """The glyphs moved into place, then ``Text``'s transform: y up, centred, scaled to manim
-    units."""
+    units; and where each glyph's points end."""
     parts = [_glyph(d) + np.array([x, y, 0.0]) for d, x, y in glyphs]
     parts = [p for p in parts if len(p)]
     if not parts:
-        return np.zeros((0, 3))
+        return np.zeros((0, 3)), ()
     points = np.concatenate(parts) * (1.0, -1.0, 0.0)
     centre = (points.min(axis=0) + points.max(axis=0)) / 2
-    return (points - centre) * TEXT_MOB_SCALE_FACTOR
+    return (points - centre) * TEXT_MOB_SCALE_FACTOR, _ends(parts)
 
 
-def _from_text(string: str, font: str, size: float, slant: str, weight: str) -> np.ndarray:
+def _from_text(string: str, font: str, size: float, slant: str, weight: str
+               ) -> tuple[np.ndarray, tuple[int, ...]]:
     """The slow path: manim's ``Text``, its glyphs' points one after another."""
     typeset = Text(string, font=font, font_size=size, slant=slant, weight=weight)
-    glyphs = [g.points for g in typeset.family_members_with_points()]
-    return np.concatenate(glyphs) if glyphs else np.zeros((0, 3))
+    parts = [g.points for g in typeset.family_members_with_points()]
+    if not parts:
+        return np.zeros((0, 3)), ()
+    return np.concatenate(parts), _ends(parts)
+
+
+def _ends(parts: list[np.ndarray]) -> tuple[int, ...]:
+    return tuple(int(n) for n in np.cumsum([len(p) for p in parts]))

@@ -11,7 +11,7 @@ from geometry.cdt import constrained_delaunay
 from geometry.io import read_polygon
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.theme import THEME
-from metaphors.typeset import text
+from metaphors.typeset import glyphs
 
 
 class PolygonScene(Scene):
@@ -19,7 +19,7 @@ class PolygonScene(Scene):
         polygon = read_polygon(os.environ.get("TREX_POLYGON", "counterexample"))
         self.camera.background_color = THEME.background
         frame = Frame(polygon.points, center=(0, -0.3), width=9, height=5.5)
-        title = text(
+        title = glyphs(
             f"A simple polygon: {polygon.n} vertices → {polygon.n - 2} triangles",
             font=THEME.font, size=THEME.caption_size, colour=THEME.ink,
         ).to_edge(UP)

@@ -76,10 +76,12 @@ def test_code_and_title_are_never_redrawn_per_frame(file, name):
 def test_lit_row_is_a_copy_over_the_row():
     boards, _ = played("gravity", "Gravity")
     panel = boards[0].panel
-    index, copy = panel.lit
+    index, light, copy = panel.lit
     row = panel.code[index]
     assert np.array_equal(copy.points, row.points)
     assert copy.get_fill_color().to_hex().lower() == panel.theme.ink.lower()
+    assert light.get_center()[1] == pytest.approx(row.get_center()[1])
+    assert light.z_index == copy.z_index == BACKDROP_Z > row.z_index  # over the grey row
     # the rows themselves stay grey: the light is the copy and the rectangle behind it
     assert {r.get_fill_color().to_hex().lower() for r in panel.code} == {panel.theme.idle.lower()}
 

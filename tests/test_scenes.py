@@ -272,3 +272,46 @@ def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
 
 
 
+
+
+# --- layout --------------------------------------------------------------------------------------
+
+#: the text around the picture, which nothing else may overlap (it lies below everything;
+#: the light behind the lit code row is part of it)
+_TEXT_NAMES = ("title", "subtitle", "panel:call", "panel:lit")
+
+
+def _is_backdrop_text(node: dict) -> bool:
+    return node["name"] in _TEXT_NAMES or node["name"].startswith("code:")
+
+
+def _boxes(node: dict) -> Iterator[tuple[str, tuple[float, ...]]]:
+    """(name, box) of every visible part of a node with points (a text: its own box)."""
+    if "text" in node:
+        if node.get("box"):
+            yield node["name"], tuple(node["box"])
+        return
+    visible = node.get("fill_opacity", 1) > 0 or (
+        node.get("stroke_width", 1) > 0 and node.get("stroke_opacity", 1) > 0)
+    if node.get("points") and visible:
+        xs, ys = [p[0] for p in node["points"]], [p[1] for p in node["points"]]
+        yield node["name"] or node["type"], (min(xs), min(ys), max(xs), max(ys))
+    for child in node.get("submobjects", ()):
+        yield from _boxes(child)
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_nothing_overlaps_the_text(case):
+    """Title, code, call line and subtitle lie below everything else on screen (Board.settle):
+    so nothing may overlap them, or the drawing order would show. Checked on the final
+    picture (the panel's labels next to the code and the title, among others)."""
+    final = json.loads(graph(case))["final"]
+    text = [(n["name"], n["box"]) for n in final for n in [n, *n.get("submobjects", ())]
+            if _is_backdrop_text(n) and n.get("box")]
+    if not text:
+        pytest.skip(f"{case.id} shows no board")
+    others = [b for n in final if not _is_backdrop_text(n) for b in _boxes(n)
+              if not _is_backdrop_text({"name": b[0]})]
+    clash = [(name, other) for name, (x0, y0, x1, y1) in text for other, (a0, b0, a1, b1) in others
+             if x0 < a1 - 0.01 and a0 < x1 - 0.01 and y0 < b1 - 0.01 and b0 < y1 - 0.01]
+    assert not clash, f"{case.id}: {clash[:5]}"

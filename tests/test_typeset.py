@@ -3,17 +3,23 @@ one merged path draws the same picture as the glyphs did."""
 
 from __future__ import annotations
 
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from manim import BOLD, ITALIC, NORMAL, Text, tempconfig
+from manim import BOLD, ITALIC, NORMAL, Text, Write, config, tempconfig
 from manim.camera.camera import Camera
 
 from metaphors import typeset
-from metaphors.typeset import FlatText, text
+from metaphors.typeset import FlatText, GlyphText, glyphs, text
 
 SANS, MONO = "DejaVu Sans", "DejaVu Sans Mono"
+ROOT = Path(__file__).resolve().parents[1]
 
 
 @pytest.fixture(autouse=True)
@@ -31,9 +37,11 @@ def manim_points(string: str, font: str, size: float, slant=NORMAL, weight=NORMA
 
 def fast_points(string: str, font: str, size: float, slant=NORMAL, weight=NORMAL) -> np.ndarray:
     """The fast path alone (no fallback to ``Text``)."""
-    placed = typeset._placed_glyphs(typeset._svg(string, font, size, slant, weight))
+    root = typeset._svg(string, font, size, slant, weight, config["pixel_width"],
+                        config["pixel_height"])
+    placed = typeset._placed_glyphs(root)
     assert placed is not None, f"the fast path gave up on {string!r}"
-    return typeset._compose(placed)
+    return typeset._compose(placed)[0]
 
 
 def assert_same_outline(string, font, size, slant=NORMAL, weight=NORMAL):
@@ -95,7 +103,7 @@ def test_anything_but_placed_glyphs_is_left_to_text(tmp_path):
     for name, body in cases.items():
         path = tmp_path / f"{name}.svg"
         path.write_text(head + body + "</svg>")
-        read[name] = typeset._placed_glyphs(path)
+        read[name] = typeset._placed_glyphs(ET.parse(path).getroot())
     assert read.pop("plain") == [("M 0 0 L 1 0 L 1 -1 Z", 3.0, 4.0)]
     assert read == dict.fromkeys(read)  # every other one: None
 
@@ -134,3 +142,54 @@ def test_one_path_draws_what_the_glyphs_drew(string):
     # anti-aliasing where two glyphs' edges meet may differ by a few levels, nothing more
     assert np.abs(before - after).max() <= 8
     assert differ.sum() <= 0.002 * differ.size
+
+
+def test_glyph_text_is_texts_glyphs():
+    """Written text (titles) keeps manim's glyphs apart, so Write writes glyph by glyph."""
+    string = "Gravity: a ball"
+    manim_glyphs = Text(string, font=SANS, font_size=30).family_members_with_points()
+    ours = glyphs(string, size=30, font=SANS, colour="#e8ecf2")
+    assert isinstance(ours, GlyphText) and ours.original_text == string
+    assert len(ours.submobjects) == len(manim_glyphs) == len(string.replace(" ", ""))
+    for mine, theirs in zip(ours.submobjects, manim_glyphs, strict=True):
+        assert np.abs(mine.points - theirs.points).max() < 1e-9
+    assert np.array_equal(np.concatenate([g.points for g in ours]),
+                          typeset.outline(string, SANS, 30.0))
+    write = Write(ours)
+    assert write.lag_ratio > 0  # one glyph after another
+
+
+def test_a_broken_svg_is_typeset_again():
+    """A kept SVG that does not parse (cut short by a crash) is typeset again, not trusted."""
+    string = "broken?"
+    typeset.outline(string, SANS, 20.0)
+    written = list(config.get_dir("text_dir").glob("trex-*.svg"))
+    assert written
+    for path in written:
+        path.write_text("<svg")
+    typeset.forget()
+    again = typeset.outline(string, SANS, 20.0)
+    assert np.abs(again - manim_points(string, SANS, 20.0)).max() < 1e-9
+
+
+def test_processes_sharing_a_media_directory(tmp_path):
+    """Four processes typesetting the same strings into one media directory at once: every
+    one succeeds, and every file left behind is whole."""
+    code = (
+        "import sys; from manim import tempconfig; from metaphors import typeset\n"
+        "with tempconfig({'media_dir': sys.argv[1]}):\n"
+        "    for k in range(120):\n"
+        "        typeset.text(f'line {k} of the race', size=20)\n"
+        "print('ok')\n")
+    media = tmp_path / "shared"
+    runs = [subprocess.Popen([sys.executable, "-c", code, str(media)], cwd=ROOT,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            for _ in range(4)]
+    for run in runs:
+        out, err = run.communicate(timeout=300)
+        assert run.returncode == 0 and out.strip() == "ok", err[-2000:]
+    files = list((media / "texts").glob("trex-*.svg"))
+    assert len(files) == 120
+    for path in files:
+        ET.parse(path)  # whole
+    assert not list((media / "texts").glob(".trex-*"))  # no scratch file left
