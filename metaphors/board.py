@@ -67,7 +67,8 @@ class Board:
 
     def left_group(self) -> VGroup:
         """What turns when the metaphor turns the polygon: outline, vertices, metaphor objects."""
-        return VGroup(self.shape, *self.markers.values(), *self.objects.values())
+        parts = {id(m): m for m in (self.shape, *self.markers.values(), *self.objects.values())}
+        return VGroup(*parts.values())  # once each: the fruit is the outline itself
 
     # --- playing ----------------------------------------------------------------------------------
 

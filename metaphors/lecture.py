@@ -194,7 +194,7 @@ class LectureScene(TraceScene):
                              "different diagonals, both valid", theme.caption_size), None,
                    "compare:note")
         note.move_to((0, -3.55, 0))
-        self.play(FadeIn(note), run_time=0.5, subcaption=note.text)
+        self.play(FadeIn(note), run_time=0.5, subcaption=note.original_text)
         self.wait(compare.seconds)
 
     def play_quiz(self, quiz: Quiz) -> None:
