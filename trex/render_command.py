@@ -271,8 +271,12 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
             "verbosity": "WARNING",
             "progress_bar": "display" if progress else "none",
             "preview": False,
-            # encode one play while drawing the next (as manim.cfg sets it for `manim`)
-            "max_inflight_encoders": 4,
+            # one x264 thread per encoder, as manim.cfg has it (with more, x264 codes a few
+            # frames differently from run to run); but one encoder at a time, not manim.cfg's
+            # 4: with several in flight, an interrupted render now and then never exited
+            # (tests/test_render_command.py, two renders interrupted at once under load)
+            "max_inflight_encoders": 1,
+            "video_encoder_options": {"threads": "1"},
         }
         with tempconfig(settings):
             scene = make_scene()
