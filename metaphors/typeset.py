@@ -88,8 +88,7 @@ def text(string: str, *, size: float, colour: str | None = None, font: str = THE
 def glyphs(string: str, *, size: float, colour: str | None = None, font: str = THEME.font,
            slant: str = NORMAL, weight: str = NORMAL) -> GlyphText:
     """A :class:`GlyphText` of ``string``: for text that is written with ``Write``."""
-    points, ends = _layout(string, font, float(size), slant, weight, config["pixel_width"],
-                           config["pixel_height"])
+    points, ends = _typeset(string, font, float(size), slant, weight)
     return GlyphText(string, points.copy(), ends, colour or THEME.ink)
 
 
@@ -98,8 +97,14 @@ def outline(string: str, font: str, size: float, slant: str = NORMAL,
     """The points of ``Text(string, font=font, font_size=size, …)``, its glyphs one after
     another, centred at the origin as ``Text`` centres itself (read only: :func:`text` copies
     it). One line of text: a newline or a tab is typeset by ``Text``."""
+    return _typeset(string, font, size, slant, weight)[0]
+
+
+def _typeset(string: str, font: str, size: float, slant: str,
+             weight: str) -> tuple[np.ndarray, tuple[int, ...]]:
+    """:func:`_layout` at the pixel size of the current configuration."""
     return _layout(string, font, size, slant, weight, config["pixel_width"],
-                   config["pixel_height"])[0]
+                   config["pixel_height"])
 
 
 def forget() -> None:
@@ -164,20 +169,23 @@ def _placed_glyphs(root) -> list[tuple[str, float, float]] | None:
     viewBox: manim re-roots the SVG before parsing it.)"""
     glyphs: dict[str, str] = {}
     uses: list[tuple[str, float, float]] = []
+    paths = 0
     for element in root.iter():
         tag = element.tag.removeprefix(_SVG)
         if tag not in ("svg", "defs", "g", "symbol", "path", "use") or "transform" in element.attrib:
             return None
-        if tag == "use":
+        if tag == "path":
+            paths += 1
+        elif tag == "use":
             uses.append((element.get(_HREF, "").removeprefix("#"),
                          float(element.get("x", 0)), float(element.get("y", 0))))
         elif tag in ("symbol", "g") and element.get("id"):
-            paths = element.findall(f"{_SVG}path")
-            if len(paths) == 1 and len(element) == 1 and paths[0].get("d") is not None:
-                glyphs[element.get("id")] = paths[0].get("d")
+            inner = element.findall(f"{_SVG}path")
+            if len(inner) == 1 and len(element) == 1 and inner[0].get("d") is not None:
+                glyphs[element.get("id")] = inner[0].get("d")
     if any(href not in glyphs for href, _, _ in uses):
         return None
-    if sum(1 for e in root.iter() if e.tag == f"{_SVG}path") != len(glyphs):
+    if paths != len(glyphs):
         return None  # a path outside the glyph definitions
     return [(glyphs[href], x, y) for href, x, y in uses]
 
@@ -211,24 +219,25 @@ def _closed(points: np.ndarray) -> np.ndarray:
 def _compose(glyphs: list[tuple[str, float, float]]) -> tuple[np.ndarray, tuple[int, ...]]:
     """The glyphs moved into place, then ``Text``'s transform: y up, centred, scaled to manim
     units; and where each glyph's points end."""
-    parts = [_glyph(d) + np.array([x, y, 0.0]) for d, x, y in glyphs]
-    parts = [p for p in parts if len(p)]
-    if not parts:
-        return np.zeros((0, 3)), ()
-    points = np.concatenate(parts) * (1.0, -1.0, 0.0)
+    points, ends = _joined([_glyph(d) + np.array([x, y, 0.0]) for d, x, y in glyphs])
+    if not ends:
+        return points, ends
+    points = points * (1.0, -1.0, 0.0)
     centre = (points.min(axis=0) + points.max(axis=0)) / 2
-    return (points - centre) * TEXT_MOB_SCALE_FACTOR, _ends(parts)
+    return (points - centre) * TEXT_MOB_SCALE_FACTOR, ends
 
 
 def _from_text(string: str, font: str, size: float, slant: str, weight: str
                ) -> tuple[np.ndarray, tuple[int, ...]]:
     """The slow path: manim's ``Text``, its glyphs' points one after another."""
     typeset = Text(string, font=font, font_size=size, slant=slant, weight=weight)
-    parts = [g.points for g in typeset.family_members_with_points()]
+    return _joined([g.points for g in typeset.family_members_with_points()])
+
+
+def _joined(parts: list[np.ndarray]) -> tuple[np.ndarray, tuple[int, ...]]:
+    """The glyphs' points one after another, and the index where each glyph's points end
+    (glyphs without points, such as spaces, left out)."""
+    parts = [p for p in parts if len(p)]
     if not parts:
         return np.zeros((0, 3)), ()
-    return np.concatenate(parts), _ends(parts)
-
-
-def _ends(parts: list[np.ndarray]) -> tuple[int, ...]:
-    return tuple(int(n) for n in np.cumsum([len(p) for p in parts]))
+    return np.concatenate(parts), tuple(int(n) for n in np.cumsum([len(p) for p in parts]))

@@ -29,6 +29,7 @@ from click.testing import CliRunner
 from metaphors import assemble
 from trex import lecture_command
 from trex.cli import main
+from trex.render_command import load_scene_class
 
 TINY = textwrap.dedent("""
     from manim import BLUE, Circle, Create, FadeOut, Scene, Square
@@ -428,13 +429,8 @@ def test_lecture_chapters_are_checked_by_their_runs_not_their_class_algorithm(
 
 
 def _chapter_class(chapter):
-    import importlib.util
-
     path = Path(__file__).resolve().parents[1] / chapter.scene_file
-    spec = importlib.util.spec_from_file_location(f"trex_chapter_{chapter.slug}", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return getattr(module, chapter.scene_class)
+    return load_scene_class(path, chapter.scene_class)
 
 
 def _chapters():

@@ -5,7 +5,6 @@ lasts a whole number of frames (15 per second), the last one begun counted whole
 
 from __future__ import annotations
 
-import importlib.util
 import math
 from pathlib import Path
 
@@ -13,16 +12,14 @@ import pytest
 
 from metaphors.snapshot import build
 from metaphors.storyboard import Pacing
+from trex.render_command import load_scene_class
 
 SCENE_FILE = Path(__file__).resolve().parents[1] / "scenes" / "divide_and_conquer.py"
 DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
 
 
 def divide_and_conquer():
-    spec = importlib.util.spec_from_file_location("trex_pacing_dnc", SCENE_FILE)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.DivideAndConquer
+    return load_scene_class(SCENE_FILE, "DivideAndConquer")
 
 
 def _video_seconds(scene_class, polygon: str, fps: int = 15) -> float:

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import functools
 import hashlib
-import importlib.util
 from pathlib import Path
 
 import numpy as np
@@ -24,16 +23,14 @@ from metaphors.board import Board
 from metaphors.layout import BACKDROP_Z, STILL_Z
 from metaphors.renderer import BackdropRenderer
 from metaphors.snapshot import build, environment
+from trex.render_command import load_scene_class
 
 SCENES = Path(__file__).resolve().parents[1] / "scenes"
 DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
 
 
 def scene_class(file: str, name: str):
-    spec = importlib.util.spec_from_file_location(f"trex_redraw_{file}", SCENES / f"{file}.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return getattr(module, name)
+    return load_scene_class(SCENES / f"{file}.py", name)
 
 
 @functools.cache

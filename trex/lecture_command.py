@@ -152,11 +152,10 @@ def polygon_checks(segments: Sequence) -> list[tuple[str, tuple, Callable[[], ob
     from metaphors.lecture import Compare, Run, lecture_polygon
 
     def run(segment: Run):
-        return lecture.run_logged(segment.algorithm, segment.polygon or lecture_polygon(),
-                                  segment.heuristic)
+        return lecture.run_logged(segment.algorithm, lecture_polygon(), segment.heuristic)
 
     def compare(segment: Compare):
-        polygon = lecture.read_polygon(segment.polygon or lecture_polygon())
+        polygon = lecture.read_polygon(lecture_polygon())
         return triangulate(polygon, segment.ours), constrained_delaunay(polygon)
 
     checks = []
