@@ -11,11 +11,12 @@ import os
 from dataclasses import replace
 from types import MappingProxyType
 
-from manim import DOWN, Camera, FadeIn, FadeOut, Scene, VGroup, config
+from manim import DOWN, FadeIn, FadeOut, Scene, VGroup, config
 from manim.constants import RendererType
 
 from metaphors.actions import perform
 from metaphors.board import Board
+from metaphors.camera import PathCamera
 from metaphors.layout import METAPHOR
 from metaphors.panel import tag
 from metaphors.renderer import BackdropRenderer
@@ -39,7 +40,7 @@ class TraceScene(Scene):
 
     def __init__(self, renderer=None, **kwargs):
         if renderer is None and config.renderer == RendererType.CAIRO:
-            renderer = BackdropRenderer(camera_class=kwargs.get("camera_class", Camera),
+            renderer = BackdropRenderer(camera_class=kwargs.get("camera_class", PathCamera),
                                         skip_animations=kwargs.get("skip_animations", False))
         super().__init__(renderer=renderer, **kwargs)
 

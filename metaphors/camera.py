@@ -1,0 +1,83 @@
+"""manim's Cairo camera with a cheaper way of handing a path to Cairo.
+
+manim hands Cairo each Bézier curve of a ``VMobject`` by indexing a NumPy array six times per
+curve and finds the subpaths with a dozen small NumPy calls per mobject; in our frames (text
+of thousands of curves, dozens of small markers) that Python work costs more than Cairo's
+drawing. :class:`PathCamera` makes the same Cairo calls with the same numbers — so the same
+pixels, bit for bit (``tests/test_redraw.py`` renders scenes with both cameras) — from one
+``tolist()`` per mobject.
+"""
+
+from __future__ import annotations
+
+from itertools import pairwise
+
+import cairo
+import numpy as np
+from manim import Camera, VMobject
+
+#: Cubic Bézier curves are 4 points: anchor, handle, handle, anchor.
+_CURVE = 4
+_RTOL = 1.0e-5  # numpy.isclose's default, as VMobject uses it
+#: Paths of up to this many curves find their subpaths in a Python loop, longer ones in NumPy.
+_LOOP_UP_TO = 24
+
+
+class PathCamera(Camera):
+    """:class:`manim.Camera`, building each ``VMobject``'s Cairo path with less Python."""
+
+    def display_vectorized(self, vmobject: VMobject, ctx: cairo.Context) -> PathCamera:
+        if _invisible(vmobject):  # Cairo would fill and stroke with a clear colour: nothing
+            return self
+        return super().display_vectorized(vmobject, ctx)
+
+    def set_cairo_context_path(self, ctx: cairo.Context, vmobject: VMobject) -> PathCamera:
+        points = vmobject.points
+        count = len(points)
+        if count % _CURVE or type(self).transform_points_pre_display \
+                is not Camera.transform_points_pre_display:
+            return super().set_cairo_context_path(ctx, vmobject)  # unusual: manim's own way
+        if count == 0:
+            return self
+        if not np.isfinite(points).all():  # manim draws nothing for such a mobject
+            ctx.new_path()
+            return self
+        ctx.new_path()
+        # One row per curve: start anchor, two handles, end anchor (x, y each).
+        rows = points[:, :2].reshape(-1, 2 * _CURVE).tolist()
+        move_to, curve_to, close_path = ctx.move_to, ctx.curve_to, ctx.close_path
+        new_sub_path, equal = ctx.new_sub_path, vmobject.consider_points_equals_2d
+        for first, last in _subpaths(points, rows, vmobject.tolerance_for_point_equality):
+            new_sub_path()
+            start = rows[first]
+            move_to(start[0], start[1])
+            for row in rows[first:last]:
+                curve_to(row[2], row[3], row[4], row[5], row[6], row[7])
+            end = rows[last - 1]
+            if equal((start[0], start[1]), (end[6], end[7])):
+                close_path()
+        return self
+
+
+def _invisible(vmobject: VMobject) -> bool:
+    """Whether every colour this mobject is filled and stroked with is fully transparent."""
+    return (not vmobject.get_fill_rgbas()[:, 3].any()
+            and (not vmobject.get_stroke_width() or not vmobject.get_stroke_rgbas()[:, 3].any())
+            and (not vmobject.get_stroke_width(True)
+                 or not vmobject.get_stroke_rgbas(True)[:, 3].any()))
+
+
+def _subpaths(points: np.ndarray, rows: list[list[float]], atol: float) -> list[tuple[int, int]]:
+    """Runs of curves ``[first, last)`` in which each curve starts where the last one ended:
+    ``VMobject.get_subpath_split_indices_from_points`` (with ``n_dims=2``) for finite points,
+    counted in curves instead of points. ``rows`` are the curves of ``points`` as lists."""
+    if len(rows) > _LOOP_UP_TO:  # long paths (text): NumPy over all curve joints at once
+        ends, starts = points[_CURVE - 1:-1:_CURVE, :2], points[_CURVE::_CURVE, :2]
+        apart = ~(np.abs(ends - starts) <= atol + _RTOL * np.abs(starts)).all(axis=1)
+        splits = (np.flatnonzero(apart) + 1).tolist()
+    else:  # short ones: a loop costs less than NumPy's calls; most joints are exact
+        splits = [k for k, (end, start) in enumerate(pairwise(rows), start=1)
+                  if (end[6] != start[0] or end[7] != start[1])
+                  and not (abs(end[6] - start[0]) <= atol + _RTOL * abs(start[0])
+                           and abs(end[7] - start[1]) <= atol + _RTOL * abs(start[1]))]
+    return list(pairwise([0, *splits, len(rows)]))
