@@ -7,7 +7,8 @@ directory, in this process (so imports are not counted; the text caches of
 1. ``scenes/gravity.py`` (``Gravity``) rendered with caching off: video seconds per wall second;
 2. a bare manim scene with the same plays — the same animation classes, as many per play, with
    the same run times — on simple mobjects (squares), built from Gravity's scene graph
-   (:mod:`metaphors.snapshot`): video seconds per wall second. Both are rendered ``--repeat``
+   (:mod:`metaphors.snapshot`; for our own ``Turn``, manim's ``Rotate``): video seconds per
+   wall second. Both are rendered ``--repeat``
    times, alternately, and the best time of each counts (this machine's speed wanders by a
    third between runs; the median is printed beside it);
 3. the dry-run build time of every scene in ``scenes/*.py`` (what ``tests/test_scenes.py``
@@ -79,6 +80,10 @@ def all_scenes() -> list[tuple[str, type[Scene]]]:
     return found
 
 
+#: Our own animation classes, and what the bare scene plays for each.
+OWN = {"Turn": lambda square, run_time: manim.Rotate(square, angle=1.0, run_time=run_time)}
+
+
 def bare_scene(plays: list[dict]) -> tuple[type[Scene], list[str]]:
     """A Scene class playing the same animation classes and run times on plain squares;
     also the class names it had to stand in for (played as ``FadeIn``)."""
@@ -89,6 +94,8 @@ def bare_scene(plays: list[dict]) -> tuple[type[Scene], list[str]]:
         square = Square(side_length=0.5).shift([(k % 12) - 5.5, (k // 12 % 6) - 2.5, 0])
         if kind == "Wait":
             return manim.Wait(run_time=run_time)
+        if kind in OWN:
+            return OWN[kind](square, run_time)
         if kind == "_MethodAnimation":
             return square.animate(run_time=run_time).set_color(RED).shift([0.1, 0, 0])
         if kind in ("AnimationGroup", "Succession", "LaggedStart"):  # the same members inside

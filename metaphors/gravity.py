@@ -34,6 +34,7 @@ from manim import Polygon as MPolygon
 from metaphors import basics
 from metaphors.layout import METAPHOR
 from metaphors.panel import tag
+from metaphors.turn import Turn
 from metaphors.typeset import FlatText, text
 
 #: board objects that stay put on screen when the polygon turns (keys of ``board.objects``)
@@ -75,20 +76,14 @@ def turn_to(board, angle: float) -> list:
     k = new.zoom / old.zoom
     if abs(delta) < 1e-9 and abs(k - 1) < 1e-9:
         return []
-    pivot = np.array([*METAPHOR.center, 0.0])
-    targets = {}
-    for mobject in _movers(board):
-        target = mobject.copy()
-        target.rotate(math.radians(delta), about_point=pivot).scale(k, about_point=pivot)
-        for part in target.get_family():
-            if isinstance(part, _UPRIGHT):
-                part.rotate(-math.radians(delta)).scale(1 / k)
-        targets[id(mobject)] = (mobject, target)
+    turns = {id(m): Turn(m, math.radians(delta), METAPHOR.center, k, upright=_UPRIGHT)
+             for m in _movers(board)}
     line, mark = board.objects.get("claim"), board.objects.get("verdict")
-    if line is not None and mark is not None and id(mark) in targets:  # the ✓ stays above
-        targets[id(mark)][1].next_to(targets[id(line)][1].get_center(), UP, buff=0.15)
+    if line is not None and mark is not None and id(mark) in turns:  # the ✓ stays above
+        above = turns[id(line)].end_centre(line) + (0.15 + mark.height / 2) * UP
+        turns[id(mark)].shift = above - turns[id(mark)].end_centre(mark)
     board.frame = new
-    return [Transform(m, t, path_arc=math.radians(delta)) for m, t in targets.values()]
+    return list(turns.values())
 
 
 def _called(beat) -> str | None:

@@ -315,3 +315,47 @@ def test_nothing_overlaps_the_text(case):
     clash = [(name, other) for name, (x0, y0, x1, y1) in text for other, (a0, b0, a1, b1) in others
              if x0 < a1 - 0.01 and a0 < x1 - 0.01 and y0 < b1 - 0.01 and b0 < y1 - 0.01]
     assert not clash, f"{case.id}: {clash[:5]}"
+
+
+def _vertex_places(nodes_: list[dict]) -> dict[str, list]:
+    """Each vertex marker's dot centre and label box, rounded to 0.01."""
+    places = {}
+    for node in nodes_:
+        if node["name"].startswith("vertex:") and node["name"] not in places:
+            parts = node.get("submobjects", ())
+            dots = [p["points"] for p in parts if p.get("points")]
+            boxes = [p["box"] for p in parts if p.get("box")]
+            xs = [q[0] for q in dots[0]] if dots else [0.0]
+            ys = [q[1] for q in dots[0]] if dots else [0.0]
+            places[node["name"]] = [round((min(xs) + max(xs)) / 2, 2),
+                                    round((min(ys) + max(ys)) / 2, 2),
+                                    *[round(v, 2) for box in boxes for v in box]]
+    return places
+
+
+@pytest.mark.parametrize("case", [c for c in _params(SCENES)
+                                  if c.id in ("gravity.Gravity",
+                                              "divide_and_conquer.DivideAndConquer")])
+def test_vertices_come_back_after_the_picture_turns(case):
+    """Gravity turns the picture and turns it back after the verdict (every claim of divide
+    and conquer): dots and labels end where they started, however many turns came between."""
+    data = json.loads(graph(case))
+    first = _vertex_places(n for play in data["plays"] for a in play["animations"]
+                           for n in _walk_animation(a))
+    last = _vertex_places(m for n in data["final"] for m in _walk(n))
+    assert len(first) >= 8 and first.keys() == last.keys()
+    moved = {k: (first[k], last[k]) for k in first if first[k] != last[k]}
+    assert not moved, moved
+
+
+def _walk(node: dict) -> Iterator[dict]:
+    yield node
+    for child in node.get("submobjects", ()):
+        yield from _walk(child)
+
+
+def _walk_animation(node: dict) -> Iterator[dict]:
+    if "mobject" in node:
+        yield from _walk(node["mobject"])
+    for child in node.get("animations", ()):
+        yield from _walk_animation(child)
