@@ -10,7 +10,8 @@ subpaths stay apart (the pen lifts between glyphs), so it fills as the glyphs di
 Typesetting is the other cost. ``Text`` asks Pango for an SVG (under a millisecond) and then
 parses the whole SVG with svgelements (tens of milliseconds). :func:`outline` asks Pango for the
 same SVG, reads where each glyph goes with the standard library's XML parser, and converts each
-distinct glyph outline once per process with manim's own SVG path reader; the text's outline is
+distinct glyph outline once per process, reading Cairo's plain path data with manim's own
+arithmetic (:func:`_cairo_path`; any other path goes to manim's reader); the text's outline is
 those glyphs moved into place, with the transform ``Text`` applies (y flipped, centred, scaled
 to manim units). ``tests/test_typeset.py`` checks it point for point against ``Text``. An
 SVG with anything but glyphs placed by ``<use>`` is read by ``Text`` itself.
@@ -154,7 +155,8 @@ def _svg(string: str, font: str, size: float, slant: str, weight: str, width: in
                                          color="#FFFFFF")
         manimpango.text2svg([setting], size / TEXT2SVG_ADJUSTMENT_FACTOR, spacing, False,
                             scratch, START_X, START_Y, width, height, string)
-        manimpango.PangoUtils.remove_last_M(scratch)
+        # (Text also deletes each path's last, empty "M x y"; a move draws nothing, so the
+        # readers below give the same points with it: one write of the file saved)
         root = ET.parse(scratch).getroot()
         os.replace(scratch, path)
     finally:
@@ -194,10 +196,60 @@ def _placed_glyphs(root) -> list[tuple[str, float, float]] | None:
 def _glyph(d: str) -> np.ndarray:
     """One glyph's outline in SVG units at its origin, as ``Text`` keeps it: manim's SVG path
     reader, then every open subpath closed with a straight line."""
-    points = VMobjectFromSVGPath(se.Path(d)).points
+    points = _cairo_path(d)
+    if points is None:  # not the plain path Cairo writes: manim's reader
+        points = VMobjectFromSVGPath(se.Path(d)).points
     points = _closed(points) if len(points) else points
     points.setflags(write=False)
     return points
+
+
+def _cairo_path(d: str) -> np.ndarray | None:
+    """The points manim's SVG path reader (``VMobjectFromSVGPath``) makes of a path written by
+    Cairo — absolute ``M``, ``L``, ``C`` and ``Z``, each command followed by its numbers — with
+    the same arithmetic, without parsing it into svgelements objects first; None for any
+    other path data.
+
+    >>> _cairo_path("M 0 0 L 3 0 C 3 1 2 2 0 2 Z").reshape(-1, 4, 3)[:, :, :2].tolist()[0]
+    [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0]]
+    >>> _cairo_path("M 0 0 l 3 0") is None  # relative: not Cairo's
+    True
+    """
+    tokens = d.split()
+    rows: list[list[float]] = []
+    pen = start = None  # manim's last_move and last_true_move
+
+    def line(a: list[float], b: list[float]) -> None:
+        rows.extend((a, [(a[0] + a[0] + b[0]) / 3, (a[1] + a[1] + b[1]) / 3, 0.0],
+                     [(a[0] + b[0] + b[0]) / 3, (a[1] + b[1] + b[1]) / 3, 0.0], b))
+
+    k = 0
+    try:
+        while k < len(tokens):
+            command, k = tokens[k], k + 1
+            if command == "M":
+                pen = start = [float(tokens[k]), float(tokens[k + 1]), 0.0]
+                k += 2
+            elif command == "L" and pen is not None:
+                end = [float(tokens[k]), float(tokens[k + 1]), 0.0]
+                line(pen, end)
+                pen, k = end, k + 2
+            elif command == "C" and pen is not None:
+                c1, c2, end = ([float(tokens[j]), float(tokens[j + 1]), 0.0]
+                               for j in range(k, k + 6, 2))
+                rows.extend((pen, c1, c2, end))
+                pen, k = end, k + 6
+            elif command == "Z" and pen is not None:
+                if np.linalg.norm(np.subtract(pen, start)) > 0.0001:  # as manim decides it
+                    line(pen, start)
+                    pen = start
+                if k < len(tokens) and tokens[k] != "M":
+                    return None  # drawing on from a closed subpath: leave it to svgelements
+            else:
+                return None
+    except (IndexError, ValueError):
+        return None
+    return np.array(rows, dtype=float).reshape(-1, 3)
 
 
 def _closed(points: np.ndarray) -> np.ndarray:

@@ -10,10 +10,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import svgelements as se
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from manim import BOLD, ITALIC, NORMAL, Text, Write, config, tempconfig
 from manim.camera.camera import Camera
+from manim.mobject.svg.svg_mobject import VMobjectFromSVGPath
 
 from metaphors import typeset
 from metaphors.typeset import FlatText, GlyphText, glyphs, text
@@ -114,6 +116,54 @@ def test_open_subpaths_are_closed_as_text_closes_them():
     anchors = closed.reshape(-1, 4, 3)[:, [0, 3], :2]
     assert anchors.tolist() == [[[0, 0], [1, 0]], [[1, 0], [1, 1]], [[1, 1], [0, 1]],
                                 [[0, 1], [0, 0]]]
+
+
+def manims_reader(d: str) -> np.ndarray:
+    return VMobjectFromSVGPath(se.Path(d)).points
+
+
+@pytest.mark.parametrize(("font", "slant", "weight"), [(SANS, NORMAL, NORMAL), (MONO, NORMAL, NORMAL),
+                                                       (SANS, ITALIC, BOLD)])
+def test_cairo_paths_read_as_manim_reads_them(font, slant, weight):
+    """Every glyph of Latin-1 and the symbols the scenes use: the same points, exactly."""
+    string = "".join(chr(c) for c in range(33, 256) if chr(c).isprintable()) + "✓✗→≤∞½—…"
+    root = typeset._svg(string, font, 26.0, slant, weight, 4000, 400)
+    outlines = {d for d, _, _ in typeset._placed_glyphs(root)}
+    assert len(outlines) > 150
+    for d in outlines:
+        assert np.array_equal(typeset._cairo_path(d), manims_reader(d)), d
+
+
+number = st.floats(-50, 50).map(lambda v: f"{v:.6f}")
+
+
+@st.composite
+def cairo_paths(draw) -> str:
+    """Path data as Cairo writes it: subpaths of M, L and C, each closed (Z) or not, and
+    maybe a last move that draws nothing."""
+    parts = []
+    for _ in range(draw(st.integers(1, 3))):
+        x, y = draw(number), draw(number)
+        parts.append(f"M {x} {y}")
+        for _ in range(draw(st.integers(0, 4))):
+            if draw(st.booleans()):
+                parts.append(f"L {draw(number)} {draw(number)}")
+            else:
+                parts.append("C " + " ".join(draw(number) for _ in range(6)))
+        if draw(st.booleans()):  # back to the start, a hair away from it, or not at all
+            gap = draw(st.sampled_from([0.0, 0.00005, 0.0002, 1.0]))
+            parts.append(f"L {float(x) + gap:.6f} {y}")
+        if draw(st.booleans()):
+            parts.append("Z")
+    if draw(st.booleans()):  # the empty move Cairo ends a path with
+        parts.append(f"M {draw(number)} {draw(number)}")
+    return " ".join(parts)
+
+
+@settings(max_examples=200)
+@given(cairo_paths())
+def test_any_cairo_path_reads_as_manim_reads_it(d):
+    assert np.array_equal(typeset._cairo_path(d), manims_reader(d))
 
 
 def test_text_copies_the_cached_outline():
