@@ -15,6 +15,7 @@ from itertools import pairwise
 import cairo
 import numpy as np
 from manim import Camera, VMobject
+from manim.camera.camera import CAP_STYLE_MAP, LINE_JOIN_MAP
 
 #: Cubic Bézier curves are 4 points: anchor, handle, handle, anchor.
 _CURVE = 4
@@ -27,9 +28,33 @@ class PathCamera(Camera):
     """:class:`manim.Camera`, building each ``VMobject``'s Cairo path with less Python."""
 
     def display_vectorized(self, vmobject: VMobject, ctx: cairo.Context) -> PathCamera:
-        if _invisible(vmobject):  # Cairo would fill and stroke with a clear colour: nothing
-            return self
-        return super().display_vectorized(vmobject, ctx)
+        # manim's display_vectorized, apply_fill and apply_stroke in one, with the same calls
+        fill = self.get_fill_rgbas(vmobject)
+        width, behind = vmobject.get_stroke_width(), vmobject.get_stroke_width(True)
+        stroke = self.get_stroke_rgbas(vmobject) if width else None
+        if (not fill[:, 3].any() and (not width or not stroke[:, 3].any())
+                and (not behind or not self.get_stroke_rgbas(vmobject, True)[:, 3].any())):
+            return self  # Cairo would fill and stroke with a clear colour: nothing
+        self.set_cairo_context_path(ctx, vmobject)
+        if behind:
+            self.apply_stroke(ctx, vmobject, background=True)
+        self._set_source(ctx, fill, vmobject)
+        ctx.fill_preserve()
+        if width:
+            self._set_source(ctx, stroke, vmobject)
+            ctx.set_line_width(width * self.cairo_line_width_multiple
+                               * (self.frame_width / self.frame_width))  # manim's expression
+            ctx.set_line_join(LINE_JOIN_MAP[vmobject.joint_type])
+            ctx.set_line_cap(CAP_STYLE_MAP[vmobject.cap_style])
+            ctx.stroke_preserve()
+        return self
+
+    def _set_source(self, ctx: cairo.Context, rgbas: np.ndarray, vmobject: VMobject) -> None:
+        if len(rgbas) == 1:  # one colour; the surface holds it as BGRA
+            red, green, blue, alpha = rgbas[0].tolist()
+            ctx.set_source_rgba(blue, green, red, alpha)
+        else:  # a gradient
+            self.set_cairo_context_color(ctx, rgbas, vmobject)
 
     def set_cairo_context_path(self, ctx: cairo.Context, vmobject: VMobject) -> PathCamera:
         points = vmobject.points
@@ -57,14 +82,6 @@ class PathCamera(Camera):
             if equal((start[0], start[1]), (end[6], end[7])):
                 close_path()
         return self
-
-
-def _invisible(vmobject: VMobject) -> bool:
-    """Whether every colour this mobject is filled and stroked with is fully transparent."""
-    return (not vmobject.get_fill_rgbas()[:, 3].any()
-            and (not vmobject.get_stroke_width() or not vmobject.get_stroke_rgbas()[:, 3].any())
-            and (not vmobject.get_stroke_width(True)
-                 or not vmobject.get_stroke_rgbas(True)[:, 3].any()))
 
 
 def _subpaths(points: np.ndarray, rows: list[list[float]], atol: float) -> list[tuple[int, int]]:
