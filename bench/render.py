@@ -8,9 +8,10 @@ directory, in this process (so imports are not counted; the text caches of
 2. a bare manim scene with the same plays — the same animation classes, as many per play, with
    the same run times — on simple mobjects (squares), built from Gravity's scene graph
    (:mod:`metaphors.snapshot`; for our own ``Turn``, a ``Transform``): video seconds per
-   wall second. Both are rendered ``--repeat``
-   times, alternately, and the best time of each counts (this machine's speed wanders by a
-   third between runs; the median is printed beside it);
+   wall second. Both are rendered ``--repeat`` times, alternately, and the best time of each
+   counts (this machine's speed wanders by a third between runs; the median is printed beside
+   it), with the CPU time of the main thread (building, interpolating, drawing) and of
+   manim's encoder threads (x264);
 3. the dry-run build time of every scene in ``scenes/*.py`` (what ``tests/test_scenes.py``
    pays per build), and their sum;
 4. Gravity rendered twice with manim's cache on, in one media directory: the time of the
@@ -35,6 +36,7 @@ import statistics
 import sys
 import tempfile
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -142,8 +144,20 @@ class CacheHits(logging.Handler):
             self.hits += 1
 
 
-def render(cls: type[Scene], media: Path, caching: bool) -> tuple[float, float, int]:
-    """Render at -ql into ``media``: (wall seconds, video seconds, cache hits)."""
+@dataclass
+class Run:
+    """One render: wall seconds, video seconds, cache hits, and CPU seconds of the whole
+    process and of this (the main) thread; the rest is manim's encoder threads (x264)."""
+
+    wall: float
+    video: float
+    hits: int
+    cpu: float
+    main: float
+
+
+def render(cls: type[Scene], media: Path, caching: bool) -> Run:
+    """Render at -ql into ``media``."""
     settings = {"quality": "low_quality", "media_dir": str(media), "disable_caching": not caching,
                 "verbosity": "INFO", "progress_bar": "none"}
     counter = CacheHits()
@@ -155,9 +169,10 @@ def render(cls: type[Scene], media: Path, caching: bool) -> tuple[float, float, 
     typeset.forget()  # typeset every text again, as a fresh process would
     try:
         with environment(DEFAULT_ENV), tempconfig(settings):
-            start = time.perf_counter()
+            start, cpu, main = time.perf_counter(), time.process_time(), time.thread_time()
             cls().render()
             wall = time.perf_counter() - start
+            cpu, main = time.process_time() - cpu, time.thread_time() - main
     finally:
         log.removeHandler(counter)
         for handler, level in quiet:
@@ -165,7 +180,7 @@ def render(cls: type[Scene], media: Path, caching: bool) -> tuple[float, float, 
     videos = [p for p in media.rglob(f"{cls.__name__}.mp4") if "partial" not in str(p)]
     with av.open(str(videos[0])) as container:
         seconds = container.duration / av.time_base
-    return wall, seconds, counter.hits
+    return Run(wall, seconds, counter.hits, cpu, main)
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -188,18 +203,19 @@ def main(argv: list[str] | None = None) -> None:
             print(f"  bare scene plays FadeIn for: {', '.join(sorted(set(stand_ins)))}")
 
         render(bare_cls, scratch / "warm", caching=False)  # encoder and caches warm, not counted
-        ours_walls, bare_walls = [], []
+        runs: dict[str, list[Run]] = {"ours": [], "bare": []}
         for k in range(args.repeat):  # interleaved, so that a slow spell of the machine hits both
-            ours_wall, ours_video, _ = render(ours_cls, scratch / f"ours{k}", caching=False)
-            bare_wall, bare_video, _ = render(bare_cls, scratch / f"bare{k}", caching=False)
-            ours_walls.append(ours_wall)
-            bare_walls.append(bare_wall)
-        ours_rate, bare_rate = ours_video / min(ours_walls), bare_video / min(bare_walls)
-        for name, video, walls, rate in (("ours", ours_video, ours_walls, ours_rate),
-                                         ("bare", bare_video, bare_walls, bare_rate)):
-            print(f"{name}  (-ql, no cache): {video:6.2f} s video in {min(walls):6.2f} s "
-                  f"= {rate:.2f} video s / wall s (best of {len(walls)}; median "
-                  f"{statistics.median(walls):.2f} s)")
+            runs["ours"].append(render(ours_cls, scratch / f"ours{k}", caching=False))
+            runs["bare"].append(render(bare_cls, scratch / f"bare{k}", caching=False))
+        rates = {}
+        for name, done in runs.items():
+            best = min(done, key=lambda r: r.wall)
+            rates[name] = best.video / best.wall
+            print(f"{name}  (-ql, no cache): {best.video:6.2f} s video in {best.wall:6.2f} s "
+                  f"= {rates[name]:.2f} video s / wall s (best of {len(done)}; median "
+                  f"{statistics.median(r.wall for r in done):.2f} s)")
+            print(f"      CPU (medians): main thread {statistics.median(r.main for r in done):.2f} s"
+                  f" + encoder threads {statistics.median(r.cpu - r.main for r in done):.2f} s")
 
         if not args.skip_builds:
             print("dry-run build, s")
@@ -212,12 +228,12 @@ def main(argv: list[str] | None = None) -> None:
             print(f"  {'all scenes':38s}{total:7.2f}")
 
         cached = scratch / "cached"
-        first_wall, _, first_hits = render(ours_cls, cached, caching=True)
-        second_wall, _, hits = render(ours_cls, cached, caching=True)
-        total = len(graph)
-        print(f"cached render: first {first_wall:.2f} s ({first_hits} hits), second "
-              f"{second_wall:.2f} s with {hits}/{total} plays from cache (target ≤ 2 s)")
-        print(f"render throughput ratio vs bare manim: {ours_rate / bare_rate:.2f}")
+        first = render(ours_cls, cached, caching=True)
+        second = render(ours_cls, cached, caching=True)
+        print(f"cached render: first {first.wall:.2f} s ({first.hits} hits), second "
+              f"{second.wall:.2f} s with {second.hits}/{len(graph)} plays from cache "
+              "(target ≤ 2 s)")
+        print(f"render throughput ratio vs bare manim: {rates['ours'] / rates['bare']:.2f}")
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
 
