@@ -59,9 +59,11 @@ class PathCamera(Camera):
     def set_cairo_context_path(self, ctx: cairo.Context, vmobject: VMobject) -> PathCamera:
         points = vmobject.points
         count = len(points)
-        if count % _CURVE or type(self).transform_points_pre_display \
-                is not Camera.transform_points_pre_display:
-            return super().set_cairo_context_path(ctx, vmobject)  # unusual: manim's own way
+        if (count % _CURVE or points.dtype != np.float64
+                or type(self).transform_points_pre_display
+                is not Camera.transform_points_pre_display):
+            # unusual: manim's own way (it compares float32 or integer points in their type)
+            return super().set_cairo_context_path(ctx, vmobject)
         if count == 0:
             return self
         if not np.isfinite(points).all():  # manim draws nothing for such a mobject

@@ -25,7 +25,7 @@ from manim.utils.color import ManimColor
 
 from metaphors.layout import BACKDROP_Z, STILL_Z
 
-_PLAIN = (int, float, str, bool, type(None), Enum)
+_PLAIN = (int, float, str, bool, type(None), Enum, np.generic)
 #: the z-indices of the layers kept, bottom first
 LAYERS = (STILL_Z, BACKDROP_Z)
 
@@ -36,7 +36,8 @@ class BackdropRenderer(CairoRenderer):
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
-        self._kept: dict[int, tuple[bytes, np.ndarray]] = {}  # z -> (state, pixels)
+        # z -> (state, camera background it was drawn on, pixels)
+        self._kept: dict[int, tuple[bytes, np.ndarray, np.ndarray]] = {}
         self.reused = 0  # layers taken from the kept pixels instead of drawn
 
     def save_static_frame_data(self, scene, static_mobjects: Iterable[Mobject]):
@@ -50,13 +51,15 @@ class BackdropRenderer(CairoRenderer):
                 break
             state = drawn_state(self.camera, still[start:end], state)
             kept = self._kept.get(z)
-            if kept is None or kept[0] != state:
+            # manim replaces the background array whenever it changes it (set_background,
+            # background_color): the very array the layer was drawn on is part of its state
+            if kept is None or kept[0] != state or kept[1] is not self.camera.background:
                 self.static_image = image
                 self.update_frame(scene, mobjects=still[start:end])  # over the layer below
-                kept = self._kept[z] = (state, self.get_frame())
+                kept = self._kept[z] = (state, self.camera.background, self.get_frame())
             else:
                 self.reused += 1
-            image, start = kept[1], end
+            image, start = kept[2], end
         if start == 0:
             return super().save_static_frame_data(scene, still)
         self.static_image = image

@@ -69,6 +69,17 @@ def test_shapes_text_gradients_and_bad_points_give_the_same_pixels():
     assert pixels(PathCamera, shapes).any()  # it did draw something
 
 
+def test_float32_points_are_split_as_manim_splits_them():
+    """manim compares float32 points in float32: two anchors 1e-6 apart are one joint there,
+    and two subpaths in float64."""
+    start, end = np.float32(3.623742e-06), np.float32(4.6237783e-06)
+    points = np.array([[-3, -2, 0], [-3, 2, 0], [-1, 3, 0], [end, 1, 0],
+                       [start, 1, 0], [3, 2, 0], [3, -3, 0], [-3, -2, 0]], dtype=np.float32)
+    mobject = VMobject(fill_opacity=1, stroke_width=12).set_points(points)
+    assert mobject.points.dtype == np.float32
+    assert same_pixels(mobject)
+
+
 @pytest.mark.parametrize(("file", "name"), [("gravity", "Gravity"), ("ears", "Ears")])
 def test_whole_scene_renders_the_same_frames(tmp_path, file, name):
     cls = scene_class(file, name)

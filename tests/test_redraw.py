@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from manim import tempconfig
+from manim import BLUE, RIGHT, Circle, FadeIn, Scene, Square, tempconfig
 from manim.renderer.cairo_renderer import CairoRenderer
 
 from metaphors.board import Board
@@ -124,3 +124,29 @@ def test_kept_backdrop_gives_the_same_pixels(tmp_path):
     plain = frames(lambda: Scaling(renderer=CairoRenderer()), str(tmp_path / "plain"))
     assert len(kept) > 50 and kept == plain
     assert renderers[0].reused > 5  # the backdrop was really kept, not redrawn every play
+
+
+class _ChangingBackdrop(Scene):
+    """A bottom-layer square, then a change the kept pixels must notice, then another play."""
+
+    change = "none"
+
+    def construct(self):
+        square = Square(3).set_stroke(BLUE, width=np.float32(2)).set_z_index(STILL_Z)
+        self.add(square)
+        self.play(FadeIn(Circle(0.3)), run_time=0.2)
+        if self.change == "numpy scalar":  # a width given as a NumPy float32
+            square.set_stroke(width=np.float32(30))
+        elif self.change == "background":  # manim's own API; the colour attributes stay
+            red = np.zeros_like(self.renderer.camera.background)
+            red[..., 0] = red[..., 3] = 255
+            self.renderer.camera.set_background(red)
+        self.play(FadeIn(Circle(0.5).shift(2 * RIGHT)), run_time=0.2)
+
+
+@pytest.mark.parametrize("change", ["numpy scalar", "background"])
+def test_kept_backdrop_sees_every_change(tmp_path, change):
+    scene = type("Changing", (_ChangingBackdrop,), {"change": change})
+    kept = frames(lambda: scene(renderer=BackdropRenderer()), str(tmp_path / "kept"))
+    plain = frames(lambda: scene(renderer=CairoRenderer()), str(tmp_path / "plain"))
+    assert len(kept) >= 2 and kept == plain
