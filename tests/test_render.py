@@ -12,6 +12,7 @@ the play that changed it).
 
 from __future__ import annotations
 
+import configparser
 import importlib.util
 import itertools
 import json
@@ -27,6 +28,7 @@ import pytest
 from manim.utils.testing.frames_comparison import frames_comparison
 
 from metaphors.snapshot import build_graph, environment
+from trex.render_command import X264_OPTIONS
 
 __module_test__ = "render"
 
@@ -98,10 +100,10 @@ def frames_of(run_time: float) -> int:
     return math.ceil(round(run_time * FPS, 6))
 
 
-def render_gravity(media: Path) -> Path:
-    """``manim -ql`` of the rendered scene, as a user runs it from the repository root (so
-    ``manim.cfg`` applies), into ``media``: the video's path."""
-    file, name = RENDERED
+def render_gravity(media: Path, scene: tuple[str, str] = RENDERED) -> Path:
+    """``manim -ql`` of the rendered scene (or another), as a user runs it from the repository
+    root (so ``manim.cfg`` applies), into ``media``: the video's path."""
+    file, name = scene
     env = {k: v for k, v in os.environ.items() if k not in DEFAULT_ENV}
     # Caching off: a first render in a fresh directory has nothing to reuse, and hashing
     # every play's mobjects would only slow it down.
@@ -122,12 +124,19 @@ def rendered(tmp_path_factory):
     return video, graph
 
 
-def test_same_input_gives_the_same_video(rendered, tmp_path):
-    """A second render is the same file, byte for byte (x264 runs one thread per encoder:
-    with more it coded a few frames differently from run to run under load; manim.cfg)."""
-    video, _ = rendered
-    again = render_gravity(tmp_path / "media")
-    assert again.read_bytes() == video.read_bytes()
+def test_same_input_gives_the_same_video(tmp_path):
+    """Two renders in two processes are the same file, byte for byte. manim.cfg has x264 run
+    one thread and no macroblock tree; with the tree, Scaling gave a different file in each
+    of three processes (the same frames, coded differently)."""
+    first, again = (render_gravity(tmp_path / name, ("scaling", "Scaling"))
+                    for name in ("one", "two"))
+    assert first.read_bytes() == again.read_bytes()
+
+
+def test_trex_render_encodes_as_manim_cfg_does():
+    parser = configparser.ConfigParser()
+    parser.read(ROOT / "manim.cfg")
+    assert dict(parser["video_encoder.options"]) == X264_OPTIONS
 
 
 def test_render_video_stream(rendered):

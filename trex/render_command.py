@@ -32,6 +32,9 @@ SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 QUALITIES = {"l": "low_quality", "m": "medium_quality", "h": "high_quality", "k": "fourk_quality"}
 FORMATS = ("mp4", "gif", "png")
 EXIT_FAILED = 1
+#: x264's options, as manim.cfg sets them for ``manim`` itself: one thread and no macroblock
+#: tree, so that the same input gives the same video, byte for byte (see manim.cfg)
+X264_OPTIONS = {"threads": "1", "x264-params": "mbtree=0"}
 EXIT_SIGNAL = 128  # + the signal's number, as a shell reports it
 
 
@@ -271,12 +274,12 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
             "verbosity": "WARNING",
             "progress_bar": "display" if progress else "none",
             "preview": False,
-            # one x264 thread per encoder, as manim.cfg has it (with more, x264 codes a few
-            # frames differently from run to run); but one encoder at a time, not manim.cfg's
-            # 4: with several in flight, an interrupted render now and then never exited
-            # (tests/test_render_command.py, two renders interrupted at once under load)
+            # x264 as manim.cfg has it (the same input, the same bytes); but one encoder at a
+            # time, not manim.cfg's 4: with several in flight, an interrupted render now and
+            # then never exited (tests/test_render_command.py, two renders interrupted at once
+            # under load)
             "max_inflight_encoders": 1,
-            "video_encoder_options": {"threads": "1"},
+            "video_encoder_options": dict(X264_OPTIONS),
         }
         with tempconfig(settings):
             scene = make_scene()
