@@ -11,7 +11,7 @@ directory, in this process (so imports are not counted; the text caches of
    wall second. Both are rendered ``--repeat`` times, alternately, and the best time of each
    counts (this machine's speed wanders by a third between runs; the median is printed beside
    it), with the CPU time of the main thread (building, interpolating, drawing) and of
-   manim's encoder threads (x264);
+   manim's encoder threads (x264), and the ratio's ceiling those allow on this machine;
 3. the dry-run build time of every scene in ``scenes/*.py`` (what ``tests/test_scenes.py``
    pays per build), and their sum;
 4. Gravity rendered twice with manim's cache on, in one media directory: the time of the
@@ -183,6 +183,14 @@ def render(cls: type[Scene], media: Path, caching: bool) -> Run:
     return Run(wall, seconds, counter.hits, cpu, main)
 
 
+def _main(runs: list[Run]) -> float:
+    return statistics.median(r.main for r in runs)
+
+
+def _encoders(runs: list[Run]) -> float:
+    return statistics.median(r.cpu - r.main for r in runs)
+
+
 def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--skip-builds", action="store_true", help="no dry-run build times")
@@ -214,8 +222,13 @@ def main(argv: list[str] | None = None) -> None:
             print(f"{name}  (-ql, no cache): {best.video:6.2f} s video in {best.wall:6.2f} s "
                   f"= {rates[name]:.2f} video s / wall s (best of {len(done)}; median "
                   f"{statistics.median(r.wall for r in done):.2f} s)")
-            print(f"      CPU (medians): main thread {statistics.median(r.main for r in done):.2f} s"
-                  f" + encoder threads {statistics.median(r.cpu - r.main for r in done):.2f} s")
+            print(f"      CPU (medians): main thread {_main(done):.2f} s"
+                  f" + encoder threads {_encoders(done):.2f} s")
+        # Both renders keep the two cores busy, so wall time follows total CPU. Were our main
+        # thread as cheap as bare's, the encoders' work on our frames alone would leave:
+        bare_cpu = _main(runs["bare"]) + _encoders(runs["bare"])
+        print(f"CPU-bound ceiling (our main thread costing what bare's does): "
+              f"{bare_cpu / (_main(runs['bare']) + _encoders(runs['ours'])):.2f}")
 
         if not args.skip_builds:
             print("dry-run build, s")
