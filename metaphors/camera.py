@@ -4,8 +4,9 @@ manim hands Cairo each Bézier curve of a ``VMobject`` by indexing a NumPy array
 curve and finds the subpaths with a dozen small NumPy calls per mobject; in our frames (text
 of thousands of curves, dozens of small markers) that Python work costs more than Cairo's
 drawing. :class:`PathCamera` makes the same Cairo calls with the same numbers — so the same
-pixels, bit for bit (``tests/test_redraw.py`` renders scenes with both cameras) — from one
-``tolist()`` per mobject.
+pixels, bit for bit (``tests/test_camera.py`` draws random paths and renders whole scenes with
+both cameras) — from one ``tolist()`` per mobject, and skips mobjects whose every colour is
+fully transparent (Cairo draws nothing for them).
 """
 
 from __future__ import annotations
