@@ -214,7 +214,11 @@ def _cairo_path(d: str) -> np.ndarray | None:
     [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0]]
     >>> _cairo_path("M 0 0 l 3 0") is None  # relative: not Cairo's
     True
+    >>> _cairo_path("M 0 0 L nan 1") is None  # float() reads more than SVG numbers
+    True
     """
+    if any(c in d for c in "_nNiI"):  # nan, inf, 1_0: numbers float() takes and SVG does not
+        return None
     tokens = d.split()
     rows: list[list[float]] = []
     pen = start = None  # manim's last_move and last_true_move
