@@ -156,9 +156,7 @@ class Board:
         if caption == self.caption:
             return []
         new = tag(text(caption, font=self.theme.font, size=self.theme.caption_size,
-                       colour=self.theme.ink), None, "subtitle")
-        if new.width > 13.4:
-            new.scale_to_fit_width(13.4)
+                       colour=self.theme.ink, width=13.4), None, "subtitle")
         new.move_to((0, SUBTITLE_Y, 0))
         old, self.subtitle = self.subtitle, new
         return [FadeOut(old), FadeIn(new)]

@@ -138,18 +138,14 @@ class LectureScene(TraceScene):
             self.clear()
 
     def text(self, text: str, size: int, colour: str | None = None) -> FlatText:
-        mob = typeset.text(text, font=self.theme.font, size=size, colour=colour or self.theme.ink)
-        if mob.width > 13.2:
-            mob.scale_to_fit_width(13.2)
-        return mob
+        return typeset.text(text, font=self.theme.font, size=size,
+                            colour=colour or self.theme.ink, width=13.2)
 
     # --- segments ---------------------------------------------------------------------------------
 
     def play_card(self, card: Card) -> None:
         title = tag(typeset.glyphs(card.title, font=self.theme.font, size=self.theme.title_size,
-                                   colour=self.theme.ink), None, "card:title")  # written
-        if title.width > 13.2:
-            title.scale_to_fit_width(13.2)
+                                   colour=self.theme.ink, width=13.2), None, "card:title")
         lines = [tag(self.text("• " + line, self.theme.caption_size, self.theme.idle), None,
                      "card:line") for line in card.lines]
         group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)

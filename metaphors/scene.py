@@ -112,9 +112,7 @@ class SequenceScene(TraceScene):
         theme = self.theme
         number = text(f"{k + 1} / {len(self.runs)}", font=theme.font, size=theme.label_size,
                       colour=theme.idle)
-        name = text(title, font=theme.font, size=theme.title_size, colour=theme.ink)
-        if name.width > 13:
-            name.scale_to_fit_width(13)
+        name = text(title, font=theme.font, size=theme.title_size, colour=theme.ink, width=13)
         card = tag(VGroup(number, name).arrange(DOWN, buff=0.3), None, "card")
         self.play(FadeIn(card), run_time=0.25)
         self.wait(self.card_time - 0.5)

@@ -24,10 +24,7 @@ T_OPACITY = 0.15  # as the scenes draw T
 
 
 def _text(text: str, size: int, colour: str, theme: Theme) -> FlatText:
-    mob = typeset.text(text, font=theme.font, size=size, colour=colour)
-    if mob.width > MAX_TEXT_WIDTH:
-        mob.scale_to_fit_width(MAX_TEXT_WIDTH)
-    return mob
+    return typeset.text(text, font=theme.font, size=size, colour=colour, width=MAX_TEXT_WIDTH)
 
 
 def still_mobjects(exercise: Exercise, theme: Theme = THEME) -> list:

@@ -79,18 +79,24 @@ class GlyphText(VGroup):
 
 
 def text(string: str, *, size: float, colour: str | None = None, font: str = THEME.font,
-         slant: str = NORMAL, weight: str = NORMAL) -> FlatText:
+         slant: str = NORMAL, weight: str = NORMAL, width: float | None = None) -> FlatText:
     """A :class:`FlatText` of ``string`` in ``font`` at ``size`` (manim's ``font_size``), filled
-    with ``colour`` (default: the theme's ink)."""
+    with ``colour`` (default: the theme's ink); shrunk to ``width`` if it is wider."""
     points = outline(string, font, float(size), slant, weight)
-    return FlatText(string, points.copy(), color=colour or THEME.ink)
+    return _fit(FlatText(string, points.copy(), color=colour or THEME.ink), width)
 
 
 def glyphs(string: str, *, size: float, colour: str | None = None, font: str = THEME.font,
-           slant: str = NORMAL, weight: str = NORMAL) -> GlyphText:
+           slant: str = NORMAL, weight: str = NORMAL, width: float | None = None) -> GlyphText:
     """A :class:`GlyphText` of ``string``: for text that is written with ``Write``."""
     points, ends = _typeset(string, font, float(size), slant, weight)
-    return GlyphText(string, points.copy(), ends, colour or THEME.ink)
+    return _fit(GlyphText(string, points.copy(), ends, colour or THEME.ink), width)
+
+
+def _fit(mobject, width: float | None):
+    if width is not None and mobject.width > width:
+        mobject.scale_to_fit_width(width)
+    return mobject
 
 
 def outline(string: str, font: str, size: float, slant: str = NORMAL,
