@@ -100,7 +100,7 @@ def frames_of(run_time: float) -> int:
     return math.ceil(round(run_time * FPS, 6))
 
 
-def render_gravity(media: Path, scene: tuple[str, str] = RENDERED) -> Path:
+def render_scene(media: Path, scene: tuple[str, str] = RENDERED) -> Path:
     """``manim -ql`` of the rendered scene (or another), as a user runs it from the repository
     root (so ``manim.cfg`` applies), into ``media``: the video's path."""
     file, name = scene
@@ -119,7 +119,7 @@ def render_gravity(media: Path, scene: tuple[str, str] = RENDERED) -> Path:
 
 @pytest.fixture(scope="module")
 def rendered(tmp_path_factory):
-    video = render_gravity(tmp_path_factory.mktemp("media"))
+    video = render_scene(tmp_path_factory.mktemp("media"))
     graph = json.loads(build_graph(scene_class(*RENDERED), DEFAULT_ENV))
     return video, graph
 
@@ -128,7 +128,7 @@ def test_same_input_gives_the_same_video(tmp_path):
     """Two renders in two processes are the same file, byte for byte. manim.cfg has x264 run
     one thread and no macroblock tree; with the tree, Scaling gave a different file in each
     of three processes (the same frames, coded differently)."""
-    first, again = (render_gravity(tmp_path / name, ("scaling", "Scaling"))
+    first, again = (render_scene(tmp_path / name, ("scaling", "Scaling"))
                     for name in ("one", "two"))
     assert first.read_bytes() == again.read_bytes()
 
