@@ -2,12 +2,12 @@
 
 In one run, all at ``-ql`` (854×480, 15 fps), each render into a fresh temporary media
 directory, in this process (so imports are not counted; the text caches of
-:mod:`metaphors.typeset` are emptied before each render, so each typesets as a fresh process):
+:mod:`rendering.typeset` are emptied before each render, so each typesets as a fresh process):
 
 1. ``scenes/gravity.py`` (``Gravity``) rendered with caching off: video seconds per wall second;
 2. a bare manim scene with the same plays — the same animation classes, as many per play, with
    the same run times — on simple mobjects (squares), built from Gravity's scene graph
-   (:mod:`metaphors.snapshot`; for our own ``Turn``, a ``Transform``): video seconds per
+   (:mod:`trex.scene_graph`; for our own ``Turn``, a ``Transform``): video seconds per
    wall second. Both are rendered ``--repeat`` times, alternately, and the best time of each
    counts (this machine's speed wanders by a third between runs; the median is printed beside
    it), with the CPU time of the main thread (building, interpolating, drawing) and of
@@ -47,8 +47,8 @@ import av  # noqa: E402
 import manim  # noqa: E402
 from manim import RED, Scene, Square, tempconfig  # noqa: E402
 
-from metaphors import typeset  # noqa: E402
-from metaphors.snapshot import build, environment, scene_graph  # noqa: E402
+from rendering import typeset  # noqa: E402
+from trex.scene_graph import build, environment, scene_graph  # noqa: E402
 
 #: The scene rendered.
 SCENE_FILE, SCENE_NAME = "gravity", "Gravity"

@@ -17,8 +17,8 @@ from manim import (
     Polygon as MPolygon,
 )
 
-from metaphors.panel import tag
-from metaphors.typeset import text
+from metaphors.tags import tag
+from rendering.typeset import text
 
 
 def polygon(board, beat) -> None:

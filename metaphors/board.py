@@ -15,10 +15,12 @@ from manim import FadeIn, FadeOut, Scene, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
-from metaphors.layout import BACKDROP_Z, METAPHOR, STILL_Z, SUBTITLE_Y, TITLE_Y, Box
-from metaphors.panel import Panel, tag
+from metaphors.layout import METAPHOR, SUBTITLE_Y, TITLE_Y, Box
+from metaphors.panel import Panel
+from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
-from metaphors.typeset import glyphs, text
+from rendering.layers import BACKDROP_Z, STILL_Z
+from rendering.typeset import glyphs, text
 
 #: seconds the words of a beat take to change (at most half the beat)
 WORDS_TIME = 0.3
@@ -120,11 +122,11 @@ class Board:
 
     def settle(self) -> None:
         """Put the text at the bottom of the scene's drawing order: title and code lowest
-        (:data:`~metaphors.layout.STILL_Z`), then the text that changes from beat to beat
-        (:data:`~metaphors.layout.BACKDROP_Z`). manim redraws, in every frame of a play, each
+        (:data:`~rendering.layers.STILL_Z`), then the text that changes from beat to beat
+        (:data:`~rendering.layers.BACKDROP_Z`). manim redraws, in every frame of a play, each
         mobject from the first animated one upwards (ordered by z-index, then by when it was
         added); text below everything else stays in the play's static image, and the title and
-        code stay in :class:`~metaphors.renderer.BackdropRenderer`'s kept layer. Nothing else
+        code stay in :class:`~rendering.renderer.BackdropRenderer`'s kept layer. Nothing else
         on screen overlaps the text, so the picture does not change."""
         layers = ((STILL_Z, [self.title, self.panel.code]),
                   (BACKDROP_Z, [*self.panel.changing(), self.subtitle]))

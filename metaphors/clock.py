@@ -16,8 +16,8 @@ import math
 import numpy as np
 from manim import DEGREES, Circle, Dot, FadeIn, FadeOut, Line, Rotate, VGroup
 
-from metaphors.panel import tag
 from metaphors.sweep import follower, light
+from metaphors.tags import tag
 
 #: Radius of the clock face (scene units); the hand reaches past the farthest mark.
 FACE_RADIUS = 0.55

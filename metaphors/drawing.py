@@ -10,8 +10,8 @@ from manim import DOWN, Dot, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
-from metaphors import typeset
 from metaphors.theme import THEME, Theme
+from rendering import typeset
 
 
 class Frame:

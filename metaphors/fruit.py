@@ -19,8 +19,8 @@ from manim import (
     Polygon as MPolygon,
 )
 
-from metaphors import typeset
-from metaphors.panel import tag
+from metaphors.tags import tag
+from rendering import typeset
 
 PLATE_Y = -2.55
 PLATE_WIDTH = 5.6

@@ -25,11 +25,11 @@ import numpy as np
 from manim import Circle, Create, Dot, FadeIn, Line, Scene, Transform, VGroup
 from manim import Polygon as MPolygon
 
-from metaphors import typeset
 from metaphors.board import Board
 from metaphors.layout import METAPHOR
-from metaphors.panel import tag
-from metaphors.theme import ROLES
+from metaphors.tags import tag
+from rendering import typeset
+from story.roles import ROLES
 
 #: Kinds the generic performer draws.
 DRAWN_KINDS = ("point", "segment", "polygon", "circle", "line", "ray", "text")

@@ -33,9 +33,9 @@ from manim import Polygon as MPolygon
 
 from metaphors import basics
 from metaphors.layout import METAPHOR
-from metaphors.panel import tag
-from metaphors.turn import Turn
-from metaphors.typeset import FlatText, text
+from metaphors.tags import tag
+from rendering.turn import Turn
+from rendering.typeset import FlatText, text
 
 #: board objects that stay put on screen when the polygon turns (keys of ``board.objects``)
 FIXED = ("gravity", "plate", "counter")  # and every slice on the plate (fruit)

@@ -27,9 +27,3 @@ PANEL_POLYGON = Box(3.6, 1.82, 4.6, 2.0)
 PANEL_CODE = Box(3.6, -0.95, 6.2, 2.55)
 PANEL_CALL_Y = -2.65
 SUBTITLE_Y = -3.55
-#: z-index of the text around the picture, below everything so that manim keeps it in a play's
-#: static image (see ``Board.settle``; nothing overlaps it): the text that stays all scene long
-#: (title, code) lowest, the text that changes from beat to beat (light, lit row, call line,
-#: subtitle) above it
-STILL_Z = -11
-BACKDROP_Z = -10

@@ -22,15 +22,15 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import triangulate
-from metaphors import typeset
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
-from metaphors.panel import tag
-from metaphors.runs import run_logged
 from metaphors.scene import TraceScene
 from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
-from metaphors.storyboard import Pacing, storyboard
-from metaphors.typeset import FlatText
+from metaphors.tags import tag
+from rendering import typeset
+from rendering.typeset import FlatText
+from story.runs import run_logged
+from story.storyboard import Pacing, storyboard
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 DEFAULT_PACING = Pacing(full=2, fast=0.35)

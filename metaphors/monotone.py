@@ -9,8 +9,8 @@ from __future__ import annotations
 from manim import Create, DashedLine, FadeIn, FadeOut, Indicate, Line, Transform
 from manim import Polygon as MPolygon
 
-from metaphors.panel import tag
-from metaphors.typeset import text
+from metaphors.tags import tag
+from rendering.typeset import text
 
 
 def _sweep_line(board, y: float):

@@ -12,19 +12,13 @@ from manim import (
     VGroup,
 )
 
-from metaphors import typeset
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
-from metaphors.layout import BACKDROP_Z, PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON
+from metaphors.layout import PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON
 from metaphors.pseudocode import source_of
+from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
-
-
-def tag(mobject, role: str | None = None, name: str | None = None):
-    """Attach the role (and a name) a snapshot reports for a mobject; returns it."""
-    mobject.trex_role = role
-    if name:
-        mobject.name = name
-    return mobject
+from rendering import typeset
+from rendering.layers import BACKDROP_Z
 
 
 class Panel:

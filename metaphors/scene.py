@@ -16,14 +16,14 @@ from manim.constants import RendererType
 
 from metaphors.actions import perform
 from metaphors.board import Board
-from metaphors.camera import PathCamera
 from metaphors.layout import METAPHOR
-from metaphors.panel import tag
-from metaphors.renderer import BackdropRenderer
-from metaphors.runs import run_logged, scene_log
-from metaphors.storyboard import Beat, Pacing, storyboard
+from metaphors.tags import tag
 from metaphors.theme import THEME
-from metaphors.typeset import text
+from rendering.camera import PathCamera
+from rendering.renderer import BackdropRenderer
+from rendering.typeset import text
+from story.runs import run_logged, scene_log
+from story.storyboard import Beat, Pacing, storyboard
 from tracing import Log
 
 

@@ -12,10 +12,10 @@ from manim import DashedLine, Scene, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.exercises import Exercise
-from metaphors import typeset
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.theme import THEME, Theme
-from metaphors.typeset import FlatText
+from rendering import typeset
+from rendering.typeset import FlatText
 
 TITLE_Y, LEGEND_Y = 3.45, -3.6
 BOX_CENTER, BOX_WIDTH, BOX_HEIGHT = (0.0, -0.1), 12.4, 5.6

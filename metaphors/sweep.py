@@ -31,8 +31,8 @@ from manim import (
 )
 
 from metaphors.layout import METAPHOR
-from metaphors.panel import tag
-from metaphors.typeset import text
+from metaphors.tags import tag
+from rendering.typeset import text
 
 #: How far inside/outside counts as "on the boundary" (scene units).
 EPS = 1e-6

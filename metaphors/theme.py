@@ -12,7 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-ROLES = ("called", "argument", "result", "rejected", "idle")
+from rendering.typeset import DEFAULT_FONT, DEFAULT_INK
+from story.roles import ROLES
 
 
 @dataclass(frozen=True)
@@ -25,7 +26,7 @@ class Theme:
     result: str = "#4cc46b"
     rejected: str = "#ef4b4b"
     idle: str = "#8a93a3"
-    ink: str = "#e8ecf2"
+    ink: str = DEFAULT_INK
     polygon_fill: str = "#2a3a55"
     water: str = "#3aa0ff"
     ball: str = "#ff8c42"
@@ -44,7 +45,7 @@ class Theme:
     plate: str = "#d9dee7"  # where the slices go
     knife: str = "#f5f7fa"
     dash_length: float = 0.09
-    font: str = "DejaVu Sans"
+    font: str = DEFAULT_FONT
     mono_font: str = "DejaVu Sans Mono"
     stroke: float = 3.0
     thin_stroke: float = 1.5

@@ -11,7 +11,7 @@ from manim import Circle, FadeIn, FadeOut, Indicate, Transform
 from manim import Polygon as MPolygon
 
 from geometry.visibility import visible_region
-from metaphors.panel import tag
+from metaphors.tags import tag
 
 
 def _disk(board, center, radius: float):

@@ -7,7 +7,7 @@ then faster.
 """
 
 from metaphors.scene import TraceScene
-from metaphors.storyboard import Pacing
+from story.storyboard import Pacing
 
 
 class DivideAndConquer(TraceScene):

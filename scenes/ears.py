@@ -5,7 +5,7 @@ Run: ``manim -pql scenes/ears.py`` (``TREX_POLYGON=<file or sample>`` picks the 
 
 from metaphors.layout import Box
 from metaphors.scene import TraceScene
-from metaphors.storyboard import Pacing
+from story.storyboard import Pacing
 
 
 class Ears(TraceScene):

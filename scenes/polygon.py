@@ -11,7 +11,7 @@ from geometry.cdt import constrained_delaunay
 from geometry.io import read_polygon
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.theme import THEME
-from metaphors.typeset import glyphs
+from rendering.typeset import glyphs
 
 
 class PolygonScene(Scene):

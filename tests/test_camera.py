@@ -10,8 +10,8 @@ from hypothesis import strategies as st
 from manim import BLUE, RED, Camera, Circle, Square, VMobject, tempconfig
 from manim.renderer.cairo_renderer import CairoRenderer
 
-from metaphors.camera import PathCamera
-from metaphors.typeset import text
+from rendering.camera import PathCamera
+from rendering.typeset import text
 from tests.test_redraw import frames, scene_class
 
 

@@ -99,7 +99,7 @@ def test_log_round_trips_and_is_deterministic(tmp_path):
 ])
 def test_log_is_the_log_a_scene_records(tmp_path, args, live):
     """A scene replaying a `trex log` file (TREX_LOG) plays exactly what its live run plays."""
-    from metaphors.runs import run_logged
+    from story.runs import run_logged
 
     path = tmp_path / "run.json"
     code, _, _ = run("log", *args, "-o", str(path))

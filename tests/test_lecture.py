@@ -26,8 +26,7 @@ import pytest
 import srt
 from click.testing import CliRunner
 
-from metaphors import assemble
-from trex import lecture_command
+from trex import assemble, lecture_command
 from trex.cli import main
 from trex.render_command import load_scene_class
 
@@ -443,7 +442,7 @@ def _chapters():
 def test_every_chapter_builds_with_its_captions(chapter):
     """Each chapter plays through in dry run (every segment's code runs, no video): a chapter
     that crashes half-way through a render is caught here, not after minutes of rendering."""
-    from metaphors.snapshot import build
+    from trex.scene_graph import build
 
     _, plays = build(_chapter_class(chapter), {"TREX_LOG": None, "TREX_POLYGON": None})
     captions = [p.subcaption for p in plays if p.subcaption]

@@ -1,6 +1,6 @@
 """Pacing: full detail for the first claims, then faster, so that a 20-vertex divide and conquer
 (18 triangles, 17 claims) stays under about two minutes of video. Measured on the scene built
-in dry run (:func:`metaphors.snapshot.build`), as long as its video at ``-ql``: each play
+in dry run (:func:`trex.scene_graph.build`), as long as its video at ``-ql``: each play
 lasts a whole number of frames (15 per second), the last one begun counted whole."""
 
 from __future__ import annotations
@@ -10,9 +10,9 @@ from pathlib import Path
 
 import pytest
 
-from metaphors.snapshot import build
-from metaphors.storyboard import Pacing
+from story.storyboard import Pacing
 from trex.render_command import load_scene_class
+from trex.scene_graph import build
 
 SCENE_FILE = Path(__file__).resolve().parents[1] / "scenes" / "divide_and_conquer.py"
 DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}

@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from metaphors import player as player_module
-from metaphors.runs import run_logged
-from metaphors.storyboard import storyboard
+from story.runs import run_logged
+from story.storyboard import storyboard
+from trex import player_steps as player_module
 from trex.cli import main
 
 CHROMIUM = Path("/usr/bin/chromium")

@@ -5,7 +5,7 @@ every frame redraws the rest: each mobject from the first animated one upwards (
 then insertion order). The board keeps its title, code, call line and subtitle at the bottom
 (``Board.settle``), and lights a code row by laying a copy over it instead of recolouring the
 row, so the code stays static in every play. These tests read the moving mobjects of each
-play of real scenes built in dry run (:func:`metaphors.snapshot.build`).
+play of real scenes built in dry run (:func:`trex.scene_graph.build`).
 """
 
 from __future__ import annotations
@@ -20,10 +20,10 @@ from manim import BLUE, RIGHT, Circle, FadeIn, Scene, Square, tempconfig
 from manim.renderer.cairo_renderer import CairoRenderer
 
 from metaphors.board import Board
-from metaphors.layout import BACKDROP_Z, STILL_Z
-from metaphors.renderer import BackdropRenderer
-from metaphors.snapshot import build, environment
+from rendering.layers import BACKDROP_Z, STILL_Z
+from rendering.renderer import BackdropRenderer
 from trex.render_command import load_scene_class
+from trex.scene_graph import build, environment
 
 SCENES = Path(__file__).resolve().parents[1] / "scenes"
 DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}

@@ -27,8 +27,8 @@ import av
 import pytest
 from manim.utils.testing.frames_comparison import frames_comparison
 
-from metaphors.snapshot import build_graph, environment
 from trex.render_command import X264_OPTIONS
+from trex.scene_graph import build_graph, environment
 
 __module_test__ = "render"
 

@@ -36,7 +36,7 @@ from syrupy.extensions.single_file import SingleFileSnapshotExtension, WriteMode
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import WRONG, find_diagonal
 from geometry.io import read_polygon
-from metaphors.snapshot import build_graph, environment
+from trex.scene_graph import build_graph, environment
 
 SCENES_DIR = Path(__file__).resolve().parents[1] / "scenes"
 

@@ -1,4 +1,4 @@
-"""metaphors.typeset: the fast typesetting gives manim's ``Text`` outline, point for point, and
+"""rendering.typeset: the fast typesetting gives manim's ``Text`` outline, point for point, and
 one merged path draws the same picture as the glyphs did."""
 
 from __future__ import annotations
@@ -17,8 +17,8 @@ from manim import BOLD, ITALIC, NORMAL, Text, Write, config, tempconfig
 from manim.camera.camera import Camera
 from manim.mobject.svg.svg_mobject import VMobjectFromSVGPath
 
-from metaphors import typeset
-from metaphors.typeset import FlatText, GlyphText, glyphs, text
+from rendering import typeset
+from rendering.typeset import FlatText, GlyphText, glyphs, text
 
 SANS, MONO = "DejaVu Sans", "DejaVu Sans Mono"
 ROOT = Path(__file__).resolve().parents[1]
@@ -226,7 +226,7 @@ def test_processes_sharing_a_media_directory(tmp_path):
     """Four processes typesetting the same strings into one media directory at once: every
     one succeeds, and every file left behind is whole."""
     code = (
-        "import sys; from manim import tempconfig; from metaphors import typeset\n"
+        "import sys; from manim import tempconfig; from rendering import typeset\n"
         "with tempconfig({'media_dir': sys.argv[1]}):\n"
         "    for k in range(120):\n"
         "        typeset.text(f'line {k} of the race', size=20)\n"

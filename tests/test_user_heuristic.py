@@ -13,8 +13,8 @@ from click.testing import CliRunner
 import tracing
 from geometry.io import read_polygon
 from geometry.user_heuristics import UserHeuristicError, load_user_heuristic
-from metaphors.runs import run_logged
-from metaphors.storyboard import storyboard
+from story.runs import run_logged
+from story.storyboard import storyboard
 from trex.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -4,7 +4,7 @@ The chapters are ``metaphors.lecture.CHAPTERS`` (``--chapters`` picks some of th
 or names scenes to play as chapters instead). Each chapter renders in a process of its own,
 ``python -m trex.lecture_command`` (:func:`render_chapter`: ``render_into`` of
 ``trex render``, so each has its own temporary media directory), at most ``-j`` at a time.
-When all are done, :mod:`metaphors.assemble` joins them: one mp4 (packets remuxed, not
+When all are done, :mod:`trex.assemble` joins them: one mp4 (packets remuxed, not
 encoded again), one .srt, ``chapters.json`` and ``chapters.md``; the chapter mp4s are kept
 in ``chapters/``.
 
@@ -302,11 +302,11 @@ def render_chapters(chapters: Sequence, folder: Path, logs: Path, quality: str, 
                     done: Callable[[int, object, object, float], None] | None = None) -> list:
     """Render every chapter to ``folder/NN-slug.mp4`` (+ .srt), ``jobs`` at a time.
 
-    Returns the chapters' :class:`metaphors.assemble.Video` in chapter order; calls
+    Returns the chapters' :class:`trex.assemble.Video` in chapter order; calls
     ``done(k, chapter, video, seconds)`` as each one finishes. The first failure stops the
     others and raises :class:`ChapterFailed`; so does an exception (an interrupt) here.
     """
-    from metaphors.assemble import probe
+    from trex.assemble import probe
 
     pending = list(enumerate(chapters))
     running: list[_Render] = []
@@ -343,7 +343,7 @@ def render_chapters(chapters: Sequence, folder: Path, logs: Path, quality: str, 
 def assemble(chapters: Sequence, videos: Sequence, stage: Path) -> str | None:
     """Write the lecture's files into ``stage`` (which holds ``chapters/``); returns why the
     video had to be encoded again (None: remuxed)."""
-    from metaphors import assemble as joiner
+    from trex import assemble as joiner
 
     reason = joiner.join_videos(videos, stage / VIDEO)
     starts = joiner.starts_of(videos)

@@ -1,14 +1,14 @@
 """``trex player``: a self-contained offline HTML page stepping through a run, beat by beat.
 
 ``trex player SCENE [--polygon P | --log FILE] -o DIR`` writes ``DIR/index.html`` and
-``DIR/steps/*.png`` (one picture per beat, see :mod:`metaphors.player`). SCENE is what
+``DIR/steps/*.png`` (one picture per beat, see :mod:`trex.player_steps`). SCENE is what
 ``trex render`` takes: a name from ``scenes/`` (``gravity``, ``rotation:RotationCcw``), a scene
 file, or a heuristic of one's own (``file.py:function``). The scene's algorithm, heuristic,
 default polygon, title, theme and pacing are its class attributes; a scene that plays several
 runs is refused.
 
 The run played is the one ``trex render SCENE`` would play (see
-:func:`metaphors.runs.scene_log`): ``--log FILE`` (a saved log, as ``trex log`` writes) or
+:func:`story.runs.scene_log`): ``--log FILE`` (a saved log, as ``trex log`` writes) or
 ``--polygon`` if given, else ``TREX_LOG``, else a live run on ``TREX_POLYGON`` or the scene's
 default polygon. A saved log must be of the algorithm (and heuristic) the scene plays.
 
@@ -60,7 +60,7 @@ def load_scene(scene: str) -> type:
 def read_log(path: str):
     """The saved log at ``path`` (a :class:`tracing.Log` of one run). Raises ValueError (one
     line) for a file that cannot be read or is not a trex log of a run."""
-    from metaphors.runs import saved_log
+    from story.runs import saved_log
 
     try:
         log = saved_log(path)
@@ -86,7 +86,7 @@ def _same_algorithm(plays: str, logged: str) -> bool:
 def check_log(cls: type, log, scene: str | None = None) -> None:
     """A saved log must be a run of what the scene (named ``scene``) plays and give steps
     that start with the polygon. Raises ValueError (one line)."""
-    from metaphors.storyboard import storyboard
+    from story.storyboard import storyboard
 
     logged, plays, name = log.meta["algorithm"], cls.algorithm, scene or cls.__name__
     if not _same_algorithm(plays, logged):
@@ -182,7 +182,7 @@ def player(scene: str, polygon: str | None, saved: str | None, output: str) -> N
         fail(f"{output}: {exc}")
     if log is None:
         polygon = polygon if polygon is not None else cls.polygon
-        from metaphors.runs import run_logged
+        from story.runs import run_logged
 
         try:
             log = run_logged(cls.algorithm, polygon, cls.heuristic)
@@ -211,7 +211,7 @@ def player(scene: str, polygon: str | None, saved: str | None, output: str) -> N
 
 
 def _build(cls: type, log, subtitle: str, target: Path) -> Path:
-    from metaphors.player import render_steps, write_player
+    from trex.player_steps import render_steps, write_player
 
     built = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".player",
                                   dir=target.parent))

@@ -150,7 +150,7 @@ def dry_run(cls: type, polygon: str) -> None:
     algorithm = getattr(cls, "algorithm", None)
     if not isinstance(algorithm, str) or getattr(cls, "runs", None):
         return
-    from metaphors.runs import run_logged
+    from story.runs import run_logged
 
     run_logged(algorithm, polygon, getattr(cls, "heuristic", None))
 

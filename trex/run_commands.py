@@ -155,7 +155,7 @@ def triangulate_command(polygons: tuple[str, ...], algorithm: str, heuristic: st
 @click.option("-o", "--output", required=True, metavar="FILE.json", help="Where to write the log.")
 def log_command(algorithm: str, polygon: str, heuristic: str, output: str) -> None:
     """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
-    from metaphors.runs import record_run  # geometry and tracing only: no manim
+    from story.runs import record_run  # geometry and tracing only: no manim
 
     p = load_or_exit(polygon)
     try:  # the very log a scene records for this run, so that it replays the same video

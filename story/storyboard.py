@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 
 from geometry.check import is_inner_diagonal
 from geometry.polygon import Polygon
-from metaphors.theme import ROLES
+from story.roles import ROLES
 from tracing import Event, Log
 
 #: Steps whose call and return become one metaphor beat, with the shape they animate.

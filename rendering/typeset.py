@@ -45,7 +45,10 @@ from manim.mobject.text.text_mobject import (
     TEXT_MOB_SCALE_FACTOR,
 )
 
-from metaphors.theme import THEME
+#: the face and colour of a text when the caller names none (the theme's own defaults)
+DEFAULT_FONT = "DejaVu Sans"
+DEFAULT_INK = "#e8ecf2"
+
 
 _SVG = "{http://www.w3.org/2000/svg}"
 _HREF = "{http://www.w3.org/1999/xlink}href"
@@ -78,19 +81,19 @@ class GlyphText(VGroup):
         self.original_text = original_text
 
 
-def text(string: str, *, size: float, colour: str | None = None, font: str = THEME.font,
+def text(string: str, *, size: float, colour: str | None = None, font: str = DEFAULT_FONT,
          slant: str = NORMAL, weight: str = NORMAL, width: float | None = None) -> FlatText:
     """A :class:`FlatText` of ``string`` in ``font`` at ``size`` (manim's ``font_size``), filled
     with ``colour`` (default: the theme's ink); shrunk to ``width`` if it is wider."""
     points = outline(string, font, float(size), slant, weight)
-    return _fit(FlatText(string, points.copy(), color=colour or THEME.ink), width)
+    return _fit(FlatText(string, points.copy(), color=colour or DEFAULT_INK), width)
 
 
-def glyphs(string: str, *, size: float, colour: str | None = None, font: str = THEME.font,
+def glyphs(string: str, *, size: float, colour: str | None = None, font: str = DEFAULT_FONT,
            slant: str = NORMAL, weight: str = NORMAL, width: float | None = None) -> GlyphText:
     """A :class:`GlyphText` of ``string``: for text that is written with ``Write``."""
     points, ends = _typeset(string, font, float(size), slant, weight)
-    return _fit(GlyphText(string, points.copy(), ends, colour or THEME.ink), width)
+    return _fit(GlyphText(string, points.copy(), ends, colour or DEFAULT_INK), width)
 
 
 def _fit(mobject, width: float | None):

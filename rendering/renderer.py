@@ -3,8 +3,8 @@
 Before each play manim draws every mobject the play leaves still into a static image, which
 each frame of the play starts from. In our scenes most of that is text, beneath everything
 else (see ``Board.settle``): the title and the algorithm's code, which stay all scene long,
-at :data:`~metaphors.layout.STILL_Z`, and the subtitle, call line and lit code row, which
-change once a beat (every two to four plays), at :data:`~metaphors.layout.BACKDROP_Z`.
+at :data:`~rendering.layers.STILL_Z`, and the subtitle, call line and lit code row, which
+change once a beat (every two to four plays), at :data:`~rendering.layers.BACKDROP_Z`.
 :class:`BackdropRenderer` keeps the pixels of each of those layers (drawn over the ones
 below) and draws only the rest of the still mobjects over a copy of them, as long as the
 layers are the same: the same mobjects in the same state (their drawn attributes are hashed)
@@ -23,11 +23,9 @@ from manim import Mobject
 from manim.renderer.cairo_renderer import CairoRenderer
 from manim.utils.color import ManimColor
 
-from metaphors.layout import BACKDROP_Z, STILL_Z
+from rendering.layers import LAYERS
 
 _PLAIN = (int, float, str, bool, type(None), Enum, np.generic)
-#: the z-indices of the layers kept, bottom first
-LAYERS = (STILL_Z, BACKDROP_Z)
 
 
 class BackdropRenderer(CairoRenderer):

@@ -18,7 +18,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from metaphors.storyboard import Beat
+from story.storyboard import Beat
 
 #: manim's low quality (``-ql``): 854×480.
 PIXELS = (854, 480)
