@@ -1,5 +1,6 @@
-"""Beats every algorithm shares: the polygon, a picked vertex, the triangle T, the candidates,
-the claim, the verdict (✓, or a red flash where the claim crosses an edge), notes."""
+"""The frame every run shares, performed: the polygon, a picked vertex, the triangle T, the
+candidates, the claim, the verdict (✓, or a red flash where the claim crosses an edge), notes.
+(The storyboard reads these steps itself: :mod:`story.storyboard`.)"""
 
 from __future__ import annotations
 
@@ -17,8 +18,10 @@ from manim import (
     Polygon as MPolygon,
 )
 
+from metaphors.picture import upright
 from metaphors.tags import tag
 from rendering.typeset import text
+from story.beats import Candidates, Claim, Note, Pick, ShowPolygon, ShowTriangle, Verdict
 
 
 def polygon(board, beat) -> None:
@@ -30,12 +33,12 @@ def polygon(board, beat) -> None:
 
 
 def pick(board, beat) -> None:
-    marker = board.markers[beat.data["vertex"]]
+    marker = board.markers[beat.vertex]
     board.play(beat, Indicate(marker, color=board.theme.result), run_time=1.0)
 
 
 def triangle(board, beat) -> None:
-    t = tag(MPolygon(*[board.at(p) for p in beat.data["points"]], color=board.theme.called,
+    t = tag(MPolygon(*[board.at(p) for p in beat.points], color=board.theme.called,
                      stroke_width=board.theme.thin_stroke, fill_color=board.theme.called,
                      fill_opacity=0.15), "called", "T")
     board.keep("T", t)
@@ -44,11 +47,11 @@ def triangle(board, beat) -> None:
 
 def candidates(board, beat) -> None:
     board.play(beat, *[Indicate(board.markers[c], color=board.theme.argument, scale_factor=1.4)
-                       for c in beat.data["candidates"]], run_time=1.0)
+                       for c in beat.candidates], run_time=1.0)
 
 
 def claim(board, beat) -> None:
-    u, v = beat.data["points"]
+    u, v = beat.points
     line = tag(Line(board.at(u), board.at(v), color=board.theme.result,
                     stroke_width=board.theme.stroke * 1.5), "result", "claim")
     board.keep("claim", line)
@@ -56,11 +59,18 @@ def claim(board, beat) -> None:
 
 
 def verdict(board, beat) -> None:
+    """The claim judged: a tick, or the claim red, the crossed edge and a flash at the crossing;
+    then a turned picture turns back upright (:func:`metaphors.picture.upright`)."""
+    _judged(board, beat)
+    upright(board, beat)
+
+
+def _judged(board, beat) -> None:
     line = board.objects.get("claim")
     theme = board.theme
     if "T" in board.objects:
         board.scene.play(*board.drop("T"), run_time=0.3 * beat.pace)
-    if beat.data["ok"]:
+    if beat.ok:
         mark = tag(text("✓", font=theme.font, size=48, colour=theme.result), "result", "tick")
         if line is not None:
             mark.next_to(line.get_center(), direction=[0, 1, 0], buff=0.15)
@@ -70,14 +80,14 @@ def verdict(board, beat) -> None:
     anims = []
     if line is not None:
         anims.append(line.animate.set_color(theme.rejected))
-    edge = beat.data.get("edge")
+    edge = beat.edge
     if edge:
         crossed = tag(Line(board.vertex(edge[0]), board.vertex(edge[1]), color=theme.rejected,
                            stroke_width=theme.stroke * 2.5), "rejected", f"edge:{'–'.join(edge)}")
         board.keep("crossed", crossed)
         anims.append(Create(crossed))
-    if beat.data.get("point"):
-        at = board.at(beat.data["point"])
+    if beat.point:
+        at = board.at(beat.point)
         spot = tag(Dot(at, radius=0.09, color=theme.rejected), "rejected", "crossing")
         board.keep("crossing", spot)
         anims += [FadeIn(spot), Flash(at, color=theme.rejected, flash_radius=0.5)]
@@ -96,3 +106,8 @@ def dashed(board, a, b, role: str, name: str):
     """A dashed segment between polygon points (used for lines outside the polygon)."""
     return tag(DashedLine(board.at(a), board.at(b), color=board.theme.role_colour(role),
                           stroke_width=board.theme.thin_stroke), role, name)
+
+
+READS: dict = {}  # the frame's steps are read by the storyboard itself
+PERFORMS = {ShowPolygon: polygon, Pick: pick, ShowTriangle: triangle, Candidates: candidates,
+            Claim: claim, Verdict: verdict, Note: note}

@@ -18,6 +18,16 @@ from manim import DEGREES, Circle, Dot, FadeIn, FadeOut, Line, Rotate, VGroup
 
 from metaphors.sweep import follower, light
 from metaphors.tags import tag
+from story.beats import Beat, beat_kind
+from story.storyboard import read_shape
+
+
+@beat_kind("clock")
+class Clock(Beat):
+    """The clock hand's ``states`` (heading, angle turned, the mark reached)."""
+
+    states: list
+    result: str
 
 #: Radius of the clock face (scene units); the hand reaches past the farthest mark.
 FACE_RADIUS = 0.55
@@ -42,7 +52,7 @@ def clock(board, beat) -> None:
     start vertex; it turns through the log's angles, and each mark lights as the hand passes it
     (the first green, the others amber)."""
     theme = board.theme
-    states = beat.data["states"]
+    states = beat.states
     first = states[0]
     origin, heading = first["origin"], first["heading"]
     hits = [s for s in states[1:] if "reached" in s]
@@ -103,3 +113,7 @@ def _ahead(origin, heading: float):
 
 def _unit(v) -> np.ndarray:
     return v / np.linalg.norm(v)
+
+
+READS = {"first_hit_rotating": read_shape(Clock, "hand", "The clock hand turns; the first candidate it passes is {result}")}
+PERFORMS = {Clock: clock}

@@ -6,6 +6,8 @@ Every slice, and what is left of the fruit after it, comes from the log (the bea
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from manim import (
     Create,
     Ellipse,
@@ -21,6 +23,9 @@ from manim import (
 
 from metaphors.tags import tag
 from rendering import typeset
+from story.beats import Beat, beat_kind
+from story.storyboard import Walk, call_line, call_roles, show
+from tracing import Event
 
 PLATE_Y = -2.55
 PLATE_WIDTH = 5.6
@@ -45,7 +50,7 @@ def _setup(board, beat) -> None:
     fruit = _fruit(board, board.polygon.points)
     board.keep("plate", plate)
     board.keep("fruit", fruit)
-    board.keep("counter", _counter(board, 0, beat.data.get("total", board.polygon.n - 2)))
+    board.keep("counter", _counter(board, 0, getattr(beat, "total", board.polygon.n - 2)))
     board.scene.play(Transform(board.shape, fruit), FadeIn(plate),
                      FadeIn(board.objects["counter"]), run_time=0.8 * beat.pace)
     board.scene.remove(fruit)
@@ -61,47 +66,137 @@ def _counter(board, k: int, total: int):
 
 def ear_test(board, beat) -> None:
     _setup(board, beat)
-    colour = board.theme.result if beat.data["ear"] else board.theme.rejected
-    board.play(beat, Indicate(board.markers[beat.data["vertex"]], color=colour), run_time=0.6)
+    colour = board.theme.result if beat.ear else board.theme.rejected
+    board.play(beat, Indicate(board.markers[beat.vertex], color=colour), run_time=0.6)
 
 
 def clip(board, beat) -> None:
     """The knife cuts along the ear's diagonal; the slice goes to its place on the plate."""
     _setup(board, beat)
-    theme, data = board.theme, beat.data
-    a, b, c = data["points"]
+    theme, data = board.theme, beat
+    a, b, c = data.points
     knife = tag(Line(board.at(a), board.at(c), color=theme.knife, stroke_width=theme.stroke * 2),
                 "called", "knife")
     board.play(beat, Create(knife), run_time=0.6)
     piece = tag(MPolygon(*[board.at(p) for p in (a, b, c)], color=theme.rind,
                          stroke_width=theme.thin_stroke, fill_color=theme.fruit,
-                         fill_opacity=0.9), "result", f"slice:{''.join(data['corners'])}")
+                         fill_opacity=0.9), "result", f"slice:{''.join(data.corners)}")
     target = piece.copy()
-    slot = PLATE_WIDTH / max(data["total"], 1)
+    slot = PLATE_WIDTH / max(data.total, 1)
     target.scale_to_fit_width(min(slot * 0.85, target.width)).scale_to_fit_height(
         min(0.6, target.height))
     left = board.frame.center[0] - PLATE_WIDTH / 2
-    target.move_to((left + slot * (data["k"] - 0.5), PLATE_Y, 0))
-    counter = _counter(board, data["k"], data["total"])
+    target.move_to((left + slot * (data.k - 0.5), PLATE_Y, 0))
+    counter = _counter(board, data.k, data.total)
     anims = [Transform(piece, target), FadeOut(knife),
              Transform(board.objects["counter"], counter)]
-    if data["rest"]:
-        anims.append(Transform(board.shape, _fruit(board, data["rest"])))
+    if data.rest:
+        anims.append(Transform(board.shape, _fruit(board, data.rest)))
     else:
         anims.append(FadeOut(board.shape))
     board.scene.add(piece)
     board.play(beat, *anims, run_time=1.0)
-    board.keep(f"slice:{data['k']}", piece)
+    board.keep(f"slice:{data.k}", piece)
 
 
-last_slice = clip
 
 
 def good(board, beat) -> None:
     """Prune and search: the good sub-polygon kept, tinted; the previous one fades."""
     theme = board.theme
-    region = tag(MPolygon(*[board.at(p) for p in beat.data["points"]], color=theme.called,
+    region = tag(MPolygon(*[board.at(p) for p in beat.points], color=theme.called,
                           stroke_width=theme.stroke, fill_color=theme.called,
                           fill_opacity=theme.piece_opacity), "called", "good")
     board.play(beat, *board.drop("good"), FadeIn(region), run_time=1.2)
     board.keep("good", region)
+
+
+# --- what ear clipping reads from the log --------------------------------------------------------
+
+
+@beat_kind("ear-test")
+class EarTest(Beat):
+    """Is ``vertex`` an ear (``ear``)?"""
+
+    vertex: str
+    ear: bool
+
+
+@beat_kind("clip")
+class Slice(Beat):
+    """Slice ``k`` of ``total`` cut off at ``corners``; ``rest`` is what is left of the fruit."""
+
+    corners: list[str]
+    points: list
+    k: int
+    total: int
+    rest: list
+
+
+@beat_kind("last-slice")
+class LastSlice(Slice):
+    """The triangle left over at the end: the last slice."""
+
+
+@beat_kind("good")
+class Good(Beat):
+    """Prune and search keeps a good sub-polygon (its points and labels)."""
+
+    points: list
+    labels: list[str]
+
+
+def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    v, ear = show(call.args["v"]), bool(ret.result)
+    caption = f"Is {v} an ear? " + ("yes: its triangle holds no other vertex" if ear
+                                     else "no: a cut between its neighbours is not a clean slice")
+    yield walk.beat(EarTest, caption, call, call=call_line(call, ret),
+                    roles={v: "result" if ear else "rejected"}, vertex=v, ear=ear)
+
+
+def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """A slice cut off (``clip_ear``), or at the end of the run the triangle left over."""
+    labels, points = walk.root_polygon()
+    if not labels:
+        return
+    clipped = walk.memo("fruit.clipped", list)  # the ears cut so far
+    if ret.name == "clip_ear":
+        corners = [show(r) for r in ret.result]
+        kind = Slice
+        walk.count_claim()
+    else:
+        gone = {c[1] for c in clipped}
+        corners = [x for x in labels if x not in gone]
+        if len(corners) != 3:
+            return
+        kind = LastSlice
+    clipped.append(corners)
+    yield walk.beat(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
+                    call, call=call_line(call, ret), roles=call_roles(call, ret),
+                    **_slice(corners, labels, points, clipped))
+
+
+def _slice(corners, labels, points, clipped) -> dict:
+    where = dict(zip(labels, points, strict=True))
+    gone = {c[1] for c in clipped[:-1]}
+    return {
+        "corners": corners,
+        "points": [where[c] for c in corners],
+        "k": len(clipped),
+        "total": len(labels) - 2,
+        # what is left of the fruit once this slice is off (empty after the last one)
+        "rest": [where[x] for x in labels if x not in gone | {corners[1]}]
+        if len(clipped) < len(labels) - 2 else [],
+    }
+
+
+def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    state = walk.entered_after(ret, ret.result["ref"])
+    yield walk.beat(Good, "A good sub-polygon: one cut edge, about half the vertices; "
+                    "its middle vertex is tested next", call, call=call_line(call, ret),
+                    roles=call_roles(call, ret), points=state["points"], labels=state["labels"])
+
+
+READS = {"is_ear": read_ear_test, "clip_ear": read_clip, "ear-clipping": read_clip,
+         "ear-clipping-naive": read_clip, "good_subpolygon": read_good}
+PERFORMS = {EarTest: ear_test, Slice: clip, LastSlice: clip, Good: good}

@@ -5,16 +5,12 @@ triangle, candidates, claim, verdict):
 
 - ``call``: a traced function of the user's returned; the panel shows its call line, the
   vertices (and shapes) it used are coloured by role;
-- ``shape``: a shape entered, changed or exited (``data``: ``key``, ``event`` and the
-  ``state`` from the log). Points (``at``), segments (``points`` or ``ends``), polygons
+- ``shape``: a shape entered, changed or exited (``key``, ``event`` and the ``state``
+  from the log). Points (``at``), segments (``points`` or ``ends``), polygons
   (``points``), circles (``center``, ``radius``), lines (``through`` + ``direction``, or two
   ``points``), rays (``origin`` + ``heading`` in degrees, or ``origin`` + ``through``) and
   texts (``at``, ``text``) are drawn in polygon coordinates, coloured by their role (the
   state's ``role`` if it names one, else amber: in play). Other kinds play as a caption.
-
-:func:`scene_for_heuristic` makes the Scene that ``trex render`` renders for
-``file.py:function``; :func:`board_for` builds the board a log plays on (the panel shows the
-user's own source, carried in the log's meta).
 """
 
 from __future__ import annotations
@@ -22,42 +18,18 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from manim import Circle, Create, Dot, FadeIn, Line, Scene, Transform, VGroup
+from manim import Circle, Create, Dot, FadeIn, Line, Transform, VGroup
 from manim import Polygon as MPolygon
 
-from metaphors.board import Board
 from metaphors.layout import METAPHOR
 from metaphors.tags import tag
 from rendering import typeset
+from story.beats import Call, ShapeChange
 from story.roles import ROLES
 
 #: Kinds the generic performer draws.
 DRAWN_KINDS = ("point", "segment", "polygon", "circle", "line", "ray", "text")
 _PREFIX = "shape:"
-
-
-# --- the board ---------------------------------------------------------------------------------
-
-
-def board_for(scene: Scene, log, beats, title: str, theme) -> Board:
-    """The board a log plays on, as :class:`~metaphors.scene.TraceScene` builds it (the first
-    beat's polygon, the scene's ``metaphor_box``), plus the log's own ``code`` (a user's source,
-    ``[[line, text], …]``) in the panel when it carries one, and the title fitted to the frame."""
-    first = beats[0]
-    board = Board(scene, first.data["points"], first.data["labels"], log.meta.get("shown"),
-                  title, theme, getattr(scene, "metaphor_box", METAPHOR))
-    code = log.meta.get("code")
-    if code:
-        show_code(board.panel, code)
-    if board.title.width > 13.4:
-        board.title.scale_to_fit_width(13.4)
-    return board
-
-
-def show_code(panel, code) -> None:
-    """Put the given (line number, text) rows in the panel's code block (before it is shown)."""
-    panel.code_lines = tuple((int(number), str(text)) for number, text in code)
-    panel.code = panel._code_block()
 
 
 # --- performers --------------------------------------------------------------------------------
@@ -70,7 +42,7 @@ def call(board, beat) -> None:
 
 def shape(board, beat) -> None:
     """A shape appears (drawn), changes (morphs) or goes (fades)."""
-    key, event, state = beat.data["key"], beat.data["event"], beat.data.get("state")
+    key, event, state = beat.key, beat.event, beat.state
     name = _PREFIX + key
     old = board.objects.get(name)
     anims = _recolour_shapes(board, {k: r for k, r in beat.roles.items() if k != key})
@@ -222,50 +194,5 @@ def clip_to_box(a, b, both_ways: bool, box=METAPHOR):
     return a + low * d, a + high * d
 
 
-# --- the scene of a user's heuristic --------------------------------------------------------------
-
-
-def scene_for_heuristic(spec: str) -> type[Scene]:
-    """The Scene class for ``path/to/file.py:name``.
-
-    If ``name`` is a Scene class defined in the file, that class; otherwise ``name`` is a
-    heuristic of one's own (see :mod:`geometry.user_heuristics`), loaded now so that a bad
-    spec fails here, and the class plays its run on ``TREX_POLYGON`` (default: the
-    counterexample) with the generic panel. Raises
-    :class:`geometry.user_heuristics.UserHeuristicError` (a ValueError, one-line message).
-    """
-    from geometry.user_heuristics import as_heuristic, load_attribute
-
-    path, name, value = load_attribute(spec)
-    if isinstance(value, type) and issubclass(value, Scene):
-        return value
-    return heuristic_scene(as_heuristic(spec, path, name, value))
-
-
-def heuristic_scene(heuristic) -> type[Scene]:
-    """A TraceScene subclass that plays a loaded user heuristic's run."""
-    from metaphors.scene import TraceScene
-
-    return type(f"Heuristic_{heuristic.name}", (GenericScene, TraceScene), {
-        "algorithm": heuristic.spec,
-        "heuristic": None,
-        "polygon": "counterexample",
-        "title": heuristic.title,
-        "__module__": __name__,
-        "__doc__": f"The run of {heuristic.spec}, played with the generic panel.",
-    })
-
-
-class GenericScene:
-    """Mixed into a TraceScene: plays its log on :func:`board_for` (the user's source shown);
-    keeps the beats and the board (``trex_beats``, ``trex_board``) for tests."""
-
-    def play_log(self, log, title: str) -> Board:
-        from metaphors.actions import perform
-
-        beats = self.beats(log)
-        board = board_for(self, log, beats, title, self.theme)
-        self.trex_beats, self.trex_board = beats, board
-        for beat in beats:
-            perform(board, beat)
-        return board
+READS: dict = {}  # the storyboard reads a user's calls and shapes itself
+PERFORMS = {Call: call, ShapeChange: shape}

@@ -22,6 +22,7 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import triangulate
+from metaphors import catalog
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
 from metaphors.scene import TraceScene
@@ -30,7 +31,7 @@ from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
 from story.runs import run_logged
-from story.storyboard import Pacing, storyboard
+from story.storyboard import Pacing
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
@@ -167,7 +168,7 @@ class LectureScene(TraceScene):
         self.wait(0.8)
 
     def beats(self, log):
-        return [replace(b, pace=b.pace * self.speed) for b in storyboard(log, self.pacing)]
+        return [replace(b, pace=b.pace * self.speed) for b in catalog.beats(log, self.pacing)]
 
     def play_compare(self, compare: Compare) -> None:
         polygon = read_polygon(compare.polygon or lecture_polygon())

@@ -6,11 +6,16 @@ Positions, kinds, diagonals, pieces and triangles come from the log (the beats' 
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from manim import Create, DashedLine, FadeIn, FadeOut, Indicate, Line, Transform
 from manim import Polygon as MPolygon
 
 from metaphors.tags import tag
 from rendering.typeset import text
+from story.beats import Beat, beat_kind
+from story.storyboard import Walk, call_line, call_roles, show
+from tracing import Event
 
 
 def _sweep_line(board, y: float):
@@ -23,13 +28,13 @@ def _sweep_line(board, y: float):
 
 def classify(board, beat) -> None:
     """The sweep line reaches a vertex; the vertex shows its kind."""
-    theme, data = board.theme, beat.data
-    line = _sweep_line(board, data["at"][1])
-    kind = tag(text(data["kind"], font=theme.font, size=18,
-                    colour=theme.rejected if data["kind"] in ("split", "merge") else theme.called),
+    theme, data = board.theme, beat
+    line = _sweep_line(board, data.at[1])
+    kind = tag(text(data.kind, font=theme.font, size=18,
+                    colour=theme.rejected if data.kind in ("split", "merge") else theme.called),
                None, "kind")
-    kind.next_to(board.markers[data["vertex"]], direction=[1, 0, 0], buff=0.1)
-    anims = [FadeIn(kind), Indicate(board.markers[data["vertex"]])]
+    kind.next_to(board.markers[data.vertex], direction=[1, 0, 0], buff=0.1)
+    anims = [FadeIn(kind), Indicate(board.markers[data.vertex])]
     if "sweep" in board.objects:
         anims.append(Transform(board.objects["sweep"], line))
     else:
@@ -40,18 +45,18 @@ def classify(board, beat) -> None:
 
 
 def monotone_diagonal(board, beat) -> None:
-    u, w = beat.data["points"]
+    u, w = beat.points
     line = tag(Line(board.at(u), board.at(w), color=board.theme.argument,
                     stroke_width=board.theme.stroke * 1.3), "argument",
-               f"diagonal:{''.join(beat.data['labels'])}")
-    board.keep(f"diagonal:{''.join(beat.data['labels'])}", line)
+               f"diagonal:{''.join(beat.labels)}")
+    board.keep(f"diagonal:{''.join(beat.labels)}", line)
     board.play(beat, Create(line), run_time=1.0)
 
 
 def pieces(board, beat) -> None:
     theme = board.theme
     tints = []
-    for k, points in enumerate(beat.data["pieces"]):
+    for k, points in enumerate(beat.pieces):
         colour = theme.pieces[k % len(theme.pieces)]
         tint = tag(MPolygon(*[board.at(p) for p in points], color=colour, stroke_width=1,
                             fill_color=colour, fill_opacity=theme.piece_opacity), None,
@@ -64,9 +69,90 @@ def pieces(board, beat) -> None:
 def stack(board, beat) -> None:
     theme = board.theme
     drawn = []
-    for k, triangle in enumerate(beat.data["triangles"]):
+    for k, triangle in enumerate(beat.triangles):
         t = tag(MPolygon(*[board.at(p) for p in triangle], color=theme.ink,
                          stroke_width=theme.thin_stroke, fill_opacity=0), None, "triangle")
         board.keep(f"triangle:{beat.step}:{k}", t)
         drawn.append(Create(t))
     board.play(beat, *drawn, run_time=1.0)
+
+
+# --- what the monotone triangulation reads from the log ------------------------------------------
+
+KINDS = {
+    "start": "both neighbours below, interior below: a start vertex",
+    "end": "both neighbours above, interior above: an end vertex",
+    "split": "both neighbours below, interior above: a split vertex needs a diagonal up",
+    "merge": "both neighbours above, interior below: a merge vertex needs a diagonal down",
+    "regular": "one neighbour above, one below: a regular vertex",
+}
+
+
+@beat_kind("classify")
+class Classify(Beat):
+    """The sweep reaches ``vertex`` (at ``at``): its ``kind`` (start, end, split, merge …)."""
+
+    vertex: str
+    kind: str
+    at: list
+
+
+@beat_kind("monotone-diagonal")
+class MonotoneDiagonal(Beat):
+    """A diagonal that removes a split or merge vertex."""
+
+    labels: list[str]
+    points: list
+
+
+@beat_kind("pieces")
+class Pieces(Beat):
+    """The y-monotone pieces (their points)."""
+
+    pieces: list
+
+
+@beat_kind("stack")
+class Stack(Beat):
+    """The triangles the stack cuts from one monotone piece."""
+
+    triangles: list
+
+
+def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    v, kind = show(call.args["v"]), ret.result
+    yield walk.beat(Classify, f"{v}: {KINDS.get(kind, kind)}", call, call=call_line(call, ret),
+                    roles={v: "rejected" if kind in ("split", "merge") else "called"},
+                    vertex=v, kind=kind, at=walk.root_points()[v])
+
+
+def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    where = walk.root_points()
+    labels = list(where)
+    u, w = (labels[k] for k in ret.result)
+    walk.count_claim()
+    yield walk.beat(MonotoneDiagonal, f"Diagonal {u}{w} removes a split or merge vertex", call,
+                    call=call_line(call, ret), roles=call_roles(call, ret), labels=[u, w],
+                    points=[where[u], where[w]])
+
+
+def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    pieces = [walk.entered_after(call, r["ref"]) for r in ret.result]
+    yield walk.beat(Pieces, f"The diagonals cut the polygon into {len(pieces)} y-monotone "
+                    "pieces", call, call=call_line(call, ret), roles=call_roles(call, ret),
+                    pieces=[p.get("points", []) for p in pieces])
+
+
+def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    where = walk.root_points()
+    labels = list(where)
+    triangles = [[where[labels[k]] for k in t] for t in ret.result]
+    yield walk.beat(Stack, f"The stack triangulates a monotone piece: "
+                    f"{len(triangles)} triangle{'s' if len(triangles) != 1 else ''}", call,
+                    call=call_line(call, ret), roles=call_roles(call, ret), triangles=triangles)
+
+
+READS = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,
+         "monotone_pieces": read_pieces, "triangulate_monotone_piece": read_stack}
+PERFORMS = {Classify: classify, MonotoneDiagonal: monotone_diagonal, Pieces: pieces,
+            Stack: stack}

@@ -12,6 +12,7 @@ from manim import (
     VGroup,
 )
 
+from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.layout import PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON
 from metaphors.pseudocode import source_of
@@ -26,8 +27,6 @@ class Panel:
     the animations that bring it up to date with a beat (roles; lit line and call line)."""
 
     def __init__(self, points, labels, shown: str | None, theme: Theme = THEME):
-        from geometry.polygon import Polygon
-
         self.theme = theme
         polygon = Polygon(tuple(map(tuple, points)), tuple(labels), tuple(range(len(labels))))
         self.frame = Frame(polygon.points, PANEL_POLYGON.center, PANEL_POLYGON.width,
@@ -45,6 +44,12 @@ class Panel:
         self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
         self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         self.roles: dict[str, str] = {}
+
+    def show_code(self, code) -> None:
+        """Show these (line number, text) rows instead (before the panel is on screen): a
+        heuristic of one's own carries its source in its log."""
+        self.code_lines = tuple((int(number), str(text)) for number, text in code)
+        self.code = self._code_block()
 
     def mobjects(self) -> list:
         return [self.outline, *self.markers.values(), self.code, self.call]

@@ -14,16 +14,19 @@ from types import MappingProxyType
 from manim import DOWN, FadeIn, FadeOut, Scene, VGroup, config
 from manim.constants import RendererType
 
-from metaphors.actions import perform
+from geometry.user_heuristics import UserHeuristic, as_heuristic, load_attribute
+from metaphors import catalog
 from metaphors.board import Board
 from metaphors.layout import METAPHOR
+from metaphors.play import board_for, play_beats
 from metaphors.tags import tag
 from metaphors.theme import THEME
 from rendering.camera import PathCamera
 from rendering.renderer import BackdropRenderer
 from rendering.typeset import text
+from story.beats import Beat
 from story.runs import run_logged, scene_log
-from story.storyboard import Beat, Pacing, storyboard
+from story.storyboard import Pacing
 from tracing import Log
 
 
@@ -53,18 +56,14 @@ class TraceScene(Scene):
         self.wait(1.0)
 
     def beats(self, log) -> list[Beat]:
-        return storyboard(log, self.pacing)
+        return catalog.beats(log, self.pacing)
 
     def play_log(self, log, title: str) -> Board:
-        """Turn one log into beats and play them on a fresh board."""
-        beats = self.beats(log)
-        first = beats[0]
-        board = Board(self, first.data["points"], first.data["labels"], log.meta.get("shown"),
-                      title, self.theme, self.metaphor_box)
-        for beat in beats:
-            perform(board, beat)
-        board.close()
-        return board
+        """Turn one log into beats and play them on a fresh board (both kept, as
+        ``trex_beats`` and ``trex_board``, for tests)."""
+        self.trex_beats = self.beats(log)
+        self.trex_board = board_for(self, log, self.trex_beats, title, self.theme)
+        return play_beats(self.trex_board, self.trex_beats)
 
 
 class SequenceScene(TraceScene):
@@ -84,7 +83,7 @@ class SequenceScene(TraceScene):
     card_time = 0.8
 
     def beats(self, log) -> list[Beat]:
-        return [replace(b, pace=self.paces.get(b.action, self.pace)) for b in storyboard(log)]
+        return [replace(b, pace=self.paces.get(b.action, self.pace)) for b in catalog.beats(log)]
 
     def logs(self) -> list[Log]:
         saved = os.environ.get("TREX_LOG")
@@ -117,3 +116,33 @@ class SequenceScene(TraceScene):
         self.play(FadeIn(card), run_time=0.25)
         self.wait(self.card_time - 0.5)
         self.play(FadeOut(card), run_time=0.25)
+
+
+# --- the scene of a heuristic of one's own -------------------------------------------------------
+
+
+def scene_for_heuristic(spec: str) -> type[Scene]:
+    """The Scene class for ``path/to/file.py:name``.
+
+    If ``name`` is a Scene class defined in the file, that class; otherwise ``name`` is a
+    heuristic of one's own (see :mod:`geometry.user_heuristics`), loaded now so that a bad
+    spec fails here, and the class plays its run on ``TREX_POLYGON`` (default: the
+    counterexample) with the user's source in the panel. Raises
+    :class:`geometry.user_heuristics.UserHeuristicError` (a ValueError, one-line message).
+    """
+    path, name, value = load_attribute(spec)
+    if isinstance(value, type) and issubclass(value, Scene):
+        return value
+    return heuristic_scene(as_heuristic(spec, path, name, value))
+
+
+def heuristic_scene(heuristic: UserHeuristic) -> type[Scene]:
+    """A TraceScene subclass that plays a loaded user heuristic's run."""
+    return type(f"Heuristic_{heuristic.name}", (TraceScene,), {
+        "algorithm": heuristic.spec,
+        "heuristic": None,
+        "polygon": "counterexample",
+        "title": heuristic.title,
+        "__module__": __name__,
+        "__doc__": f"The run of {heuristic.spec}, played with the user's source in the panel.",
+    })

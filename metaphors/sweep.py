@@ -33,6 +33,17 @@ from manim import (
 from metaphors.layout import METAPHOR
 from metaphors.tags import tag
 from rendering.typeset import text
+from story.beats import Beat, beat_kind
+from story.storyboard import read_shape
+
+
+@beat_kind("sweep")
+class Sweep(Beat):
+    """The sweeping line's ``states`` (through, direction, offset, the vertex reached)."""
+
+    states: list
+    result: str
+
 
 #: How far inside/outside counts as "on the boundary" (scene units).
 EPS = 1e-6
@@ -233,7 +244,7 @@ def _3d(p) -> np.ndarray:
 def sweep(board, beat) -> None:
     """The line starts through B and moves across T by the log's offsets; each candidate lights
     when the line reaches it (the first green, the others amber)."""
-    states = beat.data["states"]
+    states = beat.states
     first = states[0]
     through, direction = first["through"], first["direction"]
     hits = [s for s in states[1:] if "reached" in s]
@@ -283,3 +294,7 @@ def _cut(start, end, box):
     if cut.is_empty or cut.geom_type != "LineString":
         return start, start
     return _3d(cut.coords[0]), _3d(cut.coords[-1])
+
+
+READS = {"first_hit_sweeping": read_shape(Sweep, "sweep", "The line sweeps across T; the first candidate it touches is {result}")}
+PERFORMS = {Sweep: sweep}

@@ -12,6 +12,41 @@ from manim import Polygon as MPolygon
 
 from geometry.visibility import visible_region
 from metaphors.tags import tag
+from story.beats import Beat, beat_kind
+from story.storyboard import Walk, read_shape, show
+from tracing import Event
+
+
+@beat_kind("water")
+class Water(Beat):
+    """Water spilled at B: the disk's ``states`` (centre, radius, the vertex it reached)."""
+
+    states: list
+    result: str
+
+
+@beat_kind("walled-water")
+class WalledWater(Beat):
+    """Water that respects the walls; ``visible`` pairs each vertex reached with whether B
+    sees it."""
+
+    states: list
+    result: str
+    visible: list
+
+
+@beat_kind("flood")
+class Flood(Beat):
+    """Water rising from the shore AC: the band's ``states`` (level, the vertex it reached)."""
+
+    states: list
+    result: str
+
+
+def _visible(walk: Walk, call: Event, ret: Event) -> dict:
+    inside = walk.log.events[call.seq:ret.seq]
+    sees = [e for e in inside if e.kind == "call" and e.name == "sees"]
+    return {"visible": [(show(s.args["v"]), bool(walk.returns[s.seq].result)) for s in sees]}
 
 
 def _disk(board, center, radius: float):
@@ -22,7 +57,7 @@ def _disk(board, center, radius: float):
 
 def water(board, beat) -> None:
     """The disk grows through each radius in turn; the first vertex it wets is the pick."""
-    states = beat.data["states"]
+    states = beat.states
     disk = _disk(board, states[0]["center"], 0.0)
     board.play(beat, FadeIn(disk), run_time=0.5)
     for k, state in enumerate(states[1:]):
@@ -35,12 +70,12 @@ def water(board, beat) -> None:
 
 def walled_water(board, beat) -> None:
     """The disk clipped to what B sees: water that cannot flow through walls."""
-    states = beat.data["states"]
+    states = beat.states
     centre = states[0]["center"]
     region = visible_region(board.polygon, board.polygon.points.index(tuple(centre)))
     disk = tag(MPolygon(board.at(centre), board.at(centre)), "argument", "water")
     board.play(beat, FadeIn(disk), run_time=0.3)
-    visible = dict(beat.data.get("visible", []))
+    visible = dict(beat.visible)
     for state in states[1:]:
         clipped = region.intersection(shapely.Point(centre).buffer(state["radius"], 64))
         grown = _region_mobject(board, clipped)
@@ -64,7 +99,7 @@ def _region_mobject(board, geometry):
 def flood(board, beat) -> None:
     """A band of water rises from AC towards B; each candidate goes under in turn, the last
     one still dry is the pick."""
-    states = beat.data["states"]
+    states = beat.states
     a, c = states[0]["shore"]
     towards = states[0]["towards"]
     triangle = shapely.Polygon([a, c, towards])
@@ -96,3 +131,14 @@ def _strip(a, c, towards, level: float):
         (a[0] - ux, a[1] - uy), (a[0] + ux, a[1] + uy),
         (a[0] + ux + nx * level, a[1] + uy + ny * level), (a[0] - ux + nx * level, a[1] - uy + ny * level),
     ])
+
+
+READS = {
+    "nearest_to": read_shape(
+        Water, "water", "Water spilled at B spreads; the first candidate it wets is {result}"),
+    "nearest_visible": read_shape(
+        WalledWater, "water", "Water that respects the walls reaches {result} first", _visible),
+    "last_dry": read_shape(
+        Flood, "flood", "Water rises from the shore AC; the last dry candidate is {result}"),
+}
+PERFORMS = {Water: water, WalledWater: walled_water, Flood: flood}

@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from metaphors.catalog import beats as storyboard
 from story.runs import run_logged
-from story.storyboard import storyboard
 from trex import player_steps as player_module
 from trex.cli import main
 

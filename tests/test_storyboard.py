@@ -3,8 +3,8 @@
 import pytest
 
 import tracing
+from metaphors.catalog import beats as storyboard
 from story.runs import run_logged
-from story.storyboard import storyboard
 
 RUNS = [
     ("scaling", "counterexample", None),

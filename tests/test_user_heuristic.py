@@ -13,8 +13,8 @@ from click.testing import CliRunner
 import tracing
 from geometry.io import read_polygon
 from geometry.user_heuristics import UserHeuristicError, load_user_heuristic
+from metaphors.catalog import beats as storyboard
 from story.runs import run_logged
-from story.storyboard import storyboard
 from trex.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -79,7 +79,7 @@ def test_builtin_logs_get_no_generic_beats():
 def _dry_render(spec: str, polygon: str | None, monkeypatch):
     from manim import tempconfig
 
-    from metaphors.generic import scene_for_heuristic
+    from metaphors.scene import scene_for_heuristic
 
     monkeypatch.delenv("TREX_LOG", raising=False)
     if polygon is None:
@@ -125,7 +125,7 @@ def test_scene_plays_the_generic_beats(polygon, ok, monkeypatch):
 
 
 def test_scene_for_heuristic_errors_and_scene_classes(tmp_path):
-    from metaphors.generic import scene_for_heuristic
+    from metaphors.scene import scene_for_heuristic
 
     with pytest.raises(UserHeuristicError, match="no such file"):
         scene_for_heuristic(f"{tmp_path}/missing.py:f")

@@ -39,7 +39,7 @@ EXIT_FAILED = 1
 def load_scene(scene: str) -> type:
     """The TraceScene subclass SCENE names (imports manim). Raises ValueError (one line)."""
     if ".py:" in scene:
-        from metaphors.generic import scene_for_heuristic
+        from metaphors.scene import scene_for_heuristic
 
         cls = scene_for_heuristic(scene)
     else:
@@ -86,7 +86,7 @@ def _same_algorithm(plays: str, logged: str) -> bool:
 def check_log(cls: type, log, scene: str | None = None) -> None:
     """A saved log must be a run of what the scene (named ``scene``) plays and give steps
     that start with the polygon. Raises ValueError (one line)."""
-    from story.storyboard import storyboard
+    from metaphors.catalog import beats as storyboard
 
     logged, plays, name = log.meta["algorithm"], cls.algorithm, scene or cls.__name__
     if not _same_algorithm(plays, logged):

@@ -18,7 +18,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from story.storyboard import Beat
+from story.beats import Beat
 
 #: manim's low quality (``-ql``): 854×480.
 PIXELS = (854, 480)
@@ -49,8 +49,7 @@ def render_steps(scene_class: type, log, folder: Path, pixels: tuple[int, int] =
     """
     from manim import tempconfig
 
-    from metaphors.actions import perform
-    from metaphors.generic import board_for
+    from metaphors.play import board_for, play_beats
 
     out = folder / STEPS_DIR
     out.mkdir(parents=True, exist_ok=True)
@@ -68,15 +67,17 @@ def render_steps(scene_class: type, log, folder: Path, pixels: tuple[int, int] =
             beats: list[Beat] = scene.beats(log)
             board = board_for(scene, log, beats, scene.title, scene.theme)
             digits = max(3, len(str(len(beats))))
-            steps, call = [], None
-            for k, beat in enumerate(beats, start=1):
-                perform(board, beat)
+            steps: list[Step] = []
+
+            def picture(k: int, beat: Beat) -> None:
                 name = f"{k:0{digits}d}.png"
                 _snapshot(scene).save(out / name)
-                call = beat.call if beat.call is not None else call
+                call = beat.call if beat.call is not None else (steps[-1].call if steps else None)
                 steps.append(Step(f"{STEPS_DIR}/{name}", beat.caption, call, beat.action))
                 if progress is not None:
                     progress(k, len(beats))
+
+            play_beats(board, beats, after=picture)
     return steps
 
 

@@ -349,7 +349,7 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
             fmt: str, quality: str, signals: Signals) -> None:
     try:
         if ".py:" in scene:  # the file's Scene class, or a heuristic of one's own
-            from metaphors.generic import scene_for_heuristic
+            from metaphors.scene import scene_for_heuristic
 
             cls = scene_for_heuristic(scene)
         else:

@@ -1,0 +1,48 @@
+"""The one play loop: a log's beats played on a board, for scenes, the user's panel and the
+step player alike.
+
+:func:`board_for` builds the board a log plays on (the first beat's polygon, the scene's
+metaphor box; the log's own ``code`` in the panel when it carries one: a user's source) and
+:func:`play_beats` performs every beat on it, then closes the board (the last caption's cue
+lasts until the run ends).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from manim import Scene
+
+from metaphors.board import Board
+from metaphors.catalog import perform
+from metaphors.layout import METAPHOR
+from story.beats import Beat
+from tracing import Log
+
+#: widest title (scene units) before it is shrunk to fit the frame
+TITLE_WIDTH = 13.4
+
+
+def board_for(scene: Scene, log: Log, beats: Sequence[Beat], title: str, theme) -> Board:
+    """The board a log plays on."""
+    first = beats[0]
+    board = Board(scene, first.points, first.labels, log.meta.get("shown"), title, theme,
+                  getattr(scene, "metaphor_box", METAPHOR))
+    code = log.meta.get("code")
+    if code:
+        board.panel.show_code(code)
+    if board.title.width > TITLE_WIDTH:
+        board.title.scale_to_fit_width(TITLE_WIDTH)
+    return board
+
+
+def play_beats(board: Board, beats: Sequence[Beat],
+               after: Callable[[int, Beat], None] | None = None) -> Board:
+    """Perform each beat on the board (``after(k, beat)`` once each is played, k from 1),
+    then close it."""
+    for k, beat in enumerate(beats, start=1):
+        perform(board, beat)
+        if after is not None:
+            after(k, beat)
+    board.close()
+    return board

@@ -1,0 +1,136 @@
+"""Beats: what each moment of a video shows, as typed plain data.
+
+A beat has what every moment has — its caption, the step of the log it comes from, the call
+line and the line of the shown code lit, the roles of the objects (called, argument, result,
+rejected, idle) and its pace — and the fields of its own kind: a water beat the states of the
+growing disk, a verdict whether the claim holds and the edge it crosses. Each kind is a
+frozen dataclass; ``action`` names the kind (the player, the snapshots and a scene's paces
+read it). This module has the kinds every run shares (the heuristics' frame, the claim and
+its verdict, notes, and the generic beats of a heuristic of one's own); a metaphor module
+declares its own kinds beside the performers that play them.
+
+>>> beat = Pick(caption="B is the left-most vertex", step=3, vertex="B")
+>>> beat.action, beat.to_dict()["data"]
+('pick', {'vertex': 'B'})
+>>> from dataclasses import replace
+>>> replace(beat, pace=0.5).pace
+0.5
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, fields
+from typing import Any, ClassVar
+
+#: the fields every beat has; the others are its kind's ``data``
+COMMON = ("caption", "step", "call", "line", "roles", "pace")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Beat:
+    """What every moment has. Subclasses add the fields of their kind."""
+
+    action: ClassVar[str] = "note"
+    caption: str
+    step: int
+    call: str | None = None
+    line: int | None = None
+    roles: dict[str, str] = field(default_factory=dict)
+    pace: float = 1.0
+
+    @property
+    def data(self) -> dict[str, Any]:
+        """The fields of this kind of beat, by name."""
+        return {f.name: getattr(self, f.name) for f in fields(self) if f.name not in COMMON}
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"action": self.action, "caption": self.caption, "step": self.step,
+                "call": self.call, "line": self.line, "roles": self.roles, "data": self.data,
+                "pace": self.pace}
+
+
+def beat_kind(action: str):
+    """Declare a kind of beat: a frozen, keyword-only dataclass named ``action``."""
+
+    def declare(cls: type) -> type:
+        cls.action = action
+        return dataclass(frozen=True, kw_only=True)(cls)
+
+    return declare
+
+
+# --- the frame every run shares --------------------------------------------------------------
+
+
+@beat_kind("polygon")
+class ShowPolygon(Beat):
+    """The polygon appears: its points and labels."""
+
+    points: list
+    labels: list[str]
+
+
+@beat_kind("pick")
+class Pick(Beat):
+    """A vertex is picked (the left-most one, a reflex one …)."""
+
+    vertex: str
+
+
+@beat_kind("triangle")
+class ShowTriangle(Beat):
+    """T = ABC, the triangle of the heuristics' frame."""
+
+    points: list
+    labels: list[str]
+
+
+@beat_kind("candidates")
+class Candidates(Beat):
+    """The vertices inside T."""
+
+    candidates: list[str]
+
+
+@beat_kind("claim")
+class Claim(Beat):
+    """A heuristic claims the diagonal between two labels."""
+
+    labels: list[str]
+    points: list
+
+
+@beat_kind("verdict")
+class Verdict(Beat):
+    """The claim judged exactly: ``ok``, or why not — the crossed ``edge`` and ``point``."""
+
+    ok: bool
+    labels: list[str]
+    why: str
+    code: str
+    point: list | None = None
+    edge: list[str] | None = None
+
+
+@beat_kind("note")
+class Note(Beat):
+    """A caption only; ``details`` are the note's own fields from the log, if any."""
+
+    details: dict = field(default_factory=dict)
+
+
+# --- a heuristic of one's own -------------------------------------------------------------------
+
+
+@beat_kind("call")
+class Call(Beat):
+    """A traced function of the user's returned: its call line and roles say it all."""
+
+
+@beat_kind("shape")
+class ShapeChange(Beat):
+    """A shape of the user's appears, changes or goes (``state`` None)."""
+
+    key: str
+    event: str
+    state: dict | None = None
