@@ -52,6 +52,7 @@ from pathlib import Path
 from typing import Any
 
 import tracing
+from geometry.diagonals import find_diagonal
 from geometry.frame import Diagonal, claim
 from geometry.polygon import Polygon, Vertex
 from tracing.recorder import ACTIVE_RECORDER
@@ -208,8 +209,6 @@ def run_heuristic(polygon: Polygon, heuristic: str | UserHeuristic) -> Diagonal:
         return heuristic.run(polygon)
     if is_user_spec(heuristic):
         return load_user_heuristic(heuristic).run(polygon)
-    from geometry.diagonals import find_diagonal
-
     return find_diagonal(polygon, heuristic)
 
 
