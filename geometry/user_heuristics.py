@@ -6,7 +6,8 @@ indices (``polygon.points[i]``), labels (``"B"``) or :class:`~geometry.polygon.V
 objects. It may use the shared logger (``@tracing.traced`` on its helpers,
 ``tracing.Shape`` for what it wants drawn); :func:`load_user_heuristic` wraps it so that,
 like the built-in heuristics, the whole run is one traced call named after the function
-and its answer is entered into the log by :func:`geometry.frame.claim`.
+and its answer is entered into the log by :func:`geometry.frame.claim`, stated
+(``tracing.at_line``) on the line of the function's ``return``, which the panel then lights.
 
 Every problem is a :class:`UserHeuristicError` (a ``ValueError``) with a one-line message:
 a missing file, a syntax error in it, a missing or non-callable function, an exception the
@@ -45,16 +46,15 @@ import operator
 import sys
 import textwrap
 import traceback
-import types
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import tracing
+from geometry.diagonals import find_diagonal
 from geometry.frame import Diagonal, claim
 from geometry.polygon import Polygon, Vertex
-from tracing.recorder import ACTIVE_RECORDER
 
 __all__ = [
     "UserHeuristic",
@@ -208,8 +208,6 @@ def run_heuristic(polygon: Polygon, heuristic: str | UserHeuristic) -> Diagonal:
         return heuristic.run(polygon)
     if is_user_spec(heuristic):
         return load_user_heuristic(heuristic).run(polygon)
-    from geometry.diagonals import find_diagonal
-
     return find_diagonal(polygon, heuristic)
 
 
@@ -280,71 +278,43 @@ def _line_in(exc: BaseException, path: Path) -> int | None:
 
 
 def _wrap(raw: Callable[[Polygon], Any], name: str, path: Path) -> Callable[[Polygon], Diagonal]:
-    """The traced run of the user's function: its answer claimed (entered into the log)."""
+    """The traced run of the user's function: its answer claimed (entered into the log) on the
+    line of the user's ``return`` (see :func:`_return_line`), so the panel lights that line
+    for the claim and its verdict as it does for our heuristics."""
+    returns, span = _returns_of(raw)
 
     def heuristic(polygon: Polygon) -> Diagonal:
-        recorder = ACTIVE_RECORDER.get()
-        start = len(recorder.events) if recorder is not None else 0
+        start = len(tracing.events_so_far())
         try:
-            if recorder is None:
-                answer, line = raw(polygon), None
-            else:
-                answer, line = _call_noting_return(raw, polygon)
+            answer = raw(polygon)
         except Exception as exc:
             line = _line_in(exc, path)
             where = f" ({path.name}, line {line})" if line else ""
             raise UserHeuristicError(
                 f"{name} raised {type(exc).__name__}: {_message(exc)}{where}") from None
         u, v = endpoints(polygon, answer, name)
-        if recorder is not None and _claimed(recorder.events[start:], f"{u.label}{v.label}"):
+        logged = tracing.events_so_far()[start:]
+        if _claimed(logged, f"{u.label}{v.label}"):
             return Diagonal(u, v)  # it called claim() itself: the log has it already
-        return _claim_at(path, line, u, v)
+        with tracing.at_line(_return_line(returns, span, logged)):
+            return claim(u, v)
 
     heuristic.__name__ = heuristic.__qualname__ = name
     heuristic.__doc__ = raw.__doc__
     return tracing.traced(name=name)(heuristic)
 
 
-def _call_noting_return(raw: Callable[[Polygon], Any], polygon: Polygon) -> tuple[Any, int | None]:
-    """Call ``raw(polygon)``; also return the line of the ``return`` statement it left by
-    (None when that cannot be known).
-
-    A line tracer follows the function's own frame only, and only while no other tracer (a
-    debugger, coverage) is installed; the lines it reports that start a ``return`` statement
-    are kept (after a ``return`` inside ``with`` blocks, the blocks' exits run on their lines).
-    """
-    code = getattr(raw, "__code__", None)
-    returns = _return_lines(raw)
-    if code is None or not returns or sys.gettrace() is not None:
-        return raw(polygon), None
-    seen: list[int] = []
-
-    def local(frame, event, _arg):
-        if event == "line" and frame.f_lineno in returns:
-            seen.append(frame.f_lineno)
-        return local
-
-    def start(frame, _event, _arg):
-        return local if frame.f_code is code else None
-
-    sys.settrace(start)
-    try:
-        answer = raw(polygon)
-    finally:
-        sys.settrace(None)
-    return answer, (seen[-1] if seen else None)
-
-
-def _return_lines(function: Callable[..., Any]) -> frozenset[int]:
-    """File lines where the function's own ``return`` statements start (not nested ones)."""
+def _returns_of(function: Callable[..., Any]) -> tuple[tuple[int, ...], range]:
+    """File lines where the function's own ``return`` statements start (not nested ones), in
+    order, and the range of the function's lines; nothing when its source cannot be read."""
     try:
         lines, first = inspect.getsourcelines(function)
         tree = ast.parse(textwrap.dedent("".join(lines)))
     except (OSError, TypeError, SyntaxError, ValueError):
-        return frozenset()
+        return (), range(0)
     defs = [n for n in tree.body if isinstance(n, ast.FunctionDef | ast.AsyncFunctionDef)]
     if not defs:
-        return frozenset()
+        return (), range(0)
     found, todo = set(), list(defs[0].body)
     while todo:
         node = todo.pop()
@@ -352,23 +322,40 @@ def _return_lines(function: Callable[..., Any]) -> frozenset[int]:
             found.add(node.lineno + first - 1)
         if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda | ast.ClassDef):
             todo.extend(ast.iter_child_nodes(node))
-    return frozenset(found)
+    return tuple(sorted(found)), range(first, first + len(lines))
 
 
-def _claim_from(u: Vertex, v: Vertex) -> Diagonal:
-    return claim(u, v)
+def _return_line(
+    returns: tuple[int, ...], span: range, logged: Sequence[tracing.Event]
+) -> int | None:
+    """The line of the ``return`` the function left by, as far as its source and the events
+    it logged tell (``None``: no return statement to name).
 
+    Which return ran is not in the log, and we do not trace the user's lines. With one
+    ``return``, that one. With several, the first at or below the last line of the function
+    that logged something itself (a traced call, a shape, a note: the run's shallowest
+    events; not the exit of a ``with``, which carries the ``with`` line), else the last one.
+    That is right for an early return after a check (the example's ``if not candidates``);
+    it is a guess when a loop with a ``return`` in it runs out, or when the function logs
+    nothing. A function that returns ``claim(u, v)`` itself has its line recorded exactly.
 
-def _claim_at(path: Path, line: int | None, u: Vertex, v: Vertex) -> Diagonal:
-    """``claim(u, v)``, recorded as made on ``line`` of the user's file (their ``return``), so
-    the panel lights that line for the claim and its verdict as it does for our heuristics.
-
-    The call comes from a copy of :func:`_claim_from` whose code is moved to that line.
+    >>> from tracing import Event
+    >>> logged = [Event(5, "call", "candidates", line=28, depth=1, call=5),
+    ...           Event(6, "return", "candidates", line=28, depth=1, call=5),
+    ...           Event(7, "exit", "polygon", "T(ABC)", line=27, depth=1, call=1)]
+    >>> _return_line((30, 39), range(23, 40), logged), _return_line((30, 39), range(23, 40), [])
+    (30, 39)
     """
-    if line is None or line < 2:
-        return claim(u, v)
-    code = _claim_from.__code__.replace(co_firstlineno=line - 1, co_filename=str(path))
-    return types.FunctionType(code, _claim_from.__globals__)(u, v)
+    if len(returns) < 2:
+        return returns[0] if returns else None
+    depth = min((e.depth for e in logged), default=0)
+    lines = [e.line for e in logged
+             if e.depth == depth and e.kind != "exit" and e.line is not None and e.line in span]
+    if lines:
+        below = [line for line in returns if line >= lines[-1]]
+        if below:
+            return below[0]
+    return returns[-1]
 
 
 def _claimed(events, key: str) -> bool:

@@ -3,6 +3,7 @@ panel (dry run), checked through `trex diagonal`; bad specs are one line and exi
 
 import json
 import os
+import sys
 import tempfile
 import textwrap
 from pathlib import Path
@@ -65,6 +66,68 @@ def test_storyboard_generic_beats_light_the_users_lines():
     code = dict((line, text.strip()) for line, text in log.meta["code"])
     assert code[beats[-1].line] == "return b, best"  # the claim lights the user's return
     assert beats[-1].data["ok"] is True
+
+
+def test_the_claim_lights_the_return_the_run_left_by():
+    # square: no candidate in T, so the example leaves by its early return
+    log = run_logged(EXAMPLE, "square")
+    code = dict((line, text.strip()) for line, text in log.meta["code"])
+    assert code[storyboard(log)[-1].line] == "return t.a, t.c"
+    claims = log.find(name="claim")
+    assert [e.kind for e in claims] == ["call", "return"]
+    assert {code.get(e.line) for e in claims} == {"return t.a, t.c"}
+
+
+def test_the_log_is_the_same_under_a_debugger_or_coverage():
+    def tracer(frame, event, arg):
+        return None
+
+    plain = run_logged(EXAMPLE, "counterexample")
+    previous = sys.gettrace()
+    sys.settrace(tracer)
+    try:
+        traced = run_logged(EXAMPLE, "counterexample")
+    finally:
+        sys.settrace(previous)
+    assert traced.to_json() == plain.to_json()
+
+
+def test_several_returns_one_return_and_none_to_name(tmp_path):
+    path = write(tmp_path, "returns.py", """
+        from geometry.frame import leftmost_vertex
+
+        def single(polygon):
+            b = leftmost_vertex(polygon)
+            return b.index, (b.index + 2) % polygon.n
+
+        def checked(polygon):
+            b = leftmost_vertex(polygon)
+            if polygon.n > 4:
+                return b.index, (b.index + 2) % polygon.n
+            b = leftmost_vertex(polygon)
+            return b.index, (b.index + 2) % polygon.n
+    """)
+    lines = Path(path).read_text().splitlines()
+    for name, polygon, expected in [("single", "counterexample", 6),
+                                    ("checked", "counterexample", 11),
+                                    ("checked", "square", 13)]:
+        heuristic = load_user_heuristic(f"{path}:{name}")
+        with tracing.record() as log:
+            heuristic.run(read_polygon(polygon))
+        assert [e.line for e in log.find(name="claim")] == [expected] * 2, (name, polygon)
+        assert lines[expected - 1].strip().startswith("return ")
+    # a callable without source of its own: no return to name, the claim is still made once
+    partial = write(tmp_path, "partial.py", """
+        import functools
+
+        def pair(first, polygon):
+            return first, 3
+
+        f = functools.partial(pair, 1)
+    """)
+    with tracing.record() as log:
+        diagonal = load_user_heuristic(f"{partial}:f").run(read_polygon("counterexample"))
+    assert diagonal.name == "BD" and len(log.find(kind="call", name="claim")) == 1
 
 
 def test_builtin_logs_get_no_generic_beats():

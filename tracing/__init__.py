@@ -4,7 +4,9 @@ Standard library only. Open a recording with :func:`record`; decorate the algori
 functions with :func:`traced` and classes with :func:`traced_class`; make the objects
 to draw :class:`Traceable` (or use :class:`Shape`) and mark their lifetimes with
 :func:`enter` / :func:`change` / :func:`exit` or ``with``. With no recording open,
-all of it is a cheap no-op. The log format is described in ``docs/log-format.md``.
+all of it is a cheap no-op. :func:`events_so_far` reads the log so far and ``with
+at_line(n):`` states the line of the events made in it, for code that records on behalf
+of someone else's function. The log format is described in ``docs/log-format.md``.
 
 Examples
 --------
@@ -24,7 +26,17 @@ True
 from tracing.decorators import traced, traced_class
 from tracing.encoding import Traceable, encode
 from tracing.events import EVENT_KINDS, SCHEMA, Event, Log
-from tracing.recorder import Recording, alive, change, enter, exit, note, record
+from tracing.recorder import (
+    Recording,
+    alive,
+    at_line,
+    change,
+    enter,
+    events_so_far,
+    exit,
+    note,
+    record,
+)
 from tracing.shapes import SHAPE_KINDS, Shape
 
 __all__ = [
@@ -37,9 +49,11 @@ __all__ = [
     "Shape",
     "Traceable",
     "alive",
+    "at_line",
     "change",
     "encode",
     "enter",
+    "events_so_far",
     "exit",
     "note",
     "record",

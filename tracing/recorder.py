@@ -4,6 +4,10 @@ A recording is opened with ``with record(...) as log``. The open recorder lives 
 :class:`contextvars.ContextVar`, so recordings in different threads or tasks never
 mix, and an inner ``record()`` takes the events until it closes. When no recording
 is open, every function here is a no-op that costs one ``ContextVar.get``.
+
+Code that calls on someone else's behalf (a wrapper around a user's function) can
+read the events so far with :func:`events_so_far` and state the line its events belong to
+with ``with at_line(n):``.
 """
 
 from __future__ import annotations
@@ -13,16 +17,18 @@ from contextvars import ContextVar, Token
 from typing import Any
 
 from tracing.encoding import Traceable, encode
-from tracing.events import Log, new_event
+from tracing.events import Event, Log, new_event
 
 __all__ = [
     "ACTIVE_RECORDER",
     "Recorder",
     "Recording",
     "alive",
+    "at_line",
     "caller_line",
     "change",
     "enter",
+    "events_so_far",
     "exit",
     "note",
     "record",
@@ -115,6 +121,52 @@ class Recorder:
         self.add("exit", name, obj.trace_key, line)
 
 
+class _StatedLine(Recorder):
+    """A recorder sharing ``base``'s events and open calls that writes ``line`` into the
+    events at ``base``'s current depth (see :class:`at_line`); deeper events keep theirs.
+
+    Examples
+    --------
+    >>> base = Recorder(Log())
+    >>> stated = _StatedLine(base, 30)
+    >>> seq = stated.open_call("claim", None, {}, line=7)
+    >>> stated.add("enter", "segment", "BE", line=95)
+    >>> stated.close_call(seq, "claim", None, None, line=7)
+    >>> [(e.kind, e.line, e.depth) for e in base.events]
+    [('call', 30, 0), ('enter', 95, 1), ('return', 30, 0)]
+    """
+
+    __slots__ = ("depth", "line")
+
+    def __init__(self, base: Recorder, line: int) -> None:
+        self.events, self.open_calls, self.kinds = base.events, base.open_calls, base.kinds
+        self.depth = len(base.open_calls)
+        self.line = line
+
+    def open_call(self, name: str, target: str | None, args: dict[str, Any], line: int) -> int:
+        if len(self.open_calls) == self.depth:
+            line = self.line
+        return super().open_call(name, target, args, line)
+
+    def close_call(self, seq: int, name: str, target: str | None, result: Any, line: int) -> None:
+        if self.events[seq].depth == self.depth:  # a call made in the block
+            line = self.line
+        super().close_call(seq, name, target, result, line)
+
+    def add(
+        self,
+        kind: str,
+        name: str,
+        target: str | None,
+        line: int,
+        args: dict[str, Any] | None = None,
+        state: dict[str, Any] | None = None,
+    ) -> None:
+        if len(self.open_calls) == self.depth:
+            line = self.line
+        super().add(kind, name, target, line, args, state)
+
+
 #: The recorder of the innermost open recording in this context, if any.
 ACTIVE_RECORDER: ContextVar[Recorder | None] = ContextVar("tracing_recorder", default=None)
 
@@ -164,6 +216,84 @@ def record(**meta: Any) -> Recording:
     (['outer'], ['inner'])
     """
     return Recording(meta)
+
+
+def events_so_far() -> tuple[Event, ...]:
+    """Return the events recorded so far by the innermost open recording.
+
+    A snapshot: a tuple, which later events do not change. Code that runs inside a
+    recording it did not open (a wrapper around someone else's function) reads the log
+    with it; whoever opened the recording has the :class:`Log` itself.
+
+    Returns
+    -------
+    tuple of Event
+        The events in order (``events_so_far()[i].seq == i``); empty when no recording is open.
+
+    Examples
+    --------
+    >>> events_so_far()  # no recording open
+    ()
+    >>> with record() as log:
+    ...     note("first")
+    ...     seen = events_so_far()
+    ...     note("second")
+    >>> [e.name for e in seen], len(log.events)
+    (['first'], 2)
+    """
+    recorder = ACTIVE_RECORDER.get()
+    return () if recorder is None else tuple(recorder.events)
+
+
+class at_line:
+    """State the source line of the events recorded in the ``with`` block.
+
+    Every event recorded at the depth where the block opens gets ``line`` instead of the
+    line it would have: the call and return of a traced function called in the block,
+    and an enter/change/exit/note made in the block. Events inside those calls keep their
+    own lines. For code that calls on someone else's behalf: a wrapper that makes a call
+    for the function it wraps states the line of that function the call belongs to.
+
+    Parameters
+    ----------
+    line : int or None
+        The line to record; ``None`` states nothing (the events keep their lines).
+
+    Examples
+    --------
+    >>> import tracing
+    >>> @tracing.traced
+    ... def pick(x):
+    ...     note("inside")
+    ...     return x
+    >>> with record() as log:
+    ...     with at_line(40):
+    ...         pick(1)
+    ...         note("after")
+    1
+    >>> [(e.kind, e.name, e.line) for e in log.events]
+    [('call', 'pick', 40), ('note', 'inside', 3), ('return', 'pick', 40), ('note', 'after', 40)]
+    >>> with record() as log, at_line(None):
+    ...     note("unstated")
+    >>> log.events[0].line
+    2
+    """
+
+    __slots__ = ("_token", "line")
+
+    def __init__(self, line: int | None) -> None:
+        self.line = line
+        self._token: Token[Recorder | None] | None = None
+
+    def __enter__(self) -> None:
+        recorder = ACTIVE_RECORDER.get()
+        if recorder is not None and self.line is not None:
+            self._token = ACTIVE_RECORDER.set(_StatedLine(recorder, self.line))
+
+    def __exit__(self, *exc_info: object) -> None:
+        if self._token is not None:
+            ACTIVE_RECORDER.reset(self._token)
+            self._token = None
 
 
 def caller_line(skip: int = 0) -> int:
