@@ -11,10 +11,7 @@ from __future__ import annotations
 
 import bisect
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any
-
-if TYPE_CHECKING:
-    from tracing.events import Event
+from typing import Any, Protocol
 
 __all__ = ["CHECKPOINT_EVERY", "LiveStates", "apply_event"]
 
@@ -22,6 +19,14 @@ __all__ = ["CHECKPOINT_EVERY", "LiveStates", "apply_event"]
 CHECKPOINT_EVERY = 256
 
 States = dict[str, dict[str, Any]]
+
+
+class Event(Protocol):
+    """What replaying needs of a :class:`tracing.events.Event` (which imports this module)."""
+
+    kind: str
+    target: str | None
+    state: dict[str, Any] | None
 
 
 def apply_event(live: States, event: Event) -> None:
