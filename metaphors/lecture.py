@@ -17,7 +17,6 @@ from manim import DOWN, LEFT, UP, Create, Dot, FadeIn, FadeOut, Line, VGroup, Wr
 from geometry.cdt import constrained_delaunay
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
-from geometry.exercises import Exercise, make_exercises
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
@@ -29,6 +28,8 @@ from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
+from story.exercises import Exercise, make_exercises
+from story.registry import entry
 from story.runs import run_logged
 from story.storyboard import Pacing, storyboard
 
@@ -83,7 +84,7 @@ class Compare:
 
 @dataclass(frozen=True)
 class Quiz:
-    """Exercises from :func:`geometry.exercises.make_exercises`: ask, count down, answer."""
+    """Exercises from :func:`story.exercises.make_exercises`: ask, count down, answer."""
 
     count: int = 3
     seed: int = 2022
@@ -244,8 +245,10 @@ class LectureScene(TraceScene):
 
 # --- the chapters ---------------------------------------------------------------------------------
 
+#: The wrong heuristic of each metaphor, told in three cards: the metaphor, why it fails, and
+#: why its correction (the registry's) holds. The family is named after the metaphor.
 FAMILIES = (
-    ("Water", "scaling", "scaling-correct",
+    ("scaling",
      ("Spill water at B: it spreads as a growing circle.",
       "The first candidate it wets is D, the nearest one."),
      ("The circle grows through the walls of the polygon:",
@@ -254,7 +257,7 @@ FAMILIES = (
      ("Go backwards: let water rise from the shore AC towards B.",
       "The last dry candidate is the farthest from AC — always an inner diagonal:",
       "below that level nothing blocks the way from B.")),
-    ("Clock", "rotation", "rotation-correct",
+    ("rotation",
      ("Put a clock at B, set the hand to A and let it turn towards C.",
       "The first candidate the hand passes is D."),
      ("Part of the hand lies outside the polygon when it passes D:",
@@ -262,7 +265,7 @@ FAMILIES = (
      ("Move the clock to C and set it to B.",
       "Before any part of the hand inside T leaves the polygon, it must pass a vertex:",
       "the first one forms an inner diagonal with B.")),
-    ("Sweep", "translation", "translation-correct",
+    ("translation",
      ("Sweep a vertical line from B to the right.",
       "The first candidate it touches is D, the left-most."),
      ("The vertical line leaves the polygon at A's side before it reaches D:",
@@ -274,7 +277,11 @@ FAMILIES = (
 
 
 def family_segments(family: tuple) -> tuple:
-    name, wrong, right, metaphor, analysis, correction = family
+    wrong, metaphor, analysis, correction = family
+    known = entry(wrong)
+    if known.correct or known.correction is None:
+        raise ValueError(f"{wrong} is no wrong heuristic with a correction")
+    name, right = known.metaphor.capitalize(), known.correction
     return (
         Card(f"{name}: the metaphor", metaphor),
         Run(wrong, working_example(wrong), f"{wrong} on a polygon where it happens to work"),

@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 
 from geometry.check import is_inner_diagonal
 from geometry.polygon import Polygon
+from story.registry import heuristics
 from story.roles import ROLES
 from tracing import Event, Log
 
@@ -250,8 +251,8 @@ def _beats_for(walk: _Walk, e: Event) -> Iterator[Beat]:
 
 
 _HEURISTIC_NAMES = {
-    "scaling", "rotation", "rotation-ccw", "translation", "translation-correct",
-    "scaling-correct", "rotation-correct", "scaling-walled", "gravity", "sweep_at", "gravity_at",
+    *heuristics(),
+    "sweep_at", "gravity_at",  # traced heuristics at a given vertex (prune and search, gravity)
 }
 
 

@@ -34,8 +34,9 @@ from manim import Scene, tempconfig
 from syrupy.extensions.single_file import SingleFileSnapshotExtension, WriteMode
 
 from geometry.check import is_inner_diagonal
-from geometry.diagonals import WRONG, find_diagonal
+from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
+from story.registry import entry, wrong
 from trex.scene_graph import build_graph, environment
 
 SCENES_DIR = Path(__file__).resolve().parents[1] / "scenes"
@@ -43,13 +44,8 @@ SCENES_DIR = Path(__file__).resolve().parents[1] / "scenes"
 #: A scene's default input: no saved log, no polygon override.
 DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
 
-#: The polygon on which each wrong heuristic fails (thesis ch. 2.1; DESIGN.md).
-COUNTEREXAMPLES = {
-    "scaling": "counterexample",
-    "rotation": "counterexample",
-    "translation": "counterexample",
-    "rotation-ccw": "counterexample-twin",
-}
+#: The polygon on which each wrong heuristic fails (thesis ch. 2.1; DESIGN.md): its default.
+COUNTEREXAMPLES = {name: entry(name).polygon for name in wrong()}
 
 
 #: A scene playing more animations than this is rebuilt for (b) and (c) only with --runslow.
@@ -253,7 +249,7 @@ def _expected_crossed_edge(heuristic: str, polygon_name: str) -> str:
     return "–".join(polygon.labels[k] for k in verdict.edge)
 
 
-@pytest.mark.parametrize("heuristic", WRONG)
+@pytest.mark.parametrize("heuristic", wrong())
 def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
     polygon = COUNTEREXAMPLES[heuristic]
     cases = _single_run_scenes(heuristic)
