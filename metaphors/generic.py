@@ -230,8 +230,8 @@ def scene_for_heuristic(spec: str) -> type[Scene]:
 
     If ``name`` is a Scene class defined in the file, that class; otherwise ``name`` is a
     heuristic of one's own (see :mod:`geometry.user_heuristics`), loaded now so that a bad
-    spec fails here, and the class plays its run on ``TREX_POLYGON`` (default: the
-    counterexample) with the generic panel. Raises
+    spec fails here, and the class plays its run on the polygon it is handed (plain
+    ``manim``: ``TREX_POLYGON``; default: the counterexample) with the generic panel. Raises
     :class:`geometry.user_heuristics.UserHeuristicError` (a ValueError, one-line message).
     """
     from geometry.user_heuristics import as_heuristic, load_attribute

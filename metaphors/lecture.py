@@ -9,7 +9,6 @@ parallel) and joins them.
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass, replace
 
 from manim import DOWN, LEFT, UP, Create, Dot, FadeIn, FadeOut, Line, VGroup, Write
@@ -31,6 +30,7 @@ from rendering.typeset import FlatText
 from story.exercises import Exercise, make_exercises
 from story.registry import entry
 from story.runs import run_logged
+from story.spec import RunSpec
 from story.storyboard import Pacing, storyboard
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
@@ -61,7 +61,7 @@ class Card:
 class Run:
     """An algorithm run on a polygon, played by the metaphor scenes.
 
-    ``polygon`` None: the lecture's polygon (``TREX_POLYGON``, else ``lecture``).
+    ``polygon`` None: the lecture's polygon (:meth:`LectureScene.lecture_polygon`).
     """
 
     algorithm: str
@@ -71,6 +71,10 @@ class Run:
     box: Box = METAPHOR
     pacing: Pacing = DEFAULT_PACING
     speed: float = 0.8  # × every beat's run time
+
+    def spec(self, lecture_polygon: str) -> RunSpec:
+        """The run this segment plays: on its own polygon, else on the lecture's."""
+        return RunSpec(self.algorithm, self.polygon or lecture_polygon, heuristic=self.heuristic)
 
 
 @dataclass(frozen=True)
@@ -89,11 +93,6 @@ class Quiz:
     count: int = 3
     seed: int = 2022
     think: int = 3  # seconds of countdown
-
-
-def lecture_polygon() -> str:
-    """The polygon the lecture's own runs use: ``TREX_POLYGON``, else the ``lecture`` sample."""
-    return os.environ.get("TREX_POLYGON", "lecture")
 
 
 def working_example(heuristic: str, n: int = 9, tries: int = 500) -> str:
@@ -120,9 +119,15 @@ class LectureScene(TraceScene):
 
     chapter_title = "Chapter"
     slug = "overview"
+    polygon = "lecture"  # the lecture's polygon, unless one is handed (trex lecture --polygon)
 
     def chapter_segments(self) -> tuple:
         return SEGMENTS[self.slug]()
+
+    def lecture_polygon(self) -> str:
+        """The polygon of the runs that name none: the handed one, else ``TREX_POLYGON``
+        (plain ``manim``), else the ``lecture`` sample."""
+        return self.run_spec().polygon
 
     def construct(self) -> None:
         self.camera.background_color = self.theme.background
@@ -160,7 +165,7 @@ class LectureScene(TraceScene):
         self.wait(max(0.5, card.seconds - 0.8 - 0.5 * len(lines)))
 
     def play_run(self, run: Run) -> None:
-        log = run_logged(run.algorithm, run.polygon or lecture_polygon(), run.heuristic)
+        log = run.spec(self.lecture_polygon()).log()
         self.metaphor_box = run.box
         self.pacing = run.pacing
         self.speed = run.speed
@@ -171,7 +176,7 @@ class LectureScene(TraceScene):
         return [replace(b, pace=b.pace * self.speed) for b in storyboard(log, self.pacing)]
 
     def play_compare(self, compare: Compare) -> None:
-        polygon = read_polygon(compare.polygon or lecture_polygon())
+        polygon = read_polygon(compare.polygon or self.lecture_polygon())
         ours = triangulate(polygon, compare.ours).triangles
         sides = ((-3.6, compare.ours, ours), (3.6, "constrained Delaunay (shapely)",
                                               constrained_delaunay(polygon)))

@@ -1,7 +1,7 @@
 """Run an algorithm on a polygon under a recording: the computation that sits beside a scene.
 
-No manim here. A scene asks for a log; it gets one from a live run or from a saved JSON file,
-and cannot tell the difference.
+No manim here. A scene asks for a log (:meth:`story.spec.RunSpec.log`); it gets one from a
+live run or from a saved JSON file, and cannot tell the difference.
 
 >>> log = run_logged("scaling", "counterexample")
 >>> log.meta["algorithm"], log.meta["shown"]
@@ -9,8 +9,6 @@ and cannot tell the difference.
 """
 
 from __future__ import annotations
-
-import os
 
 import tracing
 from geometry.io import read_polygon
@@ -67,12 +65,3 @@ def _run_user(spec: str, polygon: str) -> tracing.Log:
     with tracing.record(**meta) as log:
         heuristic.run(p)
     return log
-
-
-def scene_log(algorithm: str, default_polygon: str, heuristic: str | None = None) -> tracing.Log:
-    """The log a scene plays: ``TREX_LOG`` (a saved JSON log) wins, else a live run on
-    ``TREX_POLYGON`` (a file or sample name), else on the scene's default polygon."""
-    saved = os.environ.get("TREX_LOG")
-    if saved:
-        return saved_log(saved)
-    return run_logged(algorithm, os.environ.get("TREX_POLYGON", default_polygon), heuristic)
