@@ -48,12 +48,10 @@ import manim  # noqa: E402
 from manim import RED, Scene, Square, tempconfig  # noqa: E402
 
 from rendering import typeset  # noqa: E402
-from trex.scene_graph import build, environment, scene_graph  # noqa: E402
+from trex.scene_graph import build, scene_graph  # noqa: E402
 
 #: The scene rendered.
 SCENE_FILE, SCENE_NAME = "gravity", "Gravity"
-#: A scene's default input: no saved log, no polygon override.
-DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
 
 
 # --- scenes ----------------------------------------------------------------------------------------
@@ -78,8 +76,13 @@ def all_scenes() -> list[tuple[str, type[Scene]]]:
         for name, value in sorted(vars(module).items()):
             if (inspect.isclass(value) and issubclass(value, Scene)
                     and value.__module__ == module.__name__):
-                found.append((f"{path.stem}.{name}", value))
+                found.append((f"{path.stem}.{name}", handed(value)))
     return found
+
+
+def handed(cls: type[Scene]) -> type[Scene]:
+    """The scene handed its default run (whatever TREX_POLYGON and TREX_LOG say)."""
+    return cls.handed() if callable(getattr(cls, "handed", None)) else cls
 
 
 #: Our own animation classes, and the manim class the bare scene plays for each: a Turn
@@ -168,7 +171,7 @@ def render(cls: type[Scene], media: Path, caching: bool) -> Run:
     log.addHandler(counter)
     typeset.forget()  # typeset every text again, as a fresh process would
     try:
-        with environment(DEFAULT_ENV), tempconfig(settings):
+        with tempconfig(settings):
             start, cpu, main = time.perf_counter(), time.process_time(), time.thread_time()
             cls().render()
             wall = time.perf_counter() - start
@@ -200,8 +203,8 @@ def main(argv: list[str] | None = None) -> None:
     logging.getLogger("manim").setLevel(logging.INFO)
     scratch = Path(tempfile.mkdtemp(prefix="trex-bench-render-"))
     try:
-        ours_cls = getattr(load_module(SCENE_FILE), SCENE_NAME)
-        scene, plays = build(ours_cls, DEFAULT_ENV)
+        ours_cls = handed(getattr(load_module(SCENE_FILE), SCENE_NAME))
+        scene, plays = build(ours_cls)
         graph = scene_graph(plays, scene)["plays"]
         bare_cls, stand_ins = bare_scene(graph)
         kinds = sorted({a["type"] for p in graph for a in p["animations"]})
@@ -235,7 +238,7 @@ def main(argv: list[str] | None = None) -> None:
             total = 0.0
             for name, cls in all_scenes():
                 start = time.perf_counter()
-                build(cls, DEFAULT_ENV)
+                build(cls)
                 total += time.perf_counter() - start
                 print(f"  {name:38s}{time.perf_counter() - start:7.2f}")
             print(f"  {'all scenes':38s}{total:7.2f}")

@@ -251,11 +251,7 @@ HEURISTICS: dict[str, Callable[[Polygon], Diagonal]] = {
     name: _named(name, _triangle_heuristic(_pick(pick))) for name, pick in _PICKS.items()
 }
 HEURISTICS["gravity"] = gravity
-
-CORRECT = (
-    "translation-correct", "scaling-correct", "rotation-correct", "scaling-walled", "gravity"
-)
-WRONG = ("scaling", "rotation", "rotation-ccw", "translation")
+# Which of them are correct, their metaphors and titles: story.registry (geometry runs them).
 
 
 def find_diagonal(polygon: Polygon, heuristic: str) -> Diagonal:

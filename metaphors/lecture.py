@@ -9,7 +9,6 @@ parallel) and joins them.
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass, replace
 
 from manim import DOWN, LEFT, UP, Create, Dot, FadeIn, FadeOut, Line, VGroup, Write
@@ -17,7 +16,6 @@ from manim import DOWN, LEFT, UP, Create, Dot, FadeIn, FadeOut, Line, VGroup, Wr
 from geometry.cdt import constrained_delaunay
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
-from geometry.exercises import Exercise, make_exercises
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
@@ -30,7 +28,10 @@ from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
+from story.exercises import Exercise, make_exercises
+from story.registry import entry
 from story.runs import run_logged
+from story.spec import RunSpec
 from story.storyboard import Pacing
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
@@ -61,7 +62,7 @@ class Card:
 class Run:
     """An algorithm run on a polygon, played by the metaphor scenes.
 
-    ``polygon`` None: the lecture's polygon (``TREX_POLYGON``, else ``lecture``).
+    ``polygon`` None: the lecture's polygon (:meth:`LectureScene.lecture_polygon`).
     """
 
     algorithm: str
@@ -71,6 +72,10 @@ class Run:
     box: Box = METAPHOR
     pacing: Pacing = DEFAULT_PACING
     speed: float = 0.8  # × every beat's run time
+
+    def spec(self, lecture_polygon: str) -> RunSpec:
+        """The run this segment plays: on its own polygon, else on the lecture's."""
+        return RunSpec(self.algorithm, self.polygon or lecture_polygon, heuristic=self.heuristic)
 
 
 @dataclass(frozen=True)
@@ -84,16 +89,11 @@ class Compare:
 
 @dataclass(frozen=True)
 class Quiz:
-    """Exercises from :func:`geometry.exercises.make_exercises`: ask, count down, answer."""
+    """Exercises from :func:`story.exercises.make_exercises`: ask, count down, answer."""
 
     count: int = 3
     seed: int = 2022
     think: int = 3  # seconds of countdown
-
-
-def lecture_polygon() -> str:
-    """The polygon the lecture's own runs use: ``TREX_POLYGON``, else the ``lecture`` sample."""
-    return os.environ.get("TREX_POLYGON", "lecture")
 
 
 def working_example(heuristic: str, n: int = 9, tries: int = 500) -> str:
@@ -120,9 +120,15 @@ class LectureScene(TraceScene):
 
     chapter_title = "Chapter"
     slug = "overview"
+    polygon = "lecture"  # the lecture's polygon, unless one is handed (trex lecture --polygon)
 
     def chapter_segments(self) -> tuple:
         return SEGMENTS[self.slug]()
+
+    def lecture_polygon(self) -> str:
+        """The polygon of the runs that name none: the handed one, else ``TREX_POLYGON``
+        (plain ``manim``), else the ``lecture`` sample."""
+        return self.run_spec().polygon
 
     def construct(self) -> None:
         self.camera.background_color = self.theme.background
@@ -160,7 +166,7 @@ class LectureScene(TraceScene):
         self.wait(max(0.5, card.seconds - 0.8 - 0.5 * len(lines)))
 
     def play_run(self, run: Run) -> None:
-        log = run_logged(run.algorithm, run.polygon or lecture_polygon(), run.heuristic)
+        log = run.spec(self.lecture_polygon()).log()
         self.metaphor_box = run.box
         self.pacing = run.pacing
         self.speed = run.speed
@@ -171,7 +177,7 @@ class LectureScene(TraceScene):
         return [replace(b, pace=b.pace * self.speed) for b in catalog.beats(log, self.pacing)]
 
     def play_compare(self, compare: Compare) -> None:
-        polygon = read_polygon(compare.polygon or lecture_polygon())
+        polygon = read_polygon(compare.polygon or self.lecture_polygon())
         ours = triangulate(polygon, compare.ours).triangles
         sides = ((-3.6, compare.ours, ours), (3.6, "constrained Delaunay (shapely)",
                                               constrained_delaunay(polygon)))
@@ -245,8 +251,10 @@ class LectureScene(TraceScene):
 
 # --- the chapters ---------------------------------------------------------------------------------
 
+#: The wrong heuristic of each metaphor, told in three cards: the metaphor, why it fails, and
+#: why its correction (the registry's) holds. The family is named after the metaphor.
 FAMILIES = (
-    ("Water", "scaling", "scaling-correct",
+    ("scaling",
      ("Spill water at B: it spreads as a growing circle.",
       "The first candidate it wets is D, the nearest one."),
      ("The circle grows through the walls of the polygon:",
@@ -255,7 +263,7 @@ FAMILIES = (
      ("Go backwards: let water rise from the shore AC towards B.",
       "The last dry candidate is the farthest from AC — always an inner diagonal:",
       "below that level nothing blocks the way from B.")),
-    ("Clock", "rotation", "rotation-correct",
+    ("rotation",
      ("Put a clock at B, set the hand to A and let it turn towards C.",
       "The first candidate the hand passes is D."),
      ("Part of the hand lies outside the polygon when it passes D:",
@@ -263,7 +271,7 @@ FAMILIES = (
      ("Move the clock to C and set it to B.",
       "Before any part of the hand inside T leaves the polygon, it must pass a vertex:",
       "the first one forms an inner diagonal with B.")),
-    ("Sweep", "translation", "translation-correct",
+    ("translation",
      ("Sweep a vertical line from B to the right.",
       "The first candidate it touches is D, the left-most."),
      ("The vertical line leaves the polygon at A's side before it reaches D:",
@@ -275,7 +283,11 @@ FAMILIES = (
 
 
 def family_segments(family: tuple) -> tuple:
-    name, wrong, right, metaphor, analysis, correction = family
+    wrong, metaphor, analysis, correction = family
+    known = entry(wrong)
+    if known.correct or known.correction is None:
+        raise ValueError(f"{wrong} is no wrong heuristic with a correction")
+    name, right = known.metaphor.capitalize(), known.correction
     return (
         Card(f"{name}: the metaphor", metaphor),
         Run(wrong, working_example(wrong), f"{wrong} on a polygon where it happens to work"),

@@ -1,13 +1,18 @@
 """The Scene every video derives from: a function of (log, theme, pacing).
 
-A subclass names its algorithm, default polygon and title; ``construct`` gets the log (a live
-run, or ``TREX_LOG``), turns it into beats and plays them on a board. The scene never
-re-decides what the algorithm decided.
+A subclass names its algorithm, default polygon and title; ``construct`` gets the log of
+its run (:class:`story.spec.RunSpec`: a live run, or a saved log), turns it into beats and
+plays them on a board. The scene never re-decides what the algorithm decided.
+
+The run is handed to the scene class as data: ``Scaling.handed(polygon="star")`` (or
+``with_spec(spec)``) is a subclass carrying its ``spec``; ``trex`` and the tests play
+those. A scene handed nothing (``manim -pql scenes/scaling.py``) plays its default run,
+with ``TREX_POLYGON`` and ``TREX_LOG`` from the environment (:mod:`story.environment`).
 """
 
 from __future__ import annotations
 
-import os
+from collections.abc import Sequence
 from dataclasses import replace
 from types import MappingProxyType
 
@@ -25,12 +30,64 @@ from rendering.camera import PathCamera
 from rendering.renderer import BackdropRenderer
 from rendering.typeset import text
 from story.beats import Beat
-from story.runs import run_logged, scene_log
+from story.environment import spec_from_environment, specs_from_environment
+from story.spec import RunSpec
 from story.storyboard import Pacing
 from tracing import Log
 
 
-class TraceScene(Scene):
+def _subclass(cls: type, **attributes) -> type:
+    """A subclass of ``cls`` with the same name (manim names its files after it) carrying
+    ``attributes``."""
+    return type(cls.__name__, (cls,), {"__module__": cls.__module__,
+                                       "__qualname__": cls.__qualname__,
+                                       "__doc__": cls.__doc__, **attributes})
+
+
+class SpecScene:
+    """Mixed into a Scene that plays one run: its default run (the class attributes
+    ``algorithm``, ``polygon``, ``heuristic``) and the run it was handed (``spec``)."""
+
+    algorithm: str
+    polygon: str
+    heuristic: str | None = None
+    #: the run handed to the class (None: the default run, as the environment says)
+    spec: RunSpec | None = None
+
+    @classmethod
+    def default_spec(cls) -> RunSpec:
+        """The run the class names: its algorithm on its default polygon."""
+        return RunSpec(cls.algorithm, cls.polygon, heuristic=cls.heuristic)
+
+    @classmethod
+    def with_spec(cls, spec: RunSpec) -> type:
+        """This scene, handed ``spec``: it reads no environment."""
+        return _subclass(cls, spec=spec)
+
+    @classmethod
+    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type:
+        """This scene handed its default run, on ``polygon`` if given, or replaying the one
+        saved log in ``saved``."""
+        spec = cls.default_spec() if polygon is None else cls.default_spec().on(polygon)
+        if len(saved) > 1:
+            raise ValueError(f"{len(saved)} saved logs handed; {cls.__name__} plays one run")
+        if saved:
+            spec = spec.replaying(saved[0])
+        return cls.with_spec(spec)
+
+    @classmethod
+    def from_environment(cls) -> type:
+        """This scene handed what ``manim`` would give it: its default run with
+        ``TREX_POLYGON`` and ``TREX_LOG``. Raises ValueError for a TREX_LOG it cannot play."""
+        return cls.with_spec(spec_from_environment(cls.default_spec()))
+
+    def run_spec(self) -> RunSpec:
+        """The run this scene plays: the one handed, else the default as the environment
+        says."""
+        return self.spec if self.spec is not None else spec_from_environment(self.default_spec())
+
+
+class TraceScene(SpecScene, Scene):
     """Plays the log of one algorithm run."""
 
     algorithm = "scaling"
@@ -47,8 +104,8 @@ class TraceScene(Scene):
                                         skip_animations=kwargs.get("skip_animations", False))
         super().__init__(renderer=renderer, **kwargs)
 
-    def log(self):
-        return scene_log(self.algorithm, self.polygon, self.heuristic)
+    def log(self) -> Log:
+        return self.run_spec().log()
 
     def construct(self) -> None:
         self.camera.background_color = self.theme.background
@@ -69,12 +126,14 @@ class TraceScene(Scene):
 class SequenceScene(TraceScene):
     """Plays several runs one after another: a short title card, the run, then a clean board.
 
-    ``runs`` lists (algorithm, polygon, title). The runs name their own polygons, so
-    ``TREX_POLYGON`` is not read; ``TREX_LOG`` may list one saved log per run, joined with
-    ``os.pathsep`` (``a.json:b.json:…``), to replay them instead of running live.
+    ``runs`` lists (algorithm, polygon, title). The runs name their own polygons: a handed
+    polygon, or ``TREX_POLYGON``, is not played; ``specs`` (or ``TREX_LOG``, one saved log per
+    run joined with ``os.pathsep``: ``a.json:b.json:…``) may replay saved logs instead.
     """
 
     runs: tuple[tuple[str, str, str], ...] = ()
+    #: the runs handed to the class, one per run (None: the defaults, as the environment says)
+    specs: tuple[RunSpec, ...] | None = None
     #: × run time of each beat action: the set-up every run repeats goes quickly, the verdict
     #: stays long enough to read; ``pace`` for the rest
     paces = MappingProxyType({"polygon": 0.15, "pick": 0.15, "triangle": 0.2, "candidates": 0.2,
@@ -85,15 +144,44 @@ class SequenceScene(TraceScene):
     def beats(self, log) -> list[Beat]:
         return [replace(b, pace=self.paces.get(b.action, self.pace)) for b in catalog.beats(log)]
 
+    @classmethod
+    def default_specs(cls) -> tuple[RunSpec, ...]:
+        """The runs the class names, live."""
+        return tuple(RunSpec(algorithm, polygon) for algorithm, polygon, _ in cls.runs)
+
+    @classmethod
+    def with_specs(cls, specs: Sequence[RunSpec]) -> type:
+        """This scene, handed one spec per run: it reads no environment."""
+        if len(specs) != len(cls.runs):
+            raise ValueError(f"{len(specs)} runs handed; {cls.__name__} plays {len(cls.runs)}")
+        return _subclass(cls, specs=tuple(specs))
+
+    @classmethod
+    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type:
+        """This scene handed its runs, live (``polygon`` is ignored: the runs name their
+        own), or replaying ``saved``, one log per run."""
+        specs = cls.default_specs()
+        if saved:
+            if len(saved) != len(specs):
+                raise ValueError(f"{len(saved)} saved logs handed; {cls.__name__} plays "
+                                 f"{len(specs)} runs")
+            specs = tuple(s.replaying(path) for s, path in zip(specs, saved, strict=True))
+        return cls.with_specs(specs)
+
+    @classmethod
+    def from_environment(cls) -> type:
+        """This scene handed what ``manim`` would give it: ``TREX_LOG``'s logs, if any."""
+        return cls.with_specs(specs_from_environment(cls.default_specs()))
+
+    def run_specs(self) -> tuple[RunSpec, ...]:
+        """The runs this scene plays: those handed, else the defaults as the environment
+        says."""
+        if self.specs is not None:
+            return self.specs
+        return specs_from_environment(self.default_specs())
+
     def logs(self) -> list[Log]:
-        saved = os.environ.get("TREX_LOG")
-        if not saved:
-            return [run_logged(algorithm, polygon) for algorithm, polygon, _ in self.runs]
-        paths = saved.split(os.pathsep)
-        if len(paths) != len(self.runs):
-            raise ValueError(f"TREX_LOG lists {len(paths)} logs; this scene plays "
-                             f"{len(self.runs)} runs (join their paths with {os.pathsep!r})")
-        return [Log.load(path) for path in paths]
+        return [spec.log() for spec in self.run_specs()]
 
     def construct(self) -> None:
         self.camera.background_color = self.theme.background
@@ -126,8 +214,9 @@ def scene_for_heuristic(spec: str) -> type[Scene]:
 
     If ``name`` is a Scene class defined in the file, that class; otherwise ``name`` is a
     heuristic of one's own (see :mod:`geometry.user_heuristics`), loaded now so that a bad
-    spec fails here, and the class plays its run on ``TREX_POLYGON`` (default: the
-    counterexample) with the user's source in the panel. Raises
+    spec fails here, and the class plays its run on the polygon it is handed (plain
+    ``manim``: ``TREX_POLYGON``; default: the counterexample) with the user's source in the
+    panel. Raises
     :class:`geometry.user_heuristics.UserHeuristicError` (a ValueError, one-line message).
     """
     path, name, value = load_attribute(spec)

@@ -11,11 +11,11 @@ from __future__ import annotations
 from manim import DashedLine, Scene, VGroup
 from manim import Polygon as MPolygon
 
-from geometry.exercises import Exercise
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from rendering.typeset import FlatText
+from story.exercises import Exercise
 
 TITLE_Y, LEGEND_Y = 3.45, -3.6
 BOX_CENTER, BOX_WIDTH, BOX_HEIGHT = (0.0, -0.1), 12.4, 5.6

@@ -3,20 +3,22 @@
 Run: ``manim -pql scenes/polygon.py`` (``TREX_POLYGON=<file or sample>`` picks the polygon).
 """
 
-import os
-
 from manim import UP, Create, FadeIn, Scene, Write
 
 from geometry.cdt import constrained_delaunay
 from geometry.io import read_polygon
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
+from metaphors.scene import SpecScene
 from metaphors.theme import THEME
 from rendering.typeset import glyphs
 
 
-class PolygonScene(Scene):
+class PolygonScene(SpecScene, Scene):
+    algorithm = "cdt"  # the triangles it shows
+    polygon = "counterexample"
+
     def construct(self):
-        polygon = read_polygon(os.environ.get("TREX_POLYGON", "counterexample"))
+        polygon = read_polygon(self.run_spec().polygon)
         self.camera.background_color = THEME.background
         frame = Frame(polygon.points, center=(0, -0.3), width=9, height=5.5)
         title = glyphs(

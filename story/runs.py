@@ -1,7 +1,7 @@
 """Run an algorithm on a polygon under a recording: the computation that sits beside a scene.
 
-No manim here. A scene asks for a log; it gets one from a live run or from a saved JSON file,
-and cannot tell the difference.
+No manim here. A scene asks for a log (:meth:`story.spec.RunSpec.log`); it gets one from a
+live run or from a saved JSON file, and cannot tell the difference.
 
 >>> log = run_logged("scaling", "counterexample")
 >>> log.meta["algorithm"], log.meta["shown"]
@@ -10,17 +10,12 @@ and cannot tell the difference.
 
 from __future__ import annotations
 
-import os
-
 import tracing
-from geometry.diagonals import HEURISTICS, find_diagonal
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.triangulate import triangulate
 from geometry.user_heuristics import is_user_spec, load_user_heuristic
-
-#: Which traced function's source the panel shows for each algorithm.
-SHOWN = {"gravity": "gravity_at", "divide-and-conquer": "divide_and_conquer"}
+from story.registry import REGISTRY, shown
 
 
 def run_logged(algorithm: str, polygon: str, heuristic: str | None = None) -> tracing.Log:
@@ -35,15 +30,17 @@ def record_run(algorithm: str, p: Polygon, polygon: str,
                heuristic: str | None = None) -> tracing.Log:
     """The log of a named heuristic or triangulation algorithm on the polygon ``p`` (read from
     ``polygon``, the name the log records). ``trex log`` writes exactly this log."""
-    meta = {"algorithm": algorithm, "polygon": polygon, "shown": SHOWN.get(algorithm, algorithm)}
+    meta = {"algorithm": algorithm, "polygon": polygon, "shown": shown(algorithm)}
     if heuristic:
         meta["heuristic"] = heuristic
-    with tracing.record(**meta) as log:
-        if algorithm in HEURISTICS:
-            find_diagonal(p, algorithm)
+    known = REGISTRY.get(algorithm)
+    with tracing.record(**meta) as log, tracing.alive(p):
+        if known is None:  # geometry's own one-line KeyError names the algorithms it runs
+            triangulate(p, algorithm, heuristic)
+        elif known.is_heuristic:
+            known.function(p)
         else:
-            with tracing.alive(p):
-                triangulate(p, algorithm, heuristic)
+            known.function(p, heuristic)
     return log
 
 
@@ -54,7 +51,7 @@ def saved_log(path: str) -> tracing.Log:
     algorithm = log.meta.get("algorithm")
     if isinstance(algorithm, str) and "shown" not in log.meta and not log.meta.get(
             "user_heuristic"):
-        log.meta["shown"] = SHOWN.get(algorithm, algorithm)
+        log.meta["shown"] = shown(algorithm)
     return log
 
 
@@ -68,12 +65,3 @@ def _run_user(spec: str, polygon: str) -> tracing.Log:
     with tracing.record(**meta) as log:
         heuristic.run(p)
     return log
-
-
-def scene_log(algorithm: str, default_polygon: str, heuristic: str | None = None) -> tracing.Log:
-    """The log a scene plays: ``TREX_LOG`` (a saved JSON log) wins, else a live run on
-    ``TREX_POLYGON`` (a file or sample name), else on the scene's default polygon."""
-    saved = os.environ.get("TREX_LOG")
-    if saved:
-        return saved_log(saved)
-    return run_logged(algorithm, os.environ.get("TREX_POLYGON", default_polygon), heuristic)

@@ -32,7 +32,6 @@ from types import MappingProxyType
 from typing import Any
 
 from geometry.check import is_inner_diagonal
-from geometry.diagonals import HEURISTICS
 from geometry.polygon import Polygon
 from story.beats import (
     Beat,
@@ -46,6 +45,7 @@ from story.beats import (
     ShowTriangle,
     Verdict,
 )
+from story.registry import heuristics
 from story.roles import ROLES
 from tracing import Event, Log
 
@@ -152,6 +152,7 @@ class Walk:
         self.stack: list[Event] = []  # open calls, outermost first
         self.drawn: set[str] = set()  # keys of the shapes the generic beats drew
         self._memo: dict[str, Any] = {}
+        self._heuristics = frozenset(heuristics()) | _HEURISTIC_CALLS
 
     def memo(self, name: str, make: Callable[[], Any]) -> Any:
         """A reading's own state for the whole walk (made on first use)."""
@@ -208,7 +209,7 @@ class Walk:
                     pace=self.pace(), **fields)
 
     def is_heuristic(self, name: str) -> bool:
-        return name in HEURISTICS or name in _HEURISTIC_CALLS or name == self.user
+        return name in self._heuristics or name == self.user
 
     def track(self, event: Event) -> None:
         if event.kind == "call":

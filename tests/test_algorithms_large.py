@@ -13,11 +13,14 @@ from geometry.polygon import Polygon
 from geometry.prune_search import find_an_ear
 from geometry.samples import make_sample
 from geometry.triangulate import triangulate
+from story.registry import triangulations
 from tests.test_ears import is_ear_by_definition
 
 N = 10_000
 SHAPES = ["star", "spiral", "comb"]
-ALGORITHMS = ["ear-clipping", "prune-and-search", "monotone", "cdt", "ear-clipping-naive"]
+#: every triangulation but divide and conquer, the naive ear clipping (the slowest) last
+ALGORITHMS = sorted((a for a in triangulations() if a != "divide-and-conquer"),
+                    key=lambda a: a == "ear-clipping-naive")
 
 _POLYGONS: dict[str, Polygon] = {}
 

@@ -5,11 +5,14 @@ from hypothesis import given, settings
 
 import tracing
 from geometry.check import verify_triangulation
-from geometry.diagonals import CORRECT, HEURISTICS, WRONG
+from geometry.diagonals import HEURISTICS
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import divide_and_conquer, triangulate
+from story.registry import correct, wrong
 from tests.strategies import generated_polygons
+
+CORRECT, WRONG = correct(), wrong()
 
 NAMED = ["counterexample", "counterexample-twin", "comb", "spiral", "star", "two-ears", "square",
          "lecture"]

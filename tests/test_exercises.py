@@ -7,10 +7,11 @@ from click.testing import CliRunner
 from PIL import Image
 
 from geometry.check import is_inner_diagonal
-from geometry.diagonals import WRONG, find_diagonal
-from geometry.exercises import PICKABLE, answers_markdown, make_exercises
+from geometry.diagonals import find_diagonal
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.io import read_polygon
+from story.exercises import PICKABLE, answers_markdown, make_exercises
+from story.registry import wrong
 from trex.cli import main
 
 ENTRY = re.compile(
@@ -53,7 +54,7 @@ def check_entry(number, question, spec, picture, answer, reason) -> str:
         return "pick"
     if m := re.fullmatch(r"Is the claim of (\S+) an inner diagonal\?", question):
         heuristic = m[1]
-        assert heuristic in WRONG
+        assert heuristic in wrong()
         claim = find_diagonal(p, heuristic)
         verdict = is_inner_diagonal(p, *claim.pair)
         expected = "yes" if verdict else "no"

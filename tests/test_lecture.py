@@ -1,6 +1,6 @@
 """trex lecture: real -ql renders of a short chapter list, joined and checked with PyAV and srt.
 
-The chapter list is scenes/polygon.py (a real scene; it reads TREX_POLYGON) and two tiny
+The chapter list is scenes/polygon.py (a real scene; it is handed the polygon) and two tiny
 subtitled scenes written here: the project's subtitled scenes take 25-60 s each at -ql,
 too long for a test that renders the lecture twice (-j 1 and -j 2).
 """
@@ -403,16 +403,16 @@ def test_lecture_chapters_are_checked_by_their_runs_not_their_class_algorithm(
         tmp_path, monkeypatch, no_rendering):
     """A triangle has no diagonal for `scaling` (LectureScene's inherited default), but every
     run of these chapters plays it; each of those runs is dry-run once."""
-    from metaphors import lecture
+    from story.spec import RunSpec
 
     ran = []
 
-    def spy(algorithm, polygon, heuristic=None):
-        ran.append((algorithm, polygon, heuristic))
-        return real(algorithm, polygon, heuristic)
+    def spy(spec):
+        ran.append((spec.algorithm, spec.polygon, spec.heuristic))
+        return real(spec)
 
-    real = lecture.run_logged
-    monkeypatch.setattr(lecture, "run_logged", spy)
+    real = RunSpec.log
+    monkeypatch.setattr(RunSpec, "log", spy)
     code, _, stderr = run("lecture", "--polygon", "triangle", "--chapters",
                           "overview,ears,faster,experience,exercises", "-o",
                           str(tmp_path / "lecture"))
@@ -444,7 +444,7 @@ def test_every_chapter_builds_with_its_captions(chapter):
     that crashes half-way through a render is caught here, not after minutes of rendering."""
     from trex.scene_graph import build
 
-    _, plays = build(_chapter_class(chapter), {"TREX_LOG": None, "TREX_POLYGON": None})
+    _, plays = build(_chapter_class(chapter).handed())
     captions = [p.subcaption for p in plays if p.subcaption]
     assert len(plays) > 10 and captions, chapter.slug
     assert all(isinstance(c, str) and c.strip() for c in captions)

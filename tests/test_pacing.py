@@ -15,7 +15,6 @@ from trex.render_command import load_scene_class
 from trex.scene_graph import build
 
 SCENE_FILE = Path(__file__).resolve().parents[1] / "scenes" / "divide_and_conquer.py"
-DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
 
 
 def divide_and_conquer():
@@ -23,7 +22,7 @@ def divide_and_conquer():
 
 
 def _video_seconds(scene_class, polygon: str, fps: int = 15) -> float:
-    _, plays = build(scene_class, {**DEFAULT_ENV, "TREX_POLYGON": polygon})
+    _, plays = build(scene_class.handed(polygon))
     return sum(math.ceil(play.run_time * fps - 1e-9) for play in plays) / fps
 
 

@@ -23,14 +23,14 @@ from metaphors.board import Board
 from rendering.layers import BACKDROP_Z, STILL_Z
 from rendering.renderer import BackdropRenderer
 from trex.render_command import load_scene_class
-from trex.scene_graph import build, environment
+from trex.scene_graph import build
 
 SCENES = Path(__file__).resolve().parents[1] / "scenes"
-DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
 
 
 def scene_class(file: str, name: str):
-    return load_scene_class(SCENES / f"{file}.py", name)
+    """The scene, handed its default run (whatever TREX_POLYGON and TREX_LOG say)."""
+    return load_scene_class(SCENES / f"{file}.py", name).handed()
 
 
 @functools.cache
@@ -51,7 +51,7 @@ def played(file: str, name: str):
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(CairoRenderer, "play", record_play)  # snapshot's GraphRenderer inherits it
         patch.setattr(Board, "__init__", record_board)
-        build(scene_class(file, name), DEFAULT_ENV)
+        build(scene_class(file, name))
     return boards, moving
 
 
@@ -105,7 +105,7 @@ def frames(scene, media: str) -> list[tuple[str, int]]:
     settings = {"quality": "low_quality", "frame_rate": 5, "media_dir": media,
                 "disable_caching": True, "progress_bar": "none",
                 "verbosity": "WARNING"}
-    with pytest.MonkeyPatch.context() as patch, tempconfig(settings), environment(DEFAULT_ENV):
+    with pytest.MonkeyPatch.context() as patch, tempconfig(settings):
         patch.setattr(CairoRenderer, "add_frame", record)
         scene().render()
     return written

@@ -28,12 +28,13 @@ import pytest
 from manim.utils.testing.frames_comparison import frames_comparison
 
 from trex.render_command import X264_OPTIONS
-from trex.scene_graph import build_graph, environment
+from trex.scene_graph import build_graph
 
 __module_test__ = "render"
 
 ROOT = Path(__file__).resolve().parents[1]
-DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
+#: What a scene reads from the environment under plain manim (left out of the render's).
+SCENE_ENV = ("TREX_LOG", "TREX_POLYGON")
 
 #: The scene rendered for real.
 RENDERED = ("gravity", "Gravity")
@@ -54,21 +55,20 @@ def scene_class(file: str, name: str):
 
 # --- last frames ---------------------------------------------------------------------------------
 
-PolygonScene = scene_class("polygon", "PolygonScene")
-Scaling = scene_class("scaling", "Scaling")
+# handed their default runs: whatever TREX_POLYGON and TREX_LOG say
+PolygonScene = scene_class("polygon", "PolygonScene").handed()
+Scaling = scene_class("scaling", "Scaling").handed()
 
 
 @frames_comparison(last_frame=True, base_scene=PolygonScene)
 def test_polygon_last_frame(scene):
-    with environment(DEFAULT_ENV):
-        PolygonScene.construct(scene)
+    PolygonScene.construct(scene)
     scene.wait()
 
 
 @frames_comparison(last_frame=True, base_scene=Scaling)
 def test_scaling_last_frame(scene):
-    with environment(DEFAULT_ENV):
-        Scaling.construct(scene)
+    Scaling.construct(scene)
     scene.wait()
 
 
@@ -104,7 +104,7 @@ def render_scene(media: Path, scene: tuple[str, str] = RENDERED) -> Path:
     """``manim -ql`` of the rendered scene (or another), as a user runs it from the repository
     root (so ``manim.cfg`` applies), into ``media``: the video's path."""
     file, name = scene
-    env = {k: v for k, v in os.environ.items() if k not in DEFAULT_ENV}
+    env = {k: v for k, v in os.environ.items() if k not in SCENE_ENV}
     # Caching off: a first render in a fresh directory has nothing to reuse, and hashing
     # every play's mobjects would only slow it down.
     command = [sys.executable, "-m", "manim", "-ql", "--disable_caching", "--media_dir",
@@ -120,7 +120,7 @@ def render_scene(media: Path, scene: tuple[str, str] = RENDERED) -> Path:
 @pytest.fixture(scope="module")
 def rendered(tmp_path_factory):
     video = render_scene(tmp_path_factory.mktemp("media"))
-    graph = json.loads(build_graph(scene_class(*RENDERED), DEFAULT_ENV))
+    graph = json.loads(build_graph(scene_class(*RENDERED).handed()))
     return video, graph
 
 

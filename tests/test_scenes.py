@@ -6,7 +6,7 @@ every manim ``Scene`` subclass defined in it is a case. For each one:
 (a) its graph on its default polygon matches the snapshot in ``tests/__snapshots__/``
     (one JSON file per scene; regenerate with ``pytest tests/test_scenes.py --snapshot-update``);
 (b) building it twice gives identical JSON;
-(c) replaying the logs it plays, saved as JSON (``TREX_LOG``), gives the same graph as the
+(c) replaying the logs it plays, saved as JSON and handed to it, gives the same graph as the
     live run;
 (d) every scene of a wrong heuristic shows the ✗ verdict with the crossed edge in red.
 
@@ -23,7 +23,6 @@ import difflib
 import importlib.util
 import inspect
 import json
-import os
 import sys
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -34,22 +33,15 @@ from manim import Scene, tempconfig
 from syrupy.extensions.single_file import SingleFileSnapshotExtension, WriteMode
 
 from geometry.check import is_inner_diagonal
-from geometry.diagonals import WRONG, find_diagonal
+from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
-from trex.scene_graph import build_graph, environment
+from story.registry import entry, wrong
+from trex.scene_graph import build_graph
 
 SCENES_DIR = Path(__file__).resolve().parents[1] / "scenes"
 
-#: A scene's default input: no saved log, no polygon override.
-DEFAULT_ENV = {"TREX_LOG": None, "TREX_POLYGON": None}
-
-#: The polygon on which each wrong heuristic fails (thesis ch. 2.1; DESIGN.md).
-COUNTEREXAMPLES = {
-    "scaling": "counterexample",
-    "rotation": "counterexample",
-    "translation": "counterexample",
-    "rotation-ccw": "counterexample-twin",
-}
+#: The polygon on which each wrong heuristic fails (thesis ch. 2.1; DESIGN.md): its default.
+COUNTEREXAMPLES = {name: entry(name).polygon for name in wrong()}
 
 
 #: A scene playing more animations than this is rebuilt for (b) and (c) only with --runslow.
@@ -76,6 +68,13 @@ class SceneCase:
         if self.cls is None:
             pytest.fail(f"scenes/{self.file}.py does not import: {self.error}")
         return self.cls
+
+    def handed(self, polygon: str | None = None, saved: tuple[str, ...] = ()) -> type[Scene]:
+        """The scene class handed its input as data — its default run(s), on ``polygon``, or
+        replaying ``saved`` — so that no environment variable counts; a scene that takes
+        no input: itself."""
+        cls = self.scene_class()
+        return cls.handed(polygon, saved) if callable(getattr(cls, "handed", None)) else cls
 
 
 def _import(path: Path):
@@ -120,15 +119,14 @@ def _single_run_scenes(heuristic: str) -> list[SceneCase]:
 
 # --- builds (cached for the session) -------------------------------------------------------------
 
-_graphs: dict[tuple[str, tuple], str] = {}
+_graphs: dict[tuple, str] = {}
 
 
-def graph(case: SceneCase, env: dict | None = None) -> str:
-    """The scene graph of a case for an environment (default: its default input), built once."""
-    env = {**DEFAULT_ENV, **(env or {})}
-    key = (case.id, tuple(sorted(env.items(), key=lambda kv: kv[0])))
+def graph(case: SceneCase, polygon: str | None = None, saved: tuple[str, ...] = ()) -> str:
+    """The scene graph of a case for an input (default: its default run), built once."""
+    key = (case.id, polygon, saved)
     if key not in _graphs:
-        _graphs[key] = build_graph(case.scene_class(), env)
+        _graphs[key] = build_graph(case.handed(polygon, saved))
     return _graphs[key]
 
 
@@ -206,16 +204,15 @@ def test_scene_graph_matches_snapshot(case, snapshot_json):
 @pytest.mark.parametrize("case", _params(SCENES))
 def test_same_input_gives_identical_graph(case, request):
     skip_if_heavy(case, request)
-    again = build_graph(case.scene_class(), DEFAULT_ENV)
+    again = build_graph(case.handed())
     assert_same(again, graph(case), f"{case.id} built twice differs")
 
 
-def _save_logs(cls: type[Scene], folder: Path) -> str | None:
-    """The logs the scene plays, saved as JSON; the ``TREX_LOG`` value that replays them
-    (paths joined with ``os.pathsep`` for a scene of several runs), or None if it plays none."""
-    with environment(DEFAULT_ENV), tempconfig({"dry_run": True, "media_dir": str(folder),
-                                               "verbosity": "WARNING"}):
-        scene = cls(skip_animations=True)
+def _save_logs(case: SceneCase, folder: Path) -> tuple[str, ...] | None:
+    """The logs the scene plays, saved as JSON: their paths (one per run), or None if it
+    plays none."""
+    with tempconfig({"dry_run": True, "media_dir": str(folder), "verbosity": "WARNING"}):
+        scene = case.handed()(skip_animations=True)
         if callable(getattr(scene, "logs", None)):
             logs = scene.logs()
         elif callable(getattr(scene, "log", None)):
@@ -227,18 +224,16 @@ def _save_logs(cls: type[Scene], folder: Path) -> str | None:
         path = folder / f"log-{k}.json"
         log.save(path)
         paths.append(str(path))
-    return os.pathsep.join(paths)
+    return tuple(paths)
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
 def test_replayed_log_gives_the_live_graph(case, tmp_path, request):
     skip_if_heavy(case, request)
-    saved = _save_logs(case.scene_class(), tmp_path)
+    saved = _save_logs(case, tmp_path)
     if saved is None:
         pytest.skip(f"{case.id} plays no log")
-    before = os.environ.get("TREX_LOG")
-    replayed = build_graph(case.scene_class(), {**DEFAULT_ENV, "TREX_LOG": saved})
-    assert os.environ.get("TREX_LOG") == before  # restored after the build
+    replayed = build_graph(case.handed(saved=saved))
     assert_same(replayed, graph(case), f"{case.id} replayed from its saved log differs")
 
 
@@ -253,7 +248,7 @@ def _expected_crossed_edge(heuristic: str, polygon_name: str) -> str:
     return "–".join(polygon.labels[k] for k in verdict.edge)
 
 
-@pytest.mark.parametrize("heuristic", WRONG)
+@pytest.mark.parametrize("heuristic", wrong())
 def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
     polygon = COUNTEREXAMPLES[heuristic]
     cases = _single_run_scenes(heuristic)
@@ -261,8 +256,7 @@ def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
         pytest.fail(f"no scene in scenes/ plays the wrong heuristic {heuristic!r}")
     expected = f"edge:{_expected_crossed_edge(heuristic, polygon)}"
     for case in cases:
-        env = {} if case.cls.polygon == polygon else {"TREX_POLYGON": polygon}
-        text = graph(case, env)
+        text = graph(case, None if case.cls.polygon == polygon else polygon)
         rejected_edges = {n["name"] for n in nodes(text)
                           if n["name"].startswith("edge:") and n["role"] == "rejected"}
         assert rejected_edges == {expected}, f"{case.id} on {polygon}"

@@ -144,12 +144,7 @@ def _dry_render(spec: str, polygon: str | None, monkeypatch):
 
     from metaphors.scene import scene_for_heuristic
 
-    monkeypatch.delenv("TREX_LOG", raising=False)
-    if polygon is None:
-        monkeypatch.delenv("TREX_POLYGON", raising=False)
-    else:
-        monkeypatch.setenv("TREX_POLYGON", polygon)
-    cls = scene_for_heuristic(spec)
+    cls = scene_for_heuristic(spec).handed(polygon)  # its run, on the polygon if given
     played = []
     settings = {"dry_run": True, "disable_caching": True, "verbosity": "WARNING",
                 "progress_bar": "none", "media_dir": tempfile.mkdtemp(prefix="trex-test-")}

@@ -1,6 +1,6 @@
 """``trex exercises``: exercise stills (PNG) and ``answers.md``, every answer checked.
 
-The exercises come from :mod:`geometry.exercises` (no manim); each still is rendered by
+The exercises come from :mod:`story.exercises` (no manim); each still is rendered by
 manim at medium quality into a temporary directory beside it and moved into place, and
 ``answers.md`` is written atomically last. The same seed gives the same files.
 """
@@ -13,8 +13,8 @@ from pathlib import Path
 
 import click
 
-from geometry.exercises import answers_markdown, make_exercises
 from geometry.io import write_atomic
+from story.exercises import answers_markdown, make_exercises
 from trex.inputs import error_line, fail
 from trex.render_command import EXIT_FAILED, EXIT_SIGNAL, Interrupted, interrupts_raise, render_into
 

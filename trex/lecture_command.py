@@ -17,7 +17,10 @@ rendering; a chapter that fails to render is one line naming it and status 1.
 With ``--polygon``, a lecture chapter is checked by what it plays: each of its segments that
 runs on the lecture's polygon (a ``Run`` or ``Compare`` whose polygon is None) is computed
 once on it, as :class:`metaphors.lecture.LectureScene` would, without drawing
-(:func:`polygon_checks`); a scene played as a chapter dry-runs its ``algorithm``.
+(:func:`polygon_checks`); a scene played as a chapter dry-runs its ``algorithm``. The
+polygon reaches each chapter's process as an argument, and the chapter's scene is handed it
+(:func:`trex.render_command.scene_input`); without ``--polygon`` a chapter plays what
+``manim`` would play (the environment the process inherits).
 """
 
 from __future__ import annotations
@@ -43,13 +46,13 @@ from trex.render_command import (
     QUALITIES,
     SCENES_DIR,
     Interrupted,
-    _environment,
     _signals_held,
     dry_run,
     interrupts_raise,
     load_scene_class,
     render_into,
     resolve_scene,
+    scene_input,
 )
 
 REPO = SCENES_DIR.parent
@@ -141,22 +144,23 @@ def lecture_segments(cls: type) -> tuple | None:
     return tuple(cls.__new__(cls).chapter_segments())
 
 
-def polygon_checks(segments: Sequence) -> list[tuple[str, tuple, Callable[[], object]]]:
+def polygon_checks(segments: Sequence,
+                   polygon: str) -> list[tuple[str, tuple, Callable[[], object]]]:
     """``(what, key, check)`` for each segment that plays the lecture's polygon: ``check()``
     computes what the chapter would show — a Run's log, a Compare's two triangulations — by
-    the chapter's own calls, on ``lecture_polygon()`` (``TREX_POLYGON``, set by the caller).
-    Equal keys are the same computation."""
+    the chapter's own calls, on ``polygon`` (the one the chapter is handed). Equal keys are
+    the same computation."""
     from geometry.cdt import constrained_delaunay
     from geometry.triangulate import triangulate
     from metaphors import lecture
-    from metaphors.lecture import Compare, Run, lecture_polygon
+    from metaphors.lecture import Compare, Run
 
     def run(segment: Run):
-        return lecture.run_logged(segment.algorithm, lecture_polygon(), segment.heuristic)
+        return segment.spec(polygon).log()
 
     def compare(segment: Compare):
-        polygon = lecture.read_polygon(lecture_polygon())
-        return triangulate(polygon, segment.ours), constrained_delaunay(polygon)
+        shape = lecture.read_polygon(polygon)
+        return triangulate(shape, segment.ours), constrained_delaunay(shape)
 
     checks = []
     for segment in segments:
@@ -209,15 +213,14 @@ def _check_polygon(cls: type, polygon: str, label: str, done: set) -> None:
             except (GeometryError, ValueError, KeyError) as exc:
                 fail(f"{polygon}: {error_line(exc)}")
         return
-    with _environment(TREX_POLYGON=polygon, TREX_LOG=None):  # as the chapter's process has it
-        for what, key, check in polygon_checks(segments):
-            if key in done:
-                continue
-            try:
-                check()
-            except (GeometryError, ValueError, KeyError) as exc:
-                fail(f"{polygon}: {label}: {what}: {error_line(exc)}")
-            done.add(key)
+    for what, key, check in polygon_checks(segments, polygon):
+        if key in done:
+            continue
+        try:
+            check()
+        except (GeometryError, ValueError, KeyError) as exc:
+            fail(f"{polygon}: {label}: {what}: {error_line(exc)}")
+        done.add(key)
 
 
 def check_output_dir(out_dir: Path) -> None:
@@ -256,16 +259,12 @@ def _start(k: int, chapter, folder: Path, logs: Path, quality: str,
            polygon: str | None) -> _Render:
     output = folder / f"{chapter_stem(chapter)}.mp4"
     log = logs / f"{chapter_stem(chapter)}.log"
-    env = dict(os.environ)
-    if polygon is not None:
-        env["TREX_POLYGON"] = polygon
-        env.pop("TREX_LOG", None)
     command = [sys.executable, "-m", "trex.lecture_command", str(scene_path(chapter)),
-               chapter.scene_class or "", str(output), quality]
+               chapter.scene_class or "", str(output), quality, polygon or ""]
     with open(log, "wb") as sink:
         # its own session: Ctrl-C at the terminal reaches only us, and we stop it
         process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=sink,
-                                   stderr=subprocess.STDOUT, env=env, start_new_session=True)
+                                   stderr=subprocess.STDOUT, start_new_session=True)
     return _Render(k, chapter, process, log, output, time.monotonic())
 
 
@@ -490,8 +489,10 @@ def _failed(message: str):
 # --- one chapter, in its own process ------------------------------------------------------------
 
 
-def render_chapter(scene_file: str, class_name: str | None, output: str, quality: str) -> int:
-    """Render one scene to ``output`` (mp4 + .srt) with ``render_into``; the exit status.
+def render_chapter(scene_file: str, class_name: str | None, output: str, quality: str,
+                   polygon: str | None = None) -> int:
+    """Render one scene to ``output`` (mp4 + .srt) with ``render_into``, handed ``polygon``
+    (None or empty: what ``manim`` would give it); the exit status.
 
     Failures are one line on stderr; SIGTERM/SIGINT stop it with nothing left behind.
     """
@@ -499,8 +500,8 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
         try:
             try:
                 cls = load_scene_class(Path(scene_file), class_name or None)
-                render_into(cls, Path(output), "mp4", QUALITIES[quality], progress=False,
-                            signals=signals)
+                render_into(scene_input(cls, polygon or None), Path(output), "mp4",
+                            QUALITIES[quality], progress=False, signals=signals)
             except Exception as exc:
                 signals.check()
                 print(f"error: render failed: {type(exc).__name__}: {error_line(exc)}",
@@ -515,4 +516,4 @@ COMMANDS = (lecture,)
 __all__ = ["COMMANDS", "build_lecture", "lecture", "render_chapter", "run_lecture"]
 
 if __name__ == "__main__":
-    sys.exit(render_chapter(*sys.argv[1:5]))
+    sys.exit(render_chapter(*sys.argv[1:6]))

@@ -7,10 +7,11 @@ file, or a heuristic of one's own (``file.py:function``). The scene's algorithm,
 default polygon, title, theme and pacing are its class attributes; a scene that plays several
 runs is refused.
 
-The run played is the one ``trex render SCENE`` would play (see
-:func:`story.runs.scene_log`): ``--log FILE`` (a saved log, as ``trex log`` writes) or
-``--polygon`` if given, else ``TREX_LOG``, else a live run on ``TREX_POLYGON`` or the scene's
-default polygon. A saved log must be of the algorithm (and heuristic) the scene plays.
+The run played is the one ``trex render SCENE`` would play (a :class:`story.spec.RunSpec`):
+``--log FILE`` (a saved log, as ``trex log`` writes) or ``--polygon`` if given, else
+``TREX_LOG``, else a live run on ``TREX_POLYGON`` or the scene's default polygon (read by
+:mod:`story.environment`). A saved log must be of the algorithm (and heuristic) the scene
+plays.
 
 Checked before anything is drawn, each as one line and exit status 2: the polygon or saved
 log (a missing file, not a trex log, a log of another algorithm than the scene's), the scene,
@@ -154,10 +155,13 @@ def player(scene: str, polygon: str | None, saved: str | None, output: str) -> N
         fail("--polygon and --log: give one of them (a saved log has its own polygon)")
     saved_as = saved
     if polygon is None and saved is None:  # as scenes do: TREX_LOG, else TREX_POLYGON
-        if os.environ.get("TREX_LOG"):
-            saved, saved_as = os.environ["TREX_LOG"], f"TREX_LOG={os.environ['TREX_LOG']}"
+        from story.environment import LOG, POLYGON, environment_values
+
+        values = environment_values()
+        if LOG in values:
+            saved, saved_as = values[LOG], f"{LOG}={values[LOG]}"
         else:
-            polygon = os.environ.get("TREX_POLYGON") or None
+            polygon = values.get(POLYGON)
     log = None
     if saved is not None:  # bad input: one line, exit 2, before anything is drawn
         try:
@@ -180,23 +184,23 @@ def player(scene: str, polygon: str | None, saved: str | None, output: str) -> N
         check_output(target)
     except ValueError as exc:
         fail(f"{output}: {exc}")
+    spec = cls.default_spec()
     if log is None:
-        polygon = polygon if polygon is not None else cls.polygon
-        from story.runs import run_logged
-
+        spec = spec.on(polygon) if polygon is not None else spec
         try:
-            log = run_logged(cls.algorithm, polygon, cls.heuristic)
+            log = spec.log()
         except (GeometryError, ValueError, KeyError) as exc:
-            fail(f"{polygon}: {error_line(exc)}")
-        subtitle = f"{log.meta.get('algorithm')} on {polygon}"
+            fail(f"{spec.polygon}: {error_line(exc)}")
+        subtitle = f"{log.meta.get('algorithm')} on {spec.polygon}"
     else:
+        spec = spec.replaying(saved)
         subtitle = (f"{log.meta.get('algorithm')} on {log.meta.get('polygon', '?')}, "
                     f"saved in {Path(saved).name}")
     from trex.render_command import EXIT_SIGNAL, Interrupted, interrupts_raise
 
     with interrupts_raise() as signals:
         try:
-            page = _build(cls, log, subtitle, target)
+            page = _build(cls.with_spec(spec), log, subtitle, target)
             signals.done = True
         except Interrupted as exc:
             click.echo(f"error: {scene}: interrupted; {output} left as it was", err=True)

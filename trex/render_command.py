@@ -150,9 +150,21 @@ def dry_run(cls: type, polygon: str) -> None:
     algorithm = getattr(cls, "algorithm", None)
     if not isinstance(algorithm, str) or getattr(cls, "runs", None):
         return
-    from story.runs import run_logged
+    from story.spec import RunSpec
 
-    run_logged(algorithm, polygon, getattr(cls, "heuristic", None))
+    RunSpec(algorithm, polygon, heuristic=getattr(cls, "heuristic", None)).log()
+
+
+def scene_input(cls: type, polygon: str | None) -> type:
+    """The scene class handed its run as data (a subclass carrying a
+    :class:`story.spec.RunSpec`, see :class:`metaphors.scene.SpecScene`): on ``polygon`` if
+    given, else as ``manim`` would give it (its default run, with ``TREX_POLYGON`` and
+    ``TREX_LOG`` from the environment). A scene of several runs plays its own polygons; a
+    Scene that takes no run comes back as it is. Raises ValueError for a ``TREX_LOG`` the
+    scene cannot play."""
+    if not callable(getattr(cls, "handed", None)):
+        return cls
+    return cls.handed(polygon) if polygon is not None else cls.from_environment()
 
 
 # --- rendering --------------------------------------------------------------------------------------
@@ -193,25 +205,6 @@ def interrupts_raise() -> Iterator[Signals]:
     finally:
         for s, h in previous.items():
             signal.signal(s, h)
-
-
-@contextlib.contextmanager
-def _environment(**values: str | None) -> Iterator[None]:
-    """Set (or, for None, remove) environment variables inside; restore them after."""
-    saved = {k: os.environ.get(k) for k in values}
-    try:
-        for k, v in values.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
-        yield
-    finally:
-        for k, v in saved.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
 
 
 @contextlib.contextmanager
@@ -363,10 +356,8 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
             dry_run(cls, polygon)
         except (GeometryError, ValueError, KeyError) as exc:
             fail(f"{polygon}: {error_line(exc)}")
-    env = {"TREX_POLYGON": polygon, "TREX_LOG": None} if polygon is not None else {}
     try:
-        with _environment(**env):
-            render_into(cls, target, fmt, QUALITIES[quality], signals=signals)
+        render_into(scene_input(cls, polygon), target, fmt, QUALITIES[quality], signals=signals)
     except (KeyboardInterrupt, click.exceptions.Exit):
         raise
     except Exception as exc:

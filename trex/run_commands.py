@@ -13,10 +13,9 @@ from pathlib import Path
 import click
 
 from geometry.check import is_inner_diagonal
-from geometry.diagonals import HEURISTICS
 from geometry.io import write_atomic
 from geometry.polygon import Polygon
-from geometry.triangulate import ALGORITHMS, triangulate
+from geometry.triangulate import triangulate
 from geometry.user_heuristics import (
     UserHeuristic,
     UserHeuristicError,
@@ -24,9 +23,10 @@ from geometry.user_heuristics import (
     load_user_heuristic,
     run_heuristic,
 )
+from story.registry import heuristics, names, triangulations
 from trex.inputs import EXIT_INVALID, fail, load_or_exit, report_error, try_load
 
-HEURISTIC = click.Choice(list(HEURISTICS))
+HEURISTIC = click.Choice(list(heuristics()))
 
 
 class HeuristicOrFile(click.ParamType):
@@ -37,7 +37,7 @@ class HeuristicOrFile(click.ParamType):
     name = "heuristic"
 
     def get_metavar(self, param, ctx=None) -> str:
-        return "[" + "|".join(HEURISTICS) + "|FILE.py:FUNCTION]"
+        return "[" + "|".join(heuristics()) + "|FILE.py:FUNCTION]"
 
     def convert(self, value, param, ctx):
         if isinstance(value, UserHeuristic):
@@ -51,7 +51,7 @@ class HeuristicOrFile(click.ParamType):
             return HEURISTIC.convert(value, param, ctx)
         except click.BadParameter as exc:
             self.fail(f"{exc.message.rstrip('.')}, or FILE.py:FUNCTION of your own", param, ctx)
-ALGORITHM = click.Choice(list(ALGORITHMS))
+ALGORITHM = click.Choice(list(triangulations()))
 
 
 def _vertices(polygon: Polygon) -> list[list[float]]:
@@ -148,7 +148,7 @@ def triangulate_command(polygons: tuple[str, ...], algorithm: str, heuristic: st
 
 
 @click.command(name="log")
-@click.argument("algorithm", type=click.Choice(list(HEURISTICS) + list(ALGORITHMS)))
+@click.argument("algorithm", type=click.Choice(list(names())))
 @click.argument("polygon")
 @click.option("--heuristic", type=HEURISTIC, default="gravity", show_default=True,
               help="For divide-and-conquer: how each diagonal is found.")
@@ -159,7 +159,8 @@ def log_command(algorithm: str, polygon: str, heuristic: str, output: str) -> No
 
     p = load_or_exit(polygon)
     try:  # the very log a scene records for this run, so that it replays the same video
-        log = record_run(algorithm, p, polygon, heuristic if algorithm in ALGORITHMS else None)
+        log = record_run(algorithm, p, polygon,
+                         heuristic if algorithm in triangulations() else None)
     except ValueError as exc:
         fail(f"{polygon}: {exc}")
     try:

@@ -35,7 +35,6 @@ from __future__ import annotations
 
 import atexit
 import json
-import os
 import re
 import shutil
 import tempfile
@@ -272,39 +271,15 @@ def _scratch_dir() -> Path:
     return _scratch
 
 
-@contextmanager
-def environment(env: Mapping[str, str | None] | None) -> Iterator[None]:
-    """Set (a string) or unset (``None``) environment variables for a block, then restore.
-
-    >>> with environment({"TREX_EXAMPLE": "1"}):
-    ...     os.environ["TREX_EXAMPLE"]
-    '1'
-    >>> "TREX_EXAMPLE" in os.environ
-    False
-    """
-    saved = {key: os.environ.get(key) for key in env or {}}
-    try:
-        for key, value in (env or {}).items():
-            if value is None:
-                os.environ.pop(key, None)
-            else:
-                os.environ[key] = str(value)
-        yield
-    finally:
-        for key, value in saved.items():
-            if value is None:
-                os.environ.pop(key, None)
-            else:
-                os.environ[key] = value
-
-
-def build(scene_class: type[Scene], env: Mapping[str, str | None] | None = None,
+def build(scene_class: type[Scene],
           media_dir: str | Path | None = None) -> tuple[Scene, list[Play]]:
     """Build a scene in dry run (no video, no pixels, animations skipped to their ends) and
     return it with its recorded plays.
 
-    ``env`` sets or unsets environment variables during the build; ``media_dir`` is where
-    manim may cache text SVGs (default: a temporary directory of this process).
+    The scene's input is the class's business: hand it one first (for this project's
+    scenes, ``Scaling.handed(polygon="star")``, see :class:`metaphors.scene.SpecScene`).
+    ``media_dir`` is where manim may cache text SVGs (default: a temporary directory of
+    this process).
     """
     settings = {
         "dry_run": True,
@@ -315,24 +290,21 @@ def build(scene_class: type[Scene], env: Mapping[str, str | None] | None = None,
         "verbosity": "WARNING",
         "progress_bar": "none",
     }
-    with environment(env), tempconfig(settings):
+    with tempconfig(settings):
         scene = scene_class(renderer=GraphRenderer(skip_animations=True), skip_animations=True)
         with recording(scene) as plays:
             scene.render()
     return scene, plays
 
 
-def build_graph(scene_class: type[Scene], env: Mapping[str, str | None] | None = None,
-                media_dir: str | Path | None = None) -> str:
+def build_graph(scene_class: type[Scene], media_dir: str | Path | None = None) -> str:
     """The scene graph of a Scene subclass as JSON text (see the module docs).
 
     Parameters
     ----------
     scene_class
-        Any manim ``Scene`` subclass; it is instantiated and rendered in dry run.
-    env
-        Environment variables to set (str) or unset (``None``) while it builds, e.g.
-        ``{"TREX_LOG": "run.json", "TREX_POLYGON": None}``; restored afterwards.
+        Any manim ``Scene`` subclass; it is instantiated and rendered in dry run (a scene
+        of this project handed its run first, e.g. ``Gravity.handed(saved=["run.json"])``).
     media_dir
         Scratch media directory (default: a temporary one); nothing else is written.
 
@@ -355,5 +327,5 @@ def build_graph(scene_class: type[Scene], env: Mapping[str, str | None] | None =
     >>> graph["final"][0]["points"][:2]
     [[1.0, 1.0, 0.0], [0.333, 1.0, 0.0]]
     """
-    scene, plays = build(scene_class, env, media_dir)
+    scene, plays = build(scene_class, media_dir)
     return to_json(scene_graph(plays, scene))

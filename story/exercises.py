@@ -35,20 +35,16 @@ from dataclasses import dataclass, field
 
 import tracing
 from geometry.check import is_inner_diagonal
-from geometry.diagonals import WRONG, find_diagonal
+from geometry.diagonals import find_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.polygon import Polygon
 from geometry.samples import sample_from_spec
+from story.registry import heuristics, wrong
 
 __all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "make_exercises"]
 
 KINDS = ("pick", "claim", "inner")
-#: Heuristics that pick a candidate of T by a rule a student can apply by hand.
-PICKABLE = (
-    "scaling", "rotation", "rotation-ccw", "translation",
-    "translation-correct", "scaling-correct", "rotation-correct",
-)
 #: (generator, smallest n, largest n): shapes whose T often holds several candidates.
 GENERATORS = (("random-2opt", 8, 13), ("random-comb", 12, 16))
 MIN_CANDIDATES, MAX_CANDIDATES = 2, 4
@@ -66,6 +62,9 @@ _STORY = {
     "translation-correct": ("the line parallel to AC, swept from B, reaches", "after ", "{:.2f}"),
     "scaling-correct": ("the water rising from the shore AC wets", "height ", "{:.2f}"),
 }
+#: Heuristics that pick a candidate of T by a rule a student can apply by hand: those whose
+#: metaphor's story is told above, in the registry's order.
+PICKABLE = tuple(name for name in heuristics() if name in _STORY)
 
 
 @dataclass(frozen=True)
@@ -264,7 +263,7 @@ def make_exercises(n: int = 6, seed: int = 0) -> list[Exercise]:
         if kind == "pick":
             build = _pick(k + 1, rng.choice(PICKABLE))
         elif kind == "claim":
-            build = _claim(k + 1, rng.sample(WRONG, len(WRONG)), wanted.pop())
+            build = _claim(k + 1, rng.sample(wrong(), len(wrong())), wanted.pop())
         else:
             build = _inner(k + 1)
         out.append(_search(rng, used, GENERATORS[k % len(GENERATORS)], build))

@@ -1,0 +1,66 @@
+"""A run as a value: what a scene plays, handed to it rather than read from the environment.
+
+A :class:`RunSpec` names an algorithm (a registry name, or ``file.py:function`` for a
+heuristic of one's own), the polygon it runs on (a file or a sample name), divide and
+conquer's heuristic, and optionally a saved log to replay instead of running live.
+:meth:`RunSpec.log` produces the log a scene plays; the scene cannot tell a live run from
+a saved one. ``trex`` and the tests build specs and hand them to scenes; under plain
+``manim scenes/x.py`` a scene builds its own from ``TREX_POLYGON`` and ``TREX_LOG``
+(:mod:`story.environment`, the one module that reads the environment).
+
+>>> spec = RunSpec("scaling", "counterexample")
+>>> spec.log().meta["algorithm"], spec.log().meta["polygon"]
+('scaling', 'counterexample')
+>>> spec.on("counterexample-twin")
+RunSpec(algorithm='scaling', polygon='counterexample-twin', heuristic=None, saved=None)
+>>> spec.replaying("run.json").saved
+'run.json'
+"""
+
+from __future__ import annotations
+
+from dataclasses import KW_ONLY, dataclass, replace
+
+import tracing
+from story.runs import run_logged, saved_log
+
+__all__ = ["RunSpec"]
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    """One run: what to run on what, or the saved log that replays it.
+
+    Attributes
+    ----------
+    algorithm : str
+        A heuristic or triangulation (:mod:`story.registry`), or ``file.py:function``.
+    polygon : str
+        A polygon file or sample name. Not read when ``saved`` is given (the log has its own).
+    heuristic : str or None
+        Divide and conquer's heuristic (None: gravity); other algorithms take none.
+    saved : str or None
+        The path of a saved log (``trex log`` writes them) to replay instead of running.
+
+    More options (pacing, the panel's) are to come as further keyword fields with defaults.
+    """
+
+    algorithm: str
+    polygon: str
+    _: KW_ONLY
+    heuristic: str | None = None
+    saved: str | None = None
+
+    def log(self) -> tracing.Log:
+        """The log of this run: the saved one if given, else a live run."""
+        if self.saved:
+            return saved_log(self.saved)
+        return run_logged(self.algorithm, self.polygon, self.heuristic)
+
+    def on(self, polygon: str) -> RunSpec:
+        """The same run, live on another polygon (a saved log no longer applies)."""
+        return replace(self, polygon=polygon, saved=None)
+
+    def replaying(self, saved: str) -> RunSpec:
+        """The same run, replayed from the saved log at ``saved``."""
+        return replace(self, saved=saved)
