@@ -321,9 +321,10 @@ def _instrument(tree: ast.Module, name: str) -> int:
     other decorator applies to the rewritten function. A body that can fall off the end gets a
     last ``return __trex_answer__(None, None)`` with no location, like Python's own implicit
     return (no line event of its own): no ``return`` ran. For ``name = lambda polygon: <body>``
-    the body is handed over on its own line. The new nodes take the location of the ``return``
-    they replace and the values keep theirs, so tracebacks, the lines of traced calls and
-    shapes made in a ``return`` expression, and every other line are the file's own.
+    the body is handed over on its own line. The new nodes take the location of the value they
+    wrap (of the ``return``, for a bare one) and the values keep theirs, so tracebacks, the
+    lines of traced calls and shapes made in a ``return`` expression, the line events a
+    debugger or coverage sees and every other line are the file's own.
 
     At run time the hook (:func:`_answer`) appends the line to the record of the run in
     progress, a list the wrapper opens per run in a ``ContextVar`` (threads never mix, a run
@@ -375,7 +376,7 @@ def _rewrite_function(function: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
     while todo:
         node = todo.pop()
         if isinstance(node, ast.Return):
-            node.value = _handed(node.lineno, node.value, node)
+            node.value = _handed(node.lineno, node.value, node.value or node)
         if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda | ast.ClassDef):
             todo.extend(ast.iter_child_nodes(node))
     if not isinstance(function.body[-1], ast.Return | ast.Raise):
@@ -387,7 +388,8 @@ def _rewrite_function(function: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
 
 def _handed(line: int | None, value: ast.expr | None, where: ast.AST | None) -> ast.Call:
     """``__trex_answer__(line, value)``, the new nodes placed where ``where`` is (``value``
-    keeps its own place)."""
+    keeps its own place). At the value's place, a multi-line ``return (\n f(x))`` makes no line
+    event on the ``return`` line before ``f(x)`` runs, as it makes none without the hook."""
     new = [ast.Name(_HOOK, ast.Load()), ast.Constant(line)]
     if value is None:
         value = ast.Constant(None)
