@@ -7,7 +7,17 @@ objects. It may use the shared logger (``@tracing.traced`` on its helpers,
 ``tracing.Shape`` for what it wants drawn); :func:`load_user_heuristic` wraps it so that,
 like the built-in heuristics, the whole run is one traced call named after the function
 and its answer is entered into the log by :func:`geometry.frame.claim`, stated
-(``tracing.at_line``) on the line of the function's ``return``, which the panel then lights.
+(``tracing.at_line``) on the line of the ``return`` the function left by, which the panel
+then lights.
+
+That line is recorded, not guessed, and with no tracer: the file is loaded from its syntax
+tree, in which the function's own ``return`` statements (not those of functions, lambdas or
+classes nested in it) become ``return __trex_answer__(<line>, <value>)``, as pytest rewrites
+asserts; the hook notes the line for the run in progress and hands the value back unchanged
+(details: :func:`_instrument`). Only the body is rewritten, before the module runs (once), so
+decorators apply to it as written; locations are kept and the tree is compiled under the
+file's own name, so every other line number is the file's own. Nothing rewritten (a callable
+object, a ``functools.partial`` …): the claim keeps the line of the wrapper's call.
 
 Every problem is a :class:`UserHeuristicError` (a ``ValueError``) with a one-line message:
 a missing file, a syntax error in it, a missing or non-callable function, an exception the
@@ -46,7 +56,8 @@ import operator
 import sys
 import textwrap
 import traceback
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
+from contextvars import ContextVar
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -71,17 +82,6 @@ class UserHeuristicError(ValueError):
     """A user's heuristic cannot be loaded or run; the message is one line."""
 
 
-def is_user_spec(text: str) -> bool:
-    """Whether a heuristic argument names a file of one's own (``file.py:function``).
-
-    >>> is_user_spec("examples/my_heuristic.py:biggest_angle"), is_user_spec("scaling")
-    (True, False)
-    >>> is_user_spec("examples/my_heuristic.py")  # a file without its function: still meant
-    True
-    """
-    return ".py:" in text or text.endswith(".py")
-
-
 @dataclass(frozen=True)
 class UserHeuristic:
     """A loaded heuristic of one's own.
@@ -95,7 +95,7 @@ class UserHeuristic:
     path : Path
         The file, resolved.
     raw : callable
-        The user's function (undecorated if it was traced).
+        The user's function as loaded, returns rewritten (undecorated if it was traced).
     function : callable
         ``polygon -> Diagonal``: the traced run, answer claimed and entered into the log.
     """
@@ -147,6 +147,17 @@ class UserHeuristic:
         return tuple(kept)
 
 
+def is_user_spec(text: str) -> bool:
+    """Whether a heuristic argument names a file of one's own (``file.py:function``).
+
+    >>> is_user_spec("examples/my_heuristic.py:biggest_angle"), is_user_spec("scaling")
+    (True, False)
+    >>> is_user_spec("examples/my_heuristic.py")  # a file without its function: still meant
+    True
+    """
+    return ".py:" in text or text.endswith(".py")
+
+
 def load_user_heuristic(spec: str) -> UserHeuristic:
     """Load ``path/to/file.py:function`` and wrap the function (see the module docs).
 
@@ -157,7 +168,8 @@ def load_user_heuristic(spec: str) -> UserHeuristic:
 
 
 def load_attribute(spec: str) -> tuple[Path, str, Any]:
-    """Run the file of ``path/to/file.py:name`` as a fresh module; its path and ``name``'s value.
+    """Run the file of ``path/to/file.py:name`` as a fresh module, ``name``'s returns rewritten
+    (see the module docs); its path and ``name``'s value.
 
     Raises :class:`UserHeuristicError` (one line) for a spec without a name, a missing file, a
     syntax error or an exception while it loads, and a name the file does not define.
@@ -174,7 +186,7 @@ def load_attribute(spec: str) -> tuple[Path, str, Any]:
         raise UserHeuristicError(f"{file_part}: no such file")
     if not path.is_file():
         raise UserHeuristicError(f"{file_part}: not a file")
-    module = _load_module(path, file_part)
+    module = _load_module(path, file_part, name)
     if not hasattr(module, name):
         defined = [k for k, v in vars(module).items()
                    if inspect.isfunction(v) and v.__module__ == module.__name__
@@ -214,8 +226,9 @@ def run_heuristic(polygon: Polygon, heuristic: str | UserHeuristic) -> Diagonal:
 # --- loading ---------------------------------------------------------------------------------------
 
 
-def _load_module(path: Path, shown: str):
-    """Execute the file as a new module; any failure becomes one line naming file and line."""
+def _load_module(path: Path, shown: str, function: str | None = None):
+    """Execute the file as a new module, once, with the returns of ``function`` rewritten
+    (:func:`_instrument`); any failure becomes one line naming file and line."""
     resolved = path.resolve()
     digest = hashlib.sha1(str(resolved).encode()).hexdigest()[:10]
     module_name = f"_trex_user_{_identifier(path.stem)}_{digest}"
@@ -224,7 +237,9 @@ def _load_module(path: Path, shown: str):
     except OSError as exc:
         raise UserHeuristicError(f"{shown}: cannot read: {exc.strerror or exc}") from None
     try:
-        code = compile(source, str(resolved), "exec", dont_inherit=True)
+        tree = compile(source, str(resolved), "exec", ast.PyCF_ONLY_AST, dont_inherit=True)
+        rewritten = _instrument(tree, function) if function else 0
+        code = compile(tree, str(resolved), "exec", dont_inherit=True)
     except SyntaxError as exc:
         where = f"{shown}:{exc.lineno}" if exc.lineno else shown
         message = _first_line(exc.msg) or "invalid syntax"
@@ -233,6 +248,8 @@ def _load_module(path: Path, shown: str):
         raise UserHeuristicError(f"{shown}: cannot compile: {_first_line(str(exc))}") from None
     spec = importlib.util.spec_from_file_location(module_name, resolved)
     module = importlib.util.module_from_spec(spec)
+    if rewritten:
+        setattr(module, _HOOK, _answer)
     sys.modules[module_name] = module
     folder = str(resolved.parent)
     sys.path.insert(0, folder)
@@ -274,17 +291,129 @@ def _line_in(exc: BaseException, path: Path) -> int | None:
     return found
 
 
+# --- which return ran ------------------------------------------------------------------------------
+
+#: The global the rewritten returns call; set in the user's module before it runs.
+_HOOK = "__trex_answer__"
+
+#: The record of the run in progress: the lines of the returns handed over, in order.
+_RETURN_LINES: ContextVar[list[int | None] | None] = ContextVar("trex_return_lines", default=None)
+
+
+def _answer(line: int | None, value: Any) -> Any:
+    """The hook of a rewritten ``return``: note its line for the run in progress (if any), and
+    hand the value back unchanged."""
+    lines = _RETURN_LINES.get()
+    if lines is not None:
+        lines.append(line)
+    return value
+
+
+def _instrument(tree: ast.Module, name: str) -> int:
+    """Rewrite, in place, the returns of each module-level definition of ``name`` (also under a
+    module-level ``if``/``try``/``with`` …, never inside another function or class); how many
+    definitions were rewritten.
+
+    In a ``def name(...)``, each of its own ``return <value>`` becomes ``return
+    __trex_answer__(<line of the return>, <value>)`` and a bare ``return`` hands over ``None``;
+    returns of functions, lambdas and classes nested in it are untouched, and so are its
+    decorators, defaults and annotations (they are not its body), so ``@tracing.traced`` or any
+    other decorator applies to the rewritten function. A body that can fall off the end gets a
+    last ``return __trex_answer__(None, None)`` with no location, like Python's own implicit
+    return (no line event of its own): no ``return`` ran. For ``name = lambda polygon: <body>``
+    the body is handed over on its own line. The new nodes take the location of the value they
+    wrap (of the ``return``, for a bare one) and the values keep theirs, so tracebacks, the
+    lines of traced calls and shapes made in a ``return`` expression, the line events a
+    debugger or coverage sees and every other line are the file's own.
+
+    At run time the hook (:func:`_answer`) appends the line to the record of the run in
+    progress, a list the wrapper opens per run in a ``ContextVar`` (threads never mix, a run
+    inside a run has its own); the last line recorded is the ``return`` whose value the call
+    returned (a recursive call's returns come before; a ``return`` in ``finally`` after the
+    one it overrides). A heuristic bound under another name (``mine = _impl``), imported from
+    another file, a callable object or a ``functools.partial`` has nothing rewritten: nothing
+    is recorded and its claim carries the line of the wrapper's call of ``claim``.
+
+    >>> tree = ast.parse("def f(p):\\n    if p:\\n        return 1, 3\\n    g = lambda: 0\\n")
+    >>> _instrument(tree, "f"), _instrument(ast.parse("x = 1"), "f")
+    (1, 0)
+    >>> print(ast.unparse(tree))
+    def f(p):
+        if p:
+            return __trex_answer__(3, (1, 3))
+        g = lambda: 0
+        return __trex_answer__(None, None)
+    """
+    count = 0
+    todo: list[ast.AST] = list(tree.body)
+    while todo:
+        node = todo.pop()
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+            if node.name == name:
+                _rewrite_function(node)
+                count += 1
+            continue
+        if isinstance(node, ast.ClassDef):
+            continue
+        targets = (node.targets if isinstance(node, ast.Assign)
+                   else [node.target] if isinstance(node, ast.AnnAssign) else [])
+        value = getattr(node, "value", None)
+        if isinstance(value, ast.Lambda) and any(
+                isinstance(t, ast.Name) and t.id == name for t in targets):
+            value.body = _handed(value.body.lineno, value.body, value.body)
+            count += 1
+            continue
+        todo.extend(child for child in ast.iter_child_nodes(node)
+                    if isinstance(child, ast.stmt | ast.excepthandler | ast.match_case))
+    return count
+
+
+def _rewrite_function(function: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
+    """Hand the function's own returns to the hook; a body that can fall off the end gets a
+    last ``return`` of ``None`` with no line and no location (like Python's implicit one: no
+    line event of its own). Decorators, defaults and annotations are not its body: untouched."""
+    todo: list[ast.AST] = list(function.body)
+    while todo:
+        node = todo.pop()
+        if isinstance(node, ast.Return):
+            node.value = _handed(node.lineno, node.value, node.value or node)
+        if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda | ast.ClassDef):
+            todo.extend(ast.iter_child_nodes(node))
+    if not isinstance(function.body[-1], ast.Return | ast.Raise):
+        last = ast.Return(_handed(None, None, None))
+        for node in ast.walk(last):
+            node.lineno = node.end_lineno = node.col_offset = node.end_col_offset = -1
+        function.body.append(last)
+
+
+def _handed(line: int | None, value: ast.expr | None, where: ast.AST | None) -> ast.Call:
+    """``__trex_answer__(line, value)``, the new nodes placed where ``where`` is (``value``
+    keeps its own place). At the value's place, a multi-line ``return (\n f(x))`` makes no line
+    event on the ``return`` line before ``f(x)`` runs, as it makes none without the hook."""
+    new = [ast.Name(_HOOK, ast.Load()), ast.Constant(line)]
+    if value is None:
+        value = ast.Constant(None)
+        new.append(value)
+    call = ast.Call(new[0], [new[1], value], [])
+    if where is not None:
+        for node in (call, *new):
+            ast.copy_location(node, where)
+    return call
+
+
 # --- running -----------------------------------------------------------------------------------------
 
 
 def _wrap(raw: Callable[[Polygon], Any], name: str, path: Path) -> Callable[[Polygon], Diagonal]:
     """The traced run of the user's function: its answer claimed (entered into the log) on the
-    line of the user's ``return`` (see :func:`_return_line`), so the panel lights that line
-    for the claim and its verdict as it does for our heuristics."""
-    returns, span = _returns_of(raw)
+    line of the user's ``return`` that ran (the last line its rewritten returns recorded in
+    this run; see the module docs), so the panel lights that line for the claim and its
+    verdict as it does for our heuristics."""
 
     def heuristic(polygon: Polygon) -> Diagonal:
         start = len(tracing.events_so_far())
+        lines: list[int | None] = []
+        token = _RETURN_LINES.set(lines)
         try:
             answer = raw(polygon)
         except Exception as exc:
@@ -292,70 +421,17 @@ def _wrap(raw: Callable[[Polygon], Any], name: str, path: Path) -> Callable[[Pol
             where = f" ({path.name}, line {line})" if line else ""
             raise UserHeuristicError(
                 f"{name} raised {type(exc).__name__}: {_message(exc)}{where}") from None
+        finally:
+            _RETURN_LINES.reset(token)
         u, v = endpoints(polygon, answer, name)
-        logged = tracing.events_so_far()[start:]
-        if _claimed(logged, f"{u.label}{v.label}"):
+        if _claimed(tracing.events_so_far()[start:], f"{u.label}{v.label}"):
             return Diagonal(u, v)  # it called claim() itself: the log has it already
-        with tracing.at_line(_return_line(returns, span, logged)):
+        with tracing.at_line(lines[-1] if lines else None):
             return claim(u, v)
 
     heuristic.__name__ = heuristic.__qualname__ = name
     heuristic.__doc__ = raw.__doc__
     return tracing.traced(name=name)(heuristic)
-
-
-def _returns_of(function: Callable[..., Any]) -> tuple[tuple[int, ...], range]:
-    """File lines where the function's own ``return`` statements start (not nested ones), in
-    order, and the range of the function's lines; nothing when its source cannot be read."""
-    try:
-        lines, first = inspect.getsourcelines(function)
-        tree = ast.parse(textwrap.dedent("".join(lines)))
-    except (OSError, TypeError, SyntaxError, ValueError):
-        return (), range(0)
-    defs = [n for n in tree.body if isinstance(n, ast.FunctionDef | ast.AsyncFunctionDef)]
-    if not defs:
-        return (), range(0)
-    found, todo = set(), list(defs[0].body)
-    while todo:
-        node = todo.pop()
-        if isinstance(node, ast.Return):
-            found.add(node.lineno + first - 1)
-        if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda | ast.ClassDef):
-            todo.extend(ast.iter_child_nodes(node))
-    return tuple(sorted(found)), range(first, first + len(lines))
-
-
-def _return_line(
-    returns: tuple[int, ...], span: range, logged: Sequence[tracing.Event]
-) -> int | None:
-    """The line of the ``return`` the function left by, as far as its source and the events
-    it logged tell (``None``: no return statement to name).
-
-    Which return ran is not in the log, and we do not trace the user's lines. With one
-    ``return``, that one. With several, the first at or below the last line of the function
-    that logged something itself (a traced call, a shape, a note: the run's shallowest
-    events; not the exit of a ``with``, which carries the ``with`` line), else the last one.
-    That is right for an early return after a check (the example's ``if not candidates``);
-    it is a guess when a loop with a ``return`` in it runs out, or when the function logs
-    nothing. A function that returns ``claim(u, v)`` itself has its line recorded exactly.
-
-    >>> from tracing import Event
-    >>> logged = [Event(5, "call", "candidates", line=28, depth=1, call=5),
-    ...           Event(6, "return", "candidates", line=28, depth=1, call=5),
-    ...           Event(7, "exit", "polygon", "T(ABC)", line=27, depth=1, call=1)]
-    >>> _return_line((30, 39), range(23, 40), logged), _return_line((30, 39), range(23, 40), [])
-    (30, 39)
-    """
-    if len(returns) < 2:
-        return returns[0] if returns else None
-    depth = min((e.depth for e in logged), default=0)
-    lines = [e.line for e in logged
-             if e.depth == depth and e.kind != "exit" and e.line is not None and e.line in span]
-    if lines:
-        below = [line for line in returns if line >= lines[-1]]
-        if below:
-            return below[0]
-    return returns[-1]
 
 
 def _claimed(events, key: str) -> bool:

@@ -6,6 +6,8 @@ import os
 import sys
 import tempfile
 import textwrap
+import threading
+import types
 from pathlib import Path
 
 import pytest
@@ -128,6 +130,283 @@ def test_several_returns_one_return_and_none_to_name(tmp_path):
     with tracing.record() as log:
         diagonal = load_user_heuristic(f"{partial}:f").run(read_polygon("counterexample"))
     assert diagonal.name == "BD" and len(log.find(kind="call", name="claim")) == 1
+
+
+def _claim_lines(spec: str, polygon: str) -> list:
+    heuristic = load_user_heuristic(spec)
+    with tracing.record() as log:
+        heuristic.run(read_polygon(polygon))
+    return [e.line for e in log.find(name="claim")]
+
+
+def _line_of(path: str, text: str) -> int:
+    """The 1-based line of the file that holds ``text`` (exactly once)."""
+    found = [n for n, line in enumerate(Path(path).read_text().splitlines(), 1) if text in line]
+    assert len(found) == 1, (text, found)
+    return found[0]
+
+
+@pytest.mark.parametrize(("limit", "polygon", "lit"), [
+    (100, "counterexample", "return b.index, (b.index + 2) % polygon.n"),  # the loop runs out
+    (2, "counterexample", "return b.index, (b.index + k) % polygon.n"),  # it returns inside
+])
+def test_a_loop_that_runs_out_lights_the_later_return(tmp_path, limit, polygon, lit):
+    path = write(tmp_path, "loop.py", f"""
+        from geometry.frame import leftmost_vertex
+
+        def scan(polygon):
+            b = leftmost_vertex(polygon)
+            for k in range(2, polygon.n):
+                if k >= {limit}:
+                    return b.index, (b.index + k) % polygon.n
+            return b.index, (b.index + 2) % polygon.n
+    """)
+    assert _claim_lines(f"{path}:scan", polygon) == [_line_of(path, lit)] * 2
+
+
+def test_a_function_that_logs_nothing_lights_the_return_that_ran(tmp_path):
+    path = write(tmp_path, "quiet.py", """
+        def quiet(polygon):
+            if polygon.n > 4:
+                return 1, 3
+            return 0, 2
+    """)
+    assert _claim_lines(f"{path}:quiet", "counterexample") == [_line_of(path, "return 1, 3")] * 2
+    assert _claim_lines(f"{path}:quiet", "square") == [_line_of(path, "return 0, 2")] * 2
+
+
+def test_nested_functions_lambdas_and_classes_keep_their_returns(tmp_path):
+    path = write(tmp_path, "nested.py", """
+        def nested(polygon):
+            def smaller(a, b):
+                if a < b:
+                    return a
+                return b
+
+            class Pick:
+                def first(self):
+                    return 1
+
+            def done():
+                return None
+
+            key = lambda i: -i
+            try:
+                if polygon.n > 4:
+                    return Pick().first(), smaller(3, 4)
+                return sorted([0, 2], key=key)
+            finally:
+                done()
+    """)
+    # done() runs after the return: had its own return been rewritten, it would be lit
+    assert _claim_lines(f"{path}:nested", "counterexample") == [
+        _line_of(path, "return Pick().first(), smaller(3, 4)")] * 2
+    assert _claim_lines(f"{path}:nested", "square") == [
+        _line_of(path, "return sorted([0, 2], key=key)")] * 2
+    # only the heuristic's own code calls the hook
+    raw = load_user_heuristic(f"{path}:nested").raw
+
+    def codes(code):
+        for const in code.co_consts:
+            if isinstance(const, types.CodeType):
+                yield const
+                yield from codes(const)
+
+    inner = {c.co_name: c for c in codes(raw.__code__)}
+    assert {"smaller", "Pick", "first", "done", "<lambda>"} <= set(inner)
+    assert "__trex_answer__" in raw.__code__.co_names
+    assert not [name for name, c in inner.items() if "__trex_answer__" in c.co_names]
+
+
+def test_a_lambda_heuristic_lights_its_line(tmp_path):
+    path = write(tmp_path, "short.py", """
+        from geometry.frame import leftmost_vertex
+
+        first_and_third = lambda polygon: (1, 3)
+        from_b = lambda polygon: (
+            leftmost_vertex(polygon), 3)
+    """)
+    assert _claim_lines(f"{path}:first_and_third", "counterexample") == [
+        _line_of(path, "first_and_third = lambda")] * 2
+    heuristic = load_user_heuristic(f"{path}:from_b")
+    with tracing.record() as log:
+        assert heuristic.run(read_polygon("counterexample")).name == "BD"
+    # the claim on the line where the body starts, the call in it on its own line
+    assert [e.line for e in log.find(name="claim")] == [_line_of(path, "from_b = lambda")] * 2
+    assert [e.line for e in log.find(name="leftmost_vertex")] == [
+        _line_of(path, "leftmost_vertex(polygon), 3)")] * 2
+
+
+def test_decorated_heuristics_run_rewritten(tmp_path):
+    path = write(tmp_path, "decorated.py", """
+        import functools
+
+        import tracing
+        from geometry.frame import leftmost_vertex
+
+        def noted(f):
+            @functools.wraps(f)
+            def wrapper(polygon):
+                tracing.note("noted", n=polygon.n)
+                return f(polygon)
+            return wrapper
+
+        @tracing.traced
+        def traced_one(polygon):
+            b = leftmost_vertex(polygon)
+            for k in range(2, polygon.n):
+                if k > 100:
+                    return b.index, k
+            return b.index, (b.index + 2) % polygon.n
+
+        @noted
+        def noted_one(polygon):
+            if polygon.n > 4:
+                return 1, 3
+            return 0, 2
+    """)
+    spec = f"{path}:traced_one"
+    with tracing.record() as log:
+        load_user_heuristic(spec).run(read_polygon("square"))
+    assert [e.line for e in log.find(name="claim")] == [
+        _line_of(path, "return b.index, (b.index + 2) % polygon.n")] * 2
+    assert [e.depth for e in log.find(kind="call", name="traced_one")] == [0]  # traced once
+    with tracing.record() as log:
+        load_user_heuristic(f"{path}:noted_one").run(read_polygon("counterexample"))
+    assert [e.line for e in log.find(name="claim")] == [_line_of(path, "return 1, 3")] * 2
+    assert [e.line for e in log.find(kind="note", name="noted")] == [
+        _line_of(path, 'tracing.note("noted"')]  # the decorator ran, around the rewritten body
+
+
+def test_the_files_other_lines_are_its_own(tmp_path):
+    path = write(tmp_path, "lines.py", """
+        import tracing
+
+        @tracing.traced
+        def pick(a, b):
+            return a, b
+
+        def shaped(polygon):
+            with tracing.Shape("s", "segment", points=[[0, 0], [1, 1]]) as s:
+                s.update(points=[[0, 0], [2, 2]])
+            if polygon.n == 4:
+                raise RuntimeError("a square")
+            if polygon.n == 3:
+                return (1,
+                        1 // (polygon.n - 3))
+            return (
+                pick(1, 3))
+    """)
+    spec = f"{path}:shaped"
+    heuristic = load_user_heuristic(spec)
+    with tracing.record() as log:
+        heuristic.run(read_polygon("counterexample"))
+    shape = _line_of(path, "tracing.Shape(")
+    assert [(e.kind, e.line) for e in log.find(target="s")] == [
+        ("enter", shape), ("change", shape + 1), ("exit", shape)]
+    assert [e.line for e in log.find(name="pick")] == [_line_of(path, "pick(1, 3))")] * 2
+    assert [e.line for e in log.find(name="claim")] == [_line_of(path, "pick(1, 3))") - 1] * 2
+    # tracebacks name the file's lines, also inside a rewritten return
+    for polygon, text in [("square", 'raise RuntimeError("a square")'),
+                          ("triangle", "1 // (polygon.n - 3))")]:
+        with pytest.raises(UserHeuristicError) as caught:
+            heuristic.run(read_polygon(polygon))
+        assert str(caught.value).endswith(f"(lines.py, line {_line_of(path, text)})")
+    # a debugger or coverage sees the same line events as for the file compiled as it is
+    plain: dict = {}
+    exec(compile(Path(path).read_text(), path, "exec"), plain)
+
+    def line_events(function):
+        seen = []
+
+        def tracer(frame, event, arg):
+            if frame.f_code.co_name == "shaped":
+                seen.append((event, frame.f_lineno))
+            return tracer
+
+        previous = sys.gettrace()
+        sys.settrace(tracer)
+        try:
+            function(read_polygon("counterexample"))
+        finally:
+            sys.settrace(previous)
+        return seen
+
+    assert line_events(heuristic.raw) == line_events(plain["shaped"])
+    assert heuristic.raw.__code__.co_firstlineno == plain["shaped"].__code__.co_firstlineno
+
+
+def test_no_answer_is_one_line_and_the_module_runs_once(tmp_path, monkeypatch):
+    path = write(tmp_path, "none.py", """
+        import os
+
+        with open(os.environ["TREX_TEST_RUNS"], "a") as runs:
+            runs.write("ran\\n")
+
+        def bare(polygon):
+            if polygon.n > 4:
+                return
+            return 1, 3
+
+        def falls_off(polygon):
+            polygon.n
+    """)
+    runs = tmp_path / "runs.txt"
+    monkeypatch.setenv("TREX_TEST_RUNS", str(runs))
+    for name in ("bare", "falls_off"):
+        heuristic = load_user_heuristic(f"{path}:{name}")
+        with pytest.raises(UserHeuristicError) as caught:
+            heuristic.run(read_polygon("counterexample"))
+        assert str(caught.value).startswith(f"{name} returned None: expected a Diagonal")
+    assert _claim_lines(f"{path}:bare", "square") == [_line_of(path, "return 1, 3")] * 2
+    assert runs.read_text() == "ran\n" * 3  # once per load, never twice
+
+
+def test_runs_in_two_threads_keep_their_own_returns(tmp_path):
+    path = write(tmp_path, "threads.py", """
+        import functools
+        import threading
+
+        returned = threading.Event()  # set by the test once `second` has returned
+        waiting = threading.Event()
+
+        def wait_for_the_other(f):
+            @functools.wraps(f)
+            def wrapper(polygon):
+                answer = f(polygon)  # its return line is recorded now …
+                waiting.set()
+                returned.wait(10)  # … and read only after the other thread's return
+                return answer
+            return wrapper
+
+        @wait_for_the_other
+        def first(polygon):
+            return 1, 3
+
+        def second(polygon):
+            return 0, 2
+    """)
+    first, second = (load_user_heuristic(f"{path}:{name}") for name in ("first", "second"))
+    waiting, returned = (first.raw.__globals__[k] for k in ("waiting", "returned"))  # its load
+    seen = {}
+
+    def run_first():
+        with tracing.record() as log:
+            first.run(read_polygon("counterexample"))
+        seen["first"] = [e.line for e in log.find(name="claim")]
+
+    thread = threading.Thread(target=run_first)
+    thread.start()
+    try:
+        assert waiting.wait(10)
+        with tracing.record() as log:
+            second.run(read_polygon("counterexample"))
+        seen["second"] = [e.line for e in log.find(name="claim")]
+    finally:
+        returned.set()
+        thread.join(10)
+    assert seen == {"first": [_line_of(path, "return 1, 3")] * 2,
+                    "second": [_line_of(path, "return 0, 2")] * 2}
 
 
 def test_builtin_logs_get_no_generic_beats():
