@@ -2,22 +2,39 @@
 
 A metaphor module declares ``READS`` (traced name → reading: the beats of that step, see
 :mod:`story.storyboard`) and ``PERFORMS`` (beat kind → performer: ``(board, beat)``, the
-animations that play it). A new metaphor is one module, named here once. A beat with no
-performer plays as its caption only.
+animations that play it). The registry names each algorithm's metaphor
+(:attr:`story.registry.Entry.metaphor`, the module's name in this package), so a new
+metaphor is one module plus its registry entry; the frame every run shares (``basics``) and
+a heuristic of one's own (``generic``) are always read. A beat with no performer plays as
+its caption only.
+
+>>> [m.__name__ for m in MODULES]  # doctest: +NORMALIZE_WHITESPACE
+['metaphors.basics', 'metaphors.water', 'metaphors.clock', 'metaphors.sweep',
+ 'metaphors.gravity', 'metaphors.pieces', 'metaphors.fruit', 'metaphors.monotone',
+ 'metaphors.generic']
 """
 
 from __future__ import annotations
 
+import importlib
 from collections.abc import Mapping
-from types import MappingProxyType
+from types import MappingProxyType, ModuleType
 
-from metaphors import basics, clock, fruit, generic, gravity, monotone, pieces, sweep, water
+from metaphors import basics, generic
 from story.beats import Beat
+from story.registry import REGISTRY
 from story.storyboard import Pacing, Reading, storyboard
 from tracing import Log
 
+
+def _registered() -> tuple[ModuleType, ...]:
+    """The modules of the registry's metaphors, in the registry's order."""
+    names = dict.fromkeys(e.metaphor for e in REGISTRY.values() if e.metaphor)
+    return tuple(importlib.import_module(f"{__package__}.{name}") for name in names)
+
+
 #: the metaphor modules: the frame every run shares first, a heuristic of one's own last
-MODULES = (basics, water, clock, sweep, gravity, pieces, fruit, monotone, generic)
+MODULES = (basics, *_registered(), generic)
 
 
 def _merged(tables) -> Mapping:

@@ -73,9 +73,10 @@ class Entry:
         triangulation's triangles always triangulate the polygon (divide and conquer: with
         a correct heuristic).
     metaphor : str or None
-        The physical picture the video plays: ``water``, ``clock``, ``sweep``,
-        ``gravity``, ``fruit``, ``monotone``; None when it has none of its own (divide and
-        conquer plays its heuristic's; the reference triangulation is drawn plainly).
+        The physical picture the video plays, as the module of :mod:`metaphors` that reads
+        and performs its steps: ``water``, ``clock``, ``sweep``, ``gravity``, ``fruit``,
+        ``monotone``, ``pieces`` (divide and conquer's split; each diagonal plays its
+        heuristic's metaphor); None for the reference triangulation, drawn plainly.
     shown : str
         The traced function whose source the panel shows (a name the log carries).
     polygon : str
@@ -158,7 +159,7 @@ _ENTRIES = (
     _heuristic("gravity", correct=True, metaphor="gravity", polygon="gravity-snag",
                title="Gravity: a ball on a rubber band finds a diagonal", shown="gravity_at"),
     # --- triangulations (thesis ch. 2.2-2.4) -----------------------------------------------------
-    _triangulation("divide-and-conquer", metaphor=None, shown="divide_and_conquer",
+    _triangulation("divide-and-conquer", metaphor="pieces", shown="divide_and_conquer",
                    title="Divide and conquer (Lennes): split along inner diagonals"),
     _triangulation("ear-clipping-naive", metaphor="fruit",
                    title="Ear clipping (Meisters): slice the first ear found"),
