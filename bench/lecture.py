@@ -2,9 +2,8 @@
 
 Each run is the real command (``trex lecture -q l -j N -o <temp>``) in a process of its own,
 timed from start to exit; both write into a temporary directory that is removed afterwards.
-The chapters are the lecture's own (``metaphors.lecture.CHAPTERS``); ``--chapters`` picks
-slugs or scenes instead (``--chapters scaling,polygon``), which is also the fallback while
-the lecture has no chapter list. Prints numbers only; the last line is
+The chapters are the lecture's own (``scenes/chapters/``); ``--chapters`` picks
+slugs or scenes instead (``--chapters scaling,polygon``). Prints numbers only; the last line is
 
     lecture: NNN.N s of video, serial NN.N s, -j 2 NN.N s (N.NNx)
 
@@ -15,15 +14,12 @@ from __future__ import annotations
 
 import argparse
 import hashlib
-import importlib.util
 import json
 import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
-
-FALLBACK = "polygon,translation,scaling"  # while metaphors/lecture.py does not exist
 
 
 def frame_sums(path: Path) -> list[str]:
@@ -58,9 +54,6 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("-q", "--quality", default="l", choices=list("lmhk"))
     args = parser.parse_args(argv)
     chapters = args.chapters
-    if chapters is None and importlib.util.find_spec("metaphors.lecture") is None:
-        chapters = FALLBACK
-        print(f"no metaphors/lecture.py yet: chapters {chapters}")
     trex = Path(sys.executable).with_name("trex")
     with tempfile.TemporaryDirectory(prefix="bench-lecture-") as temp:
         serial_dir, parallel_dir = Path(temp) / "serial", Path(temp) / "parallel"

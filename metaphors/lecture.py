@@ -1,10 +1,11 @@
-"""The lecture: seven chapters in the Forišek–Steinová structure, each its own scene file.
+"""How a lecture chapter plays: its segments in order, as one Manim section.
 
 A chapter is a list of segments (plain data): a card of text, a run of an algorithm
 played by the metaphor scenes, the reference triangulation beside ours, or an exercise
-(question, a pause with a countdown, the answer animated). :class:`LectureScene` plays a
-chapter's segments as one Manim section; ``trex lecture`` renders the chapters (in
-parallel) and joins them.
+(question, a pause with a countdown, the answer animated). The chapters themselves — what
+they say and show — are the scene files ``scenes/chapters/ch<k>_<slug>.py``, each a
+:class:`LectureScene` naming its segments; ``trex lecture`` renders them (in parallel) and
+joins them.
 """
 
 from __future__ import annotations
@@ -17,8 +18,6 @@ from geometry.cdt import constrained_delaunay
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
-from geometry.polygon import Polygon
-from geometry.samples import make_sample
 from geometry.triangulate import triangulate
 from metaphors import catalog
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
@@ -29,24 +28,11 @@ from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
 from story.exercises import Exercise, make_exercises
-from story.registry import entry
-from story.runs import run_logged
 from story.spec import RunSpec
 from story.storyboard import Pacing
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
-
-
-@dataclass(frozen=True)
-class Chapter:
-    """One chapter: its own scene file and class, and its place in the lecture."""
-
-    number: int
-    slug: str
-    title: str
-    scene_file: str
-    scene_class: str
 
 
 @dataclass(frozen=True)
@@ -96,34 +82,15 @@ class Quiz:
     think: int = 3  # seconds of countdown
 
 
-def working_example(heuristic: str, n: int = 9, tries: int = 500) -> str:
-    """A seeded random polygon where a wrong heuristic happens to claim an inner diagonal,
-    with at least two candidates in T so the choice matters (deterministic search).
-
-    >>> working_example("scaling")
-    'random-2opt:9:3'
-    """
-    for seed in range(tries):
-        spec = f"random-2opt:{n}:{seed}"
-        polygon = Polygon.from_points(make_sample("random-2opt", n, seed))
-        log = run_logged(heuristic, spec)
-        candidates = next((e.result for e in log.events
-                           if e.kind == "return" and e.name == "candidates_in_triangle"), [])
-        if len(candidates or []) >= 2 and is_inner_diagonal(
-                polygon, *find_diagonal(polygon, heuristic).pair):
-            return spec
-    raise LookupError(f"no polygon among {tries} seeds where {heuristic} works")
-
-
 class LectureScene(TraceScene):
     """Plays one chapter: its segments in order, as one Manim section."""
 
     chapter_title = "Chapter"
-    slug = "overview"
     polygon = "lecture"  # the lecture's polygon, unless one is handed (trex lecture --polygon)
 
     def chapter_segments(self) -> tuple:
-        return SEGMENTS[self.slug]()
+        """The chapter's segments, in order (a chapter's scene file says them)."""
+        raise NotImplementedError(f"{type(self).__name__} names no segments")
 
     def lecture_polygon(self) -> str:
         """The polygon of the runs that name none: the handed one, else ``TREX_POLYGON``
@@ -247,186 +214,3 @@ class LectureScene(TraceScene):
         if exercise.kind == "claim" and exercise.heuristic:
             return (find_diagonal(exercise.polygon, exercise.heuristic).pair,)
         return ()
-
-
-# --- the chapters ---------------------------------------------------------------------------------
-
-#: The wrong heuristic of each metaphor, told in three cards: the metaphor, why it fails, and
-#: why its correction (the registry's) holds. The family is named after the metaphor.
-FAMILIES = (
-    ("scaling",
-     ("Spill water at B: it spreads as a growing circle.",
-      "The first candidate it wets is D, the nearest one."),
-     ("The circle grows through the walls of the polygon:",
-      "it wets D from outside, before any water could get there from inside.",
-      "The edge E–A lies between B and D."),
-     ("Go backwards: let water rise from the shore AC towards B.",
-      "The last dry candidate is the farthest from AC — always an inner diagonal:",
-      "below that level nothing blocks the way from B.")),
-    ("rotation",
-     ("Put a clock at B, set the hand to A and let it turn towards C.",
-      "The first candidate the hand passes is D."),
-     ("Part of the hand lies outside the polygon when it passes D:",
-      "that outside part hits D first. The hand is not inside T all the time."),
-     ("Move the clock to C and set it to B.",
-      "Before any part of the hand inside T leaves the polygon, it must pass a vertex:",
-      "the first one forms an inner diagonal with B.")),
-    ("translation",
-     ("Sweep a vertical line from B to the right.",
-      "The first candidate it touches is D, the left-most."),
-     ("The vertical line leaves the polygon at A's side before it reaches D:",
-      "the part outside the polygon touches D first."),
-     ("Sweep a line parallel to AC instead.",
-      "It reaches A and C at the same moment it leaves T,",
-      "so the first vertex it touches is a candidate, seen from inside.")),
-)
-
-
-def family_segments(family: tuple) -> tuple:
-    wrong, metaphor, analysis, correction = family
-    known = entry(wrong)
-    if known.correct or known.correction is None:
-        raise ValueError(f"{wrong} is no wrong heuristic with a correction")
-    name, right = known.metaphor.capitalize(), known.correction
-    return (
-        Card(f"{name}: the metaphor", metaphor),
-        Run(wrong, working_example(wrong), f"{wrong} on a polygon where it happens to work"),
-        Run(wrong, "counterexample", f"{wrong} on the counterexample"),
-        Card(f"{name}: why it fails", analysis),
-        Run(right, "counterexample", f"{right}: the correction"),
-        Card(f"{name}: why the correction holds", correction),
-    )
-
-
-CHAPTERS = tuple(
-    Chapter(k, slug, title, f"scenes/chapters/ch{k}_{slug}.py", cls)
-    for k, (slug, title, cls) in enumerate(
-        (
-            ("overview", "Overview", "Overview"),
-            ("heuristics", "Inner diagonals: water, clock, sweep", "Heuristics"),
-            ("gravity", "Gravity", "Gravity"),
-            ("ears", "Ears", "Ears"),
-            ("faster", "Faster algorithms", "Faster"),
-            ("experience", "Experience", "Experience"),
-            ("exercises", "Exercises", "Exercises"),
-        ),
-        start=1,
-    )
-)
-
-
-def overview() -> tuple:
-    return (
-        Card("Triangulating a simple polygon", (
-            "A simple polygon: its edges meet only where neighbours share a vertex.",
-            "A diagonal joins two vertices; an inner diagonal lies inside the polygon.",
-            "Every simple polygon with n vertices splits into exactly n − 2 triangles.")),
-        Card("Lennes, 1911: divide and conquer", (
-            "Find an inner diagonal, split the polygon along it, repeat on both halves.",
-            "Everything hinges on one question: how do we find an inner diagonal?")),
-        Run("divide-and-conquer", None, "Lennes' divide and conquer (diagonals by gravity)",
-            heuristic="gravity", speed=0.6),
-    )
-
-
-def heuristics() -> tuple:
-    frame = Card("The frame every heuristic shares", (
-        "B: the left-most vertex (lowest on ties) — always convex.",
-        "A and C: its neighbours; T = triangle ABC.",
-        "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate D: is BD?"))
-    return (frame, *[s for family in FAMILIES for s in family_segments(family)])
-
-
-def gravity() -> tuple:
-    return (
-        Card("Gravity (Forišek and Steinová)", (
-            "Hang a ball on a rubber band at a reflex vertex V.",
-            "Turn the polygon so that both edges at V point up, and let the ball drop.",
-            "It hits an edge and slides down to a vertex X; the band may snag a vertex Y first.")),
-        Run("gravity", "gravity-snag", "Gravity: the band snags a vertex"),
-        Card("Why the band is always right", (
-            "The band stays inside the polygon the whole time:",
-            "the first vertex it touches is seen from V through the inside.",
-            "So VY — or VX when the band stays straight — is an inner diagonal.")),
-        Run("gravity", "counterexample", "Gravity on the counterexample"),
-    )
-
-
-def ears() -> tuple:
-    return (
-        Card("Ears: slicing fruit", (
-            "An ear: three consecutive vertices whose triangle holds no other vertex.",
-            "Slice an ear off, put it on the plate, repeat until one triangle is left.")),
-        Run("ear-clipping-naive", None, "Ear clipping (Meisters): slice the first ear found",
-            box=FRUIT_BOX, speed=0.6),
-        Card("The two-ears theorem (Meisters, 1975)", (
-            "Every simple polygon with more than three vertices has two ears",
-            "that do not overlap — so there is always a slice to cut.",
-            "Testing every vertex: O(n²) for one ear, O(n³) for all.")),
-        Card("Prune and search (ElGindy, Everett, Toussaint)", (
-            "Test the middle vertex of a good sub-polygon (one cut edge).",
-            "Not an ear? Its diagonal cuts off a smaller good sub-polygon — keep that half.",
-            "About half the vertices go each time: one ear in O(n).")),
-        Run("prune-and-search", None, "Prune and search: the good sub-polygons shrink",
-            box=FRUIT_BOX, speed=0.5),
-        Card("How fast", (
-            "Ear clipping, naive: O(n³). With ear status kept up to date: O(n²).",
-            "Finding one ear by prune and search: O(n); clipping them all: O(n²).")),
-    )
-
-
-def faster() -> tuple:
-    return (
-        Card("Garey, Johnson, Preparata, Tarjan (1978)", (
-            "Sweep a horizontal line downwards; classify each vertex.",
-            "Diagonals at split and merge vertices cut the polygon into y-monotone pieces.",
-            "A stack triangulates each piece in linear time: O(n log n) in all.")),
-        Run("monotone", None, "Monotone partition, then the stack", speed=0.7),
-        Card("Tarjan and van Wyk (1988)", (
-            "O(n log log n), with finger trees and Jordan sorting;",
-            "Kirkpatrick, Klawe and Tarjan matched it with simple data structures (1990).")),
-        Card("Chazelle (1991)", (
-            "Linear time: O(n). Correct, celebrated — and famously hard to implement.",
-            "No implementation is known to be practical.")),
-        Card("Constrained Delaunay", (
-            "Delaunay triangulation of the vertices, keeping the polygon's edges:",
-            "the reference triangulation libraries use (here: shapely / GEOS).")),
-        Compare(None),
-    )
-
-
-def experience() -> tuple:
-    return (
-        Card("Teaching notes: the wrong heuristics first", (
-            "Let students propose a way to find D before showing any.",
-            "Almost everyone proposes the nearest or the left-most vertex.",
-            "The counterexample needs only five vertices: draw it on the board.")),
-        Card("Teaching notes: metaphors", (
-            "Water, a clock, a sweeping line: each wrong heuristic is a familiar motion.",
-            "Ask where the motion leaves the polygon — that is the bug.",
-            "The corrections keep the motion inside T and inside the polygon.")),
-        Card("Teaching notes: from metaphor to proof", (
-            "Kinesthetic heuristics are fast to invent and easy to get wrong.",
-            "Ask for the invariant: what does the water, hand or line never cross?",
-            "Then write the proof with that invariant.")),
-    )
-
-
-def exercises() -> tuple:
-    return (
-        Card("Exercises", (
-            "Each question shows a polygon and its triangle T.",
-            "Answer before the countdown ends; the answer is checked by the geometry code.")),
-        Quiz(count=3, seed=2022),
-    )
-
-
-SEGMENTS = {
-    "overview": overview,
-    "heuristics": heuristics,
-    "gravity": gravity,
-    "ears": ears,
-    "faster": faster,
-    "experience": experience,
-    "exercises": exercises,
-}

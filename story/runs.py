@@ -11,8 +11,11 @@ live run or from a saved JSON file, and cannot tell the difference.
 from __future__ import annotations
 
 import tracing
+from geometry.check import is_inner_diagonal
+from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
+from geometry.samples import make_sample
 from geometry.triangulate import triangulate
 from geometry.user_heuristics import is_user_spec, load_user_heuristic
 from story.registry import REGISTRY, shown
@@ -65,3 +68,22 @@ def _run_user(spec: str, polygon: str) -> tracing.Log:
     with tracing.record(**meta) as log:
         heuristic.run(p)
     return log
+
+
+def working_example(heuristic: str, n: int = 9, tries: int = 500) -> str:
+    """A seeded random polygon where a wrong heuristic happens to claim an inner diagonal,
+    with at least two candidates in T so the choice matters (deterministic search).
+
+    >>> working_example("scaling")
+    'random-2opt:9:3'
+    """
+    for seed in range(tries):
+        spec = f"random-2opt:{n}:{seed}"
+        polygon = Polygon.from_points(make_sample("random-2opt", n, seed))
+        log = run_logged(heuristic, spec)
+        candidates = next((e.result for e in log.events
+                           if e.kind == "return" and e.name == "candidates_in_triangle"), [])
+        if len(candidates or []) >= 2 and is_inner_diagonal(
+                polygon, *find_diagonal(polygon, heuristic).pair):
+            return spec
+    raise LookupError(f"no polygon among {tries} seeds where {heuristic} works")

@@ -62,7 +62,7 @@ BROKEN = textwrap.dedent("""
 
 
 @dataclass(frozen=True)
-class Chapter:  # the shape of metaphors.lecture.Chapter
+class Chapter:  # the shape of trex.lecture_command.Chapter
     number: int
     slug: str
     title: str
@@ -433,9 +433,9 @@ def _chapter_class(chapter):
 
 
 def _chapters():
-    from metaphors.lecture import CHAPTERS
+    from trex.lecture_command import lecture_chapters
 
-    return [pytest.param(c, id=c.slug) for c in CHAPTERS]
+    return [pytest.param(c, id=c.slug) for c in lecture_chapters()]
 
 
 @pytest.mark.parametrize("chapter", _chapters())

@@ -1,7 +1,7 @@
 """``trex lecture``: every chapter rendered, in parallel, then joined into one lecture.
 
-The chapters are ``metaphors.lecture.CHAPTERS`` (``--chapters`` picks some of them by slug,
-or names scenes to play as chapters instead). Each chapter renders in a process of its own,
+The chapters are the scene files ``scenes/chapters/ch<k>_<slug>.py`` (``--chapters`` picks
+some of them by slug, or names scenes to play as chapters instead). Each chapter renders in a process of its own,
 ``python -m trex.lecture_command`` (:func:`render_chapter`: ``render_into`` of
 ``trex render``, so each has its own temporary media directory), at most ``-j`` at a time.
 When all are done, :mod:`trex.assemble` joins them: one mp4 (packets remuxed, not
@@ -56,6 +56,7 @@ from trex.render_command import (
 )
 
 REPO = SCENES_DIR.parent
+CHAPTERS_DIR = SCENES_DIR / "chapters"
 DEFAULT_DIR = Path("media") / "lecture"
 VIDEO, SUBTITLES, LIST_JSON, LIST_MD, CHAPTER_DIR = (
     "lecture.mp4", "lecture.srt", "chapters.json", "chapters.md", "chapters")
@@ -65,9 +66,9 @@ STOP_WAIT = 20.0  # seconds a stopped render may take to clean up before it is k
 
 
 @dataclass(frozen=True)
-class SceneChapter:
-    """A scene played as a chapter (``--chapters scaling,polygon``); the fields of
-    ``metaphors.lecture.Chapter``, which the lecture's own chapters are."""
+class Chapter:
+    """A chapter: its place in the lecture, its slug and title, its scene file and class
+    (None: the file's first)."""
 
     number: int
     slug: str
@@ -76,15 +77,29 @@ class SceneChapter:
     scene_class: str | None
 
 
+SceneChapter = Chapter  # a scene played as a chapter (``--chapters scaling,polygon``)
+
+
 class ChapterFailed(Exception):
     """A chapter could not be rendered (its one-line reason is the message)."""
 
 
-def lecture_chapters() -> tuple:
-    """The lecture's chapters (imported only when asked for)."""
-    from metaphors.lecture import CHAPTERS
-
-    return tuple(CHAPTERS)
+def lecture_chapters() -> tuple[Chapter, ...]:
+    """The lecture's chapters: the scene files ``scenes/chapters/ch<k>_<slug>.py``, in the
+    order of ``k``, each titled by its class's ``chapter_title`` (``"3. Gravity"``: the part
+    after the number). Loading them imports manim, so only when asked for."""
+    found = []
+    for path in CHAPTERS_DIR.glob("ch*_*.py"):
+        number, _, slug = path.stem[2:].partition("_")
+        if number.isdigit():
+            found.append((int(number), slug.replace("_", "-"), path))
+    chapters = []
+    for number, slug, path in sorted(found):
+        cls = load_scene_class(path, None)
+        title = str(getattr(cls, "chapter_title", slug)).partition(". ")
+        chapters.append(Chapter(number, slug, title[2] or title[0], str(path.relative_to(REPO)),
+                                cls.__name__))
+    return tuple(chapters)
 
 
 def pick_chapters(spec: str, chapters: Sequence | None) -> list:

@@ -3,9 +3,22 @@
 Run: ``manim -pql scenes/chapters/ch1_overview.py``; the whole lecture: ``trex lecture``.
 """
 
-from metaphors.lecture import LectureScene
+from metaphors.lecture import Card, LectureScene, Run
 
 
 class Overview(LectureScene):
     chapter_title = "1. Overview"
     slug = "overview"
+
+    def chapter_segments(self) -> tuple:
+        return (
+            Card("Triangulating a simple polygon", (
+                "A simple polygon: its edges meet only where neighbours share a vertex.",
+                "A diagonal joins two vertices; an inner diagonal lies inside the polygon.",
+                "Every simple polygon with n vertices splits into exactly n − 2 triangles.")),
+            Card("Lennes, 1911: divide and conquer", (
+                "Find an inner diagonal, split the polygon along it, repeat on both halves.",
+                "Everything hinges on one question: how do we find an inner diagonal?")),
+            Run("divide-and-conquer", None, "Lennes' divide and conquer (diagonals by gravity)",
+                heuristic="gravity", speed=0.6),
+        )

@@ -3,9 +3,31 @@
 Run: ``manim -pql scenes/chapters/ch4_ears.py``; the whole lecture: ``trex lecture``.
 """
 
-from metaphors.lecture import LectureScene
+from metaphors.lecture import FRUIT_BOX, Card, LectureScene, Run
 
 
 class Ears(LectureScene):
     chapter_title = "4. Ears"
     slug = "ears"
+
+    def chapter_segments(self) -> tuple:
+        return (
+            Card("Ears: slicing fruit", (
+                "An ear: three consecutive vertices whose triangle holds no other vertex.",
+                "Slice an ear off, put it on the plate, repeat until one triangle is left.")),
+            Run("ear-clipping-naive", None, "Ear clipping (Meisters): slice the first ear found",
+                box=FRUIT_BOX, speed=0.6),
+            Card("The two-ears theorem (Meisters, 1975)", (
+                "Every simple polygon with more than three vertices has two ears",
+                "that do not overlap — so there is always a slice to cut.",
+                "Testing every vertex: O(n²) for one ear, O(n³) for all.")),
+            Card("Prune and search (ElGindy, Everett, Toussaint)", (
+                "Test the middle vertex of a good sub-polygon (one cut edge).",
+                "Not an ear? Its diagonal cuts off a smaller good sub-polygon — keep that half.",
+                "About half the vertices go each time: one ear in O(n).")),
+            Run("prune-and-search", None, "Prune and search: the good sub-polygons shrink",
+                box=FRUIT_BOX, speed=0.5),
+            Card("How fast", (
+                "Ear clipping, naive: O(n³). With ear status kept up to date: O(n²).",
+                "Finding one ear by prune and search: O(n); clipping them all: O(n²).")),
+        )
