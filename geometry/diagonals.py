@@ -16,9 +16,9 @@ Each step is a traced call a scene maps to its metaphor: ``leftmost_vertex``,
 ``last_dry`` (water rising from the shore), ``nearest_visible`` /
 ``sees`` (water that respects walls), and for gravity ``reflex_vertex``,
 ``gravity_direction``, ``drop_ball``, ``slide_to_vertex``, ``band_snag``.
-Temporary drawables (the water disk, the clock hand, the sweep line, the
-ball, the band) are :class:`tracing.Shape` objects whose change events carry
-the radii, angles, offsets and points the scene animates.
+Each logs its arguments and its pick, nothing drawn: how far the water, the
+hand or the line travels to each candidate is the storyboard's to compute
+(:mod:`story.reach`).
 
 Examples
 --------
@@ -32,7 +32,6 @@ Examples
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from functools import cmp_to_key
 
@@ -79,21 +78,13 @@ def _ranked(
     return sorted(candidates, key=cmp_to_key(compare))
 
 
-def _distance(p, q) -> float:
-    return math.hypot(q[0] - p[0], q[1] - p[1])
-
-
 # --- water: scaling ------------------------------------------------------------------------------
 
 
 @tracing.traced(exclude_args=("n",))
 def nearest_to(b: Vertex, candidates: list[Vertex], n: int) -> Vertex:
     """Water spilled at B spreads as a growing circle; the first candidate it wets is D."""
-    order = _ranked(candidates, lambda u, v: 0, b, n, b.index)
-    with tracing.Shape("water", "circle", center=list(b.point), radius=0.0) as water:
-        for v in order:
-            water.update(radius=_distance(b.point, v.point), reached=v.label)
-    return order[0]
+    return _ranked(candidates, lambda u, v: 0, b, n, b.index)[0]
 
 
 @tracing.traced(exclude_args=("n",))
@@ -103,17 +94,7 @@ def last_dry(t: Triangle, candidates: list[Vertex], n: int) -> Vertex:
     def rule(u: Vertex, v: Vertex) -> int:  # farther from AC first
         return -compare_line_distance(t.a.point, t.c.point, u.point, v.point)
 
-    order = _ranked(candidates, rule, t.b, n, t.b.index)
-    shore = [list(t.a.point), list(t.c.point)]
-    with tracing.Shape("flood", "band", shore=shore, towards=list(t.b.point), level=0.0) as flood:
-        for v in reversed(order):
-            flood.update(level=_line_distance(t.a.point, t.c.point, v.point), reached=v.label)
-    return order[0]
-
-
-def _line_distance(a, c, p) -> float:
-    cross = (c[0] - a[0]) * (p[1] - a[1]) - (c[1] - a[1]) * (p[0] - a[0])
-    return abs(cross) / _distance(a, c)
+    return _ranked(candidates, rule, t.b, n, t.b.index)[0]
 
 
 @tracing.traced
@@ -127,12 +108,9 @@ def nearest_visible(polygon: Polygon, t: Triangle) -> Vertex:
     """Water that respects the walls: the vertex nearest to B among those B sees (not A, C)."""
     b, n = t.b, polygon.n
     others = [polygon.vertex((b.index + k) % n) for k in range(2, n - 1)]
-    order = _ranked(others, lambda u, v: 0, b, n, b.index)
-    with tracing.Shape("water", "circle", center=list(b.point), radius=0.0, walled=True) as water:
-        for v in order:
-            water.update(radius=_distance(b.point, v.point), reached=v.label)
-            if sees(polygon, b, v):
-                return v
+    for v in _ranked(others, lambda u, v: 0, b, n, b.index):
+        if sees(polygon, b, v):
+            return v
     raise AssertionError("a convex vertex with candidates always sees one")  # thesis, lemma 2
 
 
@@ -146,23 +124,7 @@ def first_hit_rotating(centre: Vertex, start: Vertex, candidates: list[Vertex], 
     def rule(u: Vertex, v: Vertex) -> int:
         return compare_angle(centre.point, start.point, u.point, v.point)
 
-    order = _ranked(candidates, rule, centre, n, centre.index)
-    base = _heading(centre.point, start.point)
-    with tracing.Shape(
-        "hand", "ray", origin=list(centre.point), heading=base, angle=0.0
-    ) as hand:
-        for v in order:
-            turned = abs(_wrap_degrees(_heading(centre.point, v.point) - base))
-            hand.update(angle=turned, reached=v.label)
-    return order[0]
-
-
-def _heading(p, q) -> float:
-    return math.degrees(math.atan2(q[1] - p[1], q[0] - p[0]))
-
-
-def _wrap_degrees(a: float) -> float:
-    return (a + 180.0) % 360.0 - 180.0
+    return _ranked(candidates, rule, centre, n, centre.index)[0]
 
 
 # --- sweep: translation --------------------------------------------------------------------------
@@ -184,19 +146,7 @@ def first_hit_sweeping(
         def rule(u: Vertex, v: Vertex) -> int:
             return -compare_line_distance(shore.a.point, shore.c.point, u.point, v.point)
 
-    order = _ranked(candidates, rule, b, n, b.index)
-    with tracing.Shape(
-        "sweep", "line", through=list(b.point), direction=direction, offset=0.0
-    ) as line:
-        for v in order:
-            line.update(offset=_sweep_offset(b.point, direction, v.point), reached=v.label)
-    return order[0]
-
-
-def _sweep_offset(b, direction, p) -> float:
-    """Signed distance the line through b (along direction) travels to reach p."""
-    dx, dy = direction
-    return abs(dx * (p[1] - b[1]) - dy * (p[0] - b[0])) / math.hypot(dx, dy)
+    return _ranked(candidates, rule, b, n, b.index)[0]
 
 
 # --- the heuristics ------------------------------------------------------------------------------

@@ -19,7 +19,9 @@ from manim import DEGREES, Circle, Dot, FadeIn, FadeOut, Line, Rotate, VGroup
 from metaphors.sweep import follower, light
 from metaphors.tags import tag
 from story.beats import Beat, beat_kind
-from story.storyboard import read_shape
+from story.reach import heading
+from story.storyboard import Walk, read_step
+from tracing import Event
 
 
 @beat_kind("clock")
@@ -115,5 +117,16 @@ def _unit(v) -> np.ndarray:
     return v / np.linalg.norm(v)
 
 
-READS = {"first_hit_rotating": read_shape(Clock, "hand", "The clock hand turns; the first candidate it passes is {result}")}
+def _turn(walk: Walk, call: Event, ret: Event) -> dict:
+    """The hand set to the start, then at each candidate it passes (:func:`story.reach.turning`)."""
+    where = walk.root_points()
+    centre = where[call.args["centre"]["ref"]]
+    hand = {"kind": "ray", "origin": centre,
+            "heading": heading(centre, where[call.args["start"]["ref"]])}
+    return {"states": [{**hand, "angle": 0.0},
+                       *({**hand, "angle": a, "reached": v} for v, a in walk.reach(call, ret))]}
+
+
+READS = {"first_hit_rotating": read_step(
+    Clock, "The clock hand turns; the first candidate it passes is {result}", _turn)}
 PERFORMS = {Clock: clock}

@@ -34,7 +34,8 @@ from metaphors.layout import METAPHOR
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
-from story.storyboard import read_shape
+from story.storyboard import Walk, read_step
+from tracing import Event
 
 
 @beat_kind("sweep")
@@ -296,5 +297,14 @@ def _cut(start, end, box):
     return _3d(cut.coords[0]), _3d(cut.coords[-1])
 
 
-READS = {"first_hit_sweeping": read_shape(Sweep, "sweep", "The line sweeps across T; the first candidate it touches is {result}")}
+def _move(walk: Walk, call: Event, ret: Event) -> dict:
+    """The line through B, then at each candidate it touches (:func:`story.reach.sweeping`)."""
+    line = {"kind": "line", "through": walk.root_points()[call.args["b"]["ref"]],
+            "direction": call.args["direction"]}
+    return {"states": [{**line, "offset": 0.0},
+                       *({**line, "offset": d, "reached": v} for v, d in walk.reach(call, ret))]}
+
+
+READS = {"first_hit_sweeping": read_step(
+    Sweep, "The line sweeps across T; the first candidate it touches is {result}", _move)}
 PERFORMS = {Sweep: sweep}

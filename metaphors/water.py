@@ -13,7 +13,8 @@ from manim import Polygon as MPolygon
 from geometry.visibility import visible_region
 from metaphors.tags import tag
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk, read_shape, show
+from story.reach import distance
+from story.storyboard import Walk, read_step, show
 from tracing import Event
 
 
@@ -43,10 +44,36 @@ class Flood(Beat):
     result: str
 
 
-def _visible(walk: Walk, call: Event, ret: Event) -> dict:
-    inside = walk.log.events[call.seq:ret.seq]
-    sees = [e for e in inside if e.kind == "call" and e.name == "sees"]
-    return {"visible": [(show(s.args["v"]), bool(walk.returns[s.seq].result)) for s in sees]}
+def _spread(walk: Walk, call: Event, ret: Event) -> dict:
+    """The disk through each candidate in the order it wets them (:func:`story.reach.spreading`)."""
+    centre = walk.root_points()[call.args["b"]["ref"]]
+    disk = {"kind": "circle", "center": centre}
+    return {"states": [{**disk, "radius": 0.0},
+                       *({**disk, "radius": r, "reached": v} for v, r in walk.reach(call, ret))]}
+
+
+def _walled(walk: Walk, call: Event, ret: Event) -> dict:
+    """The disk through each vertex B was tested to see, nearest first, until one was seen."""
+    where = walk.root_points()
+    labels = walk.entered_after(call, call.args["t"]["ref"])["labels"]
+    centre = where[labels[1]]
+    disk = {"kind": "circle", "center": centre, "walled": True}
+    sees = [e for e in walk.log.events[call.seq:ret.seq] if e.kind == "call" and e.name == "sees"]
+    reached = [show(s.args["v"]) for s in sees]
+    return {"states": [{**disk, "radius": 0.0},
+                       *({**disk, "radius": distance(centre, where[v]), "reached": v}
+                         for v in reached)],
+            "visible": [(v, bool(walk.returns[s.seq].result)) for v, s in
+                        zip(reached, sees, strict=True)]}
+
+
+def _rise(walk: Walk, call: Event, ret: Event) -> dict:
+    """The band rising from AC through each candidate, the last one dry (:func:`story.reach.rising`)."""
+    t = walk.entered_after(call, call.args["t"]["ref"])
+    a, b, c = t["points"]
+    band = {"kind": "band", "shore": [a, c], "towards": b}
+    return {"states": [{**band, "level": 0.0},
+                       *({**band, "level": h, "reached": v} for v, h in walk.reach(call, ret))]}
 
 
 def _disk(board, center, radius: float):
@@ -134,11 +161,11 @@ def _strip(a, c, towards, level: float):
 
 
 READS = {
-    "nearest_to": read_shape(
-        Water, "water", "Water spilled at B spreads; the first candidate it wets is {result}"),
-    "nearest_visible": read_shape(
-        WalledWater, "water", "Water that respects the walls reaches {result} first", _visible),
-    "last_dry": read_shape(
-        Flood, "flood", "Water rises from the shore AC; the last dry candidate is {result}"),
+    "nearest_to": read_step(
+        Water, "Water spilled at B spreads; the first candidate it wets is {result}", _spread),
+    "nearest_visible": read_step(
+        WalledWater, "Water that respects the walls reaches {result} first", _walled),
+    "last_dry": read_step(
+        Flood, "Water rises from the shore AC; the last dry candidate is {result}", _rise),
 }
 PERFORMS = {Water: water, WalledWater: walled_water, Flood: flood}

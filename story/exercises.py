@@ -5,7 +5,8 @@ Three kinds, mixed in turn:
 ``pick``
     "Which vertex does rotation pick?" — the answer is the label of D from
     :func:`geometry.diagonals.find_diagonal`; the reason quotes the metaphor's own numbers
-    from the run's log (the water's radius, the clock hand's angle, the sweep's offset).
+    computed from the run's log (the water's radius, the clock hand's angle, the sweep's
+    offset: :mod:`story.reach`).
 ``claim``
     "Is the claim of scaling an inner diagonal?" (a wrong heuristic) — yes or no from
     :func:`geometry.check.is_inner_diagonal`, with its reason. Yes and no alternate in a
@@ -40,6 +41,7 @@ from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.polygon import Polygon
 from geometry.samples import sample_from_spec
+from story.reach import reach_of
 from story.registry import heuristics, wrong
 
 __all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "make_exercises"]
@@ -51,8 +53,6 @@ MIN_CANDIDATES, MAX_CANDIDATES = 2, 4
 MIN_GAP = 0.04  # closest two vertices, as a fraction of the bounding box's diagonal (legibility)
 MAX_TRIES = 20_000
 
-# How each rule's metaphor reads its log: the value a reached candidate carries, and the words.
-_VALUE_KEY = {"circle": "radius", "ray": "angle", "line": "offset", "band": "level"}
 _STORY = {
     "scaling": ("the water spilled at B reaches", "distance ", "{:.2f}"),
     "rotation": ("the clock hand at B, set to A, passes", "after ", "{:.1f}°"),
@@ -158,15 +158,18 @@ def _label(polygon: Polygon, *indices: int) -> str:
 
 
 def _reached(polygon: Polygon, heuristic: str) -> tuple[int, list[tuple[str, float]]]:
-    """The heuristic's D and, from its log, each candidate its metaphor reaches, in order."""
+    """The heuristic's D and each candidate its metaphor reaches, in order (from its log's
+    step, as the storyboard computes it: :mod:`story.reach`)."""
     with tracing.record(heuristic=heuristic) as log:
         claim = find_diagonal(polygon, heuristic)
-    steps = []
+    where = dict(zip(polygon.labels, polygon.points, strict=True))
+    entered = {e.target: e.state for e in log.events if e.kind == "enter"}
     for e in log.events:
-        state = e.state or {}
-        if e.kind == "change" and "reached" in state:
-            steps.append((state["reached"], float(state[_VALUE_KEY[state["kind"]]])))
-    return claim.v.index, steps
+        if e.kind == "return":
+            steps = reach_of(log.events[e.call], e, where, polygon.labels, entered.__getitem__)
+            if steps is not None:
+                return claim.v.index, steps
+    return claim.v.index, []
 
 
 def _pick_reason(heuristic: str, steps: list[tuple[str, float]]) -> str | None:

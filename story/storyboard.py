@@ -45,6 +45,7 @@ from story.beats import (
     ShowTriangle,
     Verdict,
 )
+from story.reach import Reach, reach_of
 from story.registry import heuristics
 from story.roles import ROLES
 from tracing import Event, Log
@@ -187,6 +188,13 @@ class Walk:
             e.state for e in self.log.events[call.seq:end]
             if e.kind in ("enter", "change") and e.target == target
         ]
+
+    def reach(self, call: Event, ret: Event) -> Reach:
+        """How far the heuristic's motion travels to each candidate (:mod:`story.reach`)."""
+        labels, points = self.root_polygon()
+        found = reach_of(call, ret, dict(zip(labels, points, strict=True)), labels,
+                         lambda key: self.live.get(key) or self.entered_after(call, key))
+        return found or []
 
     def code_line(self, event: Event) -> int | None:
         """The line lit in the shown function: the line of its direct callee, or of the event."""
@@ -342,18 +350,15 @@ def _claim_polygon(walk: Walk) -> Polygon | None:
     )
 
 
-def read_shape(kind: type[Beat], shape: str, caption: str,
-               extra: Callable[[Walk, Event, Event], dict] | None = None) -> Reading:
-    """The reading of a metaphor's step: the states its ``shape`` (a :class:`tracing.Shape`
-    key) goes through while the call runs, and the call's result; ``caption`` may name it
-    (``{result}``); ``extra`` adds fields of the kind's own."""
+def read_step(kind: type[Beat], caption: str,
+              fields: Callable[[Walk, Event, Event], dict]) -> Reading:
+    """The reading of a metaphor's step: one beat of ``kind``, its ``caption`` naming the
+    call's result (``{result}``), its own fields from ``fields(walk, call, ret)``."""
 
     def read(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         result = show(ret.result)
-        fields = extra(walk, call, ret) if extra is not None else {}
         yield walk.beat(kind, caption.format(result=result), call, call=call_line(call, ret),
-                        roles=call_roles(call, ret), states=walk.changes(call, shape),
-                        result=result, **fields)
+                        roles=call_roles(call, ret), result=result, **fields(walk, call, ret))
 
     return read
 
