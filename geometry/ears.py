@@ -36,9 +36,8 @@ import tracing
 from geometry.batch import in_closed_triangle, in_triangle_many
 from geometry.polygon import Polygon, Vertex
 from geometry.predicates import orient
+from geometry.results import Corners, Triangulation, finished, indices
 from geometry.ring import Ring
-from geometry.triangles import Corners, finished, indices
-from geometry.triangulate import Triangulation
 
 # Below this many vertices a plain loop beats setting up numpy.
 _LOOP_UP_TO = 32

@@ -46,8 +46,7 @@ from geometry.batch import in_closed_triangle, in_triangle_many
 from geometry.diagonals import Diagonal, gravity_at, sweep_at
 from geometry.polygon import Polygon, Vertex
 from geometry.predicates import orient
-from geometry.triangles import Corners, finished, indices
-from geometry.triangulate import Triangle, Triangulation
+from geometry.results import Corners, Triangle, Triangulation, finished, indices
 
 # Below this size a plain loop over G beats setting up numpy.
 _LOOP_UP_TO = 32

@@ -15,7 +15,7 @@ from functools import cache
 
 from geometry import ears, monotone, prune_search
 from geometry import gravity as gravity_module
-from geometry import triangulate as triangulate_module
+from geometry import lennes as triangulate_module
 from geometry.diagonals import HEURISTICS
 
 

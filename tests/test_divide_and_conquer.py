@@ -6,9 +6,10 @@ from hypothesis import given, settings
 import tracing
 from geometry.check import verify_triangulation
 from geometry.diagonals import CORRECT, HEURISTICS, WRONG
+from geometry.lennes import divide_and_conquer
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
-from geometry.triangulate import divide_and_conquer, triangulate
+from geometry.triangulate import triangulate
 from tests.strategies import generated_polygons
 
 NAMED = ["counterexample", "counterexample-twin", "comb", "spiral", "star", "two-ears", "square",
