@@ -23,8 +23,9 @@ from dataclasses import dataclass, replace
 import tracing
 from geometry.check import Verdict, is_inner_diagonal
 from geometry.diagonals import HEURISTICS
+from geometry.frame import Diagonal
 from geometry.polygon import Polygon
-from geometry.results import Triangulation, canonical
+from geometry.results import Triangle, Triangulation, canonical
 
 
 @dataclass(frozen=True)
@@ -34,6 +35,12 @@ class Piece:
     polygon: Polygon
     ids: tuple[int, ...]
 
+    @classmethod
+    @tracing.lifetimes(produces=True)
+    def whole(cls, polygon: Polygon) -> Piece:
+        """The first piece: the whole polygon (it enters the log)."""
+        return cls(polygon, tuple(range(polygon.n)))
+
     @property
     def trace_key(self) -> str:
         return self.polygon.trace_key
@@ -42,9 +49,44 @@ class Piece:
         return {**self.polygon.trace_state(), "ids": list(self.ids)}
 
 
-@tracing.traced
+@dataclass(frozen=True)
+class FilledTriangle:
+    """A piece of three vertices: a triangle of the answer, drawn filled (key ``△ABC``)."""
+
+    piece: Piece
+
+    @property
+    def corners(self) -> Triangle:
+        """Its vertex indices in the whole polygon, in canonical form."""
+        return canonical(self.piece.ids)
+
+    @property
+    def trace_key(self) -> str:
+        return f"△{''.join(self.piece.polygon.labels)}"
+
+    def trace_state(self) -> dict:
+        p = self.piece.polygon
+        return {"kind": "polygon", "points": [list(q) for q in p.points], "labels": list(p.labels)}
+
+
+@tracing.lifetimes(consumes=("piece",), produces=True, produced_first=True)
+def done(piece: Piece) -> FilledTriangle:
+    """A triangle: done. It is drawn filled for good, then the piece goes."""
+    return FilledTriangle(piece)
+
+
+@tracing.lifetimes(consumes=("claim",))
+def check_claim(piece: Piece, claim: Diagonal) -> Verdict:
+    """Whether the heuristic's claim is an inner diagonal of the piece, exactly; the claim goes."""
+    return is_inner_diagonal(piece.polygon, *claim.pair)
+
+
+@tracing.traced(consumes=("piece",), produces=True)
 def split(piece: Piece, i: int, j: int) -> tuple[Piece, Piece]:
-    """Cut a piece along its inner diagonal i–j into the chains i…j and j…i."""
+    """Cut a piece along its inner diagonal i–j into the chains i…j and j…i.
+
+    The piece leaves the log and its two halves enter it.
+    """
     n = piece.polygon.n
     first = [(i + k) % n for k in range((j - i) % n + 1)]
     second = [(j + k) % n for k in range((i - j) % n + 1)]
@@ -53,38 +95,22 @@ def split(piece: Piece, i: int, j: int) -> tuple[Piece, Piece]:
     )
 
 
-def _triangle_shape(piece: Piece) -> tracing.Shape:
-    p = piece.polygon
-    points = [list(q) for q in p.points]
-    return tracing.Shape(f"△{''.join(p.labels)}", "polygon", points=points, labels=list(p.labels))
-
-
 @tracing.traced(name="divide_and_conquer")
 def divide_and_conquer(polygon: Polygon, heuristic: str) -> Triangulation:
-    """Lennes' triangulation with the named heuristic."""
+    """Lennes' triangulation: a triangle is done; otherwise find a diagonal, split, go on."""
     find = HEURISTICS[heuristic]
-    root = Piece(polygon, tuple(range(polygon.n)))
-    tracing.enter(root)
-    todo, triangles, shapes, steps = [root], [], [], 0
+    todo, triangles, steps = [Piece.whole(polygon)], [], 0
     while todo:
         piece = todo.pop()
         if piece.polygon.n == 3:
-            triangles.append(canonical(piece.ids))
-            shapes.append(_triangle_shape(piece))
-            tracing.enter(shapes[-1])
-            tracing.exit(piece)
+            triangles.append(done(piece).corners)
             continue
         steps += 1
         claim = find(piece.polygon)
-        i, j = claim.pair
-        verdict = is_inner_diagonal(piece.polygon, i, j)
-        tracing.exit(claim)
+        verdict = check_claim(piece, claim)
         if not verdict:
-            return _failure(piece, verdict, (i, j), triangles, steps)
-        halves = split(piece, i, j)
-        tracing.exit(piece)
-        for half in halves:
-            tracing.enter(half)
+            return _failure(piece, verdict, claim.pair, triangles, steps)
+        halves = split(piece, *claim.pair)
         todo.extend(reversed(halves))  # the first half is worked on first
     return Triangulation(sorted(triangles), True, steps=steps)
 
