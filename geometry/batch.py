@@ -21,10 +21,12 @@ from __future__ import annotations
 import numpy as np
 
 from geometry.predicates import (  # the float filters' bounds
+    DOT_BOUND,
     ORIENT_BOUND,
     SMALL_INTEGER,
     TINY,
     Point,
+    dot_sign,
     orient,
 )
 
@@ -53,6 +55,24 @@ def orient_many(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarra
     signs[unsure[exact]] = np.sign(det[unsure[exact]])
     for k in unsure[~exact]:  # rare: decide these one by one in rationals
         signs[k] = orient(a, b, (float(xs[k]), float(ys[k])))
+    return signs
+
+
+def dot_sign_many(d: Point, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """``dot_sign(d, p, q)`` for every row p of ``starts`` and q of ``ends``, exactly, as int8.
+
+    >>> starts, ends = np.array([[0.0, 0.0], [1.0, 1.0]]), np.array([[5.0, 0.0], [0.0, 3.0]])
+    >>> dot_sign_many((0, 1), starts, ends)
+    array([0, 1], dtype=int8)
+    """
+    with np.errstate(all="ignore"):
+        dx, dy = ends[:, 0] - starts[:, 0], ends[:, 1] - starts[:, 1]
+        value = dx * d[0] + dy * d[1]
+        bound = DOT_BOUND * (np.abs(dx * d[0]) + np.abs(dy * d[1])) + TINY
+        positive, negative = value > bound, value < -bound
+    signs = positive.astype(np.int8) - negative.astype(np.int8)
+    for k in np.flatnonzero(~(positive | negative)):  # rare: decide these one by one
+        signs[k] = dot_sign(d, tuple(starts[k].tolist()), tuple(ends[k].tolist()))
     return signs
 
 
