@@ -4,7 +4,8 @@ The ear tests of ear clipping and prune-and-search ask the same question of
 many points: which of them lie in the closed triangle abc? Here it is asked of
 numpy arrays. Each orientation is first evaluated in floats with the same
 rigorous error bound as :func:`geometry.predicates.orient`; only the points
-whose sign that bound cannot certify are decided exactly, one by one.
+whose sign that bound cannot certify are decided exactly, one by one. For a
+few points a plain loop is faster: :meth:`PointTable.any_in_triangle` picks.
 
 Examples
 --------
@@ -17,6 +18,8 @@ array([ True, False,  True,  True])
 """
 
 from __future__ import annotations
+
+from collections.abc import Collection, Sequence
 
 import numpy as np
 
@@ -83,6 +86,48 @@ def in_closed_triangle(p: Point, a: Point, b: Point, c: Point) -> bool:
     True
     """
     return orient(a, b, p) >= 0 and orient(b, c, p) >= 0 and orient(c, a, p) >= 0
+
+
+#: Up to this many points a plain loop over them beats setting up NumPy arrays.
+LOOP_UP_TO = 32
+
+
+class PointTable:
+    """A polygon's points twice over: the tuples for a plain loop, float arrays for NumPy.
+
+    >>> table = PointTable([(0.0, 0.0), (4.0, 0.0), (0.0, 4.0), (1.0, 1.0), (5.0, 5.0)])
+    >>> table.any_in_triangle((0, 0), (4, 0), (0, 4), [0, 1, 2, 3, 4], skip=(0, 1, 2))
+    True
+    >>> table.any_in_triangle((0, 0), (4, 0), (0, 4), [0, 1, 2, 4], skip=(0, 1, 2))
+    False
+    """
+
+    def __init__(self, points: Sequence[Point]) -> None:
+        self.points = points
+        arr = np.asarray(points, dtype=float).reshape(-1, 2)
+        self.xs, self.ys = arr[:, 0], arr[:, 1]
+
+    def any_in_triangle(
+        self,
+        a: Point,
+        b: Point,
+        c: Point,
+        ids: Sequence[int] | np.ndarray,
+        skip: Collection[int] = (),
+    ) -> bool:
+        """Whether a point ``ids[j]``, j not in ``skip``, lies in the closed ccw triangle abc.
+
+        Exact either way: a plain loop for up to :data:`LOOP_UP_TO` ids, NumPy beyond.
+        ``skip`` holds positions in ``ids`` (the triangle's own corners, say).
+        """
+        if len(ids) <= LOOP_UP_TO:
+            points = self.points
+            return any(
+                in_closed_triangle(points[i], a, b, c) for j, i in enumerate(ids) if j not in skip
+            )
+        inside = in_triangle_many(a, b, c, self.xs[ids], self.ys[ids])
+        inside[list(skip)] = False
+        return bool(inside.any())
 
 
 def _small_integers(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
