@@ -63,7 +63,8 @@ def canonical(tri: Triangle) -> Triangle:
 def indices(corners: Corners) -> Triangle:
     """The index triple of a triangle given by its corner vertices.
 
-    >>> indices((Vertex(2, "C", (1.0, 0.0)), Vertex(0, "A", (0.0, 1.0)), Vertex(1, "B", (0.0, 0.0))))
+    >>> a, b, c = Vertex(2, "C", (1.0, 0.0)), Vertex(0, "A", (0.0, 1.0)), Vertex(1, "B", (0.0, 0.0))
+    >>> indices((a, b, c))
     (2, 0, 1)
     """
     a, b, c = corners

@@ -442,7 +442,7 @@ def _wrap(
     is_method: bool,
     lives: Lifetimes | None = None,
 ) -> F:
-    """Build the recording wrapper around ``func`` (``lives``: the lifetimes its calls end and start)."""
+    """Build the recording wrapper around ``func``; ``lives``: the lifetimes its calls change."""
     if inspect.isgeneratorfunction(func) or inspect.iscoroutinefunction(func):
         raise TypeError(f"cannot trace {name}(): generators and coroutines are not supported")
     spec = CallSpec(func, name, exclude_args, keep_result, is_method)
