@@ -20,7 +20,7 @@ from collections.abc import Callable, Iterable
 from typing import Any, TypeVar
 
 from tracing.encoding import encode, trace_key_of
-from tracing.recorder import ACTIVE_RECORDER
+from tracing.recorder import ACTIVE_RECORDER, Recorder
 
 __all__ = ["CallSpec", "Lifetimes", "lifetimes", "traced", "traced_class"]
 
@@ -152,8 +152,8 @@ class Lifetimes:
             raise TypeError(f"{name}(): consumes takes parameter names, e.g. ({consumes!r},)")
         params = inspect.signature(func).parameters
         self._names = tuple(consumes)
-        unknown = sorted(n for n in self._names if n not in params or params[n].kind not in (
-            *_POSITIONAL, inspect.Parameter.KEYWORD_ONLY))
+        named = (*_POSITIONAL, inspect.Parameter.KEYWORD_ONLY)  # not *args or **kwargs
+        unknown = sorted(n for n in self._names if n not in params or params[n].kind not in named)
         if unknown:
             raise ValueError(f"{name}() has no named parameter(s) {unknown} to consume")
         order = list(params)
@@ -170,8 +170,9 @@ class Lifetimes:
     def consumed(self, args: tuple[Any, ...], kwargs: dict[str, Any]) -> list[Any]:
         """The objects passed as the consumed parameters (``None`` left out)."""
         found = []
-        for name, position, default in zip(self._names, self._positions, self._defaults,
-                                           strict=True):
+        for name, position, default in zip(
+            self._names, self._positions, self._defaults, strict=True
+        ):
             if name in kwargs:
                 value = kwargs[name]
             elif position is not None and position < len(args):
@@ -187,7 +188,7 @@ class Lifetimes:
         items = value if isinstance(value, tuple | list) else (value,)
         return [item for item in items if item is not None]
 
-    def record(self, recorder: Any, gone: list[Any], value: Any, line: int) -> None:
+    def record(self, recorder: Recorder, gone: list[Any], value: Any, line: int) -> None:
         """Append the exits of ``gone`` and the enters of what ``value`` stands for."""
         made = self.produced(value) if self.produces else []
         if self.produced_first:
@@ -259,15 +260,16 @@ def traced(
 
     >>> @traced(consumes=("whole",), produces=True)
     ... def halve(whole):
-    ...     return tracing.Shape(whole.trace_key + "1", "point"), tracing.Shape(
-    ...         whole.trace_key + "2", "point")
+    ...     key = whole.trace_key
+    ...     return tracing.Shape(key + "1", "point"), tracing.Shape(key + "2", "point")
+    >>> whole = tracing.Shape("S", "point")
     >>> with tracing.record() as log:
-    ...     with tracing.Shape("S", "point") as s:
-    ...         parts = halve(s)
+    ...     tracing.enter(whole)
+    ...     parts = halve(whole)
     >>> [(e.kind, e.name if e.kind in ("call", "return") else e.target) for e in log.events]
     ... # doctest: +NORMALIZE_WHITESPACE
     [('enter', 'S'), ('call', 'halve'), ('return', 'halve'), ('exit', 'S'), ('enter', 'S1'),
-     ('enter', 'S2'), ('exit', 'S')]
+     ('enter', 'S2')]
     """
 
     def decorate(function: F) -> F:
