@@ -7,6 +7,11 @@ the edge it crosses. The work list is explicit (no recursion), so spirals of
 thousands of vertices cannot exhaust Python's stack, and each split makes
 both halves strictly smaller, so it always ends.
 
+Traced, by decorators only: the pieces (key ``P(…)``, state: the polygon and
+its vertex ids in the whole) enter when made and exit when split or done; each
+finished triangle enters as ``△ABC`` and stays; the heuristic's claim exits
+once checked. Steps: the heuristic's own, then ``split``.
+
 >>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)])
 >>> divide_and_conquer(p, "gravity").triangles
@@ -116,7 +121,7 @@ def divide_and_conquer(polygon: Polygon, heuristic: str) -> Triangulation:
 
 
 def _failure(
-    piece: Piece, verdict: Verdict, pair: tuple[int, int], triangles: list, steps: int
+    piece: Piece, verdict: Verdict, pair: tuple[int, int], triangles: list[Triangle], steps: int
 ) -> Triangulation:
     """A piece's failed claim, restated in the whole polygon's indices.
 
