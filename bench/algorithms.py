@@ -53,11 +53,11 @@ except ModuleNotFoundError:  # run as ``python bench/algorithms.py``: add the re
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from bench.loglog import Panel, draw_panels
-from geometry.algorithms import RUNNERS
+from geometry.lennes import divide_and_conquer
 from geometry.polygon import Polygon, leftmost_index, vertex_label
 from geometry.prune_search import find_an_ear
 from geometry.samples import make_sample
-from geometry.triangulate import divide_and_conquer
+from geometry.triangulate import RUNNERS
 
 ROOT = Path(__file__).resolve().parents[1]
 SHAPES = ("star", "spiral", "comb")

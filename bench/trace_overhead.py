@@ -278,16 +278,16 @@ def per_call_costs(repeats: int = 50_000) -> tuple[float, float, float]:
 
 def real_workload(n: int, seed: int, heuristic: str):
     """The project's divide-and-conquer on a random star polygon, and the namespaces to unwrap."""
-    from geometry import diagonals, frame, gravity, triangulate
+    from geometry import diagonals, frame, gravity, lennes
     from geometry.polygon import Polygon
     from geometry.samples import make_sample
 
     polygon = Polygon.from_points(make_sample("random-star", n, seed))
 
     def workload(p: Polygon) -> list[Triangle]:
-        return triangulate.divide_and_conquer(p, heuristic).triangles
+        return lennes.divide_and_conquer(p, heuristic).triangles
 
-    spaces = [vars(m) for m in (diagonals, frame, gravity, triangulate)] + [diagonals.HEURISTICS]
+    spaces = [vars(m) for m in (diagonals, frame, gravity, lennes)] + [diagonals.HEURISTICS]
     return workload, polygon, spaces
 
 

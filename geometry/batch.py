@@ -4,7 +4,8 @@ The ear tests of ear clipping and prune-and-search ask the same question of
 many points: which of them lie in the closed triangle abc? Here it is asked of
 numpy arrays. Each orientation is first evaluated in floats with the same
 rigorous error bound as :func:`geometry.predicates.orient`; only the points
-whose sign that bound cannot certify are decided exactly, one by one.
+whose sign that bound cannot certify are decided exactly, one by one. For a
+few points a plain loop is faster: :meth:`PointTable.any_in_triangle` picks.
 
 Examples
 --------
@@ -18,13 +19,17 @@ array([ True, False,  True,  True])
 
 from __future__ import annotations
 
+from collections.abc import Collection, Sequence
+
 import numpy as np
 
 from geometry.predicates import (  # the float filters' bounds
+    DOT_BOUND,
     ORIENT_BOUND,
     SMALL_INTEGER,
     TINY,
     Point,
+    dot_sign,
     orient,
 )
 
@@ -56,6 +61,24 @@ def orient_many(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarra
     return signs
 
 
+def dot_sign_many(d: Point, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """``dot_sign(d, p, q)`` for every row p of ``starts`` and q of ``ends``, exactly, as int8.
+
+    >>> starts, ends = np.array([[0.0, 0.0], [1.0, 1.0]]), np.array([[5.0, 0.0], [0.0, 3.0]])
+    >>> dot_sign_many((0, 1), starts, ends)
+    array([0, 1], dtype=int8)
+    """
+    with np.errstate(all="ignore"):
+        dx, dy = ends[:, 0] - starts[:, 0], ends[:, 1] - starts[:, 1]
+        value = dx * d[0] + dy * d[1]
+        bound = DOT_BOUND * (np.abs(dx * d[0]) + np.abs(dy * d[1])) + TINY
+        positive, negative = value > bound, value < -bound
+    signs = positive.astype(np.int8) - negative.astype(np.int8)
+    for k in np.flatnonzero(~(positive | negative)):  # rare: decide these one by one
+        signs[k] = dot_sign(d, tuple(starts[k].tolist()), tuple(ends[k].tolist()))
+    return signs
+
+
 def in_closed_triangle(p: Point, a: Point, b: Point, c: Point) -> bool:
     """Whether p lies in the closed counter-clockwise triangle abc (one point, exact).
 
@@ -63,6 +86,48 @@ def in_closed_triangle(p: Point, a: Point, b: Point, c: Point) -> bool:
     True
     """
     return orient(a, b, p) >= 0 and orient(b, c, p) >= 0 and orient(c, a, p) >= 0
+
+
+#: Up to this many points a plain loop over them beats setting up NumPy arrays.
+LOOP_UP_TO = 32
+
+
+class PointTable:
+    """A polygon's points twice over: the tuples for a plain loop, float arrays for NumPy.
+
+    >>> table = PointTable([(0.0, 0.0), (4.0, 0.0), (0.0, 4.0), (1.0, 1.0), (5.0, 5.0)])
+    >>> table.any_in_triangle((0, 0), (4, 0), (0, 4), [0, 1, 2, 3, 4], skip=(0, 1, 2))
+    True
+    >>> table.any_in_triangle((0, 0), (4, 0), (0, 4), [0, 1, 2, 4], skip=(0, 1, 2))
+    False
+    """
+
+    def __init__(self, points: Sequence[Point]) -> None:
+        self.points = points
+        arr = np.asarray(points, dtype=float).reshape(-1, 2)
+        self.xs, self.ys = arr[:, 0], arr[:, 1]
+
+    def any_in_triangle(
+        self,
+        a: Point,
+        b: Point,
+        c: Point,
+        ids: Sequence[int] | np.ndarray,
+        skip: Collection[int] = (),
+    ) -> bool:
+        """Whether a point ``ids[j]``, j not in ``skip``, lies in the closed ccw triangle abc.
+
+        Exact either way: a plain loop for up to :data:`LOOP_UP_TO` ids, NumPy beyond.
+        ``skip`` holds positions in ``ids`` (the triangle's own corners, say).
+        """
+        if len(ids) <= LOOP_UP_TO:
+            points = self.points
+            return any(
+                in_closed_triangle(points[i], a, b, c) for j, i in enumerate(ids) if j not in skip
+            )
+        inside = in_triangle_many(a, b, c, self.xs[ids], self.ys[ids])
+        inside[list(skip)] = False
+        return bool(inside.any())
 
 
 def _small_integers(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:

@@ -4,17 +4,21 @@
 >>> p = Polygon.from_points([(0, 0), (2, 0), (2, 2), (0, 2)])
 >>> constrained_delaunay(p)
 [(0, 1, 2), (0, 2, 3)]
+>>> cdt(p).triangles
+[(0, 1, 2), (0, 2, 3)]
 """
 
 from __future__ import annotations
 
 import shapely
 
+import tracing
 from geometry.polygon import Polygon
 from geometry.predicates import orient
+from geometry.results import Triangle, Triangulation, canonical, finished
 
 
-def constrained_delaunay(polygon: Polygon) -> list[tuple[int, int, int]]:
+def constrained_delaunay(polygon: Polygon) -> list[Triangle]:
     """Triangles as counter-clockwise index triples, sorted, in this polygon's indexing.
 
     GEOS keeps every input vertex (collinear ones too) and adds none, so each
@@ -24,16 +28,14 @@ def constrained_delaunay(polygon: Polygon) -> list[tuple[int, int, int]]:
     result = shapely.constrained_delaunay_triangles(shapely.Polygon(polygon.points))
     triangles = []
     for tri in shapely.get_parts(result):
-        corners = [index[(float(x), float(y))] for x, y in tri.exterior.coords[:3]]
-        triangles.append(_ccw_rotation(polygon, corners))
+        a, b, c = (index[(float(x), float(y))] for x, y in tri.exterior.coords[:3])
+        if orient(polygon.points[a], polygon.points[b], polygon.points[c]) < 0:
+            b, c = c, b  # GEOS may give a triangle clockwise
+        triangles.append(canonical((a, b, c)))
     return sorted(triangles)
 
 
-def _ccw_rotation(polygon: Polygon, corners: list[int]) -> tuple[int, int, int]:
-    """Counter-clockwise order starting at the smallest index (a canonical form)."""
-    a, b, c = corners
-    if orient(polygon.points[a], polygon.points[b], polygon.points[c]) < 0:
-        b, c = c, b
-    k = min(range(3), key=lambda i: (a, b, c)[i])
-    tri = (a, b, c)
-    return tri[k:] + tri[:k]
+@tracing.traced(name="cdt")
+def cdt(polygon: Polygon) -> Triangulation:
+    """The reference as a triangulation algorithm: shapely's (GEOS) constrained Delaunay."""
+    return finished(constrained_delaunay(polygon))

@@ -33,27 +33,22 @@ from __future__ import annotations
 import numpy as np
 
 import tracing
-from geometry.batch import in_closed_triangle, in_triangle_many
+from geometry.batch import PointTable
 from geometry.polygon import Polygon, Vertex
 from geometry.predicates import orient
+from geometry.results import Corners, Triangulation, finished, indices
 from geometry.ring import Ring
-from geometry.triangles import Corners, finished, indices
-from geometry.triangulate import Triangulation
-
-# Below this many vertices a plain loop beats setting up numpy.
-_LOOP_UP_TO = 32
 
 # --- the naive search (Meisters) ----------------------------------------------------------------
 
 
 class Remaining:
-    """The vertices not yet clipped, in order, with their coordinates as arrays."""
+    """The vertices not yet clipped, in order: a list, and the same as an array for NumPy."""
 
     def __init__(self, polygon: Polygon) -> None:
-        self.points = polygon.points
+        self.table = PointTable(polygon.points)
         self.order = list(range(polygon.n))
-        arr = np.asarray(polygon.points, dtype=float)
-        self.xs, self.ys = arr[:, 0], arr[:, 1]
+        self.ids = np.arange(polygon.n)
 
     def corners(self, k: int) -> tuple[int, int, int]:
         """The triangle at the k-th remaining vertex: (before, it, after)."""
@@ -62,24 +57,18 @@ class Remaining:
 
     def remove(self, k: int) -> None:
         del self.order[k]
-        self.xs, self.ys = np.delete(self.xs, k), np.delete(self.ys, k)
+        self.ids = np.delete(self.ids, k)
 
 
 @tracing.traced(name="is_ear", exclude_args=("remaining", "k"))
 def is_ear_naive(remaining: Remaining, k: int, v: Vertex) -> bool:
     """The definition, checked against every remaining vertex: O(n)."""
-    a, b, c = (remaining.points[i] for i in remaining.corners(k))
+    a, b, c = (remaining.table.points[i] for i in remaining.corners(k))
     if orient(a, b, c) <= 0:
         return False
-    order, m = remaining.order, len(remaining.order)
+    m = len(remaining.order)
     corners = {(k - 1) % m, k, (k + 1) % m}
-    if m <= _LOOP_UP_TO:
-        points = remaining.points
-        others = (points[i] for j, i in enumerate(order) if j not in corners)
-        return not any(in_closed_triangle(p, a, b, c) for p in others)
-    inside = in_triangle_many(a, b, c, remaining.xs, remaining.ys)
-    inside[list(corners)] = False
-    return not inside.any()
+    return not remaining.table.any_in_triangle(a, b, c, remaining.ids, skip=corners)
 
 
 @tracing.traced(name="clip_ear", exclude_args=("remaining", "k"))

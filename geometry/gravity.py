@@ -17,8 +17,9 @@ left-most vertex B (there every diagonal is inner). A ``no-reflex-vertex``
 note says which.
 
 The gravity vector is a float, but once chosen it is used exactly: every
-side, order and height comparison below is decided in rational arithmetic
-(behind float filters), so the claim is always an inner diagonal.
+side, order and height comparison below is decided exactly, by the
+predicates of :mod:`geometry.predicates` (float filters, then rational
+arithmetic), so the claim is always an inner diagonal.
 
 >>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
@@ -36,14 +37,17 @@ from functools import cmp_to_key
 import numpy as np
 
 import tracing
+from geometry.batch import dot_sign_many
 from geometry.frame import Diagonal, claim, leftmost_vertex, triangle_at
 from geometry.polygon import Polygon, Vertex
-from geometry.predicates import (  # the float filters' bounds
-    EPS,
-    TINY,
+from geometry.predicates import (
     compare_angle,
     compare_distance,
+    cross_sign,
+    dot_sign,
     in_triangle,
+    ray_meets_line,
+    ray_parameter,
 )
 
 Exact = tuple[Fraction, Fraction]
@@ -76,27 +80,6 @@ class Hit:
 
     def trace_state(self) -> dict:
         return {"kind": "point", "at": list(self.at)}
-
-
-def _dot_sign(d: tuple, g: tuple) -> int:
-    """Exact sign of d·g for a difference vector d given by its two end points."""
-    (p, q), (gx, gy) = d, g
-    dx, dy = q[0] - p[0], q[1] - p[1]
-    value = dx * gx + dy * gy
-    bound = 4 * EPS * (abs(dx * gx) + abs(dy * gy)) + TINY
-    if value > bound:
-        return 1
-    if -value > bound:
-        return -1
-    exact = (Fraction(q[0]) - Fraction(p[0])) * Fraction(gx) + (
-        Fraction(q[1]) - Fraction(p[1])
-    ) * Fraction(gy)
-    return (exact > 0) - (exact < 0)
-
-
-def _cross_sign(g: tuple, v: tuple, p: tuple) -> int:
-    """Exact sign of g × (p − v): which side of the drop line through v the point p is on."""
-    return _dot_sign((v, p), (g[1], -g[0])) * -1
 
 
 @tracing.traced
@@ -150,19 +133,12 @@ def _wrap(a: float) -> float:
 
 def _goes_up(polygon: Polygon, v: Vertex, down: tuple) -> bool:
     ends = (polygon.points[polygon.prev(v.index)], polygon.points[polygon.next(v.index)])
-    return all(_dot_sign((v.point, q), down) < 0 for q in ends)
+    return all(dot_sign(down, v.point, q) < 0 for q in ends)
 
 
 def _perpendicular_edges(polygon: Polygon, down: tuple) -> bool:
     arr = np.asarray(polygon.points, dtype=float)
-    d = np.roll(arr, -1, 0) - arr
-    value = d[:, 0] * down[0] + d[:, 1] * down[1]
-    bound = 4 * EPS * (np.abs(d[:, 0] * down[0]) + np.abs(d[:, 1] * down[1])) + TINY
-    unsure = np.flatnonzero(np.abs(value) <= bound)
-    n = polygon.n
-    return any(
-        _dot_sign((polygon.points[k], polygon.points[(k + 1) % n]), down) == 0 for k in unsure
-    )
+    return not dot_sign_many(down, arr, np.roll(arr, -1, 0)).all()
 
 
 def _tilted(polygon: Polygon, v: Vertex, down: tuple) -> tuple[float, float]:
@@ -182,18 +158,19 @@ def _tilted(polygon: Polygon, v: Vertex, down: tuple) -> tuple[float, float]:
 def drop_ball(polygon: Polygon, v: Vertex, g: Gravity, ball: tracing.Shape) -> Hit:
     """The ball falls from V along gravity; the first edge (or vertex) it meets."""
     down, p, n = g.down, v.point, polygon.n
-    sides = [_cross_sign(down, p, q) for q in polygon.points]
+    sides = [cross_sign(down, p, q) for q in polygon.points]
     best: tuple[Fraction, Hit] | None = None
     for k in range(n):
         if k == v.index:
             continue
         q = polygon.points[k]
-        if sides[k] == 0 and _dot_sign((p, q), down) > 0:
-            best = _nearer(best, _vertex_time(p, q, down), Hit(_exact(q), None, polygon.vertex(k)))
+        if sides[k] == 0 and dot_sign(down, p, q) > 0:
+            t = ray_parameter(p, down, q)
+            best = _nearer(best, t, Hit(_exact(q), None, polygon.vertex(k)))
         m = (k + 1) % n
         if v.index in (k, m) or sides[k] * sides[m] >= 0:
             continue
-        t, point = _edge_time(p, down, q, polygon.points[m])
+        t, point = ray_meets_line(p, down, q, polygon.points[m])
         if t > 0:
             best = _nearer(best, t, Hit(point, (k, m), None))
     if best is None:
@@ -212,30 +189,13 @@ def _nearer(best, t: Fraction, hit: Hit):
     return (t, hit) if best is None or t < best[0] else best
 
 
-def _vertex_time(p, q, down) -> Fraction:
-    gx, gy = Fraction(down[0]), Fraction(down[1])
-    return ((Fraction(q[0]) - Fraction(p[0])) * gx + (Fraction(q[1]) - Fraction(p[1])) * gy) / (
-        gx * gx + gy * gy
-    )
-
-
-def _edge_time(p, down, a, b) -> tuple[Fraction, Exact]:
-    """Where p + t·down meets the line ab: (t, point), exactly."""
-    px, py = Fraction(p[0]), Fraction(p[1])
-    gx, gy = Fraction(down[0]), Fraction(down[1])
-    ax, ay = Fraction(a[0]), Fraction(a[1])
-    ex, ey = Fraction(b[0]) - ax, Fraction(b[1]) - ay
-    t = ((ax - px) * ey - (ay - py) * ex) / (gx * ey - gy * ex)
-    return t, (px + t * gx, py + t * gy)
-
-
 @tracing.traced
 def slide_to_vertex(polygon: Polygon, hit: Hit, g: Gravity, ball: tracing.Shape) -> Vertex:
     """The ball slides down the edge it hit to the edge's lower end X."""
     if hit.vertex is not None:
         return hit.vertex
     k, m = hit.edge
-    lower = m if _dot_sign((polygon.points[k], polygon.points[m]), g.down) > 0 else k
+    lower = m if dot_sign(g.down, polygon.points[k], polygon.points[m]) > 0 else k
     ball.update(at=list(polygon.points[lower]))
     return polygon.vertex(lower)
 

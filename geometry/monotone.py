@@ -39,9 +39,8 @@ import numpy as np
 import tracing
 from geometry.monotone_pieces import monotone_pieces, triangulate_monotone_piece
 from geometry.polygon import Polygon, Vertex
+from geometry.results import Triangulation, finished
 from geometry.sweep_status import SweepStatus
-from geometry.triangles import finished
-from geometry.triangulate import Triangulation
 
 
 class Sweep:

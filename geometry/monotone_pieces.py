@@ -31,7 +31,7 @@ import numpy as np
 import tracing
 from geometry.polygon import Polygon
 from geometry.predicates import orient
-from geometry.triangulate import Triangle
+from geometry.results import Triangle
 
 
 @dataclass(frozen=True)

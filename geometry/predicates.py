@@ -32,8 +32,10 @@ ORIENT_BOUND = (3.0 + 16.0 * EPS) * EPS
 TINY = 2.0**-900
 # Integers below this give exact float products and determinants in orient().
 SMALL_INTEGER = 2.0**25
-# Relative bound for sums of a few products (distances, dot products).
+# Relative bound for sums of a few products (distances).
 _LOOSE_BOUND = 1e-12
+# Bound for d·(q − p) in floats, relative to |dx·gx| + |dy·gy|: three roundings, with room.
+DOT_BOUND = 4.0 * EPS
 
 
 def _sign(x: float | Fraction) -> int:
@@ -89,6 +91,72 @@ def _exact_sign_of_difference(x: float, y: float, exact) -> int:
     if -diff > bound:
         return -1
     return exact()
+
+
+def dot_sign(d: Point, p: Point, q: Point) -> int:
+    """Sign of d · (q − p), exactly: whether q lies ahead of p along d (1), level with it (0)
+    or behind it (−1).
+
+    A filtered float evaluation, then rational arithmetic when its sign is not certain.
+
+    >>> dot_sign((0, -1), (0, 0), (3, -2))  # with gravity down, q is lower than p
+    1
+    >>> dot_sign((1, 1), (0, 0), (1, -1))
+    0
+    >>> dot_sign((1.0, 1e-300), (0.5, 0.0), (0.5, -1e-20))  # below float range: exact
+    -1
+    """
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    value = dx * d[0] + dy * d[1]
+    bound = DOT_BOUND * (abs(dx * d[0]) + abs(dy * d[1])) + TINY
+    if value > bound:
+        return 1
+    if -value > bound:
+        return -1
+    exact = (Fraction(q[0]) - Fraction(p[0])) * Fraction(d[0]) + (
+        Fraction(q[1]) - Fraction(p[1])
+    ) * Fraction(d[1])
+    return _sign(exact)
+
+
+def cross_sign(d: Point, p: Point, q: Point) -> int:
+    """Sign of d × (q − p), exactly: 1 when q lies left of the line through p along d,
+    −1 right, 0 on it (like ``orient(p, p + d, q)``, without rounding ``p + d``).
+
+    >>> cross_sign((0, -1), (0, 0), (-1, -5)), cross_sign((0, -1), (0, 0), (2, 1))
+    (-1, 1)
+    >>> cross_sign((1, 2), (1, 1), (2, 3))
+    0
+    """
+    return -dot_sign((d[1], -d[0]), p, q)  # d × w = −(d turned right) · w
+
+
+def ray_parameter(p: Point, d: Point, q: Point) -> Fraction:
+    """The t of q's foot on the line p + t·d, exactly: (q − p)·d / |d|².
+
+    >>> ray_parameter((0, 0), (2, 0), (3, 5))
+    Fraction(3, 2)
+    """
+    dx, dy = Fraction(d[0]), Fraction(d[1])
+    return ((Fraction(q[0]) - Fraction(p[0])) * dx + (Fraction(q[1]) - Fraction(p[1])) * dy) / (
+        dx * dx + dy * dy
+    )
+
+
+def ray_meets_line(
+    p: Point, d: Point, a: Point, b: Point
+) -> tuple[Fraction, tuple[Fraction, Fraction]]:
+    """Where the line p + t·d meets the line ab (not parallel to d): (t, point), exactly.
+
+    >>> ray_meets_line((0, 0), (0, -1), (-1, -2), (1, -4))
+    (Fraction(3, 1), (Fraction(0, 1), Fraction(-3, 1)))
+    """
+    px, py = Fraction(p[0]), Fraction(p[1])
+    dx, dy = Fraction(d[0]), Fraction(d[1])
+    ax, ay = Fraction(a[0]), Fraction(a[1])
+    ex, ey = Fraction(b[0]) - ax, Fraction(b[1]) - ay
+    t = ((ax - px) * ey - (ay - py) * ex) / (dx * ey - dy * ex)
+    return t, (px + t * dx, py + t * dy)
 
 
 def squared_distance(p: Point, q: Point) -> Fraction:

@@ -42,25 +42,20 @@ from __future__ import annotations
 import numpy as np
 
 import tracing
-from geometry.batch import in_closed_triangle, in_triangle_many
+from geometry.batch import PointTable
 from geometry.diagonals import Diagonal, gravity_at, sweep_at
 from geometry.polygon import Polygon, Vertex
 from geometry.predicates import orient
-from geometry.triangles import Corners, finished, indices
-from geometry.triangulate import Triangle, Triangulation
-
-# Below this size a plain loop over G beats setting up numpy.
-_LOOP_UP_TO = 32
+from geometry.results import Corners, Triangle, Triangulation, finished, indices
 
 
-class Remaining:
-    """The polygon being clipped: its vertex indices in ccw order, and all coordinates."""
+class ShrinkingPolygon:
+    """P while its ears are clipped: the vertex indices left, in ccw order, and all points."""
 
     def __init__(self, polygon: Polygon) -> None:
         self.polygon = polygon
         self.order = np.arange(polygon.n)
-        arr = np.asarray(polygon.points, dtype=float)
-        self.xs, self.ys = arr[:, 0], arr[:, 1]
+        self.table = PointTable(polygon.points)
 
 
 class GoodSubpolygon:
@@ -72,7 +67,7 @@ class GoodSubpolygon:
     """
 
     def __init__(
-        self, remaining: Remaining, start: int, size: int, parent: GoodSubpolygon | None
+        self, remaining: ShrinkingPolygon, start: int, size: int, parent: GoodSubpolygon | None
     ) -> None:
         self.remaining, self.start, self.size, self.parent = remaining, start, size, parent
         labels = remaining.polygon.labels
@@ -80,7 +75,7 @@ class GoodSubpolygon:
         self.trace_key = f"G({labels[order[start]]}…{labels[order[start + size - 1]]})"
 
     @classmethod
-    def whole(cls, remaining: Remaining) -> GoodSubpolygon:
+    def whole(cls, remaining: ShrinkingPolygon) -> GoodSubpolygon:
         """P itself: good, with no cutting edge."""
         return cls(remaining, 0, len(remaining.order), None)
 
@@ -114,21 +109,17 @@ class GoodSubpolygon:
         }
 
 
-@tracing.traced
-def is_ear(g: GoodSubpolygon, v: Vertex) -> bool:
+@tracing.traced(name="is_ear")  # the log names every ear test is_ear (as in ears.py)
+def is_middle_ear(g: GoodSubpolygon, v: Vertex) -> bool:
     """Whether the middle vertex v is an ear: strictly convex, its closed triangle empty of G."""
     m, order = g.middle(), g.remaining.order
     points = g.remaining.polygon.points
     a, b, c = points[order[m - 1]], points[order[m]], points[order[m + 1]]
     if orient(a, b, c) <= 0:
         return False
-    ids, k = g.indices(), m - g.start
-    if g.size <= _LOOP_UP_TO:
-        others = (points[i] for i in (*ids[: k - 1], *ids[k + 2 :]))
-        return not any(in_closed_triangle(p, a, b, c) for p in others)
-    inside = in_triangle_many(a, b, c, g.remaining.xs[ids], g.remaining.ys[ids])
-    inside[k - 1 : k + 2] = False  # the corners themselves
-    return not inside.any()
+    k = m - g.start
+    corners = (k - 1, k, k + 1)  # positions in G of v and its neighbours
+    return not g.remaining.table.any_in_triangle(a, b, c, g.indices(), skip=corners)
 
 
 @tracing.traced
@@ -150,8 +141,8 @@ def good_subpolygon(g: GoodSubpolygon, diagonal: Diagonal) -> GoodSubpolygon:
     return GoodSubpolygon(g.remaining, g.start + i, j - i + 1, g)
 
 
-@tracing.traced
-def clip_ear(g: GoodSubpolygon, v: Vertex) -> Corners:
+@tracing.traced(name="clip_ear")  # as in ears.py
+def clip_middle_ear(g: GoodSubpolygon, v: Vertex) -> Corners:
     """Slice off the ear v (the middle of G); every good sub-polygon around it shrinks."""
     m, remaining = g.middle(), g.remaining
     corners = (g.vertex_at(m - 1), v, g.vertex_at(m + 1))
@@ -167,13 +158,13 @@ def clip_ear(g: GoodSubpolygon, v: Vertex) -> Corners:
 @tracing.traced(name="find_an_ear")
 def find_an_ear(polygon: Polygon) -> Vertex:
     """FindAnEar on the whole polygon: an ear in O(n)."""
-    return _search(GoodSubpolygon.whole(Remaining(polygon)))
+    return _search(GoodSubpolygon.whole(ShrinkingPolygon(polygon)))
 
 
 def _search(g: GoodSubpolygon) -> Vertex:
     with tracing.alive(g):
         v = g.vertex_at(g.middle())
-        if is_ear(g, v):
+        if is_middle_ear(g, v):
             return v
         diagonal = diagonal_at(g, v)
         with tracing.alive(diagonal):
@@ -183,7 +174,7 @@ def _search(g: GoodSubpolygon) -> Vertex:
 @tracing.traced(name="prune-and-search")
 def prune_and_search(polygon: Polygon) -> Triangulation:
     """Clip the ears FindAnEar finds, searching on in the good sub-polygon of the last one."""
-    remaining = Remaining(polygon)
+    remaining = ShrinkingPolygon(polygon)
     triangles: list[Triangle] = []
     _clip_ears_in(GoodSubpolygon.whole(remaining), triangles)
     a, b, c = (int(k) for k in remaining.order)
@@ -197,8 +188,8 @@ def _clip_ears_in(g: GoodSubpolygon, triangles: list[Triangle]) -> None:
     with tracing.alive(g):
         while g.size > floor:
             v = g.vertex_at(g.middle())
-            if is_ear(g, v):
-                triangles.append(indices(clip_ear(g, v)))
+            if is_middle_ear(g, v):
+                triangles.append(indices(clip_middle_ear(g, v)))
             else:
                 diagonal = diagonal_at(g, v)
                 with tracing.alive(diagonal):

@@ -1,157 +1,68 @@
-"""Triangulation by divide and conquer (Lennes 1911), with any inner-diagonal heuristic, traced.
+"""Every triangulation algorithm by name, run and verified exactly: :func:`triangulate`.
 
-Find a diagonal, split the polygon along it, go on with both halves until only
-triangles are left. Every claim is checked exactly before the split; a wrong
-heuristic's first bad claim stops the run and comes back as the failure, with
-the edge it crosses. The work list is explicit (no recursion), so spirals of
-thousands of vertices cannot exhaust Python's stack, and each split makes
-both halves strictly smaller, so it always ends.
+The registry imports each algorithm's module; none of them imports this one
+(their result type is in :mod:`geometry.results`), so there is no cycle.
 
 >>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)])
->>> divide_and_conquer(p, "gravity").triangles
-[(0, 1, 4), (1, 2, 4), (2, 3, 4)]
->>> result = divide_and_conquer(p, "scaling")
->>> result.valid, result.failure.why
-(False, 'B–D crosses edge E–A at (2.86087, 6.36087)')
+>>> ALGORITHMS
+('divide-and-conquer', 'ear-clipping-naive', 'ear-clipping', 'prune-and-search', 'monotone', 'cdt')
+>>> {name: triangulate(p, name).triangles == [(0, 1, 4), (1, 2, 4), (2, 3, 4)] for name in RUNNERS}
+... # doctest: +NORMALIZE_WHITESPACE
+{'ear-clipping-naive': True, 'ear-clipping': True, 'prune-and-search': True, 'monotone': True,
+ 'cdt': True}
+>>> triangulate(p, "divide-and-conquer", "scaling").failure.why
+'B–D crosses edge E–A at (2.86087, 6.36087)'
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from collections.abc import Callable
 
-import tracing
-from geometry.check import Verdict, is_inner_diagonal, verify_triangulation
-from geometry.diagonals import HEURISTICS
+from geometry.cdt import cdt
+from geometry.check import verify_triangulation
+from geometry.ears import ear_clipping, ear_clipping_naive
+from geometry.lennes import divide_and_conquer
+from geometry.monotone import monotone
 from geometry.polygon import Polygon
+from geometry.prune_search import prune_and_search
+from geometry.results import Triangulation
 
-Triangle = tuple[int, int, int]
+#: The algorithms that take only the polygon (divide and conquer also takes a heuristic).
+RUNNERS: dict[str, Callable[[Polygon], Triangulation]] = {
+    "ear-clipping-naive": ear_clipping_naive,
+    "ear-clipping": ear_clipping,
+    "prune-and-search": prune_and_search,
+    "monotone": monotone,
+    "cdt": cdt,
+}
 
-
-@dataclass(frozen=True)
-class Triangulation:
-    """Triangles as counter-clockwise index triples of the polygon triangulated.
-
-    ``valid`` is False when the algorithm stopped early; then ``failure`` says why
-    (in the indices of the whole polygon) and ``claim`` is the bad diagonal.
-    """
-
-    triangles: list[Triangle]
-    valid: bool
-    failure: Verdict | None = None
-    claim: tuple[int, int] | None = None
-    steps: int = 0
-    extra: dict = field(default_factory=dict)
-
-
-@dataclass(frozen=True)
-class Piece:
-    """A sub-polygon on its way to triangles, and where its vertices are in the whole polygon."""
-
-    polygon: Polygon
-    ids: tuple[int, ...]
-
-    @property
-    def trace_key(self) -> str:
-        return self.polygon.trace_key
-
-    def trace_state(self) -> dict:
-        return {**self.polygon.trace_state(), "ids": list(self.ids)}
-
-
-@tracing.traced
-def split(piece: Piece, i: int, j: int) -> tuple[Piece, Piece]:
-    """Cut a piece along its inner diagonal i–j into the chains i…j and j…i."""
-    n = piece.polygon.n
-    first = [(i + k) % n for k in range((j - i) % n + 1)]
-    second = [(j + k) % n for k in range((i - j) % n + 1)]
-    return tuple(
-        Piece(piece.polygon.sub_polygon(c), tuple(piece.ids[k] for k in c)) for c in (first, second)
-    )
-
-
-def _triangle_shape(piece: Piece) -> tracing.Shape:
-    p = piece.polygon
-    points = [list(q) for q in p.points]
-    return tracing.Shape(f"△{''.join(p.labels)}", "polygon", points=points, labels=list(p.labels))
-
-
-@tracing.traced(name="divide_and_conquer")
-def divide_and_conquer(polygon: Polygon, heuristic: str) -> Triangulation:
-    """Lennes' triangulation with the named heuristic."""
-    find = HEURISTICS[heuristic]
-    root = Piece(polygon, tuple(range(polygon.n)))
-    tracing.enter(root)
-    todo, triangles, shapes, steps = [root], [], [], 0
-    while todo:
-        piece = todo.pop()
-        if piece.polygon.n == 3:
-            triangles.append(_canonical(piece.ids))
-            shapes.append(_triangle_shape(piece))
-            tracing.enter(shapes[-1])
-            tracing.exit(piece)
-            continue
-        steps += 1
-        claim = find(piece.polygon)
-        i, j = claim.pair
-        verdict = is_inner_diagonal(piece.polygon, i, j)
-        tracing.exit(claim)
-        if not verdict:
-            return _failure(piece, verdict, (i, j), triangles, steps)
-        halves = split(piece, i, j)
-        tracing.exit(piece)
-        for half in halves:
-            tracing.enter(half)
-        todo.extend(reversed(halves))  # the first half is worked on first
-    return Triangulation(sorted(triangles), True, steps=steps)
-
-
-def _canonical(ids: tuple[int, ...]) -> Triangle:
-    k = ids.index(min(ids))
-    return ids[k:] + ids[:k]
-
-
-def _failure(
-    piece: Piece, verdict: Verdict, pair: tuple[int, int], triangles: list, steps: int
-) -> Triangulation:
-    """A piece's failed claim, restated in the whole polygon's indices.
-
-    The edge it crosses may be an earlier diagonal (an edge of the piece only).
-    """
-    ids = piece.ids
-    whole = replace(
-        verdict,
-        edge=tuple(ids[k] for k in verdict.edge) if verdict.edge else None,
-        vertex=ids[verdict.vertex] if verdict.vertex is not None else None,
-    )
-    labels = [piece.polygon.labels[k] for k in pair]
-    tracing.note("bad-diagonal", diagonal=labels, why=verdict.why)
-    return Triangulation(
-        sorted(triangles), False, failure=whole, claim=(ids[pair[0]], ids[pair[1]]), steps=steps
-    )
-
-
-ALGORITHMS = (
-    "divide-and-conquer",
-    "ear-clipping-naive",
-    "ear-clipping",
-    "prune-and-search",
-    "monotone",
-    "cdt",
-)
+#: Every algorithm :func:`triangulate` knows, in the order the command line lists them.
+ALGORITHMS = ("divide-and-conquer", *RUNNERS)
 
 
 def triangulate(polygon: Polygon, algorithm: str, heuristic: str | None = None) -> Triangulation:
     """Run a triangulation algorithm by name and verify its answer exactly.
 
-    ``heuristic`` is divide-and-conquer's diagonal rule (gravity when None); the
-    other algorithms take none and ignore it.
+    Parameters
+    ----------
+    polygon : Polygon
+        The polygon to triangulate.
+    algorithm : str
+        One of :data:`ALGORITHMS`.
+    heuristic : str, optional
+        Divide and conquer's diagonal rule (gravity when None); the other
+        algorithms take none and ignore it.
+
+    Returns
+    -------
+    Triangulation
+        The algorithm's answer; not ``valid`` (with the reason in ``failure``)
+        when it stopped early or its triangles fail :func:`verify_triangulation`.
     """
     if algorithm == "divide-and-conquer":
         result = divide_and_conquer(polygon, heuristic or "gravity")
-    elif algorithm in ALGORITHMS:
-        from geometry.algorithms import RUNNERS  # those modules import this one
-
+    elif algorithm in RUNNERS:
         result = RUNNERS[algorithm](polygon)
     else:
         raise KeyError(f"unknown algorithm {algorithm!r}; expected one of {', '.join(ALGORITHMS)}")

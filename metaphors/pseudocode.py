@@ -13,21 +13,12 @@ import inspect
 import textwrap
 from functools import cache
 
-from geometry import ears, monotone, prune_search
-from geometry import gravity as gravity_module
-from geometry import triangulate as triangulate_module
-from geometry.diagonals import HEURISTICS
+from story.registry import REGISTRY
 
 
 def _functions() -> dict:
-    found = {name: fn.__wrapped__ for name, fn in HEURISTICS.items()}
-    found["gravity_at"] = gravity_module.gravity_at.__wrapped__
-    found["divide_and_conquer"] = triangulate_module.divide_and_conquer.__wrapped__
-    found["ear-clipping-naive"] = ears.ear_clipping_naive.__wrapped__
-    found["ear-clipping"] = ears.ear_clipping.__wrapped__
-    found["monotone"] = monotone.monotone.__wrapped__
-    found["prune-and-search"] = prune_search.prune_and_search.__wrapped__
-    return found
+    """The shown function of each registry entry by its traced name, unwrapped."""
+    return {e.shown: e.source.__wrapped__ for e in REGISTRY.values() if e.source is not None}
 
 
 @cache

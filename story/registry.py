@@ -30,8 +30,11 @@ from dataclasses import dataclass
 from types import MappingProxyType
 
 from geometry.diagonals import HEURISTICS
+from geometry.gravity import gravity_at
+from geometry.lennes import divide_and_conquer
 from geometry.polygon import Polygon
-from geometry.triangulate import Triangulation, triangulate
+from geometry.results import Triangulation
+from geometry.triangulate import RUNNERS, triangulate
 
 __all__ = [
     "HEURISTIC",
@@ -79,6 +82,9 @@ class Entry:
         heuristic's metaphor); None for the reference triangulation, drawn plainly.
     shown : str
         The traced function whose source the panel shows (a name the log carries).
+    source : callable or None
+        That function (traced; its ``__wrapped__`` is the source the panel may show); None
+        when the panel shows none (the reference triangulation).
     polygon : str
         The sample it plays on by default. A wrong heuristic's default polygon is one on
         which it fails.
@@ -96,6 +102,7 @@ class Entry:
     correct: bool
     metaphor: str | None
     shown: str
+    source: Callable | None
     polygon: str
     title: str
     pseudocode: tuple[str, ...] = ()
@@ -112,9 +119,15 @@ class Entry:
 
 
 def _heuristic(name: str, *, correct: bool, metaphor: str, polygon: str, title: str,
-               shown: str | None = None, correction: str | None = None) -> Entry:
-    return Entry(name, HEURISTIC, HEURISTICS[name], correct, metaphor, shown or name, polygon,
-                 title, correction=correction)
+               shown: Callable | None = None, correction: str | None = None) -> Entry:
+    source = shown or HEURISTICS[name]
+    return Entry(name, HEURISTIC, HEURISTICS[name], correct, metaphor, _traced_name(source),
+                 source, polygon, title, correction=correction)
+
+
+def _traced_name(function: Callable) -> str:
+    """The name a traced function's calls carry in the log."""
+    return function.__trace_spec__.name
 
 
 def _runner(name: str) -> Callable[..., Triangulation]:
@@ -128,10 +141,12 @@ def _runner(name: str) -> Callable[..., Triangulation]:
     return run
 
 
-def _triangulation(name: str, *, metaphor: str | None, title: str, shown: str | None = None,
-                   polygon: str = "lecture") -> Entry:
-    return Entry(name, TRIANGULATION, _runner(name), True, metaphor, shown or name, polygon,
-                 title)
+def _triangulation(name: str, *, metaphor: str | None, title: str,
+                   shown: Callable | None = None, polygon: str = "lecture",
+                   show_source: bool = True) -> Entry:
+    source = shown or RUNNERS[name]
+    return Entry(name, TRIANGULATION, _runner(name), True, metaphor, _traced_name(source),
+                 source if show_source else None, polygon, title)
 
 
 _ENTRIES = (
@@ -157,9 +172,9 @@ _ENTRIES = (
     _heuristic("scaling-walled", correct=True, metaphor="water", polygon="counterexample",
                title="Scaling with walls: water that cannot pass the edges"),
     _heuristic("gravity", correct=True, metaphor="gravity", polygon="gravity-snag",
-               title="Gravity: a ball on a rubber band finds a diagonal", shown="gravity_at"),
+               title="Gravity: a ball on a rubber band finds a diagonal", shown=gravity_at),
     # --- triangulations (thesis ch. 2.2-2.4) -----------------------------------------------------
-    _triangulation("divide-and-conquer", metaphor="pieces", shown="divide_and_conquer",
+    _triangulation("divide-and-conquer", metaphor="pieces", shown=divide_and_conquer,
                    title="Divide and conquer (Lennes): split along inner diagonals"),
     _triangulation("ear-clipping-naive", metaphor="fruit",
                    title="Ear clipping (Meisters): slice the first ear found"),
@@ -168,7 +183,8 @@ _ENTRIES = (
     _triangulation("prune-and-search", metaphor="fruit",
                    title="Prune and search: the good sub-polygons shrink"),
     _triangulation("monotone", metaphor="monotone", title="Monotone partition, then the stack"),
-    _triangulation("cdt", metaphor=None, title="Constrained Delaunay (shapely)"),
+    _triangulation("cdt", metaphor=None, title="Constrained Delaunay (shapely)",
+                   show_source=False),
 )
 
 #: Every entry by name, heuristics first, in the order the command line lists them.

@@ -6,9 +6,10 @@ from hypothesis import given, settings
 import tracing
 from geometry.check import verify_triangulation
 from geometry.diagonals import HEURISTICS
+from geometry.lennes import divide_and_conquer
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
-from geometry.triangulate import divide_and_conquer, triangulate
+from geometry.triangulate import triangulate
 from story.registry import correct, wrong
 from tests.strategies import generated_polygons
 

@@ -2,15 +2,19 @@
 
 from fractions import Fraction
 
+import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from geometry.batch import dot_sign_many
 from geometry.predicates import (
     Contact,
     compare_angle,
     compare_distance,
     compare_line_distance,
+    cross_sign,
+    dot_sign,
     in_triangle,
     orient,
     orient_det,
@@ -131,3 +135,33 @@ def test_in_triangle_closed_and_open():
 def test_segment_contact(seg1, seg2, contact):
     assert segment_contact(*seg1, *seg2) is contact
     assert segment_contact(*seg2, *seg1) is contact
+
+
+def exact_dot(d, p, q):
+    value = sum((Fraction(q[k]) - Fraction(p[k])) * Fraction(d[k]) for k in (0, 1))
+    return (value > 0) - (value < 0)
+
+
+@settings(max_examples=500)
+@given(point, point, point)
+def test_dot_and_cross_sign_match_fractions_on_any_finite_floats(d, p, q):
+    assert dot_sign(d, p, q) == exact_dot(d, p, q)
+    assert cross_sign(d, p, q) == -exact_dot((d[1], -d[0]), p, q)
+
+
+def test_dot_sign_where_floats_fail():
+    """Kettner's grid again: p ± 1 ulp across a direction at right angles to q − p."""
+    ulp = 2.0**-53
+    d = (1.0, -1.0)
+    cases = [((0.5 + i * ulp, 0.5 + j * ulp), (24.0, 24.0)) for i in range(32) for j in range(32)]
+    naive = sum(((q[0] - p[0]) * d[0] + (q[1] - p[1]) * d[1] > 0) - (
+        (q[0] - p[0]) * d[0] + (q[1] - p[1]) * d[1] < 0) != exact_dot(d, p, q) for p, q in cases)
+    assert naive > 0, "the grid must contain cases plain floats get wrong"
+    assert all(dot_sign(d, p, q) == exact_dot(d, p, q) for p, q in cases)
+    starts, ends = np.array([p for p, _ in cases]), np.array([q for _, q in cases])
+    assert dot_sign_many(d, starts, ends).tolist() == [exact_dot(d, p, q) for p, q in cases]
+
+
+def test_cross_sign_is_orient_along_a_direction():
+    assert cross_sign((0.0, -1.0), (2.0, 3.0), (1.0, -7.0)) == orient((2, 3), (2, 2), (1, -7)) == -1
+    assert cross_sign((3.0, 1.0), (0.0, 0.0), (6.0, 2.0)) == 0

@@ -11,7 +11,8 @@ from geometry.check import is_inner_diagonal, verify_triangulation
 from geometry.diagonals import HEURISTICS, find_diagonal
 from geometry.errors import GeometryError
 from geometry.io import read_polygon
-from geometry.triangulate import ALGORITHMS, divide_and_conquer
+from geometry.lennes import divide_and_conquer
+from geometry.triangulate import ALGORITHMS
 from story import registry
 from story.registry import (
     HEURISTIC,

@@ -23,6 +23,7 @@ Examples
 True
 """
 
+from tracing.decorators import lifetimes as lifetimes  # explicit re-export (not in __all__)
 from tracing.decorators import traced, traced_class
 from tracing.encoding import Traceable, encode
 from tracing.events import EVENT_KINDS, SCHEMA, Event, Log
