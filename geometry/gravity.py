@@ -79,7 +79,10 @@ class Hit:
         return "hit"
 
     def trace_state(self) -> dict:
-        return {"kind": "point", "at": list(self.at)}
+        state = {"kind": "point", "at": list(self.at)}
+        if self.vertex is not None:  # it landed on a vertex: nothing to slide, no band to bend
+            state["vertex"] = self.vertex.label
+        return state
 
 
 @tracing.traced
@@ -154,8 +157,8 @@ def _tilted(polygon: Polygon, v: Vertex, down: tuple) -> tuple[float, float]:
     raise AssertionError("no tilt avoids perpendicular edges")  # finitely many edges
 
 
-@tracing.traced
-def drop_ball(polygon: Polygon, v: Vertex, g: Gravity, ball: tracing.Shape) -> Hit:
+@tracing.traced(produces=True)  # the impact point stays marked until the band is done
+def drop_ball(polygon: Polygon, v: Vertex, g: Gravity) -> Hit:
     """The ball falls from V along gravity; the first edge (or vertex) it meets."""
     down, p, n = g.down, v.point, polygon.n
     sides = [cross_sign(down, p, q) for q in polygon.points]
@@ -175,10 +178,7 @@ def drop_ball(polygon: Polygon, v: Vertex, g: Gravity, ball: tracing.Shape) -> H
             best = _nearer(best, t, Hit(point, (k, m), None))
     if best is None:
         raise AssertionError("a ray from inside meets the boundary")
-    hit = best[1]
-    tracing.enter(hit)  # the impact point stays marked until the diagonal is found
-    ball.update(at=list(hit.at))
-    return hit
+    return best[1]
 
 
 def _exact(q) -> Exact:
@@ -190,20 +190,17 @@ def _nearer(best, t: Fraction, hit: Hit):
 
 
 @tracing.traced
-def slide_to_vertex(polygon: Polygon, hit: Hit, g: Gravity, ball: tracing.Shape) -> Vertex:
+def slide_to_vertex(polygon: Polygon, hit: Hit, g: Gravity) -> Vertex:
     """The ball slides down the edge it hit to the edge's lower end X."""
     if hit.vertex is not None:
         return hit.vertex
     k, m = hit.edge
     lower = m if dot_sign(g.down, polygon.points[k], polygon.points[m]) > 0 else k
-    ball.update(at=list(polygon.points[lower]))
     return polygon.vertex(lower)
 
 
-@tracing.traced
-def band_snag(
-    polygon: Polygon, v: Vertex, hit: Hit, x: Vertex, band: tracing.Shape
-) -> Vertex | None:
+@tracing.traced(consumes=("hit",))
+def band_snag(polygon: Polygon, v: Vertex, hit: Hit, x: Vertex) -> Vertex | None:
     """The band V–ball sweeps the triangle V–hit–X; the first vertex it snags, if any."""
     if hit.vertex is not None:
         return None
@@ -214,7 +211,6 @@ def band_snag(
         if k not in (v.index, x.index) and in_triangle(polygon.points[k], v.point, h, x.point)
     ]
     if not inside:
-        band.update(points=[list(v.point), list(x.point)])
         return None
 
     def order(a: Vertex, b: Vertex) -> int:
@@ -222,9 +218,7 @@ def band_snag(
             v.point, a.point, b.point
         )
 
-    y = min(inside, key=cmp_to_key(order))
-    band.update(points=[list(v.point), list(y.point), list(x.point)], snag=y.label)
-    return y
+    return min(inside, key=cmp_to_key(order))
 
 
 def _near_triangle(polygon: Polygon, a, b, c) -> list[int]:
@@ -241,14 +235,9 @@ def _near_triangle(polygon: Polygon, a, b, c) -> list[int]:
 def gravity_at(polygon: Polygon, v: Vertex) -> Diagonal:
     """Gravity's diagonal from a given reflex (or straight) vertex V."""
     g = gravity_direction(polygon, v)
-    with (
-        tracing.Shape("ball", "point", at=list(v.point)) as ball,
-        tracing.Shape("band", "band", points=[list(v.point), list(v.point)]) as band,
-    ):
-        hit = drop_ball(polygon, v, g, ball)
-        x = slide_to_vertex(polygon, hit, g, ball)
-        y = band_snag(polygon, v, hit, x, band)
-    tracing.exit(hit)
+    hit = drop_ball(polygon, v, g)
+    x = slide_to_vertex(polygon, hit, g)
+    y = band_snag(polygon, v, hit, x)
     return claim(v, y if y is not None else x)
 
 

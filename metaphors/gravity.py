@@ -176,7 +176,6 @@ class GravityTurn(Beat):
 class Drop(Beat):
     """The ball falls from ``vertex`` and ``hit``s the boundary."""
 
-    states: list
     result: str
     hit: list
     vertex: str
@@ -184,7 +183,8 @@ class Drop(Beat):
 
 @beat_kind("slide")
 class Slide(Beat):
-    """The ball slides down the edge it hit to ``result`` (``states``: where it goes)."""
+    """The ball slides down the edge it hit to ``result``; ``states`` holds where it goes
+    (``{"at": point}``), empty when it landed on a vertex."""
 
     states: list
     result: str
@@ -192,7 +192,8 @@ class Slide(Beat):
 
 @beat_kind("snag")
 class Snag(Beat):
-    """The band's final shape (``states``), bent at ``result`` or straight (``—``)."""
+    """The band's shape (``states``: ``{"points": [V, X]}`` straight, ``[V, Y, X]`` bent at
+    ``result``), empty when the ball landed on a vertex."""
 
     states: list
     result: str
@@ -209,26 +210,34 @@ def read_turn(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                     polygon=call.args["polygon"]["ref"], **_steps(walk, call, ret))
 
 
+def _hit(walk: Walk, call: Event) -> dict:
+    """Where the ball hit (``at``; ``vertex`` when it landed on one)."""
+    return walk.live.get("hit") or walk.entered_after(call, "hit")
+
+
 def read_drop(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    hit = next(e.state for e in walk.log.events[call.seq:ret.seq]
-               if e.kind == "enter" and e.target == "hit")
     yield walk.beat(Drop, "The ball falls until it hits the boundary", call,
-                    states=walk.changes(call, "ball"), result=show_result(ret),
-                    hit=hit["at"], vertex=show_vertex(call), **_steps(walk, call, ret))
+                    result=show_result(ret), hit=walk.entered_after(ret, "hit")["at"],
+                    vertex=show_vertex(call), **_steps(walk, call, ret))
 
 
 def read_slide(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     result = show_result(ret)
+    slid = "vertex" not in _hit(walk, call)
     yield walk.beat(Slide, f"It slides down the edge to {result}", call,
-                    states=walk.changes(call, "ball"), result=result, **_steps(walk, call, ret))
+                    states=[{"kind": "point", "at": walk.root_points()[result]}] if slid else [],
+                    result=result, **_steps(walk, call, ret))
 
 
 def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     result = show_result(ret)
     caption = ("The rubber band stays straight" if result == "—"
                else f"The rubber band snags {result}")
-    yield walk.beat(Snag, caption, call, states=walk.changes(call, "band"), result=result,
-                    **_steps(walk, call, ret))
+    where, args = walk.root_points(), call.args
+    corners = [args["v"]["ref"], *([result] if result != "—" else []), args["x"]["ref"]]
+    band = [] if "vertex" in _hit(walk, call) else [
+        {"kind": "band", "points": [where[c] for c in corners]}]
+    yield walk.beat(Snag, caption, call, states=band, result=result, **_steps(walk, call, ret))
 
 
 def show_result(ret: Event) -> str:

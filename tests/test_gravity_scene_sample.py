@@ -2,24 +2,29 @@
 
 import tracing
 from geometry.check import is_inner_diagonal
-from geometry.gravity import gravity
+from geometry.diagonals import find_diagonal
 from geometry.polygon import Polygon
 from geometry.predicates import orient
 from geometry.samples import make_sample
+from metaphors.catalog import beats
 
 
 def _run(name: str):
     polygon = Polygon.from_points(make_sample(name))
     with tracing.record() as log:
-        diagonal = gravity(polygon)
+        diagonal = find_diagonal(polygon, "gravity")
     return polygon, diagonal, log
+
+
+def _beat(log, action: str):
+    return next(b for b in beats(log) if b.action == action)
 
 
 def test_gravity_snag_band_bends_at_a_vertex():
     polygon, diagonal, log = _run("gravity-snag")
-    band = [e.state for e in log.events if e.target == "band" and e.kind in ("enter", "change")]
-    v, y, x = band[-1]["points"]
-    assert band[-1]["snag"] == "H"
+    snag = _beat(log, "snag")
+    v, y, x = snag.states[-1]["points"]
+    assert snag.result == "H"
     assert orient(v, y, x) != 0  # really bent, not a vertex lying on the straight band
     assert diagonal.name == "CH"
     assert is_inner_diagonal(polygon, *diagonal.pair)
@@ -32,8 +37,8 @@ def test_gravity_snag_turns_the_picture_and_slides():
     _, _, log = _run("gravity-snag")
     turn = next(e.result for e in log.events if e.kind == "return" and e.name == "gravity_direction")
     assert 30 < abs(turn["turn_picture"]) < 150
-    ball = [e.state["at"] for e in log.events if e.target == "ball" and e.kind == "change"]
-    assert len(ball) == 2 and ball[0] != ball[1]  # it hits an edge, then slides along it
+    hit, slid = _beat(log, "drop").hit, _beat(log, "slide").states
+    assert len(slid) == 1 and slid[0]["at"] != hit  # it hits an edge, then slides along it
 
 
 def test_gravity_scene_defaults_to_the_snag():
