@@ -18,8 +18,8 @@ triangulated greedily with a stack in one more sweep. O(n log n).
 "Higher" is lexicographic (larger y, then smaller x), so equal y
 coordinates need no special case, and every side test is exact.
 
-Traced steps: ``classify_vertex`` (the sweep line, a ``line`` shape, reaches
-the vertex), ``handle_start`` … ``handle_regular``, ``add_diagonal``,
+Traced steps: ``classify_vertex`` (the sweep line reaches the vertex: the
+storyboard draws it there), ``handle_start`` … ``handle_regular``, ``add_diagonal``,
 ``monotone_pieces``, ``triangulate_monotone_piece``.
 
 >>> from geometry.polygon import Polygon
@@ -57,14 +57,11 @@ class Sweep:
         self.kind = [""] * polygon.n
         self.status = SweepStatus(polygon.points)
         self.diagonals: list[tuple[int, int]] = []
-        top = polygon.points[self.order[0]]
-        self.line = tracing.Shape("sweep", "line", through=list(top), direction=[1.0, 0.0])
 
 
 @tracing.traced(exclude_args=("sweep",))
 def classify_vertex(sweep: Sweep, v: Vertex) -> str:
     """The line reaches v: start, split, end, merge or regular, from its neighbours' heights."""
-    sweep.line.update(through=list(v.point))
     n, i, rank = sweep.polygon.n, v.index, sweep.rank
     before_lower, after_lower = rank[(i - 1) % n] > rank[i], rank[(i + 1) % n] > rank[i]
     convex = sweep.turns[i] > 0
@@ -157,10 +154,9 @@ HANDLERS = {
 def make_monotone(polygon: Polygon) -> list[tuple[int, int]]:
     """The sweep: diagonals that cut the polygon into y-monotone pieces."""
     sweep = Sweep(polygon)
-    with sweep.line:
-        for i in sweep.order:
-            v = polygon.vertex(i)
-            HANDLERS[classify_vertex(sweep, v)](sweep, v)
+    for i in sweep.order:
+        v = polygon.vertex(i)
+        HANDLERS[classify_vertex(sweep, v)](sweep, v)
     return sweep.diagonals
 
 

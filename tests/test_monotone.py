@@ -116,8 +116,7 @@ def test_traced_steps():
     kinds = [e.result for e in log.find(kind="return", name="classify_vertex")]
     assert kinds.count("split") == kinds.count("merge") == 1
     assert len(log.find(kind="call", name="triangulate_monotone_piece")) == 2
-    sweep_moves = log.find(kind="change", target="sweep")
-    assert len(sweep_moves) == p.n
+    assert not log.find(kind="enter", target="sweep")  # the line is the storyboard's to draw
 
 
 # --- every input --------------------------------------------------------------------------------
