@@ -88,9 +88,7 @@ def candidates_in_triangle(polygon: Polygon, t: Triangle) -> list[Vertex]:
     return out
 
 
-@tracing.traced
+@tracing.traced(produces=True)
 def claim(u: Vertex, v: Vertex) -> Diagonal:
     """The heuristic's answer, entered into the log as a segment so a scene can draw it."""
-    diagonal = Diagonal(u, v)
-    tracing.enter(diagonal)
-    return diagonal
+    return Diagonal(u, v)

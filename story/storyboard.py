@@ -152,6 +152,7 @@ class Walk:
         self.shown_polygon = False
         self.stack: list[Event] = []  # open calls, outermost first
         self.drawn: set[str] = set()  # keys of the shapes the generic beats drew
+        self.claimed: set[str] = set()  # keys of the claims (the frame draws them)
         self._memo: dict[str, Any] = {}
         self._heuristics = frozenset(heuristics()) | _HEURISTIC_CALLS
 
@@ -310,7 +311,9 @@ def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 
 
 def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    state = walk.live[ret.result["ref"]]
+    key = ret.result["ref"]
+    walk.claimed.add(key)
+    state = walk.live.get(key) or walk.entered_after(ret, key)
     u, v = state["labels"]
     name = f"{u}{v}"
     yield walk.beat(Claim, f"Claim: {name} is an inner diagonal", call,
@@ -386,7 +389,7 @@ def _shape_beats(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator
     Shapes drawn inside a step that has a reading (a metaphor draws them) or inside a
     built-in heuristic are left to that step."""
     key = e.target
-    if key is None or is_frame_key(key):
+    if key is None or is_frame_key(key) or key in walk.claimed:
         return
     if any(c.name in table or (walk.is_heuristic(c.name) and c.name != walk.user)
            for c in walk.stack):
