@@ -6,6 +6,8 @@ Radii, levels and the order in which vertices get wet are read from the log's sh
 
 from __future__ import annotations
 
+import math
+
 import shapely
 from manim import Circle, FadeIn, FadeOut, Indicate, Transform
 from manim import Polygon as MPolygon
@@ -144,8 +146,6 @@ def flood(board, beat) -> None:
 
 def _strip(a, c, towards, level: float):
     """Points of the plane within `level` of line AC on B's side."""
-    import math
-
     dx, dy = c[0] - a[0], c[1] - a[1]
     length = math.hypot(dx, dy)
     nx, ny = -dy / length, dx / length
