@@ -3,7 +3,9 @@
 ``trex snapshot SCENE [--polygon P | --log FILE ...] [-o FILE]`` builds SCENE in a dry run
 (no video: seconds, not a render) and writes its graph, deterministic JSON, to FILE or
 stdout. ``--check FILE`` compares it with a stored graph instead: exit 0 when equal, exit 1
-with the differences in words, play by play; ``--update`` then rewrites FILE.
+with the differences in words, play by play; ``--update`` then rewrites FILE. The run is the
+arguments' alone: ``TREX_POLYGON`` and ``TREX_LOG`` (plain ``manim``'s) are not read, so a
+check means the same in any shell.
 
 Exit status: 0 written, or equal (or updated); 1 the graph differs from FILE; 2 nothing to
 compare: bad input (one line: the scene, polygon, log or FILE), or the scene failed while it
