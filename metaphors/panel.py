@@ -63,10 +63,13 @@ class Panel:
     def _code_block(self) -> VGroup:
         size = 15 if len(self.code_lines) <= 12 else 11
         font = self.theme.mono_font
+        # A row is named by its place in the listing shown (``code:1`` is the first row), not
+        # by its source line: moving the algorithm within its file renames nothing
+        # (docs/scene-graph.md).
         rows = VGroup(*[
             tag(typeset.text(text.strip() or " ", font=font, size=size, colour=self.theme.idle),
-                "idle", f"code:{number}")
-            for number, text in self.code_lines
+                "idle", f"code:{place}")
+            for place, (_, text) in enumerate(self.code_lines, start=1)
         ])
         if not len(rows):
             return rows

@@ -4,7 +4,10 @@ Scenes are discovered, not listed: each file of ``scenes/`` is imported with imp
 every manim ``Scene`` subclass defined in it is a case. For each one:
 
 (a) its graph on its default polygon matches the snapshot in ``tests/__snapshots__/``
-    (one JSON file per scene; regenerate with ``pytest tests/test_scenes.py --snapshot-update``);
+    (one JSON file per scene, the text ``trex snapshot`` writes: built with the plugin's
+    ``scene_graph`` fixture and compared with syrupy's ``snapshot``, see
+    :mod:`trex.pytest_plugin`; regenerate with
+    ``pytest tests/test_scenes.py --snapshot-update``);
 (b) building it twice gives identical JSON;
 (c) replaying the logs it plays, saved as JSON and handed to it, gives the same graph as the
     live run;
@@ -19,10 +22,8 @@ scene's tests on one worker under ``pytest -n 2 --dist loadgroup``.
 
 from __future__ import annotations
 
-import difflib
 import importlib.util
 import inspect
-import json
 import sys
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -30,13 +31,12 @@ from pathlib import Path
 
 import pytest
 from manim import Scene, tempconfig
-from syrupy.extensions.single_file import SingleFileSnapshotExtension, WriteMode
 
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
 from story.registry import entry, wrong
-from trex.scene_graph import build_graph
+from trex.snapshot import SceneGraph, assert_same_graph, build
 
 SCENES_DIR = Path(__file__).resolve().parents[1] / "scenes"
 
@@ -119,14 +119,19 @@ def _single_run_scenes(heuristic: str) -> list[SceneCase]:
 
 # --- builds (cached for the session) -------------------------------------------------------------
 
-_graphs: dict[tuple, str] = {}
+_graphs: dict[tuple, SceneGraph] = {}
 
 
-def graph(case: SceneCase, polygon: str | None = None, saved: tuple[str, ...] = ()) -> str:
-    """The scene graph of a case for an input (default: its default run), built once."""
+def graph(case: SceneCase, polygon: str | None = None, saved: tuple[str, ...] = (),
+          scene_graph=None) -> SceneGraph:
+    """The scene graph of a case for an input (default: its default run), built once: with the
+    plugin's fixture ``scene_graph`` if given (the snapshot test), else the same way by hand."""
     key = (case.id, polygon, saved)
     if key not in _graphs:
-        _graphs[key] = build_graph(case.handed(polygon, saved))
+        if scene_graph is not None:
+            _graphs[key] = scene_graph(case.scene_class(), polygon=polygon, log=saved or None)
+        else:
+            _graphs[key] = build(case.handed(polygon, saved))
     return _graphs[key]
 
 
@@ -134,24 +139,23 @@ def skip_if_heavy(case: SceneCase, request) -> None:
     """Skip a rebuild of a long scene unless --runslow (its snapshot test still runs)."""
     if request.config.getoption("--runslow"):
         return
-    count = sum(len(p["animations"]) for p in json.loads(graph(case))["plays"])
+    count = sum(len(p["animations"]) for p in graph(case).data["plays"])
     if count > HEAVY_ANIMATIONS:
         pytest.skip(f"{case.id} plays {count} animations: rebuilt only with --runslow")
 
 
-def assert_same(actual: str, expected: str, what: str) -> None:
-    """Equal texts, or a short unified diff of where they part."""
-    if actual == expected:
-        return
-    diff = difflib.unified_diff(expected.splitlines(), actual.splitlines(), "expected", "actual",
-                                n=2, lineterm="")
-    shown = list(diff)[:60]
-    pytest.fail(f"{what}:\n" + "\n".join(shown))
+def assert_same(actual: SceneGraph, expected: SceneGraph, what: str) -> None:
+    """Equal graphs with equal texts, or a failure naming the differences in words."""
+    try:
+        assert_same_graph(actual, expected)
+    except AssertionError as exc:
+        pytest.fail(f"{what}: {exc}")
+    assert actual.text == expected.text, f"{what}: equal graphs, but not the same text"
 
 
-def nodes(graph_json: str, *, final_only: bool = False) -> Iterator[dict]:
+def nodes(built: SceneGraph, *, final_only: bool = False) -> Iterator[dict]:
     """Every mobject node of a graph (animations' mobjects and targets, and the final ones)."""
-    data = json.loads(graph_json)
+    data = built.data
 
     def walk(node):
         yield node
@@ -173,21 +177,6 @@ def nodes(graph_json: str, *, final_only: bool = False) -> Iterator[dict]:
         yield from walk(mobject)
 
 
-# --- snapshots -----------------------------------------------------------------------------------
-
-
-class JSONText(SingleFileSnapshotExtension):
-    """One readable JSON file per snapshot, written as the text the graph already is."""
-
-    file_extension = "json"
-    _write_mode = WriteMode.TEXT
-
-
-@pytest.fixture
-def snapshot_json(snapshot):
-    return snapshot.use_extension(JSONText)
-
-
 # --- the tests -------------------------------------------------------------------------------------
 
 
@@ -197,14 +186,14 @@ def test_scenes_are_discovered():
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
-def test_scene_graph_matches_snapshot(case, snapshot_json):
-    assert graph(case) == snapshot_json
+def test_scene_graph_matches_snapshot(case, scene_graph, snapshot):
+    assert graph(case, scene_graph=scene_graph) == snapshot
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
 def test_same_input_gives_identical_graph(case, request):
     skip_if_heavy(case, request)
-    again = build_graph(case.handed())
+    again = build(case.handed())
     assert_same(again, graph(case), f"{case.id} built twice differs")
 
 
@@ -233,7 +222,7 @@ def test_replayed_log_gives_the_live_graph(case, tmp_path, request):
     saved = _save_logs(case, tmp_path)
     if saved is None:
         pytest.skip(f"{case.id} plays no log")
-    replayed = build_graph(case.handed(saved=saved))
+    replayed = build(case.handed(saved=saved))
     assert_same(replayed, graph(case), f"{case.id} replayed from its saved log differs")
 
 
@@ -299,7 +288,7 @@ def test_nothing_overlaps_the_text(case):
     """Title, code, call line and subtitle lie below everything else on screen (Board.settle):
     so nothing may overlap them, or the drawing order would show. Checked on the final
     picture (the panel's labels next to the code and the title, among others)."""
-    final = json.loads(graph(case))["final"]
+    final = graph(case).data["final"]
     text = [(n["name"], n["box"]) for n in final for n in [n, *n.get("submobjects", ())]
             if _is_backdrop_text(n) and n.get("box")]
     if not text:
@@ -333,7 +322,7 @@ def _vertex_places(nodes_: list[dict]) -> dict[str, list]:
 def test_vertices_come_back_after_the_picture_turns(case):
     """Gravity turns the picture and turns it back after the verdict (every claim of divide
     and conquer): dots and labels end where they started, however many turns came between."""
-    data = json.loads(graph(case))
+    data = graph(case).data
     first = _vertex_places(n for play in data["plays"] for a in play["animations"]
                            for n in _walk_animation(a))
     last = _vertex_places(m for n in data["final"] for m in _walk(n))

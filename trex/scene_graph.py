@@ -6,7 +6,9 @@ run time and its mobjects. A mobject is written as its type, its role (``trex_ro
 by :func:`metaphors.panel.tag`), its name, stroke and fill colours as hex (with opacities
 and stroke width), and its points rounded to 1e-3; a ``Text`` is written as its string and
 its bounding box instead of its glyphs; submobjects follow recursively. The mobjects on
-screen when the scene ends close the graph (``final``).
+screen when the scene ends close the graph (``final``). The document is versioned
+(``"schema": "trex-scene-graph/1"``, :mod:`trex.graph_format`); docs/scene-graph.md
+describes it.
 
 Mobjects are serialised at the moment ``play`` is called, so each animation shows the
 state it starts from (and, for transforms, the target it moves to).
@@ -34,11 +36,9 @@ True
 from __future__ import annotations
 
 import atexit
-import json
-import re
 import shutil
 import tempfile
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
@@ -47,6 +47,8 @@ from typing import Any
 import numpy as np
 from manim import Animation, AnimationGroup, Mobject, Scene, VMobject, tempconfig
 from manim.renderer.cairo_renderer import CairoRenderer
+
+from trex.graph_format import SCHEMA, to_json
 
 #: Decimal places kept for points, bounding boxes, run times, widths and opacities.
 DECIMALS = 3
@@ -226,27 +228,10 @@ def recording(scene: Scene) -> Iterator[list[Play]]:
 
 def scene_graph(plays: list[Play], scene: Scene | None = None) -> dict[str, Any]:
     """The graph of recorded plays, closed by the scene's mobjects at the end (if given)."""
-    graph: dict[str, Any] = {"plays": [p.graph for p in plays]}
+    graph: dict[str, Any] = {"schema": SCHEMA, "plays": [p.graph for p in plays]}
     if scene is not None:
         graph["final"] = [mobject_graph(m) for m in scene.mobjects]
     return graph
-
-
-_NUMBER = r"-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?"
-_FLAT_LIST = re.compile(r"\[\s*(" + _NUMBER + r"(?:,\s*" + _NUMBER + r")*)\s*\]")
-
-
-def to_json(graph: Mapping[str, Any]) -> str:
-    """Stable JSON text: sorted keys, one-space indent, each list of numbers on one line.
-
-    >>> print(to_json({"b": [1.0, 2.5], "a": None}))
-    {
-     "a": null,
-     "b": [1.0, 2.5]
-    }
-    """
-    text = json.dumps(graph, sort_keys=True, indent=1, ensure_ascii=False, allow_nan=False)
-    return _FLAT_LIST.sub(lambda m: "[" + re.sub(r",\s+", ", ", m.group(1)) + "]", text)
 
 
 # --- building a scene without video ------------------------------------------------------------
