@@ -26,6 +26,7 @@ from story.registry import (
     triangulations,
     wrong,
 )
+from story.pseudocode import Step
 from story.runs import run_logged
 
 EARCUT = Path(__file__).parent / "data" / "earcut"
@@ -82,7 +83,7 @@ def test_every_entry_is_complete(name):
         module = importlib.import_module(f"metaphors.{e.metaphor}")
         assert module.READS and module.PERFORMS
     assert e.title and "\n" not in e.title
-    assert isinstance(e.pseudocode, tuple) and all(isinstance(s, str) for s in e.pseudocode)
+    assert isinstance(e.pseudocode, tuple) and all(isinstance(s, Step) for s in e.pseudocode)
     assert shown(name) == e.shown
     read_polygon(e.polygon)  # a sample every command reads
 
