@@ -28,9 +28,8 @@ from rendering import typeset
 from rendering.layers import BACKDROP_Z
 from story.pseudocode import PSEUDOCODE, SOURCE, Step
 
-#: the pseudocode's type size, and the distance between its rows' baselines (scene units;
-#: less when more rows than fit are shown): about 3.4 % and 4.2 % of the frame's height
-PSEUDOCODE_SIZE = 20
+#: the distance between the pseudocode's rows (scene units; less when more rows than fit are
+#: shown): 4.25 % of the frame's height, for rows of the theme's ``pseudocode_size``
 PSEUDOCODE_PITCH = 0.34
 #: how far a pseudocode row moves right for each level (two leading spaces) of indentation
 PSEUDOCODE_INDENT = 0.3
@@ -110,7 +109,7 @@ class Panel:
     def _pseudocode_block(self) -> VGroup:
         """The pseudocode rows in the theme's font, one every :data:`PSEUDOCODE_PITCH` (less
         if they would not fit), indented by level, each placed by its baseline."""
-        font, size = self.theme.font, PSEUDOCODE_SIZE
+        font, size = self.theme.font, self.theme.pseudocode_size
         rows = VGroup(*[
             tag(typeset.text(step.text.strip() or " ", font=font, size=size,
                              colour=self.theme.idle), "idle", f"code:{k}")
@@ -142,9 +141,7 @@ class Panel:
         if self.mode == PSEUDOCODE:
             anims = self._light_row(beat.row)
         else:
-            line = beat.line
-            anims = self._light_row(next(
-                (k for k, (number, _) in enumerate(self.code_lines) if number == line), None))
+            anims = self._light_line(beat.line)
         if beat.call is not None:
             anims += self._call_line(beat.call)
         return anims
@@ -159,6 +156,11 @@ class Panel:
                 anims.append(marker.animate.set_color(colour))
         self.roles = wanted
         return anims
+
+    def _light_line(self, line: int | None) -> list[Animation]:
+        """Light the source row of ``line`` (:meth:`_light_row`)."""
+        index = next((k for k, (number, _) in enumerate(self.code_lines) if number == line), None)
+        return self._light_row(index)
 
     def _light_row(self, index: int | None) -> list[Animation]:
         """Light row ``index`` of the code: a light fades in behind it and a copy of the row
@@ -193,10 +195,10 @@ class Panel:
 
 
 def _baseline_offset(row, font: str, size: float) -> float:
-    """How far to move a row up so that its line box, not its own glyphs, is centred where
-    it was: a text is centred on its glyphs (one with descenders sits higher than one
-    without), but the same text followed by a bar ``|``, which reaches from the lowest
-    descender to above the capitals, is centred on the line."""
+    """How far to move a row up (down if negative) so that its line, not its own glyphs, is
+    centred where it was: a text is centred on its glyphs (one with descenders sits higher
+    than one without), but the same text followed by a bar ``|``, which reaches from the
+    lowest descender to above the capitals, is centred on the line."""
     if not len(row.points):
         return 0.0
     with_bar = typeset.outline(row.original_text + " |", font, float(size))
