@@ -14,6 +14,7 @@ from geometry.io import read_polygon
 from geometry.lennes import divide_and_conquer
 from geometry.triangulate import ALGORITHMS
 from story import registry
+from story.pseudocode import Step
 from story.registry import (
     HEURISTIC,
     REGISTRY,
@@ -26,7 +27,6 @@ from story.registry import (
     triangulations,
     wrong,
 )
-from story.pseudocode import Step
 from story.runs import run_logged
 
 EARCUT = Path(__file__).parent / "data" / "earcut"
