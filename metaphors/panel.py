@@ -1,5 +1,11 @@
 """The algorithm panel (right half): the polygon plainly, the running code with its line lit,
-and the call line ``nearest_to(B, [D, E]) → D``; every object coloured by its role."""
+and the call line ``nearest_to(B, [D, E]) → D``; every object coloured by its role.
+
+The code is the run's pseudocode in the thesis's words (:mod:`story.pseudocode`, lit by each
+beat's ``row``) or the real source of the shown function (lit by each beat's ``line``); either
+way a row is named by its place in the listing, ``code:1`` the first (docs/scene-graph.md). The source is what a panel shows
+until :meth:`Panel.show_pseudocode` is called (:func:`metaphors.play.board_for` decides).
+"""
 
 from __future__ import annotations
 
@@ -20,6 +26,13 @@ from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from rendering.layers import BACKDROP_Z
+from story.pseudocode import PSEUDOCODE, SOURCE, Step
+
+#: the distance between the pseudocode's rows (scene units; less when more rows than fit are
+#: shown): 4.25 % of the frame's height, for rows of the theme's ``pseudocode_size``
+PSEUDOCODE_PITCH = 0.34
+#: how far a pseudocode row moves right for each level (two leading spaces) of indentation
+PSEUDOCODE_INDENT = 0.3
 
 
 class Panel:
@@ -37,8 +50,13 @@ class Panel:
             label: tag(m, "idle", f"panel:{label}")
             for label, m in zip(labels, vertex_markers(polygon, self.frame, theme), strict=True)
         }
+        self.mode = SOURCE
         self.code_lines = source_of(shown) if shown else ()
+        self.pseudocode: tuple[Step, ...] = ()
         self.code = self._code_block()
+        # pseudocode: the height of every row's light, and the middle of each row's line
+        self.light_height: float | None = None
+        self.line_y: list[float] = []
         # (row, the light behind it, the row's copy in ink over the grey row)
         self.lit: tuple[int, Rectangle, object] | None = None
         self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
@@ -50,6 +68,13 @@ class Panel:
         heuristic of one's own carries its source in its log."""
         self.code_lines = tuple((int(number), str(text)) for number, text in code)
         self.code = self._code_block()
+
+    def show_pseudocode(self, rows) -> None:
+        """Show these pseudocode rows (:class:`story.pseudocode.Step`) instead of the source
+        (before the panel is on screen); each beat's ``row`` then lights one of them."""
+        self.mode = PSEUDOCODE
+        self.pseudocode = tuple(rows)
+        self.code = self._pseudocode_block()
 
     def mobjects(self) -> list:
         return [self.outline, *self.markers.values(), self.code, self.call]
@@ -84,6 +109,31 @@ class Panel:
         rows.move_to((PANEL_CODE.x, PANEL_CODE.y, 0))
         return rows
 
+    def _pseudocode_block(self) -> VGroup:
+        """The pseudocode rows in the theme's font, one every :data:`PSEUDOCODE_PITCH` (less
+        if they would not fit), indented by level, each placed by its baseline."""
+        font, size = self.theme.font, self.theme.pseudocode_size
+        rows = VGroup(*[
+            tag(typeset.text(step.text.strip() or " ", font=font, size=size,
+                             colour=self.theme.idle), "idle", f"code:{k}")
+            for k, step in enumerate(self.pseudocode, start=1)
+        ])
+        if not len(rows):
+            return rows
+        offsets = [_baseline_offset(row, font, size) for row in rows]
+        for k, (row, step) in enumerate(zip(rows, self.pseudocode, strict=True)):
+            row.move_to((PSEUDOCODE_INDENT * step.depth, -k * PSEUDOCODE_PITCH, 0),
+                        aligned_edge=LEFT)
+            row.shift([0, offsets[k], 0])
+        height = len(rows) * PSEUDOCODE_PITCH
+        scale = min(1.0, PANEL_CODE.height / height, PANEL_CODE.width / rows.width)
+        if scale < 1.0:
+            rows.scale(scale)
+        rows.move_to((PANEL_CODE.x, PANEL_CODE.y, 0))
+        self.light_height = PSEUDOCODE_PITCH * scale - 0.04
+        self.line_y = [row.get_y() - scale * d for row, d in zip(rows, offsets, strict=True)]
+        return rows
+
     def follow_roles(self, beat) -> list[Animation]:
         """Animations recolouring the panel's vertices to this beat's roles."""
         return self._recolour(beat.roles)
@@ -91,7 +141,10 @@ class Panel:
     def follow_text(self, beat) -> list[Animation]:
         """Animations moving the light to this beat's line and showing its call line (none if
         neither changes)."""
-        anims = self._light_line(beat.line)
+        if self.mode == PSEUDOCODE:
+            anims = self._light_row(beat.row)
+        else:
+            anims = self._light_line(beat.line)
         if beat.call is not None:
             anims += self._call_line(beat.call)
         return anims
@@ -108,17 +161,27 @@ class Panel:
         return anims
 
     def _light_line(self, line: int | None) -> list[Animation]:
-        """Light the row of ``line``: a light fades in behind it and a copy of the row in ink
-        over the grey row, while the last ones fade out. The rows themselves never change, and
-        nothing slides over them, so they stay in the still layer of every frame."""
+        """Light the source row of ``line`` (:meth:`_light_row`)."""
         index = next((k for k, (number, _) in enumerate(self.code_lines) if number == line), None)
-        if index is None or (self.lit is not None and self.lit[0] == index):
+        return self._light_row(index)
+
+    def _light_row(self, index: int | None) -> list[Animation]:
+        """Light row ``index`` of the code: a light fades in behind it and a copy of the row
+        in ink over the grey row, while the last ones fade out. The rows themselves never
+        change, and nothing slides over them, so they stay in the still layer of every frame.
+        None, or the row already lit: the light stays where it is."""
+        if index is None or not 0 <= index < len(self.code) or (
+                self.lit is not None and self.lit[0] == index):
             return []
         row = self.code[index]
-        light = tag(Rectangle(width=PANEL_CODE.width, height=row.height + 0.08, stroke_width=0,
+        if self.mode == PSEUDOCODE:  # every row's light alike, centred on its line
+            height, y = self.light_height, self.line_y[index]
+        else:
+            height, y = row.height + 0.08, row.get_y()
+        light = tag(Rectangle(width=PANEL_CODE.width, height=height, stroke_width=0,
                               fill_color=self.theme.called, fill_opacity=0.3), "called",
                     "panel:lit")
-        light.move_to((PANEL_CODE.x, row.get_y(), 0))
+        light.move_to((PANEL_CODE.x, y, 0))
         copy = tag(row.copy().set_color(self.theme.ink), "called", row.name)
         for mobject in (light, copy):
             mobject.set_z_index(BACKDROP_Z)  # the copy would keep the row's STILL_Z
@@ -132,3 +195,15 @@ class Panel:
         new.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         old, self.call = self.call, new
         return [FadeOut(old), FadeIn(new)]
+
+
+def _baseline_offset(row, font: str, size: float) -> float:
+    """How far to move a row up (down if negative) so that its line, not its own glyphs, is
+    centred where it was: a text is centred on its glyphs (one with descenders sits higher
+    than one without), but the same text followed by a bar ``|``, which reaches from the
+    lowest descender to above the capitals, is centred on the line."""
+    if not len(row.points):
+        return 0.0
+    with_bar = typeset.outline(row.original_text + " |", font, float(size))
+    own = typeset.outline(row.original_text, font, float(size))
+    return float(with_bar[0][1] - own[0][1]) if len(with_bar) and len(own) else 0.0

@@ -2,7 +2,8 @@
 step player alike.
 
 :func:`board_for` builds the board a log plays on (the first beat's polygon, the scene's
-metaphor box; the log's own ``code`` in the panel when it carries one: a user's source) and
+metaphor box; in the panel the run's pseudocode, unless the scene's ``panel`` asks for the
+source or the run has none; the log's own ``code`` when it carries one: a user's source) and
 :func:`play_beats` performs every beat on it, then closes the board (the last caption's cue
 lasts until the run ends).
 """
@@ -17,6 +18,8 @@ from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.layout import METAPHOR
 from story.beats import Beat
+from story.pseudocode import PSEUDOCODE
+from story.storyboard import pseudocode_of
 from tracing import Log
 
 #: widest title (scene units) before it is shrunk to fit the frame
@@ -24,12 +27,16 @@ TITLE_WIDTH = 13.4
 
 
 def board_for(scene: Scene, log: Log, beats: Sequence[Beat], title: str, theme) -> Board:
-    """The board a log plays on."""
+    """The board a log plays on; its panel shows what the scene's ``panel`` says (default:
+    the pseudocode, when the run has some)."""
     first = beats[0]
     board = Board(scene, first.points, first.labels, log.meta.get("shown"), title, theme,
                   getattr(scene, "metaphor_box", METAPHOR))
     code = log.meta.get("code")
-    if code:
+    rows = pseudocode_of(log)
+    if getattr(scene, "panel", PSEUDOCODE) == PSEUDOCODE and rows:
+        board.panel.show_pseudocode(rows)
+    elif code:
         board.panel.show_code(code)
     if board.title.width > TITLE_WIDTH:
         board.title.scale_to_fit_width(TITLE_WIDTH)

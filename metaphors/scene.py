@@ -6,7 +6,9 @@ plays them on a board. The scene never re-decides what the algorithm decided.
 
 The run is handed to the scene class as data: ``Scaling.handed(polygon="star")`` (or
 ``with_spec(spec)``) is a subclass carrying its ``spec``; ``trex`` and the tests play
-those. A scene handed nothing (``manim -pql scenes/scaling.py``) plays its default run,
+those. What the panel shows is the class attribute ``panel``: the run's pseudocode
+(``"pseudocode"``, the default; the source when the run has none) or the real source
+(``"source"``); ``Scaling.with_panel("source")`` is a subclass showing the source. A scene handed nothing (``manim -pql scenes/scaling.py``) plays its default run,
 with ``TREX_POLYGON`` and ``TREX_LOG`` from the environment (:mod:`story.environment`).
 """
 
@@ -31,6 +33,7 @@ from rendering.renderer import BackdropRenderer
 from rendering.typeset import text
 from story.beats import Beat
 from story.environment import spec_from_environment, specs_from_environment
+from story.pseudocode import PANELS, PSEUDOCODE
 from story.spec import RunSpec
 from story.storyboard import Pacing
 from tracing import Log
@@ -97,12 +100,22 @@ class TraceScene(SpecScene, Scene):
     theme = THEME
     pacing = Pacing()
     metaphor_box = METAPHOR  # where the metaphor's polygon goes (left half by default)
+    #: what the panel shows: the run's pseudocode (the source when it has none) or "source"
+    panel = PSEUDOCODE
 
     def __init__(self, renderer=None, **kwargs):
         if renderer is None and config.renderer == RendererType.CAIRO:
             renderer = BackdropRenderer(camera_class=kwargs.get("camera_class", PathCamera),
                                         skip_animations=kwargs.get("skip_animations", False))
         super().__init__(renderer=renderer, **kwargs)
+
+    @classmethod
+    def with_panel(cls, panel: str) -> type:
+        """This scene with its panel showing ``panel`` (one of
+        :data:`story.pseudocode.PANELS`). Raises ValueError for another value."""
+        if panel not in PANELS:
+            raise ValueError(f"unknown panel {panel!r}; expected one of {', '.join(PANELS)}")
+        return _subclass(cls, panel=panel)
 
     def log(self) -> Log:
         return self.run_spec().log()
@@ -233,5 +246,6 @@ def heuristic_scene(heuristic: UserHeuristic) -> type[Scene]:
         "polygon": "counterexample",
         "title": heuristic.title,
         "__module__": __name__,
-        "__doc__": f"The run of {heuristic.spec}, played with the user's source in the panel.",
+        "__doc__": f"The run of {heuristic.spec}, played with the user's source (or the "
+                   "pseudocode of its docstring) in the panel.",
     })

@@ -52,6 +52,7 @@ class Theme:
     dot_radius: float = 0.06
     label_size: int = 22
     caption_size: int = 26
+    pseudocode_size: int = 20  # the panel's pseudocode rows (a line about 3.4 % of the frame)
     title_size: int = 40
     fill_opacity: float = 0.35
 

@@ -1,13 +1,13 @@
 """Beats: what each moment of a video shows, as typed plain data.
 
 A beat has what every moment has — its caption, the step of the log it comes from, the call
-line and the line of the shown code lit, the roles of the objects (called, argument, result,
-rejected, idle) and its pace — and the fields of its own kind: a water beat the states of the
-growing disk, a verdict whether the claim holds and the edge it crosses. Each kind is a
-frozen dataclass; ``action`` names the kind (the player, the snapshots and a scene's paces
-read it). This module has the kinds every run shares (the heuristics' frame, the claim and
-its verdict, notes, and the generic beats of a heuristic of one's own); a metaphor module
-declares its own kinds beside the performers that play them.
+line, the line of the shown code lit and the row of the pseudocode lit, the roles of the
+objects (called, argument, result, rejected, idle) and its pace — and the fields of its own
+kind: a water beat the states of the growing disk, a verdict whether the claim holds and the
+edge it crosses. Each kind is a frozen dataclass; ``action`` names the kind (the player, the
+snapshots and a scene's paces read it). This module has the kinds every run shares (the
+heuristics' frame, the claim and its verdict, notes, and the generic beats of a heuristic of
+one's own); a metaphor module declares its own kinds beside the performers that play them.
 
 >>> beat = Pick(caption="B is the left-most vertex", step=3, vertex="B")
 >>> beat.action, beat.to_dict()["data"]
@@ -23,7 +23,7 @@ from dataclasses import dataclass, field, fields
 from typing import Any, ClassVar
 
 #: the fields every beat has; the others are its kind's ``data``
-COMMON = ("caption", "step", "call", "line", "roles", "pace")
+COMMON = ("caption", "step", "call", "line", "row", "roles", "pace")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -35,6 +35,8 @@ class Beat:
     step: int
     call: str | None = None
     line: int | None = None
+    #: the index of the pseudocode row lit (:func:`story.pseudocode.lit_row`); None: none yet
+    row: int | None = None
     roles: dict[str, str] = field(default_factory=dict)
     pace: float = 1.0
 
@@ -45,8 +47,8 @@ class Beat:
 
     def to_dict(self) -> dict[str, Any]:
         return {"action": self.action, "caption": self.caption, "step": self.step,
-                "call": self.call, "line": self.line, "roles": self.roles, "data": self.data,
-                "pace": self.pace}
+                "call": self.call, "line": self.line, "row": self.row, "roles": self.roles,
+                "data": self.data, "pace": self.pace}
 
 
 def beat_kind(action: str):

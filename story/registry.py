@@ -21,6 +21,14 @@ Examples
 ('heuristic', False, 'clock', 'counterexample-twin', 'rotation-correct')
 >>> entry("gravity").shown
 'gravity_at'
+>>> for step in entry("scaling").pseudocode:
+...     print(f"{step.text:44} {', '.join(step.calls)}")
+B = the left-most vertex (lowest on ties)    leftmost_vertex
+A, C = its neighbours; T = triangle ABC      triangle_at
+candidates = the other vertices inside T     candidates_in_triangle
+none: AC is an inner diagonal                claim
+else: D = the candidate closest to B         pick, nearest_to
+  BD is an inner diagonal                    claim
 """
 
 from __future__ import annotations
@@ -35,6 +43,7 @@ from geometry.lennes import divide_and_conquer
 from geometry.polygon import Polygon
 from geometry.results import Triangulation
 from geometry.triangulate import RUNNERS, triangulate
+from story.pseudocode import Step
 
 __all__ = [
     "HEURISTIC",
@@ -46,6 +55,7 @@ __all__ = [
     "entry",
     "heuristics",
     "names",
+    "pseudocode",
     "shown",
     "triangulations",
     "wrong",
@@ -90,8 +100,11 @@ class Entry:
         which it fails.
     title : str
         One line naming it and its idea, for titles.
-    pseudocode : tuple of str
-        Its pseudocode in the thesis's words, one line each (empty: not written yet).
+    pseudocode : tuple of Step
+        Its pseudocode in the thesis's words (ch. 2), at most about ten short rows, each a
+        :class:`story.pseudocode.Step`: its text (two leading spaces a level) and the traced
+        names of the calls it covers, which light it as the log runs. Empty for the
+        reference triangulation (the panel shows nothing).
     correction : str or None
         For a wrong heuristic, the correct one that mends it (thesis ch. 2.1.2).
     """
@@ -105,7 +118,7 @@ class Entry:
     source: Callable | None
     polygon: str
     title: str
-    pseudocode: tuple[str, ...] = ()
+    pseudocode: tuple[Step, ...] = ()
     correction: str | None = None
 
     @property
@@ -119,10 +132,26 @@ class Entry:
 
 
 def _heuristic(name: str, *, correct: bool, metaphor: str, polygon: str, title: str,
-               shown: Callable | None = None, correction: str | None = None) -> Entry:
+               pseudocode: tuple[Step, ...], shown: Callable | None = None,
+               correction: str | None = None) -> Entry:
     source = shown or HEURISTICS[name]
     return Entry(name, HEURISTIC, HEURISTICS[name], correct, metaphor, _traced_name(source),
-                 source, polygon, title, correction=correction)
+                 source, polygon, title, pseudocode, correction)
+
+
+def _frame(rule: str, *calls: str, inside: tuple[Step, ...] = ()) -> tuple[Step, ...]:
+    """The pseudocode every triangle heuristic shares (thesis ch. 2.1), around its rule for D:
+    ``else: D = <rule>``, covering the traced ``pick`` and the rule's own ``calls`` (with the
+    rows ``inside`` the rule, if any)."""
+    return (
+        Step("B = the left-most vertex (lowest on ties)", ("leftmost_vertex",)),
+        Step("A, C = its neighbours; T = triangle ABC", ("triangle_at",)),
+        Step("candidates = the other vertices inside T", ("candidates_in_triangle",)),
+        Step("none: AC is an inner diagonal", ("claim",)),
+        Step(f"else: D = {rule}", ("pick", *calls)),
+        *inside,
+        Step("  BD is an inner diagonal", ("claim",)),
+    )
 
 
 def _traced_name(function: Callable) -> str:
@@ -142,47 +171,116 @@ def _runner(name: str) -> Callable[..., Triangulation]:
 
 
 def _triangulation(name: str, *, metaphor: str | None, title: str,
-                   shown: Callable | None = None, polygon: str = "lecture",
-                   show_source: bool = True) -> Entry:
+                   pseudocode: tuple[Step, ...] = (), shown: Callable | None = None,
+                   polygon: str = "lecture", show_source: bool = True) -> Entry:
     source = shown or RUNNERS[name]
     return Entry(name, TRIANGULATION, _runner(name), True, metaphor, _traced_name(source),
-                 source if show_source else None, polygon, title)
+                 source if show_source else None, polygon, title, pseudocode)
+
+
+#: The traced names of the heuristics (divide and conquer calls one of them on each piece).
+_HEURISTIC_CALLS = tuple(_traced_name(f) for f in HEURISTICS.values())
+
+#: The rows of gravity (thesis ch. 2.1.2, after Forišek and Steinová), also inside the others.
+_GRAVITY = (
+    Step("V = a concave vertex (the first after B)", ("reflex_vertex", "straight_vertex")),
+    Step("turn P: V's sides point up, no edge level", ("gravity_direction",)),
+    Step("drop a ball on a band at V: it hits a side", ("drop_ball",)),
+    Step("it slides down the side to a vertex X", ("slide_to_vertex",)),
+    Step("did the band hit a vertex? Y = the first", ("band_snag",)),
+    Step("inner diagonal: VX if straight, else VY", ("claim",)),
+    Step("no concave vertex: P is convex, take AC", ("leftmost_vertex", "triangle_at", "claim")),
+)
 
 
 _ENTRIES = (
     # --- heuristics (thesis ch. 2.1): the wrong ones, then the corrections -------------------
     _heuristic("scaling", correct=False, metaphor="water", polygon="counterexample",
                title="Scaling: water spilled at B wets the nearest candidate",
+               pseudocode=_frame("the candidate closest to B", "nearest_to"),
                correction="scaling-correct"),
     _heuristic("rotation", correct=False, metaphor="clock", polygon="counterexample",
                title="Rotation: a clock at B, set to A, stops at the first candidate",
+               pseudocode=_frame("first hit of a hand at B set to A", "first_hit_rotating"),
                correction="rotation-correct"),
     _heuristic("rotation-ccw", correct=False, metaphor="clock", polygon="counterexample-twin",
                title="Rotation the other way: the clock at B set to C",
+               pseudocode=_frame("first hit of a hand at B set to C", "first_hit_rotating"),
                correction="rotation-correct"),
     _heuristic("translation", correct=False, metaphor="sweep", polygon="counterexample",
                title="Translation: a vertical line swept from B",
+               pseudocode=_frame("the left-most candidate", "first_hit_sweeping"),
                correction="translation-correct"),
     _heuristic("translation-correct", correct=True, metaphor="sweep", polygon="counterexample",
-               title="Correct translation: a line parallel to AC swept from B"),
+               title="Correct translation: a line parallel to AC swept from B",
+               pseudocode=_frame("first hit of a line ∥ AC from B", "first_hit_sweeping")),
     _heuristic("scaling-correct", correct=True, metaphor="water", polygon="counterexample",
-               title="Correct scaling: water rises from AC; the last dry candidate"),
+               title="Correct scaling: water rises from AC; the last dry candidate",
+               pseudocode=_frame("the candidate farthest from AC", "last_dry")),
     _heuristic("rotation-correct", correct=True, metaphor="clock", polygon="counterexample",
-               title="Correct rotation: the clock moves to C, set to B"),
+               title="Correct rotation: the clock moves to C, set to B",
+               pseudocode=_frame("first hit of a hand at C set to B", "first_hit_rotating")),
     _heuristic("scaling-walled", correct=True, metaphor="water", polygon="counterexample",
-               title="Scaling with walls: water that cannot pass the edges"),
+               title="Scaling with walls: water that cannot pass the edges",
+               pseudocode=_frame("the nearest vertex that B sees", "nearest_visible",
+                                 inside=(Step("  B sees V if BV runs inside P", ("sees",)),))),
     _heuristic("gravity", correct=True, metaphor="gravity", polygon="gravity-snag",
-               title="Gravity: a ball on a rubber band finds a diagonal", shown=gravity_at),
+               title="Gravity: a ball on a rubber band finds a diagonal", shown=gravity_at,
+               pseudocode=_GRAVITY),
     # --- triangulations (thesis ch. 2.2-2.4) -----------------------------------------------------
     _triangulation("divide-and-conquer", metaphor="pieces", shown=divide_and_conquer,
-                   title="Divide and conquer (Lennes): split along inner diagonals"),
+                   title="Divide and conquer (Lennes): split along inner diagonals",
+                   pseudocode=(
+                       Step("if P is a triangle, we are done"),
+                       Step("else find an inner diagonal d of P", _HEURISTIC_CALLS),
+                       Step("divide P along d into P1 and P2", ("split",)),
+                       Step("triangulate P1 and P2 the same way"),
+                       Step("their union is the triangulation of P"),
+                   )),
     _triangulation("ear-clipping-naive", metaphor="fruit",
-                   title="Ear clipping (Meisters): slice the first ear found"),
+                   title="Ear clipping (Meisters): slice the first ear found",
+                   pseudocode=(
+                       Step("while P has more than 3 vertices:"),
+                       Step("  for each vertex V, from the first:"),
+                       Step("    is V an ear? (V−1 V V+1 is empty)", ("is_ear",)),
+                       Step("    yes: slice V−1 V V+1 off, start again", ("clip_ear",)),
+                       Step("the triangle left is the last slice", ("ear-clipping-naive",)),
+                   )),
     _triangulation("ear-clipping", metaphor="fruit",
-                   title="Ear clipping with ear status kept up to date"),
+                   title="Ear clipping with ear status kept up to date",
+                   pseudocode=(
+                       Step("ear status of every vertex: unknown"),
+                       Step("walk round P while it has > 3 vertices:"),
+                       Step("  V's status unknown: is V an ear?", ("is_ear",)),
+                       Step("  V is an ear: slice V−1 V V+1 off", ("clip_ear",)),
+                       Step("    only V−1 and V+1 change: test again"),
+                       Step("  else go on to the next vertex"),
+                       Step("the triangle left is the last slice", ("ear-clipping",)),
+                   )),
     _triangulation("prune-and-search", metaphor="fruit",
-                   title="Prune and search: the good sub-polygons shrink"),
-    _triangulation("monotone", metaphor="monotone", title="Monotone partition, then the stack"),
+                   title="Prune and search: the good sub-polygons shrink",
+                   pseudocode=(
+                       Step("G = P, good: it has no cutting edge"),
+                       Step("while P is more than a triangle:"),
+                       Step("  V = the middle vertex of G: an ear?", ("is_ear",)),
+                       Step("  yes: slice the ear V off, go on in G", ("clip_ear",)),
+                       Step("  no: find an inner diagonal V–W of G", ("diagonal_at",)),
+                       Step("    (V convex: the sweep; else gravity)", ("sweep_at", "gravity_at")),
+                       Step("    G = the good part beyond V–W", ("good_subpolygon",)),
+                   )),
+    _triangulation("monotone", metaphor="monotone", title="Monotone partition, then the stack",
+                   pseudocode=(
+                       Step("sweep a line down P, vertex by vertex:", ("make_monotone",)),
+                       Step("  v is start, end, split, merge or regular", ("classify_vertex",)),
+                       Step("  start, end, regular: update the helpers",
+                            ("handle_start", "handle_end", "handle_regular")),
+                       Step("  split: join v to the helper on its left", ("handle_split",)),
+                       Step("  merge: v helps the edge on its left", ("handle_merge",)),
+                       Step("    add the diagonal v–helper", ("add_diagonal",)),
+                       Step("cut P along them into y-monotone pieces", ("monotone_pieces",)),
+                       Step("triangulate each piece with a stack",
+                            ("triangulate_monotone_piece",)),
+                   )),
     _triangulation("cdt", metaphor=None, title="Constrained Delaunay (shapely)",
                    show_source=False),
 )
@@ -266,3 +364,14 @@ def shown(name: str) -> str:
     """
     known = REGISTRY.get(name)
     return known.shown if known is not None else name
+
+
+def pseudocode(name: str) -> tuple[Step, ...]:
+    """The pseudocode of ``name``; none for any other name (a heuristic of one's own carries
+    its own in its log, if its docstring has it).
+
+    >>> pseudocode("gravity")[0].text, pseudocode("cdt"), pseudocode("biggest_angle")
+    ('V = a concave vertex (the first after B)', (), ())
+    """
+    known = REGISTRY.get(name)
+    return known.pseudocode if known is not None else ()

@@ -10,6 +10,8 @@ live run or from a saved JSON file, and cannot tell the difference.
 
 from __future__ import annotations
 
+import inspect
+
 import tracing
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
@@ -18,6 +20,7 @@ from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import triangulate
 from geometry.user_heuristics import is_user_spec, load_user_heuristic
+from story.pseudocode import from_docstring, to_json
 from story.registry import REGISTRY, shown
 
 
@@ -60,11 +63,15 @@ def saved_log(path: str) -> tracing.Log:
 
 def _run_user(spec: str, polygon: str) -> tracing.Log:
     """A heuristic of one's own: the meta names it (``user_heuristic``, which turns on the
-    storyboard's generic beats) and carries its source, so a saved log shows it too."""
+    storyboard's generic beats) and carries its source, and the pseudocode of its docstring
+    if it has some (:func:`story.pseudocode.from_docstring`), so a saved log shows them too."""
     heuristic = load_user_heuristic(spec)
     p = read_polygon(polygon)
     meta = {"algorithm": spec, "polygon": polygon, "shown": heuristic.name,
             "user_heuristic": heuristic.name, "code": [list(row) for row in heuristic.source()]}
+    rows = from_docstring(inspect.getdoc(heuristic.raw))
+    if rows:
+        meta["pseudocode"] = to_json(rows)
     with tracing.record(**meta) as log:
         heuristic.run(p)
     return log

@@ -45,8 +45,9 @@ from story.beats import (
     ShowTriangle,
     Verdict,
 )
+from story.pseudocode import Step, from_json, lit_row
 from story.reach import Reach, reach_of
-from story.registry import heuristics
+from story.registry import heuristics, pseudocode
 from story.roles import ROLES
 from tracing import Event, Log
 
@@ -143,8 +144,11 @@ class Walk:
     that needs state of its own across calls keeps it in :meth:`memo`.
     """
 
-    def __init__(self, log: Log, pacing: Pacing, shown_code: str | None, user: str | None):
+    def __init__(self, log: Log, pacing: Pacing, shown_code: str | None, user: str | None,
+                 rows: tuple[Step, ...] = ()):
         self.log, self.pacing, self.shown_code, self.user = log, pacing, shown_code, user
+        self.rows = rows  # the pseudocode of the run
+        self.lit: int | None = None  # the pseudocode row lit so far
         self.live: dict[str, dict] = {}
         self.returns = {e.call: e for e in log.events if e.kind == "return"}
         self.claims = 0
@@ -205,6 +209,19 @@ class Walk:
                 return inner.line
         return None
 
+    def pseudocode_row(self, event: Event) -> int | None:
+        """The pseudocode row lit at ``event``: the row covering the innermost running call a
+        row covers (the event itself first, when it is a call or a note), else the row lit
+        last (:func:`story.pseudocode.lit_row`)."""
+        running = [c.name for c in self.stack]
+        if event.kind in ("call", "note") and (not self.stack or self.stack[-1] is not event):
+            running.append(event.name)
+        row = lit_row(self.rows, running, self.lit)
+        if row is None:
+            return self.lit
+        self.lit = row
+        return row
+
     def count_claim(self) -> None:
         """One more diagonal found: after ``pacing.full`` of them the beats go faster."""
         self.claims += 1
@@ -213,9 +230,9 @@ class Walk:
         return 1.0 if self.claims < self.pacing.full else self.pacing.fast
 
     def beat(self, beat_type: type[Beat], caption: str, event: Event, /, **fields) -> Beat:
-        """A beat of ``beat_type`` at ``event``: its lit line and pace from the walk."""
+        """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk."""
         return beat_type(caption=caption, step=event.seq, line=self.code_line(event),
-                    pace=self.pace(), **fields)
+                         row=self.pseudocode_row(event), pace=self.pace(), **fields)
 
     def is_heuristic(self, name: str) -> bool:
         return name in self._heuristics or name == self.user
@@ -223,12 +240,32 @@ class Walk:
     def track(self, event: Event) -> None:
         if event.kind == "call":
             self.stack.append(event)
+            self.pseudocode_row(event)  # a call no beat shows lights its row too
         elif event.kind == "return":
             self.stack.pop()
         elif event.kind in ("enter", "change"):
             self.live[event.target] = event.state
         elif event.kind == "exit":
             self.live.pop(event.target, None)
+
+
+def pseudocode_of(log: Log) -> tuple[Step, ...]:
+    """The pseudocode of a log's run: its own (meta ``pseudocode``: a heuristic of one's own
+    whose docstring has some), else its algorithm's in the registry; none for any other.
+
+    >>> import tracing
+    >>> with tracing.record(algorithm="gravity") as log:
+    ...     pass
+    >>> pseudocode_of(log)[0].calls
+    ('reflex_vertex', 'straight_vertex')
+    >>> log.meta["pseudocode"] = [["claim BD", ["claim"]]]
+    >>> pseudocode_of(log)
+    (Step(text='claim BD', calls=('claim',)),)
+    """
+    if "pseudocode" in log.meta:
+        return from_json(log.meta["pseudocode"])
+    algorithm = log.meta.get("algorithm")
+    return pseudocode(algorithm) if isinstance(algorithm, str) else ()
 
 
 def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = None,
@@ -238,10 +275,12 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
     ``readings`` map traced names to the readings of the metaphors' steps (the frame's are
     always read). ``shown_code`` names the traced function whose source the panel shows
     (default: the log's ``shown``, else ``algorithm`` meta); each beat's ``line`` is the
-    source line lit in it.
+    source line lit in it, and its ``row`` the row of the run's pseudocode
+    (:func:`pseudocode_of`) lit in it.
     """
     shown = shown_code or log.meta.get("shown") or log.meta.get("algorithm")
-    walk = Walk(log, pacing or Pacing(), shown, log.meta.get("user_heuristic"))
+    walk = Walk(log, pacing or Pacing(), shown, log.meta.get("user_heuristic"),
+                pseudocode_of(log))
     table = {**FRAME_READS, **readings}
     beats: list[Beat] = []
     for event in log.events:

@@ -28,13 +28,14 @@ from trex.scene_graph import build
 SCENES = Path(__file__).resolve().parents[1] / "scenes"
 
 
-def scene_class(file: str, name: str):
-    """The scene, handed its default run (whatever TREX_POLYGON and TREX_LOG say)."""
-    return load_scene_class(SCENES / f"{file}.py", name).handed()
+def scene_class(file: str, name: str, panel: str = "pseudocode"):
+    """The scene, handed its default run (whatever TREX_POLYGON and TREX_LOG say), its panel
+    showing ``panel``."""
+    return load_scene_class(SCENES / f"{file}.py", name).with_panel(panel).handed()
 
 
 @functools.cache
-def played(file: str, name: str):
+def played(file: str, name: str, panel: str = "pseudocode"):
     """Build the scene in dry run: (its boards, [set of ids of moving mobjects per play])."""
     moving: list[set[int]] = []
     boards: list[Board] = []
@@ -51,14 +52,15 @@ def played(file: str, name: str):
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(CairoRenderer, "play", record_play)  # snapshot's GraphRenderer inherits it
         patch.setattr(Board, "__init__", record_board)
-        build(scene_class(file, name))
+        build(scene_class(file, name, panel))
     return boards, moving
 
 
-@pytest.mark.parametrize(("file", "name"), [("gravity", "Gravity"), ("scaling", "Scaling"),
-                                            ("ears", "Ears")])
-def test_code_and_title_are_never_redrawn_per_frame(file, name):
-    boards, moving = played(file, name)
+@pytest.mark.parametrize(("file", "name", "panel"), [
+    ("gravity", "Gravity", "pseudocode"), ("scaling", "Scaling", "pseudocode"),
+    ("ears", "Ears", "pseudocode"), ("scaling", "Scaling", "source")])
+def test_code_and_title_are_never_redrawn_per_frame(file, name, panel):
+    boards, moving = played(file, name, panel)
     board = boards[0]
     rows = {id(m) for m in board.panel.code.get_family()}
     assert len(rows) > 5 and len(moving) > 5
@@ -70,14 +72,19 @@ def test_code_and_title_are_never_redrawn_per_frame(file, name):
     assert any(moving), "nothing moved: the hook saw no plays"
 
 
-def test_lit_row_is_a_copy_over_the_row():
-    boards, _ = played("gravity", "Gravity")
+@pytest.mark.parametrize("mode", ["pseudocode", "source"])
+def test_lit_row_is_a_copy_over_the_row(mode):
+    boards, _ = played("gravity", "Gravity", mode)
     panel = boards[0].panel
+    assert panel.mode == mode
     index, light, copy = panel.lit
     row = panel.code[index]
     assert np.array_equal(copy.points, row.points)
     assert copy.get_fill_color().to_hex().lower() == panel.theme.ink.lower()
-    assert light.get_center()[1] == pytest.approx(row.get_center()[1])
+    # the light lies behind the whole row: centred on it (a pseudocode row: on its line)
+    middle = panel.line_y[index] if mode == "pseudocode" else row.get_center()[1]
+    assert light.get_center()[1] == pytest.approx(middle)
+    assert light.get_bottom()[1] < row.get_bottom()[1] < row.get_top()[1] < light.get_top()[1]
     assert light.z_index == copy.z_index == BACKDROP_Z > row.z_index  # over the grey row
     # the rows themselves stay grey: the light is the copy and the rectangle behind it
     assert {r.get_fill_color().to_hex().lower() for r in panel.code} == {panel.theme.idle.lower()}

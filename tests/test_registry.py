@@ -14,6 +14,7 @@ from geometry.io import read_polygon
 from geometry.lennes import divide_and_conquer
 from geometry.triangulate import ALGORITHMS
 from story import registry
+from story.pseudocode import Step
 from story.registry import (
     HEURISTIC,
     REGISTRY,
@@ -82,7 +83,7 @@ def test_every_entry_is_complete(name):
         module = importlib.import_module(f"metaphors.{e.metaphor}")
         assert module.READS and module.PERFORMS
     assert e.title and "\n" not in e.title
-    assert isinstance(e.pseudocode, tuple) and all(isinstance(s, str) for s in e.pseudocode)
+    assert isinstance(e.pseudocode, tuple) and all(isinstance(s, Step) for s in e.pseudocode)
     assert shown(name) == e.shown
     read_polygon(e.polygon)  # a sample every command reads
 

@@ -35,7 +35,10 @@ from manim import Scene, tempconfig
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
+from metaphors.pseudocode import source_of
 from story.registry import entry, wrong
+from tests.test_pseudocode import PLUMBING, assert_rows_follow_calls, code_rows, graph_data
+from trex.scene_graph import build_graph
 from trex.snapshot import SceneGraph, assert_same_graph, build
 
 SCENES_DIR = Path(__file__).resolve().parents[1] / "scenes"
@@ -255,6 +258,77 @@ def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
 
 
 
+# --- the panel: pseudocode in the thesis's words, the source one flag away ---------------------
+
+#: 2.5 % of the frame's height (8 units): the least a line of text may be
+LEAST_LINE = 0.2
+
+
+def _last_algorithm(case: SceneCase) -> str | None:
+    """The algorithm whose run the scene's last board plays."""
+    runs = getattr(case.cls, "runs", None)
+    return runs[-1][0] if runs else getattr(case.cls, "algorithm", None)
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_panel_shows_pseudocode(case):
+    rows = code_rows(graph(case))
+    if not rows:
+        pytest.skip(f"{case.id} shows no panel")
+    texts = [r["text"] for r in rows]
+    assert not [t for t in texts if any(word in t for word in PLUMBING)], case.id
+    assert texts == [s.text.strip() for s in entry(_last_algorithm(case)).pseudocode], case.id
+    assert [r["name"] for r in rows] == [f"code:{k}" for k in range(1, len(rows) + 1)]
+    heights = [r["box"][3] - r["box"][1] for r in rows]
+    assert min(heights) >= LEAST_LINE, (case.id, min(heights))
+    lit = [n for n in nodes(graph(case), final_only=True)
+           if n["name"].startswith("code:") and n["role"] == "called"]
+    assert len(lit) == 1 and lit[0]["text"] in texts  # the lit row's copy, in ink
+
+
+def _scene_logs(case: SceneCase, folder: Path):
+    """The scene (not built) and the logs it plays, or None if it plays none."""
+    with tempconfig({"dry_run": True, "media_dir": str(folder), "verbosity": "WARNING"}):
+        scene = case.handed()(skip_animations=True)
+        if callable(getattr(scene, "logs", None)):
+            return scene, scene.logs()
+        if callable(getattr(scene, "log", None)):
+            return scene, [scene.log()]
+    return None
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_each_lit_row_covers_the_running_call(case, tmp_path):
+    played = _scene_logs(case, tmp_path)
+    if played is None:
+        pytest.skip(f"{case.id} plays no log")
+    scene, logs = played
+    for log in logs:
+        beats = scene.beats(log)
+        assert_rows_follow_calls(log, beats)
+        assert any(b.row is not None for b in beats), case.id
+
+
+@pytest.mark.parametrize("case", [c for c in _params(SCENES)
+                                  if c.id in ("scaling.Scaling", "gravity.Gravity")])
+def test_the_source_is_one_flag_away(case):
+    algorithm = case.scene_class().algorithm
+    source = build_graph(case.scene_class().with_panel("source").handed())
+    rows = code_rows(source)
+    expected = source_of(entry(algorithm).shown)
+    assert [r["text"] for r in rows] == [text.strip() for _, text in expected]
+    assert [r["name"] for r in rows] == [f"code:{k}" for k in range(1, len(expected) + 1)]
+    assert rows[0]["text"].startswith("def ")
+    # the same run, the same pictures: only the panel's text differs
+    def is_code(node) -> bool:
+        parts = node.get("submobjects", ())
+        return node["name"].startswith(("code:", "panel:lit")) or (bool(parts) and all(
+            p["name"].startswith("code:") for p in parts))
+
+    def picture(graph_json):
+        return [n for n in graph_data(graph_json)["final"] if not is_code(n)]
+
+    assert picture(source) == picture(graph(case))
 
 
 # --- layout --------------------------------------------------------------------------------------

@@ -20,7 +20,8 @@ once on it, as :class:`metaphors.lecture.LectureScene` would, without drawing
 (:func:`polygon_checks`); a scene played as a chapter dry-runs its ``algorithm``. The
 polygon reaches each chapter's process as an argument, and the chapter's scene is handed it
 (:func:`trex.render_command.scene_input`); without ``--polygon`` a chapter plays what
-``manim`` would play (the environment the process inherits).
+``manim`` would play (the environment the process inherits). ``--panel`` reaches it the
+same way: what every chapter's panel shows (default: each scene's own, the pseudocode).
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ from pathlib import Path
 import click
 
 from geometry.errors import GeometryError
+from story.pseudocode import PANELS
 from trex.inputs import error_line, fail, first_line, load_or_exit
 from trex.render_command import (
     EXIT_FAILED,
@@ -271,11 +273,11 @@ class _Render:
 
 
 def _start(k: int, chapter, folder: Path, logs: Path, quality: str,
-           polygon: str | None) -> _Render:
+           polygon: str | None, panel: str | None = None) -> _Render:
     output = folder / f"{chapter_stem(chapter)}.mp4"
     log = logs / f"{chapter_stem(chapter)}.log"
     command = [sys.executable, "-m", "trex.lecture_command", str(scene_path(chapter)),
-               chapter.scene_class or "", str(output), quality, polygon or ""]
+               chapter.scene_class or "", str(output), quality, polygon or "", panel or ""]
     with open(log, "wb") as sink:
         # its own session: Ctrl-C at the terminal reaches only us, and we stop it
         process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=sink,
@@ -313,8 +315,10 @@ def _stop(renders: Sequence[_Render]) -> None:
 
 def render_chapters(chapters: Sequence, folder: Path, logs: Path, quality: str, jobs: int,
                     polygon: str | None,
-                    done: Callable[[int, object, object, float], None] | None = None) -> list:
-    """Render every chapter to ``folder/NN-slug.mp4`` (+ .srt), ``jobs`` at a time.
+                    done: Callable[[int, object, object, float], None] | None = None,
+                    panel: str | None = None) -> list:
+    """Render every chapter to ``folder/NN-slug.mp4`` (+ .srt), ``jobs`` at a time, their
+    panels showing ``panel`` (None: each scene's own).
 
     Returns the chapters' :class:`trex.assemble.Video` in chapter order; calls
     ``done(k, chapter, video, seconds)`` as each one finishes. The first failure stops the
@@ -329,7 +333,7 @@ def render_chapters(chapters: Sequence, folder: Path, logs: Path, quality: str, 
         while pending or running:
             while pending and len(running) < jobs:
                 k, chapter = pending.pop(0)
-                running.append(_start(k, chapter, folder, logs, quality, polygon))
+                running.append(_start(k, chapter, folder, logs, quality, polygon, panel))
             time.sleep(POLL)
             for render in list(running):
                 code = render.process.poll()
@@ -391,9 +395,10 @@ def move_into_place(stage: Path, out_dir: Path, trash: Path) -> None:
 
 def build_lecture(chapters: Sequence, out_dir: Path, quality: str, jobs: int,
                   polygon: str | None, signals=None,
-                  echo: Callable[[str], None] = click.echo) -> tuple[Path, float]:
-    """Render and join ``chapters`` into ``out_dir``; returns the lecture mp4 and its length
-    in seconds. Raises :class:`ChapterFailed`, or :class:`Interrupted` on a signal (with
+                  echo: Callable[[str], None] = click.echo,
+                  panel: str | None = None) -> tuple[Path, float]:
+    """Render and join ``chapters`` into ``out_dir`` (their panels showing ``panel``; None:
+    each scene's own); returns the lecture mp4 and its length in seconds. Raises :class:`ChapterFailed`, or :class:`Interrupted` on a signal (with
     ``signals`` from ``interrupts_raise``); then nothing at ``out_dir`` has changed."""
     where = out_dir.resolve()  # "." has no name and is its own parent
     temp = Path(tempfile.mkdtemp(prefix=f".{where.name}.", suffix=".lecture",
@@ -408,7 +413,7 @@ def build_lecture(chapters: Sequence, out_dir: Path, quality: str, jobs: int,
                  f"in {seconds:.1f} s")
 
         videos = render_chapters(chapters, stage / CHAPTER_DIR, logs, quality,
-                                 max(1, min(jobs, len(chapters))), polygon, done)
+                                 max(1, min(jobs, len(chapters))), polygon, done, panel)
         for chapter, video in zip(chapters, videos, strict=True):
             if video.audio:
                 click.echo(f"warning: {chapter.slug}: has sound; the lecture keeps its video only",
@@ -438,8 +443,11 @@ def build_lecture(chapters: Sequence, out_dir: Path, quality: str, jobs: int,
               show_default=True, help="Directory of the lecture.")
 @click.option("--chapters", "only", metavar="NAME,...",
               help="Only these chapters (slugs), or scenes played as chapters.")
+@click.option("--panel", type=click.Choice(PANELS), default=None,
+              help="What the panels show: the pseudocode (the scenes' default; the source "
+                   "when a run has none) or the real source.")
 def lecture(quality: str, jobs: int, polygon: str | None, out_dir: str,
-            only: str | None) -> None:
+            only: str | None, panel: str | None) -> None:
     """Render every chapter of the lecture and join them: DIR/lecture.mp4, lecture.srt,
     chapters.json, chapters.md and the chapter videos in DIR/chapters/.
 
@@ -448,11 +456,12 @@ def lecture(quality: str, jobs: int, polygon: str | None, out_dir: str,
     """
     if polygon is not None:
         load_or_exit(polygon)  # bad input: one line, exit 2, before anything else
-    run_lecture(None, Path(out_dir), quality, jobs, polygon, only)
+    run_lecture(None, Path(out_dir), quality, jobs, polygon, only, panel)
 
 
 def run_lecture(chapters: Sequence | None, out_dir: Path, quality: str = "l", jobs: int = 1,
-                polygon: str | None = None, only: str | None = None) -> Path:
+                polygon: str | None = None, only: str | None = None,
+                panel: str | None = None) -> Path:
     """The command after its polygon check: ``chapters`` None = the lecture's own."""
     if chapters is None:
         try:
@@ -478,7 +487,8 @@ def run_lecture(chapters: Sequence | None, out_dir: Path, quality: str = "l", jo
     with interrupts_raise() as signals:
         try:
             check_chapters(chapters, polygon)
-            video, seconds = build_lecture(chapters, out_dir, quality, jobs, polygon, signals)
+            video, seconds = build_lecture(chapters, out_dir, quality, jobs, polygon, signals,
+                                           panel=panel)
         except Interrupted as exc:
             click.echo("error: lecture interrupted; nothing written", err=True)
             raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
@@ -505,9 +515,10 @@ def _failed(message: str):
 
 
 def render_chapter(scene_file: str, class_name: str | None, output: str, quality: str,
-                   polygon: str | None = None) -> int:
+                   polygon: str | None = None, panel: str | None = None) -> int:
     """Render one scene to ``output`` (mp4 + .srt) with ``render_into``, handed ``polygon``
-    (None or empty: what ``manim`` would give it); the exit status.
+    (None or empty: what ``manim`` would give it), its panel showing ``panel`` (None or
+    empty: the scene's own); the exit status.
 
     Failures are one line on stderr; SIGTERM/SIGINT stop it with nothing left behind.
     """
@@ -515,8 +526,8 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
         try:
             try:
                 cls = load_scene_class(Path(scene_file), class_name or None)
-                render_into(scene_input(cls, polygon or None), Path(output), "mp4",
-                            QUALITIES[quality], progress=False, signals=signals)
+                render_into(scene_input(cls, polygon or None, panel or None), Path(output),
+                            "mp4", QUALITIES[quality], progress=False, signals=signals)
             except Exception as exc:
                 signals.check()
                 print(f"error: render failed: {type(exc).__name__}: {error_line(exc)}",
@@ -531,4 +542,4 @@ COMMANDS = (lecture,)
 __all__ = ["COMMANDS", "build_lecture", "lecture", "render_chapter", "run_lecture"]
 
 if __name__ == "__main__":
-    sys.exit(render_chapter(*sys.argv[1:6]))
+    sys.exit(render_chapter(*sys.argv[1:7]))

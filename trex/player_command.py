@@ -31,6 +31,7 @@ import click
 
 from geometry.errors import GeometryError
 from geometry.user_heuristics import is_user_spec
+from story.pseudocode import PANELS
 from trex.inputs import error_line, fail, load_or_exit
 
 MARKER = ".trex-player"
@@ -144,7 +145,11 @@ def move_into_place(built: Path, target: Path) -> None:
                    "as TREX_LOG for scenes, which is read when neither option is given.")
 @click.option("-o", "--output", "output", required=True, metavar="DIR",
               help="Directory to write index.html and steps/ into.")
-def player(scene: str, polygon: str | None, saved: str | None, output: str) -> None:
+@click.option("--panel", type=click.Choice(PANELS), default=None,
+              help="What the panel shows: the pseudocode (the scenes' default; the source "
+                   "when the run has none) or the real source.")
+def player(scene: str, polygon: str | None, saved: str | None, output: str,
+           panel: str | None) -> None:
     """Write an offline HTML page that steps through SCENE's run, one picture per step.
 
     SCENE as for `trex render` (gravity, rotation:RotationCcw, my_scene.py:Class, or
@@ -200,7 +205,8 @@ def player(scene: str, polygon: str | None, saved: str | None, output: str) -> N
 
     with interrupts_raise() as signals:
         try:
-            page = _build(cls.with_spec(spec), log, subtitle, target)
+            played = cls.with_spec(spec)
+            page = _build(played.with_panel(panel) if panel else played, log, subtitle, target)
             signals.done = True
         except Interrupted as exc:
             click.echo(f"error: {scene}: interrupted; {output} left as it was", err=True)

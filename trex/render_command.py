@@ -26,6 +26,7 @@ from pathlib import Path
 import click
 
 from geometry.errors import GeometryError
+from story.pseudocode import PANELS
 from trex.inputs import error_line, fail, load_or_exit
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
@@ -155,13 +156,17 @@ def dry_run(cls: type, polygon: str) -> None:
     RunSpec(algorithm, polygon, heuristic=getattr(cls, "heuristic", None)).log()
 
 
-def scene_input(cls: type, polygon: str | None) -> type:
+def scene_input(cls: type, polygon: str | None, panel: str | None = None) -> type:
     """The scene class handed its run as data (a subclass carrying a
     :class:`story.spec.RunSpec`, see :class:`metaphors.scene.SpecScene`): on ``polygon`` if
     given, else as ``manim`` would give it (its default run, with ``TREX_POLYGON`` and
     ``TREX_LOG`` from the environment). A scene of several runs plays its own polygons; a
-    Scene that takes no run comes back as it is. Raises ValueError for a ``TREX_LOG`` the
-    scene cannot play."""
+    Scene that takes no run comes back as it is. ``panel`` (one of
+    :data:`story.pseudocode.PANELS`), if given, is what a scene with a panel shows there
+    (:meth:`metaphors.scene.TraceScene.with_panel`); None: the scene's own. Raises ValueError
+    for a ``TREX_LOG`` the scene cannot play."""
+    if panel is not None and callable(getattr(cls, "with_panel", None)):
+        cls = cls.with_panel(panel)
     if not callable(getattr(cls, "handed", None)):
         return cls
     return cls.handed(polygon) if polygon is not None else cls.from_environment()
@@ -311,8 +316,11 @@ def _format_of(fmt: str | None, output: str | None) -> str:
 @click.option("--format", "fmt", type=click.Choice(FORMATS),
               help="png = the last frame. Default: from -o's extension, else mp4.")
 @click.option("-o", "--output", metavar="PATH", help="Where to write (default media/<scene>.<ext>).")
+@click.option("--panel", type=click.Choice(PANELS), default=None,
+              help="What the panel shows: the pseudocode (the scenes' default; the source "
+                   "when the run has none) or the real source.")
 def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
-           output: str | None) -> None:
+           output: str | None, panel: str | None) -> None:
     """Render SCENE (a name such as gravity or rotation:RotationCcw, or a file.py[:Class]).
 
     Prints the output path. An interrupted or failed render leaves nothing at it.
@@ -331,7 +339,7 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
         fail(f"{target}: {exc}")
     with interrupts_raise() as signals:
         try:
-            _render(scene, path, class_name, polygon, target, fmt, quality, signals)
+            _render(scene, path, class_name, polygon, target, fmt, quality, signals, panel)
         except Interrupted as exc:
             click.echo(f"error: {scene}: render interrupted; nothing written", err=True)
             raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
@@ -339,7 +347,7 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
 
 
 def _render(scene: str, path: Path, class_name: str | None, polygon: str | None, target: Path,
-            fmt: str, quality: str, signals: Signals) -> None:
+            fmt: str, quality: str, signals: Signals, panel: str | None = None) -> None:
     try:
         if ".py:" in scene:  # the file's Scene class, or a heuristic of one's own
             from metaphors.scene import scene_for_heuristic
@@ -357,7 +365,8 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
         except (GeometryError, ValueError, KeyError) as exc:
             fail(f"{polygon}: {error_line(exc)}")
     try:
-        render_into(scene_input(cls, polygon), target, fmt, QUALITIES[quality], signals=signals)
+        render_into(scene_input(cls, polygon, panel), target, fmt, QUALITIES[quality],
+                    signals=signals)
     except (KeyboardInterrupt, click.exceptions.Exit):
         raise
     except Exception as exc:

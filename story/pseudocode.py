@@ -1,0 +1,158 @@
+"""Pseudocode: the steps of an algorithm in the thesis's words, each tied to the traced calls
+it covers, and which of them is lit as a log runs.
+
+A :class:`Step` is one row of the panel: a short text (two leading spaces per level of
+indentation) and the traced names it covers (``calls``). The registry writes the pseudocode
+of every built-in algorithm (:attr:`story.registry.Entry.pseudocode`); a heuristic of one's
+own may carry its own in its docstring (:func:`from_docstring`). The storyboard lights, for
+each beat, the row covering the innermost running call (:func:`lit_row`).
+
+The panel shows the pseudocode or the real source: :data:`PANELS`, :data:`PSEUDOCODE`
+(the default; the source when a run has no pseudocode) and :data:`SOURCE`.
+
+No manim here.
+
+>>> rows = (Step("B = the left-most vertex", ("leftmost_vertex",)),
+...         Step("none: AC is an inner diagonal", ("claim",)),
+...         Step("else: D = the candidate closest to B", ("pick", "nearest_to")),
+...         Step("  BD is an inner diagonal", ("claim",)))
+>>> lit_row(rows, ["scaling", "pick", "nearest_to"], lit=0)
+2
+>>> lit_row(rows, ["scaling", "claim"], lit=2), lit_row(rows, ["scaling", "claim"], lit=0)
+(3, 1)
+>>> lit_row(rows, ["scaling"], lit=2) is None
+True
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+__all__ = [
+    "PANELS",
+    "PSEUDOCODE",
+    "SOURCE",
+    "Step",
+    "from_docstring",
+    "from_json",
+    "lit_row",
+    "to_json",
+]
+
+#: The panel's modes: the pseudocode (default) or the real source of the shown function.
+PSEUDOCODE, SOURCE = "pseudocode", "source"
+PANELS = (PSEUDOCODE, SOURCE)
+
+
+@dataclass(frozen=True)
+class Step:
+    """One row of pseudocode.
+
+    Attributes
+    ----------
+    text : str
+        What the row says, with two leading spaces per level of indentation.
+    calls : tuple of str
+        The traced names it covers (the log's call names); a row covering none is never lit.
+    """
+
+    text: str
+    calls: tuple[str, ...] = ()
+
+    @property
+    def depth(self) -> int:
+        """Its level of indentation (two spaces each).
+
+        >>> Step("    G = the good part").depth
+        2
+        """
+        return (len(self.text) - len(self.text.lstrip(" "))) // 2
+
+
+def lit_row(pseudocode: Sequence[Step], running: Sequence[str], lit: int | None) -> int | None:
+    """The row lit while the calls ``running`` (outermost first) run: the row covering the
+    innermost of them that a row covers; None if none is covered.
+
+    Several rows may cover one name (the claim of AC and the claim of BD): the first of them at
+    or after the row ``lit`` so far wins (the program goes on from where it was), else the
+    first of them (it went round a loop).
+    """
+    for name in reversed(running):
+        rows = [k for k, step in enumerate(pseudocode) if name in step.calls]
+        if rows:
+            later = [k for k in rows if lit is not None and k >= lit]
+            return later[0] if later else rows[0]
+    return None
+
+
+# --- a heuristic of one's own: pseudocode in its docstring ------------------------------------
+
+#: The line of a docstring after which its pseudocode rows come.
+HEADING = "Pseudocode:"
+_CALLS = re.compile(r"^(?P<text>.*?)\s*\[(?P<calls>[^\[\]]*)\]\s*$")
+
+
+def from_docstring(doc: str | None) -> tuple[Step, ...]:
+    """The pseudocode rows of a docstring: the lines after a line ``Pseudocode:``, up to the
+    first blank line (or the end). A row may end in the traced names it covers, in brackets:
+    ``text  [name, other_name]`` (``[]``: none; a row ending in no brackets covers none).
+    Indentation beyond the least indented row is kept, two spaces a level.
+
+    >>> doc = '''Claim BD for the candidate D with the largest angle ABD.
+    ...
+    ... Pseudocode:
+    ...     B = the left-most vertex       [leftmost_vertex]
+    ...     for each candidate D:
+    ...       the angle ABD                [angle_at_b]
+    ...     claim BD for the widest        [claim]
+    ...
+    ... More text.'''
+    >>> for step in from_docstring(doc):
+    ...     print(repr(step.text), step.calls)
+    'B = the left-most vertex' ('leftmost_vertex',)
+    'for each candidate D:' ()
+    '  the angle ABD' ('angle_at_b',)
+    'claim BD for the widest' ('claim',)
+    >>> from_docstring("No pseudocode here."), from_docstring(None)
+    ((), ())
+    """
+    lines = (doc or "").expandtabs().splitlines()
+    start = next((k + 1 for k, line in enumerate(lines) if line.strip() == HEADING), None)
+    if start is None:
+        return ()
+    rows: list[str] = []
+    for line in lines[start:]:
+        if not line.strip():
+            if rows:
+                break
+            continue
+        rows.append(line.rstrip())
+    margin = min((len(r) - len(r.lstrip(" ")) for r in rows), default=0)
+    return tuple(_step(row[margin:]) for row in rows)
+
+
+def _step(row: str) -> Step:
+    found = _CALLS.match(row)
+    if found is None:
+        return Step(row)
+    calls = tuple(name.strip() for name in found["calls"].split(",") if name.strip())
+    return Step(found["text"], calls)
+
+
+# --- in a log's meta ------------------------------------------------------------------------------
+
+
+def to_json(pseudocode: Iterable[Step]) -> list[list]:
+    """Rows as a log's meta carries them: ``[[text, [calls…]], …]``."""
+    return [[step.text, list(step.calls)] for step in pseudocode]
+
+
+def from_json(rows) -> tuple[Step, ...]:
+    """Rows from a log's meta (:func:`to_json`).
+
+    >>> from_json(to_json([Step("claim BD", ("claim",))]))
+    (Step(text='claim BD', calls=('claim',)),)
+    """
+    return tuple(Step(str(text), tuple(str(c) for c in calls)) for text, calls in rows or ())
