@@ -102,6 +102,8 @@ def fails(points: Sequence[Point], heuristic: Heuristic) -> tuple[Polygon, Diago
         polygon = Polygon.from_points(list(points))
     except GeometryError:
         return None
+    if polygon.n != len(points):  # cleaning dropped a repeated point: not this polygon
+        return None
     claim = run_heuristic(polygon, heuristic)
     verdict = is_inner_diagonal(polygon, *claim.pair)
     return None if verdict.ok else (polygon, claim, verdict)
