@@ -18,7 +18,7 @@ import click
 from geometry.io import polygon_to_json_points, write_polygon
 from geometry.user_heuristics import UserHeuristic, UserHeuristicError
 from story.hunt import Hunt, hunt, polygon_lines, reason, verdict_line
-from trex.inputs import error_line, fail
+from trex.inputs import call_timeout_option, error_line, fail
 from trex.run_commands import HeuristicOrFile
 
 EXIT_FOUND = 1
@@ -52,6 +52,7 @@ def hunt_record(result: Hunt) -> dict:
               help="Write the counterexample here (format by extension), for trex render "
                    "--polygon.")
 @click.option("--json", "as_json", is_flag=True, help="One JSON line.")
+@call_timeout_option
 def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_vertices: int,
                  output: str | None, as_json: bool) -> None:
     """Search small polygons for one on which HEURISTIC's claim is not an inner diagonal,
