@@ -49,12 +49,16 @@ geometry.user_heuristics.UserHeuristicError: .../mine.py: no function 'nothing' 
 from __future__ import annotations
 
 import ast
+import contextlib
 import hashlib
 import importlib.util
 import inspect
 import operator
+import signal
 import sys
 import textwrap
+import threading
+import time
 import traceback
 from collections.abc import Callable
 from contextvars import ContextVar
@@ -68,18 +72,81 @@ from geometry.frame import Diagonal, claim
 from geometry.polygon import Polygon, Vertex
 
 __all__ = [
+    "DEFAULT_CALL_TIMEOUT",
     "UserHeuristic",
     "UserHeuristicError",
     "as_heuristic",
+    "call_timeout",
     "is_user_spec",
     "load_attribute",
     "load_user_heuristic",
     "run_heuristic",
+    "set_call_timeout",
 ]
 
 
 class UserHeuristicError(ValueError):
     """A user's heuristic cannot be loaded or run; the message is one line."""
+
+
+# --- the time limit --------------------------------------------------------------------------------
+
+#: Seconds a user's function (and the loading of its file) may take, by default.
+DEFAULT_CALL_TIMEOUT = 5.0
+
+_CALL_TIMEOUT: ContextVar[float | None] = ContextVar("trex_call_timeout",
+                                                     default=DEFAULT_CALL_TIMEOUT)
+
+
+def set_call_timeout(seconds: float | None) -> None:
+    """Limit each call of a user's function (and each load of a file) to ``seconds``; None or
+    0: no limit. The commands' ``--call-timeout`` sets it."""
+    _CALL_TIMEOUT.set(seconds if seconds and seconds > 0 else None)
+
+
+def call_timeout() -> float | None:
+    """The limit in force (seconds), None for none."""
+    return _CALL_TIMEOUT.get()
+
+
+class _Stopped(BaseException):
+    """Raised in the user's code by SIGALRM when the time is up (a BaseException, so that the
+    user's own ``except Exception`` does not swallow it)."""
+
+
+@contextlib.contextmanager
+def _time_limit(what: str):
+    """Stop the block after :func:`call_timeout` seconds with a one-line
+    :class:`UserHeuristicError` saying so.
+
+    SIGALRM in the main thread (``signal.setitimer``): the user's code runs in this process,
+    so a run being recorded for a video is recorded here, in the process that renders. Off
+    the main thread, or where there is no ``setitimer``, there is no limit. A previous alarm
+    (a limit around a limit) is restored afterwards, less the time spent.
+    """
+    seconds = call_timeout()
+    if (seconds is None or not hasattr(signal, "setitimer")
+            or threading.current_thread() is not threading.main_thread()):
+        yield
+        return
+
+    def stop(_signum, _frame):
+        raise _Stopped
+
+    previous = signal.signal(signal.SIGALRM, stop)
+    started = time.monotonic()
+    outer, _ = signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    except _Stopped:
+        raise UserHeuristicError(
+            f"{what} did not finish within {seconds:g} s: stopped "
+            "(a loop that never ends? --call-timeout sets the limit)") from None
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+        if outer:
+            signal.setitimer(signal.ITIMER_REAL, max(outer - (time.monotonic() - started), 1e-3))
 
 
 @dataclass(frozen=True)
@@ -254,7 +321,11 @@ def _load_module(path: Path, shown: str, function: str | None = None):
     folder = str(resolved.parent)
     sys.path.insert(0, folder)
     try:
-        exec(code, module.__dict__)
+        with _time_limit(f"{shown}: loading"):
+            exec(code, module.__dict__)
+    except UserHeuristicError:
+        sys.modules.pop(module_name, None)
+        raise
     except BaseException as exc:
         sys.modules.pop(module_name, None)
         if not isinstance(exc, Exception):
@@ -415,7 +486,10 @@ def _wrap(raw: Callable[[Polygon], Any], name: str, path: Path) -> Callable[[Pol
         lines: list[int | None] = []
         token = _RETURN_LINES.set(lines)
         try:
-            answer = raw(polygon)
+            with _time_limit(name):
+                answer = raw(polygon)
+        except UserHeuristicError:
+            raise
         except Exception as exc:
             line = _line_in(exc, path)
             where = f" ({path.name}, line {line})" if line else ""

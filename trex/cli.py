@@ -18,6 +18,7 @@ from geometry.io import to_json, write_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from trex.exercises_command import COMMANDS as EXERCISE_COMMANDS
+from trex.hunt_command import COMMANDS as HUNT_COMMANDS
 from trex.inputs import EXIT_INVALID, error_line, fail, first_line, try_load
 from trex.lecture_command import COMMANDS as LECTURE_COMMANDS
 from trex.player_command import COMMANDS as PLAYER_COMMANDS
@@ -142,7 +143,7 @@ def sample(name: str, n: int | None, seed: int, output: str | None) -> None:
         fail(f"{output}: cannot write: {exc.strerror or error_line(exc)}")
 
 
-for _command in (*COMMANDS, *RENDER_COMMANDS, *EXERCISE_COMMANDS, *LECTURE_COMMANDS,
+for _command in (*COMMANDS, *HUNT_COMMANDS, *RENDER_COMMANDS, *EXERCISE_COMMANDS, *LECTURE_COMMANDS,
                  *PLAYER_COMMANDS, *SNAPSHOT_COMMANDS):
     main.add_command(_command)
 

@@ -20,6 +20,7 @@ import click
 from geometry.errors import GeometryError
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
+from geometry.user_heuristics import DEFAULT_CALL_TIMEOUT, set_call_timeout
 
 EXIT_INVALID = 2
 # Reading can also fail outside the GeometryError family (an unexpected OS
@@ -70,3 +71,16 @@ def load_or_exit(arg: str) -> Polygon:
     if polygon is None:
         raise click.exceptions.Exit(EXIT_INVALID)
     return polygon
+
+
+def _set_call_timeout(_ctx, _param, value: float) -> float:
+    set_call_timeout(value)
+    return value
+
+
+#: ``--call-timeout SECONDS``: how long a user's function may run (eager: set before the
+#: heuristic's file is loaded, which the limit covers too).
+call_timeout_option = click.option(
+    "--call-timeout", type=click.FloatRange(min=0), default=DEFAULT_CALL_TIMEOUT,
+    show_default=True, is_eager=True, expose_value=False, callback=_set_call_timeout,
+    metavar="SECONDS", help="Stop a FILE.py:FUNCTION of your own that runs longer (0: never).")

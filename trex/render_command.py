@@ -26,8 +26,9 @@ from pathlib import Path
 import click
 
 from geometry.errors import GeometryError
+from geometry.user_heuristics import UserHeuristicError
 from story.pseudocode import PANELS
-from trex.inputs import error_line, fail, load_or_exit
+from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 QUALITIES = {"l": "low_quality", "m": "medium_quality", "h": "high_quality", "k": "fourk_quality"}
@@ -319,6 +320,7 @@ def _format_of(fmt: str | None, output: str | None) -> str:
 @click.option("--panel", type=click.Choice(PANELS), default=None,
               help="What the panel shows: the pseudocode (the scenes' default; the source "
                    "when the run has none) or the real source.")
+@call_timeout_option
 def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
            output: str | None, panel: str | None) -> None:
     """Render SCENE (a name such as gravity or rotation:RotationCcw, or a file.py[:Class]).
@@ -369,6 +371,9 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
                     signals=signals)
     except (KeyboardInterrupt, click.exceptions.Exit):
         raise
+    except UserHeuristicError as exc:  # raised, answered nonsense or was stopped: one line
+        signals.check()
+        fail(f"{scene}: {exc}")
     except Exception as exc:
         signals.check()  # an interrupt that surfaced as another error is still an interrupt
         click.echo(f"error: {scene}: render failed: {type(exc).__name__}: {error_line(exc)}",

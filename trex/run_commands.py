@@ -24,7 +24,14 @@ from geometry.user_heuristics import (
     run_heuristic,
 )
 from story.registry import heuristics, names, triangulations
-from trex.inputs import EXIT_INVALID, fail, load_or_exit, report_error, try_load
+from trex.inputs import (
+    EXIT_INVALID,
+    call_timeout_option,
+    fail,
+    load_or_exit,
+    report_error,
+    try_load,
+)
 
 HEURISTIC = click.Choice(list(heuristics()))
 
@@ -116,6 +123,7 @@ def _run_each(polygons, make, show_human, as_json: bool) -> None:
 @click.option("--heuristic", type=HeuristicOrFile(), required=True,
               help="Which inner-diagonal heuristic: a name, or FILE.py:FUNCTION of your own.")
 @click.option("--json", "as_json", is_flag=True, help="One JSON object per line.")
+@call_timeout_option
 def diagonal(polygons: tuple[str, ...], heuristic: str | UserHeuristic, as_json: bool) -> None:
     """Claim an inner diagonal of each POLYGON with a heuristic, and check the claim exactly."""
 
@@ -133,6 +141,7 @@ def diagonal(polygons: tuple[str, ...], heuristic: str | UserHeuristic, as_json:
 @click.option("--heuristic", type=HEURISTIC, default="gravity", show_default=True,
               help="For divide-and-conquer: how each diagonal is found.")
 @click.option("--json", "as_json", is_flag=True, help="One JSON object per line.")
+@call_timeout_option
 def triangulate_command(polygons: tuple[str, ...], algorithm: str, heuristic: str,
                         as_json: bool) -> None:
     """Triangulate each POLYGON and verify the triangles exactly."""
