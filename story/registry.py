@@ -183,13 +183,13 @@ _HEURISTIC_CALLS = tuple(_traced_name(f) for f in HEURISTICS.values())
 
 #: The rows of gravity (thesis ch. 2.1.2, after Forišek and Steinová), also inside the others.
 _GRAVITY = (
-    Step("V = a concave vertex (the first after B)", ("reflex_vertex", "straight_vertex")),
+    Step("V = a reflex vertex (the first after B)", ("reflex_vertex", "straight_vertex")),
     Step("turn P: V's sides point up, no edge level", ("gravity_direction",)),
     Step("drop a ball on a band at V: it hits a side", ("drop_ball",)),
     Step("it slides down the side to a vertex X", ("slide_to_vertex",)),
-    Step("did the band hit a vertex? Y = the first", ("band_snag",)),
-    Step("inner diagonal: VX if straight, else VY", ("claim",)),
-    Step("no concave vertex: P is convex, take AC", ("leftmost_vertex", "triangle_at", "claim")),
+    Step("Y = the first vertex the band snags", ("band_snag",)),
+    Step("claim VY, or VX if the band stays straight", ("claim",)),
+    Step("no reflex vertex: P is convex, claim AC", ("leftmost_vertex", "triangle_at", "claim")),
 )
 
 
@@ -371,7 +371,7 @@ def pseudocode(name: str) -> tuple[Step, ...]:
     its own in its log, if its docstring has it).
 
     >>> pseudocode("gravity")[0].text, pseudocode("cdt"), pseudocode("biggest_angle")
-    ('V = a concave vertex (the first after B)', (), ())
+    ('V = a reflex vertex (the first after B)', (), ())
     """
     known = REGISTRY.get(name)
     return known.pseudocode if known is not None else ()
