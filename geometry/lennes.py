@@ -23,6 +23,7 @@ once checked. Steps: the heuristic's own, then ``split``.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import tracing
@@ -101,9 +102,15 @@ def split(piece: Piece, i: int, j: int) -> tuple[Piece, Piece]:
 
 
 @tracing.traced(name="divide_and_conquer")
-def divide_and_conquer(polygon: Polygon, heuristic: str) -> Triangulation:
-    """Lennes' triangulation: a triangle is done; otherwise find a diagonal, split, go on."""
-    find = HEURISTICS[heuristic]
+def divide_and_conquer(polygon: Polygon,
+                       heuristic: str | Callable[[Polygon], Diagonal]) -> Triangulation:
+    """Lennes' triangulation: a triangle is done; otherwise find a diagonal, split, go on.
+
+    ``heuristic`` is a built-in's name, or a function ``piece -> Diagonal`` (a heuristic of
+    one's own, :attr:`geometry.user_heuristics.UserHeuristic.function`, its errors and its
+    time limit its own): it runs on each piece until its first wrong claim.
+    """
+    find = heuristic if callable(heuristic) else HEURISTICS[heuristic]
     todo, triangles, steps = [Piece.whole(polygon)], [], 0
     while todo:
         piece = todo.pop()

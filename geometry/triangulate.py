@@ -27,6 +27,7 @@ from geometry.monotone import monotone
 from geometry.polygon import Polygon
 from geometry.prune_search import prune_and_search
 from geometry.results import Triangulation
+from geometry.user_heuristics import UserHeuristic, is_user_spec, load_user_heuristic
 
 #: The algorithms that take only the polygon (divide and conquer also takes a heuristic).
 RUNNERS: dict[str, Callable[[Polygon], Triangulation]] = {
@@ -41,7 +42,8 @@ RUNNERS: dict[str, Callable[[Polygon], Triangulation]] = {
 ALGORITHMS = ("divide-and-conquer", *RUNNERS)
 
 
-def triangulate(polygon: Polygon, algorithm: str, heuristic: str | None = None) -> Triangulation:
+def triangulate(polygon: Polygon, algorithm: str,
+                heuristic: str | UserHeuristic | None = None) -> Triangulation:
     """Run a triangulation algorithm by name and verify its answer exactly.
 
     Parameters
@@ -50,8 +52,10 @@ def triangulate(polygon: Polygon, algorithm: str, heuristic: str | None = None) 
         The polygon to triangulate.
     algorithm : str
         One of :data:`ALGORITHMS`.
-    heuristic : str, optional
-        Divide and conquer's diagonal rule (gravity when None); the other
+    heuristic : str or UserHeuristic, optional
+        Divide and conquer's diagonal rule (gravity when None): a built-in's name, or a
+        heuristic of one's own (``file.py:function`` or loaded), called through
+        :mod:`geometry.user_heuristics` (its one-line errors and time limit apply); the other
         algorithms take none and ignore it.
 
     Returns
@@ -61,7 +65,7 @@ def triangulate(polygon: Polygon, algorithm: str, heuristic: str | None = None) 
         when it stopped early or its triangles fail :func:`verify_triangulation`.
     """
     if algorithm == "divide-and-conquer":
-        result = divide_and_conquer(polygon, heuristic or "gravity")
+        result = divide_and_conquer(polygon, diagonal_rule(heuristic))
     elif algorithm in RUNNERS:
         result = RUNNERS[algorithm](polygon)
     else:
@@ -71,3 +75,15 @@ def triangulate(polygon: Polygon, algorithm: str, heuristic: str | None = None) 
         if not verdict:
             return Triangulation(result.triangles, False, failure=verdict, steps=result.steps)
     return result
+
+
+def diagonal_rule(heuristic: str | UserHeuristic | None):
+    """What divide and conquer calls on each piece: a built-in's name (gravity for None), or
+    the traced run of a heuristic of one's own (loaded now if given as ``file.py:function``)."""
+    if heuristic is None:
+        return "gravity"
+    if isinstance(heuristic, UserHeuristic):
+        return heuristic.function
+    if is_user_spec(heuristic):
+        return load_user_heuristic(heuristic).function
+    return heuristic

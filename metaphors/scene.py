@@ -21,7 +21,13 @@ from types import MappingProxyType
 from manim import DOWN, FadeIn, FadeOut, Scene, VGroup, config
 from manim.constants import RendererType
 
-from geometry.user_heuristics import UserHeuristic, as_heuristic, load_attribute
+from geometry.user_heuristics import (
+    UserHeuristic,
+    as_heuristic,
+    is_user_spec,
+    load_attribute,
+    load_user_heuristic,
+)
 from metaphors import catalog
 from metaphors.board import Board
 from metaphors.layout import METAPHOR
@@ -34,6 +40,7 @@ from rendering.typeset import text
 from story.beats import Beat
 from story.environment import spec_from_environment, specs_from_environment
 from story.pseudocode import PANELS, PSEUDOCODE
+from story.registry import heuristics
 from story.spec import RunSpec
 from story.storyboard import Pacing
 from tracing import Log
@@ -108,6 +115,26 @@ class TraceScene(SpecScene, Scene):
             renderer = BackdropRenderer(camera_class=kwargs.get("camera_class", PathCamera),
                                         skip_animations=kwargs.get("skip_animations", False))
         super().__init__(renderer=renderer, **kwargs)
+
+    @classmethod
+    def with_heuristic(cls, heuristic: str) -> type:
+        """This scene with divide and conquer's diagonals found by ``heuristic``: a built-in's
+        name, or ``file.py:function`` of one's own (loaded now, so that a bad spec is one
+        line: :class:`geometry.user_heuristics.UserHeuristicError`). The run goes on to its
+        first wrong claim; the title names the heuristic. Raises ValueError for a scene whose
+        run takes no heuristic, or an unknown name."""
+        if cls.heuristic is None:
+            raise ValueError(f"{cls.__name__} plays {cls.algorithm}, which takes no heuristic")
+        if is_user_spec(heuristic):
+            name = load_user_heuristic(heuristic).name
+        elif heuristic in heuristics():
+            name = heuristic
+        else:
+            raise ValueError(f"unknown heuristic {heuristic!r}; expected one of "
+                             f"{', '.join(heuristics())}, or FILE.py:FUNCTION of your own")
+        title = (cls.title.replace(cls.heuristic, name) if cls.heuristic in cls.title
+                 else f"{cls.title} (heuristic: {name})")
+        return _subclass(cls, heuristic=heuristic, title=title)
 
     @classmethod
     def with_panel(cls, panel: str) -> type:

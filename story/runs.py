@@ -35,10 +35,18 @@ def run_logged(algorithm: str, polygon: str, heuristic: str | None = None) -> tr
 def record_run(algorithm: str, p: Polygon, polygon: str,
                heuristic: str | None = None) -> tracing.Log:
     """The log of a named heuristic or triangulation algorithm on the polygon ``p`` (read from
-    ``polygon``, the name the log records). ``trex log`` writes exactly this log."""
+    ``polygon``, the name the log records). ``trex log`` writes exactly this log.
+
+    Divide and conquer's ``heuristic`` may be one's own (``file.py:function``): it is loaded
+    first (a bad spec is one line, before anything runs), and the meta names its traced
+    function (``heuristic_function``), which the storyboard then treats as a heuristic."""
     meta = {"algorithm": algorithm, "polygon": polygon, "shown": shown(algorithm)}
     if heuristic:
         meta["heuristic"] = heuristic
+    if heuristic and is_user_spec(heuristic):
+        loaded = load_user_heuristic(heuristic)
+        meta["heuristic_function"] = loaded.name
+        heuristic = loaded
     known = REGISTRY.get(algorithm)
     with tracing.record(**meta) as log, tracing.alive(p):
         if known is None:  # geometry's own one-line KeyError names the algorithms it runs

@@ -27,7 +27,7 @@ No manim here.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import MappingProxyType
 from typing import Any
 
@@ -145,7 +145,7 @@ class Walk:
     """
 
     def __init__(self, log: Log, pacing: Pacing, shown_code: str | None, user: str | None,
-                 rows: tuple[Step, ...] = ()):
+                 rows: tuple[Step, ...] = (), heuristic_function: str | None = None):
         self.log, self.pacing, self.shown_code, self.user = log, pacing, shown_code, user
         self.rows = rows  # the pseudocode of the run
         self.lit: int | None = None  # the pseudocode row lit so far
@@ -158,7 +158,10 @@ class Walk:
         self.drawn: set[str] = set()  # keys of the shapes the generic beats drew
         self.claimed: set[str] = set()  # keys of the claims (the frame draws them)
         self._memo: dict[str, Any] = {}
-        self._heuristics = frozenset(heuristics()) | _HEURISTIC_CALLS
+        # a heuristic of one's own that divide and conquer runs (log meta
+        # ``heuristic_function``) is a heuristic too: its claims are judged on its piece
+        self._heuristics = (frozenset(heuristics()) | _HEURISTIC_CALLS
+                            | ({heuristic_function} if heuristic_function else set()))
 
     def memo(self, name: str, make: Callable[[], Any]) -> Any:
         """A reading's own state for the whole walk (made on first use)."""
@@ -265,7 +268,12 @@ def pseudocode_of(log: Log) -> tuple[Step, ...]:
     if "pseudocode" in log.meta:
         return from_json(log.meta["pseudocode"])
     algorithm = log.meta.get("algorithm")
-    return pseudocode(algorithm) if isinstance(algorithm, str) else ()
+    rows = pseudocode(algorithm) if isinstance(algorithm, str) else ()
+    own = log.meta.get("heuristic_function")
+    if isinstance(own, str):  # divide and conquer with one's own: its row covers that too
+        rows = tuple(replace(r, calls=(*r.calls, own)) if set(r.calls) & set(heuristics())
+                     else r for r in rows)
+    return rows
 
 
 def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = None,
@@ -280,7 +288,7 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
     """
     shown = shown_code or log.meta.get("shown") or log.meta.get("algorithm")
     walk = Walk(log, pacing or Pacing(), shown, log.meta.get("user_heuristic"),
-                pseudocode_of(log))
+                pseudocode_of(log), log.meta.get("heuristic_function"))
     table = {**FRAME_READS, **readings}
     beats: list[Beat] = []
     for event in log.events:

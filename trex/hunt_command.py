@@ -12,6 +12,7 @@ from __future__ import annotations
 import contextlib
 import json
 import sys
+from pathlib import Path
 
 import click
 
@@ -52,9 +53,12 @@ def hunt_record(result: Hunt) -> dict:
               help="Write the counterexample here (format by extension), for trex render "
                    "--polygon.")
 @click.option("--json", "as_json", is_flag=True, help="One JSON line.")
+@click.option("--render", "render", is_flag=True,
+              help="Render the heuristic's video on the counterexample (480p) and print the "
+                   "mp4's path.")
 @call_timeout_option
 def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_vertices: int,
-                 output: str | None, as_json: bool) -> None:
+                 output: str | None, as_json: bool, render: bool) -> None:
     """Search small polygons for one on which HEURISTIC's claim is not an inner diagonal,
     shrink it to a minimal one and say why the claim is wrong.
 
@@ -89,7 +93,71 @@ def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_ver
                 fail(f"{output}: cannot write: {error_line(exc)}")
             if not as_json:
                 click.echo(f"wrote {output}")
+        if render:
+            click.echo(str(render_counterexample(heuristic, result, output)),
+                       err=as_json)  # --json: stdout stays one JSON line
         raise click.exceptions.Exit(EXIT_FOUND)
+
+
+def heuristic_video(heuristic: str | UserHeuristic) -> type:
+    """The Scene class of a heuristic's video: a built-in's own scene in ``scenes/`` (the
+    single run of it), or the scene of a heuristic of one's own."""
+    from manim import Scene
+
+    from metaphors.scene import SequenceScene, TraceScene, heuristic_scene
+    from trex.render_command import known_scenes, load_scene_class, resolve_scene
+
+    if isinstance(heuristic, UserHeuristic):
+        return heuristic_scene(heuristic)
+    for name in known_scenes():
+        path, _ = resolve_scene(name)
+        module_classes = [load_scene_class(path, None)]
+        module = sys.modules.get(f"_trex_scene_{path.stem}")
+        if module is not None:
+            module_classes = [v for v in vars(module).values()
+                              if isinstance(v, type) and issubclass(v, Scene)
+                              and v.__module__ == module.__name__]
+        for cls in module_classes:
+            if (issubclass(cls, TraceScene) and not issubclass(cls, SequenceScene)
+                    and cls.algorithm == heuristic):
+                return cls
+    raise ValueError(f"no scene in scenes/ plays {heuristic}")
+
+
+def render_counterexample(heuristic: str | UserHeuristic, result: Hunt,
+                          output: str | None) -> Path:
+    """Render the heuristic's video on the counterexample (the polygon written to ``output``,
+    else to ``media/hunt-<name>.json``) into ``media/hunt-<name>.mp4``, as ``trex render``
+    does (atomically, interrupts leaving nothing); its path."""
+    from trex.render_command import (
+        QUALITIES,
+        Interrupted,
+        interrupts_raise,
+        prepare_output,
+        render_into,
+        scene_input,
+    )
+
+    name = heuristic.name if isinstance(heuristic, UserHeuristic) else str(heuristic)
+    target = Path("media") / f"hunt-{name}.mp4"
+    polygon = Path(output) if output is not None else target.with_suffix(".json")
+    try:
+        prepare_output(target)
+        if output is None:
+            write_polygon(list(result.polygon.points), str(polygon))
+        cls = heuristic_video(heuristic)
+    except (OSError, ValueError) as exc:
+        fail(f"{target}: {error_line(exc)}")
+    with interrupts_raise() as signals:
+        try:
+            render_into(scene_input(cls, str(polygon)), target, "mp4", QUALITIES["l"],
+                        signals=signals)
+        except Interrupted as exc:
+            click.echo(f"error: {name}: render interrupted; nothing written", err=True)
+            raise click.exceptions.Exit(128 + exc.signum) from None
+        except UserHeuristicError as exc:
+            fail(f"{name}: {exc}")
+    return target
 
 
 COMMANDS = (hunt_command,)

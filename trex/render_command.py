@@ -320,9 +320,12 @@ def _format_of(fmt: str | None, output: str | None) -> str:
 @click.option("--panel", type=click.Choice(PANELS), default=None,
               help="What the panel shows: the pseudocode (the scenes' default; the source "
                    "when the run has none) or the real source.")
+@click.option("--heuristic", metavar="NAME|FILE.py:FUNCTION", default=None,
+              help="For divide_and_conquer: how each diagonal is found, a built-in or one of "
+                   "your own; the video ends on its first wrong claim.")
 @call_timeout_option
 def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
-           output: str | None, panel: str | None) -> None:
+           output: str | None, panel: str | None, heuristic: str | None) -> None:
     """Render SCENE (a name such as gravity or rotation:RotationCcw, or a file.py[:Class]).
 
     Prints the output path. An interrupted or failed render leaves nothing at it.
@@ -341,15 +344,27 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
         fail(f"{target}: {exc}")
     with interrupts_raise() as signals:
         try:
-            _render(scene, path, class_name, polygon, target, fmt, quality, signals, panel)
+            _render(scene, path, class_name, polygon, target, fmt, quality, signals, panel,
+                    heuristic)
         except Interrupted as exc:
             click.echo(f"error: {scene}: render interrupted; nothing written", err=True)
             raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
     click.echo(str(target))
 
 
+def with_heuristic(cls: type, heuristic: str | None) -> type:
+    """The scene class with divide and conquer's heuristic (``--heuristic``) set; as it is for
+    None. Raises ValueError (one line) for a scene that takes none or a bad heuristic."""
+    if heuristic is None:
+        return cls
+    if not callable(getattr(cls, "with_heuristic", None)):
+        raise ValueError("takes no heuristic")
+    return cls.with_heuristic(heuristic)
+
+
 def _render(scene: str, path: Path, class_name: str | None, polygon: str | None, target: Path,
-            fmt: str, quality: str, signals: Signals, panel: str | None = None) -> None:
+            fmt: str, quality: str, signals: Signals, panel: str | None = None,
+            heuristic: str | None = None) -> None:
     try:
         if ".py:" in scene:  # the file's Scene class, or a heuristic of one's own
             from metaphors.scene import scene_for_heuristic
@@ -357,6 +372,7 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
             cls = scene_for_heuristic(scene)
         else:
             cls = load_scene_class(path, class_name)
+        cls = with_heuristic(cls, heuristic)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
     if polygon is not None and getattr(cls, "runs", None):
@@ -382,4 +398,4 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
 
 
 COMMANDS = (render,)
-__all__ = ["COMMANDS", "render", "render_into"]
+__all__ = ["COMMANDS", "render", "render_into", "with_heuristic"]

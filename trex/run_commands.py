@@ -83,7 +83,8 @@ def diagonal_record(arg: str, polygon: Polygon, heuristic: str | UserHeuristic) 
     }
 
 
-def triangulation_record(arg: str, polygon: Polygon, algorithm: str, heuristic: str) -> dict:
+def triangulation_record(arg: str, polygon: Polygon, algorithm: str,
+                         heuristic: str | UserHeuristic) -> dict:
     """The triangles of an algorithm and the exact verdict on them, in input indices."""
     result = triangulate(polygon, algorithm, heuristic)
     return {
@@ -138,12 +139,13 @@ def diagonal(polygons: tuple[str, ...], heuristic: str | UserHeuristic, as_json:
 @click.command(name="triangulate")
 @click.argument("polygons", nargs=-1, required=True, metavar="POLYGON...")
 @click.option("--algorithm", type=ALGORITHM, default="divide-and-conquer", show_default=True)
-@click.option("--heuristic", type=HEURISTIC, default="gravity", show_default=True,
-              help="For divide-and-conquer: how each diagonal is found.")
+@click.option("--heuristic", type=HeuristicOrFile(), default="gravity", show_default=True,
+              help="For divide-and-conquer: how each diagonal is found (a name, or "
+                   "FILE.py:FUNCTION of your own: it runs until its first wrong claim).")
 @click.option("--json", "as_json", is_flag=True, help="One JSON object per line.")
 @call_timeout_option
-def triangulate_command(polygons: tuple[str, ...], algorithm: str, heuristic: str,
-                        as_json: bool) -> None:
+def triangulate_command(polygons: tuple[str, ...], algorithm: str,
+                        heuristic: str | UserHeuristic, as_json: bool) -> None:
     """Triangulate each POLYGON and verify the triangles exactly."""
 
     def human(r: dict) -> str:

@@ -1,0 +1,60 @@
+"""``trex hunt --render``: the heuristic's video on the counterexample found, its mp4's path
+printed (issue 13). The render itself is trex render's machinery (``render_into``), stubbed
+here; the scene handed to it is built in dry run and checked."""
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+import trex.render_command as render_command
+from tests.test_scenes import nodes
+from trex.cli import main
+from trex.snapshot import build
+
+
+@pytest.fixture
+def rendered(monkeypatch):
+    handed = []
+
+    def fake_render_into(make_scene, output, fmt, quality, **_):
+        handed.append((make_scene, output, fmt, quality))
+        output.write_bytes(b"mp4")
+        return output
+
+    monkeypatch.setattr(render_command, "render_into", fake_render_into)
+    return handed
+
+
+@pytest.mark.parametrize(("heuristic", "name"), [
+    ("scaling", "scaling"),
+    ("examples/my_heuristic.py:biggest_angle", "biggest_angle"),
+])
+def test_hunt_render_renders_the_video_on_the_counterexample(rendered, tmp_path, monkeypatch,
+                                                             heuristic, name):
+    monkeypatch.chdir(tmp_path)
+    if "/" in heuristic:
+        heuristic = str(render_command.SCENES_DIR.parent / heuristic)
+    polygon = tmp_path / "found.json"
+    result = CliRunner().invoke(main, ["hunt", heuristic, "--budget", "400", "-o",
+                                       str(polygon), "--render"])
+    assert result.exit_code == 1, result.output
+    lines = result.stdout.strip().splitlines()
+    assert lines[-1] == f"media/hunt-{name}.mp4"
+    assert (tmp_path / "media" / f"hunt-{name}.mp4").read_bytes() == b"mp4"
+    (make_scene, _, fmt, quality), = rendered
+    assert fmt == "mp4" and quality == "low_quality"
+    assert make_scene.spec.polygon == str(polygon)
+    final = list(nodes(build(make_scene), final_only=True))
+    assert any(n.get("text") == "✗" and n["role"] == "rejected" for n in final)
+
+
+def test_hunt_render_with_json_keeps_stdout_one_line(rendered, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, ["hunt", "scaling", "--budget", "400", "--json",
+                                       "--render"])
+    assert result.exit_code == 1
+    record = json.loads(result.stdout)
+    assert record["found"] is True
+    assert result.stderr.strip().splitlines()[-1] == "media/hunt-scaling.mp4"
+    assert json.loads((tmp_path / "media" / "hunt-scaling.json").read_text())
