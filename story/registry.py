@@ -179,7 +179,7 @@ def _triangulation(name: str, *, metaphor: str | None, title: str,
 
 
 #: The traced names of the heuristics (divide and conquer calls one of them on each piece).
-_HEURISTIC_CALLS = tuple(_traced_name(f) for f in HEURISTICS.values())
+_HEURISTICS_TRACED = tuple(_traced_name(f) for f in HEURISTICS.values())
 
 #: The rows of gravity (thesis ch. 2.1.2, after Forišek and Steinová), also inside the others.
 _GRAVITY = (
@@ -232,7 +232,7 @@ _ENTRIES = (
                    title="Divide and conquer (Lennes): split along inner diagonals",
                    pseudocode=(
                        Step("if P is a triangle, we are done"),
-                       Step("else find an inner diagonal d of P", _HEURISTIC_CALLS),
+                       Step("else find an inner diagonal d of P", _HEURISTICS_TRACED),
                        Step("divide P along d into P1 and P2", ("split",)),
                        Step("triangulate P1 and P2 the same way"),
                        Step("their union is the triangulation of P"),

@@ -105,6 +105,18 @@ def test_polygon_the_algorithm_rejects_is_one_line(tmp_path, monkeypatch):
     assert leftovers(tmp_path) == []
 
 
+@pytest.mark.parametrize(("polygon", "why"), [("triangle", "a triangle has no diagonal"),
+                                           ("nonesuch-xyz", "no such file or sample")])
+def test_a_bad_polygon_from_the_environment_is_one_line_too(polygon, why, tmp_path,
+                                                            monkeypatch):
+    monkeypatch.setattr(render_command, "render_into", lambda *a, **k: pytest.fail("rendered"))
+    monkeypatch.setenv("TREX_POLYGON", polygon)
+    code, _, stderr = run("render", "scaling", "-o", str(tmp_path / "x.mp4"))
+    assert code == 2
+    assert stderr.startswith(f"error: {polygon}: {why}") and len(stderr.splitlines()) == 1
+    assert leftovers(tmp_path) == []
+
+
 @pytest.mark.parametrize("scene", ["nonesuch", "no/such/file.py"])
 def test_unknown_scene(scene, tmp_path):
     code, _, stderr = run("render", scene, "-o", str(tmp_path / "x.mp4"))

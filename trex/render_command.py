@@ -157,6 +157,20 @@ def dry_run(cls: type, polygon: str) -> None:
     RunSpec(algorithm, polygon, heuristic=getattr(cls, "heuristic", None)).log()
 
 
+def _environment_polygon(cls: type) -> str | None:
+    """The polygon plain ``manim`` would hand a one-run scene from ``TREX_POLYGON`` (None: its
+    default, a saved log, or not a one-run scene)."""
+    if not callable(getattr(cls, "from_environment", None)) or getattr(cls, "runs", None):
+        return None
+    try:
+        spec = cls.from_environment().spec
+    except ValueError:
+        return None  # a TREX_LOG it cannot play: reported when the render starts
+    if spec is None or spec.saved is not None or spec.polygon == cls.default_spec().polygon:
+        return None
+    return spec.polygon
+
+
 def scene_input(cls: type, polygon: str | None, panel: str | None = None) -> type:
     """The scene class handed its run as data (a subclass carrying a
     :class:`story.spec.RunSpec`, see :class:`metaphors.scene.SpecScene`): on ``polygon`` if
@@ -377,11 +391,14 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
         fail(f"{scene}: {exc}")
     if polygon is not None and getattr(cls, "runs", None):
         click.echo(f"warning: {scene}: plays its own polygons; --polygon is ignored", err=True)
-    elif polygon is not None:
-        try:
-            dry_run(cls, polygon)
-        except (GeometryError, ValueError, KeyError) as exc:
-            fail(f"{polygon}: {error_line(exc)}")
+    else:
+        given = polygon if polygon is not None else _environment_polygon(cls)
+        if given is not None:  # a bad polygon, given or from TREX_POLYGON: one line, exit 2
+            load_or_exit(given)
+            try:
+                dry_run(cls, given)
+            except (GeometryError, ValueError, KeyError) as exc:
+                fail(f"{given}: {error_line(exc)}")
     try:
         render_into(scene_input(cls, polygon, panel), target, fmt, QUALITIES[quality],
                     signals=signals)
