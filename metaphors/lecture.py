@@ -19,6 +19,7 @@ from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
 from geometry.triangulate import triangulate
+from geometry.user_heuristics import load_user_heuristic
 from metaphors import catalog
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
@@ -28,6 +29,8 @@ from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
 from story.exercises import Exercise, make_exercises
+from story.hunt import hunt
+from story.runs import record_user_run
 from story.spec import RunSpec
 from story.storyboard import Pacing
 
@@ -71,6 +74,19 @@ class Compare:
     polygon: str | None
     ours: str = "ear-clipping"
     seconds: float = 6.0
+
+
+@dataclass(frozen=True)
+class Hunted:
+    """A heuristic the lecture did not cover (``FILE.py:FUNCTION``), a counterexample hunted
+    for at build time (:func:`story.hunt.hunt`, fixed ``seed`` and ``budget``), then its run
+    on it: a card says how it was found."""
+
+    heuristic: str
+    title: str
+    rule: str  # the rule in words
+    seed: int = 0
+    budget: int = 2000
 
 
 @dataclass(frozen=True)
@@ -138,6 +154,22 @@ class LectureScene(TraceScene):
         self.pacing = run.pacing
         self.speed = run.speed
         self.play_log(log, run.title)
+        self.wait(0.8)
+
+    def play_hunted(self, hunted: Hunted) -> None:
+        heuristic = load_user_heuristic(hunted.heuristic)
+        found = hunt(heuristic, budget=hunted.budget, seed=hunted.seed)
+        if not found.found:
+            raise ValueError(f"{heuristic.name}: no counterexample in {found.tried} polygons")
+        self.play_card(Card(hunted.title, (
+            f"{hunted.rule}: a rule this lecture did not cover.",
+            f"The computer tried {found.tried} small polygons (trex hunt, seed {hunted.seed}),",
+            f"fewest vertices first, and shrank the first failure to {found.polygon.n} "
+            "vertices.")))
+        self.clear_screen()
+        log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")
+        self.metaphor_box, self.pacing, self.speed = METAPHOR, DEFAULT_PACING, 0.8
+        self.play_log(log, f"{heuristic.name} on the polygon the hunt found")
         self.wait(0.8)
 
     def beats(self, log):

@@ -19,7 +19,7 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import triangulate
-from geometry.user_heuristics import is_user_spec, load_user_heuristic
+from geometry.user_heuristics import UserHeuristic, is_user_spec, load_user_heuristic
 from story.pseudocode import from_docstring, to_json
 from story.registry import REGISTRY, shown
 
@@ -73,8 +73,13 @@ def _run_user(spec: str, polygon: str) -> tracing.Log:
     """A heuristic of one's own: the meta names it (``user_heuristic``, which turns on the
     storyboard's generic beats) and carries its source, and the pseudocode of its docstring
     if it has some (:func:`story.pseudocode.from_docstring`), so a saved log shows them too."""
-    heuristic = load_user_heuristic(spec)
-    p = read_polygon(polygon)
+    return record_user_run(load_user_heuristic(spec), read_polygon(polygon), polygon)
+
+
+def record_user_run(heuristic: UserHeuristic, p: Polygon, polygon: str) -> tracing.Log:
+    """The log of a loaded heuristic of one's own on the polygon ``p`` (``polygon``: the name
+    the log records for it), as :func:`run_logged` records it."""
+    spec = heuristic.spec
     meta = {"algorithm": spec, "polygon": polygon, "shown": heuristic.name,
             "user_heuristic": heuristic.name, "code": [list(row) for row in heuristic.source()]}
     rows = from_docstring(inspect.getdoc(heuristic.raw))

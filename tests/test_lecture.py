@@ -448,3 +448,28 @@ def test_every_chapter_builds_with_its_captions(chapter):
     captions = [p.subcaption for p in plays if p.subcaption]
     assert len(plays) > 10 and captions, chapter.slug
     assert all(isinstance(c, str) and c.strip() for c in captions)
+
+
+def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
+    """Issue 13: a rule the lecture did not cover, its counterexample found at build time
+    (fixed seed), re-checked here exactly, and the card says how it was found."""
+    from geometry.check import is_inner_diagonal
+    from geometry.user_heuristics import load_user_heuristic, run_heuristic
+    from metaphors.lecture import Hunted
+    from story.hunt import hunt
+    from trex.lecture_command import lecture_chapters
+    from trex.scene_graph import build
+
+    chapter = next(c for c in lecture_chapters() if c.slug == "exercises")
+    cls = _chapter_class(chapter)
+    hunted = [s for s in cls.__new__(cls).chapter_segments() if isinstance(s, Hunted)]
+    assert len(hunted) == 1
+    found = hunt(load_user_heuristic(hunted[0].heuristic), budget=hunted[0].budget,
+                 seed=hunted[0].seed)
+    assert found.found and found.polygon.n <= 5
+    claim = run_heuristic(found.polygon, load_user_heuristic(hunted[0].heuristic))
+    assert not is_inner_diagonal(found.polygon, *claim.pair)
+    _, plays = build(cls.handed())
+    captions = " ".join(p.subcaption or "" for p in plays)
+    assert f"The computer tried {found.tried} small polygons" in captions
+    assert f"✗ {found.claim_name} is not an inner diagonal" in captions

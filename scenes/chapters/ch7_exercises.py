@@ -3,7 +3,12 @@
 Run: ``manim -pql scenes/chapters/ch7_exercises.py``; the whole lecture: ``trex lecture``.
 """
 
-from metaphors.lecture import Card, LectureScene, Quiz
+from pathlib import Path
+
+from metaphors.lecture import Card, Hunted, LectureScene, Quiz
+
+#: a rule the lecture does not cover, from the examples (a heuristic of one's own)
+NEAREST_TO_C = f"{Path(__file__).resolve().parents[2] / 'examples' / 'nearest_to_c.py'}:nearest_to_c"
 
 
 class Exercises(LectureScene):
@@ -16,4 +21,5 @@ class Exercises(LectureScene):
                 "Each question shows a polygon and its triangle T.",
                 "Answer before the countdown ends; the answer is checked by the geometry code.")),
             Quiz(count=3, seed=2022),
+            Hunted(NEAREST_TO_C, "Found by the computer", "From B, claim the candidate nearest to C"),
         )
