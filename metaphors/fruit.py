@@ -24,7 +24,7 @@ from manim import (
 from metaphors.tags import tag
 from rendering import typeset
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk, call_line, call_roles, show
+from story.storyboard import Walk, show
 from tracing import Event
 
 PLATE_Y = -2.55
@@ -150,7 +150,7 @@ def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, ear = show(call.args["v"]), bool(ret.result)
     caption = f"Is {v} an ear? " + ("yes: its triangle holds no other vertex" if ear
                                      else "no: a cut between its neighbours is not a clean slice")
-    yield walk.beat(EarTest, caption, call, call=call_line(call, ret),
+    yield walk.step(EarTest, caption, call, ret,
                     roles={v: "result" if ear else "rejected"}, vertex=v, ear=ear)
 
 
@@ -171,9 +171,8 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
             return
         kind = LastSlice
     clipped.append(corners)
-    yield walk.beat(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
-                    call, call=call_line(call, ret), roles=call_roles(call, ret),
-                    **_slice(corners, labels, points, clipped))
+    yield walk.step(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
+                    call, ret, **_slice(corners, labels, points, clipped))
 
 
 def _slice(corners, labels, points, clipped) -> dict:
@@ -192,9 +191,9 @@ def _slice(corners, labels, points, clipped) -> dict:
 
 def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     state = walk.entered_after(ret, ret.result["ref"])
-    yield walk.beat(Good, "A good sub-polygon: one cut edge, about half the vertices; "
-                    "its middle vertex is tested next", call, call=call_line(call, ret),
-                    roles=call_roles(call, ret), points=state["points"], labels=state["labels"])
+    yield walk.step(Good, "A good sub-polygon: one cut edge, about half the vertices; "
+                    "its middle vertex is tested next", call, ret, points=state["points"],
+                    labels=state["labels"])
 
 
 READS = {"is_ear": read_ear_test, "clip_ear": read_clip, "ear-clipping": read_clip,

@@ -33,7 +33,7 @@ from metaphors.picture import again, turn_to
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk, call_line, call_roles, read_pick, show
+from story.storyboard import Walk, read_pick, read_step, show
 from tracing import Event
 
 
@@ -199,15 +199,11 @@ class Snag(Beat):
     result: str
 
 
-def _steps(walk: Walk, call: Event, ret: Event) -> dict:
-    return {"call": call_line(call, ret), "roles": call_roles(call, ret)}
-
-
 def read_turn(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     g = ret.result
-    yield walk.beat(GravityTurn, "Turn the polygon so that gravity points down", call,
+    yield walk.step(GravityTurn, "Turn the polygon so that gravity points down", call, ret,
                     down=g["down"], tilt=g["tilt"], turn_picture=g["turn_picture"],
-                    polygon=call.args["polygon"]["ref"], **_steps(walk, call, ret))
+                    polygon=call.args["polygon"]["ref"])
 
 
 def _hit(walk: Walk, call: Event) -> dict:
@@ -215,37 +211,26 @@ def _hit(walk: Walk, call: Event) -> dict:
     return walk.live.get("hit") or walk.entered_after(call, "hit")
 
 
-def read_drop(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    yield walk.beat(Drop, "The ball falls until it hits the boundary", call,
-                    result=show_result(ret), hit=walk.entered_after(ret, "hit")["at"],
-                    vertex=show_vertex(call), **_steps(walk, call, ret))
+def _drop(walk: Walk, call: Event, ret: Event) -> dict:
+    return {"hit": walk.entered_after(ret, "hit")["at"], "vertex": show(call.args["v"])}
 
 
-def read_slide(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    result = show_result(ret)
+def _slide(walk: Walk, call: Event, ret: Event) -> dict:
+    """Where the ball slides to: nowhere when it landed on a vertex."""
     slid = "vertex" not in _hit(walk, call)
-    yield walk.beat(Slide, f"It slides down the edge to {result}", call,
-                    states=[{"kind": "point", "at": walk.root_points()[result]}] if slid else [],
-                    result=result, **_steps(walk, call, ret))
+    return {"states": [{"kind": "point", "at": walk.root_points()[show(ret.result)]}]
+            if slid else []}
 
 
 def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    result = show_result(ret)
+    result = show(ret.result)
     caption = ("The rubber band stays straight" if result == "—"
                else f"The rubber band snags {result}")
     where, args = walk.root_points(), call.args
     corners = [args["v"]["ref"], *([result] if result != "—" else []), args["x"]["ref"]]
     band = [] if "vertex" in _hit(walk, call) else [
         {"kind": "band", "points": [where[c] for c in corners]}]
-    yield walk.beat(Snag, caption, call, states=band, result=result, **_steps(walk, call, ret))
-
-
-def show_result(ret: Event) -> str:
-    return show(ret.result)
-
-
-def show_vertex(call: Event) -> str:
-    return show(call.args["v"])
+    yield walk.step(Snag, caption, call, ret, states=band, result=result)
 
 
 READS = {
@@ -253,8 +238,8 @@ READS = {
                                "No reflex vertex: the polygon is convex"),
     "straight_vertex": read_pick("{result} is a straight vertex: the ball hangs there instead"),
     "gravity_direction": read_turn,
-    "drop_ball": read_drop,
-    "slide_to_vertex": read_slide,
+    "drop_ball": read_step(Drop, "The ball falls until it hits the boundary", _drop),
+    "slide_to_vertex": read_step(Slide, "It slides down the edge to {result}", _slide),
     "band_snag": read_snag,
 }
 PERFORMS = {GravityTurn: gravity_turn, Drop: drop, Slide: slide, Snag: snag}

@@ -14,7 +14,7 @@ from manim import Polygon as MPolygon
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk, call_line, call_roles, show
+from story.storyboard import Walk, show
 from tracing import Event
 
 
@@ -121,7 +121,7 @@ class Stack(Beat):
 
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, kind = show(call.args["v"]), ret.result
-    yield walk.beat(Classify, f"{v}: {KINDS.get(kind, kind)}", call, call=call_line(call, ret),
+    yield walk.step(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
                     roles={v: "rejected" if kind in ("split", "merge") else "called"},
                     vertex=v, kind=kind, at=walk.root_points()[v])
 
@@ -131,25 +131,24 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     labels = list(where)
     u, w = (labels[k] for k in ret.result)
     walk.count_claim()
-    yield walk.beat(MonotoneDiagonal, f"Diagonal {u}{w} removes a split or merge vertex", call,
-                    call=call_line(call, ret), roles=call_roles(call, ret), labels=[u, w],
+    yield walk.step(MonotoneDiagonal, f"Diagonal {u}{w} removes a split or merge vertex", call, ret,
+                    labels=[u, w],
                     points=[where[u], where[w]])
 
 
 def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     pieces = [walk.entered_after(call, r["ref"]) for r in ret.result]
-    yield walk.beat(Pieces, f"The diagonals cut the polygon into {len(pieces)} y-monotone "
-                    "pieces", call, call=call_line(call, ret), roles=call_roles(call, ret),
-                    pieces=[p.get("points", []) for p in pieces])
+    yield walk.step(Pieces, f"The diagonals cut the polygon into {len(pieces)} y-monotone "
+                    "pieces", call, ret, pieces=[p.get("points", []) for p in pieces])
 
 
 def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     where = walk.root_points()
     labels = list(where)
     triangles = [[where[labels[k]] for k in t] for t in ret.result]
-    yield walk.beat(Stack, f"The stack triangulates a monotone piece: "
-                    f"{len(triangles)} triangle{'s' if len(triangles) != 1 else ''}", call,
-                    call=call_line(call, ret), roles=call_roles(call, ret), triangles=triangles)
+    yield walk.step(Stack, f"The stack triangulates a monotone piece: "
+                    f"{len(triangles)} triangle{'s' if len(triangles) != 1 else ''}", call, ret,
+                    triangles=triangles)
 
 
 READS = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,

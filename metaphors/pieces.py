@@ -13,7 +13,7 @@ from manim import Polygon as MPolygon
 
 from metaphors.tags import tag
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk, call_line, call_roles
+from story.storyboard import Walk
 from tracing import Event
 
 
@@ -31,8 +31,8 @@ def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     pieces = [r["ref"] for r in ret.result]
     entered = {e.target: e.state for e in walk.log.events[ret.seq:]
                if e.kind == "enter" and e.target in pieces}
-    yield walk.beat(Split, "Split along the diagonal into two smaller polygons", call,
-                    call=call_line(call, ret), roles=call_roles(call, ret), pieces=pieces,
+    yield walk.step(Split, "Split along the diagonal into two smaller polygons", call, ret,
+                    pieces=pieces,
                     parent=call.args["piece"]["ref"],
                     points=[entered[k]["points"] for k in pieces if k in entered],
                     labels=[entered[k]["labels"] for k in pieces if k in entered])

@@ -188,15 +188,6 @@ class Walk:
         labels, points = self.root_polygon()
         return dict(zip(labels, points, strict=True))
 
-    def changes(self, call: Event, target: str) -> list[dict]:
-        """The states object ``target`` enters or changes to while ``call`` runs."""
-        ret = self.returns.get(call.seq)
-        end = ret.seq if ret is not None else len(self.log.events)
-        return [
-            e.state for e in self.log.events[call.seq:end]
-            if e.kind in ("enter", "change") and e.target == target
-        ]
-
     def reach(self, call: Event, ret: Event) -> Reach:
         """How far the heuristic's motion travels to each candidate (:mod:`story.reach`)."""
         labels, points = self.root_polygon()
@@ -236,6 +227,13 @@ class Walk:
         """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk."""
         return beat_type(caption=caption, step=event.seq, line=self.code_line(event),
                          row=self.pseudocode_row(event), pace=self.pace(), **fields)
+
+    def step(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
+             **fields) -> Beat:
+        """The beat of a returned call: its call line, and the call's roles unless ``fields``
+        give others."""
+        fields.setdefault("roles", call_roles(call, ret))
+        return self.beat(beat_type, caption, call, call=call_line(call, ret), **fields)
 
     def is_heuristic(self, name: str) -> bool:
         return name in self._heuristics or name == self.user
@@ -338,13 +336,12 @@ def read_pick(caption: str, none_caption: str | None = None) -> Reading:
     """The reading of a call that picks a vertex (its result), or finds none."""
 
     def read(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-        kw = {"call": call_line(call, ret), "roles": call_roles(call, ret)}
         if ret.result is None:
             if none_caption:
-                yield walk.beat(Note, none_caption, call, **kw)
+                yield walk.step(Note, none_caption, call, ret)
             return
         vertex = show(ret.result)
-        yield walk.beat(Pick, caption.format(result=vertex), call, vertex=vertex, **kw)
+        yield walk.step(Pick, caption.format(result=vertex), call, ret, vertex=vertex)
 
     return read
 
@@ -353,8 +350,7 @@ def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     found = [show(v) for v in ret.result or []]
     caption = (f"Candidates inside T: {', '.join(found)}" if found
                else "No vertex inside T: AC is an inner diagonal")
-    yield walk.beat(Candidates, caption, call, call=call_line(call, ret),
-                    roles=call_roles(call, ret), candidates=found)
+    yield walk.step(Candidates, caption, call, ret, candidates=found)
 
 
 def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -363,8 +359,8 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     state = walk.live.get(key) or walk.entered_after(ret, key)
     u, v = state["labels"]
     name = f"{u}{v}"
-    yield walk.beat(Claim, f"Claim: {name} is an inner diagonal", call,
-                    call=call_line(call, ret), roles={u: "result", v: "result"},
+    yield walk.step(Claim, f"Claim: {name} is an inner diagonal", call, ret,
+                    roles={u: "result", v: "result"},
                     labels=[u, v], points=state["points"])
     polygon = _claim_polygon(walk)
     walk.count_claim()
@@ -407,8 +403,8 @@ def read_step(kind: type[Beat], caption: str,
 
     def read(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         result = show(ret.result)
-        yield walk.beat(kind, caption.format(result=result), call, call=call_line(call, ret),
-                        roles=call_roles(call, ret), result=result, **fields(walk, call, ret))
+        yield walk.step(kind, caption.format(result=result), call, ret, result=result,
+                        **fields(walk, call, ret))
 
     return read
 
