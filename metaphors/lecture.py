@@ -148,8 +148,10 @@ class LectureScene(TraceScene):
             self.play(FadeIn(line, shift=UP * 0.1), run_time=0.5)
         self.wait(max(0.5, card.seconds - 0.8 - 0.5 * len(lines)))
 
-    def play_run(self, run: Run) -> None:
-        log = run.spec(self.lecture_polygon()).log()
+    def play_run(self, run: Run, log=None) -> None:
+        """The run played as the metaphor scenes play it (``log``: its log, if already
+        recorded), then a short pause."""
+        log = log if log is not None else run.spec(self.lecture_polygon()).log()
         self.metaphor_box = run.box
         self.pacing = run.pacing
         self.speed = run.speed
@@ -168,9 +170,8 @@ class LectureScene(TraceScene):
             "vertices.")))
         self.clear_screen()
         log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")
-        self.metaphor_box, self.pacing, self.speed = METAPHOR, DEFAULT_PACING, 0.8
-        self.play_log(log, f"{heuristic.name} on the polygon the hunt found")
-        self.wait(0.8)
+        self.play_run(Run(hunted.heuristic, None, f"{heuristic.name} on the polygon the hunt "
+                          "found"), log)
 
     def beats(self, log):
         return [replace(b, pace=b.pace * self.speed) for b in catalog.beats(log, self.pacing)]

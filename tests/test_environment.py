@@ -170,7 +170,7 @@ def test_a_lecture_chapter_gets_the_polygon_as_an_argument(tmp_path, environment
             started.update(command=command, kwargs=kwargs)
 
     environment.setattr(lecture_command.subprocess, "Popen", Process)
-    chapter = lecture_command.SceneChapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
+    chapter = lecture_command.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
     lecture_command._start(0, chapter, tmp_path, tmp_path, "l", "star")
     assert started["command"][-3:] == ["l", "star", ""]  # quality, polygon, panel (none)
     assert "env" not in started["kwargs"]  # the child inherits ours, untouched

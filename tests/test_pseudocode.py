@@ -306,7 +306,7 @@ def test_a_lecture_chapter_gets_the_panel_as_an_argument(tmp_path, monkeypatch):
             started["command"] = command
 
     monkeypatch.setattr(lecture_command.subprocess, "Popen", Process)
-    chapter = lecture_command.SceneChapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
+    chapter = lecture_command.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
     lecture_command._start(0, chapter, tmp_path, tmp_path, "l", None, "source")
     assert started["command"][-3:] == ["l", "", "source"]
     seen = {}

@@ -79,7 +79,6 @@ class Chapter:
     scene_class: str | None
 
 
-SceneChapter = Chapter  # a scene played as a chapter (``--chapters scaling,polygon``)
 
 
 class ChapterFailed(Exception):
@@ -125,7 +124,7 @@ def pick_chapters(spec: str, chapters: Sequence | None) -> list:
         slug = path.stem if class_name is None else f"{path.stem}-{class_name}"
         title = path.stem.replace("_", " ").capitalize()
         title = title if class_name is None else f"{title} ({class_name})"
-        picked.append(SceneChapter(k, slug.replace("_", "-"), title, str(path), class_name))
+        picked.append(Chapter(k, slug.replace("_", "-"), title, str(path), class_name))
     return picked
 
 
@@ -138,7 +137,7 @@ def scene_path(chapter) -> Path:
 def chapter_stem(chapter) -> str:
     """``01-overview``: the chapter's files in ``chapters/``.
 
-    >>> chapter_stem(SceneChapter(3, "gravity", "Gravity", "scenes/gravity.py", None))
+    >>> chapter_stem(Chapter(3, "gravity", "Gravity", "scenes/gravity.py", None))
     '03-gravity'
     """
     return f"{chapter.number:02d}-{chapter.slug}"
