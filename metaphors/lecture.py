@@ -36,6 +36,8 @@ from story.storyboard import Pacing
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
+#: characters per second a class reads a caption at, at most (the BBC's children's limit)
+READING_SPEED = 17
 
 
 @dataclass(frozen=True)
@@ -45,6 +47,16 @@ class Card:
     title: str
     lines: tuple[str, ...] = ()
     seconds: float = 5.0
+
+    @property
+    def caption(self) -> str:
+        """The card's subtitle: its title and lines in one cue."""
+        return self.title + (": " + " ".join(self.lines) if self.lines else "")
+
+    def readable(self) -> Card:
+        """This card, held at least as long as its caption takes to read at
+        :data:`READING_SPEED`."""
+        return replace(self, seconds=max(self.seconds, len(self.caption) / READING_SPEED))
 
 
 @dataclass(frozen=True)
@@ -141,7 +153,7 @@ class LectureScene(TraceScene):
         group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
         group.move_to((0, 0.3, 0))
         title.set_x(0)
-        caption = card.title + (": " + " ".join(card.lines) if card.lines else "")
+        caption = card.caption
         self.play(Write(title), run_time=0.8, subcaption=caption,
                   subcaption_duration=card.seconds)
         for line in lines:
@@ -165,9 +177,9 @@ class LectureScene(TraceScene):
             raise ValueError(f"{heuristic.name}: no counterexample in {found.tried} polygons")
         self.play_card(Card(hunted.title, (
             f"{hunted.rule}: a rule this lecture did not cover.",
-            f"The computer tried {found.tried} small polygons (trex hunt, seed {hunted.seed}),",
-            f"fewest vertices first, and shrank the first failure to {found.polygon.n} "
-            "vertices.")))
+            f"trex hunt tried {found.tried} small polygons (seed {hunted.seed}), fewest "
+            "vertices first.",
+            f"It shrank the first failure to {found.polygon.n} vertices.")).readable())
         self.clear_screen()
         log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")
         self.play_run(Run(hunted.heuristic, None, f"{heuristic.name} on the polygon the hunt "

@@ -471,5 +471,9 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     assert not is_inner_diagonal(found.polygon, *claim.pair)
     _, plays = build(cls.handed())
     captions = " ".join(p.subcaption or "" for p in plays)
-    assert f"The computer tried {found.tried} small polygons" in captions
+    assert f"trex hunt tried {found.tried} small polygons" in captions
     assert f"✗ {found.claim_name} is not an inner diagonal" in captions
+    # the card is on screen until the next caption: long enough to read at 17 characters/s
+    k = next(i for i, p in enumerate(plays) if (p.subcaption or "").startswith(hunted[0].title))
+    end = next(i for i in range(k + 1, len(plays)) if plays[i].subcaption)
+    assert len(plays[k].subcaption) / sum(p.run_time for p in plays[k:end]) <= 17
