@@ -1,10 +1,12 @@
 """trex render: real low-quality renders checked with PyAV, bad input before any rendering,
 and no truncated or temporary file left by an interrupted or failed render."""
 
+import os
 import signal
 import subprocess
 import sys
 import textwrap
+import threading
 import time
 from pathlib import Path
 
@@ -195,3 +197,43 @@ def test_interrupted_render_leaves_nothing(tmp_path):
             if proc.poll() is None:
                 proc.kill()
                 proc.wait()
+
+
+def _encoder_threads() -> list:
+    return [t for t in threading.enumerate()
+            if t.name.startswith("partial-movie-encoder") and t.is_alive()]
+
+
+def test_an_interrupt_as_an_encoder_starts_orphans_no_thread(tmp_path, monkeypatch):
+    """SIGINT arriving just after manim started a segment's encoder thread, before its writer
+    kept the job: the render is interrupted and no encoder thread is left waiting for frames
+    (one would keep the process from ever exiting)."""
+    from manim.scene import scene_file_writer
+
+    started = scene_file_writer._PartialMovieEncodeJob.__init__
+    sent = []
+
+    def start_then_interrupt(job, *args, **kwargs):
+        started(job, *args, **kwargs)
+        if not sent:
+            sent.append(job)
+            os.kill(os.getpid(), signal.SIGINT)
+
+    monkeypatch.setattr(scene_file_writer._PartialMovieEncodeJob, "__init__",
+                        start_then_interrupt)
+    before = set(_encoder_threads())
+    scene_file = Path(__file__).resolve().parents[1] / "scenes" / "scaling.py"
+    cls = render_command.scene_input(render_command.load_scene_class(scene_file, None),
+                                     "counterexample")
+    try:
+        with pytest.raises(render_command.Interrupted), \
+                render_command.interrupts_raise() as signals:
+            render_command.render_into(cls, tmp_path / "scaling.mp4", "mp4", "low_quality",
+                                       progress=False, signals=signals)
+    finally:
+        orphans = [t for t in _encoder_threads() if t not in before]
+        for job in sent:  # unblock an orphan, so a failure here does not hang the suite
+            job.abort()
+    assert sent, "no encoder was started"
+    assert orphans == []
+    assert leftovers(tmp_path) == []

@@ -263,6 +263,22 @@ def _abort_encoders(scene) -> None:
             abort()
 
 
+def _hold_signals_while_encoders_start(scene) -> None:
+    """Hold SIGINT/SIGTERM while manim opens a segment: its encoder thread starts before the
+    writer keeps the job, and an interrupt in between would orphan a thread that waits for
+    frames forever (the process never exits)."""
+    writer = getattr(getattr(scene, "renderer", None), "file_writer", None)
+    opener = getattr(writer, "open_partial_movie_stream", None)
+    if opener is None:
+        return
+
+    def open_held(*args, **kwargs):
+        with _signals_held():
+            return opener(*args, **kwargs)
+
+    writer.open_partial_movie_stream = open_held
+
+
 def render_into(make_scene: Callable[[], object], output: Path, fmt: str, quality: str,
                 *, progress: bool = True, srt: bool = True,
                 signals: Signals | None = None) -> Path:
@@ -296,6 +312,7 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
         }
         with tempconfig(settings):
             scene = make_scene()
+            _hold_signals_while_encoders_start(scene)
             try:
                 scene.render()
             except BaseException:
