@@ -3,17 +3,17 @@
 Performers (one module per metaphor family) receive the board and a beat, build mobjects at
 the log's coordinates with :meth:`Board.at`, and hand their animations to :meth:`Board.play`,
 which adds the panel's updates and the subtitle, applies the beat's pacing, and writes the
-caption as a Manim subcaption (so every render also writes an ``.srt``).
+caption as a Manim subcaption (so every render also writes an ``.srt``), held until it has
+been read (:mod:`metaphors.captions`).
 """
 
 from __future__ import annotations
-
-from datetime import timedelta
 
 import numpy as np
 from manim import FadeIn, FadeOut, Scene, VGroup
 
 from geometry.polygon import Polygon
+from metaphors.captions import captions_of, whole_frames
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.layout import METAPHOR, SUBTITLE_Y, TITLE_Y, Box
 from metaphors.panel import Panel
@@ -51,7 +51,8 @@ class Board:
         self.subtitle = tag(text(" ", font=theme.font, size=theme.caption_size), None,
                             "subtitle")
         self.objects: dict[str, object] = {}  # persistent metaphor objects by key
-        self.caption = ""
+        self.caption = ""  # the caption of this board's subtitle
+        self.captions = captions_of(scene)
         self.roles: dict[str, str] = {}
 
     # --- coordinates -----------------------------------------------------------------------------
@@ -90,10 +91,8 @@ class Board:
         action = [*anims, *self.panel.follow_roles(beat), *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption)]
         total = max(0.1, run_time * beat.pace)
-        caption = {}
-        if beat.caption != self.caption:
-            self.close()
-            caption = {"subcaption": beat.caption, "subcaption_duration": total}
+        # a new caption waits until the one before it has been read
+        caption = self.captions.show(beat.caption, total) if beat.caption != self.caption else {}
         lead = min(WORDS_TIME, total / 2)
         if words and lead >= MIN_PLAY:
             for animation in words:
@@ -103,7 +102,7 @@ class Board:
             if action:
                 self.scene.play(*action, run_time=total - lead)
             else:
-                self.scene.wait(total - lead)
+                self.scene.wait(whole_frames(total - lead))
         elif words or action:
             self.scene.play(*words, *action, run_time=total, **caption)
         for marker, colour in after:
@@ -112,13 +111,10 @@ class Board:
         self.settle()
 
     def close(self) -> None:
-        """The subtitle on screen stays there until the next one: stretch its ``.srt`` cue
-        (written when the caption appeared, as long as that beat) to now. Called when the
-        caption changes and when the board's run is over."""
-        cues = getattr(getattr(self.scene.renderer, "file_writer", None), "subcaptions", None)
-        if cues and self.caption and cues[-1].content == self.caption:
-            now = timedelta(seconds=float(self.scene.renderer.time))
-            cues[-1].end = max(cues[-1].end, now)
+        """The run is over: its last caption is held until read, its cue lasting to now (it
+        stays on screen, and its cue goes on, until the screen is cleared)."""
+        self.captions.hold()
+        self.captions.stretch()
 
     def settle(self) -> None:
         """Put the text at the bottom of the scene's drawing order: title and code lowest

@@ -163,7 +163,6 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     if ret.name == "clip_ear":
         corners = [show(r) for r in ret.result]
         kind = Slice
-        walk.count_claim()
     else:
         gone = {c[1] for c in clipped}
         corners = [x for x in labels if x not in gone]
@@ -173,6 +172,8 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     clipped.append(corners)
     yield walk.step(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
                     call, ret, **_slice(corners, labels, points, clipped))
+    if kind is Slice:
+        walk.count_claim("slice")  # after its beat: the beat belongs to the slice it cuts
 
 
 def _slice(corners, labels, points, clipped) -> dict:

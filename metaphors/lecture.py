@@ -21,6 +21,7 @@ from geometry.io import read_polygon
 from geometry.triangulate import triangulate
 from geometry.user_heuristics import load_user_heuristic
 from metaphors import catalog
+from metaphors.captions import captions_of
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
 from metaphors.scene import TraceScene
@@ -36,27 +37,15 @@ from story.storyboard import Pacing
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
-#: characters per second a class reads a caption at, at most (the BBC's children's limit)
-READING_SPEED = 17
 
 
 @dataclass(frozen=True)
 class Card:
-    """A title and a few lines of text, shown for ``seconds``."""
+    """A title and a few lines of text, shown one after another, each its own caption and
+    each held until it has been read (:mod:`metaphors.captions`)."""
 
     title: str
     lines: tuple[str, ...] = ()
-    seconds: float = 5.0
-
-    @property
-    def caption(self) -> str:
-        """The card's subtitle: its title and lines in one cue."""
-        return self.title + (": " + " ".join(self.lines) if self.lines else "")
-
-    def readable(self) -> Card:
-        """This card, held at least as long as its caption takes to read at
-        :data:`READING_SPEED`."""
-        return replace(self, seconds=max(self.seconds, len(self.caption) / READING_SPEED))
 
 
 @dataclass(frozen=True)
@@ -135,6 +124,7 @@ class LectureScene(TraceScene):
         self.wait(0.5)
 
     def clear_screen(self) -> None:
+        captions_of(self).finish()
         if self.mobjects:
             self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.4)
             self.clear()
@@ -146,6 +136,7 @@ class LectureScene(TraceScene):
     # --- segments ---------------------------------------------------------------------------------
 
     def play_card(self, card: Card) -> None:
+        captions = captions_of(self)
         title = tag(typeset.glyphs(card.title, font=self.theme.font, size=self.theme.title_size,
                                    colour=self.theme.ink, width=13.2), None, "card:title")
         lines = [tag(self.text("• " + line, self.theme.caption_size, self.theme.idle), None,
@@ -153,12 +144,10 @@ class LectureScene(TraceScene):
         group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
         group.move_to((0, 0.3, 0))
         title.set_x(0)
-        caption = card.caption
-        self.play(Write(title), run_time=0.8, subcaption=caption,
-                  subcaption_duration=card.seconds)
-        for line in lines:
-            self.play(FadeIn(line, shift=UP * 0.1), run_time=0.5)
-        self.wait(max(0.5, card.seconds - 0.8 - 0.5 * len(lines)))
+        self.play(Write(title), run_time=0.8, **captions.show(card.title, 0.8))
+        for line, words in zip(lines, card.lines, strict=True):
+            self.play(FadeIn(line, shift=UP * 0.1), run_time=0.5, **captions.show(words, 0.5))
+        captions.hold()
 
     def play_run(self, run: Run, log=None) -> None:
         """The run played as the metaphor scenes play it (``log``: its log, if already
@@ -179,7 +168,7 @@ class LectureScene(TraceScene):
             f"{hunted.rule}: a rule this lecture did not cover.",
             f"trex hunt tried {found.tried} small polygons (seed {hunted.seed}), fewest "
             "vertices first.",
-            f"It shrank the first failure to {found.polygon.n} vertices.")).readable())
+            f"It shrank the first failure to {found.polygon.n} vertices.")))
         self.clear_screen()
         log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")
         self.play_run(Run(hunted.heuristic, None, f"{heuristic.name} on the polygon the hunt "
@@ -193,7 +182,7 @@ class LectureScene(TraceScene):
         ours = triangulate(polygon, compare.ours).triangles
         sides = ((-3.6, compare.ours, ours), (3.6, "constrained Delaunay (shapely)",
                                               constrained_delaunay(polygon)))
-        theme = self.theme
+        theme, captions = self.theme, captions_of(self)
         for x, name, triangles in sides:
             frame = Frame(polygon.points, (x, -0.2), 6.0, 5.2)
             outline = tag(polygon_mobject(polygon, frame, theme), "idle", f"compare:{name}")
@@ -204,12 +193,12 @@ class LectureScene(TraceScene):
                                            theme), None, "compare:triangle")
                       for k, t in enumerate(triangles)]
             self.play(*[FadeIn(p) for p in pieces], run_time=1.2,
-                      subcaption=f"{name}: {len(triangles)} triangles")
+                      **captions.show(f"{name}: {len(triangles)} triangles", 1.2))
         note = tag(self.text(f"Both: {polygon.n - 2} triangles for {polygon.n} vertices — "
                              "different diagonals, both valid", theme.caption_size), None,
                    "compare:note")
         note.move_to((0, -3.55, 0))
-        self.play(FadeIn(note), run_time=0.5, subcaption=note.original_text)
+        self.play(FadeIn(note), run_time=0.5, **captions.show(note.original_text, 0.5))
         self.wait(compare.seconds)
 
     def play_quiz(self, quiz: Quiz) -> None:
@@ -221,7 +210,9 @@ class LectureScene(TraceScene):
         """The question, a countdown, the answer with its reason."""
         theme = self.theme
         picture = [tag(m, None, "exercise") for m in still_mobjects(exercise, theme)]
-        self.play(*[FadeIn(m) for m in picture], run_time=0.8, subcaption=exercise.question)
+        captions = captions_of(self)
+        self.play(*[FadeIn(m) for m in picture], run_time=0.8,
+                  **captions.show(exercise.question, 0.8))
         for k in range(think, 0, -1):
             digit = tag(self.text(str(k), 60, theme.argument), None, "countdown")
             digit.move_to((6.3, 2.7, 0))
@@ -229,14 +220,15 @@ class LectureScene(TraceScene):
             self.wait(0.6)
             self.play(FadeOut(digit), run_time=0.2)
         self.play(*self.answer_animations(exercise), run_time=1.2,
-                  subcaption=f"{exercise.answer}: {exercise.reason}")
+                  **captions.show(f"{exercise.answer}: {exercise.reason}", 1.2))
         self.wait(3.0)
 
     def answer_animations(self, exercise: Exercise) -> list:
         theme, polygon = self.theme, exercise.polygon
         frame = Frame(polygon.points, BOX_CENTER, BOX_WIDTH, BOX_HEIGHT)
-        text = tag(self.text(f"Answer: {exercise.answer} — {exercise.reason}", 24,
-                             theme.result), "result", "answer")
+        text = tag(typeset.wrapped(f"Answer: {exercise.answer} — {exercise.reason}", size=24,
+                                   colour=theme.result, font=theme.font, width=13.2),
+                   "result", "answer")
         text.move_to((0, -3.05, 0))
         anims = [FadeIn(text)]
         if exercise.kind == "pick":

@@ -30,7 +30,7 @@ def classify(board, beat) -> None:
     """The sweep line reaches a vertex; the vertex shows its kind."""
     theme, data = board.theme, beat
     line = _sweep_line(board, data.at[1])
-    kind = tag(text(data.kind, font=theme.font, size=18,
+    kind = tag(text(data.kind, font=theme.font, size=theme.label_size + 2,
                     colour=theme.rejected if data.kind in ("split", "merge") else theme.called),
                None, "kind")
     kind.next_to(board.markers[data.vertex], direction=[1, 0, 0], buff=0.1)
@@ -130,10 +130,10 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     where = walk.root_points()
     labels = list(where)
     u, w = (labels[k] for k in ret.result)
-    walk.count_claim()
     yield walk.step(MonotoneDiagonal, f"Diagonal {u}{w} removes a split or merge vertex", call, ret,
                     labels=[u, w],
                     points=[where[u], where[w]])
+    walk.count_claim()  # after its beat: the beat belongs to the diagonal it draws
 
 
 def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:

@@ -190,8 +190,9 @@ class Panel:
         return [*anims, FadeIn(light), FadeIn(copy)]
 
     def _call_line(self, text: str) -> list[Animation]:
-        new = tag(typeset.text(text, font=self.theme.mono_font, size=20, colour=self.theme.ink,
-                               width=PANEL_CODE.width), "called", "panel:call")
+        new = tag(typeset.wrapped(text, font=self.theme.mono_font, size=20,
+                                  colour=self.theme.ink, width=PANEL_CODE.width),
+                  "called", "panel:call")
         new.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         old, self.call = self.call, new
         return [FadeOut(old), FadeIn(new)]

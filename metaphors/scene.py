@@ -30,6 +30,7 @@ from geometry.user_heuristics import (
 )
 from metaphors import catalog
 from metaphors.board import Board
+from metaphors.captions import captions_of
 from metaphors.layout import METAPHOR
 from metaphors.play import board_for, play_beats
 from metaphors.tags import tag
@@ -37,9 +38,10 @@ from metaphors.theme import THEME
 from rendering.camera import PathCamera
 from rendering.renderer import BackdropRenderer
 from rendering.typeset import text
-from story.beats import Beat
+from story.beats import Beat, Candidates
 from story.environment import spec_from_environment, specs_from_environment
 from story.pseudocode import PANELS, PSEUDOCODE
+from story.reading import frame_summarised
 from story.registry import heuristics
 from story.spec import RunSpec
 from story.storyboard import Pacing
@@ -158,7 +160,11 @@ class TraceScene(SpecScene, Scene):
     def play_log(self, log, title: str) -> Board:
         """Turn one log into beats and play them on a fresh board (both kept, as
         ``trex_beats`` and ``trex_board``, for tests)."""
-        self.trex_beats = self.beats(log)
+        beats = self.beats(log)
+        # the frame every heuristic shares, seen in a run before: one short caption for it
+        seen = getattr(self, "trex_frame_seen", False)
+        self.trex_beats = frame_summarised(beats) if seen else beats
+        self.trex_frame_seen = seen or any(isinstance(b, Candidates) for b in beats)
         self.trex_board = board_for(self, log, self.trex_beats, title, self.theme)
         return play_beats(self.trex_board, self.trex_beats)
 
@@ -227,6 +233,7 @@ class SequenceScene(TraceScene):
         self.camera.background_color = self.theme.background
         for k, (log, (_, _, title)) in enumerate(zip(self.logs(), self.runs, strict=True)):
             if self.mobjects:
+                captions_of(self).finish()
                 self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.3)
                 self.clear()
             self.card(k, title)

@@ -36,7 +36,7 @@ from functools import lru_cache
 import manimpango
 import numpy as np
 import svgelements as se
-from manim import NORMAL, Text, VGroup, VMobject, config
+from manim import DOWN, LEFT, NORMAL, Text, VGroup, VMobject, config
 from manim.constants import START_X, START_Y
 from manim.mobject.svg.svg_mobject import VMobjectFromSVGPath
 from manim.mobject.text.text_mobject import (
@@ -94,6 +94,35 @@ def glyphs(string: str, *, size: float, colour: str | None = None, font: str = D
     """A :class:`GlyphText` of ``string``: for text that is written with ``Write``."""
     points, ends = _typeset(string, font, float(size), slant, weight)
     return _fit(GlyphText(string, points.copy(), ends, colour or DEFAULT_INK), width)
+
+
+def wrapped(string: str, *, size: float, width: float, colour: str | None = None,
+            font: str = DEFAULT_FONT, gap: float = 0.1) -> FlatText | VGroup:
+    """``string`` in as many lines as it needs to fit ``width`` at ``size`` (broken at
+    spaces, left-aligned), each line a :class:`FlatText` (one line: that text alone): a long
+    text wraps instead of shrinking below its size. Only a word wider than ``width`` on its
+    own is shrunk.
+
+    >>> group = wrapped("nearest_to(B, [D, E]) → D", size=20, width=2.5)
+    >>> [line.original_text for line in group]
+    ['nearest_to(B, [D,', 'E]) → D']
+    """
+    lines: list[str] = []
+    for word in string.split(" "):
+        trial = f"{lines[-1]} {word}" if lines else word
+        if lines and _natural_width(trial, font, size) <= width:
+            lines[-1] = trial
+        else:
+            lines.append(word)
+    parts = [text(line, size=size, colour=colour, font=font, width=width) for line in lines]
+    if len(parts) == 1:
+        return parts[0]
+    return VGroup(*parts).arrange(DOWN, aligned_edge=LEFT, buff=gap)
+
+
+def _natural_width(string: str, font: str, size: float) -> float:
+    points = outline(string, font, float(size))
+    return float(np.ptp(points[:, 0])) if len(points) else 0.0
 
 
 def _fit(mobject, width: float | None):

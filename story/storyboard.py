@@ -47,6 +47,7 @@ from story.beats import (
 )
 from story.pseudocode import Step, from_json, lit_row
 from story.reach import Reach, reach_of
+from story.reading import summarised
 from story.registry import heuristics, pseudocode
 from story.roles import ROLES
 from tracing import Event, Log
@@ -152,6 +153,8 @@ class Walk:
         self.live: dict[str, dict] = {}
         self.returns = {e.call: e for e in log.events if e.kind == "return"}
         self.claims = 0
+        self.noun = "diagonal"  # what a claim is, in the summary captions of repeated ones
+        self.counted: dict[int, int] = {}  # id of each beat made → claims counted by then
         self.heuristic_polygon: list[str] = []
         self.shown_polygon = False
         self.stack: list[Event] = []  # open calls, outermost first
@@ -216,17 +219,21 @@ class Walk:
         self.lit = row
         return row
 
-    def count_claim(self) -> None:
-        """One more diagonal found: after ``pacing.full`` of them the beats go faster."""
+    def count_claim(self, noun: str = "diagonal") -> None:
+        """One more claim (a ``noun``: a diagonal, a slice) made: after ``pacing.full`` of
+        them the beats go faster, under summary captions (:func:`story.reading.summarised`)."""
         self.claims += 1
+        self.noun = noun
 
     def pace(self) -> float:
         return 1.0 if self.claims < self.pacing.full else self.pacing.fast
 
     def beat(self, beat_type: type[Beat], caption: str, event: Event, /, **fields) -> Beat:
         """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk."""
-        return beat_type(caption=caption, step=event.seq, line=self.code_line(event),
+        beat = beat_type(caption=caption, step=event.seq, line=self.code_line(event),
                          row=self.pseudocode_row(event), pace=self.pace(), **fields)
+        self.counted[id(beat)] = self.claims
+        return beat
 
     def step(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
              **fields) -> Beat:
@@ -292,7 +299,8 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
     for event in log.events:
         beats.extend(_beats_for(walk, event, table))
         walk.track(event)
-    return beats
+    return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
+                      walk.noun)
 
 
 def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[Beat]:
@@ -363,8 +371,8 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                     roles={u: "result", v: "result"},
                     labels=[u, v], points=state["points"])
     polygon = _claim_polygon(walk)
-    walk.count_claim()
     if polygon is None:
+        walk.count_claim()
         return
     i, j = polygon.labels.index(u), polygon.labels.index(v)
     verdict = is_inner_diagonal(polygon, i, j)
@@ -375,6 +383,7 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                     why=verdict.why, code=verdict.code,
                     point=list(verdict.point) if verdict.point else None,
                     edge=[polygon.labels[k] for k in verdict.edge] if verdict.edge else None)
+    walk.count_claim()  # after its verdict: the verdict belongs to the claim it judges
 
 
 def _claim_polygon(walk: Walk) -> Polygon | None:

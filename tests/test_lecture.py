@@ -26,6 +26,7 @@ import pytest
 import srt
 from click.testing import CliRunner
 
+from tests.reading_rules import small_texts, unreadable_cues
 from trex import assemble, lecture_command
 from trex.cli import main
 from trex.render_command import load_scene_class
@@ -442,12 +443,16 @@ def _chapters():
 def test_every_chapter_builds_with_its_captions(chapter):
     """Each chapter plays through in dry run (every segment's code runs, no video): a chapter
     that crashes half-way through a render is caught here, not after minutes of rendering."""
-    from trex.scene_graph import build
+    from trex.snapshot import build
 
-    _, plays = build(_chapter_class(chapter).handed())
-    captions = [p.subcaption for p in plays if p.subcaption]
-    assert len(plays) > 10 and captions, chapter.slug
+    data = build(_chapter_class(chapter).handed()).data
+    captions = [p["subcaption"] for p in data["plays"] if p["subcaption"]]
+    assert len(data["plays"]) > 10 and captions, chapter.slug
     assert all(isinstance(c, str) and c.strip() for c in captions)
+    # issue 12: a class can read it: cues at reading speed, no text too small
+    assert [c["text"] for c in data["cues"]] == captions
+    assert unreadable_cues(data) == [], chapter.slug
+    assert small_texts(data) == [], chapter.slug
 
 
 def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
@@ -458,7 +463,7 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     from metaphors.lecture import Hunted
     from story.hunt import hunt
     from trex.lecture_command import lecture_chapters
-    from trex.scene_graph import build
+    from trex.snapshot import build
 
     chapter = next(c for c in lecture_chapters() if c.slug == "exercises")
     cls = _chapter_class(chapter)
@@ -469,11 +474,8 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     assert found.found and found.polygon.n <= 5
     claim = run_heuristic(found.polygon, load_user_heuristic(hunted[0].heuristic))
     assert not is_inner_diagonal(found.polygon, *claim.pair)
-    _, plays = build(cls.handed())
-    captions = " ".join(p.subcaption or "" for p in plays)
-    assert f"trex hunt tried {found.tried} small polygons" in captions
-    assert f"✗ {found.claim_name} is not an inner diagonal" in captions
-    # the card is on screen until the next caption: long enough to read at 17 characters/s
-    k = next(i for i, p in enumerate(plays) if (p.subcaption or "").startswith(hunted[0].title))
-    end = next(i for i in range(k + 1, len(plays)) if plays[i].subcaption)
-    assert len(plays[k].subcaption) / sum(p.run_time for p in plays[k:end]) <= 17
+    data = build(cls.handed()).data
+    cues = [c["text"] for c in data["cues"]]
+    assert hunted[0].title in cues  # the card: its title, then each line its own cue
+    assert any(c.startswith(f"trex hunt tried {found.tried} small polygons") for c in cues)
+    assert any(c.startswith(f"✗ {found.claim_name} is not an inner diagonal") for c in cues)

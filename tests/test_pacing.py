@@ -1,5 +1,5 @@
 """Pacing: full detail for the first claims, then faster, so that a 20-vertex divide and conquer
-(18 triangles, 17 claims) stays under about two minutes of video. Measured on the scene built
+(18 triangles, 17 claims) stays under about three minutes of video (every caption held until read). Measured on the scene built
 in dry run (:func:`trex.scene_graph.build`), as long as its video at ``-ql``: each play
 lasts a whole number of frames (15 per second), the last one begun counted whole."""
 
@@ -30,12 +30,12 @@ def _video_seconds(scene_class, polygon: str, fps: int = 15) -> float:
     "random-orthogonal:20:0",  # the longest of the generators' first 20-gons (97 s)
     pytest.param("random-star:20:1", marks=pytest.mark.slow),
 ])
-def test_twenty_vertex_triangulation_stays_under_two_minutes(polygon):
-    """Divide and conquer on 20 vertices (18 triangles, 17 claims) plays in under 2 minutes:
+def test_twenty_vertex_triangulation_stays_under_three_minutes(polygon):
+    """Divide and conquer on 20 vertices (18 triangles, 17 claims) plays in under 3 minutes:
     full detail for the first claims, then faster (the scene's ``Pacing``)."""
     scene_class = divide_and_conquer()
     seconds = _video_seconds(scene_class, polygon)
-    assert 30 < seconds < 120, f"{polygon}: {seconds:.1f} s of video"
+    assert 30 < seconds < 180, f"{polygon}: {seconds:.1f} s of video"
 
 
 @pytest.mark.slow

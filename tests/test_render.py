@@ -15,7 +15,6 @@ from __future__ import annotations
 import configparser
 import importlib.util
 import itertools
-import json
 import math
 import os
 import re
@@ -25,10 +24,12 @@ from pathlib import Path
 
 import av
 import pytest
+from manim import Wait
 from manim.utils.testing.frames_comparison import frames_comparison
 
+from story.reading import readable
 from trex.render_command import X264_OPTIONS
-from trex.scene_graph import build_graph
+from trex.scene_graph import build
 
 __module_test__ = "render"
 
@@ -95,9 +96,13 @@ def parse_srt(text: str) -> list[tuple[int, float, float, str]]:
     return cues
 
 
-def frames_of(run_time: float) -> int:
-    """Frames manim renders for a play of this run time at FPS."""
-    return math.ceil(round(run_time * FPS, 6))
+def frames_of(play) -> int:
+    """Frames manim renders for a play at FPS: a still wait ``int(run_time × fps)``, any
+    other play a frame at each step of ``np.arange(0, run_time, 1 / fps)``."""
+    frames = round(play.run_time * FPS, 6)
+    if all(isinstance(a, Wait) for a in play.animations):
+        return int(frames)
+    return math.ceil(frames)
 
 
 def render_scene(media: Path, scene: tuple[str, str] = RENDERED) -> Path:
@@ -120,8 +125,8 @@ def render_scene(media: Path, scene: tuple[str, str] = RENDERED) -> Path:
 @pytest.fixture(scope="module")
 def rendered(tmp_path_factory):
     video = render_scene(tmp_path_factory.mktemp("media"))
-    graph = json.loads(build_graph(scene_class(*RENDERED).handed()))
-    return video, graph
+    _, plays = build(scene_class(*RENDERED).handed())  # exact run times, not the graph's
+    return video, plays
 
 
 def test_same_input_gives_the_same_video(tmp_path):
@@ -140,8 +145,8 @@ def test_trex_render_encodes_as_manim_cfg_does():
 
 
 def test_render_video_stream(rendered):
-    video, graph = rendered
-    expected_frames = sum(frames_of(p["run_time"]) for p in graph["plays"])
+    video, plays = rendered
+    expected_frames = sum(frames_of(p) for p in plays)
     with av.open(str(video)) as container:
         stream = container.streams.video[0]
         assert (stream.codec_context.width, stream.codec_context.height) == (WIDTH, HEIGHT)
@@ -154,16 +159,16 @@ def test_render_video_stream(rendered):
 
 
 def test_render_subtitles(rendered):
-    video, graph = rendered
+    video, plays = rendered
     srt = video.with_suffix(".srt")
     assert srt.is_file()
     cues = parse_srt(srt.read_text(encoding="utf-8"))
     # One cue per caption change, at the time of the play that changed it.
     expected, t = [], 0.0
-    for play in graph["plays"]:
-        if play["subcaption"]:
-            expected.append((t, play["subcaption"]))
-        t += frames_of(play["run_time"]) / FPS
+    for play in plays:
+        if play.subcaption:
+            expected.append((t, play.subcaption))
+        t += frames_of(play) / FPS
     assert [c[3] for c in cues] == [text for _, text in expected]
     assert [c[0] for c in cues] == list(range(1, len(cues) + 1))
     for (_, start, end, text), (at, _) in zip(cues, expected, strict=True):
@@ -174,3 +179,5 @@ def test_render_subtitles(rendered):
     # a subtitle stays on screen until the next one replaces it, and so does its cue
     for (_, _, end, text), (_, start, _, _) in itertools.pairwise(cues):
         assert end == pytest.approx(start, abs=1.5 / FPS), text
+    # and each stays long enough to read, in the video's own .srt (issue 12)
+    assert [text for _, start, end, text in cues if not readable(text, end - start)] == []

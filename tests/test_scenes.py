@@ -37,6 +37,7 @@ from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
 from metaphors.pseudocode import source_of
 from story.registry import entry, wrong
+from tests.reading_rules import LEAST_LINE, graph_nodes, small_texts, unreadable_cues
 from tests.test_pseudocode import PLUMBING, assert_rows_follow_calls, code_rows, graph_data
 from trex.scene_graph import build_graph
 from trex.snapshot import SceneGraph, assert_same_graph, build
@@ -158,26 +159,7 @@ def assert_same(actual: SceneGraph, expected: SceneGraph, what: str) -> None:
 
 def nodes(built: SceneGraph, *, final_only: bool = False) -> Iterator[dict]:
     """Every mobject node of a graph (animations' mobjects and targets, and the final ones)."""
-    data = built.data
-
-    def walk(node):
-        yield node
-        for child in node.get("submobjects", ()):
-            yield from walk(child)
-
-    def animation(node):
-        for key in ("mobject", "target"):
-            if key in node:
-                yield from walk(node[key])
-        for child in node.get("animations", ()):
-            yield from animation(child)
-
-    if not final_only:
-        for play in data["plays"]:
-            for anim in play["animations"]:
-                yield from animation(anim)
-    for mobject in data.get("final", ()):
-        yield from walk(mobject)
+    return graph_nodes(built.data, final_only=final_only)
 
 
 # --- the tests -------------------------------------------------------------------------------------
@@ -191,6 +173,15 @@ def test_scenes_are_discovered():
 @pytest.mark.parametrize("case", _params(SCENES))
 def test_scene_graph_matches_snapshot(case, scene_graph, snapshot):
     assert graph(case, scene_graph=scene_graph) == snapshot
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_viewer_can_read_every_caption_and_text(case):
+    """Issue 12: every cue at most 17 characters per second and at least 0.83 s on screen;
+    every visible text at least 2.5 % of the frame's height per line."""
+    data = graph(case).data
+    assert unreadable_cues(data) == [], case.id
+    assert small_texts(data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -260,8 +251,6 @@ def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
 
 # --- the panel: pseudocode in the thesis's words, the source one flag away ---------------------
 
-#: 2.5 % of the frame's height (8 units): the least a line of text may be
-LEAST_LINE = 0.2
 
 
 def _last_algorithm(case: SceneCase) -> str | None:

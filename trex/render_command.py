@@ -196,12 +196,26 @@ class Signals:
     def __init__(self) -> None:
         self.signum: int | None = None
         self.done = False  # the output is in place: a signal now interrupts nothing
+        self.deferring = 0  # inside :meth:`deferred`: a signal is noted, raised at its end
 
     def check(self) -> None:
         """Raise :class:`Interrupted` if a signal came (its exception may have been swallowed
         where Python ignores exceptions, such as a finalizer: this is the second chance)."""
-        if self.signum is not None:
+        if self.signum is not None and not self.done:
             raise Interrupted(self.signum)
+
+    @contextlib.contextmanager
+    def deferred(self) -> Iterator[None]:
+        """A signal during the block raises at its end, not inside it. (Blocking the signal in
+        the main thread would not do: the kernel hands it to another thread, and Python still
+        runs the handler in the main thread at once.)"""
+        self.deferring += 1
+        try:
+            yield
+        finally:
+            self.deferring -= 1
+        if not self.deferring:
+            self.check()
 
 
 @contextlib.contextmanager
@@ -216,7 +230,7 @@ def interrupts_raise() -> Iterator[Signals]:
     def handler(signum, _frame):
         if seen.signum is None:
             seen.signum = signum
-            if not seen.done:
+            if not seen.done and not seen.deferring:
                 raise Interrupted(signum)
 
     previous = {s: signal.signal(s, handler) for s in (signal.SIGINT, signal.SIGTERM)}
@@ -263,8 +277,8 @@ def _abort_encoders(scene) -> None:
             abort()
 
 
-def _hold_signals_while_encoders_start(scene) -> None:
-    """Hold SIGINT/SIGTERM while manim opens a segment: its encoder thread starts before the
+def _hold_signals_while_encoders_start(scene, signals: Signals | None) -> None:
+    """Defer SIGINT/SIGTERM while manim opens a segment: its encoder thread starts before the
     writer keeps the job, and an interrupt in between would orphan a thread that waits for
     frames forever (the process never exits)."""
     writer = getattr(getattr(scene, "renderer", None), "file_writer", None)
@@ -273,7 +287,7 @@ def _hold_signals_while_encoders_start(scene) -> None:
         return
 
     def open_held(*args, **kwargs):
-        with _signals_held():
+        with signals.deferred() if signals is not None else _signals_held():
             return opener(*args, **kwargs)
 
     writer.open_partial_movie_stream = open_held
@@ -312,7 +326,7 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
         }
         with tempconfig(settings):
             scene = make_scene()
-            _hold_signals_while_encoders_start(scene)
+            _hold_signals_while_encoders_start(scene, signals)
             try:
                 scene.render()
             except BaseException:
@@ -320,7 +334,8 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
                 raise
             produced = _artifact(scene, fmt, media)
         subtitles = produced.with_suffix(".srt")
-        with _signals_held():
+        with _signals_held(), (signals.deferred() if signals is not None
+                               else contextlib.nullcontext()):
             if signals is not None:
                 signals.check()
             if srt and fmt != "png" and subtitles.is_file():

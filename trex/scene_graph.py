@@ -6,7 +6,8 @@ run time and its mobjects. A mobject is written as its type, its role (``trex_ro
 by :func:`metaphors.panel.tag`), its name, stroke and fill colours as hex (with opacities
 and stroke width), and its points rounded to 1e-3; a ``Text`` is written as its string and
 its bounding box instead of its glyphs; submobjects follow recursively. The mobjects on
-screen when the scene ends close the graph (``final``). The document is versioned
+screen when the scene ends close the graph (``final``), and the subtitles of its ``.srt``
+follow (``cues``). The document is versioned
 (``"schema": "trex-scene-graph/1"``, :mod:`trex.graph_format`); docs/scene-graph.md
 describes it.
 
@@ -231,7 +232,16 @@ def scene_graph(plays: list[Play], scene: Scene | None = None) -> dict[str, Any]
     graph: dict[str, Any] = {"schema": SCHEMA, "plays": [p.graph for p in plays]}
     if scene is not None:
         graph["final"] = [mobject_graph(m) for m in scene.mobjects]
+        graph["cues"] = cues(scene)
     return graph
+
+
+def cues(scene: Scene) -> list[dict[str, Any]]:
+    """The subtitles the scene's ``.srt`` would hold, as data: each cue's ``start`` and
+    ``end`` (seconds, rounded) and its ``text``."""
+    writer = getattr(scene.renderer, "file_writer", None)
+    return [{"start": _number(c.start.total_seconds()), "end": _number(c.end.total_seconds()),
+             "text": c.content} for c in getattr(writer, "subcaptions", None) or ()]
 
 
 # --- building a scene without video ------------------------------------------------------------

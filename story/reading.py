@@ -1,0 +1,103 @@
+"""How long a caption must stay on screen to be read, and the short captions of repeated steps.
+
+A class reads a caption while it watches the animation: a caption is on screen at least
+:data:`LEAST_CUE` seconds and needs at most :data:`READING_SPEED` characters per second (the
+BBC's and Netflix's limit for children's programmes). :func:`reading_time` is that rule;
+the scenes hold each caption until it has been read (:mod:`metaphors.captions`).
+
+Steps that repeat what the viewer has seen get one caption for many beats instead of a
+caption each (:func:`summarised`, :func:`frame_summarised`): the beats stay, quick, and the
+caption does not flash.
+
+>>> reading_time("Claim: BD is an inner diagonal")  # 30 characters
+1.7647058823529411
+>>> reading_time("T = ABC")  # short: at least LEAST_CUE
+0.83
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import replace
+
+from story.beats import Beat, Candidates, Pick, ShowPolygon, ShowTriangle, Verdict
+
+#: characters per second a viewer reads at, at most
+READING_SPEED = 17
+#: seconds a caption stays on screen, at least
+LEAST_CUE = 0.83
+#: repeated claims one summary caption covers, at most (the viewer still sees progress)
+SUMMARY_CLAIMS = 5
+#: the beats every heuristic's run begins with: the frame (polygon, B, T, candidates)
+FRAME_BEATS = (ShowPolygon, Pick, ShowTriangle, Candidates)
+
+
+def reading_time(caption: str) -> float:
+    """Seconds ``caption`` must stay on screen: :data:`LEAST_CUE`, or longer at
+    :data:`READING_SPEED` characters per second."""
+    return max(LEAST_CUE, len(caption) / READING_SPEED)
+
+
+def readable(caption: str, seconds: float) -> bool:
+    """Whether ``caption`` shown for ``seconds`` keeps the reading rule.
+
+    >>> readable("B is the left-most vertex", 1.0), readable("B is the left-most vertex", 2.0)
+    (False, True)
+    """
+    return seconds >= LEAST_CUE and len(caption) <= READING_SPEED * seconds
+
+
+def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: str) -> list[Beat]:
+    """The beats with the captions of repeated claims replaced by summaries.
+
+    ``claims[k]`` is how many claims were counted when beat ``k`` was made: beats made
+    after ``full`` claims repeat what was shown, so each group of up to
+    :data:`SUMMARY_CLAIMS` claims shares one caption (``"Diagonals 3–7: the same steps,
+    faster"``). Kept as they are: the beats of the last count (the run's end) and a failing
+    verdict with all after it (the crossed edge is named on screen).
+
+    >>> from story.beats import Note
+    >>> beats = [Note(caption=f"step {k}", step=k) for k in range(6)]
+    >>> [b.caption for b in summarised(beats, [0, 1, 1, 2, 2, 3], 1, "diagonal")]
+    ['step 0', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'step 5']
+    """
+    if not beats:
+        return []
+    last = claims[-1]
+    out = []
+    failed = False
+    for beat, counted in zip(beats, claims, strict=True):
+        failed = failed or (isinstance(beat, Verdict) and not beat.ok)
+        if failed or counted < full or counted >= last:
+            out.append(beat)
+            continue
+        first = full + 1 + (counted - full) // SUMMARY_CLAIMS * SUMMARY_CLAIMS
+        out.append(replace(beat, caption=_summary(noun, first, min(first + SUMMARY_CLAIMS - 1,
+                                                                   last))))
+    return out
+
+
+def _summary(noun: str, first: int, last: int) -> str:
+    name = noun.capitalize()
+    if first == last:
+        return f"{name} {first}: the same steps, faster"
+    return f"{name}s {first}–{last}: the same steps, faster"
+
+
+def frame_summarised(beats: Sequence[Beat]) -> list[Beat]:
+    """The beats of a run whose frame the viewer saw in the run before: the frame's beats
+    (polygon, B, T, the candidates) share one short caption.
+
+    >>> from story.beats import Note
+    >>> beats = [Pick(caption="B is the left-most vertex", step=1, vertex="B"),
+    ...          Candidates(caption="Candidates inside T: D, E", step=2, candidates=["D", "E"]),
+    ...          Note(caption="on", step=3)]
+    >>> [b.caption for b in frame_summarised(beats)]
+    ['The frame as before: candidates D, E', 'The frame as before: candidates D, E', 'on']
+    """
+    found = next((b for b in beats if isinstance(b, Candidates)), None)
+    if found is None:
+        return list(beats)
+    summary = ("The frame as before: candidates " + ", ".join(found.candidates)
+               if found.candidates else "The frame as before: no vertex inside T")
+    return [replace(b, caption=summary) if isinstance(b, FRAME_BEATS) else b for b in beats]

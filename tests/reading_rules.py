@@ -1,0 +1,68 @@
+"""Issue 12's rules for what a viewer reads, checked on a scene graph (dry run, no timing):
+every cue of the ``.srt`` at least 0.83 s and at most 17 characters per second
+(:func:`story.reading.readable`), every visible text at least 2.5 % of the frame's height
+(:data:`LEAST_LINE`) per line. The test modules of the scenes and of the lecture apply them."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from story.reading import readable
+
+#: 2.5 % of the frame's height (8 units): the least a line of text may be (27 px at 1080p)
+LEAST_LINE = 0.2
+
+
+def graph_nodes(data: dict, *, final_only: bool = False) -> Iterator[dict]:
+    """Every mobject node of a graph's data: the animations' mobjects and targets, then the
+    mobjects on screen at the end."""
+
+    def walk(node):
+        yield node
+        for child in node.get("submobjects", ()):
+            yield from walk(child)
+
+    def animation(node):
+        for key in ("mobject", "target"):
+            if key in node:
+                yield from walk(node[key])
+        for child in node.get("animations", ()):
+            yield from animation(child)
+
+    if not final_only:
+        for play in data["plays"]:
+            for anim in play["animations"]:
+                yield from animation(anim)
+    for mobject in data.get("final", ()):
+        yield from walk(mobject)
+
+
+def unreadable_cues(data: dict) -> list[str]:
+    """The cues too short or too fast to read, as ``"1.20 s, 41 cps: …"``."""
+    bad = []
+    for cue in data["cues"]:
+        seconds = cue["end"] - cue["start"]
+        if not readable(cue["text"], seconds):
+            cps = len(cue["text"]) / seconds if seconds > 0 else float("inf")
+            bad.append(f"{seconds:.2f} s, {cps:.0f} cps: {cue['text']}")
+    return bad
+
+
+def line_height(node: dict) -> float:
+    """The height of one line of a text node (its box over its lines)."""
+    _, bottom, _, top = node["box"]
+    return (top - bottom) / (node["text"].count("\n") + 1)
+
+
+def small_texts(data: dict) -> list[str]:
+    """The visible texts whose lines are under :data:`LEAST_LINE`, as ``"name 'text' 0.15"``."""
+    found = {}
+    for node in graph_nodes(data):
+        if node.get("box") is None or not node.get("text", "").strip():
+            continue
+        if (node.get("fill_opacity") or 0) <= 0:
+            continue  # not drawn
+        height = line_height(node)
+        if height < LEAST_LINE:
+            found[(node["name"], node["text"])] = height
+    return [f"{name} {text!r} {h:.3f}" for (name, text), h in sorted(found.items())]
