@@ -107,9 +107,13 @@ class Moment:
 
 
 def moment(heuristic: str, polygon: str) -> Moment:
-    """The analysis of ``heuristic``'s run on ``polygon``, read from its beats: its first
-    claim, and the step of its metaphor that made it."""
-    beats = catalog.beats(RunSpec(heuristic, polygon).log())
+    """The analysis of ``heuristic``'s run on ``polygon`` (a sample's name or a file)."""
+    return moment_of(heuristic, catalog.beats(RunSpec(heuristic, polygon).log()))
+
+
+def moment_of(heuristic: str, beats: Sequence[Beat]) -> Moment:
+    """The analysis of a run of ``heuristic``, read from its beats: its first claim, and the
+    step of its metaphor that made it (``motion`` None when T held no candidate)."""
     shown = _first(beats, ShowPolygon)
     t = next((b for b in beats if isinstance(b, ShowTriangle)), None)  # gravity has none
     claim, verdict = _first(beats, Claim), _first(beats, Verdict)
