@@ -31,6 +31,10 @@ from trex.scene_graph import build
 
 ROOT = Path(__file__).resolve().parents[1]
 WRONG = ("scaling", "rotation", "translation")
+#: the titles of the chapters' analyses, in order
+TITLES = {"heuristics": [f"{m}: why {w} fails" for m, w in zip(("Water", "Clock", "Sweep"),
+                                                               WRONG, strict=True)],
+          "gravity": ["Gravity: why the band is always right"]}
 #: scene units a rounded point of the graph may stray (points are kept to 1e-3)
 GRAPH_SLACK = 2e-3
 
@@ -192,16 +196,12 @@ def test_the_lecture_analyses_each_wrong_family_not_a_text_card(heuristics):
     assert [a.heuristic for a in analyses] == list(WRONG)
     cards = [c for c in _captions(plays) if "why it fails" in c]
     assert cards == []  # the old bullet-point cards are gone
-    titles = [f"{m}: why {w} fails" for m, w in zip(("Water", "Clock", "Sweep"), WRONG,
-                                                    strict=True)]
-    assert len(_segments(plays, titles)) == 3
+    assert len(_segments(plays, TITLES["heuristics"])) == 3
 
 
 @pytest.mark.parametrize("k", range(3), ids=WRONG)
 def test_the_red_part_lies_outside_the_polygon_inside_t(heuristics, k):
-    cls, plays = heuristics
-    segment = _segments(plays, [f"{m}: why {w} fails" for m, w in zip(
-        ("Water", "Clock", "Sweep"), WRONG, strict=True)])[k]
+    segment = _segments(heuristics[1], TITLES["heuristics"])[k]
     polygon, t = _frame_of(segment)
     red = _regions(_named(segment, "analysis:outside")[0])
     assert red.area > 0.02
@@ -214,35 +214,31 @@ def test_the_red_part_lies_outside_the_polygon_inside_t(heuristics, k):
 
 @pytest.mark.parametrize("k", range(3), ids=WRONG)
 def test_the_crossed_edge_flashes_and_is_named(heuristics, k):
-    cls, plays = heuristics
-    segment = _segments(plays, [f"{m}: why {w} fails" for m, w in zip(
-        ("Water", "Clock", "Sweep"), WRONG, strict=True)])[k]
+    segment = _segments(heuristics[1], TITLES["heuristics"])[k]
     assert any("B–D crosses edge E–A" in c for c in _captions(segment))
     edge = _named(segment, "analysis:edge:E–A")
     assert len(edge) >= 3  # drawn, then flashing (twice)
     assert [n["text"] for n in _named(segment, "analysis:edge-name")][:1] == ["edge E–A"]
-    assert any("Indicate" == a["type"] and a["mobject"]["name"] == "analysis:edge:E–A"
+    assert any(a["type"] == "Indicate" and a["mobject"]["name"] == "analysis:edge:E–A"
                for p in segment for a in p.graph["animations"])
 
 
 @pytest.mark.parametrize("k", range(3), ids=WRONG)
 def test_the_corrections_shaded_region_lies_inside_the_polygon(heuristics, k):
-    cls, plays = heuristics
-    segment = _segments(plays, [f"{m}: why {w} fails" for m, w in zip(
-        ("Water", "Clock", "Sweep"), WRONG, strict=True)])[k]
+    segment = _segments(heuristics[1], TITLES["heuristics"])[k]
     polygon, _ = _frame_of(segment)
     shaded = _regions(_named(segment, "analysis:witness")[0])
     assert shaded.area > 1.0 and polygon.buffer(GRAPH_SLACK).covers(shaded)
     claim = _named(segment, "analysis:claim")[-1]  # the correction's, green
     assert claim["stroke"] == "#4CC46B"
     assert shaded.buffer(GRAPH_SLACK).covers(shapely.LineString(np.array(claim["points"])[:, :2]))
-    holds = _families(cls)[k].holds.format(pick="E", claim="BE")
+    holds = _families(heuristics[0])[k].holds.format(pick="E", claim="BE")
     assert holds in _captions(segment)
 
 
 def test_gravitys_band_is_shown_always_inside_the_polygon(gravity):
-    cls, plays = gravity
-    (segment,) = _segments(plays, ["Gravity: why the band is always right"])
+    plays = gravity[1]
+    (segment,) = _segments(plays, TITLES["gravity"])
     polygon, _ = _frame_of(segment)
     shaded = _regions(_named(segment, "analysis:witness")[0])
     assert shaded.area > 0.5 and polygon.buffer(GRAPH_SLACK).covers(shaded)
@@ -252,11 +248,8 @@ def test_gravitys_band_is_shown_always_inside_the_polygon(gravity):
 
 @pytest.mark.parametrize("chapter", ["heuristics", "gravity"])
 def test_every_analysis_caption_is_on_screen_long_enough_to_read(chapter, request):
-    cls, plays = request.getfixturevalue(chapter)
-    titles = {"heuristics": [f"{m}: why {w} fails" for m, w in zip(
-        ("Water", "Clock", "Sweep"), WRONG, strict=True)],
-        "gravity": ["Gravity: why the band is always right"]}[chapter]
-    for segment in _segments(plays, titles):
+    plays = request.getfixturevalue(chapter)[1]
+    for segment in _segments(plays, TITLES[chapter]):
         held = _held(segment)
         assert len(held) >= 3
         for caption, seconds in held:
