@@ -54,7 +54,7 @@ from story.registry import entry
 from story.spec import RunSpec
 
 #: where the polygon goes: the left two thirds, the legend to its right
-BOX = Box(-1.7, -0.1, 8.0, 5.6)
+BOX = Box(-1.0, -0.1, 8.0, 5.6)
 LEGEND = (3.6, 2.2)  # top left corner of the legend
 #: seconds the tool takes to reach its pick: slowly, the moment the argument is about
 SLOW = 5.0
