@@ -56,6 +56,8 @@ from story.spec import RunSpec
 #: where the polygon goes: the left two thirds, the legend to its right
 BOX = Box(-1.0, -0.1, 8.0, 5.6)
 LEGEND = (3.6, 2.2)  # top left corner of the legend
+#: widest subtitle line (scene units): a longer caption takes two lines
+SUBTITLE_WIDTH = 13.4
 #: seconds the tool takes to reach its pick: slowly, the moment the argument is about
 SLOW = 5.0
 #: the metaphor's name on screen, by the registry's metaphor module
@@ -205,25 +207,39 @@ class Stage:
     def say(self, caption: str, *plays: tuple[list, float]) -> None:
         """Plays under one caption, shown at the bottom and as the cue; the last play is held
         until the caption has been on screen long enough to read."""
-        theme = self.theme
-        words = tag(typeset.text(caption, font=theme.font, size=theme.caption_size,
-                                 colour=theme.ink, width=13.4), None, "subtitle")
-        words.move_to((0, SUBTITLE_Y, 0))
+        words = self._words(caption)
         change = [FadeIn(words)] + ([FadeOut(self.subtitle)] if self.subtitle else [])
         self.subtitle = words
-        total = sum(t for _, t in plays)
+        (first, first_time), *rest = plays
+        first_time = max(first_time, 0.3)
+        spent = first_time + sum(t for _, t in rest)
         hold = reading_time(caption)
-        (first, first_time), *rest = plays or (([], 0.0),)
-        self.scene.play(*change, *first, run_time=max(first_time, 0.3), subcaption=caption,
-                        subcaption_duration=max(total, hold, 0.3))
+        self.scene.play(*change, *first, run_time=first_time, subcaption=caption,
+                        subcaption_duration=max(spent, hold))
         for anims, run_time in rest:
             if anims:
                 self.scene.play(*anims, run_time=run_time)
             else:
                 self.scene.wait(run_time)
-        spent = max(first_time, 0.3) + sum(t for _, t in rest)
         if spent < hold:
             self.scene.wait(hold - spent)
+
+    def _words(self, caption: str):
+        """The subtitle: one line, or two when one would have to shrink to fit the frame,
+        broken at the space nearest the middle (sooner after a colon, comma or full stop)."""
+        theme = self.theme
+
+        def typeset_(words: str):
+            return typeset.text(words, font=theme.font, size=theme.caption_size,
+                                colour=theme.ink, width=SUBTITLE_WIDTH)
+
+        shown = typeset_(caption)
+        spaces = [k for k, c in enumerate(caption) if c == " "]
+        if shown.width >= SUBTITLE_WIDTH - 1e-9 and spaces:
+            k = min(spaces, key=lambda k: abs(2 * k - len(caption)) * (
+                0.15 if caption[k - 1] in ":,.;" else 1.0))
+            shown = typeset_(caption[:k] + "\n" + caption[k + 1:])
+        return tag(shown, None, "subtitle").move_to((0, SUBTITLE_Y, 0))
 
     def key(self, colour: str, words: str, name: str, opacity: float = 0.45) -> list:
         """A legend entry (a swatch and its words) below the ones shown."""
@@ -233,9 +249,9 @@ class Stage:
                         fill_opacity=opacity).move_to((x + 0.15, y, 0))
         label = typeset.text(words, font=theme.font, size=theme.label_size, colour=theme.ink)
         label.next_to(swatch, direction=np.array([1.0, 0, 0]), buff=0.18)
-        entry_ = tag(VGroup(swatch, label), None, f"legend:{name}")
-        self.legend.append(entry_)
-        return [FadeIn(entry_)]
+        key = tag(VGroup(swatch, label), None, f"legend:{name}")
+        self.legend.append(key)
+        return [FadeIn(key)]
 
     def forget_legend(self) -> list:
         gone, self.legend = self.legend, []
@@ -307,7 +323,7 @@ def tool_drawing(stage: Stage, moving: Motion, t: float, colour: str) -> VGroup:
     )
 
 
-def moving(stage: Stage, draw, seconds: float) -> list:
+def moving(stage: Stage, draw, seconds: float) -> tuple[list, VGroup]:
     """The drawing ``draw(t)`` as t runs from 0 to 1, steadily, in ``seconds``: an
     animation, and the mobject it redraws."""
     drawing = tag(draw(0.0), "argument", "analysis:tool").set_z_index(1)
@@ -506,6 +522,7 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
     known = entry(analysis.heuristic)
     name = NAMES.get(known.metaphor, str(known.metaphor).capitalize())
     first = moment(analysis.heuristic, analysis.polygon)
+    _check(analysis, first)
     if known.correct:
         holds(Stage(scene, first, analysis.title or f"{name}: why {analysis.heuristic} is right",
                     theme), first, analysis)
@@ -518,3 +535,13 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
     right = moment(known.correction, analysis.polygon)
     holds(stage, right, analysis, [*[FadeOut(m) for m in cleared],
                                    *stage.retitle(f"{name}: the correction, {known.correction}")])
+
+
+def _check(analysis: Analysis, seen: Moment) -> None:
+    """Raise ValueError (one line) for an analysis with nothing to show."""
+    where = f"{analysis.heuristic} on {analysis.polygon}"
+    if seen.motion is None and seen.band is None:
+        raise ValueError(f"{where}: no candidate in T, so no motion to analyse")
+    if not entry(analysis.heuristic).correct and seen.verdict.ok:
+        raise ValueError(f"{where}: its claim {''.join(seen.claim.labels)} is an inner "
+                         "diagonal, so there is no failure to analyse")

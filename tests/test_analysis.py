@@ -25,6 +25,7 @@ from metaphors.analysis import Analysis, moment, moment_of
 from story.analysis import lies_inside, outside, shape
 from story.reading import reading_time
 from story.registry import entry
+from story.runs import working_example
 from tests.strategies import generated_polygons
 from trex.render_command import load_scene_class
 from trex.scene_graph import build
@@ -92,6 +93,23 @@ def test_gravitys_band_sweeps_inside_the_polygon():
     for t in (0.25, band.snag_time, 0.75, 1.0):
         assert lies_inside(band.swept(t), seen.points)
     assert band.corners(1.0)[1] == band.y
+
+
+@pytest.mark.parametrize(("heuristic", "polygon", "why"), [
+    ("scaling", "square", "no candidate in T"),
+    ("scaling", working_example("scaling"), "is an inner diagonal, so there is no failure"),
+])
+def test_an_analysis_with_nothing_to_show_is_one_clear_error(heuristic, polygon, why):
+    from metaphors.lecture import LectureScene
+
+    class Nothing(LectureScene):
+        def chapter_segments(self):
+            return (Analysis(heuristic, polygon),)
+
+    with pytest.raises(ValueError, match=why) as error:
+        build(Nothing)
+    assert str(error.value).startswith(f"{heuristic} on {polygon}: ")
+    assert "\n" not in str(error.value)
 
 
 # --- the chapters, in dry run ------------------------------------------------------------------
