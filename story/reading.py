@@ -4,8 +4,8 @@ At most :data:`READING_SPEED` characters per second (the BBC's and Netflix's lim
 children's programmes: the viewer also watches the animation), and never less than
 :data:`SHORTEST_CUE` seconds.
 
->>> reading_time("✗ BD is not an inner diagonal")
-1.7647058823529411
+>>> round(reading_time("✗ BD is not an inner diagonal"), 2)  # 29 characters
+1.71
 >>> reading_time("B")
 0.83
 """
