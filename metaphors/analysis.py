@@ -120,7 +120,7 @@ def moment_of(heuristic: str, beats: Sequence[Beat]) -> Moment:
     t = next((b for b in beats if isinstance(b, ShowTriangle)), None)  # gravity has none
     claim, verdict = _first(beats, Claim), _first(beats, Verdict)
     step = next((b for b in beats if _target(b) is not None), None)
-    found = motion(step.states[0], _target(step), t.points) if step and t else None
+    found = motion(_target(step), t.points) if step and t else None
     band, captions = _band(beats)
     return Moment(heuristic, shown.points, shown.labels, t.points if t else None, step, found,
                   band, captions, claim, verdict)

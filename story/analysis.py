@@ -18,13 +18,11 @@ Examples
 --------
 >>> P = [(1.6, 8.0), (1.0, 4.5), (9.0, 2.0), (3.0, 6.5), (4.6, 4.1)]  # A B C D E
 >>> T = P[:3]
->>> water = motion({"kind": "circle", "center": [1.0, 4.5], "radius": 0.0},
-...                {"kind": "circle", "center": [1.0, 4.5], "radius": 2.83, "reached": "D"}, T)
+>>> water = motion({"kind": "circle", "center": [1.0, 4.5], "radius": 2.83, "reached": "D"}, T)
 >>> round(water.astray(P).area, 3) > 0  # the circle wets D through the wall E–A
 True
 >>> line = motion({"kind": "line", "through": [1.0, 4.5], "direction": [7.4, -6.0],
-...                "offset": 0.0}, {"kind": "line", "through": [1.0, 4.5],
-...                "direction": [7.4, -6.0], "offset": 1.9566, "reached": "E"}, T)
+...                "offset": 1.9566, "reached": "E"}, T)
 >>> line.astray(P).area < 1e-6  # the corrected sweep stays inside P until it reaches E
 True
 """
@@ -188,12 +186,12 @@ class Motion:
         return (ox + nx * t * self.amount, oy + ny * t * self.amount)
 
 
-def motion(start: dict, reached: dict, triangle: Sequence[Point]) -> Motion:
-    """The motion from a metaphor's first shape state to the state at its pick (the states
-    the storyboard computes: :mod:`story.reach` via the metaphors' readings).
+def motion(reached: dict, triangle: Sequence[Point]) -> Motion:
+    """The motion that ends in a metaphor's shape state at its pick (the states the
+    storyboard computes: :mod:`story.reach` via the metaphors' readings; each starts from
+    radius, angle, offset or level 0).
 
-    >>> m = motion({"kind": "ray", "origin": [9.0, 2.0], "heading": 162.6, "angle": 0.0},
-    ...            {"kind": "ray", "origin": [9.0, 2.0], "heading": 162.6, "angle": 8.16,
+    >>> m = motion({"kind": "ray", "origin": [9.0, 2.0], "heading": 162.6, "angle": 8.16,
     ...             "reached": "E"}, [(1.6, 8.0), (1.0, 4.5), (9.0, 2.0)])
     >>> m.kind, m.sign, m.reached
     ('ray', -1, 'E')
@@ -216,7 +214,7 @@ def motion(start: dict, reached: dict, triangle: Sequence[Point]) -> Motion:
         direction = (c[0] - a[0], c[1] - a[1])
         return Motion("band", towards, float(reached["level"]), t, label, direction=direction,
                       normal=_normal(direction, a, towards), shore=(a, c))
-    raise ValueError(f"no motion for a {kind!r} shape state (start: {start.get('kind')!r})")
+    raise ValueError(f"no motion for a {kind!r} shape state")
 
 
 def _pt(p: Point) -> tuple[float, float]:
