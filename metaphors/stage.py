@@ -28,6 +28,9 @@ from story.reading import reading_time
 #: where the polygon goes: the left two thirds, the legend to its right
 BOX = Box(-1.0, -0.1, 8.0, 5.6)
 LEGEND = (3.6, 2.2)  # top left corner of the legend
+#: seconds a caption stays beyond its reading time: the .srt keeps whole milliseconds and
+#: manim whole frames, and neither may bring it over the reading speed
+CUE_MARGIN = 0.05
 #: widest subtitle line (scene units): a longer caption takes two lines
 SUBTITLE_WIDTH = 13.4
 
@@ -88,7 +91,7 @@ class Stage:
         (first, first_time), *rest = plays
         first_time = max(first_time, 0.3)
         spent = first_time + sum(t for _, t in rest)
-        hold = reading_time(caption)
+        hold = reading_time(caption) + CUE_MARGIN
         self.scene.play(*change, *first, run_time=first_time, subcaption=caption,
                         subcaption_duration=max(spent, hold))
         for anims, run_time in rest:
