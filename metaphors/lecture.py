@@ -1,7 +1,8 @@
 """How a lecture chapter plays: its segments in order, as one Manim section.
 
 A chapter is a list of segments (plain data): a card of text, a run of an algorithm
-played by the metaphor scenes, the reference triangulation beside ours, or an exercise
+played by the metaphor scenes, the analysis of a heuristic's decisive moment
+(:mod:`metaphors.analysis`), the reference triangulation beside ours, or an exercise
 (question, a pause with a countdown, the answer animated). The chapters themselves — what
 they say and show — are the scene files ``scenes/chapters/ch<k>_<slug>.py``, each a
 :class:`LectureScene` naming its segments; ``trex lecture`` renders them (in parallel) and
@@ -21,6 +22,7 @@ from geometry.io import read_polygon
 from geometry.triangulate import triangulate
 from geometry.user_heuristics import load_user_heuristic
 from metaphors import catalog
+from metaphors.analysis import Analysis, play_analysis
 from metaphors.captions import captions_of
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
@@ -173,6 +175,9 @@ class LectureScene(TraceScene):
         log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")
         self.play_run(Run(hunted.heuristic, None, f"{heuristic.name} on the polygon the hunt "
                           "found"), log)
+
+    def play_analysis(self, analysis: Analysis) -> None:
+        play_analysis(self, analysis, self.theme)
 
     def beats(self, log):
         return [replace(b, pace=b.pace * self.speed) for b in catalog.beats(log, self.pacing)]

@@ -3,7 +3,7 @@
 Run: ``manim -pql scenes/chapters/ch3_gravity.py``; the whole lecture: ``trex lecture``.
 """
 
-from metaphors.lecture import Card, LectureScene, Run
+from metaphors.lecture import Analysis, Card, LectureScene, Run
 
 
 class Gravity(LectureScene):
@@ -17,9 +17,8 @@ class Gravity(LectureScene):
                 "Turn the polygon so that both edges at V point up, and let the ball drop.",
                 "It hits an edge and slides down to a vertex X; the band may snag a vertex Y first.")),
             Run("gravity", "gravity-snag", "Gravity: the band snags a vertex"),
-            Card("Why the band is always right", (
-                "The band stays inside the polygon the whole time:",
-                "the first vertex it touches is seen from V through the inside.",
-                "So VY — or VX when the band stays straight — is an inner diagonal.")),
+            Analysis("gravity", "gravity-snag", title="Gravity: why the band is always right",
+                     holds="The band sweeps only the inside of P: it touches {pick} from "
+                           "inside, so {claim} is inner."),
             Run("gravity", "counterexample", "Gravity on the counterexample"),
         )

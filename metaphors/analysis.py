@@ -1,0 +1,354 @@
+"""The lecture's analysis: a heuristic's decisive moment replayed slowly on one polygon.
+
+A wrong heuristic (water, clock, sweep): its tool moves slowly to the vertex it picks — the
+circle grows, the hand turns, the line sweeps — in its colour inside the polygon and red where
+it is outside the polygon but inside T; as it reaches the wrong vertex the red part lights,
+then the claim's crossed edge flashes and is named. Then its correction (the registry's) on
+the same polygon: its tool moves to its own pick and the region its argument is about
+(:meth:`story.analysis.Motion.witness`) is shaded, inside the polygon, under one caption that
+says why. A correct heuristic is shown the second way only; gravity's band sweeps a region
+that is always inside the polygon.
+
+Everything is read from the runs' beats (:func:`metaphors.catalog.beats`: the metaphors' shape
+states and the exactly judged verdict); the shapes are clipped in :mod:`story.analysis` and
+drawn on a :class:`metaphors.stage.Stage`, whose every caption stays on screen as long as it
+takes to read.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import shapely
+from manim import (
+    DOWN,
+    Arrow,
+    Create,
+    Dot,
+    FadeIn,
+    FadeOut,
+    Flash,
+    Indicate,
+    Line,
+    UpdateFromAlphaFunc,
+    VGroup,
+    linear,
+)
+
+from metaphors import catalog
+from metaphors.stage import BOX, Stage, beside, path, place_name, region
+from metaphors.tags import tag
+from metaphors.theme import Theme
+from rendering import typeset
+from story.analysis import Band, Motion, motion, split
+from story.beats import Beat, Claim, ShowPolygon, ShowTriangle, Verdict
+from story.registry import entry
+from story.spec import RunSpec
+
+#: seconds the tool takes to reach its pick: slowly, the moment the argument is about
+SLOW = 5.0
+#: the metaphor's name on screen, by the registry's metaphor module
+NAMES = {"water": "Water", "clock": "Clock", "sweep": "Sweep", "gravity": "Gravity"}
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """A lecture segment: ``heuristic``'s decisive moment on ``polygon``, then (for a wrong
+    one) its correction's on the same polygon.
+
+    ``fails`` is said as the tool reaches the wrong vertex, ``holds`` as the correction's
+    region is shaded (the cue says why); both may name ``{pick}`` (the vertex the tool reached), ``{claim}``
+    (the claimed diagonal) and ``fails`` ``{edge}`` (the edge the claim crosses).
+    """
+
+    heuristic: str
+    polygon: str = "counterexample"
+    fails: str = ""
+    holds: str = ""
+    title: str | None = None  # default: "Water: why scaling fails" and the like
+    slow: float = SLOW
+
+
+@dataclass(frozen=True)
+class Moment:
+    """What one run's analysis shows, read from its beats: the polygon, T, the metaphor's
+    step (``step``, with its motion) or gravity's band, the claim and its verdict."""
+
+    heuristic: str
+    points: list
+    labels: list
+    triangle: list | None
+    step: Beat | None
+    motion: Motion | None
+    band: Band | None
+    captions: dict[str, str]  # gravity's steps' captions by action (turn, drop, slide, snag)
+    claim: Claim
+    verdict: Verdict
+
+    @property
+    def pick(self) -> str:
+        return self.motion.reached if self.motion else self.claim.labels[1]
+
+    def words(self, template: str) -> str:
+        """``template`` with its names filled in (see :class:`Analysis`)."""
+        edge = "–".join(self.verdict.edge) if self.verdict.edge else ""
+        return template.format(pick=self.pick, claim="".join(self.claim.labels), edge=edge)
+
+
+def moment(heuristic: str, polygon: str) -> Moment:
+    """The analysis of ``heuristic``'s run on ``polygon`` (a sample's name or a file)."""
+    return moment_of(heuristic, catalog.beats(RunSpec(heuristic, polygon).log()))
+
+
+def moment_of(heuristic: str, beats: Sequence[Beat]) -> Moment:
+    """The analysis of a run of ``heuristic``, read from its beats: its first claim, and the
+    step of its metaphor that made it (``motion`` None when T held no candidate)."""
+    shown = _first(beats, ShowPolygon)
+    t = next((b for b in beats if isinstance(b, ShowTriangle)), None)  # gravity has none
+    claim, verdict = _first(beats, Claim), _first(beats, Verdict)
+    step = next((b for b in beats if _target(b) is not None), None)
+    found = motion(_target(step), t.points) if step and t else None
+    band, captions = _band(beats)
+    return Moment(heuristic, shown.points, shown.labels, t.points if t else None, step, found,
+                  band, captions, claim, verdict)
+
+
+def _first(beats: Sequence[Beat], kind: type[Beat]):
+    found = next((b for b in beats if isinstance(b, kind)), None)
+    if found is None:
+        raise ValueError(f"the run has no {kind.action} beat to analyse")
+    return found
+
+
+def _target(beat: Beat) -> dict | None:
+    """The shape state of a metaphor's step at the vertex it picks (None: no such step)."""
+    states, result = getattr(beat, "states", None), getattr(beat, "result", None)
+    if not states or not isinstance(states[0], dict) or "kind" not in states[0]:
+        return None
+    return next((s for s in states if s.get("reached") == result), None)
+
+
+def _band(beats: Sequence[Beat]) -> tuple[Band | None, dict[str, str]]:
+    """Gravity's band from its turn, drop, slide and snag beats (None for another run)."""
+    kinds = {b.action: b for b in reversed(beats)}  # the first of each
+    turn, drop, slide, snag = (kinds.get(k) for k in ("gravity-turn", "drop", "slide", "snag"))
+    if drop is None or snag is None:
+        return None, {}
+    where = dict(zip(_first(beats, ShowPolygon).labels, _first(beats, ShowPolygon).points,
+                     strict=True))
+    hit = tuple(drop.hit)
+    x = tuple(slide.states[-1]["at"]) if slide is not None and slide.states else hit
+    y = tuple(where[snag.result]) if snag.result in where else None
+    band = Band(tuple(where[drop.vertex]), hit, x, y, turn.turn_picture if turn else 0.0)
+    return band, {b.action: b.caption for b in (turn, drop, slide, snag) if b is not None}
+
+
+def tool_drawing(stage: Stage, moving: Motion, t: float, colour: str) -> VGroup:
+    """The tool at time ``t`` and what it swept: in its colour inside the polygon, red
+    outside it but inside T (the rising water: in its colour, all of it — what it covers is
+    not what the argument is about)."""
+    theme, points, corners = stage.theme, stage.polygon.points, moving.triangle
+    swept, tool = moving.swept(t), moving.tool(t)
+    if moving.kind == "band":
+        return VGroup(region(stage, swept, colour, 0.35, "swept"),
+                      path(stage, tool, colour, theme.stroke * 1.3, "tool"))
+    area, line = split(swept, points, corners), split(tool, points, corners)
+    return VGroup(
+        region(stage, area["inside"], colour, 0.3, "swept:inside", "argument"),
+        region(stage, area["astray"], theme.rejected, 0.45, "swept:astray", "rejected"),
+        path(stage, line["beyond"], colour, theme.thin_stroke, "tool:beyond", None, 0.45),
+        path(stage, line["inside"], colour, theme.stroke * 1.3, "tool:inside", "argument"),
+        path(stage, line["astray"], theme.rejected, theme.stroke * 1.6, "tool:astray",
+             "rejected"),
+    )
+
+
+def moving(stage: Stage, draw, seconds: float) -> tuple[list, VGroup]:
+    """The drawing ``draw(t)`` as t runs from 0 to 1, steadily, in ``seconds``: an
+    animation, and the mobject it redraws."""
+    drawing = tag(draw(0.0), "argument", "analysis:tool").set_z_index(1)
+    return [UpdateFromAlphaFunc(drawing, lambda m, a: m.become(draw(a)), rate_func=linear,
+                                run_time=seconds)], drawing
+
+
+# --- the two halves ------------------------------------------------------------------------------
+
+
+def tool_colour(theme: Theme, heuristic: str) -> str:
+    metaphor = entry(heuristic).metaphor
+    return {"water": theme.water, "clock": theme.hand, "sweep": theme.sweep}.get(
+        metaphor, theme.band)
+
+
+def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
+    """The wrong heuristic's tool reaches its pick from outside the polygon; the claim's
+    crossed edge flashes and is named. Returns what the correction clears away."""
+    theme, m = stage.theme, wrong.motion
+    colour = tool_colour(theme, wrong.heuristic)
+    motion_anims, drawing = moving(stage, lambda t: tool_drawing(stage, m, t, colour),
+                                   analysis.slow)
+    stage.say(wrong.step.caption,
+              ([*stage.appear(), *stage.key(colour, "inside P", "inside"),
+                *stage.key(theme.rejected, "outside P, in T", "astray")], 1.5),
+              ([FadeIn(drawing)], 0.3), (motion_anims, analysis.slow))
+    stray = split(m.tool(1.0), stage.polygon.points, m.triangle)["astray"]
+    outside_tool = path(stage, stray, theme.rejected, theme.stroke * 2.4, "analysis:astray",
+                        "rejected").set_z_index(2)
+    outside_area = region(stage, m.astray(stage.polygon.points), theme.rejected, 0.55,
+                          "analysis:outside", "rejected").set_z_index(2)
+    at = stage.vertex(wrong.pick)
+    stage.say(wrong.words(analysis.fails),
+              ([Create(outside_tool), FadeIn(outside_area),
+                Flash(at, color=theme.rejected, flash_radius=0.45),
+                Indicate(stage.markers[wrong.pick], color=theme.rejected)], 1.6))
+    return [drawing, outside_tool, outside_area, *crossing(stage, wrong)]
+
+
+def crossing(stage: Stage, wrong: Moment) -> list:
+    """The claim in red, the edge it crosses flashing and named, a flash where it crosses."""
+    theme, verdict = stage.theme, wrong.verdict
+    u, v = wrong.claim.labels
+    claim = tag(Line(stage.vertex(u), stage.vertex(v), color=theme.rejected,
+                     stroke_width=theme.stroke * 1.5), "rejected", "analysis:claim")
+    shown = [claim.set_z_index(3)]
+    anims = [Create(claim)]
+    flashes = []
+    if verdict.edge:
+        a, b = (stage.vertex(k) for k in verdict.edge)
+        edge = tag(Line(a, b, color=theme.rejected, stroke_width=theme.stroke * 2.5),
+                   "rejected", f"analysis:edge:{'–'.join(verdict.edge)}").set_z_index(3)
+        name = tag(typeset.text(f"edge {'–'.join(verdict.edge)}", font=theme.font,
+                                size=theme.label_size + 2, colour=theme.rejected),
+                   "rejected", "analysis:edge-name").set_z_index(4)
+        place_name(stage, name, a, b, [claim])
+        shown += [edge, name]
+        anims += [Create(edge), FadeIn(name)]
+        flashes = [([Indicate(edge, color=theme.ink, scale_factor=1.0)], 0.5),
+                   ([Indicate(edge, color=theme.ink, scale_factor=1.0)], 0.5)]
+    if verdict.point:
+        at = stage.at(verdict.point)
+        spot = tag(Dot(at, radius=0.09, color=theme.rejected), "rejected", "analysis:crossing")
+        shown.append(spot.set_z_index(4))
+        anims += [FadeIn(spot), Flash(at, color=theme.rejected, flash_radius=0.5)]
+    stage.say(verdict.caption, (anims, 1.2), *flashes)
+    return shown
+
+
+def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ()) -> None:
+    """A correct heuristic's tool reaches its pick; the region its argument is about is shaded,
+    inside the polygon, and the claim drawn: one caption says why. ``first``: animations that
+    clear the stage for it."""
+    theme, first = stage.theme, list(first)
+    if right.band is not None:
+        _band_moves(stage, right, analysis, first)
+        witness = right.band.swept(1.0)
+        label = "swept"
+    else:
+        m = right.motion
+        colour = tool_colour(theme, right.heuristic)
+        if m.kind == "band":  # what the rising water covers may lie outside P: another key
+            first += [*stage.forget_legend(), *stage.key(colour, "under water", "water")]
+        motion_anims, drawing = moving(stage, lambda t: tool_drawing(stage, m, t, colour),
+                                       analysis.slow)
+        stage.say(right.step.caption, (first, 0.6 if first else 1.5), ([FadeIn(drawing)], 0.3),
+                  (motion_anims, analysis.slow),
+                  ([Indicate(stage.markers[right.pick], color=theme.result)], 0.6))
+        witness = m.witness()
+        label = "still dry" if m.kind == "band" else "swept"
+    shaded = region(stage, witness, theme.result, 0.45, "analysis:witness",
+                    "result").set_z_index(2)
+    u, v = right.claim.labels
+    claim = tag(Line(stage.vertex(u), stage.vertex(v), color=theme.result,
+                     stroke_width=theme.stroke * 1.5), "result", "analysis:claim").set_z_index(3)
+    tick = tag(typeset.text("✓", font=theme.font, size=48, colour=theme.result), "result",
+               "analysis:tick").set_z_index(4)
+    beside(stage, tick, claim, witness)
+    stage.say(right.words(analysis.holds),
+              ([FadeIn(shaded), Create(claim), FadeIn(tick),
+                *stage.key(theme.result, f"{label}: in P", "witness")], 1.5))
+
+
+def _band_moves(stage: Stage, right: Moment, analysis: Analysis, first: list) -> None:
+    """Gravity: the ball falls from V on its band, slides down to X; the band sweeps the
+    region between the drop line and itself, snagging Y."""
+    theme, band = stage.theme, right.band
+    said = right.captions
+    arrow = _gravity_arrow(stage)
+    ball = tag(Dot(stage.at(band.v), radius=0.12, color=theme.ball, stroke_color=theme.ink,
+                   stroke_width=1.5), "argument", "analysis:ball").set_z_index(5)
+    string = tag(Line(stage.at(band.v), stage.at(band.v), color=theme.band,
+                      stroke_width=theme.stroke), "argument", "analysis:band").set_z_index(3)
+    stage.say(said.get("gravity-turn", "The polygon turns so that gravity points down"), (first + stage.appear() + [FadeIn(arrow), FadeIn(ball)], 1.5))
+    stage.scene.add(string)
+    stage.say(said["drop"], ([ball.animate.move_to(stage.at(band.hit)),
+                      string.animate.put_start_and_end_on(stage.at(band.v), stage.at(band.hit))],
+                     1.4))
+    snag_at = band.snag_time if band.snag_time is not None else 1.0
+
+    def draw(t: float) -> VGroup:
+        return VGroup(region(stage, band.swept(t), theme.band, 0.3, "swept"),
+                      path(stage, shapely.LineString(band.corners(t)), theme.band,
+                           theme.stroke * 1.3, "band"))
+
+    def slide_to(start: float, end: float):
+        def update(m, a):
+            t = start + (end - start) * a
+            m.become(draw(t))
+            ball.move_to(stage.at(band.ball(t)))
+        return UpdateFromAlphaFunc(drawing, update, rate_func=linear,
+                                   run_time=analysis.slow * max(end - start, 0.1))
+
+    drawing = tag(draw(0.0), "argument", "analysis:tool").set_z_index(1)
+    stage.say(said.get("slide", "It slides down"),
+              ([FadeOut(string), FadeIn(drawing), *stage.key(theme.band, "band swept", "band")],
+               0.3),
+              ([slide_to(0.0, snag_at)], analysis.slow * max(snag_at, 0.1)))
+    flash = [Flash(stage.at(band.y), color=theme.result, flash_radius=0.4)] if band.y else []
+    stage.say(said["snag"], (flash + ([slide_to(snag_at, 1.0)] if snag_at < 1.0 else []),
+                     analysis.slow * max(1.0 - snag_at, 0.1)))
+
+
+def _gravity_arrow(stage: Stage):
+    theme = stage.theme
+    left, top = BOX.x - BOX.width / 2 - 0.3, BOX.y + BOX.height / 2 - 0.3
+    arrow = Arrow((left, top, 0), (left, top - 1.0, 0), buff=0, color=theme.gravity,
+                  stroke_width=4, max_tip_length_to_length_ratio=0.3)
+    g = typeset.text("g", font=theme.font, size=theme.label_size + 4, colour=theme.gravity)
+    return tag(VGroup(arrow, g.next_to(arrow, DOWN, buff=0.08)), None, "gravity")
+
+
+def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
+    """Play the segment: the wrong heuristic fails, then its correction holds — or, for a
+    correct one, why it holds."""
+    known = entry(analysis.heuristic)
+    name = NAMES.get(known.metaphor, str(known.metaphor).capitalize())
+    first = moment(analysis.heuristic, analysis.polygon)
+    _check(analysis, first)
+    if known.correct:
+        holds(_stage(scene, first, analysis.title or f"{name}: why {analysis.heuristic} is right",
+                     theme), first, analysis)
+        return
+    if known.correction is None:
+        raise ValueError(f"{analysis.heuristic} is wrong and has no correction to analyse")
+    stage = _stage(scene, first, analysis.title or f"{name}: why {analysis.heuristic} fails",
+                   theme)
+    cleared = fails(stage, first, analysis)
+    right = moment(known.correction, analysis.polygon)
+    holds(stage, right, analysis, [*[FadeOut(m) for m in cleared],
+                                   *stage.retitle(f"{name}: the correction, {known.correction}")])
+
+
+def _stage(scene, seen: Moment, title: str, theme: Theme) -> Stage:
+    return Stage(scene, seen.points, seen.labels, seen.triangle, title, theme,
+                 seen.band.turn if seen.band else 0.0)
+
+
+def _check(analysis: Analysis, seen: Moment) -> None:
+    """Raise ValueError (one line) for an analysis with nothing to show."""
+    where = f"{analysis.heuristic} on {analysis.polygon}"
+    if seen.motion is None and seen.band is None:
+        raise ValueError(f"{where}: no candidate in T, so no motion to analyse")
+    if not entry(analysis.heuristic).correct and seen.verdict.ok:
+        raise ValueError(f"{where}: its claim {''.join(seen.claim.labels)} is an inner "
+                         "diagonal, so there is no failure to analyse")

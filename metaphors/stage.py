@@ -1,0 +1,218 @@
+"""The picture the lecture's analysis plays on, and shapes drawn on it.
+
+A :class:`Stage` is the polygon in a box of its own (no panel: the analysis has the screen),
+its labels, T, a title, a legend and the subtitle; :meth:`Stage.say` plays animations under
+one caption, held for its reading time by the scene's caption track (:mod:`metaphors.captions`).
+:func:`region` and :func:`path` draw shapely shapes given in polygon coordinates (the ones
+:mod:`story.analysis` computes); :func:`place_name` and :func:`beside` put a label where it
+reads.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+import shapely
+from manim import Create, FadeIn, FadeOut, Line, Square, VGroup, VMobject, Write
+from manim import Polygon as MPolygon
+
+from geometry.polygon import Polygon
+from metaphors.captions import captions_of, whole_frames
+from metaphors.drawing import Frame, polygon_mobject, vertex_markers
+from metaphors.layout import SUBTITLE_Y, TITLE_Y, Box
+from metaphors.tags import tag
+from metaphors.theme import Theme
+from rendering import typeset
+
+#: where the polygon goes: the left two thirds, the legend to its right
+BOX = Box(-1.0, -0.1, 8.0, 5.6)
+LEGEND = (3.6, 2.2)  # top left corner of the legend
+#: widest subtitle line (scene units): a longer caption takes two lines
+SUBTITLE_WIDTH = 13.4
+
+
+class Stage:
+    """The picture an analysis plays on — the polygon (turned by ``turn`` degrees), its
+    labels, T (``triangle``, if any), a title, the subtitle and a legend — and the one way it
+    speaks: :meth:`say`."""
+
+    def __init__(self, scene, points, labels, triangle, title: str, theme: Theme,
+                 turn: float = 0.0):
+        self.scene, self.theme = scene, theme
+        self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
+                               tuple(range(len(labels))))
+        self.frame = _fitted(self.polygon.points, turn)
+        self.outline = tag(polygon_mobject(self.polygon, self.frame, theme), "idle",
+                           "analysis:polygon")
+        self.markers = {label: tag(m, "idle", f"vertex:{label}").set_z_index(4) for label, m in
+                        zip(labels, vertex_markers(self.polygon, self.frame, theme),
+                            strict=True)}
+        self.triangle = None
+        if triangle:
+            self.triangle = tag(MPolygon(*self.frame.many(triangle), color=theme.called,
+                                         stroke_width=theme.thin_stroke, fill_opacity=0),
+                                "called", "analysis:T").set_z_index(3)
+        self.title = self._title(title)
+        self.subtitle = None
+        self.legend: list = []
+
+    def _title(self, words: str):
+        title = tag(typeset.glyphs(words, font=self.theme.font, size=30, colour=self.theme.ink,
+                                   width=13.2), None, "analysis:title")
+        return title.move_to((0, TITLE_Y, 0))
+
+    def at(self, p) -> np.ndarray:
+        return self.frame.to_scene(p)
+
+    def vertex(self, label: str) -> np.ndarray:
+        return self.at(self.polygon.points[self.polygon.labels.index(label)])
+
+    def appear(self) -> list:
+        """The animations that put the polygon, its labels, T and the title on screen."""
+        anims = [Write(self.title), Create(self.outline), *[FadeIn(m) for m in
+                                                            self.markers.values()]]
+        return anims + ([Create(self.triangle)] if self.triangle is not None else [])
+
+    def retitle(self, words: str) -> list:
+        new = self._title(words)
+        old, self.title = self.title, new
+        return [FadeOut(old), FadeIn(new)]
+
+    def say(self, caption: str, *plays: tuple[list, float]) -> None:
+        """Plays under one caption, shown at the bottom and as the cue, once the caption
+        before it has been read (the scene's caption track holds it,
+        :mod:`metaphors.captions`); this one is held in turn before the next, or before the
+        screen is cleared."""
+        words = self._words(caption)
+        (first, first_time), *rest = plays
+        first_time = max(first_time, 0.3)
+        cue = captions_of(self.scene).show(caption, first_time)  # may wait for the one before
+        change = [FadeIn(words)] + ([FadeOut(self.subtitle)] if self.subtitle else [])
+        self.subtitle = words
+        self.scene.play(*change, *first, run_time=first_time, **cue)
+        for anims, run_time in rest:
+            if anims:
+                self.scene.play(*anims, run_time=run_time)
+            else:
+                self.scene.wait(whole_frames(run_time))
+
+    def _words(self, caption: str):
+        """The subtitle: one line, or two when one would have to shrink to fit the frame,
+        broken at the space nearest the middle (sooner after a colon, comma or full stop)."""
+        theme = self.theme
+
+        def typeset_(words: str):
+            return typeset.text(words, font=theme.font, size=theme.caption_size,
+                                colour=theme.ink, width=SUBTITLE_WIDTH)
+
+        shown = typeset_(caption)
+        spaces = [k for k, c in enumerate(caption) if c == " "]
+        if shown.width >= SUBTITLE_WIDTH - 1e-9 and spaces:
+            k = min(spaces, key=lambda k: abs(2 * k - len(caption)) * (
+                0.15 if caption[k - 1] in ":,.;" else 1.0))
+            shown = typeset_(caption[:k] + "\n" + caption[k + 1:])
+        return tag(shown, None, "subtitle").move_to((0, SUBTITLE_Y, 0))
+
+    def key(self, colour: str, words: str, name: str, opacity: float = 0.45) -> list:
+        """A legend entry (a swatch and its words) below the ones shown."""
+        theme = self.theme
+        x, y = LEGEND[0], LEGEND[1] - 0.55 * len(self.legend)
+        swatch = Square(0.3, color=colour, stroke_width=theme.thin_stroke, fill_color=colour,
+                        fill_opacity=opacity).move_to((x + 0.15, y, 0))
+        label = typeset.text(words, font=theme.font, size=theme.label_size, colour=theme.ink)
+        label.next_to(swatch, direction=np.array([1.0, 0, 0]), buff=0.18)
+        key = tag(VGroup(swatch, label), None, f"legend:{name}")
+        self.legend.append(key)
+        return [FadeIn(key)]
+
+    def forget_legend(self) -> list:
+        gone, self.legend = self.legend, []
+        return [FadeOut(m) for m in gone]
+
+
+def _fitted(points, angle: float) -> Frame:
+    """The frame of :data:`BOX`, turned by ``angle`` degrees and zoomed to fit it."""
+    frame = Frame(points, BOX.center, BOX.width, BOX.height)
+    if not angle:
+        return frame
+    turned = np.array(frame.turned(angle, BOX.center).many(points))[:, :2] - np.array(BOX.center)
+    reach = np.abs(turned).max(axis=0)
+    zoom = min(1.0, BOX.width / 2 / max(reach[0], 1e-9), BOX.height / 2 / max(reach[1], 1e-9))
+    return frame.turned(angle, BOX.center, zoom)
+
+
+# --- shapes as mobjects ---------------------------------------------------------------------------
+
+
+def region(stage: Stage, geometry, colour: str, opacity: float, name: str,
+           role: str | None = None) -> VGroup:
+    """The polygons of a shapely geometry (polygon coordinates), filled."""
+    group = VGroup(*[
+        MPolygon(*stage.frame.many(list(part.exterior.coords)[:-1]), color=colour,
+                 stroke_width=stage.theme.thin_stroke, stroke_opacity=min(1.0, 2 * opacity),
+                 fill_color=colour, fill_opacity=opacity)
+        for part in shapely.get_parts(geometry) if part.geom_type == "Polygon"])
+    return tag(_never_empty(stage, group), role, name)
+
+
+def path(stage: Stage, geometry, colour: str, width: float, name: str,
+         role: str | None = None, opacity: float = 1.0) -> VGroup:
+    """The lines of a shapely geometry (polygon coordinates), stroked."""
+    group = VGroup()
+    for part in shapely.get_parts(geometry):
+        if part.geom_type in ("LineString", "LinearRing") and part.length > 0:
+            line = VMobject(stroke_color=colour, stroke_width=width, stroke_opacity=opacity)
+            line.set_points_as_corners(stage.frame.many(list(part.coords)))
+            group.add(line)
+    return tag(_never_empty(stage, group), role, name)
+
+
+def _never_empty(stage: Stage, group: VGroup) -> VGroup:
+    """At least one (invisible) piece: ``become`` needs something to become."""
+    if not group.submobjects:
+        at = stage.frame.center
+        group.add(Line(at, at, stroke_opacity=0))
+    return group
+
+
+# --- labels --------------------------------------------------------------------------------------
+
+
+def place_name(stage: Stage, name, a, b, avoid: Sequence = ()) -> None:
+    """Put an edge's name beside it (a to b, scene points), where it keeps clearest of the
+    polygon's edges, the vertices and their labels, and the lines in ``avoid``."""
+    corners = [tuple(p[:2]) for p in stage.frame.many(stage.polygon.points)]
+    lines = [shapely.LineString([corners[k - 1], corners[k]]) for k in range(len(corners))]
+    lines += [shapely.LineString([tuple(m.get_start()[:2]), tuple(m.get_end()[:2])])
+              for m in avoid]
+    marks = [shapely.box(*m.get_corner(np.array([-1, -1, 0]))[:2],
+                         *m.get_corner(np.array([1, 1, 0]))[:2]).buffer(0.05)
+             for marker in stage.markers.values() for m in marker]
+    busy = shapely.union_all([*lines, *marks])
+    edge = shapely.LineString([tuple(a[:2]), tuple(b[:2])])
+    direction = (b - a) / max(float(np.linalg.norm(b - a)), 1e-9)
+    normal = np.array([-direction[1], direction[0], 0.0])
+    half = np.array([name.width / 2, name.height / 2])
+
+    def box(centre) -> shapely.Polygon:
+        return shapely.box(*(centre[:2] - half), *(centre[:2] + half))
+
+    spots = [a + (b - a) * k + normal * side * (gap + float(np.abs(normal[:2]) @ half))
+             for k in (0.2, 0.35, 0.5, 0.65, 0.8) for side in (1, -1) for gap in (0.15, 0.4)]
+    best = max(spots, key=lambda p: min(box(p).distance(busy), 0.3) - 0.2 * box(p).distance(
+        edge))
+    name.move_to(best)
+
+
+def beside(stage: Stage, mark, line, region_) -> None:
+    """Put a mark beside a line's middle, on the side away from a shaded region."""
+    start, end = line.get_start(), line.get_end()
+    normal = np.array([start[1] - end[1], end[0] - start[0], 0.0])
+    normal /= max(float(np.linalg.norm(normal)), 1e-9)
+    middle = (start + end) / 2
+    inner = shapely.Point(*stage.at(region_.centroid.coords[0])[:2]) if not region_.is_empty \
+        else None
+    if inner is not None and np.dot(np.array([inner.x, inner.y, 0.0]) - middle, normal) > 0:
+        normal = -normal
+    mark.move_to(middle + normal * (0.15 + max(mark.width, mark.height) / 2))

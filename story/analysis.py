@@ -1,0 +1,322 @@
+"""The analysis of a heuristic's decisive moment: what its tool sweeps on the way to the vertex
+it picks, and which part of that lies outside the polygon.
+
+Drawing data for the lecture's analysis (:mod:`metaphors.analysis`). The pick and the verdict
+come from the log (decided exactly by the heuristic and :mod:`geometry.check`); here the
+shapes are clipped against the polygon with shapely, in polygon coordinates, for the picture.
+
+A *motion* is the tool of a heuristic moving from where it starts (``t = 0``) to the vertex
+it picks (``t = 1``): the water's circle growing, the clock hand turning, the line sweeping,
+the water rising from the shore AC. Its :meth:`Motion.witness` is the part of T the argument
+is about — the region swept on the way (the disk, the wedge, the strip), or what is still
+dry when the rising water reaches its pick. A wrong heuristic's witness reaches outside the
+polygon (:meth:`Motion.astray`, drawn red); a correct one's lies inside it, so the segment
+from B to the pick does too. Gravity's band (:class:`Band`) sweeps the region between the
+drop line and the band, always inside the polygon.
+
+Examples
+--------
+>>> P = [(1.6, 8.0), (1.0, 4.5), (9.0, 2.0), (3.0, 6.5), (4.6, 4.1)]  # A B C D E
+>>> T = P[:3]
+>>> water = motion({"kind": "circle", "center": [1.0, 4.5], "radius": 2.83, "reached": "D"}, T)
+>>> round(water.astray(P).area, 3) > 0  # the circle wets D through the wall E–A
+True
+>>> line = motion({"kind": "line", "through": [1.0, 4.5], "direction": [7.4, -6.0],
+...                "offset": 1.9566, "reached": "E"}, T)
+>>> line.astray(P).area < 1e-6  # the corrected sweep stays inside P until it reaches E
+True
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import shapely
+from shapely.geometry.base import BaseGeometry
+
+Point = Sequence[float]
+
+#: how far a shape may stray from the polygon and still count as inside (polygon units,
+#: relative to the polygon's size): shapely's float clipping leaves slivers along edges
+SLACK = 1e-7
+#: degrees per step of a swept wedge's far arc (it lies outside T, so only its ends matter)
+ARC_STEP = 5.0
+
+
+def shape(points: Sequence[Point]) -> shapely.Polygon:
+    """The shapely polygon through ``points``."""
+    return shapely.Polygon([tuple(p[:2]) for p in points])
+
+
+def _size(region: BaseGeometry) -> float:
+    x0, y0, x1, y1 = region.bounds
+    return max(x1 - x0, y1 - y0, 1e-12)
+
+
+def outside(geometry: BaseGeometry, polygon: Sequence[Point]) -> BaseGeometry:
+    """The part of ``geometry`` outside ``polygon`` (its boundary counts as inside).
+
+    >>> round(outside(shapely.LineString([(-1, 1), (3, 1)]), [(0, 0), (2, 0), (2, 2), (0, 2)])
+    ...       .length, 6)
+    2.0
+    """
+    region = shape(polygon)
+    return _clean(geometry.difference(region.buffer(SLACK * _size(region))))
+
+
+def inside(geometry: BaseGeometry, polygon: Sequence[Point]) -> BaseGeometry:
+    """The part of ``geometry`` inside ``polygon`` (boundary included)."""
+    region = shape(polygon)
+    return _clean(geometry.intersection(region.buffer(SLACK * _size(region))))
+
+
+def _clean(geometry: BaseGeometry) -> BaseGeometry:
+    """Without the slivers and crumbs float clipping leaves (parts far thinner than SLACK)."""
+    parts = [g for g in shapely.get_parts(geometry)
+             if (g.area if g.geom_type == "Polygon" else g.length) > 1e-9]
+    return shapely.union_all(parts) if parts else shapely.GeometryCollection()
+
+
+def lies_inside(geometry: BaseGeometry, polygon: Sequence[Point]) -> bool:
+    """Whether ``geometry`` lies in ``polygon`` (up to float slack).
+
+    >>> lies_inside(shapely.box(0.5, 0.5, 1, 1), [(0, 0), (2, 0), (2, 2), (0, 2)])
+    True
+    """
+    return outside(geometry, polygon).is_empty
+
+
+def split(geometry: BaseGeometry, polygon: Sequence[Point],
+          triangle: Sequence[Point]) -> dict[str, BaseGeometry]:
+    """``geometry`` in three parts: ``inside`` the polygon, ``astray`` (outside it but inside
+    T: the part that can reach a wrong vertex first) and ``beyond`` (outside both).
+
+    >>> parts = split(shapely.LineString([(-1, 1), (5, 1)]), [(0, 0), (2, 0), (2, 2), (0, 2)],
+    ...               [(0, 0), (4, 0), (4, 2)])
+    >>> {k: round(g.length, 3) for k, g in parts.items()}
+    {'inside': 2.0, 'astray': 2.0, 'beyond': 2.0}
+    """
+    out = outside(geometry, polygon)
+    return {"inside": inside(geometry, polygon), "astray": inside(out, triangle),
+            "beyond": outside(out, triangle)}
+
+
+# --- the motions -----------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Motion:
+    """A heuristic's tool from its start to its pick, in polygon coordinates.
+
+    ``kind`` is the shape state's kind: ``circle`` (water spilled at ``origin``, growing to
+    radius ``amount``), ``ray`` (a clock hand at ``origin`` set to ``heading`` degrees,
+    turning by ``amount`` degrees, ``sign`` +1 counter-clockwise), ``line`` (the line through
+    ``origin`` along ``direction``, moving ``amount`` along its unit normal ``normal``) or
+    ``band`` (water rising from the shore ``shore`` to the level ``amount`` towards
+    ``origin``). ``triangle`` is T, ``reached`` the vertex it stops at.
+    """
+
+    kind: str
+    origin: tuple[float, float]
+    amount: float
+    triangle: tuple[tuple[float, float], ...]
+    reached: str
+    heading: float = 0.0
+    sign: int = 1
+    direction: tuple[float, float] = (0.0, 1.0)
+    normal: tuple[float, float] = (1.0, 0.0)
+    shore: tuple[tuple[float, float], ...] = ()
+
+    @property
+    def t_shape(self) -> shapely.Polygon:
+        return shape(self.triangle)
+
+    def _far(self) -> float:
+        """A length far beyond T: lines this long leave T on both sides."""
+        return 4 * _size(self.t_shape) + 4 * math.dist(self.origin, self.t_shape.centroid.coords[0])
+
+    def tool(self, t: float = 1.0) -> BaseGeometry:
+        """The tool at time ``t`` (0: the start, 1: at its pick): the circle's rim, or the
+        hand, the line or the water's level inside T."""
+        if self.kind == "circle":
+            return shapely.Point(self.origin).buffer(max(t * self.amount, 1e-9), 64).exterior
+        if self.kind == "ray":
+            far = _ahead(self.origin, self.heading + self.sign * t * self.amount, self._far())
+            return _within(shapely.LineString([self.origin, far]), self.t_shape)
+        (px, py), (dx, dy) = self._line_at(t), self.direction
+        norm, far = math.hypot(dx, dy), self._far()
+        ux, uy = dx / norm * far, dy / norm * far
+        return _within(shapely.LineString([(px - ux, py - uy), (px + ux, py + uy)]),
+                       self.t_shape)
+
+    def swept(self, t: float = 1.0) -> BaseGeometry:
+        """What the tool has passed over by time ``t``, inside T (for the rising water: what
+        is under water)."""
+        if self.kind == "circle":
+            region = shapely.Point(self.origin).buffer(max(t * self.amount, 1e-9), 64)
+        elif self.kind == "ray":
+            steps = max(2, math.ceil(self.amount * t / ARC_STEP) + 1)
+            region = shapely.Polygon([self.origin, *(
+                _ahead(self.origin, self.heading + self.sign * self.amount * t * k / (steps - 1),
+                       self._far()) for k in range(steps))])
+        else:
+            region = _strip(self._line_at(0.0), self._line_at(t), self.direction, self._far())
+        return _clean(self.t_shape.intersection(region))
+
+    def witness(self) -> BaseGeometry:
+        """The part of T the argument is about, at the pick: what the tool swept on its way
+        there; for the rising water, what is still dry (on B's side of the level)."""
+        if self.kind == "band":
+            return _clean(self.t_shape.difference(self.swept(1.0)))
+        return self.swept(1.0)
+
+    def astray(self, polygon: Sequence[Point]) -> BaseGeometry:
+        """The witness's part outside ``polygon``: empty for a correct heuristic."""
+        return outside(self.witness(), polygon)
+
+    def _line_at(self, t: float) -> tuple[float, float]:
+        """A point of the line (or the level) at time ``t``."""
+        if self.kind == "band":
+            (ax, ay), _ = self.shore
+            nx, ny = self.normal
+            return (ax + nx * t * self.amount, ay + ny * t * self.amount)
+        (ox, oy), (nx, ny) = self.origin, self.normal
+        return (ox + nx * t * self.amount, oy + ny * t * self.amount)
+
+
+def motion(reached: dict, triangle: Sequence[Point]) -> Motion:
+    """The motion that ends in a metaphor's shape state at its pick (the states the
+    storyboard computes: :mod:`story.reach` via the metaphors' readings; each starts from
+    radius, angle, offset or level 0).
+
+    >>> m = motion({"kind": "ray", "origin": [9.0, 2.0], "heading": 162.6, "angle": 8.16,
+    ...             "reached": "E"}, [(1.6, 8.0), (1.0, 4.5), (9.0, 2.0)])
+    >>> m.kind, m.sign, m.reached
+    ('ray', -1, 'E')
+    """
+    kind, t, label = reached["kind"], tuple(tuple(map(float, p[:2])) for p in triangle), reached[
+        "reached"]
+    if kind == "circle":
+        return Motion("circle", _pt(reached["center"]), float(reached["radius"]), t, label)
+    if kind == "ray":
+        origin, heading = _pt(reached["origin"]), float(reached["heading"])
+        return Motion("ray", origin, float(reached["angle"]), t, label, heading=heading,
+                      sign=_turn_sign(origin, heading, reached["angle"], t))
+    if kind == "line":
+        through, direction = _pt(reached["through"]), _pt(reached["direction"])
+        return Motion("line", through, float(reached["offset"]), t, label, direction=direction,
+                      normal=_normal(direction, through, _centroid(t)))
+    if kind == "band":
+        a, c = (_pt(p) for p in reached["shore"])
+        towards = _pt(reached["towards"])
+        direction = (c[0] - a[0], c[1] - a[1])
+        return Motion("band", towards, float(reached["level"]), t, label, direction=direction,
+                      normal=_normal(direction, a, towards), shore=(a, c))
+    raise ValueError(f"no motion for a {kind!r} shape state")
+
+
+def _pt(p: Point) -> tuple[float, float]:
+    return (float(p[0]), float(p[1]))
+
+
+def _centroid(points) -> tuple[float, float]:
+    return _pt(shape(points).centroid.coords[0])
+
+
+def _ahead(origin: Point, heading: float, length: float) -> tuple[float, float]:
+    a = math.radians(heading)
+    return (origin[0] + math.cos(a) * length, origin[1] + math.sin(a) * length)
+
+
+def _turn_sign(origin: Point, heading: float, angle: float, triangle) -> int:
+    """The way a hand at a corner of T turns: into T (the way towards its centre)."""
+    (cx, cy), (ox, oy) = _centroid(triangle), origin
+    towards = math.degrees(math.atan2(cy - oy, cx - ox))
+    return 1 if (towards - heading + 180.0) % 360.0 - 180.0 > 0 else -1
+
+
+def _normal(direction: Point, through: Point, towards: Point) -> tuple[float, float]:
+    """The unit normal of the line through ``through`` along ``direction``, on ``towards``'s
+    side."""
+    dx, dy = direction
+    norm = math.hypot(dx, dy)
+    nx, ny = dy / norm, -dx / norm
+    if nx * (towards[0] - through[0]) + ny * (towards[1] - through[1]) < 0:
+        nx, ny = -nx, -ny
+    return (nx + 0.0, ny + 0.0)
+
+
+def _strip(p: Point, q: Point, direction: Point, far: float) -> shapely.Polygon:
+    """The strip between the lines through p and q along ``direction``."""
+    dx, dy = direction
+    norm = math.hypot(dx, dy)
+    ux, uy = dx / norm * far, dy / norm * far
+    return shapely.Polygon([(p[0] - ux, p[1] - uy), (p[0] + ux, p[1] + uy),
+                            (q[0] + ux, q[1] + uy), (q[0] - ux, q[1] - uy)]).buffer(0)
+
+
+def _within(line: shapely.LineString, region: shapely.Polygon) -> BaseGeometry:
+    """The part of a line in a region (boundary included)."""
+    return _clean(line.intersection(region.buffer(SLACK * _size(region))))
+
+
+# --- gravity's band ------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Band:
+    """Gravity's rubber band from the reflex vertex ``v`` to the ball, which slides from the
+    point it ``hit`` down to the vertex ``x``; the band snags ``y`` on the way, or stays
+    straight (``y`` None). ``turn`` is the degrees the picture turns so gravity points down.
+
+    >>> band = Band((0.0, 0.0), (6.11, 2.36), (4.0, 8.0), (4.0, 4.0), -111.1)
+    >>> band.corners(1.0)
+    [(0.0, 0.0), (4.0, 4.0), (4.0, 8.0)]
+    >>> band.corners(0.0)
+    [(0.0, 0.0), (6.11, 2.36)]
+    >>> round(band.swept(1.0).area, 2)  # the triangle V-hit-X without V-Y-X, behind Y
+    11.72
+    """
+
+    v: tuple[float, float]
+    hit: tuple[float, float]
+    x: tuple[float, float]
+    y: tuple[float, float] | None
+    turn: float = 0.0
+
+    def ball(self, t: float) -> tuple[float, float]:
+        """Where the ball is at time ``t`` of its slide (0: where it hit, 1: at X)."""
+        (hx, hy), (xx, xy) = self.hit, self.x
+        return (hx + (xx - hx) * t, hy + (xy - hy) * t)
+
+    @property
+    def snag_time(self) -> float | None:
+        """When the band meets Y: the ball on the line V–Y."""
+        if self.y is None:
+            return None
+        (vx, vy), (yx, yy) = self.v, self.y
+        (hx, hy), (xx, xy) = self.hit, self.x
+        ex, ey, dx, dy = xx - hx, xy - hy, yx - vx, yy - vy
+        denom = ex * dy - ey * dx
+        if abs(denom) < 1e-15:
+            return 0.0
+        return min(1.0, max(0.0, ((vx - hx) * dy - (vy - hy) * dx) / denom))
+
+    def corners(self, t: float) -> list[tuple[float, float]]:
+        """The band at time ``t``: V to the ball, bent round Y once it has met it."""
+        ball = self.ball(t)
+        snag = self.snag_time
+        if snag is not None and t > snag:
+            return [self.v, self.y, ball]
+        return [self.v, ball]
+
+    def swept(self, t: float) -> BaseGeometry:
+        """What the band has swept by time ``t``: V, the hit point, the ball (and Y)."""
+        corners = [self.v, self.hit, self.ball(t)]
+        snag = self.snag_time
+        if snag is not None and t > snag:
+            corners.append(self.y)
+        region = shapely.Polygon(corners)
+        return region.buffer(0) if region.area > 1e-12 else shapely.GeometryCollection()
