@@ -24,6 +24,7 @@ from metaphors import catalog
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
 from metaphors.scene import TraceScene
+from metaphors.steps import end_steps, lead_in, mark_step
 from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
@@ -131,10 +132,13 @@ class LectureScene(TraceScene):
         for segment in self.chapter_segments():
             self.clear_screen()
             getattr(self, f"play_{type(segment).__name__.lower()}")(segment)
+        end_steps(self)
         self.clear_screen()
         self.wait(0.5)
 
     def clear_screen(self) -> None:
+        """Fade out everything: the fade opens the step that follows (it ends on its picture)."""
+        lead_in(self)
         if self.mobjects:
             self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.4)
             self.clear()
@@ -145,6 +149,14 @@ class LectureScene(TraceScene):
 
     # --- segments ---------------------------------------------------------------------------------
 
+    def mark_card_line(self, line: str | None, card: Card) -> None:
+        """A card's title (``line`` None) or one of its lines starts a step of its own: call
+        before it appears (:mod:`metaphors.steps`)."""
+        if line is None:
+            mark_step(self, card.title, kind="card")
+        else:
+            mark_step(self, line, kind="card-line")
+
     def play_card(self, card: Card) -> None:
         title = tag(typeset.glyphs(card.title, font=self.theme.font, size=self.theme.title_size,
                                    colour=self.theme.ink, width=13.2), None, "card:title")
@@ -154,9 +166,11 @@ class LectureScene(TraceScene):
         group.move_to((0, 0.3, 0))
         title.set_x(0)
         caption = card.caption
+        self.mark_card_line(None, card)
         self.play(Write(title), run_time=0.8, subcaption=caption,
                   subcaption_duration=card.seconds)
-        for line in lines:
+        for text, line in zip(card.lines, lines, strict=True):
+            self.mark_card_line(text, card)
             self.play(FadeIn(line, shift=UP * 0.1), run_time=0.5)
         self.wait(max(0.5, card.seconds - 0.8 - 0.5 * len(lines)))
 
@@ -199,6 +213,7 @@ class LectureScene(TraceScene):
             outline = tag(polygon_mobject(polygon, frame, theme), "idle", f"compare:{name}")
             label = tag(self.text(name, theme.caption_size), None, "compare:name")
             label.move_to((x, 3.2, 0))
+            mark_step(self, f"{name}: {len(triangles)} triangles", kind="compare")
             self.play(FadeIn(label), Create(outline), run_time=0.6)
             pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
                                            theme), None, "compare:triangle")
@@ -209,6 +224,7 @@ class LectureScene(TraceScene):
                              "different diagonals, both valid", theme.caption_size), None,
                    "compare:note")
         note.move_to((0, -3.55, 0))
+        mark_step(self, note.original_text, kind="compare")
         self.play(FadeIn(note), run_time=0.5, subcaption=note.original_text)
         self.wait(compare.seconds)
 
@@ -221,6 +237,7 @@ class LectureScene(TraceScene):
         """The question, a countdown, the answer with its reason."""
         theme = self.theme
         picture = [tag(m, None, "exercise") for m in still_mobjects(exercise, theme)]
+        mark_step(self, exercise.question, kind="question")
         self.play(*[FadeIn(m) for m in picture], run_time=0.8, subcaption=exercise.question)
         for k in range(think, 0, -1):
             digit = tag(self.text(str(k), 60, theme.argument), None, "countdown")
@@ -228,6 +245,7 @@ class LectureScene(TraceScene):
             self.play(FadeIn(digit), run_time=0.2)
             self.wait(0.6)
             self.play(FadeOut(digit), run_time=0.2)
+        mark_step(self, f"{exercise.answer}: {exercise.reason}", kind="answer")
         self.play(*self.answer_animations(exercise), run_time=1.2,
                   subcaption=f"{exercise.answer}: {exercise.reason}")
         self.wait(3.0)

@@ -32,6 +32,7 @@ from metaphors import catalog
 from metaphors.board import Board
 from metaphors.layout import METAPHOR
 from metaphors.play import board_for, play_beats
+from metaphors.steps import lead_in
 from metaphors.tags import tag
 from metaphors.theme import THEME
 from rendering.camera import PathCamera
@@ -226,6 +227,7 @@ class SequenceScene(TraceScene):
     def construct(self) -> None:
         self.camera.background_color = self.theme.background
         for k, (log, (_, _, title)) in enumerate(zip(self.logs(), self.runs, strict=True)):
+            lead_in(self)  # the fade and the title card open the run's first step
             if self.mobjects:
                 self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.3)
                 self.clear()
