@@ -512,10 +512,41 @@ def _failed(message: str):
 
 # --- one chapter, in its own process ------------------------------------------------------------
 
+#: the code a chapter's frames come from (its fingerprint tells a render still up to date)
+SOURCE_DIRS = ("tracing", "geometry", "story", "rendering", "metaphors", "scenes", "examples",
+               "trex")
+
+
+def source_fingerprint() -> str:
+    """sha256 of the project's Python sources and manim's version: a chapter rendered by
+    other code has another."""
+    import hashlib
+
+    import manim
+
+    digest = hashlib.sha256(manim.__version__.encode())
+    for folder in SOURCE_DIRS:
+        for path in sorted((REPO / folder).rglob("*.py")):
+            digest.update(str(path.relative_to(REPO)).encode() + b"\0" + path.read_bytes())
+    return digest.hexdigest()
+
+
+def render_settings(scene_file: str, class_name: str | None, quality: str,
+                    polygon: str | None, panel: str | None) -> dict:
+    """What a chapter's frames depend on, as its step marks record it (``made_by``):
+    ``trex slides lecture`` reuses a chapter render whose settings are these."""
+    from story.environment import environment_values
+
+    return {"scene_file": str(Path(scene_file).resolve()), "class": class_name or None,
+            "quality": quality, "polygon": polygon or None, "panel": panel or None,
+            "environment": environment_values(), "source": source_fingerprint()}
+
+
 
 def render_chapter(scene_file: str, class_name: str | None, output: str, quality: str,
                    polygon: str | None = None, panel: str | None = None) -> int:
-    """Render one scene to ``output`` (mp4 + .srt) with ``render_into``, handed ``polygon``
+    """Render one scene to ``output`` (mp4 + .srt + .steps.json, its step marks) with
+    ``render_into``, handed ``polygon``
     (None or empty: what ``manim`` would give it), its panel showing ``panel`` (None or
     empty: the scene's own); the exit status.
 
@@ -525,8 +556,10 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
         try:
             try:
                 cls = load_scene_class(Path(scene_file), class_name or None)
+                settings = render_settings(scene_file, class_name, quality, polygon, panel)
                 render_into(scene_input(cls, polygon or None, panel or None), Path(output),
-                            "mp4", QUALITIES[quality], progress=False, signals=signals)
+                            "mp4", QUALITIES[quality], progress=False, signals=signals,
+                            steps=settings)
             except Exception as exc:
                 signals.check()
                 print(f"error: render failed: {type(exc).__name__}: {error_line(exc)}",
