@@ -11,8 +11,8 @@ timestamps shifted to start at zero: nothing is decoded or encoded, and a clip's
 the video's frames. A step that would not start on a key frame (a video encoded again after
 manim) is refused, not re-encoded: its clip would not be the same frames.
 
-Step *k* is the frames ``[frame_k, frame_{k+1})``; the last runs to ``end`` (None: the end
-of the video).
+Step *k* is the frames ``[frame_k, frame_{k+1})``; the first starts at the video's start, the
+last runs to ``end`` (None: the end of the video).
 """
 
 from __future__ import annotations
@@ -113,7 +113,7 @@ def step_ranges(marks: Marks, frames: int) -> list[tuple[int, int]]:
     """``[start, stop)`` frames of each step of a video of ``frames`` frames. ValueError for
     marks that do not fit it (out of order, empty, past the end).
 
-    >>> step_ranges(Marks((Step(0, "a"), Step(23, "b"))), 40)
+    >>> step_ranges(Marks((Step(2, "a"), Step(23, "b"))), 40)
     [(0, 23), (23, 40)]
     >>> step_ranges(Marks((Step(0, "a"), Step(0, "b"))), 40)
     Traceback (most recent call last):
@@ -122,8 +122,9 @@ def step_ranges(marks: Marks, frames: int) -> list[tuple[int, int]]:
     """
     end = frames if marks.end is None else marks.end
     starts = [s.frame for s in marks.steps]
-    if not starts or starts[0] != 0:
-        raise ValueError("the first step does not start at the video's first frame")
+    if not starts:
+        raise ValueError("no steps")
+    starts[0] = 0  # what plays before the first step opens it
     if end > frames:
         raise ValueError(f"the steps end at frame {end}, after the video's {frames} frames")
     ranges = list(zip(starts, [*starts[1:], end], strict=True))

@@ -34,12 +34,14 @@ def load_scene(scene: str, command: str = "player") -> type:
         cls = load_scene_class(*resolve_scene(scene))
     from metaphors.scene import TraceScene
 
+    plural = command.endswith("s")  # "the slides step", "the player steps"
     if not (isinstance(cls, type) and issubclass(cls, TraceScene)):
         raise ValueError(f"{cls.__name__} does not play an algorithm's log; the {command} "
-                         "needs a TraceScene")
+                         f"{'need' if plural else 'needs'} a TraceScene")
     if getattr(cls, "runs", None):
-        raise ValueError(f"{cls.__name__} plays several runs; the {command} steps through one "
-                         "(pick a scene of one algorithm)")
+        raise ValueError(f"{cls.__name__} plays several runs; the {command} "
+                         f"{'step' if plural else 'steps'} through one (pick a scene of one "
+                         "algorithm)")
     return cls
 
 

@@ -162,10 +162,25 @@ def reusable(video: Path, settings: dict):
         marks = read_marks(video)
         if marks.made_by != settings:
             return None
-        step_ranges(marks, frame_count(video))
+        if marks.steps:
+            step_ranges(marks, frame_count(video))
     except (OSError, ValueError, KeyError, TypeError):  # missing, unreadable, not fitting
         return None
     return marks
+
+
+def _source(video: Path, marks, chapter):
+    """A chapter's video as a source of slides: a scene that marks no steps (not one of
+    this project's) is one step, captioned with the chapter's title."""
+    from dataclasses import replace
+
+    from trex.clips import Step
+    from trex.slides_build import Source
+
+    title = f"{chapter.number}. {chapter.title}"
+    if not marks.steps:
+        marks = replace(marks, steps=(Step(0, title, None, "chapter"),))
+    return Source(video, marks, title)
 
 
 def _lecture_slides(chapters, target: Path, quality: str, jobs: int, polygon: str | None,
@@ -173,7 +188,7 @@ def _lecture_slides(chapters, target: Path, quality: str, jobs: int, polygon: st
     from trex import lecture_command as lc
     from trex.assemble import probe
     from trex.clips import read_marks
-    from trex.slides_build import Source, build_slides
+    from trex.slides_build import build_slides
 
     with built_beside(target, MARKER, "trex slides") as built:
         sources: list = [None] * len(chapters)
@@ -186,7 +201,7 @@ def _lecture_slides(chapters, target: Path, quality: str, jobs: int, polygon: st
             if marks is None:
                 missing.append(k)
             else:
-                sources[k] = Source(video, marks, f"{chapter.number}. {chapter.title}")
+                sources[k] = _source(video, marks, chapter)
                 click.echo(f"{lc._label(k, len(chapters), chapter)}: reused {video}")
         renders, logs = built / "render", built / "logs"
         renders.mkdir()
@@ -200,9 +215,7 @@ def _lecture_slides(chapters, target: Path, quality: str, jobs: int, polygon: st
         videos = lc.render_chapters(picked, renders, logs, quality,
                                     max(1, min(jobs, len(picked) or 1)), polygon, done, panel)
         for k, video in zip(missing, videos, strict=True):
-            chapter = chapters[k]
-            sources[k] = Source(video.path, read_marks(video.path),
-                                f"{chapter.number}. {chapter.title}")
+            sources[k] = _source(video.path, read_marks(video.path), chapters[k])
         found = probe(sources[0].video)
         shown = build_slides(built, sources, "Triangulation Explained: the lecture",
                              f"{len(chapters)} chapters",
