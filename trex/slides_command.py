@@ -212,8 +212,8 @@ def _lecture_slides(chapters, target: Path, quality: str, jobs: int, polygon: st
                        f"{float(video.duration):.1f} s of video in {seconds:.1f} s")
 
         picked = [chapters[k] for k in missing]
-        videos = lc.render_chapters(picked, renders, logs, quality,
-                                    max(1, min(jobs, len(picked) or 1)), polygon, done, panel)
+        videos = lc.render_chapters(picked, renders, logs, quality, min(jobs, len(picked)),
+                                    polygon, done, panel) if picked else []
         for k, video in zip(missing, videos, strict=True):
             sources[k] = _source(video.path, read_marks(video.path), chapters[k])
         found = probe(sources[0].video)
