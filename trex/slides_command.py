@@ -128,14 +128,14 @@ def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: 
     try:
         chapters = lc.lecture_chapters()
     except Exception as exc:  # the chapter list itself is broken
-        lc._failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
+        lc.chapter_failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
     if only is not None:
         try:
             chapters = lc.pick_chapters(only, chapters)
         except ValueError as exc:
             fail(f"--chapters {only}: {exc}")
     if not chapters:
-        lc._failed("the lecture has no chapters")
+        lc.chapter_failed("the lecture has no chapters")
     try:
         check_output(target, MARKER, "earlier slides")
     except ValueError as exc:
@@ -143,7 +143,7 @@ def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: 
     try:
         lc.check_chapters(chapters, polygon)
     except lc.ChapterFailed as exc:
-        lc._failed(str(exc))
+        lc.chapter_failed(str(exc))
     began = time.monotonic()
     where = lecture_dir if lecture_dir is not None else lc.DEFAULT_DIR
     shown = build_guarded(LECTURE, str(target), "slides",
@@ -202,13 +202,13 @@ def _lecture_slides(chapters, target: Path, quality: str, jobs: int, polygon: st
                 missing.append(k)
             else:
                 sources[k] = _source(video, marks, chapter)
-                click.echo(f"{lc._label(k, len(chapters), chapter)}: reused {video}")
+                click.echo(f"{lc.chapter_label(k, len(chapters), chapter)}: reused {video}")
         renders, logs = built / "render", built / "logs"
         renders.mkdir()
         logs.mkdir()
 
         def done(k, chapter, video, seconds):
-            click.echo(f"{lc._label(missing[k], len(chapters), chapter)}: "
+            click.echo(f"{lc.chapter_label(missing[k], len(chapters), chapter)}: "
                        f"{float(video.duration):.1f} s of video in {seconds:.1f} s")
 
         picked = [chapters[k] for k in missing]
