@@ -3,8 +3,9 @@
 Each run is the real command in a process of its own, timed from start to exit, writing
 into a temporary directory removed afterwards:
 
-- ``trex render SCENE`` (the baseline: the one render) and ``trex slides SCENE``; the
-  difference is cutting the clips, decoding their last frames and drawing the handout;
+- ``trex render SCENE`` (the baseline: the one render) and ``trex slides SCENE``, three
+  times each in turn (medians); the difference is cutting the clips, decoding their last
+  frames and drawing the handout;
 - with ``--lecture``: ``trex lecture -j J`` (the baseline), ``trex slides lecture -j J``
   (rendering every chapter again) and ``trex slides lecture --lecture <that lecture>``
   (reusing its chapters: no render at all).
@@ -20,6 +21,7 @@ Run from the repository root: ``python -m bench.slides [--scene gravity] [--lect
 from __future__ import annotations
 
 import argparse
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -54,13 +56,16 @@ def described(folder: Path) -> str:
             f"handout {size(folder / 'handout.pdf') / 1e6:.1f})")
 
 
-def bench_scene(trex: Path, scene: str, quality: str, temp: Path) -> None:
-    video = temp / f"{scene}.mp4"
-    render = timed([str(trex), "render", scene, "-q", quality, "-o", str(video)])
-    folder = temp / f"{scene}-slides"
-    slides = timed([str(trex), "slides", scene, "-q", quality, "-o", str(folder)])
-    print(f"{scene}: render {render:.1f} s, {mb(size(video))}; slides {slides:.1f} s "
-          f"({slides / render:.2f}x), {described(folder)}")
+def bench_scene(trex: Path, scene: str, quality: str, temp: Path, repeat: int = 3) -> None:
+    """The render and the slides, ``repeat`` times each, taking turns; medians."""
+    video, folder = temp / f"{scene}.mp4", temp / f"{scene}-slides"
+    renders, slides = [], []
+    for _ in range(repeat):
+        renders.append(timed([str(trex), "render", scene, "-q", quality, "-o", str(video)]))
+        slides.append(timed([str(trex), "slides", scene, "-q", quality, "-o", str(folder)]))
+    render, sliced = statistics.median(renders), statistics.median(slides)
+    print(f"{scene}: render {render:.1f} s, {mb(size(video))}; slides {sliced:.1f} s "
+          f"({sliced / render:.2f}x), {described(folder)} (medians of {repeat})")
 
 
 def bench_lecture(trex: Path, jobs: int, quality: str, temp: Path) -> None:

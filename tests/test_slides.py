@@ -246,6 +246,11 @@ def test_presenting_in_headless_chromium(gravity, browser):
     jumped = settled(page)
     assert (jumped["counter"], jumped["src"]) == (f"step 5 / {n}", "clips/005.mp4")
     assert not page.locator("#notes").is_visible()
+    page.keyboard.press("f")  # full screen: the video's figure, and back
+    page.wait_for_function("() => document.fullscreenElement"
+                           " && document.fullscreenElement.id === 'stage'")
+    page.keyboard.press("F")
+    page.wait_for_function("() => !document.fullscreenElement")
     page.close()
     assert requests, "the page loaded nothing at all?"
     assert all(url.startswith("file://") for url in requests), requests
