@@ -7,6 +7,7 @@ downloaded.
 """
 
 import io
+import itertools
 import json
 import re
 from pathlib import Path
@@ -79,8 +80,11 @@ def test_one_clip_per_beat_cut_from_the_one_render(gravity, rendered):
     assert [s["caption"] for s in data["steps"]] == [b.caption for b in beats]
     assert [s["kind"] for s in data["steps"]] == [b.action for b in beats]
     assert [s["clip"] for s in data["steps"]] == [f"clips/{p.name}" for p in clips]
-    # the clips, one after another, are the scene's video: the same frames, none twice
-    joined = [f for clip in clips for f in frames(clip)]
+    # the clips, one after another, are the scene's video: the same frames; each but the last
+    # ends on the next one's first frame (the first to show its step finished)
+    cut = [frames(clip) for clip in clips]
+    assert all(np.array_equal(a[-1], b[0]) for a, b in itertools.pairwise(cut))
+    joined = [f for shown in cut[:-1] for f in shown[:-1]] + cut[-1]
     whole = frames(rendered)
     assert len(joined) == len(whole)
     assert all(np.array_equal(a, b) for a, b in zip(joined, whole, strict=True))

@@ -12,7 +12,10 @@ the video's frames. A step that would not start on a key frame (a video encoded 
 manim) is refused, not re-encoded: its clip would not be the same frames.
 
 Step *k* is the frames ``[frame_k, frame_{k+1})``; the first starts at the video's start, the
-last runs to ``end`` (None: the end of the video).
+last runs to ``end`` (None: the end of the video). Its clip also ends on frame
+``frame_{k+1}``, the first of the next play, a key frame copied once more: manim writes a
+play's frames before its animations reach their end, so that frame is the first to show the
+step finished, and a clip stops on it (see :func:`cut_clips`).
 """
 
 from __future__ import annotations
@@ -99,16 +102,6 @@ def read_marks(video: Path) -> Marks:
     return Marks.from_json(marks_path(video).read_text(encoding="utf-8"))
 
 
-def _packets(path: Path) -> tuple[list, dict[int, int]]:
-    """The video's packets in decode order (flushing ones left out) and each presentation
-    time's frame index."""
-    with av.open(str(path)) as container:
-        packets = [(p.pts, p.dts, p.is_keyframe) for p in container.demux(
-            container.streams.video[0]) if p.dts is not None]
-    frame_of = {pts: k for k, pts in enumerate(sorted(p[0] for p in packets))}
-    return packets, frame_of
-
-
 def step_ranges(marks: Marks, frames: int) -> list[tuple[int, int]]:
     """``[start, stop)`` frames of each step of a video of ``frames`` frames. ValueError for
     marks that do not fit it (out of order, empty, past the end).
@@ -135,62 +128,80 @@ def step_ranges(marks: Marks, frames: int) -> list[tuple[int, int]]:
     return ranges
 
 
-def cut_clips(video: Path, marks: Marks, folder: Path, names: Sequence[str]) -> list[Path]:
-    """Copy each step's packets of ``video`` into ``folder/<name>`` (one name per step).
-
-    Raises ValueError when the marks do not fit the video or a step does not start on a key
-    frame (its clip could not be copied).
-    """
-    packets, frame_of = _packets(video)
-    ranges = step_ranges(marks, len(frame_of))
-    if len(names) != len(ranges):
-        raise ValueError(f"{len(names)} names for {len(ranges)} steps")
+def _spans(packets: Sequence, frame_of: dict[int, int], ranges: list[tuple[int, int]],
+           name: str) -> list[tuple[int, int]]:
+    """``[first, last)`` indices into ``packets`` (decode order) of each step's packets.
+    ValueError if a step does not start on a key frame or its packets are not together."""
     step_of = [0] * len(frame_of)
     for k, (start, stop) in enumerate(ranges):
         step_of[start:stop] = [k] * (stop - start)
-    by_step: list[list] = [[] for _ in ranges]
+    spans = [[0, 0] for _ in ranges]
     last, ended = -1, False
-    for pts, dts, key in packets:
-        frame = frame_of[pts]
+    for i, packet in enumerate(packets):
+        frame = frame_of[packet.pts]
         if frame >= ranges[-1][1]:
             ended = True  # after the last step (a closing fade): left out
             continue
         k = step_of[frame]
-        if ended or (k != last and (k < last or by_step[k] or not key)):
-            raise ValueError(f"step {k + 1} of {video.name} does not start on a key frame "
+        if ended or (k != last and (k != last + 1 or not packet.is_keyframe)):
+            raise ValueError(f"step {k + 1} of {name} does not start on a key frame "
                              f"(frame {ranges[k][0]}): its packets cannot be copied")
-        by_step[k].append((pts, dts))
-        last = k
-    paths = []
+        if k != last:
+            spans[k][0] = i
+        spans[k][1], last = i + 1, k
+    return [(first, stop) for first, stop in spans]
+
+
+def cut_clips(video: Path, marks: Marks, folder: Path, names: Sequence[str]) -> list[Path]:
+    """Copy each step's packets of ``video`` into ``folder/<name>`` (one name per step).
+
+    A clip ends on the first frame of what follows it (when that is a key frame, as the
+    start of a play always is): manim writes a play's frames before its animations reach
+    their end, and that next frame is the first to show the step finished (a title wholly
+    written, a line wholly faded in). So a clip stops on its step's finished picture, and
+    the next clip starts from the very same picture.
+
+    Raises ValueError when the marks do not fit the video or a step does not start on a key
+    frame (its clip could not be copied).
+    """
     with av.open(str(video)) as source:
         stream = source.streams.video[0]
-        demuxed = (p for p in source.demux(stream) if p.dts is not None)
-        for k, name in enumerate(names):
-            paths.append(_write_clip(demuxed, stream, len(by_step[k]),
-                                     _first_pts(by_step[k], frame_of, ranges[k][0]),
+        packets = [p for p in source.demux(stream) if p.dts is not None]
+        frame_of = {pts: k for k, pts in enumerate(sorted(p.pts for p in packets))}
+        ranges = step_ranges(marks, len(frame_of))
+        if len(names) != len(ranges):
+            raise ValueError(f"{len(names)} names for {len(ranges)} steps")
+        spans = _spans(packets, frame_of, ranges, video.name)
+        paths = []
+        for (first, stop), name in zip(spans, names, strict=True):
+            closing = packets[stop] if stop < len(packets) else None
+            closing = _copy(closing) if closing is not None and closing.is_keyframe else None
+            zero = min(p.pts for p in packets[first:stop])
+            paths.append(_write_clip(packets[first:stop], closing, zero, stream,
                                      folder / name, source))
     return paths
 
 
-def _first_pts(step: list, frame_of: dict[int, int], start: int) -> int:
-    return next(pts for pts, _ in step if frame_of[pts] == start)
+def _copy(packet):
+    """A packet of its own with the same data and times (a packet is muxed only once)."""
+    copy = av.Packet(bytes(packet))
+    copy.pts, copy.dts, copy.duration = packet.pts, packet.dts, packet.duration
+    copy.time_base, copy.is_keyframe = packet.time_base, True
+    return copy
 
 
-def _write_clip(demuxed, stream, count: int, zero: int, path: Path, source) -> Path:
-    """The next ``count`` packets that belong to a step (skipping those after the steps end,
-    which come last) into ``path``, presentation times starting at 0."""
+def _write_clip(packets: Sequence, closing, zero: int, stream, path: Path, source) -> Path:
+    """``packets`` (and the ``closing`` one, if any) into ``path``, presentation times from
+    ``zero`` on starting at 0."""
     with av.open(str(path), "w", format="mp4") as out:
         if "comment" in source.metadata:
             out.metadata["comment"] = source.metadata["comment"]
         clip = out.add_stream_from_template(stream)
-        written = 0
-        while written < count:
-            packet = next(demuxed)
+        for packet in [*packets, *([closing] if closing is not None else [])]:
             packet.pts -= zero
             packet.dts -= zero
             packet.stream = clip
             out.mux(packet)
-            written += 1
     return path
 
 
