@@ -6,8 +6,9 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 # Debian packages manim needs to build pycairo/manimpango, the font the theme uses,
-# xdg-open (manim's preview crashes after rendering without it), and chromium (the `trex player`
-# test drives the page in it headless, through playwright; no browser is ever downloaded).
+# xdg-open (manim's preview crashes after rendering without it), and chromium (the tests of
+# `trex player` and `trex slides` drive their pages in it headless, through playwright, which
+# plays the slides' H.264 clips; no browser is ever downloaded). The handout's font is DejaVu.
 DEB_PACKAGES := libpango1.0-dev pkg-config fonts-dejavu-core xdg-utils chromium
 
 .PHONY: demo test lint system-deps bench clean
@@ -30,6 +31,7 @@ bench: $(STAMP)
 	$(BIN)/python -m bench.algorithms
 	$(BIN)/python -m bench.render
 	$(BIN)/python -m bench.lecture
+	$(BIN)/python -m bench.slides
 
 $(STAMP): pyproject.toml | system-deps
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)

@@ -27,6 +27,7 @@ from metaphors.captions import captions_of
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
 from metaphors.scene import TraceScene
+from metaphors.steps import end_steps, lead_in, mark_step
 from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
@@ -122,11 +123,15 @@ class LectureScene(TraceScene):
         for segment in self.chapter_segments():
             self.clear_screen()
             getattr(self, f"play_{type(segment).__name__.lower()}")(segment)
+        end_steps(self)
         self.clear_screen()
         self.wait(0.5)
 
     def clear_screen(self) -> None:
+        """Fade out everything (the caption on screen read first): the fade opens the step
+        that follows (it ends on its picture)."""
         captions_of(self).finish()
+        lead_in(self)
         if self.mobjects:
             self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.4)
             self.clear()
@@ -137,6 +142,14 @@ class LectureScene(TraceScene):
 
     # --- segments ---------------------------------------------------------------------------------
 
+    def mark_card_line(self, line: str | None, card: Card) -> None:
+        """A card's title (``line`` None) or one of its lines starts a step of its own: call
+        before it appears (:mod:`metaphors.steps`)."""
+        if line is None:
+            mark_step(self, card.title, kind="card")
+        else:
+            mark_step(self, line, kind="card-line")
+
     def play_card(self, card: Card) -> None:
         captions = captions_of(self)
         title = tag(typeset.glyphs(card.title, font=self.theme.font, size=self.theme.title_size,
@@ -146,9 +159,13 @@ class LectureScene(TraceScene):
         group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
         group.move_to((0, 0.3, 0))
         title.set_x(0)
-        self.play(Write(title), run_time=0.8, **captions.show(card.title, 0.8))
+        cue = captions.show(card.title, 0.8)  # the caption before is read in its own step
+        self.mark_card_line(None, card)
+        self.play(Write(title), run_time=0.8, **cue)
         for line, words in zip(lines, card.lines, strict=True):
-            self.play(FadeIn(line, shift=UP * 0.1), run_time=0.5, **captions.show(words, 0.5))
+            cue = captions.show(words, 0.5)
+            self.mark_card_line(words, card)
+            self.play(FadeIn(line, shift=UP * 0.1), run_time=0.5, **cue)
         captions.hold()
 
     def play_run(self, run: Run, log=None) -> None:
@@ -193,6 +210,8 @@ class LectureScene(TraceScene):
             outline = tag(polygon_mobject(polygon, frame, theme), "idle", f"compare:{name}")
             label = tag(self.text(name, theme.caption_size), None, "compare:name")
             label.move_to((x, 3.2, 0))
+            captions.hold()  # the caption before is read in its own step
+            mark_step(self, f"{name}: {len(triangles)} triangles", kind="compare")
             self.play(FadeIn(label), Create(outline), run_time=0.6)
             pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
                                            theme), None, "compare:triangle")
@@ -203,7 +222,9 @@ class LectureScene(TraceScene):
                              "different diagonals, both valid", theme.caption_size), None,
                    "compare:note")
         note.move_to((0, -3.55, 0))
-        self.play(FadeIn(note), run_time=0.5, **captions.show(note.original_text, 0.5))
+        cue = captions.show(note.original_text, 0.5)
+        mark_step(self, note.original_text, kind="compare")
+        self.play(FadeIn(note), run_time=0.5, **cue)
         self.wait(compare.seconds)
 
     def play_quiz(self, quiz: Quiz) -> None:
@@ -216,16 +237,19 @@ class LectureScene(TraceScene):
         theme = self.theme
         picture = [tag(m, None, "exercise") for m in still_mobjects(exercise, theme)]
         captions = captions_of(self)
-        self.play(*[FadeIn(m) for m in picture], run_time=0.8,
-                  **captions.show(exercise.question, 0.8))
+        cue = captions.show(exercise.question, 0.8)
+        mark_step(self, exercise.question, kind="question")
+        self.play(*[FadeIn(m) for m in picture], run_time=0.8, **cue)
         for k in range(think, 0, -1):
             digit = tag(self.text(str(k), 60, theme.argument), None, "countdown")
             digit.move_to((6.3, 2.7, 0))
             self.play(FadeIn(digit), run_time=0.2)
             self.wait(0.6)
             self.play(FadeOut(digit), run_time=0.2)
-        self.play(*self.answer_animations(exercise), run_time=1.2,
-                  **captions.show(f"{exercise.answer}: {exercise.reason}", 1.2))
+        answer = f"{exercise.answer}: {exercise.reason}"
+        cue = captions.show(answer, 1.2)
+        mark_step(self, answer, kind="answer")
+        self.play(*self.answer_animations(exercise), run_time=1.2, **cue)
         self.wait(3.0)
 
     def answer_animations(self, exercise: Exercise) -> list:

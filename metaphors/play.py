@@ -17,6 +17,7 @@ from manim import Scene
 from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.layout import METAPHOR
+from metaphors.steps import mark_step
 from story.beats import Beat
 from story.pseudocode import PSEUDOCODE
 from story.storyboard import pseudocode_of
@@ -46,8 +47,11 @@ def board_for(scene: Scene, log: Log, beats: Sequence[Beat], title: str, theme) 
 def play_beats(board: Board, beats: Sequence[Beat],
                after: Callable[[int, Beat], None] | None = None) -> Board:
     """Perform each beat on the board (``after(k, beat)`` once each is played, k from 1),
-    then close it."""
+    then close it. Each beat is a step of the video (:func:`metaphors.steps.mark_step`)."""
     for k, beat in enumerate(beats, start=1):
+        if beat.caption != board.caption:
+            board.captions.hold()  # the caption before is read in its own step
+        mark_step(board.scene, beat.caption, beat.call, beat.action)
         perform(board, beat)
         if after is not None:
             after(k, beat)

@@ -33,6 +33,7 @@ from metaphors.board import Board
 from metaphors.captions import captions_of
 from metaphors.layout import METAPHOR
 from metaphors.play import board_for, play_beats
+from metaphors.steps import lead_in
 from metaphors.tags import tag
 from metaphors.theme import THEME
 from rendering.camera import PathCamera
@@ -232,8 +233,9 @@ class SequenceScene(TraceScene):
     def construct(self) -> None:
         self.camera.background_color = self.theme.background
         for k, (log, (_, _, title)) in enumerate(zip(self.logs(), self.runs, strict=True)):
+            captions_of(self).finish()  # the caption on screen is read in its own step
+            lead_in(self)  # the fade and the title card open the run's first step
             if self.mobjects:
-                captions_of(self).finish()
                 self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.3)
                 self.clear()
             self.card(k, title)

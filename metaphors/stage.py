@@ -21,6 +21,7 @@ from geometry.polygon import Polygon
 from metaphors.captions import captions_of, whole_frames
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.layout import SUBTITLE_Y, TITLE_Y, Box
+from metaphors.steps import mark_step
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
@@ -88,6 +89,7 @@ class Stage:
         (first, first_time), *rest = plays
         first_time = max(first_time, 0.3)
         cue = captions_of(self.scene).show(caption, first_time)  # may wait for the one before
+        mark_step(self.scene, caption, kind="analysis")
         change = [FadeIn(words)] + ([FadeOut(self.subtitle)] if self.subtitle else [])
         self.subtitle = words
         self.scene.play(*change, *first, run_time=first_time, **cue)

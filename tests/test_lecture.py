@@ -334,7 +334,8 @@ def test_existing_dir_gets_new_lecture_and_keeps_other_files(tmp_path, tiny):
     assert stdout.splitlines()[-1] == str(out / "lecture.mp4")
     assert leftovers(out) == ["chapters", "chapters.json", "chapters.md", "lecture.mp4",
                               "lecture.srt", "notes.txt"]
-    assert leftovers(out / "chapters") == ["01-tiny-Cues.mp4", "01-tiny-Cues.srt"]
+    assert leftovers(out / "chapters") == ["01-tiny-Cues.mp4", "01-tiny-Cues.srt",
+                                           "01-tiny-Cues.steps.json"]  # for trex slides
     assert (out / "lecture.mp4").read_bytes() == (out / "chapters/01-tiny-Cues.mp4").read_bytes()
     assert leftovers(tmp_path) == ["lecture"]
 

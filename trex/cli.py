@@ -24,6 +24,7 @@ from trex.lecture_command import COMMANDS as LECTURE_COMMANDS
 from trex.player_command import COMMANDS as PLAYER_COMMANDS
 from trex.render_command import COMMANDS as RENDER_COMMANDS
 from trex.run_commands import COMMANDS
+from trex.slides_command import COMMANDS as SLIDES_COMMANDS
 from trex.snapshot_command import COMMANDS as SNAPSHOT_COMMANDS
 
 _SHOWN_LABELS = 8
@@ -144,7 +145,7 @@ def sample(name: str, n: int | None, seed: int, output: str | None) -> None:
 
 
 for _command in (*COMMANDS, *HUNT_COMMANDS, *RENDER_COMMANDS, *EXERCISE_COMMANDS, *LECTURE_COMMANDS,
-                 *PLAYER_COMMANDS, *SNAPSHOT_COMMANDS):
+                 *PLAYER_COMMANDS, *SLIDES_COMMANDS, *SNAPSHOT_COMMANDS):
     main.add_command(_command)
 
 if __name__ == "__main__":

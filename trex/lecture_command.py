@@ -36,6 +36,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import NoReturn
 
 import click
 
@@ -143,7 +144,8 @@ def chapter_stem(chapter) -> str:
     return f"{chapter.number:02d}-{chapter.slug}"
 
 
-def _label(k: int, n: int, chapter) -> str:
+def chapter_label(k: int, n: int, chapter) -> str:
+    """``chapter 3/7 gravity``: how messages name chapter ``k`` (from 0) of ``n``."""
     return f"chapter {k + 1}/{n} {chapter.slug}"
 
 
@@ -210,9 +212,9 @@ def check_chapters(chapters: Sequence, polygon: str | None) -> None:
                 raise ValueError(f"no such scene file: {chapter.scene_file}")
             cls = load_scene_class(path, chapter.scene_class or None)
         except ValueError as exc:
-            raise ChapterFailed(f"{_label(k, len(chapters), chapter)}: {exc}") from None
+            raise ChapterFailed(f"{chapter_label(k, len(chapters), chapter)}: {exc}") from None
         if polygon is not None:
-            _check_polygon(cls, polygon, _label(k, len(chapters), chapter), done)
+            _check_polygon(cls, polygon, chapter_label(k, len(chapters), chapter), done)
 
 
 def _check_polygon(cls: type, polygon: str, label: str, done: set) -> None:
@@ -339,7 +341,7 @@ def render_chapters(chapters: Sequence, folder: Path, logs: Path, quality: str, 
                 if code is None:
                     continue
                 running.remove(render)
-                label = _label(render.k, len(chapters), render.chapter)
+                label = chapter_label(render.k, len(chapters), render.chapter)
                 if code != 0:
                     raise ChapterFailed(f"{label}: {_reason(render, code)}")
                 try:
@@ -408,7 +410,7 @@ def build_lecture(chapters: Sequence, out_dir: Path, quality: str, jobs: int,
             folder.mkdir(parents=True)
 
         def done(k, chapter, video, seconds):
-            echo(f"{_label(k, len(chapters), chapter)}: {float(video.duration):.1f} s of video "
+            echo(f"{chapter_label(k, len(chapters), chapter)}: {float(video.duration):.1f} s of video "
                  f"in {seconds:.1f} s")
 
         videos = render_chapters(chapters, stage / CHAPTER_DIR, logs, quality,
@@ -467,17 +469,17 @@ def run_lecture(chapters: Sequence | None, out_dir: Path, quality: str = "l", jo
             chapters = lecture_chapters()
         except ModuleNotFoundError as exc:
             if only is None or exc.name != "metaphors.lecture":
-                _failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
+                chapter_failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
             chapters = ()  # not written yet: --chapters names scenes
         except Exception as exc:  # the chapter list itself is broken
-            _failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
+            chapter_failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
     if only is not None:
         try:
             chapters = pick_chapters(only, chapters)
         except ValueError as exc:
             fail(f"--chapters {only}: {exc}")
     if not chapters:
-        _failed("the lecture has no chapters")
+        chapter_failed("the lecture has no chapters")
     try:
         check_output_dir(out_dir)
     except ValueError as exc:
@@ -493,29 +495,61 @@ def run_lecture(chapters: Sequence | None, out_dir: Path, quality: str = "l", jo
             raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
         except ChapterFailed as exc:
             signals.check()
-            _failed(str(exc))
+            chapter_failed(str(exc))
         except (KeyboardInterrupt, click.exceptions.Exit):
             raise
         except Exception as exc:
             signals.check()  # an interrupt that surfaced as another error is still one
-            _failed(f"lecture failed: {type(exc).__name__}: {error_line(exc)}")
+            chapter_failed(f"lecture failed: {type(exc).__name__}: {error_line(exc)}")
     click.echo(f"lecture: {seconds:.1f} s of video, {len(chapters)} chapters, "
                f"in {time.monotonic() - began:.1f} s")
     click.echo(str(video))
     return video
 
 
-def _failed(message: str):
+def chapter_failed(message: str) -> NoReturn:
+    """``error: MESSAGE`` and exit status 1 (a chapter, or the list of them, failed)."""
     click.echo(f"error: {message}", err=True)
     raise click.exceptions.Exit(EXIT_FAILED)
 
 
 # --- one chapter, in its own process ------------------------------------------------------------
 
+#: the code a chapter's frames come from (its fingerprint tells a render still up to date)
+SOURCE_DIRS = ("tracing", "geometry", "story", "rendering", "metaphors", "scenes", "examples",
+               "trex")
+
+
+def source_fingerprint() -> str:
+    """sha256 of the project's Python sources and manim's version: a chapter rendered by
+    other code has another."""
+    import hashlib
+
+    import manim
+
+    digest = hashlib.sha256(manim.__version__.encode())
+    for folder in SOURCE_DIRS:
+        for path in sorted((REPO / folder).rglob("*.py")):
+            digest.update(str(path.relative_to(REPO)).encode() + b"\0" + path.read_bytes())
+    return digest.hexdigest()
+
+
+def render_settings(scene_file: str, class_name: str | None, quality: str,
+                    polygon: str | None, panel: str | None) -> dict:
+    """What a chapter's frames depend on, as its step marks record it (``made_by``):
+    ``trex slides lecture`` reuses a chapter render whose settings are these."""
+    from story.environment import environment_values
+
+    return {"scene_file": str(Path(scene_file).resolve()), "class": class_name or None,
+            "quality": quality, "polygon": polygon or None, "panel": panel or None,
+            "environment": environment_values(), "source": source_fingerprint()}
+
+
 
 def render_chapter(scene_file: str, class_name: str | None, output: str, quality: str,
                    polygon: str | None = None, panel: str | None = None) -> int:
-    """Render one scene to ``output`` (mp4 + .srt) with ``render_into``, handed ``polygon``
+    """Render one scene to ``output`` (mp4 + .srt + .steps.json, its step marks) with
+    ``render_into``, handed ``polygon``
     (None or empty: what ``manim`` would give it), its panel showing ``panel`` (None or
     empty: the scene's own); the exit status.
 
@@ -525,8 +559,10 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
         try:
             try:
                 cls = load_scene_class(Path(scene_file), class_name or None)
+                settings = render_settings(scene_file, class_name, quality, polygon, panel)
                 render_into(scene_input(cls, polygon or None, panel or None), Path(output),
-                            "mp4", QUALITIES[quality], progress=False, signals=signals)
+                            "mp4", QUALITIES[quality], progress=False, signals=signals,
+                            steps=settings)
             except Exception as exc:
                 signals.check()
                 print(f"error: render failed: {type(exc).__name__}: {error_line(exc)}",

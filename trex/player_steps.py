@@ -12,13 +12,12 @@ font, script or image from anywhere else (pictures are referenced relatively, ``
 
 from __future__ import annotations
 
-import html
-import json
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 from story.beats import Beat
+from trex.offline_page import fill
 
 #: manim's low quality (``-ql``): 854×480.
 PIXELS = (854, 480)
@@ -91,13 +90,9 @@ def _snapshot(scene):
 
 def write_player(folder: Path, steps: list[Step], title: str, subtitle: str = "") -> Path:
     """Write ``folder/index.html`` for the steps; returns its path."""
-    data = json.dumps({"title": title, "steps": [s.to_dict() for s in steps]},
-                      ensure_ascii=False).replace("</", "<\\/")
-    page = (_PAGE.replace("{{TITLE}}", html.escape(title))
-            .replace("{{SUBTITLE}}", html.escape(subtitle))
-            .replace("{{FIRST}}", html.escape(steps[0].image if steps else ""))
-            .replace("{{WIDTH}}", str(PIXELS[0])).replace("{{HEIGHT}}", str(PIXELS[1]))
-            .replace("{{DATA}}", data))
+    page = fill(_PAGE, {"title": title, "steps": [s.to_dict() for s in steps]}, TITLE=title,
+                SUBTITLE=subtitle, FIRST=steps[0].image if steps else "", WIDTH=PIXELS[0],
+                HEIGHT=PIXELS[1])
     path = folder / "index.html"
     path.write_text(page, encoding="utf-8")
     return path
@@ -111,25 +106,11 @@ _PAGE = """<!DOCTYPE html>
 <link rel="icon" href="data:,">
 <title>{{TITLE}}</title>
 <style>
-  :root { color-scheme: dark; --ink: #e8ecf2; --idle: #8a93a3; --called: #4f8ff7; }
-  body { margin: 0; background: #10141c; color: var(--ink);
-         font-family: "DejaVu Sans", system-ui, sans-serif; }
-  main { max-width: 980px; margin: 0 auto; padding: 16px; }
-  h1 { font-size: 1.25rem; font-weight: normal; margin: 0 0 4px; }
-  .sub { color: var(--idle); font-size: 0.85rem; margin: 0 0 12px; }
-  figure { margin: 0; }
+{{BASE_CSS}}  figure { margin: 0; }
   img { display: block; width: 100%; height: auto; aspect-ratio: {{WIDTH}} / {{HEIGHT}};
         background: #10141c; border: 1px solid #2a3a55; border-radius: 4px; }
-  .bar { display: flex; align-items: center; gap: 12px; margin: 12px 0 6px; }
-  button { background: #1c2433; color: var(--ink); border: 1px solid #2a3a55;
-           border-radius: 4px; padding: 4px 12px; font: inherit; cursor: pointer; }
-  button:disabled { opacity: 0.4; cursor: default; }
-  #counter { font-variant-numeric: tabular-nums; min-width: 8em; }
-  #caption { font-size: 1.1rem; margin: 6px 0; }
   #call { font-family: "DejaVu Sans Mono", ui-monospace, monospace; color: var(--called);
           min-height: 1.3em; margin: 6px 0; }
-  .keys { color: var(--idle); font-size: 0.8rem; margin-top: 14px; }
-  kbd { border: 1px solid #2a3a55; border-radius: 3px; padding: 0 4px; }
 </style>
 </head>
 <body>

@@ -295,14 +295,17 @@ def _hold_signals_while_encoders_start(scene, signals: Signals | None) -> None:
 
 def render_into(make_scene: Callable[[], object], output: Path, fmt: str, quality: str,
                 *, progress: bool = True, srt: bool = True,
-                signals: Signals | None = None) -> Path:
+                signals: Signals | None = None, steps: dict | None = None) -> Path:
     """Render ``make_scene()`` with manim and move the finished file to ``output``.
 
     Renders inside a temporary directory next to ``output`` (same filesystem, so the final
     ``os.replace`` is atomic) and removes it whatever happens. With ``srt``, the subtitle
     file manim writes beside a video is moved to ``output`` with suffix ``.srt``.
     With ``signals`` (from :func:`interrupts_raise`), a signal whose exception got lost
-    still cancels the move, and one arriving after the move no longer counts.
+    still cancels the move, and one arriving after the move no longer counts. With ``steps``
+    (what made the render: its settings), the step marks the scene noted while rendering
+    (:mod:`metaphors.steps`) are written beside the video as ``NAME.steps.json``
+    (:mod:`trex.clips`), ``steps`` as their ``made_by``.
     """
     from manim import tempconfig
 
@@ -333,19 +336,33 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
                 _abort_encoders(scene)
                 raise
             produced = _artifact(scene, fmt, media)
-        subtitles = produced.with_suffix(".srt")
+        marks = _write_marks(scene, produced, steps) if steps is not None else None
         with _signals_held(), (signals.deferred() if signals is not None
                                else contextlib.nullcontext()):
             if signals is not None:
                 signals.check()
+            subtitles = produced.with_suffix(".srt")
             if srt and fmt != "png" and subtitles.is_file():
                 os.replace(subtitles, output.with_suffix(".srt"))
+            if marks is not None:
+                from trex.clips import marks_path  # loaded already: _write_marks used it
+
+                os.replace(marks, marks_path(output))
             os.replace(produced, output)
             if signals is not None:
                 signals.done = True
         return output
     finally:
         shutil.rmtree(temp, ignore_errors=True)
+
+
+def _write_marks(scene, video: Path, made_by: dict) -> Path:
+    """The scene's step marks, beside the video it rendered."""
+    from metaphors.steps import recorded_steps, steps_end
+    from trex.clips import Marks, Step, write_marks
+
+    steps = tuple(Step(m.frame, m.caption, m.call, m.kind) for m in recorded_steps(scene))
+    return write_marks(Marks(steps, steps_end(scene), made_by), video)
 
 
 def _format_of(fmt: str | None, output: str | None) -> str:

@@ -244,7 +244,7 @@ def _check_polygon(polygon: str) -> None:
 
 
 def _check_log(cls: type, path: str, runs: int) -> None:
-    from trex.player_command import check_log, read_log
+    from trex.scene_inputs import check_log, read_log
 
     try:
         log = read_log(path)

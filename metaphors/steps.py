@@ -1,0 +1,73 @@
+"""Step marks: where each step of a scene starts in its video, noted while it renders.
+
+A *step* is what a presenter plays with one key press (``trex slides``): one beat of a run
+(a call, a metaphor action, a verdict), a card's title or one of its lines, a question or its
+answer. :func:`mark_step` notes that a step starts now — the frame the renderer is about to
+write — with its caption; the marks are kept on the scene (``scene.trex_steps``), so they come
+from the render itself and never from a second computation of its timing. A step lasts until
+the next one starts; the last lasts to the end of the video.
+
+What plays between two segments (the fade that clears the screen) belongs to the step after
+it, so that every step ends on the picture it built: :func:`lead_in` notes where that
+transition starts, and the next mark starts there.
+
+The frame is counted by the renderer's clock: manim's Cairo renderer adds ``1 / frame_rate``
+to ``renderer.time`` for each frame it writes, so ``time × frame_rate`` is the number of
+frames written so far (a frame index of the scene's video). Each ``play`` and ``wait`` is
+encoded as a movie file of its own, which manim then joins packet by packet, so a mark (made
+between two plays) always falls on the first frame of one of them: a key frame of the video.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from manim import Scene
+
+
+@dataclass(frozen=True)
+class StepMark:
+    """A step: the video frame it starts at, its caption, the call line shown (if any) and
+    what kind of step it is (a beat's action, ``card``, ``card-line``, ``question`` …)."""
+
+    frame: int
+    caption: str
+    call: str | None = None
+    kind: str = "beat"
+
+    def to_dict(self) -> dict:
+        return {"frame": self.frame, "caption": self.caption, "call": self.call,
+                "kind": self.kind}
+
+
+def frame_now(scene: Scene) -> int:
+    """The index of the next frame the scene's renderer writes."""
+    return round(float(scene.renderer.time) * scene.camera.frame_rate)
+
+
+def mark_step(scene: Scene, caption: str, call: str | None = None, kind: str = "beat") -> None:
+    """Note that a step starts now (or where :func:`lead_in` last said), with ``caption``."""
+    marks = scene.__dict__.setdefault("trex_steps", [])
+    start = scene.__dict__.pop("trex_lead_in", None)
+    marks.append(StepMark(frame_now(scene) if start is None else start, caption, call, kind))
+
+
+def lead_in(scene: Scene) -> None:
+    """What plays from now on, up to the next :func:`mark_step`, opens that step (a lead-in
+    already noted and not yet used stays where it is)."""
+    scene.__dict__.setdefault("trex_lead_in", frame_now(scene))
+
+
+def end_steps(scene: Scene) -> None:
+    """The last step ends now: what plays after it (a closing fade) is in no step."""
+    scene.trex_steps_end = frame_now(scene)
+
+
+def recorded_steps(scene: Scene) -> list[StepMark]:
+    """The marks noted while the scene played, in order."""
+    return list(getattr(scene, "trex_steps", ()))
+
+
+def steps_end(scene: Scene) -> int | None:
+    """The frame the last step ends before (None: the end of the video)."""
+    return getattr(scene, "trex_steps_end", None)

@@ -1,0 +1,229 @@
+"""``trex slides``: a presenter's page playing one step per key press, offline.
+
+``trex slides SCENE [--polygon P | --log FILE] [--panel …] [-q l|m|h|k] -o DIR`` renders
+SCENE once (``trex render``'s machinery) and cuts its video at the step marks noted while
+it rendered (:mod:`metaphors.steps`, :mod:`trex.clips`): DIR gets ``index.html``
+(:mod:`trex.slides_page`), ``clips/NNN.mp4`` (one per step) and ``handout.pdf``
+(:mod:`trex.handout`). SCENE and its run are checked as for ``trex player``
+(:mod:`trex.scene_inputs`).
+
+``trex slides lecture [-j N] [--chapters …] [--polygon P] [--lecture LDIR] -o DIR`` does
+the same for the lecture, one source per chapter. A chapter rendered already by
+``trex lecture`` into LDIR (default ``media/lecture``) is reused when its step marks say it
+was made with the same settings and code (:func:`trex.lecture_command.render_settings`);
+the others are rendered as ``trex lecture`` renders them, ``-j`` at a time.
+
+DIR is built beside itself and renamed into place; an existing DIR is replaced only if it
+is empty or earlier slides (it holds ``.trex-slides``). Bad input is one line and exit 2
+before anything renders; a failure or Ctrl-C leaves DIR as it was.
+"""
+
+from __future__ import annotations
+
+import shutil
+import time
+from pathlib import Path
+
+import click
+
+from story.pseudocode import PANELS
+from trex.inputs import error_line, fail, load_or_exit
+from trex.output_dir import build_guarded, built_beside, check_output
+
+MARKER = ".trex-slides"
+LECTURE = "lecture"
+
+
+def _size(folder: Path) -> int:
+    return sum(p.stat().st_size for p in folder.rglob("*") if p.is_file())
+
+
+def _report(slides: list, folder: Path, began: float) -> None:
+    click.echo(f"slides: {len(slides)} steps, {_size(folder) / 1e6:.1f} MB, "
+               f"in {time.monotonic() - began:.1f} s")
+
+
+@click.command()
+@click.argument("scene")
+@click.option("--polygon", metavar="POLYGON",
+              help="Polygon file or sample (default: TREX_POLYGON, else the scene's).")
+@click.option("--log", "saved", metavar="FILE.json",
+              help="Play a saved log (`trex log` writes them) instead of running live.")
+@click.option("-q", "--quality", type=click.Choice(["l", "m", "h", "k"]), default="l",
+              show_default=True, help="l 480p15, m 720p30, h 1080p60, k 2160p60.")
+@click.option("--panel", type=click.Choice(PANELS), default=None,
+              help="What the panel shows: the pseudocode (the scenes' default) or the source.")
+@click.option("-o", "--output", "output", required=True, metavar="DIR",
+              help="Directory to write index.html, clips/ and handout.pdf into.")
+@click.option("-j", "--jobs", type=click.IntRange(min=1), default=None,
+              help="lecture only: chapters rendered at once (default 1).")
+@click.option("--chapters", "only", metavar="NAME,...",
+              help="lecture only: these chapters (slugs), or scenes played as chapters.")
+@click.option("--lecture", "lecture_dir", metavar="LDIR", default=None,
+              help="lecture only: where `trex lecture` rendered its chapters, to reuse "
+                   "(default media/lecture).")
+def slides(scene: str, polygon: str | None, saved: str | None, quality: str,
+           panel: str | None, output: str, jobs: int | None, only: str | None,
+           lecture_dir: str | None) -> None:
+    """Write presenter slides of SCENE (as for `trex render`), or of the whole lecture
+    (SCENE `lecture`): DIR/index.html, one clip per step, handout.pdf.
+
+    Open DIR/index.html: → Space PageDown play the next step, ← PageUp back, Home End,
+    a number and Enter, F full screen, S speaker window (or index.html?notes).
+    """
+    if scene == LECTURE:
+        if saved is not None:
+            fail("--log: the lecture plays many runs; give --polygon for its chapters")
+        if polygon is not None:
+            load_or_exit(polygon)
+        _lecture(Path(output), quality, jobs or 1, polygon, panel, only,
+                 Path(lecture_dir) if lecture_dir else None)
+        return
+    for name, given in (("-j", jobs), ("--chapters", only), ("--lecture", lecture_dir)):
+        if given is not None:
+            fail(f"{name}: only for `trex slides lecture`")
+    from trex.scene_inputs import choose, run_of
+
+    chosen = choose(scene, polygon, saved, "slides")
+    target = Path(output)
+    try:
+        check_output(target, MARKER, "earlier slides")
+    except ValueError as exc:
+        fail(f"{output}: {exc}")
+    spec, _, subtitle = run_of(chosen)
+    played = chosen.cls.with_spec(spec)
+    played = played.with_panel(panel) if panel else played
+    began = time.monotonic()
+    shown = build_guarded(scene, output, "slides",
+                          lambda: _scene_slides(played, quality, subtitle, target))
+    _report(shown, target, began)
+    click.echo(str(target / "index.html"))
+
+
+def _scene_slides(cls: type, quality: str, subtitle: str, target: Path) -> list:
+    from trex.assemble import probe
+    from trex.clips import read_marks
+    from trex.render_command import QUALITIES, render_into
+    from trex.slides_build import Source, build_slides
+
+    with built_beside(target, MARKER, "trex slides") as built:
+        video = built / "render" / "scene.mp4"
+        video.parent.mkdir()
+        render_into(cls, video, "mp4", QUALITIES[quality], progress=False, srt=False,
+                    steps={"scene": cls.__name__, "quality": quality})
+        found = probe(video)
+        shown = build_slides(built, [Source(video, read_marks(video))], cls.title, subtitle,
+                             (found.width, found.height))
+        shutil.rmtree(video.parent)  # the clips hold every frame of it
+    return shown
+
+
+# --- the lecture -------------------------------------------------------------------------------
+
+
+def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: str | None,
+             only: str | None, lecture_dir: Path | None) -> None:
+    from trex import lecture_command as lc
+
+    try:
+        chapters = lc.lecture_chapters()
+    except Exception as exc:  # the chapter list itself is broken
+        lc.chapter_failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
+    if only is not None:
+        try:
+            chapters = lc.pick_chapters(only, chapters)
+        except ValueError as exc:
+            fail(f"--chapters {only}: {exc}")
+    if not chapters:
+        lc.chapter_failed("the lecture has no chapters")
+    try:
+        check_output(target, MARKER, "earlier slides")
+    except ValueError as exc:
+        fail(f"{target}: {exc}")
+    try:
+        lc.check_chapters(chapters, polygon)
+    except lc.ChapterFailed as exc:
+        lc.chapter_failed(str(exc))
+    began = time.monotonic()
+    where = lecture_dir if lecture_dir is not None else lc.DEFAULT_DIR
+    shown = build_guarded(LECTURE, str(target), "slides",
+                          lambda: _lecture_slides(chapters, target, quality, jobs, polygon,
+                                                  panel, where))
+    _report(shown, target, began)
+    click.echo(str(target / "index.html"))
+
+
+def reusable(video: Path, settings: dict):
+    """The step marks of a chapter render at ``video`` if it was made with ``settings`` and
+    its video has the frames they mark (None: render it again)."""
+    from trex.clips import frame_count, read_marks, step_ranges
+
+    try:
+        marks = read_marks(video)
+        if marks.made_by != settings:
+            return None
+        if marks.steps:
+            step_ranges(marks, frame_count(video))
+    except (OSError, ValueError, KeyError, TypeError):  # missing, unreadable, not fitting
+        return None
+    return marks
+
+
+def _source(video: Path, marks, chapter):
+    """A chapter's video as a source of slides: a scene that marks no steps (not one of
+    this project's) is one step, captioned with the chapter's title."""
+    from dataclasses import replace
+
+    from trex.clips import Step
+    from trex.slides_build import Source
+
+    title = f"{chapter.number}. {chapter.title}"
+    if not marks.steps:
+        marks = replace(marks, steps=(Step(0, title, None, "chapter"),))
+    return Source(video, marks, title)
+
+
+def _lecture_slides(chapters, target: Path, quality: str, jobs: int, polygon: str | None,
+                    panel: str | None, lecture_dir: Path) -> list:
+    from trex import lecture_command as lc
+    from trex.assemble import probe
+    from trex.clips import read_marks
+    from trex.slides_build import build_slides
+
+    with built_beside(target, MARKER, "trex slides") as built:
+        sources: list = [None] * len(chapters)
+        missing = []
+        for k, chapter in enumerate(chapters):
+            video = lecture_dir / lc.CHAPTER_DIR / f"{lc.chapter_stem(chapter)}.mp4"
+            settings = lc.render_settings(str(lc.scene_path(chapter)), chapter.scene_class,
+                                          quality, polygon, panel)
+            marks = reusable(video, settings)
+            if marks is None:
+                missing.append(k)
+            else:
+                sources[k] = _source(video, marks, chapter)
+                click.echo(f"{lc.chapter_label(k, len(chapters), chapter)}: reused {video}")
+        renders, logs = built / "render", built / "logs"
+        renders.mkdir()
+        logs.mkdir()
+
+        def done(k, chapter, video, seconds):
+            click.echo(f"{lc.chapter_label(missing[k], len(chapters), chapter)}: "
+                       f"{float(video.duration):.1f} s of video in {seconds:.1f} s")
+
+        picked = [chapters[k] for k in missing]
+        videos = lc.render_chapters(picked, renders, logs, quality, min(jobs, len(picked)),
+                                    polygon, done, panel) if picked else []
+        for k, video in zip(missing, videos, strict=True):
+            sources[k] = _source(video.path, read_marks(video.path), chapters[k])
+        found = probe(sources[0].video)
+        shown = build_slides(built, sources, "Triangulation Explained: the lecture",
+                             f"{len(chapters)} chapters",
+                             (found.width, found.height))
+        shutil.rmtree(renders)
+        shutil.rmtree(logs)
+    return shown
+
+
+COMMANDS = (slides,)
+__all__ = ["COMMANDS", "MARKER", "reusable", "slides"]
