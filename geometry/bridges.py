@@ -53,6 +53,9 @@ class BridgedRing:
         self.next = [*range(1, outer), 0] + [0] * (size - outer)
         self.prev = [outer - 1, *range(outer - 1)] + [0] * (size - outer)
         self.turn = [int(t) for t in shape.turns] + [0] * (2 * holes)
+        self.xy = np.zeros((size, 2))  # the points and links again, for NumPy
+        self.xy[:n] = np.asarray(shape.points, dtype=float)
+        self.next_np = np.asarray(self.next)
         self.live = np.zeros(size, dtype=bool)
         self.live[:outer] = True
         self.size = outer
@@ -77,10 +80,13 @@ class BridgedRing:
         last, after = shape.prev(p), self.next[m]
         self.vertex_of[p2], self.vertex_of[m2] = p, self.vertex_of[m]
         self.points[p2], self.points[m2] = self.points[p], self.points[m]
+        self.xy[p2], self.xy[m2] = self.xy[p], self.xy[m]
         self.next[m], self.prev[p] = p, m
         self.next[last], self.prev[p2] = p2, last
         self.next[p2], self.prev[m2] = m2, p2
         self.next[m2], self.prev[after] = after, m2
+        for v in (*hole, last, p2, m2, m):
+            self.next_np[v] = self.next[v]
         self.live[list(hole)] = True
         self.live[[p2, m2]] = True
         self.size += len(hole) + 2
@@ -130,8 +136,8 @@ def join_hole(ring: BridgedRing, p: Vertex, m: Vertex, slot: int) -> tuple[Verte
 def _visible_slot(ring: BridgedRing, p: Point) -> int:
     """A slot of the ring that P sees, with P in its wedge: Eberly's, checked, else searched."""
     slots = np.flatnonzero(ring.live)
-    pts = np.asarray([ring.points[s] for s in slots], dtype=float)
-    nxt = np.asarray([ring.next[s] for s in slots])
+    pts = ring.xy[slots]
+    nxt = ring.next_np[slots]
     m = _eberly_slot(ring, p, slots, pts, nxt)
     if m is not None and _bridge_ok(ring, p, m, slots, pts, nxt):
         return m
@@ -185,7 +191,7 @@ def _exact_x(a: tuple, b: tuple, y: float) -> Fraction:
 
 
 def _eberly_slot(ring: BridgedRing, p: Point, slots, pts, nxt) -> int | None:
-    nxt_pts = np.asarray([ring.points[s] for s in nxt.tolist()], dtype=float).reshape(-1, 2)
+    nxt_pts = ring.xy[nxt]
     _, vertex, edge = _ray_hit(ring, p, slots, pts, nxt_pts)
     if vertex is not None:
         return _copy_seeing(ring, ring.points[vertex], p, slots, pts)
@@ -237,7 +243,7 @@ def _bridge_ok(ring: BridgedRing, p: Point, m: int, slots, pts, nxt) -> bool:
         return False
     lo = np.minimum(p, q)
     hi = np.maximum(p, q)
-    nxt_pts = np.asarray([ring.points[s] for s in nxt.tolist()], dtype=float).reshape(-1, 2)
+    nxt_pts = ring.xy[nxt]
     box_v = np.all((pts >= lo) & (pts <= hi), axis=1)
     for k in np.flatnonzero(box_v).tolist():
         r = tuple(map(float, pts[k]))
