@@ -6,8 +6,9 @@ is a vertex, P sees it. Otherwise let M be the end of the edge hit with the
 larger x: P sees M unless a reflex (or straight) vertex lies in the triangle
 P, I, M, and then it sees the one of those whose direction from P is nearest
 the ray's (the nearest on ties). The hole is spliced in along the bridge
-P–M, walked both ways: ``… M, P, (the hole), P, M, …``. The result is one weakly
-simple ring, with two more vertices per hole (the bridge's ends again).
+P–M, walked both ways: ``… M, P, (the hole), P′, M′, …``. The result is one weakly
+simple ring, with two more vertices per hole (the bridge's ends again, their labels
+primed), traced as the polygon ``keyhole``: the fruit with its keyhole cuts.
 
 Every decision is an exact sign: which side of the ray, of the edge hit and
 of P–M a vertex lies on, and which of two directions turns first. Points
@@ -59,8 +60,23 @@ class BridgedRing:
         self.live = np.zeros(size, dtype=bool)
         self.live[:outer] = True
         self.size = outer
+        self.copies = [0] * size  # slot's copy number: 0 the vertex itself, 1 its first copy …
         self.bridges: list[tuple[int, int]] = []  # (hole vertex P, vertex M), vertex indices
         self.fallbacks = 0
+
+    def label(self, s: int) -> str:
+        """The label of slot s: its vertex's, primed for each further copy (``D′``, ``D″`` …)."""
+        return self.shape.labels[self.vertex_of[s]] + _primes(self.copies[s])
+
+    @property
+    def trace_key(self) -> str:
+        return "keyhole"
+
+    def trace_state(self) -> dict:
+        """The weakly simple ring as a polygon: its slots' points and labels, in ring order."""
+        order = self.walk()
+        return {"kind": "polygon", "points": [list(self.points[s]) for s in order],
+                "labels": [self.label(s) for s in order]}
 
     def walk(self, start: int = 0) -> list[int]:
         """The slots in ring order from ``start``."""
@@ -79,6 +95,8 @@ class BridgedRing:
             self.next[v], self.prev[v] = shape.next(v), shape.prev(v)
         last, after = shape.prev(p), self.next[m]
         self.vertex_of[p2], self.vertex_of[m2] = p, self.vertex_of[m]
+        self.copies[p2] = 1
+        self.copies[m2] = 1 + sum(1 for s in range(shape.n, p2) if self.vertex_of[s] == self.vertex_of[m])
         self.points[p2], self.points[m2] = self.points[p], self.points[m]
         self.xy[p2], self.xy[m2] = self.xy[p], self.xy[m]
         self.next[m], self.prev[p] = p, m
@@ -100,6 +118,14 @@ class BridgedRing:
         if self.turn[s] > 0:
             return orient(pv, w, q) > 0 and orient(pv, u, q) < 0
         return orient(pv, w, q) > 0 or orient(pv, u, q) < 0
+
+
+def _primes(k: int) -> str:
+    """``′``, ``″``, ``‴``, then ``′⁴`` … for the k-th copy (none for 0)."""
+    return ("", "′", "″", "‴")[k] if k < 4 else f"′{str(k).translate(_SUPERSCRIPTS)}"
+
+
+_SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
 def _rightmost(shape, hole: int) -> int:

@@ -134,9 +134,11 @@ def ear_clipping(polygon: Polygon | PolygonWithHoles) -> Triangulation:
 def _ear_clipping_bridged(polygon: PolygonWithHoles) -> Triangulation:
     bridged = bridge_holes(polygon)
     ring = Ring.linked(bridged.points, bridged.prev, bridged.next, bridged.turn)
-    # a slot plays a vertex: its index is the slot, its label and point the vertex's
-    vertex = [Vertex(s, polygon.labels[v], polygon.points[v]) for s, v in enumerate(bridged.vertex_of)]
-    result = _clip_all(ring, vertex)
+    # a slot plays a vertex: its index is the slot, its point the vertex's, its label too
+    # (primed for a bridge end's second copy)
+    vertex = [Vertex(s, bridged.label(s), polygon.points[v]) for s, v in enumerate(bridged.vertex_of)]
+    with tracing.alive(bridged):  # the fruit with its keyhole cuts, while it is sliced
+        result = _clip_all(ring, vertex)
     slot = bridged.vertex_of
     return finished([(slot[a], slot[b], slot[c]) for a, b, c in result.triangles],
                     steps=result.steps, ear_tests=result.extra["ear_tests"],

@@ -6,6 +6,8 @@ cell of a grid inside the square [-0.6, 0.6]² and stays within 0.4 of the
 cell's width of that centre, so holes lie apart and inside. Holes are given
 counter-clockwise, as many files give them (the reader turns them clockwise).
 
+>>> [len(ring) for ring in HOLE_SAMPLES["keyhole"]]
+[8, 3, 4]
 >>> rings = swiss_cheese(40, 4, seed=1)
 >>> [len(r) for r in rings]
 [20, 5, 5, 5, 5]
@@ -16,10 +18,21 @@ True
 from __future__ import annotations
 
 import math
+from types import MappingProxyType
 
 import numpy as np
 
 from geometry.predicates import Point
+
+#: Fixed polygons with holes, by name (``trex check keyhole``): ``keyhole``, the explainer's
+#: fruit with two holes (a triangle and a quadrilateral, their bridges sharing a vertex).
+HOLE_SAMPLES: MappingProxyType[str, tuple[tuple[Point, ...], ...]] = MappingProxyType({
+    "keyhole": (
+        ((0, 0), (6, -1), (10, 1), (11, 5), (9, 9), (4, 10), (0, 8), (-1, 4)),
+        ((2, 3), (4, 2.5), (3.5, 5)),
+        ((6, 4), (8, 4.5), (7.5, 7), (5.5, 6.5)),
+    ),
+})
 
 
 def _star(center: Point, radius: tuple[float, float], k: int, rng: np.random.Generator) -> list[Point]:

@@ -230,7 +230,8 @@ class PolygonWithHoles:
 
     @property
     def trace_key(self) -> str:
-        return f"P({self.outer.trace_key[2:-1]}, {self.hole_count} holes)"
+        holes = self.hole_count
+        return f"P({self.outer.trace_key[2:-1]}, {holes} hole{'s' if holes > 1 else ''})"
 
     def trace_state(self) -> dict:
         rings = [self.ring(k) for k in range(len(self.starts) - 1)]

@@ -40,6 +40,7 @@ import shapely.errors
 import shapely.wkt
 
 from geometry.errors import HolesNotSupportedError, InputFormatError
+from geometry.hole_samples import HOLE_SAMPLES
 from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import Point
@@ -96,18 +97,23 @@ def read_polygon(arg: str | os.PathLike[str], *, ignore_holes: bool = False) -> 
     geometry.errors.InputFormatError: no such file or sample: no/such.json
     """
     path = Path(arg)
+    if not path.exists() and str(arg) in HOLE_SAMPLES:
+        return polygon_from_rings(HOLE_SAMPLES[str(arg)], ignore_holes=ignore_holes)
     if not path.exists() and is_sample(str(arg)):
         return Polygon.from_points(sample_from_spec(str(arg)))
     return polygon_from_rings(read_rings(path), ignore_holes=ignore_holes)
 
 
 def read_shape(arg: str | os.PathLike[str]) -> Shape:
-    """Like :func:`read_polygon`, but a polygon with holes is returned as one.
+    """Like :func:`read_polygon`, but a polygon with holes is returned as one (also the
+    samples of :data:`geometry.hole_samples.HOLE_SAMPLES`).
 
-    >>> read_shape("counterexample").n
-    5
+    >>> read_shape("counterexample").n, read_shape("keyhole").hole_count
+    (5, 2)
     """
     path = Path(arg)
+    if not path.exists() and str(arg) in HOLE_SAMPLES:
+        return shape_from_rings(HOLE_SAMPLES[str(arg)])
     if not path.exists() and is_sample(str(arg)):
         return Polygon.from_points(sample_from_spec(str(arg)))
     return shape_from_rings(read_rings(path))
