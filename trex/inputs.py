@@ -69,9 +69,10 @@ def try_load(arg: str, *, holes: bool = False) -> Polygon | None:
     return polygon
 
 
-def load_or_exit(arg: str) -> Polygon:
-    """The polygon of ``arg``; on failure report it and exit with status 2."""
-    polygon = try_load(arg)
+def load_or_exit(arg: str, *, holes: bool = False) -> Polygon:
+    """The polygon of ``arg`` (with holes, if ``holes``); on failure report it and exit with
+    status 2."""
+    polygon = try_load(arg, holes=holes)
     if polygon is None:
         raise click.exceptions.Exit(EXIT_INVALID)
     return polygon

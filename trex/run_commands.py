@@ -18,7 +18,7 @@ from geometry.check import is_inner_diagonal
 from geometry.errors import HolesNotSupportedError
 from geometry.io import Shape, write_atomic
 from geometry.polygon import Polygon
-from geometry.triangulate import triangulate
+from geometry.triangulate import HOLE_ALGORITHMS, triangulate
 from geometry.user_heuristics import (
     UserHeuristic,
     UserHeuristicError,
@@ -175,11 +175,11 @@ def log_command(algorithm: str, polygon: str, heuristic: str, output: str) -> No
     """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
     from story.runs import record_run  # geometry and tracing only: no manim
 
-    p = load_or_exit(polygon)
+    p = load_or_exit(polygon, holes=algorithm in HOLE_ALGORITHMS)
     try:  # the very log a scene records for this run, so that it replays the same video
         log = record_run(algorithm, p, polygon,
                          heuristic if algorithm in triangulations() else None)
-    except ValueError as exc:
+    except (ValueError, HolesNotSupportedError) as exc:
         fail(f"{polygon}: {exc}")
     try:
         write_atomic(Path(output), log.to_json())
