@@ -104,14 +104,7 @@ def vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME) -> VGro
     centre = np.mean(frame.many(polygon.points), axis=0)
     group = VGroup()
     for point, label in zip(polygon.points, polygon.labels, strict=True):
-        at = frame.to_scene(point)
-        away = at - centre
-        norm = np.linalg.norm(away)
-        direction = away / norm if norm > 1e-9 else DOWN
-        dot = Dot(at, radius=theme.dot_radius, color=theme.ink)
-        text = typeset.text(label, font=theme.font, size=theme.label_size, colour=theme.ink)
-        text.move_to(at + direction * 0.32)
-        group.add(VGroup(dot, text))
+        group.add(_marker(frame.to_scene(point), centre, label, theme, 0.32))
     return group
 
 

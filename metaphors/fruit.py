@@ -202,9 +202,12 @@ def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     """A slice cut off (``clip_ear``), or at the end of the run the triangle left over."""
     labels, points = walk.root_polygon()
-    ring = walk.live.get("keyhole")  # a polygon with holes: the ring its keyholes made
-    if ring is not None:
-        labels, points = ring["labels"], ring["points"]
+    # a polygon with holes: the ring its keyholes made (kept: it has exited by the last slice)
+    kept = walk.memo("fruit.keyhole", dict)
+    if "keyhole" in walk.live:
+        kept.update(walk.live["keyhole"])
+    if kept:
+        labels, points = kept["labels"], kept["points"]
     if not labels:
         return
     clipped = walk.memo("fruit.clipped", list)  # the ears cut so far

@@ -312,3 +312,52 @@ def test_simple_polygons_are_untouched_by_holes_support():
     shape = read_shape("counterexample")
     assert shape.hole_count == 0 and type(shape).__name__ == "Polygon"
     assert triangulate(shape, "ear-clipping").triangles == [(0, 1, 4), (1, 2, 4), (2, 3, 4)]
+
+
+# --- the log and the beats of a run with holes ------------------------------------------------
+
+
+def test_monotone_sweep_meets_each_hole_at_a_split_and_a_merge_vertex():
+    from geometry.monotone import Sweep, classify_vertex
+
+    shape = read_shape("keyhole")
+    sweep = Sweep(shape)
+    kinds = {shape.labels[i]: classify_vertex(sweep, shape.vertex(i)) for i in range(shape.n)}
+    for hole in range(1, shape.hole_count + 1):
+        ring = list(shape.ring(hole))
+        top = max(ring, key=lambda i: (shape.points[i][1], -shape.points[i][0]))
+        bottom = min(ring, key=lambda i: (shape.points[i][1], -shape.points[i][0]))
+        assert kinds[shape.labels[top]] == "split" and kinds[shape.labels[bottom]] == "merge"
+
+
+def test_ear_clipping_log_has_keyholes_and_every_slice():
+    from metaphors import catalog
+    from metaphors.fruit import Keyhole, LastSlice, Slice
+    from story.runs import run_logged
+
+    log = run_logged("ear-clipping", "keyhole")
+    shape = read_shape("keyhole")
+    joins = [e for e in log.events if e.kind == "return" and e.name == "join_hole"]
+    assert len(joins) == shape.hole_count
+    ring = next(e.state for e in log.events if e.kind == "enter" and e.target == "keyhole")
+    assert len(ring["labels"]) == len(set(ring["labels"])) == shape.n + 2 * shape.hole_count
+    beats = catalog.beats(log)
+    assert [b.hole for b in beats if isinstance(b, Keyhole)] == [2, 1]  # right-most first
+    slices = [b for b in beats if isinstance(b, Slice)]
+    assert len(slices) == shape.n + 2 * shape.hole_count - 2
+    assert isinstance(slices[-1], LastSlice) and slices[-1].rest == []
+    assert log.meta["pseudocode"][0][1] == ["join_hole"]
+
+
+def test_simple_polygon_log_meta_is_unchanged():
+    from story.runs import run_logged
+
+    assert "pseudocode" not in run_logged("ear-clipping", "lecture").meta
+
+
+def test_trex_log_with_holes(tmp_path):
+    out = tmp_path / "run.json"
+    assert invoke("log", "ear-clipping", "keyhole", "-o", str(out)).exit_code == 0
+    assert '"join_hole"' in out.read_text()
+    result = invoke("log", "prune-and-search", "keyhole", "-o", str(out))
+    assert result.exit_code == 2 and "holes are not supported here" in result.stderr
