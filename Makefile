@@ -29,6 +29,7 @@ lint: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python -m bench.trace_overhead
 	$(BIN)/python -m bench.algorithms
+	$(BIN)/python -m bench.holes
 	$(BIN)/python -m bench.render
 	$(BIN)/python -m bench.lecture
 	$(BIN)/python -m bench.slides

@@ -13,19 +13,29 @@ from __future__ import annotations
 import shapely
 
 import tracing
+from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import orient
 from geometry.results import Triangle, Triangulation, canonical, finished
 
 
-def constrained_delaunay(polygon: Polygon) -> list[Triangle]:
+def shapely_polygon(polygon: Polygon | PolygonWithHoles) -> shapely.Polygon:
+    """The same polygon (its holes as interior rings) for shapely."""
+    if not polygon.hole_count:
+        return shapely.Polygon(polygon.points)
+    rings = [polygon.points[r.start:r.stop] for r in map(polygon.ring, range(polygon.hole_count + 1))]
+    return shapely.Polygon(rings[0], rings[1:])
+
+
+def constrained_delaunay(polygon: Polygon | PolygonWithHoles) -> list[Triangle]:
     """Triangles as counter-clockwise index triples, sorted, in this polygon's indexing.
 
     GEOS keeps every input vertex (collinear ones too) and adds none, so each
-    triangle corner is an exact copy of one of our vertices.
+    triangle corner is an exact copy of one of our vertices (the rings of a
+    polygon with holes share no point, so the copy names one vertex).
     """
     index = {p: i for i, p in enumerate(polygon.points)}
-    result = shapely.constrained_delaunay_triangles(shapely.Polygon(polygon.points))
+    result = shapely.constrained_delaunay_triangles(shapely_polygon(polygon))
     triangles = []
     for tri in shapely.get_parts(result):
         a, b, c = (index[(float(x), float(y))] for x, y in tri.exterior.coords[:3])
@@ -36,6 +46,6 @@ def constrained_delaunay(polygon: Polygon) -> list[Triangle]:
 
 
 @tracing.traced(name="cdt")
-def cdt(polygon: Polygon) -> Triangulation:
+def cdt(polygon: Polygon | PolygonWithHoles) -> Triangulation:
     """The reference as a triangulation algorithm: shapely's (GEOS) constrained Delaunay."""
     return finished(constrained_delaunay(polygon))

@@ -25,6 +25,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
+from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import (
     Contact,
@@ -145,7 +146,7 @@ def _first_crossing(polygon: Polygon, i: int, j: int) -> Verdict | None:
     )
 
 
-def verify_triangulation(polygon: Polygon, triangles: Iterable[Sequence[int]]) -> Verdict:
+def verify_triangulation(polygon: Polygon | PolygonWithHoles, triangles: Iterable[Sequence[int]]) -> Verdict:
     """Whether the triangles (vertex-index triples) triangulate the polygon, exactly.
 
     Certificate: every triangle is non-degenerate and counter-clockwise once
@@ -154,12 +155,19 @@ def verify_triangulation(polygon: Polygon, triangles: Iterable[Sequence[int]]) -
     Then the sum of the triangles' indicator functions equals the winding
     number of the boundary, 1 inside and 0 outside: the triangles cover the
     polygon with disjoint interiors. No floating point is involved.
+
+    A :class:`geometry.holes.PolygonWithHoles` is checked the same way: its holes
+    run clockwise, so the winding number is 0 inside them, and a triangulation
+    has ``n + 2h - 2`` triangles (Euler's formula for h holes).
     """
     tris = [tuple(t) for t in triangles]
-    n = polygon.n
-    if len(tris) != n - 2:
+    n, holes = polygon.n, polygon.hole_count
+    expected = n + 2 * holes - 2
+    if len(tris) != expected:
+        rings = f" and {holes} hole{'s' if holes > 1 else ''}" if holes else ""
         return Verdict(
-            False, f"wrong number of triangles: {len(tris)} for {n} vertices (expected {n - 2})",
+            False,
+            f"wrong number of triangles: {len(tris)} for {n} vertices{rings} (expected {expected})",
             "count",
         )
     directed: Counter[tuple[int, int]] = Counter()

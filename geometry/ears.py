@@ -34,6 +34,8 @@ import numpy as np
 
 import tracing
 from geometry.batch import PointTable
+from geometry.bridges import bridge_holes
+from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon, Vertex
 from geometry.predicates import orient
 from geometry.results import Corners, Triangulation, finished, indices
@@ -117,9 +119,33 @@ def clip_ear(ring: Ring, a: Vertex, b: Vertex, c: Vertex) -> Corners:
 
 
 @tracing.traced(name="ear-clipping")
-def ear_clipping(polygon: Polygon) -> Triangulation:
-    """Walk round the polygon clipping ears; only the neighbours of a clip are re-tested."""
+def ear_clipping(polygon: Polygon | PolygonWithHoles) -> Triangulation:
+    """Walk round the polygon clipping ears; only the neighbours of a clip are re-tested.
+
+    A polygon with holes is first made one weakly simple ring by bridges
+    (:func:`geometry.bridges.bridge_holes`); its slots then play the vertices.
+    """
+    if polygon.hole_count:
+        return _ear_clipping_bridged(polygon)
     ring, vertex = Ring(polygon), _vertices(polygon)
+    return _clip_all(ring, vertex)
+
+
+def _ear_clipping_bridged(polygon: PolygonWithHoles) -> Triangulation:
+    bridged = bridge_holes(polygon)
+    ring = Ring.linked(bridged.points, bridged.prev, bridged.next, bridged.turn)
+    # a slot plays a vertex: its index is the slot, its point the vertex's, its label too
+    # (primed for a bridge end's second copy)
+    vertex = [Vertex(s, bridged.label(s), polygon.points[v]) for s, v in enumerate(bridged.vertex_of)]
+    with tracing.alive(bridged):  # the fruit with its keyhole cuts, while it is sliced
+        result = _clip_all(ring, vertex)
+    slot = bridged.vertex_of
+    return finished([(slot[a], slot[b], slot[c]) for a, b, c in result.triangles],
+                    steps=result.steps, ear_tests=result.extra["ear_tests"],
+                    bridges=len(bridged.bridges), bridge_searches=bridged.fallbacks)
+
+
+def _clip_all(ring: Ring, vertex: list[Vertex]) -> Triangulation:
     triangles, v, passed = [], 0, 0
     while ring.size > 3:
         if ring.ear[v] is None:

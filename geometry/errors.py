@@ -46,3 +46,7 @@ class HolesNotSupportedError(PolygonError):
 
 class UnknownSampleError(GeometryError):
     """No sample or generator of that name."""
+
+
+class HoleError(PolygonError):
+    """A hole crosses or touches another ring, lies outside the polygon or inside another hole."""

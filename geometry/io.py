@@ -40,15 +40,20 @@ import shapely.errors
 import shapely.wkt
 
 from geometry.errors import HolesNotSupportedError, InputFormatError
+from geometry.hole_samples import HOLE_SAMPLES
+from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import Point
 from geometry.samples import is_sample, sample_from_spec
 
 __all__ = [
+    "Shape",
     "polygon_from_rings",
     "polygon_to_json_points",
     "read_polygon",
     "read_rings",
+    "read_shape",
+    "shape_from_rings",
     "to_dat",
     "to_geojson",
     "to_wkt",
@@ -58,14 +63,16 @@ __all__ = [
 
 _FORMATS = ".json, .geojson, .wkt or .dat"
 Ring = Sequence[object]
+Shape = Polygon | PolygonWithHoles
 
 # --- reading -----------------------------------------------------------------
 
 
 def read_polygon(arg: str | os.PathLike[str], *, ignore_holes: bool = False) -> Polygon:
-    """The polygon in file ``arg``, or the sample it names (``NAME[:N[:SEED]]``).
+    """The simple polygon in file ``arg``, or the sample it names (``NAME[:N[:SEED]]``).
 
-    An existing path wins over a sample of the same name.
+    An existing path wins over a sample of the same name. Holes are validated
+    (a defect is named), then refused: use :func:`read_shape` where they are welcome.
 
     Parameters
     ----------
@@ -90,23 +97,54 @@ def read_polygon(arg: str | os.PathLike[str], *, ignore_holes: bool = False) -> 
     geometry.errors.InputFormatError: no such file or sample: no/such.json
     """
     path = Path(arg)
+    if not path.exists() and str(arg) in HOLE_SAMPLES:
+        return polygon_from_rings(HOLE_SAMPLES[str(arg)], ignore_holes=ignore_holes)
     if not path.exists() and is_sample(str(arg)):
         return Polygon.from_points(sample_from_spec(str(arg)))
     return polygon_from_rings(read_rings(path), ignore_holes=ignore_holes)
 
 
+def read_shape(arg: str | os.PathLike[str]) -> Shape:
+    """Like :func:`read_polygon`, but a polygon with holes is returned as one (also the
+    samples of :data:`geometry.hole_samples.HOLE_SAMPLES`).
+
+    >>> read_shape("counterexample").n, read_shape("keyhole").hole_count
+    (5, 2)
+    """
+    path = Path(arg)
+    if not path.exists() and str(arg) in HOLE_SAMPLES:
+        return shape_from_rings(HOLE_SAMPLES[str(arg)])
+    if not path.exists() and is_sample(str(arg)):
+        return Polygon.from_points(sample_from_spec(str(arg)))
+    return shape_from_rings(read_rings(path))
+
+
+def shape_from_rings(rings: Sequence[Ring]) -> Shape:
+    """A :class:`Polygon` for one ring, a validated :class:`PolygonWithHoles` for more.
+
+    >>> shape_from_rings([[[0, 0], [4, 0], [0, 4]], [[1, 1], [1, 2], [2, 1]]]).hole_count
+    1
+    """
+    if len(rings) > 1:
+        return PolygonWithHoles.from_rings(rings)
+    return Polygon.from_points(rings[0] if rings else [])
+
+
 def polygon_from_rings(rings: Sequence[Ring], *, ignore_holes: bool = False) -> Polygon:
-    """Validate the outer ring of ``rings``; holes are an error unless ignored.
+    """Validate the outer ring of ``rings``; valid holes are an error unless ignored.
 
     >>> polygon_from_rings([[[0, 0], [4, 0], [0, 4]], [[1, 1], [2, 1], [1, 2]]])
     Traceback (most recent call last):
     ...
-    geometry.errors.HolesNotSupportedError: polygon has 1 hole; holes are not supported
+    geometry.errors.HolesNotSupportedError: polygon has 1 hole; holes are not supported here
     """
     holes = len(rings) - 1
     if holes > 0 and not ignore_holes:
+        PolygonWithHoles.from_rings(rings)  # a defect of the rings is named first
         plural = "s" if holes > 1 else ""
-        raise HolesNotSupportedError(f"polygon has {holes} hole{plural}; holes are not supported")
+        raise HolesNotSupportedError(
+            f"polygon has {holes} hole{plural}; holes are not supported here"
+        )
     return Polygon.from_points(rings[0] if rings else [])
 
 

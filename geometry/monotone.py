@@ -37,6 +37,7 @@ from __future__ import annotations
 import numpy as np
 
 import tracing
+from geometry.holes import PolygonWithHoles
 from geometry.monotone_pieces import monotone_pieces, triangulate_monotone_piece
 from geometry.polygon import Polygon, Vertex
 from geometry.results import Triangulation, finished
@@ -46,7 +47,7 @@ from geometry.sweep_status import SweepStatus
 class Sweep:
     """What the sweep knows: the order of the vertices, their kinds, the status, the diagonals."""
 
-    def __init__(self, polygon: Polygon) -> None:
+    def __init__(self, polygon: Polygon | PolygonWithHoles) -> None:
         self.polygon = polygon
         arr = np.asarray(polygon.points, dtype=float)
         self.order = np.lexsort((arr[:, 0], -arr[:, 1])).tolist()  # highest first
@@ -54,16 +55,17 @@ class Sweep:
         for r, v in enumerate(self.order):
             self.rank[v] = r
         self.turns = polygon.turns.tolist()
+        self.next, self.prev = polygon.next_array, polygon.prev_array
         self.kind = [""] * polygon.n
-        self.status = SweepStatus(polygon.points)
+        self.status = SweepStatus(polygon.points, self.next)
         self.diagonals: list[tuple[int, int]] = []
 
 
 @tracing.traced(exclude_args=("sweep",))
 def classify_vertex(sweep: Sweep, v: Vertex) -> str:
     """The line reaches v: start, split, end, merge or regular, from its neighbours' heights."""
-    n, i, rank = sweep.polygon.n, v.index, sweep.rank
-    before_lower, after_lower = rank[(i - 1) % n] > rank[i], rank[(i + 1) % n] > rank[i]
+    i, rank = v.index, sweep.rank
+    before_lower, after_lower = rank[sweep.prev[i]] > rank[i], rank[sweep.next[i]] > rank[i]
     convex = sweep.turns[i] > 0
     if before_lower and after_lower:
         kind = "start" if convex else "split"
@@ -91,7 +93,7 @@ def _finish_edge(sweep: Sweep, v: Vertex, e: int) -> None:
 
 def _end_edge_above(sweep: Sweep, v: Vertex) -> int:
     """The edge from v's predecessor ends at v; where v is in the status."""
-    e = (v.index - 1) % sweep.polygon.n
+    e = sweep.prev[v.index]
     at = sweep.status.find(v.index, own=e)
     _finish_edge(sweep, v, e)
     sweep.status.remove(at, e)
@@ -131,8 +133,8 @@ def handle_merge(sweep: Sweep, v: Vertex) -> None:
 
 @tracing.traced(exclude_args=("sweep",))
 def handle_regular(sweep: Sweep, v: Vertex) -> None:
-    n, i = sweep.polygon.n, v.index
-    e = (i - 1) % n
+    i = v.index
+    e = sweep.prev[i]
     if sweep.rank[e] < sweep.rank[i]:  # coming down a left side: inside on the right
         at = sweep.status.find(i, own=e)
         _finish_edge(sweep, v, e)
@@ -151,7 +153,7 @@ HANDLERS = {
 
 
 @tracing.traced
-def make_monotone(polygon: Polygon) -> list[tuple[int, int]]:
+def make_monotone(polygon: Polygon | PolygonWithHoles) -> list[tuple[int, int]]:
     """The sweep: diagonals that cut the polygon into y-monotone pieces."""
     sweep = Sweep(polygon)
     for i in sweep.order:
@@ -161,8 +163,13 @@ def make_monotone(polygon: Polygon) -> list[tuple[int, int]]:
 
 
 @tracing.traced(name="monotone")
-def monotone(polygon: Polygon) -> Triangulation:
-    """Cut into y-monotone pieces, then triangulate each piece with a stack."""
+def monotone(polygon: Polygon | PolygonWithHoles) -> Triangulation:
+    """Cut into y-monotone pieces, then triangulate each piece with a stack.
+
+    Holes need nothing more: kept clockwise, each hole's top vertex is a split
+    vertex and its bottom one a merge vertex, so the diagonals join every hole
+    to the rest and each piece is a y-monotone polygon without holes.
+    """
     diagonals = make_monotone(polygon)
     triangles = []
     for piece in monotone_pieces(polygon, diagonals):

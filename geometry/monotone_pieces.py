@@ -58,26 +58,26 @@ class MonotonePiece:
 @tracing.traced(exclude_args=("diagonals",))
 def monotone_pieces(polygon: Polygon, diagonals: list[tuple[int, int]]) -> list[MonotonePiece]:
     """The faces of the polygon cut along the diagonals, each counter-clockwise."""
-    n = polygon.n
+    n, nxt = polygon.n, polygon.next_array
     around = _fans(polygon, diagonals)
     seen_edge = bytearray(n)
     seen_diagonal: set[tuple[int, int]] = set()
-    starts = [(i, (i + 1) % n) for i in range(n)]
+    starts = [(i, nxt[i]) for i in range(n)]
     starts += [pair for u, w in diagonals for pair in ((u, w), (w, u))]
     pieces: list[MonotonePiece] = []
     for a, b in starts:
-        if (b == (a + 1) % n and seen_edge[a]) or (a, b) in seen_diagonal:
+        if (b == nxt[a] and seen_edge[a]) or (a, b) in seen_diagonal:
             continue
         ids = []
         start = (a, b)
         while True:
             ids.append(a)
-            if b == (a + 1) % n:
+            if b == nxt[a]:
                 seen_edge[a] = 1
             else:
                 seen_diagonal.add((a, b))
             fan = around.get(b)
-            c = (b + 1) % n if fan is None else fan[fan.index(a) - 1]
+            c = nxt[b] if fan is None else fan[fan.index(a) - 1]
             a, b = b, c
             if (a, b) == start:
                 break
@@ -87,14 +87,14 @@ def monotone_pieces(polygon: Polygon, diagonals: list[tuple[int, int]]) -> list[
 
 def _fans(polygon: Polygon, diagonals: list[tuple[int, int]]) -> dict[int, list[int]]:
     """For each vertex with diagonals: its neighbours counter-clockwise, from next to prev."""
-    n, points = polygon.n, polygon.points
+    points, nxt_of, prv_of = polygon.points, polygon.next_array, polygon.prev_array
     partners: dict[int, list[int]] = {}
     for u, w in diagonals:
         partners.setdefault(u, []).append(w)
         partners.setdefault(w, []).append(u)
     fans = {}
     for v, others in partners.items():
-        nxt, prv = (v + 1) % n, (v - 1) % n
+        nxt, prv = nxt_of[v], prv_of[v]
         pv, ref = points[v], points[nxt]
 
         def half(p: int, pv=pv, ref=ref) -> int:  # 0: within π counter-clockwise of v→next

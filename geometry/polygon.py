@@ -65,10 +65,15 @@ def _is_counter_clockwise(points: list[Point]) -> bool:
     return signed_area2(points) > 0
 
 
+def orientation_step(points: list[Point]) -> int:
+    """1 when the ring runs counter-clockwise, -1 when clockwise (exact)."""
+    return 1 if _is_counter_clockwise(points) else -1
+
+
 def _ccw_order(points: list[Point]) -> list[int]:
     """Input indices in counter-clockwise order, starting one before the left-most."""
     n = len(points)
-    step = 1 if _is_counter_clockwise(points) else -1
+    step = orientation_step(points)
     start = leftmost_index(points) - step
     return [(start + step * k) % n for k in range(n)]
 
@@ -160,11 +165,26 @@ class Polygon:
     def n(self) -> int:
         return len(self.points)
 
+    @property
+    def hole_count(self) -> int:
+        """A simple polygon has none (see :class:`geometry.holes.PolygonWithHoles`)."""
+        return 0
+
     def next(self, i: int) -> int:
         return (i + 1) % len(self.points)
 
     def prev(self, i: int) -> int:
         return (i - 1) % len(self.points)
+
+    @cached_property
+    def next_array(self) -> list[int]:
+        """``next(i)`` of every vertex, as a list (shared with polygons with holes)."""
+        return [*range(1, self.n), 0]
+
+    @cached_property
+    def prev_array(self) -> list[int]:
+        """``prev(i)`` of every vertex, as a list."""
+        return [self.n - 1, *range(self.n - 1)]
 
     def edges(self) -> Iterator[tuple[int, int]]:
         """Edges as index pairs (i, i+1), counter-clockwise."""

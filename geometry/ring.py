@@ -42,11 +42,24 @@ class Ring:
 
     def __init__(self, polygon: Polygon) -> None:
         n = polygon.n
-        self.points = polygon.points
-        self.prev = [n - 1, *range(n - 1)]
-        self.next = [*range(1, n), 0]
-        self.turn = [int(t) for t in polygon.turns]
-        self.size = n
+        self._link(polygon.points, [n - 1, *range(n - 1)], [*range(1, n), 0],
+                   [int(t) for t in polygon.turns], n)
+
+    @classmethod
+    def linked(cls, points: list[Point], prev: list[int], nxt: list[int], turn: list[int]) -> Ring:
+        """A ring given by its links: a polygon whose holes are bridged (weakly simple).
+
+        Every slot must be in the ring; slots may share a point (a bridge's ends).
+        """
+        ring = cls.__new__(cls)
+        ring._link(points, list(prev), list(nxt), list(turn), len(points))
+        return ring
+
+    def _link(self, points, prev: list[int], nxt: list[int], turn: list[int], size: int) -> None:
+        n = len(points)
+        self.points = points
+        self.prev, self.next, self.turn = prev, nxt, turn
+        self.size = size
         self.ear: list[bool | None] = [None] * n  # None: not known since the last change
         self.ear_tests = 0
         self.obstacles = Obstacles(self.points, [i for i in range(n) if self.turn[i] <= 0])
@@ -98,7 +111,12 @@ class Obstacles:
             self.count -= 1
 
     def first_in(self, a: int, b: int, c: int) -> int | None:
-        """An obstacle other than a, b, c in the closed ccw triangle abc, or None."""
+        """An obstacle other than a, b, c in the closed ccw triangle abc, or None.
+
+        An obstacle at a corner's very point (a bridge's end again, in a polygon
+        whose holes are bridged) does not count: its edges run outside the
+        triangle, or along its sides, or to a vertex inside it that counts.
+        """
         if self.count == 0:
             return None
         pa, pb, pc = self.points[a], self.points[b], self.points[c]
@@ -111,9 +129,11 @@ class Obstacles:
             idx = np.asarray(candidates)
             inside = in_triangle_many(pa, pb, pc, self.coords[0][idx], self.coords[1][idx])
             hits = idx[inside & (idx != a) & (idx != b) & (idx != c)]
-            return int(hits[0]) if len(hits) else None
+            corners = (pa, pb, pc)
+            return next((int(i) for i in hits if self.points[i] not in corners), None)
         for i in candidates:
-            if i != a and i != b and i != c and in_closed_triangle(self.points[i], pa, pb, pc):
+            if i != a and i != b and i != c and in_closed_triangle(self.points[i], pa, pb, pc) \
+                    and self.points[i] not in (pa, pb, pc):
                 return i
         return None
 

@@ -2,7 +2,9 @@
 
 The line moves down. The edges kept are those with the polygon's inside on
 their right, which for a counter-clockwise polygon are exactly the edges that
-run downwards: edge k goes from vertex k (higher) to vertex k+1 (lower).
+run downwards: edge k goes from vertex k (higher) to vertex k+1 (lower). (A
+polygon with holes keeps its holes clockwise, so the same holds for their
+edges; edge k then ends at ``nxt[k]``, the next vertex round its ring.)
 "Higher" is lexicographic — larger y, or equal y and smaller x — as if the
 picture were turned by an infinitesimal angle, so no edge is horizontal and no
 two vertices are level. That turn keeps every orientation, so the order needs
@@ -30,9 +32,11 @@ from geometry.predicates import ORIENT_BOUND, TINY, Point, orient  # the float f
 class SweepStatus:
     """Downward edges crossing the sweep line, left to right, each with its helper vertex."""
 
-    def __init__(self, points: Sequence[Point]) -> None:
+    def __init__(self, points: Sequence[Point], nxt: Sequence[int] | None = None) -> None:
         self.points = points
         self.n = len(points)
+        # edge k ends at nxt[k]: k + 1 round one ring, or round each ring of a polygon with holes
+        self.nxt = list(nxt) if nxt is not None else [*range(1, self.n), 0]
         self.xs = [p[0] for p in points]
         self.ys = [p[1] for p in points]
         self.edges: list[int] = []
@@ -40,7 +44,7 @@ class SweepStatus:
 
     def find(self, v: int, own: int = -1) -> int:
         """Where vertex v is: how many edges lie strictly left of it (its own edge ``own`` not)."""
-        xs, ys, edges, n = self.xs, self.ys, self.edges, self.n
+        xs, ys, edges, nxt = self.xs, self.ys, self.edges, self.nxt
         px, py = xs[v], ys[v]
         lo, hi = 0, len(edges)
         while lo < hi:
@@ -49,7 +53,7 @@ class SweepStatus:
             if k == own:
                 hi = mid
                 continue
-            after = k + 1 if k + 1 < n else 0
+            after = nxt[k]
             # orient(v_k, v_k+1, p) > 0, with the float filter of geometry.predicates
             # inlined: this test is the inner loop of the whole sweep.
             left = (xs[k] - px) * (ys[after] - py)

@@ -22,6 +22,8 @@ from collections.abc import Callable
 from geometry.cdt import cdt
 from geometry.check import verify_triangulation
 from geometry.ears import ear_clipping, ear_clipping_naive
+from geometry.errors import HolesNotSupportedError
+from geometry.holes import PolygonWithHoles
 from geometry.lennes import divide_and_conquer
 from geometry.monotone import monotone
 from geometry.polygon import Polygon
@@ -41,15 +43,37 @@ RUNNERS: dict[str, Callable[[Polygon], Triangulation]] = {
 #: Every algorithm :func:`triangulate` knows, in the order the command line lists them.
 ALGORITHMS = ("divide-and-conquer", *RUNNERS)
 
+#: The algorithms that triangulate a polygon with holes (the others need a simple polygon).
+HOLE_ALGORITHMS = ("ear-clipping", "monotone", "cdt")
 
-def triangulate(polygon: Polygon, algorithm: str,
+
+def refuse_holes(polygon: Polygon | PolygonWithHoles, algorithm: str) -> None:
+    """Raise :class:`HolesNotSupportedError` when ``algorithm`` cannot take the polygon's holes.
+
+    >>> from geometry.holes import PolygonWithHoles
+    >>> p = PolygonWithHoles.from_rings([[(0, 0), (6, 0), (6, 6), (0, 6)], [(2, 2), (4, 2), (3, 4)]])
+    >>> refuse_holes(p, "prune-and-search")
+    Traceback (most recent call last):
+    ...
+    geometry.errors.HolesNotSupportedError: prune-and-search needs a simple polygon and this one has 1 hole; ear-clipping, monotone and cdt triangulate polygons with holes
+    """
+    holes = polygon.hole_count
+    if holes and algorithm not in HOLE_ALGORITHMS:
+        can = ", ".join(HOLE_ALGORITHMS[:-1]) + f" and {HOLE_ALGORITHMS[-1]}"
+        raise HolesNotSupportedError(
+            f"{algorithm} needs a simple polygon and this one has {holes} hole"
+            f"{'s' if holes > 1 else ''}; {can} triangulate polygons with holes"
+        )
+
+
+def triangulate(polygon: Polygon | PolygonWithHoles, algorithm: str,
                 heuristic: str | UserHeuristic | None = None) -> Triangulation:
     """Run a triangulation algorithm by name and verify its answer exactly.
 
     Parameters
     ----------
-    polygon : Polygon
-        The polygon to triangulate.
+    polygon : Polygon or PolygonWithHoles
+        The polygon to triangulate; one with holes only by :data:`HOLE_ALGORITHMS`.
     algorithm : str
         One of :data:`ALGORITHMS`.
     heuristic : str or UserHeuristic, optional
@@ -58,12 +82,19 @@ def triangulate(polygon: Polygon, algorithm: str,
         :mod:`geometry.user_heuristics` (its one-line errors and time limit apply); the other
         algorithms take none and ignore it.
 
+    Raises
+    ------
+    HolesNotSupportedError
+        When the polygon has holes and the algorithm needs a simple polygon.
+
     Returns
     -------
     Triangulation
         The algorithm's answer; not ``valid`` (with the reason in ``failure``)
         when it stopped early or its triangles fail :func:`verify_triangulation`.
     """
+    if algorithm in ALGORITHMS:
+        refuse_holes(polygon, algorithm)
     if algorithm == "divide-and-conquer":
         result = divide_and_conquer(polygon, diagonal_rule(heuristic))
     elif algorithm in RUNNERS:

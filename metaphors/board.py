@@ -14,7 +14,7 @@ from manim import FadeIn, FadeOut, Scene, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.captions import captions_of, whole_frames
-from metaphors.drawing import Frame, polygon_mobject, vertex_markers
+from metaphors.drawing import Frame, hole_markers, polygon_mobject, vertex_markers
 from metaphors.layout import METAPHOR, SUBTITLE_Y, TITLE_Y, Box
 from metaphors.panel import Panel
 from metaphors.tags import tag
@@ -34,18 +34,23 @@ class Board:
     """Everything on screen, and the play loop's helpers."""
 
     def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
-                 theme: Theme = THEME, box: Box = METAPHOR):
+                 theme: Theme = THEME, box: Box = METAPHOR, holes=()):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
+        self.holes = list(holes)  # each {"points", "labels"}: drawn unfilled, their vertices marked
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
-        self.shape = tag(polygon_mobject(self.polygon, self.frame, theme), "idle", "polygon")
+        self.shape = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
+                         "polygon")
         self.markers = {
             label: tag(m, "idle", f"vertex:{label}")
-            for label, m in zip(labels, vertex_markers(self.polygon, self.frame, theme),
-                                strict=True)
+            for label, m in [*zip(labels, vertex_markers(self.polygon, self.frame, theme),
+                                  strict=True), *hole_markers(self.holes, self.frame, theme)]
         }
-        self.panel = Panel(points, labels, shown, theme)
+        self.where = {label: p for label, p in zip(labels, self.polygon.points, strict=True)}
+        self.where.update({label: tuple(p) for hole in self.holes
+                           for label, p in zip(hole["labels"], hole["points"], strict=True)})
+        self.panel = Panel(points, labels, shown, theme, self.holes)
         self.title = tag(glyphs(title, font=theme.font, size=30, colour=theme.ink), None, "title")
         self.title.move_to((0, TITLE_Y, 0))
         self.subtitle = tag(text(" ", font=theme.font, size=theme.caption_size), None,
@@ -62,7 +67,7 @@ class Board:
         return self.frame.to_scene(p)
 
     def vertex(self, label: str) -> np.ndarray:
-        return self.at(self.polygon.points[self.polygon.labels.index(label)])
+        return self.at(self.where[label])
 
     def length(self, d: float) -> float:
         """Scene length of a polygon-coordinate length."""

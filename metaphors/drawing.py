@@ -6,7 +6,7 @@ import copy
 from collections.abc import Sequence
 
 import numpy as np
-from manim import DOWN, Dot, VGroup
+from manim import DOWN, Dot, Polygram, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
@@ -66,15 +66,41 @@ class Frame:
         return [self.to_scene(p) for p in points]
 
 
-def polygon_mobject(polygon: Polygon, frame: Frame, theme: Theme = THEME) -> MPolygon:
-    """The polygon's outline with a light fill."""
-    return MPolygon(
-        *frame.many(polygon.points),
-        color=theme.ink,
-        stroke_width=theme.stroke,
-        fill_color=theme.polygon_fill,
-        fill_opacity=theme.fill_opacity,
-    )
+def polygon_mobject(polygon: Polygon, frame: Frame, theme: Theme = THEME,
+                    holes: Sequence[dict] = ()) -> MPolygon | Polygram:
+    """The polygon's outline with a light fill; with ``holes`` (each ``{"points": …}``,
+    clockwise) one mobject of several rings, the holes left unfilled (winding number 0)."""
+    style = {"color": theme.ink, "stroke_width": theme.stroke, "fill_color": theme.polygon_fill,
+             "fill_opacity": theme.fill_opacity}
+    if holes:
+        rings = [frame.many(polygon.points), *(frame.many(h["points"]) for h in holes)]
+        return Polygram(*[[*ring, ring[0]] for ring in rings], **style)
+    return MPolygon(*frame.many(polygon.points), **style)
+
+
+def hole_markers(holes: Sequence[dict], frame: Frame, theme: Theme = THEME) -> list:
+    """(label, marker) for every hole vertex; a label sits away from its hole's centre, in
+    the region."""
+    out = []
+    for hole in holes:
+        centre = np.mean(frame.many(hole["points"]), axis=0)
+        for point, label in zip(hole["points"], hole["labels"], strict=True):
+            # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % of
+            # the frame's height
+            out.append((label, _marker(frame.to_scene(point), centre, label, theme, 0.3,
+                                       theme.label_size + 4)))
+    return out
+
+
+def _marker(at, centre, label: str, theme: Theme, gap: float,
+            size: float | None = None) -> VGroup:
+    away = at - centre
+    norm = np.linalg.norm(away)
+    direction = away / norm if norm > 1e-9 else DOWN
+    dot = Dot(at, radius=theme.dot_radius, color=theme.ink)
+    text = typeset.text(label, font=theme.font, size=size or theme.label_size, colour=theme.ink)
+    text.move_to(at + direction * gap)
+    return VGroup(dot, text)
 
 
 def vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME) -> VGroup:
@@ -82,14 +108,7 @@ def vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME) -> VGro
     centre = np.mean(frame.many(polygon.points), axis=0)
     group = VGroup()
     for point, label in zip(polygon.points, polygon.labels, strict=True):
-        at = frame.to_scene(point)
-        away = at - centre
-        norm = np.linalg.norm(away)
-        direction = away / norm if norm > 1e-9 else DOWN
-        dot = Dot(at, radius=theme.dot_radius, color=theme.ink)
-        text = typeset.text(label, font=theme.font, size=theme.label_size, colour=theme.ink)
-        text.move_to(at + direction * 0.32)
-        group.add(VGroup(dot, text))
+        group.add(_marker(frame.to_scene(point), centre, label, theme, 0.32))
     return group
 
 

@@ -15,6 +15,7 @@ from manim import (
     FadeOut,
     Indicate,
     Line,
+    Polygram,
     Transform,
 )
 from manim import (
@@ -27,15 +28,19 @@ from story.beats import Beat, beat_kind
 from story.storyboard import Walk, show
 from tracing import Event
 
+_DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 PLATE_Y = -2.55
 PLATE_WIDTH = 5.6
 
 
-def _fruit(board, points):
+def _fruit(board, points, holes=()):
     theme = board.theme
-    return tag(MPolygon(*[board.at(p) for p in points], color=theme.rind,
-                        stroke_width=theme.stroke * 2.2, fill_color=theme.fruit,
-                        fill_opacity=0.75), "idle", "fruit")
+    style = {"color": theme.rind, "stroke_width": theme.stroke * 2.2, "fill_color": theme.fruit,
+             "fill_opacity": 0.75}
+    if holes:  # the whole fruit, its holes cut out (rings of one mobject; holes unfilled)
+        rings = [[board.at(p) for p in ring] for ring in (points, *(h["points"] for h in holes))]
+        return tag(Polygram(*[[*ring, ring[0]] for ring in rings], **style), "idle", "fruit")
+    return tag(MPolygon(*[board.at(p) for p in points], **style), "idle", "fruit")
 
 
 def _setup(board, beat) -> None:
@@ -47,10 +52,11 @@ def _setup(board, beat) -> None:
     plate = tag(Ellipse(width=PLATE_WIDTH, height=0.9, color=theme.plate, stroke_width=2,
                         fill_color=theme.plate, fill_opacity=0.12), None, "plate")
     plate.move_to((x, PLATE_Y, 0))
-    fruit = _fruit(board, board.polygon.points)
+    fruit = _fruit(board, board.polygon.points, board.holes)
+    slices = board.polygon.n + sum(len(h["points"]) + 2 for h in board.holes) - 2
     board.keep("plate", plate)
     board.keep("fruit", fruit)
-    board.keep("counter", _counter(board, 0, getattr(beat, "total", board.polygon.n - 2)))
+    board.keep("counter", _counter(board, 0, getattr(beat, "total", slices)))
     board.scene.play(Transform(board.shape, fruit), FadeIn(plate),
                      FadeIn(board.objects["counter"]), run_time=0.8 * beat.pace)
     board.scene.remove(fruit)
@@ -67,7 +73,22 @@ def _counter(board, k: int, total: int):
 def ear_test(board, beat) -> None:
     _setup(board, beat)
     colour = board.theme.result if beat.ear else board.theme.rejected
-    board.play(beat, Indicate(board.markers[beat.vertex], color=colour), run_time=0.6)
+    board.play(beat, Indicate(board.markers[unprimed(beat.vertex)], color=colour), run_time=0.6)
+
+
+def keyhole(board, beat) -> None:
+    """A hole opens to the rind: the knife cuts from the hole's vertex P to M, and the cut
+    stays, a dark slit, for the slicing to go round."""
+    _setup(board, beat)
+    theme = board.theme
+    p, m = (board.at(q) for q in beat.points)
+    knife = tag(Line(p, m, color=theme.knife, stroke_width=theme.stroke * 2), "called", "knife")
+    cut = tag(Line(p, m, color=theme.rind, stroke_width=theme.stroke * 1.4), "result",
+              f"keyhole:{beat.hole}")
+    board.play(beat, Create(knife), Indicate(board.markers[beat.corners[0]], color=theme.result),
+               run_time=0.8)
+    board.play(beat, FadeOut(knife), FadeIn(cut), run_time=0.5)
+    board.keep(f"keyhole:{beat.hole}", cut)
 
 
 def clip(board, beat) -> None:
@@ -114,6 +135,16 @@ def good(board, beat) -> None:
 # --- what ear clipping reads from the log --------------------------------------------------------
 
 
+@beat_kind("keyhole")
+class Keyhole(Beat):
+    """Hole ``hole`` joined to the ring at ``corners[1]`` by the cut ``corners[0]``–``corners[1]``
+    (its ``points``): the keyhole of ear clipping with holes."""
+
+    hole: int
+    corners: list[str]
+    points: list
+
+
 @beat_kind("ear-test")
 class EarTest(Beat):
     """Is ``vertex`` an ear (``ear``)?"""
@@ -146,17 +177,37 @@ class Good(Beat):
     labels: list[str]
 
 
+def unprimed(label: str) -> str:
+    """The vertex a slot's label names: a bridge end's copies (``D′``, ``D″`` …) are ``D``."""
+    return label.rstrip("′″‴⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
 def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, ear = show(call.args["v"]), bool(ret.result)
     caption = f"Is {v} an ear? " + ("yes: its triangle holds no other vertex" if ear
                                      else "no: a cut between its neighbours is not a clean slice")
     yield walk.step(EarTest, caption, call, ret,
-                    roles={v: "result" if ear else "rejected"}, vertex=v, ear=ear)
+                    roles={unprimed(v): "result" if ear else "rejected"}, vertex=v, ear=ear)
+
+
+def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    p, m = (show(r) for r in ret.result)
+    hole = int("".join(ch for ch in p if ch in "₀₁₂₃₄₅₆₇₈₉").translate(_DIGITS))
+    point_of = walk.root_points()
+    yield walk.step(Keyhole, f"Hole {hole}: a keyhole cut from {p} to {m}", call, ret,
+                    roles={p: "result", m: "result"}, hole=hole, corners=[p, m],
+                    points=[point_of[p], point_of[m]])
 
 
 def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     """A slice cut off (``clip_ear``), or at the end of the run the triangle left over."""
     labels, points = walk.root_polygon()
+    # a polygon with holes: the ring its keyholes made (kept: it has exited by the last slice)
+    kept = walk.memo("fruit.keyhole", dict)
+    if "keyhole" in walk.live:
+        kept.update(walk.live["keyhole"])
+    if kept:
+        labels, points = kept["labels"], kept["points"]
     if not labels:
         return
     clipped = walk.memo("fruit.clipped", list)  # the ears cut so far
@@ -198,5 +249,6 @@ def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 
 
 READS = {"is_ear": read_ear_test, "clip_ear": read_clip, "ear-clipping": read_clip,
-         "ear-clipping-naive": read_clip, "good_subpolygon": read_good}
-PERFORMS = {EarTest: ear_test, Slice: clip, LastSlice: clip, Good: good}
+         "ear-clipping-naive": read_clip, "good_subpolygon": read_good,
+         "join_hole": read_join_hole}
+PERFORMS = {EarTest: ear_test, Keyhole: keyhole, Slice: clip, LastSlice: clip, Good: good}

@@ -19,7 +19,7 @@ from manim import (
 )
 
 from geometry.polygon import Polygon
-from metaphors.drawing import Frame, polygon_mobject, vertex_markers
+from metaphors.drawing import Frame, hole_markers, polygon_mobject, vertex_markers
 from metaphors.layout import PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON
 from metaphors.pseudocode import source_of
 from metaphors.tags import tag
@@ -39,16 +39,18 @@ class Panel:
     """The right half of every scene. ``follow_roles(beat)`` and ``follow_text(beat)`` return
     the animations that bring it up to date with a beat (roles; lit line and call line)."""
 
-    def __init__(self, points, labels, shown: str | None, theme: Theme = THEME):
+    def __init__(self, points, labels, shown: str | None, theme: Theme = THEME, holes=()):
         self.theme = theme
         polygon = Polygon(tuple(map(tuple, points)), tuple(labels), tuple(range(len(labels))))
         self.frame = Frame(polygon.points, PANEL_POLYGON.center, PANEL_POLYGON.width,
                            PANEL_POLYGON.height)
-        self.outline = tag(polygon_mobject(polygon, self.frame, theme), "idle", "panel:polygon")
+        self.outline = tag(polygon_mobject(polygon, self.frame, theme, holes), "idle",
+                           "panel:polygon")
         self.outline.set_fill(opacity=0.12)
         self.markers = {
             label: tag(m, "idle", f"panel:{label}")
-            for label, m in zip(labels, vertex_markers(polygon, self.frame, theme), strict=True)
+            for label, m in [*zip(labels, vertex_markers(polygon, self.frame, theme), strict=True),
+                             *hole_markers(holes, self.frame, theme)]
         }
         self.mode = SOURCE
         self.code_lines = source_of(shown) if shown else ()

@@ -32,7 +32,7 @@ def board_for(scene: Scene, log: Log, beats: Sequence[Beat], title: str, theme) 
     the pseudocode, when the run has some)."""
     first = beats[0]
     board = Board(scene, first.points, first.labels, log.meta.get("shown"), title, theme,
-                  getattr(scene, "metaphor_box", METAPHOR))
+                  getattr(scene, "metaphor_box", METAPHOR), getattr(first, "holes", ()))
     code = log.meta.get("code")
     rows = pseudocode_of(log)
     if getattr(scene, "panel", PSEUDOCODE) == PSEUDOCODE and rows:

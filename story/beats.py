@@ -66,10 +66,12 @@ def beat_kind(action: str):
 
 @beat_kind("polygon")
 class ShowPolygon(Beat):
-    """The polygon appears: its points and labels."""
+    """The polygon appears: its points and labels (the outer ring's), and its holes (each
+    ``{"points": …, "labels": …}``; none for a simple polygon)."""
 
     points: list
     labels: list[str]
+    holes: list = field(default_factory=list)
 
 
 @beat_kind("pick")

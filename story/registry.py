@@ -366,6 +366,24 @@ def shown(name: str) -> str:
     return known.shown if known is not None else name
 
 
+#: Rows put before an algorithm's own when it runs on a polygon with holes (the log's meta
+#: carries the whole listing, so a simple polygon's run shows what it always showed).
+_HOLE_ROWS = {
+    "ear-clipping": (Step("cut a keyhole from each hole to the rind", ("join_hole",)),),
+}
+
+
+def hole_pseudocode(name: str) -> tuple[Step, ...]:
+    """The pseudocode of ``name`` on a polygon with holes: the bridges first, for ear clipping.
+
+    >>> [step.text for step in hole_pseudocode("ear-clipping")[:2]]
+    ['cut a keyhole from each hole to the rind', 'ear status of every vertex: unknown']
+    >>> hole_pseudocode("monotone") == pseudocode("monotone")
+    True
+    """
+    return (*_HOLE_ROWS.get(name, ()), *pseudocode(name))
+
+
 def pseudocode(name: str) -> tuple[Step, ...]:
     """The pseudocode of ``name``; none for any other name (a heuristic of one's own carries
     its own in its log, if its docstring has it).

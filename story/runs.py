@@ -15,24 +15,26 @@ import inspect
 import tracing
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
-from geometry.io import read_polygon
+from geometry.holes import PolygonWithHoles
+from geometry.io import read_polygon, read_shape
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
-from geometry.triangulate import triangulate
+from geometry.triangulate import HOLE_ALGORITHMS, triangulate
 from geometry.user_heuristics import UserHeuristic, is_user_spec, load_user_heuristic
 from story.pseudocode import from_docstring, to_json
-from story.registry import REGISTRY, shown
+from story.registry import REGISTRY, hole_pseudocode, shown
 
 
 def run_logged(algorithm: str, polygon: str, heuristic: str | None = None) -> tracing.Log:
     """Run a heuristic (by name, or ``file.py:function`` of one's own) or a triangulation
-    algorithm on a polygon file or sample."""
+    algorithm on a polygon file or sample (with holes, for the algorithms that take them)."""
     if is_user_spec(algorithm):
         return _run_user(algorithm, polygon)
-    return record_run(algorithm, read_polygon(polygon), polygon, heuristic)
+    read = read_shape if algorithm in HOLE_ALGORITHMS else read_polygon
+    return record_run(algorithm, read(polygon), polygon, heuristic)
 
 
-def record_run(algorithm: str, p: Polygon, polygon: str,
+def record_run(algorithm: str, p: Polygon | PolygonWithHoles, polygon: str,
                heuristic: str | None = None) -> tracing.Log:
     """The log of a named heuristic or triangulation algorithm on the polygon ``p`` (read from
     ``polygon``, the name the log records). ``trex log`` writes exactly this log.
@@ -41,6 +43,8 @@ def record_run(algorithm: str, p: Polygon, polygon: str,
     first (a bad spec is one line, before anything runs), and the meta names its traced
     function (``heuristic_function``), which the storyboard then treats as a heuristic."""
     meta = {"algorithm": algorithm, "polygon": polygon, "shown": shown(algorithm)}
+    if p.hole_count:  # the listing with the holes' rows (a simple polygon's meta is unchanged)
+        meta["pseudocode"] = to_json(hole_pseudocode(algorithm))
     if heuristic:
         meta["heuristic"] = heuristic
     if heuristic and is_user_spec(heuristic):

@@ -186,10 +186,20 @@ class Walk:
                 return event.state["labels"], event.state["points"]
         return [], []
 
+    def root_holes(self) -> list[dict]:
+        """The holes (each ``{"points", "labels"}``) of the first polygon of the log."""
+        for event in self.log.events:
+            if event.kind == "enter" and is_polygon_key(event.target):
+                return event.state.get("holes", [])
+        return []
+
     def root_points(self) -> dict[str, list]:
-        """Label → point of the first polygon of the log."""
+        """Label → point of the first polygon of the log (its holes' vertices too)."""
         labels, points = self.root_polygon()
-        return dict(zip(labels, points, strict=True))
+        where = dict(zip(labels, points, strict=True))
+        for hole in self.root_holes():
+            where.update(zip(hole["labels"], hole["points"], strict=True))
+        return where
 
     def reach(self, call: Event, ret: Event) -> Reach:
         """How far the heuristic's motion travels to each candidate (:mod:`story.reach`)."""
@@ -308,7 +318,7 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
         if not walk.shown_polygon:
             walk.shown_polygon = True
             yield walk.beat(ShowPolygon, "The polygon", e, points=e.state["points"],
-                            labels=e.state["labels"])
+                            labels=e.state["labels"], holes=e.state.get("holes", []))
         return
     if e.kind == "call" and "polygon" in (e.args or {}) and walk.is_heuristic(e.name):
         walk.heuristic_polygon.append(e.args["polygon"]["ref"])

@@ -14,6 +14,7 @@ from geometry import io
 from geometry.errors import (
     CoordinateError,
     DegenerateError,
+    HoleError,
     HolesNotSupportedError,
     InputFormatError,
     SelfIntersectionError,
@@ -35,6 +36,7 @@ from geometry.samples import make_sample, minimum_n
 
 DATA = Path(__file__).parent / "data"
 BAD = DATA / "bad"
+HOLES = DATA / "holes"
 COUNTER = [(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)]
 GENERATORS = ["random-star", "random-2opt", "random-orthogonal", "random-spiral", "random-comb"]
 
@@ -61,9 +63,13 @@ BAD_INPUTS = {
     "pinch.json": (SelfIntersectionError, "vertex (1, 1) appears twice (pinch)"),
     "spike.json": (SelfIntersectionError, "zero-width spike at vertex F (2, 7)"),
     "overlapping-edges.json": (SelfIntersectionError, "edges B–C and F–G overlap"),
-    "holes.json": (HolesNotSupportedError, "polygon has 2 holes; holes are not supported"),
-    "hole.wkt": (HolesNotSupportedError, "polygon has 1 hole; holes are not supported"),
-    "hole.geojson": (HolesNotSupportedError, "polygon has 1 hole"),
+    "hole.geojson": (HoleError, "hole 1 touches the outer ring at (1, 1)"),
+    "hole-crosses.json": (HoleError, "hole 1 crosses the outer ring at (10, 5)"),
+    "holes-overlap.json": (HoleError, "holes 1 and 3 overlap"),
+    "hole-inside-hole.json": (HoleError, "hole 2 lies inside hole 1"),
+    "hole-outside.json": (HoleError, "hole 1 lies outside the polygon"),
+    "hole-touches.wkt": (HoleError, "hole 3 touches the outer ring at (0, 5)"),
+    "hole-bow-tie.geojson": (SelfIntersectionError, "hole 1: edges d₁–c₁ and b₁–a₁ cross at (3, 3)"),
     "multipolygon.geojson": (
         InputFormatError,
         "GeoJSON MultiPolygon is not supported; expected a Polygon",
@@ -124,9 +130,15 @@ def test_integer_ring_points_are_accepted(tmp_path):
 
 
 def test_rings_with_holes_can_be_ignored():
-    polygon = read_polygon(BAD / "holes.json", ignore_holes=True)
+    polygon = read_polygon(HOLES / "two-holes.json", ignore_holes=True)
     assert polygon.n == 4
-    assert len(read_rings(BAD / "holes.json")) == 3
+    assert len(read_rings(HOLES / "two-holes.json")) == 3
+
+
+@pytest.mark.parametrize(("name", "holes"), [("two-holes.json", "2 holes"), ("hole.wkt", "1 hole")])
+def test_valid_holes_are_refused_where_a_simple_polygon_is_needed(name, holes):
+    with pytest.raises(HolesNotSupportedError, match=f"polygon has {holes}; holes are not supported here"):
+        read_polygon(HOLES / name)
 
 
 @pytest.mark.parametrize(

@@ -34,9 +34,9 @@ from manim import Scene, tempconfig
 
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
-from geometry.io import read_polygon
+from geometry.io import read_polygon, read_shape
 from metaphors.pseudocode import source_of
-from story.registry import entry, wrong
+from story.registry import entry, hole_pseudocode, wrong
 from tests.reading_rules import LEAST_LINE, graph_nodes, small_texts, unreadable_cues
 from tests.test_pseudocode import PLUMBING, assert_rows_follow_calls, code_rows, graph_data
 from trex.scene_graph import build_graph
@@ -259,6 +259,17 @@ def _last_algorithm(case: SceneCase) -> str | None:
     return runs[-1][0] if runs else getattr(case.cls, "algorithm", None)
 
 
+def _last_pseudocode(case: SceneCase) -> tuple:
+    """The rows the scene's last board shows: its algorithm's, with the holes' rows first when
+    its polygon has holes."""
+    runs = getattr(case.cls, "runs", None)
+    algorithm = _last_algorithm(case)
+    polygon = runs[-1][1] if runs else getattr(case.cls, "polygon", None)
+    if polygon and read_shape(polygon).hole_count:
+        return hole_pseudocode(algorithm)
+    return entry(algorithm).pseudocode
+
+
 @pytest.mark.parametrize("case", _params(SCENES))
 def test_the_panel_shows_pseudocode(case):
     rows = code_rows(graph(case))
@@ -266,7 +277,7 @@ def test_the_panel_shows_pseudocode(case):
         pytest.skip(f"{case.id} shows no panel")
     texts = [r["text"] for r in rows]
     assert not [t for t in texts if any(word in t for word in PLUMBING)], case.id
-    assert texts == [s.text.strip() for s in entry(_last_algorithm(case)).pseudocode], case.id
+    assert texts == [s.text.strip() for s in _last_pseudocode(case)], case.id
     assert [r["name"] for r in rows] == [f"code:{k}" for k in range(1, len(rows) + 1)]
     heights = [r["box"][3] - r["box"][1] for r in rows]
     assert min(heights) >= LEAST_LINE, (case.id, min(heights))

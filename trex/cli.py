@@ -14,8 +14,8 @@ import click
 import numpy as np
 
 from geometry.errors import GeometryError
-from geometry.io import to_json, write_polygon
-from geometry.polygon import Polygon
+from geometry.io import Shape, to_json, write_polygon
+from geometry.polygon import Polygon  # noqa: F401  (the doctests' polygons)
 from geometry.samples import make_sample
 from trex.exercises_command import COMMANDS as EXERCISE_COMMANDS
 from trex.hunt_command import COMMANDS as HUNT_COMMANDS
@@ -65,7 +65,7 @@ def main() -> None:
     """
 
 
-def _reflex_text(polygon: Polygon) -> str:
+def _reflex_text(polygon: Shape) -> str:
     reflex = polygon.reflex_vertices()
     if not reflex:
         return "0 reflex vertices (convex)"
@@ -76,30 +76,46 @@ def _reflex_text(polygon: Polygon) -> str:
     return f"{len(reflex)} reflex {noun} ({', '.join(labels)})"
 
 
-def display_area(polygon: Polygon) -> float:
+def display_area(polygon: Shape) -> float:
     """The area for printing: float shoelace about the first vertex, summed with fsum.
 
     ``Polygon.area`` is exact but goes through Fractions (seconds at 100,000
-    vertices); six printed digits do not need that.
+    vertices); six printed digits do not need that. Holes (clockwise) subtract.
 
     >>> display_area(Polygon.from_points([(1e9, 1e9), (1e9 + 3, 1e9), (1e9, 1e9 + 4)]))
     6.0
     """
     pts = np.asarray(polygon.points, dtype=float)
     pts = pts - pts[0]
-    nxt = np.roll(pts, -1, 0)
+    nxt = pts[polygon.next_array] if polygon.hole_count else np.roll(pts, -1, 0)
     return math.fsum(np.concatenate([pts[:, 0] * nxt[:, 1], -(nxt[:, 0] * pts[:, 1])])) / 2
 
 
-def summary(polygon: Polygon) -> str:
-    """One line about a valid polygon, orientation as given in the input.
+def _size_text(polygon: Shape) -> str:
+    holes = polygon.hole_count
+    if not holes:
+        return f"{polygon.n} vertices"
+    outer = polygon.starts[1]
+    return (f"{polygon.n} vertices, {holes} hole{'s' if holes > 1 else ''} "
+            f"({outer} on the outer ring, {polygon.n - outer} on holes)")
+
+
+def summary(polygon: Shape) -> str:
+    """One line about a valid polygon, orientation (of the outer ring) as given in the input.
+
+    The number of holes is said when there are any; hole vertices are reflex
+    where the hole bulges into the region.
 
     >>> summary(Polygon.from_points([(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)]))
     'valid, 5 vertices, counter-clockwise, area 12.92, 1 reflex vertex (E)'
+    >>> from geometry.holes import PolygonWithHoles
+    >>> summary(PolygonWithHoles.from_rings([[(0, 0), (6, 0), (6, 6), (0, 6)],
+    ...                                      [(2, 2), (4, 2), (3, 4)]]))
+    'valid, 7 vertices, 1 hole (4 on the outer ring, 3 on holes), counter-clockwise, area 34, 3 reflex vertices (a₁, b₁, c₁)'
     """
     orientation = "clockwise" if polygon.input_clockwise else "counter-clockwise"
     return (
-        f"valid, {polygon.n} vertices, {orientation}, "
+        f"valid, {_size_text(polygon)}, {orientation}, "
         f"area {display_area(polygon):.6g}, {_reflex_text(polygon)}"
     )
 
@@ -113,7 +129,7 @@ def check(polygons: tuple[str, ...]) -> None:
     """
     invalid = False
     for arg in polygons:
-        polygon = try_load(arg)
+        polygon = try_load(arg, holes=True)
         if polygon is None:
             invalid = True
         else:

@@ -18,7 +18,7 @@ from typing import NoReturn
 import click
 
 from geometry.errors import GeometryError
-from geometry.io import read_polygon
+from geometry.io import Shape, read_polygon, read_shape
 from geometry.polygon import Polygon
 from geometry.user_heuristics import DEFAULT_CALL_TIMEOUT, set_call_timeout
 
@@ -43,7 +43,7 @@ def report_error(arg: str, exc: BaseException) -> None:
     click.echo(f"error: {arg}: {error_line(exc)}", err=True)
 
 
-def report_warnings(arg: str, polygon: Polygon) -> None:
+def report_warnings(arg: str, polygon: Shape) -> None:
     for message in polygon.warnings:
         click.echo(f"warning: {arg}: {message}", err=True)
 
@@ -54,10 +54,14 @@ def fail(message: str) -> NoReturn:
     raise click.exceptions.Exit(EXIT_INVALID)
 
 
-def try_load(arg: str) -> Polygon | None:
-    """The polygon of ``arg`` with its warnings reported, or None after reporting the error."""
+def try_load(arg: str, *, holes: bool = False) -> Polygon | None:
+    """The polygon of ``arg`` with its warnings reported, or None after reporting the error.
+
+    With ``holes``, a polygon with holes is returned as a
+    :class:`geometry.holes.PolygonWithHoles`; without, it is refused in one line.
+    """
     try:
-        polygon = read_polygon(arg)
+        polygon = read_shape(arg) if holes else read_polygon(arg)
     except READ_ERRORS as exc:
         report_error(arg, exc)
         return None
@@ -65,9 +69,10 @@ def try_load(arg: str) -> Polygon | None:
     return polygon
 
 
-def load_or_exit(arg: str) -> Polygon:
-    """The polygon of ``arg``; on failure report it and exit with status 2."""
-    polygon = try_load(arg)
+def load_or_exit(arg: str, *, holes: bool = False) -> Polygon:
+    """The polygon of ``arg`` (with holes, if ``holes``); on failure report it and exit with
+    status 2."""
+    polygon = try_load(arg, holes=holes)
     if polygon is None:
         raise click.exceptions.Exit(EXIT_INVALID)
     return polygon

@@ -26,6 +26,7 @@ from pathlib import Path
 import click
 
 from geometry.errors import GeometryError
+from geometry.triangulate import HOLE_ALGORITHMS
 from geometry.user_heuristics import UserHeuristicError
 from story.pseudocode import PANELS
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
@@ -443,7 +444,7 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
     else:
         given = polygon if polygon is not None else _environment_polygon(cls)
         if given is not None:  # a bad polygon, given or from TREX_POLYGON: one line, exit 2
-            load_or_exit(given)
+            load_or_exit(given, holes=getattr(cls, "algorithm", None) in HOLE_ALGORITHMS)
             try:
                 dry_run(cls, given)
             except (GeometryError, ValueError, KeyError) as exc:

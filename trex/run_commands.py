@@ -1,8 +1,10 @@
 """``trex diagonal``, ``trex triangulate`` and ``trex log``: run algorithms, print or save.
 
 JSON output indexes the input's own vertex order (``vertices`` lists the polygon's points
-in that order, every one kept); human output uses the polygon's labels. None of these
-commands imports manim.
+in that order, every one kept; with holes, the rings one after another, outer first);
+human output uses the polygon's labels. ``trex triangulate`` takes polygons with holes
+for the algorithms that can (:data:`geometry.triangulate.HOLE_ALGORITHMS`); the
+others refuse them in one line. None of these commands imports manim.
 """
 
 from __future__ import annotations
@@ -13,9 +15,10 @@ from pathlib import Path
 import click
 
 from geometry.check import is_inner_diagonal
-from geometry.io import write_atomic
+from geometry.errors import HolesNotSupportedError
+from geometry.io import Shape, write_atomic
 from geometry.polygon import Polygon
-from geometry.triangulate import triangulate
+from geometry.triangulate import HOLE_ALGORITHMS, triangulate
 from geometry.user_heuristics import (
     UserHeuristic,
     UserHeuristicError,
@@ -61,11 +64,11 @@ class HeuristicOrFile(click.ParamType):
 ALGORITHM = click.Choice(list(triangulations()))
 
 
-def _vertices(polygon: Polygon) -> list[list[float]]:
+def _vertices(polygon: Shape) -> list[list[float]]:
     return [list(p) for p in polygon.input_points()]
 
 
-def _to_input(polygon: Polygon, indices) -> list[int]:
+def _to_input(polygon: Shape, indices) -> list[int]:
     return [polygon.source[i] for i in indices]
 
 
@@ -83,9 +86,13 @@ def diagonal_record(arg: str, polygon: Polygon, heuristic: str | UserHeuristic) 
     }
 
 
-def triangulation_record(arg: str, polygon: Polygon, algorithm: str,
+def triangulation_record(arg: str, polygon: Shape, algorithm: str,
                          heuristic: str | UserHeuristic) -> dict:
-    """The triangles of an algorithm and the exact verdict on them, in input indices."""
+    """The triangles of an algorithm and the exact verdict on them, in input indices.
+
+    With holes, ``vertices`` are the rings' (cleaned) vertices concatenated in input
+    order, outer ring first, and there are ``n + 2h - 2`` triangles.
+    """
     result = triangulate(polygon, algorithm, heuristic)
     return {
         "polygon": arg,
@@ -96,17 +103,17 @@ def triangulation_record(arg: str, polygon: Polygon, algorithm: str,
     }
 
 
-def _run_each(polygons, make, show_human, as_json: bool) -> None:
+def _run_each(polygons, make, show_human, as_json: bool, *, holes: bool = False) -> None:
     """Load each polygon, build its record, print it; exit 2 if any input was bad."""
     bad = False
     for arg in polygons:
-        polygon = try_load(arg)
+        polygon = try_load(arg, holes=holes)
         if polygon is None:
             bad = True
             continue
         try:
             record = make(arg, polygon)
-        except ValueError as exc:  # e.g. a triangle has no diagonal
+        except (ValueError, HolesNotSupportedError) as exc:  # no diagonal; holes refused
             report_error(arg, exc)
             bad = True
             continue
@@ -155,7 +162,7 @@ def triangulate_command(polygons: tuple[str, ...], algorithm: str,
         return f"{r['polygon']}: {algorithm}: stopped after {n} triangles: {r['why']}"
 
     _run_each(polygons, lambda arg, p: triangulation_record(arg, p, algorithm, heuristic),
-              human, as_json)
+              human, as_json, holes=True)
 
 
 @click.command(name="log")
@@ -168,11 +175,11 @@ def log_command(algorithm: str, polygon: str, heuristic: str, output: str) -> No
     """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
     from story.runs import record_run  # geometry and tracing only: no manim
 
-    p = load_or_exit(polygon)
+    p = load_or_exit(polygon, holes=algorithm in HOLE_ALGORITHMS)
     try:  # the very log a scene records for this run, so that it replays the same video
         log = record_run(algorithm, p, polygon,
                          heuristic if algorithm in triangulations() else None)
-    except ValueError as exc:
+    except (ValueError, HolesNotSupportedError) as exc:
         fail(f"{polygon}: {exc}")
     try:
         write_atomic(Path(output), log.to_json())

@@ -234,11 +234,13 @@ def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = ()) -> typ
 
 
 def _check_polygon(polygon: str) -> None:
-    from geometry.io import read_polygon
+    """A polygon that cannot be read, or is invalid, is one line (holes are judged by the
+    scene's run: the algorithms that cannot take them say so)."""
+    from geometry.io import read_shape
     from trex.inputs import READ_ERRORS, error_line
 
     try:
-        read_polygon(polygon)
+        read_shape(polygon)
     except READ_ERRORS as exc:
         raise SnapshotError(f"{polygon}: {error_line(exc)}") from None
 

@@ -119,7 +119,7 @@ def snapshot(scene: str, polygon: str | None, logs: tuple[str, ...], output: str
     if polygon is not None and logs:
         fail("--polygon and --log: give one of them (a saved log has its own polygon)")
     if polygon is not None:
-        load_or_exit(polygon)  # one line, exit 2, before manim is even imported
+        load_or_exit(polygon, holes=True)  # one line, exit 2, before manim is even imported
     target = output if output is not None else check if update else None
     if target is not None:
         _writable(target)
