@@ -34,6 +34,7 @@ from metaphors.layout import METAPHOR
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
+from story.reach import side_normal
 from story.storyboard import Walk, read_step
 from tracing import Event
 
@@ -51,22 +52,6 @@ EPS = 1e-6
 
 
 # --- plain geometry (any coordinates) ------------------------------------------------------------
-
-
-def side_normal(direction, through, point) -> tuple[float, float]:
-    """Unit normal of the line through `through` along `direction`, pointing to `point`'s side.
-
-    >>> side_normal([0.0, 1.0], [1.0, 4.5], [3.0, 6.5])
-    (1.0, 0.0)
-    >>> [round(v, 4) for v in side_normal([7.4, -6.0], [1.0, 4.5], [4.6, 4.1])]  # towards AC
-    [0.6298, 0.7768]
-    """
-    dx, dy = direction
-    norm = math.hypot(dx, dy)
-    nx, ny = dy / norm, -dx / norm
-    if nx * (point[0] - through[0]) + ny * (point[1] - through[1]) < 0:
-        nx, ny = -nx, -ny
-    return (nx + 0.0, ny + 0.0)
 
 
 def split_segment(a, b, region, zone=None) -> dict[str, list[tuple[tuple, tuple]]]:

@@ -36,6 +36,8 @@ from dataclasses import dataclass
 import shapely
 from shapely.geometry.base import BaseGeometry
 
+from story.reach import side_normal
+
 Point = Sequence[float]
 
 #: how far a shape may stray from the polygon and still count as inside (polygon units,
@@ -207,13 +209,13 @@ def motion(reached: dict, triangle: Sequence[Point]) -> Motion:
     if kind == "line":
         through, direction = _pt(reached["through"]), _pt(reached["direction"])
         return Motion("line", through, float(reached["offset"]), t, label, direction=direction,
-                      normal=_normal(direction, through, _centroid(t)))
+                      normal=side_normal(direction, through, _centroid(t)))
     if kind == "band":
         a, c = (_pt(p) for p in reached["shore"])
         towards = _pt(reached["towards"])
         direction = (c[0] - a[0], c[1] - a[1])
         return Motion("band", towards, float(reached["level"]), t, label, direction=direction,
-                      normal=_normal(direction, a, towards), shore=(a, c))
+                      normal=side_normal(direction, a, towards), shore=(a, c))
     raise ValueError(f"no motion for a {kind!r} shape state")
 
 
@@ -235,17 +237,6 @@ def _turn_sign(origin: Point, heading: float, angle: float, triangle) -> int:
     (cx, cy), (ox, oy) = _centroid(triangle), origin
     towards = math.degrees(math.atan2(cy - oy, cx - ox))
     return 1 if (towards - heading + 180.0) % 360.0 - 180.0 > 0 else -1
-
-
-def _normal(direction: Point, through: Point, towards: Point) -> tuple[float, float]:
-    """The unit normal of the line through ``through`` along ``direction``, on ``towards``'s
-    side."""
-    dx, dy = direction
-    norm = math.hypot(dx, dy)
-    nx, ny = dy / norm, -dx / norm
-    if nx * (towards[0] - through[0]) + ny * (towards[1] - through[1]) < 0:
-        nx, ny = -nx, -ny
-    return (nx + 0.0, ny + 0.0)
 
 
 def _strip(p: Point, q: Point, direction: Point, far: float) -> shapely.Polygon:

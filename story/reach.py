@@ -34,6 +34,22 @@ def distance(p: Point, q: Point) -> float:
     return math.hypot(q[0] - p[0], q[1] - p[1])
 
 
+def side_normal(direction: Point, through: Point, point: Point) -> tuple[float, float]:
+    """Unit normal of the line through `through` along `direction`, pointing to `point`'s side.
+
+    >>> side_normal([0.0, 1.0], [1.0, 4.5], [3.0, 6.5])
+    (1.0, 0.0)
+    >>> [round(v, 4) for v in side_normal([7.4, -6.0], [1.0, 4.5], [4.6, 4.1])]  # towards AC
+    [0.6298, 0.7768]
+    """
+    dx, dy = direction
+    norm = math.hypot(dx, dy)
+    nx, ny = dy / norm, -dx / norm
+    if nx * (point[0] - through[0]) + ny * (point[1] - through[1]) < 0:
+        nx, ny = -nx, -ny
+    return (nx + 0.0, ny + 0.0)
+
+
 def heading(p: Point, q: Point) -> float:
     """Direction from p to q, in degrees."""
     return math.degrees(math.atan2(q[1] - p[1], q[0] - p[0]))

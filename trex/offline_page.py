@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import html
 import json
+from pathlib import Path
 
 #: the CSS both pages start from (colours as the theme's: ink, idle grey, called blue)
 BASE_CSS = """
@@ -50,3 +51,13 @@ def fill(template: str, data: object, **fields: str | int) -> str:
     for name, value in fields.items():
         page = page.replace("{{" + name + "}}", html.escape(str(value)))
     return page.replace("{{DATA}}", embedded_json(data))
+
+
+def write_page(folder: Path, template: str, title: str, steps: list[dict],
+               **fields: str | int) -> Path:
+    """Write ``folder/index.html``: ``template`` filled (:func:`fill`) with the data
+    ``{"title": title, "steps": steps}``, ``TITLE`` and ``fields``; returns its path."""
+    page = fill(template, {"title": title, "steps": steps}, TITLE=title, **fields)
+    path = folder / "index.html"
+    path.write_text(page, encoding="utf-8")
+    return path

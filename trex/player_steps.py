@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from story.beats import Beat
-from trex.offline_page import fill
+from trex.offline_page import write_page
 
 #: manim's low quality (``-ql``): 854×480.
 PIXELS = (854, 480)
@@ -90,12 +90,8 @@ def _snapshot(scene):
 
 def write_player(folder: Path, steps: list[Step], title: str, subtitle: str = "") -> Path:
     """Write ``folder/index.html`` for the steps; returns its path."""
-    page = fill(_PAGE, {"title": title, "steps": [s.to_dict() for s in steps]}, TITLE=title,
-                SUBTITLE=subtitle, FIRST=steps[0].image if steps else "", WIDTH=PIXELS[0],
-                HEIGHT=PIXELS[1])
-    path = folder / "index.html"
-    path.write_text(page, encoding="utf-8")
-    return path
+    return write_page(folder, _PAGE, title, [s.to_dict() for s in steps], SUBTITLE=subtitle,
+                      FIRST=steps[0].image if steps else "", WIDTH=PIXELS[0], HEIGHT=PIXELS[1])
 
 
 _PAGE = """<!DOCTYPE html>

@@ -20,7 +20,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from trex.offline_page import fill
+from trex.offline_page import write_page
 
 CLIPS_DIR = "clips"
 
@@ -44,11 +44,8 @@ class Slide:
 def write_slides(folder: Path, slides: Sequence[Slide], title: str, subtitle: str,
                  pixels: tuple[int, int]) -> Path:
     """Write ``folder/index.html`` for the slides; returns its path."""
-    page = fill(_PAGE, {"title": title, "steps": [s.to_dict() for s in slides]}, TITLE=title,
-                SUBTITLE=subtitle, WIDTH=pixels[0], HEIGHT=pixels[1])
-    path = folder / "index.html"
-    path.write_text(page, encoding="utf-8")
-    return path
+    return write_page(folder, _PAGE, title, [s.to_dict() for s in slides], SUBTITLE=subtitle,
+                      WIDTH=pixels[0], HEIGHT=pixels[1])
 
 
 _PAGE = """<!DOCTYPE html>
