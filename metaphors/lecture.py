@@ -123,6 +123,7 @@ class LectureScene(TraceScene):
         for segment in self.chapter_segments():
             self.clear_screen()
             getattr(self, f"play_{type(segment).__name__.lower()}")(segment)
+        captions_of(self).hold()  # the last caption is read within the last step
         end_steps(self)
         self.clear_screen()
         self.wait(0.5)

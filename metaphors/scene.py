@@ -39,10 +39,10 @@ from metaphors.theme import THEME
 from rendering.camera import PathCamera
 from rendering.renderer import BackdropRenderer
 from rendering.typeset import text
-from story.beats import Beat, Candidates
+from story.beats import Beat
 from story.environment import spec_from_environment, specs_from_environment
 from story.pseudocode import PANELS, PSEUDOCODE
-from story.reading import frame_summarised
+from story.reading import frame_key, frame_summarised
 from story.registry import heuristics
 from story.spec import RunSpec
 from story.storyboard import Pacing
@@ -154,6 +154,7 @@ class TraceScene(SpecScene, Scene):
         self.camera.background_color = self.theme.background
         self.play_log(self.log(), self.title)
         self.wait(1.0)
+        captions_of(self).finish()  # the last cue lasts as long as its caption is shown
 
     def beats(self, log) -> list[Beat]:
         return catalog.beats(log, self.pacing)
@@ -162,10 +163,11 @@ class TraceScene(SpecScene, Scene):
         """Turn one log into beats and play them on a fresh board (both kept, as
         ``trex_beats`` and ``trex_board``, for tests)."""
         beats = self.beats(log)
-        # the frame every heuristic shares, seen in a run before: one short caption for it
-        seen = getattr(self, "trex_frame_seen", False)
-        self.trex_beats = frame_summarised(beats) if seen else beats
-        self.trex_frame_seen = seen or any(isinstance(b, Candidates) for b in beats)
+        # the frame a run shown before showed too (same polygon, T, candidates): one caption
+        key, seen = frame_key(beats), self.__dict__.setdefault("trex_frames_seen", set())
+        self.trex_beats = frame_summarised(beats) if key is not None and key in seen else beats
+        if key is not None:
+            seen.add(key)
         self.trex_board = board_for(self, log, self.trex_beats, title, self.theme)
         return play_beats(self.trex_board, self.trex_beats)
 
@@ -242,6 +244,7 @@ class SequenceScene(TraceScene):
             self.play_log(log, title)
             self.wait(0.4)
         self.wait(0.5)
+        captions_of(self).finish()  # the last cue lasts as long as its caption is shown
 
     def card(self, k: int, title: str) -> None:
         """A title card between runs: the run's number and its title."""

@@ -84,20 +84,43 @@ def _summary(noun: str, first: int, last: int) -> str:
     return f"{name}s {first}–{last}: the same steps, faster"
 
 
+def frame_key(beats: Sequence[Beat]) -> tuple | None:
+    """What the first frame of a run shows: the polygon (its points and labels), T and the
+    candidates; None if the run shows no frame. Two runs with the same key show the viewer
+    the same frame.
+
+    >>> frame_key([Candidates(caption="c", step=1, candidates=["D", "E"])])
+    ((), (), ('D', 'E'))
+    """
+    polygon = triangle = ()
+    for beat in beats:
+        if isinstance(beat, ShowPolygon) and not polygon:
+            polygon = (tuple(map(tuple, beat.points)), tuple(beat.labels))
+        elif isinstance(beat, ShowTriangle) and not triangle:
+            triangle = (tuple(map(tuple, beat.points)), tuple(beat.labels))
+        elif isinstance(beat, Candidates):
+            return polygon, triangle, tuple(beat.candidates)
+    return None
+
+
 def frame_summarised(beats: Sequence[Beat]) -> list[Beat]:
-    """The beats of a run whose frame the viewer saw in the run before: the frame's beats
-    (polygon, B, T, the candidates) share one short caption.
+    """The beats of a run whose first frame the viewer saw in a run before (the same
+    :func:`frame_key`): that frame's beats (polygon, B, T, up to its candidates) share one
+    short caption; later frames keep theirs.
 
     >>> from story.beats import Note
     >>> beats = [Pick(caption="B is the left-most vertex", step=1, vertex="B"),
     ...          Candidates(caption="Candidates inside T: D, E", step=2, candidates=["D", "E"]),
-    ...          Note(caption="on", step=3)]
+    ...          Note(caption="on", step=3),
+    ...          Candidates(caption="Candidates inside T: F", step=4, candidates=["F"])]
     >>> [b.caption for b in frame_summarised(beats)]
-    ['The frame as before: candidates D, E', 'The frame as before: candidates D, E', 'on']
+    ['The frame as before: candidates D, E', 'The frame as before: candidates D, E', 'on', 'Candidates inside T: F']
     """
-    found = next((b for b in beats if isinstance(b, Candidates)), None)
-    if found is None:
+    end = next((k for k, b in enumerate(beats) if isinstance(b, Candidates)), None)
+    if end is None:
         return list(beats)
-    summary = ("The frame as before: candidates " + ", ".join(found.candidates)
-               if found.candidates else "The frame as before: no vertex inside T")
-    return [replace(b, caption=summary) if isinstance(b, FRAME_BEATS) else b for b in beats]
+    found = beats[end].candidates
+    summary = ("The frame as before: candidates " + ", ".join(found) if found
+               else "The frame as before: no vertex inside T")
+    return [replace(b, caption=summary) if k <= end and isinstance(b, FRAME_BEATS) else b
+            for k, b in enumerate(beats)]

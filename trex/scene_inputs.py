@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from geometry.errors import GeometryError
+from geometry.triangulate import HOLE_ALGORITHMS
 from geometry.user_heuristics import is_user_spec
 from trex.inputs import error_line, fail, load_or_exit
 
@@ -124,12 +125,12 @@ def choose(scene: str, polygon: str | None, saved: str | None,
             log = read_log(saved)
         except ValueError as exc:
             fail(f"{saved_as}: {exc}")
-    elif polygon is not None:
-        load_or_exit(polygon)
     try:
         cls = load_scene(scene, command)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
+    if log is None and polygon is not None:  # holes only for a scene whose algorithm takes them
+        load_or_exit(polygon, holes=getattr(cls, "algorithm", None) in HOLE_ALGORITHMS)
     if log is not None:
         try:
             check_log(cls, log, scene)
