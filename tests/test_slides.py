@@ -325,8 +325,7 @@ def no_render(monkeypatch):
 @pytest.mark.parametrize(("args", "message"), [
     (("slides", "scaling", "--polygon", "triangle"), "error: triangle: a triangle has no diagonal"),
     (("slides", "nonesuch"), "error: nonesuch: unknown scene 'nonesuch'; known: "),
-    (("slides", "counterexample"), "error: counterexample: Counterexample plays several runs; "
-                                   "the slides step through one"),
+    (("slides", "counterexample", "--log", "x.json"), "error: x.json: "),
     (("slides", "gravity", "-j", "2"), "error: -j: only for `trex slides lecture`"),
     (("slides", "lecture", "--log", "x.json"), "error: --log: the lecture plays many runs"),
     (("slides", "lecture", "--polygon", "[[0, 0], [1, 1]]"), "error: [[0, 0], [1, 1]]: "),
@@ -368,3 +367,19 @@ def test_a_failing_render_leaves_earlier_slides_as_they_were(gravity, tmp_path, 
     assert err == "error: gravity: slides failed: RuntimeError: the scene broke\n"
     assert sorted(p.relative_to(out) for p in out.rglob("*")) == before
     assert [p.name for p in tmp_path.iterdir()] == ["slides"]
+
+
+def test_a_scene_of_several_runs_is_one_clip_per_beat_of_every_run(tmp_path):
+    """scenes/counterexample.py plays eight runs, each on its own polygon: one render, a clip
+    for every beat of every run."""
+    from metaphors import catalog
+    from trex.render_command import load_scene_class
+
+    cls = load_scene_class(Path(__file__).resolve().parents[1] / "scenes" / "counterexample.py",
+                           "Counterexample")
+    beats = [b for spec in cls.default_specs() for b in catalog.beats(spec.log())]
+    out = tmp_path / "counterexample"
+    code, _, stderr = run("slides", "counterexample", "-o", str(out))
+    assert code == 0, stderr
+    assert len(clips_of(out)) == len(beats)
+    assert [s["kind"] for s in page_data(out)["steps"]] == [b.action for b in beats]

@@ -23,8 +23,9 @@ from geometry.user_heuristics import is_user_spec
 from trex.inputs import error_line, fail, load_or_exit
 
 
-def load_scene(scene: str, command: str = "player") -> type:
-    """The TraceScene subclass SCENE names (imports manim). Raises ValueError (one line)."""
+def load_scene(scene: str, command: str = "player", several_runs: bool = False) -> type:
+    """The TraceScene subclass SCENE names (imports manim); one that plays several runs
+    only if ``several_runs``. Raises ValueError (one line)."""
     if ".py:" in scene:
         from metaphors.scene import scene_for_heuristic
 
@@ -39,7 +40,7 @@ def load_scene(scene: str, command: str = "player") -> type:
     if not (isinstance(cls, type) and issubclass(cls, TraceScene)):
         raise ValueError(f"{cls.__name__} does not play an algorithm's log; the {command} "
                          f"{'need' if plural else 'needs'} a TraceScene")
-    if getattr(cls, "runs", None):
+    if getattr(cls, "runs", None) and not several_runs:
         raise ValueError(f"{cls.__name__} plays several runs; the {command} "
                          f"{'step' if plural else 'steps'} through one (pick a scene of one "
                          "algorithm)")
@@ -105,9 +106,10 @@ class Chosen:
 
 
 def choose(scene: str, polygon: str | None, saved: str | None,
-           command: str = "player") -> Chosen:
+           command: str = "player", several_runs: bool = False) -> Chosen:
     """Check SCENE, ``--polygon`` and ``--log`` (or ``TREX_LOG``, ``TREX_POLYGON``); one
-    line and exit 2 for the first that is bad."""
+    line and exit 2 for the first that is bad (a scene of several runs is bad unless
+    ``several_runs``)."""
     if polygon is not None and saved is not None:
         fail("--polygon and --log: give one of them (a saved log has its own polygon)")
     saved_as = saved
@@ -126,7 +128,7 @@ def choose(scene: str, polygon: str | None, saved: str | None,
         except ValueError as exc:
             fail(f"{saved_as}: {exc}")
     try:
-        cls = load_scene(scene, command)
+        cls = load_scene(scene, command, several_runs)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
     if log is None and polygon is not None:  # holes only for a scene whose algorithm takes them

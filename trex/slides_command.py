@@ -82,22 +82,38 @@ def slides(scene: str, polygon: str | None, saved: str | None, quality: str,
     for name, given in (("-j", jobs), ("--chapters", only), ("--lecture", lecture_dir)):
         if given is not None:
             fail(f"{name}: only for `trex slides lecture`")
-    from trex.scene_inputs import choose, run_of
+    from trex.scene_inputs import choose
 
-    chosen = choose(scene, polygon, saved, "slides")
+    chosen = choose(scene, polygon, saved, "slides", several_runs=True)
     target = Path(output)
     try:
         check_output(target, MARKER, "earlier slides")
     except ValueError as exc:
         fail(f"{output}: {exc}")
-    spec, _, subtitle = run_of(chosen)
-    played = chosen.cls.with_spec(spec)
+    played, subtitle = _played(chosen, scene)
     played = played.with_panel(panel) if panel else played
     began = time.monotonic()
     shown = build_guarded(scene, output, "slides",
                           lambda: _scene_slides(played, quality, subtitle, target))
     _report(shown, target, began)
     click.echo(str(target / "index.html"))
+
+
+def _played(chosen, scene: str) -> tuple[type, str]:
+    """The scene class handed what it plays, and the line saying what that is: its one run
+    (as the player's), or all its runs, each on its own polygon."""
+    from trex.scene_inputs import run_of
+
+    runs = getattr(chosen.cls, "runs", None)
+    if not runs:
+        spec, _, subtitle = run_of(chosen)
+        return chosen.cls.with_spec(spec), subtitle
+    if chosen.saved is not None:
+        fail(f"{chosen.saved_as}: {scene} plays {len(runs)} runs, each on its own polygon; a "
+             "saved log is one run")
+    if chosen.polygon is not None:
+        click.echo(f"warning: {scene}: plays its own polygons; --polygon is ignored", err=True)
+    return chosen.cls.handed(), f"{len(runs)} runs, each on its own polygon"
 
 
 def _scene_slides(cls: type, quality: str, subtitle: str, target: Path) -> list:
