@@ -237,3 +237,13 @@ def test_an_interrupt_as_an_encoder_starts_orphans_no_thread(tmp_path, monkeypat
     assert sent, "no encoder was started"
     assert orphans == []
     assert leftovers(tmp_path) == []
+
+
+def test_a_signal_deferred_is_raised_at_the_end_even_if_the_block_fails():
+    signals = render_command.Signals()
+    with pytest.raises(render_command.Interrupted), signals.deferred():
+        signals.signum = signal.SIGTERM  # as the handler notes it inside the block
+        raise OSError("the block failed too")
+    done = render_command.Signals()
+    with done.deferred():
+        done.signum, done.done = signal.SIGINT, True  # after the output is in place: no matter

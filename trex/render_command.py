@@ -215,8 +215,8 @@ class Signals:
             yield
         finally:
             self.deferring -= 1
-        if not self.deferring:
-            self.check()
+            if not self.deferring:
+                self.check()  # a signal came: interrupted, even if the block failed too
 
 
 @contextlib.contextmanager
