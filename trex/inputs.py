@@ -13,6 +13,8 @@ warnings are ``warning: <arg>: <message>``.
 
 from __future__ import annotations
 
+import os
+from pathlib import Path
 from typing import NoReturn
 
 import click
@@ -89,3 +91,14 @@ call_timeout_option = click.option(
     "--call-timeout", type=click.FloatRange(min=0), default=DEFAULT_CALL_TIMEOUT,
     show_default=True, is_eager=True, expose_value=False, callback=_set_call_timeout,
     metavar="SECONDS", help="Stop a FILE.py:FUNCTION of your own that runs longer (0: never).")
+
+
+def make_parent(path: Path) -> None:
+    """Create ``path``'s directory if need be and check that it can be written to (an
+    output is first written beside itself). Raises ValueError with a one-line reason."""
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"cannot create its directory: {exc.strerror or exc}") from None
+    if not os.access(path.parent, os.W_OK):
+        raise ValueError(f"cannot write to directory {path.parent}")

@@ -42,7 +42,7 @@ import click
 
 from geometry.errors import GeometryError
 from story.pseudocode import PANELS
-from trex.inputs import error_line, fail, first_line, load_or_exit
+from trex.inputs import error_line, fail, first_line, load_or_exit, make_parent
 from trex.render_command import (
     EXIT_FAILED,
     EXIT_SIGNAL,
@@ -251,12 +251,8 @@ def check_output_dir(out_dir: Path) -> None:
         if target.exists() and target.is_dir() != (name == CHAPTER_DIR):
             kind = "not a directory" if name == CHAPTER_DIR else "a directory"
             raise ValueError(f"{name} in it is {kind}")
-    try:
-        out_dir.parent.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise ValueError(f"cannot create its parent: {exc.strerror or exc}") from None
-    if not os.access(out_dir.parent, os.W_OK) or (out_dir.is_dir()
-                                                  and not os.access(out_dir, os.W_OK)):
+    make_parent(out_dir)
+    if out_dir.is_dir() and not os.access(out_dir, os.W_OK):
         raise ValueError("cannot write there")
 
 

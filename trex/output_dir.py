@@ -19,7 +19,7 @@ from pathlib import Path
 
 import click
 
-from trex.inputs import error_line
+from trex.inputs import error_line, make_parent
 
 EXIT_FAILED = 1
 
@@ -32,12 +32,7 @@ def check_output(target: Path, marker: str, earlier: str) -> None:
     if target.is_dir() and any(target.iterdir()) and not (target / marker).is_file():
         raise ValueError(f"exists and is not {earlier} (no {marker} in it); "
                          "give a new or empty directory")
-    try:
-        target.parent.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise ValueError(f"cannot create its parent: {exc.strerror or exc}") from None
-    if not os.access(target.parent, os.W_OK):
-        raise ValueError(f"cannot write to directory {target.parent}")
+    make_parent(target)
 
 
 def move_into_place(built: Path, target: Path) -> None:

@@ -29,7 +29,7 @@ from geometry.errors import GeometryError
 from geometry.triangulate import HOLE_ALGORITHMS
 from geometry.user_heuristics import UserHeuristicError
 from story.pseudocode import PANELS
-from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
+from trex.inputs import call_timeout_option, error_line, fail, load_or_exit, make_parent
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 QUALITIES = {"l": "low_quality", "m": "medium_quality", "h": "high_quality", "k": "fourk_quality"}
@@ -105,12 +105,7 @@ def prepare_output(output: Path) -> Path:
     """
     if output.is_dir():
         raise ValueError("is a directory; give a file path")
-    try:
-        output.parent.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise ValueError(f"cannot create its directory: {exc.strerror or exc}") from None
-    if not os.access(output.parent, os.W_OK):
-        raise ValueError(f"cannot write to directory {output.parent}")
+    make_parent(output)
     return output
 
 
