@@ -3,6 +3,7 @@
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -130,6 +131,24 @@ def test_a_bad_log_run_leaves_no_file(tmp_path):
     out = tmp_path / "log.json"
     code, _, _ = run("log", "gravity", "triangle", "-o", str(out))
     assert code == 2 and not out.exists() and not list(tmp_path.iterdir())
+
+
+def test_log_of_divide_and_conquer_with_a_heuristic_of_ones_own(tmp_path):
+    """`trex log --heuristic FILE.py:FUNCTION`, as `trex render --heuristic` takes it: the log
+    names the heuristic and its traced function, so a scene replays it as its own."""
+    examples = Path(__file__).resolve().parents[1] / "examples"
+    spec = f"{examples / 'my_heuristic.py'}:biggest_angle"
+    out = tmp_path / "run.json"
+    code, _, err = run("log", "divide-and-conquer", "lecture", "--heuristic", spec, "-o",
+                       str(out))
+    assert code == 0, err
+    meta = json.loads(out.read_text())["meta"]
+    assert (meta["heuristic"], meta["heuristic_function"]) == (spec, "biggest_angle")
+    bad = tmp_path / "bad.json"
+    code, _, err = run("log", "divide-and-conquer", "lecture", "--heuristic",
+                       f"{examples / 'nope.py'}:x", "-o", str(bad))
+    assert code == 2 and err.count("\n") == 1 and "no such file" in err
+    assert not bad.exists()
 
 
 def test_run_commands_do_not_import_manim():

@@ -168,17 +168,19 @@ def triangulate_command(polygons: tuple[str, ...], algorithm: str,
 @click.command(name="log")
 @click.argument("algorithm", type=click.Choice(list(names())))
 @click.argument("polygon")
-@click.option("--heuristic", type=HEURISTIC, default="gravity", show_default=True,
-              help="For divide-and-conquer: how each diagonal is found.")
+@click.option("--heuristic", type=HeuristicOrFile(), default="gravity", show_default=True,
+              help="For divide-and-conquer: how each diagonal is found, a name or "
+                   "FILE.py:FUNCTION of your own.")
 @click.option("-o", "--output", required=True, metavar="FILE.json", help="Where to write the log.")
-def log_command(algorithm: str, polygon: str, heuristic: str, output: str) -> None:
+def log_command(algorithm: str, polygon: str, heuristic: str | UserHeuristic,
+                output: str) -> None:
     """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
     from story.runs import record_run  # geometry and tracing only: no manim
 
     p = load_or_exit(polygon, holes=algorithm in HOLE_ALGORITHMS)
+    named = heuristic.spec if isinstance(heuristic, UserHeuristic) else heuristic
     try:  # the very log a scene records for this run, so that it replays the same video
-        log = record_run(algorithm, p, polygon,
-                         heuristic if algorithm in triangulations() else None)
+        log = record_run(algorithm, p, polygon, named if algorithm in triangulations() else None)
     except (ValueError, HolesNotSupportedError) as exc:
         fail(f"{polygon}: {exc}")
     try:
