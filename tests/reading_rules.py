@@ -13,28 +13,31 @@ from story.reading import readable
 LEAST_LINE = 0.2
 
 
+def mobject_nodes(node: dict) -> Iterator[dict]:
+    """A mobject node and all its parts."""
+    yield node
+    for child in node.get("submobjects", ()):
+        yield from mobject_nodes(child)
+
+
+def animation_nodes(node: dict) -> Iterator[dict]:
+    """Every mobject node of an animation's graph: its mobject, its target, its members'."""
+    for key in ("mobject", "target"):
+        if key in node:
+            yield from mobject_nodes(node[key])
+    for child in node.get("animations", ()):
+        yield from animation_nodes(child)
+
+
 def graph_nodes(data: dict, *, final_only: bool = False) -> Iterator[dict]:
     """Every mobject node of a graph's data: the animations' mobjects and targets, then the
     mobjects on screen at the end."""
-
-    def walk(node):
-        yield node
-        for child in node.get("submobjects", ()):
-            yield from walk(child)
-
-    def animation(node):
-        for key in ("mobject", "target"):
-            if key in node:
-                yield from walk(node[key])
-        for child in node.get("animations", ()):
-            yield from animation(child)
-
     if not final_only:
         for play in data["plays"]:
             for anim in play["animations"]:
-                yield from animation(anim)
+                yield from animation_nodes(anim)
     for mobject in data.get("final", ()):
-        yield from walk(mobject)
+        yield from mobject_nodes(mobject)
 
 
 def unreadable_cues(data: dict) -> list[str]:

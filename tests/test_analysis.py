@@ -26,6 +26,7 @@ from story.analysis import lies_inside, outside, shape
 from story.reading import reading_time
 from story.registry import entry
 from story.runs import working_example
+from tests.reading_rules import animation_nodes
 from tests.strategies import generated_polygons
 from trex.render_command import load_scene_class
 from trex.scene_graph import build
@@ -130,21 +131,6 @@ def gravity():
     return _chapter("ch3_gravity.py")
 
 
-def _nodes(node):
-    """Every mobject node of an animation's graph (and of its target, and its members)."""
-    for key in ("mobject", "target"):
-        if key in node:
-            yield from _family(node[key])
-    for member in node.get("animations", ()):
-        yield from _nodes(member)
-
-
-def _family(node):
-    yield node
-    for child in node.get("submobjects", ()):
-        yield from _family(child)
-
-
 def _segments(plays, titles) -> list[list]:
     """The plays of each analysis: from the one that writes its title to the one that clears
     the screen after it (fading its polygon out)."""
@@ -161,7 +147,7 @@ def _cleared(plays, start: int) -> int:
 
 
 def _named(plays, name: str) -> list[dict]:
-    return [n for p in plays for a in p.graph["animations"] for n in _nodes(a)
+    return [n for p in plays for a in p.graph["animations"] for n in animation_nodes(a)
             if n.get("name") == name]
 
 

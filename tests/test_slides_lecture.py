@@ -2,19 +2,16 @@
 one presentation, reusing what `trex lecture` rendered when it was made the same way."""
 
 import hashlib
-import json
-import re
 import textwrap
 from pathlib import Path
 
 import av
 import pytest
-from click.testing import CliRunner
 
 from metaphors.catalog import beats as storyboard
 from story.runs import run_logged
+from tests.test_slides import page_data, run
 from trex import lecture_command
-from trex.cli import main
 from trex.clips import marks_path, read_marks
 from trex.slides_command import reusable
 
@@ -28,17 +25,6 @@ CHAPTER = textwrap.dedent("""
             return (Card("A card", ("the first line", "the second line")),
                     Run("scaling", "counterexample", "Scaling"))
 """)
-
-
-def run(*args):
-    result = CliRunner().invoke(main, list(args))
-    return result.exit_code, result.stdout, result.stderr
-
-
-def page_data(folder: Path) -> dict:
-    page = (folder / "index.html").read_text()
-    return json.loads(re.search(r'<script id="slides-data" type="application/json">(.*?)</script>',
-                                page, re.S).group(1))
 
 
 def frame_sums(path: Path) -> list[str]:
