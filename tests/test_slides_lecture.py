@@ -1,15 +1,13 @@
 """trex slides lecture: the chapters' steps (a card's title and each line, a run's beats) as
 one presentation, reusing what `trex lecture` rendered when it was made the same way."""
 
-import hashlib
 import textwrap
-from pathlib import Path
 
-import av
 import pytest
 
 from metaphors.catalog import beats as storyboard
 from story.runs import run_logged
+from tests.test_lecture import frame_sums
 from tests.test_slides import page_data, run
 from trex import lecture_command
 from trex.clips import marks_path, read_marks
@@ -25,12 +23,6 @@ CHAPTER = textwrap.dedent("""
             return (Card("A card", ("the first line", "the second line")),
                     Run("scaling", "counterexample", "Scaling"))
 """)
-
-
-def frame_sums(path: Path) -> list[str]:
-    with av.open(str(path)) as container:
-        return [hashlib.sha1(f.to_ndarray(format="rgb24").tobytes()).hexdigest()
-                for f in container.decode(video=0)]
 
 
 @pytest.fixture(scope="module")
