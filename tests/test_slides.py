@@ -90,6 +90,9 @@ def test_one_clip_per_beat_cut_from_the_one_render(gravity, rendered):
     assert all(np.array_equal(a, b) for a, b in zip(joined, whole, strict=True))
     # each clip starts where its beat starts (its caption appears in its first frames)
     assert all(len(frames(clip)) >= 2 for clip in clips)
+    # the page knows when each clip's last frame shows (15 frames a second)
+    assert [s["last"] for s in data["steps"]] == [
+        pytest.approx((len(shown) - 1) / 15, abs=0.5 / 15) for shown in cut]
     assert sorted(p.name for p in gravity.iterdir()) == [".trex-slides", "clips", "handout.pdf",
                                                          "index.html"]
     assert [p.name for p in gravity.parent.iterdir()] == ["gravity"]  # nothing left beside
@@ -184,10 +187,11 @@ STATE = """() => { const v = document.getElementById('clip');
 
 
 def settled(page) -> dict:
-    """The state once the clip has stopped (played to its end, or shown at it)."""
+    """The state once the clip has stopped on its last frame (played to its end, or shown at
+    it: the page seeks into the middle of the last frame, less than 1/15 s before the end)."""
     page.wait_for_function("() => { const v = document.getElementById('clip');"
                            " return v.readyState >= 2 && v.paused && !v.seeking"
-                           " && Math.abs(v.currentTime - v.duration) < 1e-3; }", timeout=15000)
+                           " && v.currentTime > v.duration - 1 / 15; }", timeout=15000)
     return page.evaluate(STATE)
 
 
@@ -284,6 +288,35 @@ def _shown_frame(page, clip: Path) -> str:
     if last < first and last < 6:
         return "last"
     return "first" if first < 6 else "other"
+
+
+# Chromium now and then paints no new frame after a seek (seen under load: the seek done,
+# the first frame still shown). Here its first frame callback says so every time.
+STALE_FIRST_PAINT = """(() => {
+  const ask = HTMLVideoElement.prototype.requestVideoFrameCallback;
+  let asked = 0;
+  window.seeks = [];
+  HTMLVideoElement.prototype.requestVideoFrameCallback = function (callback) {
+    if (asked++ === 0) { return ask.call(this, (now, frame) => callback(now, {...frame, mediaTime: 0})); }
+    return ask.call(this, callback);
+  };
+  document.addEventListener("seeking", e => window.seeks.push(e.target.currentTime), true);
+})()"""
+
+
+def test_a_seek_that_paints_no_frame_is_tried_again(gravity, browser):
+    n = len(page_data(gravity)["steps"])
+    clips = clips_of(gravity)
+    page = browser.new_page(viewport={"width": 1000, "height": 900})
+    page.add_init_script(STALE_FIRST_PAINT)
+    page.goto((gravity / "index.html").as_uri() + "#1")  # step 1, shown at its end
+    page.wait_for_function("() => window.seeks.length >= 2", timeout=15000)
+    state = settled(page)
+    assert state["counter"] == f"step 1 / {n}"
+    assert shown_frame(page, clips[0], "last") == "last"
+    seeks = page.evaluate("window.seeks")
+    assert 2 <= len(seeks) <= 6 and seeks[0] != seeks[1], seeks  # again, and not forever
+    page.close()
 
 
 def test_the_speaker_view_shows_the_next_caption(gravity, browser):

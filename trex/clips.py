@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import av
+from PIL import Image
 
 SCHEMA = "trex-steps/1"
 SUFFIX = ".steps.json"
@@ -205,15 +206,15 @@ def _write_clip(packets: Sequence, closing, zero: int, stream, path: Path, sourc
     return path
 
 
-def last_frame(clip: Path):
-    """The last frame of a clip, decoded (a PIL image)."""
+def last_frame(clip: Path) -> tuple[Image.Image, float]:
+    """The last frame of a clip, decoded (a PIL image), and its time in seconds."""
     final = None
     with av.open(str(clip)) as container:
         for frame in container.decode(video=0):
             final = frame
     if final is None:
         raise ValueError(f"{clip.name}: no frames")
-    return final.to_image()
+    return final.to_image(), round(float(final.time), 6)
 
 
 def frame_count(video: Path) -> int:

@@ -56,9 +56,10 @@ def build_slides(folder: Path, sources: Sequence[Source], title: str, subtitle: 
         for path, step in zip(cut_clips(source.video, source.marks, clips, mine),
                               source.marks.steps, strict=True):
             call = step.call if step.call is not None else call
+            picture, last = last_frame(path)
             slides.append(Slide(f"{CLIPS_DIR}/{path.name}", step.caption, call, step.kind,
-                                source.chapter))
-            handout.add(last_frame(path), str(len(slides)), step.caption)
+                                source.chapter, last))
+            handout.add(picture, str(len(slides)), step.caption)
             if progress is not None:
                 progress(len(slides), total)
     handout.close()

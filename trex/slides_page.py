@@ -27,18 +27,20 @@ CLIPS_DIR = "clips"
 
 @dataclass(frozen=True)
 class Slide:
-    """One step of the slides: its clip (relative path), caption, call line, kind and the
-    chapter it is in (None: not a lecture)."""
+    """One step of the slides: its clip (relative path), caption, call line, kind, the
+    chapter it is in (None: not a lecture) and ``last``, the time (seconds) of the clip's
+    last frame (None: not known; the page then seeks to the clip's end)."""
 
     clip: str
     caption: str
     call: str | None = None
     kind: str = "beat"
     chapter: str | None = None
+    last: float | None = None
 
     def to_dict(self) -> dict:
         return {"clip": self.clip, "caption": self.caption, "call": self.call,
-                "kind": self.kind, "chapter": self.chapter}
+                "kind": self.kind, "chapter": self.chapter, "last": self.last}
 
 
 def write_slides(folder: Path, slides: Sequence[Slide], title: str, subtitle: str,
@@ -102,6 +104,24 @@ _PAGE = """<!DOCTYPE html>
   var speaker = /(^|[?&])notes\\b/.test(location.search);
   if (speaker) { document.body.className = "speaker"; }
 
+  // A step's end is its last frame, sought in the middle of the time it shows. Chromium
+  // now and then paints no new frame after a seek (2 in 60 under load, the seek done and the
+  // first frame still shown), so the page looks at the frame presented and seeks again.
+  function showEnd(step, tries) {
+    var last = step.last === null ? video.duration : step.last;
+    video.currentTime = (last + video.duration) / 2 - (tries % 2) * 1e-3;
+    if (!video.requestVideoFrameCallback || tries >= 5) { return; }
+    var presented = null;
+    video.requestVideoFrameCallback(function (now, frame) { presented = frame.mediaTime; });
+    video.addEventListener("seeked", function () {
+      setTimeout(function () {
+        var stale = presented === null || Math.abs(presented - last) > 2e-3;
+        if (stale && steps[at] === step && video.paused && !video.seeking) {
+          showEnd(step, tries + 1);
+        }
+      }, 250);
+    }, {once: true});
+  }
   // Show step k: "play" plays it from its start, "end" shows its last frame.
   function show(k, how, quiet) {
     if (!n) { $("counter").textContent = "no steps"; return; }
@@ -114,10 +134,10 @@ _PAGE = """<!DOCTYPE html>
       var playing = video.play();
       if (playing && playing.catch) { playing.catch(function () { /* not allowed: paused */ }); }
     } else if (video.readyState >= 1) {
-      video.currentTime = video.duration;
+      showEnd(step, 0);
     } else {
       video.addEventListener("loadedmetadata", function () {
-        if (steps[at].clip === step.clip) { video.currentTime = video.duration; }
+        if (steps[at] === step) { showEnd(step, 0); }
       }, {once: true});
     }
     $("counter").textContent = "step " + (at + 1) + " / " + n;
