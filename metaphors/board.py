@@ -15,12 +15,12 @@ from manim import FadeIn, FadeOut, Scene, VGroup
 from geometry.polygon import Polygon
 from metaphors.captions import captions_of, whole_frames
 from metaphors.drawing import Frame, hole_markers, polygon_mobject, vertex_markers
-from metaphors.layout import METAPHOR, SUBTITLE_Y, TITLE_Y, Box
+from metaphors.layout import METAPHOR, SUBTITLE_WIDTH, TITLE_Y, Box, subtitle_centre
 from metaphors.panel import Panel
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering.layers import BACKDROP_Z, STILL_Z
-from rendering.typeset import glyphs, text
+from rendering.typeset import balanced, glyphs, text
 
 #: seconds the words of a beat take to change (at most half the beat)
 WORDS_TIME = 0.3
@@ -158,9 +158,9 @@ class Board:
     def _subtitle(self, caption: str) -> list:
         if caption == self.caption:
             return []
-        new = tag(text(caption, font=self.theme.font, size=self.theme.caption_size,
-                       colour=self.theme.ink, width=13.4), None, "subtitle")
-        new.move_to((0, SUBTITLE_Y, 0))
+        new = tag(balanced(caption, font=self.theme.font, size=self.theme.caption_size,
+                           colour=self.theme.ink, width=SUBTITLE_WIDTH), None, "subtitle")
+        new.move_to(subtitle_centre(new.height))
         old, self.subtitle = self.subtitle, new
         return [FadeOut(old), FadeIn(new)]
 

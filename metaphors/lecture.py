@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from manim import DOWN, LEFT, UP, Create, Dot, FadeIn, FadeOut, Line, VGroup, Write
+from manim import DOWN, LEFT, RIGHT, UP, Create, Dot, FadeIn, FadeOut, Line, VGroup, Write
 
 from geometry.cdt import constrained_delaunay
 from geometry.check import is_inner_diagonal
@@ -37,6 +37,9 @@ from story.hunt import hunt
 from story.runs import record_user_run
 from story.spec import RunSpec
 from story.storyboard import Pacing
+
+#: the widest a card's line may be (scene units): a longer one wraps
+CARD_WIDTH = 13.2
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
@@ -139,7 +142,23 @@ class LectureScene(TraceScene):
 
     def text(self, text: str, size: int, colour: str | None = None) -> FlatText:
         return typeset.text(text, font=self.theme.font, size=size,
-                            colour=colour or self.theme.ink, width=13.2)
+                            colour=colour or self.theme.ink, width=CARD_WIDTH)
+
+    def card_line(self, line: str) -> FlatText | VGroup:
+        """A card's line after its bullet; a long one on two balanced rows (not shrunk), the
+        second indented under the words, not the bullet."""
+        font, size, colour = self.theme.font, self.theme.caption_size, self.theme.idle
+        one = typeset.text("• " + line, font=font, size=size, colour=colour)
+        if one.width <= CARD_WIDTH:
+            return one
+        indent = (typeset.text("• M", font=font, size=size).width
+                  - typeset.text("M", font=font, size=size).width)
+        shown = typeset.balanced("• " + line, font=font, size=size, colour=colour,
+                                 width=CARD_WIDTH - indent, aligned_edge=LEFT)
+        if isinstance(shown, VGroup):
+            for row in shown[1:]:
+                row.shift(RIGHT * indent)
+        return shown
 
     # --- segments ---------------------------------------------------------------------------------
 
@@ -154,9 +173,8 @@ class LectureScene(TraceScene):
     def play_card(self, card: Card) -> None:
         captions = captions_of(self)
         title = tag(typeset.glyphs(card.title, font=self.theme.font, size=self.theme.title_size,
-                                   colour=self.theme.ink, width=13.2), None, "card:title")
-        lines = [tag(self.text("• " + line, self.theme.caption_size, self.theme.idle), None,
-                     "card:line") for line in card.lines]
+                                   colour=self.theme.ink, width=CARD_WIDTH), None, "card:title")
+        lines = [tag(self.card_line(line), None, "card:line") for line in card.lines]
         group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
         group.move_to((0, 0.3, 0))
         title.set_x(0)
@@ -257,7 +275,7 @@ class LectureScene(TraceScene):
         theme, polygon = self.theme, exercise.polygon
         frame = Frame(polygon.points, BOX_CENTER, BOX_WIDTH, BOX_HEIGHT)
         text = tag(typeset.wrapped(f"Answer: {exercise.answer} — {exercise.reason}", size=24,
-                                   colour=theme.result, font=theme.font, width=13.2),
+                                   colour=theme.result, font=theme.font, width=CARD_WIDTH),
                    "result", "answer")
         text.move_to((0, -3.05, 0))
         anims = [FadeIn(text)]

@@ -20,7 +20,7 @@ from manim import Polygon as MPolygon
 from geometry.polygon import Polygon
 from metaphors.captions import captions_of, whole_frames
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
-from metaphors.layout import SUBTITLE_Y, TITLE_Y, Box
+from metaphors.layout import SUBTITLE_WIDTH, TITLE_Y, Box, subtitle_centre
 from metaphors.steps import mark_step
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -29,8 +29,6 @@ from rendering import typeset
 #: where the polygon goes: the left two thirds, the legend to its right
 BOX = Box(-1.0, -0.1, 8.0, 5.6)
 LEGEND = (3.6, 2.2)  # top left corner of the legend
-#: widest subtitle line (scene units): a longer caption takes two lines
-SUBTITLE_WIDTH = 13.4
 
 
 class Stage:
@@ -100,21 +98,10 @@ class Stage:
                 self.scene.wait(whole_frames(run_time))
 
     def _words(self, caption: str):
-        """The subtitle: one line, or two when one would have to shrink to fit the frame,
-        broken at the space nearest the middle (sooner after a colon, comma or full stop)."""
-        theme = self.theme
-
-        def typeset_(words: str):
-            return typeset.text(words, font=theme.font, size=theme.caption_size,
-                                colour=theme.ink, width=SUBTITLE_WIDTH)
-
-        shown = typeset_(caption)
-        spaces = [k for k, c in enumerate(caption) if c == " "]
-        if shown.width >= SUBTITLE_WIDTH - 1e-9 and spaces:
-            k = min(spaces, key=lambda k: abs(2 * k - len(caption)) * (
-                0.15 if caption[k - 1] in ":,.;" else 1.0))
-            shown = typeset_(caption[:k] + "\n" + caption[k + 1:])
-        return tag(shown, None, "subtitle").move_to((0, SUBTITLE_Y, 0))
+        """The subtitle: one line, or two balanced ones (:func:`rendering.typeset.balanced`)."""
+        words = typeset.balanced(caption, font=self.theme.font, size=self.theme.caption_size,
+                                 colour=self.theme.ink, width=SUBTITLE_WIDTH)
+        return tag(words, None, "subtitle").move_to(subtitle_centre(words.height))
 
     def key(self, colour: str, words: str, name: str, opacity: float = 0.45) -> list:
         """A legend entry (a swatch and its words) below the ones shown."""

@@ -36,7 +36,7 @@ from functools import lru_cache
 import manimpango
 import numpy as np
 import svgelements as se
-from manim import DOWN, LEFT, NORMAL, Text, VGroup, VMobject, config
+from manim import DOWN, LEFT, NORMAL, ORIGIN, Text, VGroup, VMobject, config
 from manim.constants import START_X, START_Y
 from manim.mobject.svg.svg_mobject import VMobjectFromSVGPath
 from manim.mobject.text.text_mobject import (
@@ -118,6 +118,29 @@ def wrapped(string: str, *, size: float, width: float, colour: str | None = None
     if len(parts) == 1:
         return parts[0]
     return VGroup(*parts).arrange(DOWN, aligned_edge=LEFT, buff=gap)
+
+
+def balanced(string: str, *, size: float, width: float, colour: str | None = None,
+             font: str = DEFAULT_FONT, gap: float = 0.1, aligned_edge=ORIGIN) -> FlatText | VGroup:
+    """``string`` on one line, or on two lines (centred, or aligned by ``aligned_edge``) when
+    one would not fit ``width`` at ``size``, broken near the middle (after a colon, comma or
+    full stop if one is close): the way a subtitle reads, with no word left alone on a line.
+    Only a line that does not fit even so is shrunk.
+
+    >>> balanced("the ball falls", size=28, width=13.4).original_text
+    'the ball falls'
+    >>> caption = "V is reflex: its sides point up, so the band snags at Y"
+    >>> [line.original_text for line in balanced(caption, size=28, width=6)]
+    ['V is reflex: its sides point up,', 'so the band snags at Y']
+    """
+    spaces = [k for k, c in enumerate(string) if c == " "]
+    if not spaces or _natural_width(string, font, size) <= width:
+        return text(string, size=size, colour=colour, font=font, width=width)
+    # the longer line as short as can be, a break after punctuation worth 8 characters
+    k = min(spaces, key=lambda k: max(k, len(string) - k - 1) - 8 * (string[k - 1] in ":,.;"))
+    lines = [text(part, size=size, colour=colour, font=font, width=width)
+             for part in (string[:k], string[k + 1:])]
+    return VGroup(*lines).arrange(DOWN, buff=gap, aligned_edge=aligned_edge)
 
 
 def _natural_width(string: str, font: str, size: float) -> float:

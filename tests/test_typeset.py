@@ -243,3 +243,31 @@ def test_processes_sharing_a_media_directory(tmp_path):
     for path in files:
         ET.parse(path)  # whole
     assert not list((media / "texts").glob(".trex-*"))  # no scratch file left
+
+
+# --- subtitles and card lines: two balanced lines, never shrunk ---------------------------------
+
+
+@given(st.lists(st.sampled_from(["the", "band", "snags", "at", "Y:", "a", "reflex", "vertex,",
+                                 "BD", "crosses", "edge", "E–A"]), min_size=1, max_size=24))
+@settings(max_examples=40, deadline=None)
+def test_a_long_caption_takes_two_lines_at_its_size(words):
+    caption = " ".join(words)
+    shown = typeset.balanced(caption, size=28, width=6.0)
+    natural = text(caption, size=28)
+    if natural.width <= 6.0:
+        assert isinstance(shown, FlatText) and shown.original_text == caption
+        return
+    if len(words) == 1:  # a word alone is shrunk: there is nowhere to break it
+        assert isinstance(shown, FlatText) and shown.width == pytest.approx(6.0)
+        return
+    first, second = shown
+    assert f"{first.original_text} {second.original_text}" == caption
+    for line in shown:  # each line at the caption's size, unless it alone cannot fit
+        alone = text(line.original_text, size=28)
+        assert line.height == pytest.approx(min(alone.height, alone.height * 6.0 / alone.width))
+    # balanced: no other break makes the longer line shorter by more than a punctuation's worth
+    longer = max(len(first.original_text), len(second.original_text))
+    breaks = [k for k, c in enumerate(caption) if c == " "]
+    assert longer <= min(max(k, len(caption) - k - 1) for k in breaks) + 8
+    assert first.get_center()[0] == pytest.approx(second.get_center()[0])  # centred
