@@ -197,11 +197,14 @@ def _ray_hit(ring: BridgedRing, p: Point, slots, pts, nxt_pts) -> tuple[Fraction
         with np.errstate(all="ignore"):
             a, b = pts[cross], nxt_pts[cross]
             xs = a[:, 0] + (py - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
-        right = xs >= px - 1e-9 * (abs(px) + np.abs(xs) + 1)
-        cross, xs = cross[right], xs[right]
+            # the float x is off by a few ulps of the coordinates it is made of, not of x
+            # itself (an edge from -1e9 to 1e9 crossing near 0): each exact x is within
+            # ``slack`` of its float; the exact test below decides
+            slack = 1e-12 * (np.abs(a).max(axis=1) + np.abs(b).max(axis=1) + abs(py))
+        right = xs + slack >= px
+        cross, xs, slack = cross[right], xs[right], slack[right]
         if len(cross):
-            low = xs.min()
-            near = cross[xs <= low + 1e-9 * (abs(low) + abs(px) + 1)]
+            near = cross[xs - slack <= (xs + slack).min()]
             for k in near.tolist():
                 x = _exact_x(tuple(pts[k]), tuple(nxt_pts[k]), py)
                 if x > px and (best is None or (x, 1) < best[:2]):

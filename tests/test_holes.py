@@ -167,6 +167,13 @@ def cases():
         # the wall hit is vertical too, and collinear straight vertices on it
         "straight vertices on the wall": [
             [(0, 0), (10, 0), (10, 2), (10, 5), (10, 8), (10, 10), (0, 10)], [(2, 2), (6, 5), (2, 8)]],
+        # P a few ulps left of an edge from (-1e9, -1e9) to (1e9, 1e9): the ray's float x
+        # there is off by 1e-7, more than P's distance to the edge
+        "an ulp from a long edge": [
+            [(-999999810.161296, -1000000438.7730701), (1000000021.0346731, 1000000627.5265886),
+             (-3e9, 1e9)],
+            [(1.271242540482291, -0.2887449228429917), (11.271242540482291, 0.2112550771570083),
+             (1.271242540482291, 0.7112550771570083)]],
         # huge and tiny coordinates
         "huge": [[(x * 1e150, y * 1e150) for x, y in SQUARE], [(2e150, 2e150), (4e150, 2e150), (3e150, 4e150)]],
         "tiny": [[(x * 1e-150, y * 1e-150) for x, y in SQUARE], [(2e-150, 2e-150), (4e-150, 2e-150), (3e-150, 4e-150)]],
