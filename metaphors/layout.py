@@ -26,6 +26,6 @@ METAPHOR = Box(-3.45, -0.05, 5.6, 5.6)
 PANEL_POLYGON = Box(3.6, 1.82, 4.6, 2.0)
 PANEL_CODE = Box(3.6, -0.95, 6.2, 2.55)
 # the source (``--panel source``) takes the polygon's place too: title to call line
-PANEL_SOURCE = Box(3.62, 0.45, 6.7, 5.3)
+PANEL_SOURCE = Box(3.58, 0.45, 6.7, 5.3)
 PANEL_CALL_Y = -2.65
 SUBTITLE_Y = -3.55

@@ -104,8 +104,9 @@ def window_for(counts: Sequence[int], capacity: int, lit: int,
                current: Window | None = None) -> Window:
     """The window of whole lines (line k takes ``counts[k]`` rows, at most ``capacity`` in
     all) that shows line ``lit``: the ``current`` one if it does, else a new one with about
-    :data:`CONTEXT` of its rows above the lit line (fewer at the top of the listing; more at
-    its end, so that the last window is full too)."""
+    :data:`CONTEXT` of its rows above the lit line (fewer at the top of the listing), then as
+    many lines below as fit, then, if there is still room (at the listing's end, or before a
+    line too long for what is left), more lines above."""
     if current is not None and current.holds(lit):
         return current
     first, above = lit, 0
@@ -116,7 +117,7 @@ def window_for(counts: Sequence[int], capacity: int, lit: int,
     while end < len(counts) and (end <= lit or used + counts[end] <= capacity):
         used += counts[end]
         end += 1
-    while end == len(counts) and first > 0 and used + counts[first - 1] <= capacity:
+    while first > 0 and used + counts[first - 1] <= capacity:  # room left: more above
         first -= 1
         used += counts[first]
     return Window(first, end)

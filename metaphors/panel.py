@@ -16,6 +16,7 @@ same vertices by the same roles.
 
 from __future__ import annotations
 
+import numpy as np
 from manim import (
     LEFT,
     Animation,
@@ -147,7 +148,8 @@ class Panel:
 
         def place(mobject, indent: int) -> float:
             y = top - (next(slot) + 0.5) * SOURCE_PITCH
-            mobject.move_to((left + indent * cell, y, 0), aligned_edge=LEFT)
+            x = left + indent * cell + _ink_left(mobject.original_text, font, size)
+            mobject.move_to((x, y, 0), aligned_edge=LEFT)
             mobject.shift([0, _baseline_offset(mobject, font, size), 0])
             parts.append(mobject)
             return y
@@ -286,6 +288,17 @@ def _note(lines: int, where: str) -> str:
     ('⋮ 1 line above', '⋮ 12 lines below', '')
     """
     return f"⋮ {lines} line{'s' if lines != 1 else ''} {where}" if lines else ""
+
+
+def _ink_left(string: str, font: str, size: float) -> float:
+    """How far right of where its first cell starts a text's ink starts, less the same for
+    ``M``: placed by their ink, monospace rows would be out of line by their first glyphs'
+    side bearings. (Ink of ``M`` + string: from M's bearing to the string's ink end.)"""
+    def width(text: str) -> float:
+        points = typeset.outline(text, font, float(size))
+        return float(np.ptp(points[:, 0])) if len(points) else 0.0
+
+    return (width("M" + string) - width(string)) - (width("MM") - width("M"))
 
 
 def _baseline_offset(row, font: str, size: float) -> float:

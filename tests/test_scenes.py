@@ -396,6 +396,19 @@ def test_a_viewer_can_read_the_source_panel(case):
     assert_source_panel_readable(source_graph(case).data, case.id)
 
 
+@pytest.mark.parametrize("case", [c for c in _params(SCENES) if c.id == "ears.Ears"])
+def test_a_long_source_moves_its_window_the_same_way_every_time(case):
+    """Ear clipping's listing is taller than the panel: its window moves during the run, and
+    a second build gives the same graph."""
+    built = source_graph(case)
+    moves = [k for k, play in enumerate(built.data["plays"]) for a in play["animations"]
+             if a["type"] == "FadeOut" and any(
+                 r["name"] == "panel:above" for r in a["mobject"].get("submobjects", ()))]
+    assert moves, "the window never moved"
+    again = build(case.scene_class().with_panel("source").handed())
+    assert_same(again, built, f"{case.id} with its source, built twice, differs")
+
+
 @pytest.mark.parametrize("scene", ["own", "divide_and_conquer"])
 def test_a_viewer_can_read_the_source_of_ones_own_heuristic(scene):
     """examples/my_heuristic.py as ``trex render FILE.py:FUNCTION`` plays it (its source is its

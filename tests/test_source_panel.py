@@ -53,9 +53,8 @@ def test_the_window_holds_the_lit_line_and_moves_only_when_it_must(counts, capac
         assert new.holds(lit) and sum(counts[new.first:new.end]) <= capacity
         if window.holds(lit):
             assert new == window
-        else:  # a new window is as full as it can be at the listing's end
-            assert new.end < len(counts) or new.first == 0 or (
-                sum(counts[new.first - 1:new.end]) > capacity)
+        else:  # a new window is as full as it can be: no line above it would fit
+            assert new.first == 0 or sum(counts[new.first - 1:new.end]) > capacity
         window = new
 
 
