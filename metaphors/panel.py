@@ -107,7 +107,7 @@ class Panel:
 
     def changing(self) -> list:
         """The panel's text that changes from beat to beat, bottom first: the light, the lit
-        row, the call line (the code itself never changes). See
+        row, the call line (the code itself changes only when a source's window moves). See
         :meth:`metaphors.board.Board.settle`."""
         return [*(self.lit[1:] if self.lit else ()), self.call]
 
@@ -120,9 +120,12 @@ class Panel:
         self.window = None if fits else window_for(counts, self._slots() - 2, 0)
         return self._window_block()
 
+    def _cell(self) -> float:
+        """The width of a monospace cell of the source."""
+        return typeset.text("M" * 20, font=self.theme.mono_font, size=SOURCE_SIZE).width / 20
+
     def _columns(self) -> int:
-        cell = typeset.text("M" * 20, font=self.theme.mono_font, size=SOURCE_SIZE).width / 20
-        return int((PANEL_SOURCE.width - 2 * SOURCE_MARGIN) / cell + 1e-6)
+        return int((PANEL_SOURCE.width - 2 * SOURCE_MARGIN) / self._cell() + 1e-6)
 
     def _slots(self) -> int:
         """How many rows the panel holds (a window's two notes among them)."""
@@ -139,8 +142,7 @@ class Panel:
         each from the top, placed by their baselines, and the notes of the lines above and
         below the window."""
         window = self.window or Window(0, len(self.code_lines))
-        font, size, idle = self.theme.mono_font, SOURCE_SIZE, self.theme.idle
-        cell = typeset.text("M" * 20, font=font, size=size).width / 20
+        font, size, idle, cell = self.theme.mono_font, SOURCE_SIZE, self.theme.idle, self._cell()
         left = PANEL_SOURCE.x - PANEL_SOURCE.width / 2 + SOURCE_MARGIN
         top = PANEL_SOURCE.y + PANEL_SOURCE.height / 2
         slot = iter(range(self._slots()))
