@@ -189,29 +189,39 @@ class UserHeuristic:
         return f"{self.name}: {first}" if first else self.name
 
     def source(self) -> tuple[tuple[int, str], ...]:
-        """(line number, text) of the function as the panel shows it: no decorators,
-        docstring or blank lines (the same rule as :func:`metaphors.pseudocode.source_of`)."""
-        try:
-            lines, first = inspect.getsourcelines(self.raw)
-        except (OSError, TypeError):
-            return ()
-        text = textwrap.dedent("".join(lines)).splitlines()
-        kept: list[tuple[int, str]] = []
-        in_doc = False
-        for number, line in ((first + k, line.rstrip()) for k, line in enumerate(text)):
-            stripped = line.strip()
-            if stripped.startswith("@") and not kept:
-                continue
-            if in_doc:
-                in_doc = not any(stripped.endswith(q) for q in ('"""', "'''"))
-                continue
-            if stripped.startswith(('"""', "'''")):
-                quote = stripped[:3]
-                in_doc = stripped.count(quote) < 2
-                continue
-            if stripped:
-                kept.append((number, line))
-        return tuple(kept)
+        """(line number, text) of the function as the panel shows it (:func:`shown_source`)."""
+        return shown_source(self.raw)
+
+
+def shown_source(function) -> tuple[tuple[int, str], ...]:
+    """(line number, text) of a function as the panel shows it: no decorators, docstring or
+    blank lines; empty when its source cannot be read. The panel shows built-ins the same
+    way (:func:`metaphors.pseudocode.source_of`).
+
+    >>> [text for _, text in shown_source(shown_source)][:2]
+    ['def shown_source(function) -> tuple[tuple[int, str], ...]:', '    try:']
+    """
+    try:
+        lines, first = inspect.getsourcelines(function)
+    except (OSError, TypeError):
+        return ()
+    text = textwrap.dedent("".join(lines)).splitlines()
+    kept: list[tuple[int, str]] = []
+    in_doc = False
+    for number, line in ((first + k, line.rstrip()) for k, line in enumerate(text)):
+        stripped = line.strip()
+        if stripped.startswith("@") and not kept:
+            continue
+        if in_doc:  # before the opening test: a docstring's closing quotes open none
+            in_doc = not any(stripped.endswith(q) for q in ('"""', "'''"))
+            continue
+        if stripped.startswith(('"""', "'''")):
+            quote = stripped[:3]
+            in_doc = stripped.count(quote) < 2
+            continue
+        if stripped:
+            kept.append((number, line))
+    return tuple(kept)
 
 
 def is_user_spec(text: str) -> bool:

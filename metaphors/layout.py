@@ -25,6 +25,8 @@ METAPHOR = Box(-3.45, -0.05, 5.6, 5.6)
 # and above the code
 PANEL_POLYGON = Box(3.6, 1.82, 4.6, 2.0)
 PANEL_CODE = Box(3.6, -0.95, 6.2, 2.55)
+# the source (``--panel source``) takes the polygon's place too: title to call line
+PANEL_SOURCE = Box(3.58, 0.45, 6.7, 5.3)
 PANEL_CALL_Y = -2.65
 SUBTITLE_Y = -3.55
 #: the widest a subtitle line may be (scene units) before it takes two lines

@@ -5,10 +5,18 @@ The code is the run's pseudocode in the thesis's words (:mod:`story.pseudocode`,
 beat's ``row``) or the real source of the shown function (lit by each beat's ``line``); either
 way a row is named by its place in the listing, ``code:1`` the first (docs/scene-graph.md). The source is what a panel shows
 until :meth:`Panel.show_pseudocode` is called (:func:`metaphors.play.board_for` decides).
+
+The source is shown at a readable size (:data:`SOURCE_SIZE`), never shrunk: its long lines
+wrap (:mod:`metaphors.listing`; a wrapped line's rows are ``code:7``, ``code:7.2`` …, all lit
+together), and a listing taller than the panel shows a window of whole lines holding the lit
+one, with a note of the lines above and below it; the window changes only when the lit line
+leaves it. It takes the panel's polygon's place too: the metaphor on the left colours the
+same vertices by the same roles.
 """
 
 from __future__ import annotations
 
+import numpy as np
 from manim import (
     LEFT,
     Animation,
@@ -20,7 +28,8 @@ from manim import (
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, hole_markers, polygon_mobject, vertex_markers
-from metaphors.layout import PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON
+from metaphors.layout import PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON, PANEL_SOURCE
+from metaphors.listing import Row, Window, listing_rows, window_for
 from metaphors.pseudocode import source_of
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
@@ -33,6 +42,13 @@ from story.pseudocode import PSEUDOCODE, SOURCE, Step
 PSEUDOCODE_PITCH = 0.34
 #: how far a pseudocode row moves right for each level (two leading spaces) of indentation
 PSEUDOCODE_INDENT = 0.3
+#: the source's monospace size: its shortest row (``else:``, ``tests += 1``) is 0.23 units
+#: high, 2.9 % of the frame's height
+SOURCE_SIZE = 22
+#: the distance between the source's rows (scene units)
+SOURCE_PITCH = 0.36
+#: how far the source's rows keep from the sides of their light
+SOURCE_MARGIN = 0.12
 
 
 class Panel:
@@ -55,6 +71,12 @@ class Panel:
         self.mode = SOURCE
         self.code_lines = source_of(shown) if shown else ()
         self.pseudocode: tuple[Step, ...] = ()
+        # the source: its rows, the window of lines shown (None: all of them), and each
+        # shown line's row mobjects and the middle of their slots
+        self.rows: tuple[Row, ...] = ()
+        self.window: Window | None = None
+        self.shown: dict[int, list] = {}
+        self.slot_y: dict[int, list[float]] = {}
         self.code = self._code_block()
         # pseudocode: the height of every row's light, and the middle of each row's line
         self.light_height: float | None = None
@@ -79,37 +101,80 @@ class Panel:
         self.code = self._pseudocode_block()
 
     def mobjects(self) -> list:
+        if self.mode == SOURCE:  # the code has the polygon's place (module docs)
+            return [self.code, self.call]
         return [self.outline, *self.markers.values(), self.code, self.call]
 
     def changing(self) -> list:
         """The panel's text that changes from beat to beat, bottom first: the light, the lit
-        row, the call line (the code itself never changes). See
+        row, the call line (the code itself changes only when a source's window moves). See
         :meth:`metaphors.board.Board.settle`."""
         return [*(self.lit[1:] if self.lit else ()), self.call]
 
     def _code_block(self) -> VGroup:
-        size = 15 if len(self.code_lines) <= 12 else 11
-        font = self.theme.mono_font
-        # A row is named by its place in the listing shown (``code:1`` is the first row), not
-        # by its source line: moving the algorithm within its file renames nothing
-        # (docs/scene-graph.md).
-        rows = VGroup(*[
-            tag(typeset.text(text.strip() or " ", font=font, size=size, colour=self.theme.idle),
-                "idle", f"code:{place}")
-            for place, (_, text) in enumerate(self.code_lines, start=1)
-        ])
-        if not len(rows):
-            return rows
-        rows.arrange(direction=[0, -1, 0], aligned_edge=LEFT, buff=0.07)
-        # Text drops leading spaces: indent each row by hand, one monospace cell per space.
-        cell = typeset.text("M" * 20, font=font, size=size).width / 20
-        for row, (_, text) in zip(rows, self.code_lines, strict=True):
-            row.shift([cell * (len(text) - len(text.lstrip(" "))), 0, 0])
-        rows.scale_to_fit_height(min(rows.height, PANEL_CODE.height))
-        if rows.width > PANEL_CODE.width:
-            rows.scale_to_fit_width(PANEL_CODE.width)
-        rows.move_to((PANEL_CODE.x, PANEL_CODE.y, 0))
-        return rows
+        """The source's rows (:data:`SOURCE_SIZE`, wrapped to the panel's width), all of them
+        if they fit its height, else the first window of them."""
+        self.rows = listing_rows([text for _, text in self.code_lines], self._columns())
+        counts = self._row_counts()
+        fits = len(self.rows) <= self._slots()
+        self.window = None if fits else window_for(counts, self._slots() - 2, 0)
+        return self._window_block()
+
+    def _cell(self) -> float:
+        """The width of a monospace cell of the source."""
+        return typeset.text("M" * 20, font=self.theme.mono_font, size=SOURCE_SIZE).width / 20
+
+    def _columns(self) -> int:
+        return int((PANEL_SOURCE.width - 2 * SOURCE_MARGIN) / self._cell() + 1e-6)
+
+    def _slots(self) -> int:
+        """How many rows the panel holds (a window's two notes among them)."""
+        return int(PANEL_SOURCE.height / SOURCE_PITCH + 1e-6)
+
+    def _row_counts(self) -> list[int]:
+        counts = [0] * len(self.code_lines)
+        for row in self.rows:
+            counts[row.line] += 1
+        return counts
+
+    def _window_block(self) -> VGroup:
+        """The rows of the window's lines (every line's when there is no window), one slot
+        each from the top, placed by their baselines, and the notes of the lines above and
+        below the window."""
+        window = self.window or Window(0, len(self.code_lines))
+        font, size, idle, cell = self.theme.mono_font, SOURCE_SIZE, self.theme.idle, self._cell()
+        left = PANEL_SOURCE.x - PANEL_SOURCE.width / 2 + SOURCE_MARGIN
+        top = PANEL_SOURCE.y + PANEL_SOURCE.height / 2
+        slot = iter(range(self._slots()))
+        parts, self.shown, self.slot_y = [], {}, {}
+
+        def place(mobject, indent: int) -> float:
+            y = top - (next(slot) + 0.5) * SOURCE_PITCH
+            x = left + indent * cell + _ink_left(mobject.original_text, font, size)
+            mobject.move_to((x, y, 0), aligned_edge=LEFT)
+            mobject.shift([0, _baseline_offset(mobject, font, size), 0])
+            parts.append(mobject)
+            return y
+
+        if self.window is not None:  # the first slot holds the note of the lines above
+            above = _note(window.first, "above")
+            if above:
+                place(tag(typeset.text(above, font=font, size=size, colour=idle), "idle",
+                          "panel:above"), 0)
+            else:
+                next(slot)
+        for row in self.rows:
+            if window.holds(row.line):
+                mobject = tag(typeset.text(row.text or " ", font=font, size=size, colour=idle),
+                              "idle", row.name)
+                y = place(mobject, row.indent)
+                self.shown.setdefault(row.line, []).append(mobject)
+                self.slot_y.setdefault(row.line, []).append(y)
+        below = _note(len(self.code_lines) - window.end, "below")
+        if self.window is not None and below:
+            place(tag(typeset.text(below, font=font, size=size, colour=idle), "idle",
+                      "panel:below"), 0)
+        return VGroup(*parts)
 
     def _pseudocode_block(self) -> VGroup:
         """The pseudocode rows in the theme's font, one every :data:`PSEUDOCODE_PITCH` (less
@@ -137,8 +202,9 @@ class Panel:
         return rows
 
     def follow_roles(self, beat) -> list[Animation]:
-        """Animations recolouring the panel's vertices to this beat's roles."""
-        return self._recolour(beat.roles)
+        """Animations recolouring the panel's vertices to this beat's roles (none shown with
+        the source)."""
+        return [] if self.mode == SOURCE else self._recolour(beat.roles)
 
     def follow_text(self, beat) -> list[Animation]:
         """Animations moving the light to this beat's line and showing its call line (none if
@@ -163,12 +229,25 @@ class Panel:
         return anims
 
     def _light_line(self, line: int | None) -> list[Animation]:
-        """Light the source row of ``line`` (:meth:`_light_row`)."""
+        """Light the rows of the source line ``line``, bringing the window to it first if it
+        is not shown (the rows fade out and the new window's fade in)."""
         index = next((k for k, (number, _) in enumerate(self.code_lines) if number == line), None)
-        return self._light_row(index)
+        if index is None or (self.lit is not None and self.lit[0] == index):
+            return []
+        anims = []
+        if self.window is not None and not self.window.holds(index):
+            self.window = window_for(self._row_counts(), self._slots() - 2, index, self.window)
+            old, self.code = self.code, self._window_block()
+            anims = [FadeOut(old), FadeIn(self.code)]
+        rows, ys = self.shown[index], self.slot_y[index]
+        light = self._light(SOURCE_PITCH * len(rows) - 0.04, (ys[0] + ys[-1]) / 2,
+                            PANEL_SOURCE)
+        copy = tag(VGroup(*[tag(row.copy().set_color(self.theme.ink), "called", row.name)
+                            for row in rows]), "called", rows[0].name)
+        return [*anims, *self._relight(index, light, copy)]
 
     def _light_row(self, index: int | None) -> list[Animation]:
-        """Light row ``index`` of the code: a light fades in behind it and a copy of the row
+        """Light pseudocode row ``index``: a light fades in behind it and a copy of the row
         in ink over the grey row, while the last ones fade out. The rows themselves never
         change, and nothing slides over them, so they stay in the still layer of every frame.
         None, or the row already lit: the light stays where it is."""
@@ -176,15 +255,19 @@ class Panel:
                 self.lit is not None and self.lit[0] == index):
             return []
         row = self.code[index]
-        if self.mode == PSEUDOCODE:  # every row's light alike, centred on its line
-            height, y = self.light_height, self.line_y[index]
-        else:
-            height, y = row.height + 0.08, row.get_y()
-        light = tag(Rectangle(width=PANEL_CODE.width, height=height, stroke_width=0,
+        light = self._light(self.light_height, self.line_y[index], PANEL_CODE)
+        copy = tag(row.copy().set_color(self.theme.ink), "called", row.name)
+        return self._relight(index, light, copy)
+
+    def _light(self, height: float, y: float, box) -> Rectangle:
+        """The light behind a lit row (or a lit line's rows), across the code's box."""
+        light = tag(Rectangle(width=box.width, height=height, stroke_width=0,
                               fill_color=self.theme.called, fill_opacity=0.3), "called",
                     "panel:lit")
-        light.move_to((PANEL_CODE.x, y, 0))
-        copy = tag(row.copy().set_color(self.theme.ink), "called", row.name)
+        return light.move_to((box.x, y, 0))
+
+    def _relight(self, index: int, light: Rectangle, copy) -> list[Animation]:
+        """Fade the last light and copy out and these in (over the rows, under all else)."""
         for mobject in (light, copy):
             mobject.set_z_index(BACKDROP_Z)  # the copy would keep the row's STILL_Z
         anims = [FadeOut(m) for m in self.lit[1:]] if self.lit is not None else []
@@ -198,6 +281,26 @@ class Panel:
         new.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         old, self.call = self.call, new
         return [FadeOut(old), FadeIn(new)]
+
+
+def _note(lines: int, where: str) -> str:
+    """The note of the lines a window leaves out above or below it ('' for none).
+
+    >>> _note(1, "above"), _note(12, "below"), _note(0, "below")
+    ('⋮ 1 line above', '⋮ 12 lines below', '')
+    """
+    return f"⋮ {lines} line{'s' if lines != 1 else ''} {where}" if lines else ""
+
+
+def _ink_left(string: str, font: str, size: float) -> float:
+    """How far right of where its first cell starts a text's ink starts, less the same for
+    ``M``: placed by their ink, monospace rows would be out of line by their first glyphs'
+    side bearings. (Ink of ``M`` + string: from M's bearing to the string's ink end.)"""
+    def width(text: str) -> float:
+        points = typeset.outline(text, font, float(size))
+        return float(np.ptp(points[:, 0])) if len(points) else 0.0
+
+    return (width("M" + string) - width(string)) - (width("MM") - width("M"))
 
 
 def _baseline_offset(row, font: str, size: float) -> float:

@@ -9,10 +9,9 @@ The log's line numbers are source lines of the algorithm, so the lit line is exa
 
 from __future__ import annotations
 
-import inspect
-import textwrap
 from functools import cache
 
+from geometry.user_heuristics import shown_source
 from story.registry import REGISTRY
 
 
@@ -23,27 +22,12 @@ def _functions() -> dict:
 
 @cache
 def source_of(name: str) -> tuple[tuple[int, str], ...]:
-    """(source line number, text) for each shown line: no decorators, docstring or blank lines.
+    """(source line number, text) for each shown line: no decorators, docstring or blank lines
+    (:func:`geometry.user_heuristics.shown_source`). Empty for an unknown name (the panel then
+    shows no code).
 
-    Empty for an unknown name (the panel then shows no code).
+    >>> [text for _, text in source_of("divide_and_conquer")][2]  # past the docstring
+    '    find = heuristic if callable(heuristic) else HEURISTICS[heuristic]'
     """
     function = _functions().get(name)
-    if function is None:
-        return ()
-    lines, first = inspect.getsourcelines(function)
-    text = textwrap.dedent("".join(lines)).splitlines()
-    numbered = [(first + k, line.rstrip()) for k, line in enumerate(text)]
-    kept, in_doc = [], False
-    for number, line in numbered:
-        stripped = line.strip()
-        if stripped.startswith("@") and not kept:
-            continue
-        if stripped.startswith('"""'):
-            in_doc = stripped.count('"""') != 2
-            continue
-        if in_doc:
-            in_doc = '"""' not in stripped
-            continue
-        if stripped:
-            kept.append((number, line))
-    return tuple(kept)
+    return () if function is None else shown_source(function)

@@ -78,6 +78,25 @@ def code_rows(graph_json) -> list[dict]:
             if n["name"].startswith("code:") and n["role"] == "idle"]
 
 
+def shown_source(graph_json) -> list[tuple[str, str]]:
+    """(name, text) of each source line in a scene graph's final panel, in order: a wrapped
+    line's rows (``code:7``, ``code:7.2`` …) joined, every space left out (a row may end where
+    a space was)."""
+    lines: list[tuple[str, str]] = []
+    for row in code_rows(graph_json):
+        text = squeezed(row["text"])
+        if "." in row["name"]:  # a continuation row
+            lines[-1] = (lines[-1][0], lines[-1][1] + text)
+        else:
+            lines.append((row["name"], text))
+    return lines
+
+
+def squeezed(text: str) -> str:
+    """The text without its spaces."""
+    return "".join(text.split())
+
+
 def _runs(name: str):
     """(polygon, heuristic) of the runs of ``name`` the tests look at."""
     extra = [("lecture", h) for h in heuristics()] if name == "divide-and-conquer" else []
@@ -238,10 +257,15 @@ def test_a_heuristics_scene_shows_its_docstrings_pseudocode_else_its_source(expl
     assert [r["name"] for r in shown] == [f"code:{k}" for k in range(1, len(WIDEST_ROWS) + 1)]
     source = code_rows(build_graph(scene_for_heuristic(explained).with_panel("source").handed()))
     assert source[0]["text"] == "def widest(polygon):"
-    own = code_rows(build_graph(scene_for_heuristic(EXAMPLE).handed()))  # no pseudocode
+    own = build_graph(scene_for_heuristic(EXAMPLE).handed())  # no pseudocode: its source
     code = run_logged(EXAMPLE, "counterexample").meta["code"]
-    assert [r["text"] for r in own] == [text.strip() for _, text in code]
-    assert [r["name"] for r in own] == [f"code:{k}" for k in range(1, len(code) + 1)]
+    listing = [(f"code:{k}", squeezed(text)) for k, (_, text) in enumerate(code, start=1)]
+    shown = shown_source(own)  # the window of it that holds the last lit line
+    first = listing.index(shown[0])
+    assert shown == listing[first:first + len(shown)] and shown[-1] == listing[-1]
+    notes = [n["text"] for n in graph_data(own)["final"] for n in [n, *n.get("submobjects", ())]
+             if n["name"] == "panel:above"]
+    assert notes == ([f"⋮ {first} lines above"] if first else [])
 
 
 def test_docstring_rows_keep_indentation_and_may_cover_nothing():

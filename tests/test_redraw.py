@@ -78,14 +78,20 @@ def test_lit_row_is_a_copy_over_the_row(mode):
     panel = boards[0].panel
     assert panel.mode == mode
     index, light, copy = panel.lit
-    row = panel.code[index]
-    assert np.array_equal(copy.points, row.points)
-    assert copy.get_fill_color().to_hex().lower() == panel.theme.ink.lower()
-    # the light lies behind the whole row: centred on it (a pseudocode row: on its line)
-    middle = panel.line_y[index] if mode == "pseudocode" else row.get_center()[1]
+    # a pseudocode row is one row; a source line one or more (it wraps), lit together
+    rows, copies = ([panel.code[index]], [copy]) if mode == "pseudocode" else (
+        panel.shown[index], list(copy))
+    assert len(rows) == len(copies) >= 1
+    for row, lit in zip(rows, copies, strict=True):
+        assert np.array_equal(lit.points, row.points)
+        assert lit.get_fill_color().to_hex().lower() == panel.theme.ink.lower()
+        assert light.get_bottom()[1] < row.get_bottom()[1] < row.get_top()[1] < light.get_top()[1]
+        assert light.z_index == lit.z_index == BACKDROP_Z > row.z_index  # over the grey row
+    # the light lies behind the whole row: centred on it (a pseudocode row: on its line; a
+    # source line: on the middle of its rows' slots)
+    ys = [panel.line_y[index]] if mode == "pseudocode" else panel.slot_y[index]
+    middle = (ys[0] + ys[-1]) / 2
     assert light.get_center()[1] == pytest.approx(middle)
-    assert light.get_bottom()[1] < row.get_bottom()[1] < row.get_top()[1] < light.get_top()[1]
-    assert light.z_index == copy.z_index == BACKDROP_Z > row.z_index  # over the grey row
     # the rows themselves stay grey: the light is the copy and the rectangle behind it
     assert {r.get_fill_color().to_hex().lower() for r in panel.code} == {panel.theme.idle.lower()}
 

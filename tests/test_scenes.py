@@ -38,8 +38,16 @@ from geometry.io import read_polygon, read_shape
 from metaphors.pseudocode import source_of
 from story.registry import entry, hole_pseudocode, wrong
 from tests.reading_rules import LEAST_LINE, graph_nodes, small_texts, unreadable_cues
-from tests.test_pseudocode import PLUMBING, assert_rows_follow_calls, code_rows, graph_data
-from trex.scene_graph import build_graph
+from tests.test_pseudocode import (
+    EXAMPLE,
+    PLUMBING,
+    assert_rows_follow_calls,
+    code_rows,
+    graph_data,
+    shown_source,
+    squeezed,
+)
+from trex.render_command import load_scene_class, resolve_scene, with_heuristic
 from trex.snapshot import SceneGraph, assert_same_graph, build
 
 SCENES_DIR = Path(__file__).resolve().parents[1] / "scenes"
@@ -313,29 +321,113 @@ def test_each_lit_row_covers_the_running_call(case, tmp_path):
                                   if c.id in ("scaling.Scaling", "gravity.Gravity")])
 def test_the_source_is_one_flag_away(case):
     algorithm = case.scene_class().algorithm
-    source = build_graph(case.scene_class().with_panel("source").handed())
-    rows = code_rows(source)
+    source = source_graph(case).text
     expected = source_of(entry(algorithm).shown)
-    assert [r["text"] for r in rows] == [text.strip() for _, text in expected]
-    assert [r["name"] for r in rows] == [f"code:{k}" for k in range(1, len(expected) + 1)]
-    assert rows[0]["text"].startswith("def ")
-    # the same run, the same pictures: only the panel's text differs
+    # all of it fits: every line, its rows joined (docs/scene-graph.md names them)
+    assert shown_source(source) == [(f"code:{k}", squeezed(text))
+                                    for k, (_, text) in enumerate(expected, start=1)]
+    assert code_rows(source)[0]["text"].startswith("def ")
+    # the same run, the same pictures: only the panel differs, its text, and the polygon that
+    # the code took the place of
     def is_code(node) -> bool:
         parts = node.get("submobjects", ())
         return node["name"].startswith(("code:", "panel:lit")) or (bool(parts) and all(
             p["name"].startswith("code:") for p in parts))
 
-    def picture(graph_json):
-        return [n for n in graph_data(graph_json)["final"] if not is_code(n)]
+    def is_panel_polygon(node) -> bool:
+        return node["name"].startswith("panel:") and node["name"] not in ("panel:call",
+                                                                          "panel:lit")
 
+    def picture(graph_json):
+        return [n for n in graph_data(graph_json)["final"]
+                if not is_code(n) and not is_panel_polygon(n)]
+
+    assert any(is_panel_polygon(n) for n in graph(case).data["final"])
+    assert not any(is_panel_polygon(n) and n["name"] not in ("panel:above", "panel:below")
+                   for n in source_graph(case).data["final"])
     assert picture(source) == picture(graph(case))
+
+
+# --- the source panel: readable, wrapped, a window of it when it is long -----------------------
+
+_source_graphs: dict[str, SceneGraph] = {}
+
+
+def source_graph(case: SceneCase) -> SceneGraph:
+    """The scene graph of a case with its panel showing the source, built once."""
+    if case.id not in _source_graphs:
+        _source_graphs[case.id] = build(case.scene_class().with_panel("source").handed())
+    return _source_graphs[case.id]
+
+
+def assert_source_panel_readable(data: dict, what: str) -> None:
+    """Every text readable; in every play that brings in a window of the source, the line lit
+    is one of its lines; at the end, the lit line's copy (if a line is lit) covers all its
+    rows, and nothing overlaps the text."""
+    assert small_texts(data) == [], what
+    for k, play in enumerate(data["plays"], start=1):
+        windows = [{r["name"] for r in a["mobject"].get("submobjects", ())}
+                   for a in play["animations"] if a["type"] == "FadeIn"
+                   and any(r["name"].startswith("code:") for r in
+                           a["mobject"].get("submobjects", ())) and a["mobject"]["role"] is None]
+        lit = [{r["name"] for r in a["mobject"]["submobjects"]} for a in play["animations"]
+               if a["type"] == "FadeIn" and a["mobject"]["role"] == "called"
+               and a["mobject"]["name"].startswith("code:")]
+        for window in windows:
+            assert lit and lit[0] <= window, f"{what}: play {k} shows a window without its light"
+    final = data["final"]
+    rows = [n for top in final for n in [top, *top.get("submobjects", ())]
+            if n["name"].startswith("code:") and n["role"] == "idle"]
+    copies = [n for n in final if n["name"].startswith("code:") and n["role"] == "called"]
+    assert rows and len(copies) <= 1, what  # (a run whose lines lie in helpers lights none)
+    for copy in copies:
+        line = copy["name"]
+        assert [c["name"] for c in copy["submobjects"]] == [
+            r["name"] for r in rows if r["name"] == line or r["name"].startswith(f"{line}.")]
+    assert _clashes(final) == [], what
+
+
+@pytest.mark.parametrize("case", [c for c in _params(SCENES)
+                                  if c.values[0].cls is not None
+                                  and callable(getattr(c.values[0].cls, "with_panel", None))])
+def test_a_viewer_can_read_the_source_panel(case):
+    """The source at a readable size in every scene: its long lines wrap, a long listing
+    shows a window of it that holds the lit line (metaphors/listing.py)."""
+    assert_source_panel_readable(source_graph(case).data, case.id)
+
+
+@pytest.mark.parametrize("case", [c for c in _params(SCENES) if c.id == "ears.Ears"])
+def test_a_long_source_moves_its_window_the_same_way_every_time(case):
+    """Ear clipping's listing is taller than the panel: its window moves during the run, and
+    a second build gives the same graph."""
+    built = source_graph(case)
+    moves = [k for k, play in enumerate(built.data["plays"]) for a in play["animations"]
+             if a["type"] == "FadeOut" and any(
+                 r["name"] == "panel:above" for r in a["mobject"].get("submobjects", ()))]
+    assert moves, "the window never moved"
+    again = build(case.scene_class().with_panel("source").handed())
+    assert_same(again, built, f"{case.id} with its source, built twice, differs")
+
+
+@pytest.mark.parametrize("scene", ["own", "divide_and_conquer"])
+def test_a_viewer_can_read_the_source_of_ones_own_heuristic(scene):
+    """examples/my_heuristic.py as ``trex render FILE.py:FUNCTION`` plays it (its source is its
+    panel's default) and in divide and conquer, as ``trex render divide_and_conquer
+    --heuristic FILE.py:FUNCTION --panel source`` does."""
+    from metaphors.scene import scene_for_heuristic
+
+    if scene == "own":
+        cls = scene_for_heuristic(EXAMPLE)
+    else:
+        cls = with_heuristic(load_scene_class(*resolve_scene(scene)), EXAMPLE).with_panel("source")
+    assert_source_panel_readable(build(cls.handed()).data, scene)
 
 
 # --- layout --------------------------------------------------------------------------------------
 
 #: the text around the picture, which nothing else may overlap (it lies below everything;
 #: the light behind the lit code row is part of it)
-_TEXT_NAMES = ("title", "subtitle", "panel:call", "panel:lit")
+_TEXT_NAMES = ("title", "subtitle", "panel:call", "panel:lit", "panel:above", "panel:below")
 
 
 def _is_backdrop_text(node: dict) -> bool:
@@ -363,15 +455,20 @@ def test_nothing_overlaps_the_text(case):
     so nothing may overlap them, or the drawing order would show. Checked on the final
     picture (the panel's labels next to the code and the title, among others)."""
     final = graph(case).data["final"]
+    if not any(_is_backdrop_text(n) for n in final):
+        pytest.skip(f"{case.id} shows no board")
+    clash = _clashes(final)
+    assert not clash, f"{case.id}: {clash[:5]}"
+
+
+def _clashes(final: list[dict]) -> list[tuple[str, str]]:
+    """(text, other) for every text of the final picture that something else overlaps."""
     text = [(n["name"], n["box"]) for n in final for n in [n, *n.get("submobjects", ())]
             if _is_backdrop_text(n) and n.get("box")]
-    if not text:
-        pytest.skip(f"{case.id} shows no board")
     others = [b for n in final if not _is_backdrop_text(n) for b in _boxes(n)
               if not _is_backdrop_text({"name": b[0]})]
-    clash = [(name, other) for name, (x0, y0, x1, y1) in text for other, (a0, b0, a1, b1) in others
-             if x0 < a1 - 0.01 and a0 < x1 - 0.01 and y0 < b1 - 0.01 and b0 < y1 - 0.01]
-    assert not clash, f"{case.id}: {clash[:5]}"
+    return [(name, other) for name, (x0, y0, x1, y1) in text for other, (a0, b0, a1, b1) in others
+            if x0 < a1 - 0.01 and a0 < x1 - 0.01 and y0 < b1 - 0.01 and b0 < y1 - 0.01]
 
 
 def _vertex_places(nodes_: list[dict]) -> dict[str, list]:

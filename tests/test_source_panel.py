@@ -1,0 +1,131 @@
+"""The source in the panel (``--panel source``): long lines wrap into rows at a readable size,
+and a listing taller than the panel shows a window of whole lines holding the lit one
+(metaphors/listing.py, metaphors/panel.py). The scenes' source graphs are checked in
+tests/test_scenes.py."""
+
+from __future__ import annotations
+
+from itertools import pairwise
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from manim import FadeIn, FadeOut, VGroup, tempconfig
+
+from metaphors.layout import PANEL_CALL_Y, PANEL_SOURCE
+from metaphors.listing import CONTINUATION, Window, listing_rows, window_for, wrap_line
+from metaphors.panel import SOURCE_PITCH, Panel
+from tests.reading_rules import LEAST_LINE
+
+WORDS = st.text(alphabet="abcxyz_([,.)]:=+", min_size=1, max_size=30)
+
+
+@given(indent=st.integers(0, 24), words=st.lists(WORDS, min_size=1, max_size=12),
+       columns=st.integers(20, 40))
+def test_a_long_line_wraps_into_rows_that_fit(indent, words, columns):
+    text = " " * indent + " ".join(words)
+    rows = wrap_line(4, text, columns)
+    assert all(row.indent + len(row.text) <= columns for row in rows)
+    # nothing lost or added but the spaces it broke at
+    assert "".join(r.text for r in rows).replace(" ", "") == text.replace(" ", "")
+    assert [r.name for r in rows] == ["code:5", *(f"code:5.{k}" for k in range(2, len(rows) + 1))]
+    assert rows[0].indent == min(indent // 2, columns - 12)
+    assert all(r.indent == min(rows[0].indent + CONTINUATION, columns - 12) for r in rows[1:])
+    assert all(r.text.strip() == r.text and r.text for r in rows)
+
+
+def test_a_line_that_fits_is_one_row_and_keeps_its_level():
+    assert [(r.name, r.indent, r.text) for r in wrap_line(0, "        if angle > widest:", 35)] \
+        == [("code:1", 4, "if angle > widest:")]
+    rows = listing_rows(["def f(polygon):", "    return a_rather_long_name(polygon, other)"], 26)
+    assert [(r.name, r.indent, r.text) for r in rows] == [
+        ("code:1", 0, "def f(polygon):"), ("code:2", 2, "return"),
+        ("code:2.2", 6, "a_rather_long_name("), ("code:2.3", 6, "polygon, other)")]
+
+
+@given(counts=st.lists(st.integers(1, 4), min_size=1, max_size=30), capacity=st.integers(4, 14),
+       lits=st.lists(st.integers(0, 29), max_size=40))
+def test_the_window_holds_the_lit_line_and_moves_only_when_it_must(counts, capacity, lits):
+    window = window_for(counts, capacity, 0)
+    assert window.first == 0
+    for lit in (k % len(counts) for k in lits):
+        new = window_for(counts, capacity, lit, window)
+        assert new.holds(lit) and sum(counts[new.first:new.end]) <= capacity
+        if window.holds(lit):
+            assert new == window
+        else:  # a new window is as full as it can be: no line above it would fit
+            assert new.first == 0 or sum(counts[new.first - 1:new.end]) > capacity
+        window = new
+
+
+def test_a_moved_window_shows_the_lines_before_the_lit_one():
+    assert window_for([1] * 30, 12, 20, Window(0, 12)) == Window(17, 29)
+    assert window_for([1] * 30, 12, 27, Window(0, 12)) == Window(18, 30)  # full at the end
+    assert window_for([1] * 30, 12, 1, Window(18, 30)) == Window(0, 12)
+
+
+# --- the panel --------------------------------------------------------------------------------
+
+#: a listing of 30 lines, some too long for a row
+LONG = [(100 + k, "    " * (k % 3) + (f"value_{k} = compute(first_argument, second_argument, {k})"
+                                      if k % 4 == 0 else f"x{k} = {k}")) for k in range(30)]
+
+
+@pytest.fixture
+def panel(tmp_path) -> Panel:
+    with tempconfig({"media_dir": str(tmp_path)}):
+        panel = Panel([(0, 0), (4, 0), (2, 3)], ["A", "B", "C"], None)
+        panel.show_code(LONG)
+        yield panel
+
+
+def _rows(panel) -> list:
+    return [m for m in panel.code if m.name.startswith("code:")]
+
+
+def test_the_source_is_read_at_its_size_in_the_panels_box(panel):
+    rows = _rows(panel)
+    assert rows and panel.window is not None and panel.window.first == 0
+    bottom = PANEL_SOURCE.y - PANEL_SOURCE.height / 2
+    for mobject in panel.code:
+        assert mobject.height >= LEAST_LINE, mobject.original_text
+        assert mobject.get_bottom()[1] >= bottom > PANEL_CALL_Y
+        assert mobject.get_right()[0] <= PANEL_SOURCE.x + PANEL_SOURCE.width / 2
+    assert [m.name for m in panel.code][-1] == "panel:below"  # and nothing above
+    assert panel.code[-1].original_text == f"⋮ {30 - panel.window.end} lines below"
+    assert "panel:above" not in {m.name for m in panel.code}
+    # the rows are one pitch apart, whatever their glyphs
+    middles = [y for ys in panel.slot_y.values() for y in ys]
+    assert [round(a - b, 6) for a, b in pairwise(middles)] == [SOURCE_PITCH] * (
+        len(middles) - 1)
+
+
+def test_a_wrapped_line_is_lit_whole(panel):
+    anims = panel._light_line(100)  # line 1: long, wrapped
+    index, light, copy = panel.lit
+    rows = panel.shown[0]
+    assert index == 0 and len(rows) > 1 and isinstance(copy, VGroup)
+    assert [c.name for c in copy] == [r.name for r in rows] == ["code:1", "code:1.2"]
+    for row, lit in zip(rows, copy, strict=True):
+        assert (row.points == lit.points).all()
+        assert light.get_bottom()[1] < row.get_bottom()[1] < row.get_top()[1] < light.get_top()[1]
+    assert [type(a) for a in anims] == [FadeIn, FadeIn]  # the light and the copy: no new window
+
+
+def test_the_window_moves_only_when_the_lit_line_leaves_it(panel):
+    first = panel.code
+    for number in (100, 103, 105):
+        anims = panel._light_line(number)
+        assert panel.code is first and not any(a.mobject is first for a in anims)
+    anims = panel._light_line(125)
+    assert panel.code is not first and panel.window.holds(25)
+    assert [type(a) for a in anims[:2]] == [FadeOut, FadeIn]
+    assert anims[0].mobject is first and anims[1].mobject is panel.code
+    above = [m for m in panel.code if m.name == "panel:above"]
+    assert above and above[0].original_text == f"⋮ {panel.window.first} lines above"
+    lit = panel.lit[2]
+    shown = {m.name for m in _rows(panel)}
+    assert {c.name for c in lit} <= shown and lit[0].name == "code:26"
+    assert panel._light_line(125) == []  # lit already: nothing changes
+    back = panel._light_line(101)
+    assert panel.window.holds(1) and back[0].mobject is not first  # a new window, built again
