@@ -196,7 +196,8 @@ def _ray_hit(ring: BridgedRing, p: Point, slots, pts, nxt_pts) -> tuple[Fraction
     if len(cross):
         with np.errstate(all="ignore"):
             a, b = pts[cross], nxt_pts[cross]
-            xs = a[:, 0] + (py - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
+            # the ratio first, in (0, 1): no product of two tiny (or huge) numbers
+            xs = a[:, 0] + (py - a[:, 1]) / (b[:, 1] - a[:, 1]) * (b[:, 0] - a[:, 0])
             # the float x is off by a few ulps of the coordinates it is made of, not of x
             # itself (an edge from -1e9 to 1e9 crossing near 0): each exact x is within
             # ``slack`` of its float; the exact test below decides

@@ -10,6 +10,8 @@
 
 from __future__ import annotations
 
+import math
+
 import shapely
 
 import tracing
@@ -19,12 +21,34 @@ from geometry.predicates import orient
 from geometry.results import Triangle, Triangulation, canonical, finished
 
 
-def shapely_polygon(polygon: Polygon | PolygonWithHoles) -> shapely.Polygon:
-    """The same polygon (its holes as interior rings) for shapely."""
+def shapely_polygon(polygon: Polygon | PolygonWithHoles, points=None) -> shapely.Polygon:
+    """The same polygon (its holes as interior rings) for shapely; ``points``: other
+    coordinates for its vertices (scaled ones)."""
+    points = polygon.points if points is None else points
     if not polygon.hole_count:
-        return shapely.Polygon(polygon.points)
-    rings = [polygon.points[r.start:r.stop] for r in map(polygon.ring, range(polygon.hole_count + 1))]
+        return shapely.Polygon(points)
+    rings = [points[r.start:r.stop] for r in map(polygon.ring, range(polygon.hole_count + 1))]
     return shapely.Polygon(rings[0], rings[1:])
+
+
+def _scaled_near_one(points) -> list[tuple[float, float]]:
+    """The points times the power of two that brings the largest coordinate near 1, when
+    they are far from it (GEOS fails on a polygon at 1e±200) and every coordinate scales
+    exactly; else the points themselves. A power of two changes no sign of any predicate.
+
+    >>> _scaled_near_one([(0.0, 3e200), (1e200, 0.0)])[0][1] < 4
+    True
+    >>> _scaled_near_one([(0.5, 2.0)])
+    [(0.5, 2.0)]
+    """
+    biggest = max(abs(c) for point in points for c in point)
+    k = math.frexp(biggest)[1] if biggest else 0
+    if abs(k) < 64:
+        return list(points)
+    scaled = [(math.ldexp(x, -k), math.ldexp(y, -k)) for x, y in points]
+    exact = all(math.ldexp(a, k) == b for s, p in zip(scaled, points, strict=True)
+                for a, b in zip(s, p, strict=True))
+    return scaled if exact else list(points)
 
 
 def constrained_delaunay(polygon: Polygon | PolygonWithHoles) -> list[Triangle]:
@@ -34,8 +58,9 @@ def constrained_delaunay(polygon: Polygon | PolygonWithHoles) -> list[Triangle]:
     triangle corner is an exact copy of one of our vertices (the rings of a
     polygon with holes share no point, so the copy names one vertex).
     """
-    index = {p: i for i, p in enumerate(polygon.points)}
-    result = shapely.constrained_delaunay_triangles(shapely_polygon(polygon))
+    points = _scaled_near_one(polygon.points)
+    index = {p: i for i, p in enumerate(points)}
+    result = shapely.constrained_delaunay_triangles(shapely_polygon(polygon, points))
     triangles = []
     for tri in shapely.get_parts(result):
         a, b, c = (index[(float(x), float(y))] for x, y in tri.exterior.coords[:3])

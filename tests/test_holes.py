@@ -174,7 +174,10 @@ def cases():
              (-3e9, 1e9)],
             [(1.271242540482291, -0.2887449228429917), (11.271242540482291, 0.2112550771570083),
              (1.271242540482291, 0.7112550771570083)]],
-        # huge and tiny coordinates
+        # huge and tiny coordinates; slanted walls too (the ray's x must not underflow)
+        **{f"slanted at {scale:g}": [[(x * scale, y * scale) for x, y in ring] for ring in (
+            [(0, 0), (8, 0), (12, 10), (0, 10)], [(4, 4), (9, 5), (4, 6)])]
+           for scale in (1e-300, 1e-200, 1e200, 1e300)},
         "huge": [[(x * 1e150, y * 1e150) for x, y in SQUARE], [(2e150, 2e150), (4e150, 2e150), (3e150, 4e150)]],
         "tiny": [[(x * 1e-150, y * 1e-150) for x, y in SQUARE], [(2e-150, 2e-150), (4e-150, 2e-150), (3e-150, 4e-150)]],
     }  # fmt: skip
