@@ -43,9 +43,10 @@ class Row:
         return f"code:{self.line + 1}" + (f".{self.part}" if self.part > 1 else "")
 
 
-def wrap_line(line: int, text: str, columns: int) -> list[Row]:
+def wrap_line(line: int, text: str, columns: int, most: int | None = None) -> list[Row]:
     """The rows of one line of source in rows of ``columns`` cells, each broken where
-    :func:`_break_at` says.
+    :func:`_break_at` says; at most ``most`` rows, the last of them then ending in ``…``
+    (a line taller than the panel is shown cut, not over what is below it).
 
     >>> [r.text for r in wrap_line(0, "x = f(alpha, beta)", 10)]
     ['x = f(', 'alpha,', 'beta)']
@@ -53,6 +54,8 @@ def wrap_line(line: int, text: str, columns: int) -> list[Row]:
     ['arm.update(points=[', 'b.point, c.point])']
     >>> [r.text for r in wrap_line(0, "abcdefghijklmnopqrstuvwxyz", 20)]
     ['abcdefghijklmnopqrst', 'uvwxyz']
+    >>> [r.text for r in wrap_line(0, "x = f(alpha, beta)", 10, most=2)]
+    ['x = f(', 'alpha, be…']
     """
     body = text.strip()
     indent = min((len(text) - len(text.lstrip(" "))) // 2, max(0, columns - NARROWEST))
@@ -62,6 +65,9 @@ def wrap_line(line: int, text: str, columns: int) -> list[Row]:
         width = max(1, columns - here)
         if len(body) <= width:
             rows.append(Row(line, len(rows) + 1, here, body))
+            return rows
+        if most is not None and len(rows) + 1 >= most:
+            rows.append(Row(line, len(rows) + 1, here, body[:width - 1].rstrip() + "…"))
             return rows
         cut = _break_at(body, width)
         rows.append(Row(line, len(rows) + 1, here, body[:cut].rstrip()))
@@ -84,9 +90,10 @@ def _break_at(body: str, width: int) -> int:
     return dot + 1 if dot >= 0 else width
 
 
-def listing_rows(lines: Sequence[str], columns: int) -> tuple[Row, ...]:
-    """Every line's rows, in order."""
-    return tuple(row for k, text in enumerate(lines) for row in wrap_line(k, text, columns))
+def listing_rows(lines: Sequence[str], columns: int, most: int | None = None) -> tuple[Row, ...]:
+    """Every line's rows, in order (at most ``most`` for a line)."""
+    return tuple(row for k, text in enumerate(lines)
+                 for row in wrap_line(k, text, columns, most))
 
 
 @dataclass(frozen=True)
@@ -102,15 +109,16 @@ class Window:
 
 def window_for(counts: Sequence[int], capacity: int, lit: int,
                current: Window | None = None) -> Window:
-    """The window of whole lines (line k takes ``counts[k]`` rows, at most ``capacity`` in
-    all) that shows line ``lit``: the ``current`` one if it does, else a new one with about
+    """The window of whole lines (line k takes ``counts[k]`` rows, none more than
+    ``capacity``; at most ``capacity`` in all) that shows line ``lit``: the ``current`` one if it does, else a new one with about
     :data:`CONTEXT` of its rows above the lit line (fewer at the top of the listing), then as
     many lines below as fit, then, if there is still room (at the listing's end, or before a
     line too long for what is left), more lines above."""
     if current is not None and current.holds(lit):
         return current
     first, above = lit, 0
-    while first > 0 and above + counts[first - 1] <= int(capacity * CONTEXT):
+    context = min(int(capacity * CONTEXT), capacity - counts[lit])
+    while first > 0 and above + counts[first - 1] <= context:
         first -= 1
         above += counts[first]
     end, used = first, 0

@@ -114,7 +114,8 @@ class Panel:
     def _code_block(self) -> VGroup:
         """The source's rows (:data:`SOURCE_SIZE`, wrapped to the panel's width), all of them
         if they fit its height, else the first window of them."""
-        self.rows = listing_rows([text for _, text in self.code_lines], self._columns())
+        self.rows = listing_rows([text for _, text in self.code_lines], self._columns(),
+                                 most=self._slots() - 2)
         counts = self._row_counts()
         fits = len(self.rows) <= self._slots()
         self.window = None if fits else window_for(counts, self._slots() - 2, 0)

@@ -34,6 +34,19 @@ def test_a_long_line_wraps_into_rows_that_fit(indent, words, columns):
     assert all(r.text.strip() == r.text and r.text for r in rows)
 
 
+@given(words=st.lists(WORDS, min_size=1, max_size=40), most=st.integers(1, 6))
+def test_a_line_taller_than_the_panel_is_cut(words, most):
+    text = " ".join(words)
+    whole, cut = wrap_line(0, text, 20), wrap_line(0, text, 20, most=most)
+    if len(whole) <= most:
+        assert cut == whole
+        return
+    assert len(cut) == most and cut[:-1] == whole[:most - 1]
+    assert cut[-1].text.endswith("…") and cut[-1].indent + len(cut[-1].text) <= 20
+    shown = "".join(r.text for r in cut)[:-1].replace(" ", "")
+    assert text.replace(" ", "").startswith(shown)
+
+
 def test_a_line_that_fits_is_one_row_and_keeps_its_level():
     assert [(r.name, r.indent, r.text) for r in wrap_line(0, "        if angle > widest:", 35)] \
         == [("code:1", 4, "if angle > widest:")]
@@ -43,9 +56,10 @@ def test_a_line_that_fits_is_one_row_and_keeps_its_level():
         ("code:2.2", 6, "a_rather_long_name("), ("code:2.3", 6, "polygon, other)")]
 
 
-@given(counts=st.lists(st.integers(1, 4), min_size=1, max_size=30), capacity=st.integers(4, 14),
+@given(counts=st.lists(st.integers(1, 14), min_size=1, max_size=30), capacity=st.integers(1, 14),
        lits=st.lists(st.integers(0, 29), max_size=40))
 def test_the_window_holds_the_lit_line_and_moves_only_when_it_must(counts, capacity, lits):
+    counts = [min(c, capacity) for c in counts]  # no line has more rows (wrap_line's most)
     window = window_for(counts, capacity, 0)
     assert window.first == 0
     for lit in (k % len(counts) for k in lits):
@@ -129,3 +143,18 @@ def test_the_window_moves_only_when_the_lit_line_leaves_it(panel):
     assert panel._light_line(125) == []  # lit already: nothing changes
     back = panel._light_line(101)
     assert panel.window.holds(1) and back[0].mobject is not first  # a new window, built again
+
+
+def test_a_line_of_more_rows_than_the_panel_holds_is_cut_there(tmp_path):
+    """One's own listing with a long literal: 20 rows' worth in one line, lit, first and
+    later (it crashed the panel)."""
+    items = ", ".join(f"item_{k}" for k in range(60))
+    code = [(10, "def mine(polygon):"), (11, f"    table = [{items}]"), (12, "    return table")]
+    with tempconfig({"media_dir": str(tmp_path)}):
+        for lit in (11, 12, 10, 11):
+            panel = Panel([(0, 0), (4, 0), (2, 3)], ["A", "B", "C"], None)
+            panel.show_code(code[1:] if lit == 11 else code)  # the long line first, too
+            panel._light_line(lit)
+            rows = _rows(panel)
+            assert len(rows) <= panel._slots() and panel.lit is not None
+            assert any(r.original_text.endswith("…") for r in rows)
