@@ -195,33 +195,29 @@ class UserHeuristic:
 
 def shown_source(function) -> tuple[tuple[int, str], ...]:
     """(line number, text) of a function as the panel shows it: no decorators, docstring or
-    blank lines; empty when its source cannot be read. The panel shows built-ins the same
-    way (:func:`metaphors.pseudocode.source_of`).
+    blank lines, tabs as four spaces; empty when its source cannot be read. The panel shows
+    built-ins the same way (:func:`metaphors.pseudocode.source_of`).
 
     >>> [text for _, text in shown_source(shown_source)][:2]
     ['def shown_source(function) -> tuple[tuple[int, str], ...]:', '    try:']
     """
     try:
         lines, first = inspect.getsourcelines(function)
-    except (OSError, TypeError):
+        tree = ast.parse(textwrap.dedent("".join(lines)))
+    except (OSError, TypeError, SyntaxError):
         return ()
+    node = next((n for n in tree.body if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef))),
+                None)
+    if node is None:
+        return ()
+    hidden = set(range(1, node.lineno))  # decorators (a def's line is the ``def``)
+    body = node.body[0] if node.body else None
+    if (isinstance(body, ast.Expr) and isinstance(body.value, ast.Constant)
+            and isinstance(body.value.value, str)):
+        hidden.update(range(body.lineno, (body.end_lineno or body.lineno) + 1))
     text = textwrap.dedent("".join(lines)).splitlines()
-    kept: list[tuple[int, str]] = []
-    in_doc = False
-    for number, line in ((first + k, line.rstrip()) for k, line in enumerate(text)):
-        stripped = line.strip()
-        if stripped.startswith("@") and not kept:
-            continue
-        if in_doc:  # before the opening test: a docstring's closing quotes open none
-            in_doc = not any(stripped.endswith(q) for q in ('"""', "'''"))
-            continue
-        if stripped.startswith(('"""', "'''")):
-            quote = stripped[:3]
-            in_doc = stripped.count(quote) < 2
-            continue
-        if stripped:
-            kept.append((number, line))
-    return tuple(kept)
+    return tuple((first + k, line.rstrip().expandtabs(4)) for k, line in enumerate(text)
+                 if k + 1 not in hidden and line.strip())
 
 
 def is_user_spec(text: str) -> bool:

@@ -153,7 +153,7 @@ class LectureScene(TraceScene):
             return one
         indent = (typeset.text("• M", font=font, size=size).width
                   - typeset.text("M", font=font, size=size).width)
-        shown = typeset.balanced("• " + line, font=font, size=size, colour=colour,
+        shown = typeset.balanced(line, font=font, size=size, colour=colour, lead="• ",
                                  width=CARD_WIDTH - indent, aligned_edge=LEFT)
         if isinstance(shown, VGroup):
             for row in shown[1:]:

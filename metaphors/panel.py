@@ -16,7 +16,6 @@ same vertices by the same roles.
 
 from __future__ import annotations
 
-import numpy as np
 from manim import (
     LEFT,
     Animation,
@@ -100,8 +99,14 @@ class Panel:
         self.pseudocode = tuple(rows)
         self.code = self._pseudocode_block()
 
+    @property
+    def shows_polygon(self) -> bool:
+        """Whether the panel draws its polygon: not when source code takes its place (module
+        docs); a run whose source cannot be read keeps it."""
+        return self.mode != SOURCE or not self.code_lines
+
     def mobjects(self) -> list:
-        if self.mode == SOURCE:  # the code has the polygon's place (module docs)
+        if not self.shows_polygon:
             return [self.code, self.call]
         return [self.outline, *self.markers.values(), self.code, self.call]
 
@@ -205,7 +210,7 @@ class Panel:
     def follow_roles(self, beat) -> list[Animation]:
         """Animations recolouring the panel's vertices to this beat's roles (none shown with
         the source)."""
-        return [] if self.mode == SOURCE else self._recolour(beat.roles)
+        return self._recolour(beat.roles) if self.shows_polygon else []
 
     def follow_text(self, beat) -> list[Animation]:
         """Animations moving the light to this beat's line and showing its call line (none if
@@ -298,8 +303,7 @@ def _ink_left(string: str, font: str, size: float) -> float:
     ``M``: placed by their ink, monospace rows would be out of line by their first glyphs'
     side bearings. (Ink of ``M`` + string: from M's bearing to the string's ink end.)"""
     def width(text: str) -> float:
-        points = typeset.outline(text, font, float(size))
-        return float(np.ptp(points[:, 0])) if len(points) else 0.0
+        return typeset.natural_width(text, font, size)
 
     return (width("M" + string) - width(string)) - (width("MM") - width("M"))
 

@@ -110,7 +110,7 @@ def wrapped(string: str, *, size: float, width: float, colour: str | None = None
     lines: list[str] = []
     for word in string.split(" "):
         trial = f"{lines[-1]} {word}" if lines else word
-        if lines and _natural_width(trial, font, size) <= width:
+        if lines and natural_width(trial, font, size) <= width:
             lines[-1] = trial
         else:
             lines.append(word)
@@ -121,29 +121,36 @@ def wrapped(string: str, *, size: float, width: float, colour: str | None = None
 
 
 def balanced(string: str, *, size: float, width: float, colour: str | None = None,
-             font: str = DEFAULT_FONT, gap: float = 0.1, aligned_edge=ORIGIN) -> FlatText | VGroup:
-    """``string`` on one line, or on two lines (centred, or aligned by ``aligned_edge``) when
-    one would not fit ``width`` at ``size``, broken near the middle (after a colon, comma or
-    full stop if one is close): the way a subtitle reads, with no word left alone on a line.
-    Only a line that does not fit even so is shrunk.
+             font: str = DEFAULT_FONT, gap: float = 0.1, aligned_edge=ORIGIN,
+             lead: str = "") -> FlatText | VGroup:
+    """``lead + string`` on one line, or on two lines (centred, or aligned by
+    ``aligned_edge``) when one would not fit ``width`` at ``size``: ``string`` broken near
+    the middle (after a colon, comma or full stop if one is close), the way a subtitle reads,
+    ``lead`` (a bullet) before the first. Only a line that does
+    not fit even so is shrunk.
 
     >>> balanced("the ball falls", size=28, width=13.4).original_text
     'the ball falls'
     >>> caption = "V is reflex: its sides point up, so the band snags at Y"
     >>> [line.original_text for line in balanced(caption, size=28, width=6)]
     ['V is reflex: its sides point up,', 'so the band snags at Y']
+    >>> [line.original_text for line in balanced("Ears: slice one at a time", size=28, width=4,
+    ...                                         lead="• ")]
+    ['• Ears:', 'slice one at a time']
     """
-    spaces = [k for k, c in enumerate(string) if c == " "]
-    if not spaces or _natural_width(string, font, size) <= width:
-        return text(string, size=size, colour=colour, font=font, width=width)
+    string = string.strip()
+    spaces = [k for k, c in enumerate(string) if c == " " and string[k - 1] != " "]
+    if not spaces or natural_width(lead + string, font, size) <= width:
+        return text(lead + string, size=size, colour=colour, font=font, width=width)
     # the longer line as short as can be, a break after punctuation worth 8 characters
     k = min(spaces, key=lambda k: max(k, len(string) - k - 1) - 8 * (string[k - 1] in ":,.;"))
     lines = [text(part, size=size, colour=colour, font=font, width=width)
-             for part in (string[:k], string[k + 1:])]
+             for part in (lead + string[:k], string[k + 1:].lstrip())]
     return VGroup(*lines).arrange(DOWN, buff=gap, aligned_edge=aligned_edge)
 
 
-def _natural_width(string: str, font: str, size: float) -> float:
+def natural_width(string: str, font: str, size: float) -> float:
+    """The width of the ink of ``string`` set in ``font`` at ``size``, not shrunk."""
     points = outline(string, font, float(size))
     return float(np.ptp(points[:, 0])) if len(points) else 0.0
 

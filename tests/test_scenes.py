@@ -463,8 +463,9 @@ def test_nothing_overlaps_the_text(case):
 
 def _clashes(final: list[dict]) -> list[tuple[str, str]]:
     """(text, other) for every text of the final picture that something else overlaps."""
-    text = [(n["name"], n["box"]) for n in final for n in [n, *n.get("submobjects", ())]
-            if _is_backdrop_text(n) and n.get("box")]
+    # a text of several lines (a two-line subtitle) is a group: its lines carry the boxes
+    text = [(n["name"], part["box"]) for n in final if _is_backdrop_text(n)
+            for part in [n, *n.get("submobjects", ())] if part.get("box")]
     others = [b for n in final if not _is_backdrop_text(n) for b in _boxes(n)
               if not _is_backdrop_text({"name": b[0]})]
     return [(name, other) for name, (x0, y0, x1, y1) in text for other, (a0, b0, a1, b1) in others

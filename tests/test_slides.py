@@ -292,13 +292,14 @@ def _shown_frame(page, clip: Path) -> str:
 
 # Chromium now and then paints no new frame after a seek (seen under load: the seek done,
 # the first frame still shown). Here its first frame callback says so every time.
-STALE_FIRST_PAINT = """(() => {
+STALE_PAINTS = """(() => {
   const ask = HTMLVideoElement.prototype.requestVideoFrameCallback;
   let asked = 0;
   window.seeks = [];
+  window.presented = [];
   HTMLVideoElement.prototype.requestVideoFrameCallback = function (callback) {
-    if (asked++ === 0) { return ask.call(this, (now, frame) => callback(now, {...frame, mediaTime: 0})); }
-    return ask.call(this, callback);
+    if (asked++ < STALE) { return ask.call(this, (now, frame) => callback(now, {...frame, mediaTime: 0})); }
+    return ask.call(this, (now, frame) => { window.presented.push(frame.mediaTime); callback(now, frame); });
   };
   document.addEventListener("seeking", e => window.seeks.push(e.target.currentTime), true);
 })()"""
@@ -308,7 +309,7 @@ def test_a_seek_that_paints_no_frame_is_tried_again(gravity, browser):
     n = len(page_data(gravity)["steps"])
     clips = clips_of(gravity)
     page = browser.new_page(viewport={"width": 1000, "height": 900})
-    page.add_init_script(STALE_FIRST_PAINT)
+    page.add_init_script(STALE_PAINTS.replace("STALE", "1"))  # the first paint is stale
     page.goto((gravity / "index.html").as_uri() + "#1")  # step 1, shown at its end
     page.wait_for_function("() => window.seeks.length >= 2", timeout=15000)
     state = settled(page)
@@ -316,6 +317,21 @@ def test_a_seek_that_paints_no_frame_is_tried_again(gravity, browser):
     assert shown_frame(page, clips[0], "last") == "last"
     seeks = page.evaluate("window.seeks")
     assert 2 <= len(seeks) <= 6 and seeks[0] != seeks[1], seeks  # again, and not forever
+    # the frame Chromium presents has the time the page was told is the last frame's
+    page.wait_for_function("() => window.presented.length > 0", timeout=15000)
+    last = page_data(gravity)["steps"][0]["last"]
+    assert page.evaluate("window.presented")[0] == pytest.approx(last, abs=2e-3)
+    page.close()
+
+
+def test_seeking_again_stops_after_five_tries(gravity, browser):
+    page = browser.new_page(viewport={"width": 1000, "height": 900})
+    page.add_init_script(STALE_PAINTS.replace("STALE", "1e9"))  # every paint stale
+    page.goto((gravity / "index.html").as_uri() + "#1")
+    page.wait_for_function("() => window.seeks.length >= 6", timeout=20000)
+    page.wait_for_timeout(1500)  # more than five times the page's 250 ms wait
+    assert len(page.evaluate("window.seeks")) == 6
+    assert settled(page)["counter"] == f"step 1 / {len(page_data(gravity)['steps'])}"
     page.close()
 
 

@@ -158,3 +158,29 @@ def test_a_line_of_more_rows_than_the_panel_holds_is_cut_there(tmp_path):
             rows = _rows(panel)
             assert len(rows) <= panel._slots() and panel.lit is not None
             assert any(r.original_text.endswith("…") for r in rows)
+
+
+def test_a_source_that_cannot_be_read_leaves_the_polygon_in_the_panel(tmp_path):
+    with tempconfig({"media_dir": str(tmp_path)}):
+        panel = Panel([(0, 0), (4, 0), (2, 3)], ["A", "B", "C"], None)  # no code at all
+        assert panel.outline in panel.mobjects() and panel.shows_polygon
+        panel.show_code(LONG)
+        assert panel.outline not in panel.mobjects()
+
+
+def test_the_source_shown_leaves_out_the_docstring_only(tmp_path):
+    from geometry.user_heuristics import shown_source
+
+    path = tmp_path / "mine.py"
+    path.write_text('import functools\n\n\n@functools.cache\ndef mine(polygon):\n'
+                    '\tr"""A raw docstring,\n\ton two lines."""\n'
+                    '\tnote = """not a docstring"""\n'
+                    '\tif polygon:\n\t\treturn note\n\t"""\n\ta string, said alone\n\t"""\n')
+    namespace: dict = {}
+    exec(compile(path.read_text(), str(path), "exec"), namespace)
+    import linecache
+    linecache.updatecache(str(path))
+    assert shown_source(namespace["mine"].__wrapped__) == (
+        (5, "def mine(polygon):"), (8, '    note = """not a docstring"""'),
+        (9, "    if polygon:"), (10, "        return note"), (11, '    """'),
+        (12, "    a string, said alone"), (13, '    """'))

@@ -212,8 +212,8 @@ def last_frame(clip: Path) -> tuple[Image.Image, float]:
     with av.open(str(clip)) as container:
         for frame in container.decode(video=0):
             final = frame
-    if final is None:
-        raise ValueError(f"{clip.name}: no frames")
+    if final is None or final.time is None:
+        raise ValueError(f"{clip.name}: no frames with times")
     return final.to_image(), round(float(final.time), 6)
 
 

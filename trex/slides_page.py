@@ -108,7 +108,8 @@ _PAGE = """<!DOCTYPE html>
   // now and then paints no new frame after a seek (2 in 60 under load, the seek done and the
   // first frame still shown), so the page looks at the frame presented and seeks again.
   function showEnd(step, tries) {
-    var last = step.last === null ? video.duration : step.last;
+    if (step.last === null) { video.currentTime = video.duration; return; }
+    var last = step.last;
     video.currentTime = (last + video.duration) / 2 - (tries % 2) * 1e-3;
     if (!video.requestVideoFrameCallback || tries >= 5) { return; }
     var presented = null;
