@@ -456,6 +456,15 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert small_texts(data) == [], chapter.slug
 
 
+@pytest.mark.parametrize("chapter", _chapters())
+def test_every_chapter_with_its_source_in_the_panel_is_readable(chapter):
+    """`trex lecture --panel source`: the source the runs show is as large as the rest."""
+    from trex.snapshot import build
+
+    data = build(_chapter_class(chapter).with_panel("source").handed()).data
+    assert small_texts(data) == [], chapter.slug
+
+
 def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     """Issue 13: a rule the lecture did not cover, its counterexample found at build time
     (fixed seed), re-checked here exactly, and the card says how it was found."""
