@@ -180,6 +180,10 @@ def _copy_seeing(ring: BridgedRing, point: Point, p: Point, slots: np.ndarray, p
     return None
 
 
+#: the least slack: below it (subnormal coordinates) a float is off by whole units
+_ULP0 = 4 * 5e-324
+
+
 def _ray_hit(ring: BridgedRing, p: Point, slots, pts, nxt_pts) -> tuple[Fraction, int | None, int | None]:
     """The first point the ray from P to the right meets: (x, vertex slot or None, edge slot or None)."""
     px, py = p
@@ -201,11 +205,15 @@ def _ray_hit(ring: BridgedRing, p: Point, slots, pts, nxt_pts) -> tuple[Fraction
             # the float x is off by a few ulps of the coordinates it is made of, not of x
             # itself (an edge from -1e9 to 1e9 crossing near 0): each exact x is within
             # ``slack`` of its float; the exact test below decides
-            slack = 1e-12 * (np.abs(a).max(axis=1) + np.abs(b).max(axis=1) + abs(py))
-        right = xs + slack >= px
-        cross, xs, slack = cross[right], xs[right], slack[right]
+            slack = 1e-12 * (np.abs(a).max(axis=1) + np.abs(b).max(axis=1) + abs(py)) + _ULP0
+            # beyond float range (b - a overflows, and the estimate with it): the exact test
+            # decides
+            lost = ~(np.isfinite(b - a).all(axis=1) & np.isfinite(xs) & np.isfinite(slack))
+        right = lost | (xs + slack >= px)
+        cross, xs, slack, lost = cross[right], xs[right], slack[right], lost[right]
         if len(cross):
-            near = cross[xs - slack <= (xs + slack).min()]
+            bound = (xs + slack)[~lost].min() if (~lost).any() else np.inf
+            near = cross[lost | (xs - slack <= bound)]
             for k in near.tolist():
                 x = _exact_x(tuple(pts[k]), tuple(nxt_pts[k]), py)
                 if x > px and (best is None or (x, 1) < best[:2]):

@@ -15,6 +15,7 @@ import math
 import shapely
 
 import tracing
+from geometry.errors import PolygonError
 from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import orient
@@ -33,8 +34,9 @@ def shapely_polygon(polygon: Polygon | PolygonWithHoles, points=None) -> shapely
 
 def _scaled_near_one(points) -> list[tuple[float, float]]:
     """The points times the power of two that brings the largest coordinate near 1, when
-    they are far from it (GEOS fails on a polygon at 1e±200) and every coordinate scales
-    exactly; else the points themselves. A power of two changes no sign of any predicate.
+    they are far from it (GEOS fails on a polygon at 1e±200) and the scaled points stay
+    distinct; else the points themselves. A power of two changes no sign of any predicate
+    while it scales exactly.
 
     >>> _scaled_near_one([(0.0, 3e200), (1e200, 0.0)])[0][1] < 4
     True
@@ -46,9 +48,9 @@ def _scaled_near_one(points) -> list[tuple[float, float]]:
     if abs(k) < 64:
         return list(points)
     scaled = [(math.ldexp(x, -k), math.ldexp(y, -k)) for x, y in points]
-    exact = all(math.ldexp(a, k) == b for s, p in zip(scaled, points, strict=True)
-                for a, b in zip(s, p, strict=True))
-    return scaled if exact else list(points)
+    # inexact (a tiny coordinate beside a huge one loses bits): still scaled while the points
+    # stay apart, since GEOS copies its input's points; the triangles are verified after
+    return scaled if len(set(scaled)) == len(scaled) else list(points)
 
 
 def constrained_delaunay(polygon: Polygon | PolygonWithHoles) -> list[Triangle]:
@@ -60,7 +62,12 @@ def constrained_delaunay(polygon: Polygon | PolygonWithHoles) -> list[Triangle]:
     """
     points = _scaled_near_one(polygon.points)
     index = {p: i for i, p in enumerate(points)}
-    result = shapely.constrained_delaunay_triangles(shapely_polygon(polygon, points))
+    try:
+        result = shapely.constrained_delaunay_triangles(shapely_polygon(polygon, points))
+    except shapely.errors.GEOSException as error:  # GEOS's own limits, on valid input
+        low, high = (f(abs(c) for p in polygon.points for c in p if c) for f in (min, max))
+        raise PolygonError(f"GEOS cannot triangulate this polygon (coordinates from {low:g} "
+                           f"to {high:g}): {str(error).split(': ', 1)[-1]}") from None
     triangles = []
     for tri in shapely.get_parts(result):
         a, b, c = (index[(float(x), float(y))] for x, y in tri.exterior.coords[:3])

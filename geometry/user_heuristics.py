@@ -196,28 +196,42 @@ class UserHeuristic:
 def shown_source(function) -> tuple[tuple[int, str], ...]:
     """(line number, text) of a function as the panel shows it: no decorators, docstring or
     blank lines, tabs as four spaces; empty when its source cannot be read. The panel shows
-    built-ins the same way (:func:`metaphors.pseudocode.source_of`).
+    built-ins the same way (:func:`metaphors.pseudocode.source_of`). A lambda, or source
+    that does not parse on its own, is shown whole.
 
     >>> [text for _, text in shown_source(shown_source)][:2]
     ['def shown_source(function) -> tuple[tuple[int, str], ...]:', '    try:']
+    >>> mine = lambda polygon: (1, 3)
+    >>> [text for _, text in shown_source(mine)]
+    ['mine = lambda polygon: (1, 3)']
     """
     try:
         lines, first = inspect.getsourcelines(function)
-        tree = ast.parse(textwrap.dedent("".join(lines)))
-    except (OSError, TypeError, SyntaxError):
+    except (OSError, TypeError):
         return ()
-    node = next((n for n in tree.body if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef))),
-                None)
-    if node is None:
-        return ()
-    hidden = set(range(1, node.lineno))  # decorators (a def's line is the ``def``)
-    body = node.body[0] if node.body else None
-    if (isinstance(body, ast.Expr) and isinstance(body.value, ast.Constant)
-            and isinstance(body.value.value, str)):
-        hidden.update(range(body.lineno, (body.end_lineno or body.lineno) + 1))
     text = textwrap.dedent("".join(lines)).splitlines()
+    hidden = _hidden_lines("\n".join(text))
     return tuple((first + k, line.rstrip().expandtabs(4)) for k, line in enumerate(text)
                  if k + 1 not in hidden and line.strip())
+
+
+def _hidden_lines(source: str) -> set[int]:
+    """The lines (from 1) of a function's decorators and docstring; none if ``source`` is not
+    one function that parses (a lambda, a string at column 0 in a nested function)."""
+    try:
+        tree = ast.parse(source)
+    except SyntaxError:
+        return set()
+    node = tree.body[0] if len(tree.body) == 1 else None
+    if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        return set()
+    hidden = set(range(1, node.lineno))  # decorators (a def's line is the ``def``)
+    doc = node.body[0]
+    if (isinstance(doc, ast.Expr) and isinstance(doc.value, ast.Constant)
+            and isinstance(doc.value.value, str) and doc.lineno > node.lineno
+            and (len(node.body) == 1 or node.body[1].lineno > (doc.end_lineno or doc.lineno))):
+        hidden.update(range(doc.lineno, (doc.end_lineno or doc.lineno) + 1))
+    return hidden
 
 
 def is_user_spec(text: str) -> bool:

@@ -193,6 +193,26 @@ def test_degenerate_bridges(case, algorithm):
         assert bridge_holes(shape).fallbacks == 0
 
 
+@pytest.mark.parametrize("algorithm", ["ear-clipping", "cdt"])
+def test_walls_wider_than_the_float_range(algorithm):
+    """Coordinates at ±1.7e308: an edge's width overflows to inf (its ray crossing cannot be
+    estimated in floats; the exact test still finds it)."""
+    ring, hole = [(0, 0), (8, 0), (12, 10), (0, 10)], [(4, 4), (9, 5), (4, 6)]
+    shape = PolygonWithHoles.from_rings([[((x - 6) * 2.8e307, (y - 5) * 2.8e307) for x, y in r]
+                                         for r in (ring, hole)])
+    triangulated(shape, algorithm)
+    assert bridge_holes(shape).fallbacks == 0
+    # a spike from the floor nearly to the roof between the hole and the far wall: its
+    # float estimate is far off (its height overflows), the wall's is right
+    big = 1.7e308
+    spiked = PolygonWithHoles.from_rings([
+        [(-big, -big), (0.0, -big), (1e307, 1.6e308), (2e307, -big), (big, -big), (big, big),
+         (-big, big)],
+        [(-3e307, -1e307), (-1e307, 0.0), (-3e307, 1e307)]])
+    triangulated(spiked, algorithm)
+    assert bridge_holes(spiked).fallbacks == 0
+
+
 def test_bridge_through_a_vertex_ends_there():
     shape = PolygonWithHoles.from_rings(cases()["ray through a vertex"])
     ((p, m),) = bridge_holes(shape).bridges
@@ -375,3 +395,28 @@ def test_trex_log_with_holes(tmp_path):
     assert '"join_hole"' in out.read_text()
     result = invoke("log", "prune-and-search", "keyhole", "-o", str(out))
     assert result.exit_code == 2 and "holes are not supported here" in result.stderr
+
+
+def test_huge_and_tiny_coordinates_in_one_polygon_for_geos():
+    """1e-150 beside 1e200: scaled for GEOS though not exactly (the points stay apart), and
+    the triangles verified on the polygon as given."""
+    ring, hole = [(0, 0), (8, 0), (12, 10), (0, 10)], [(4, 4), (9, 5), (4, 6)]
+    rings = [[(x * 1e200, y * 1e200) for x, y in r] for r in (ring, hole)]
+    rings[0][0] = (1e-150, 0.0)
+    triangulated(PolygonWithHoles.from_rings(rings), "cdt")
+
+
+def test_geos_failing_is_one_line_naming_it(monkeypatch):
+    import shapely
+
+    from geometry import cdt
+    from geometry.errors import PolygonError
+
+    def fails(_):
+        raise shapely.errors.GEOSException("IllegalStateException: Unable to find shell join")
+
+    monkeypatch.setattr(cdt.shapely, "constrained_delaunay_triangles", fails)
+    shape = PolygonWithHoles.from_rings(cases()["shared M"])
+    with pytest.raises(PolygonError, match=r"^GEOS cannot triangulate this polygon \(coordinates "
+                       r"from 2 to 10\): Unable to find shell join$"):
+        cdt.constrained_delaunay(shape)

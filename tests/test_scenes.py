@@ -463,9 +463,11 @@ def test_nothing_overlaps_the_text(case):
 
 def _clashes(final: list[dict]) -> list[tuple[str, str]]:
     """(text, other) for every text of the final picture that something else overlaps."""
-    # a text of several lines (a two-line subtitle) is a group: its lines carry the boxes
-    text = [(n["name"], part["box"]) for n in final if _is_backdrop_text(n)
-            for part in [n, *n.get("submobjects", ())] if part.get("box")]
+    # texts and their parts: the code's rows (in the panel's group) and the lines of a text
+    # of several lines (a two-line subtitle's, named for the subtitle)
+    text = [(part["name"] if _is_backdrop_text(part) else n["name"], part["box"])
+            for n in final for part in [n, *n.get("submobjects", ())]
+            if (_is_backdrop_text(n) or _is_backdrop_text(part)) and part.get("box")]
     others = [b for n in final if not _is_backdrop_text(n) for b in _boxes(n)
               if not _is_backdrop_text({"name": b[0]})]
     return [(name, other) for name, (x0, y0, x1, y1) in text for other, (a0, b0, a1, b1) in others

@@ -184,3 +184,21 @@ def test_the_source_shown_leaves_out_the_docstring_only(tmp_path):
         (5, "def mine(polygon):"), (8, '    note = """not a docstring"""'),
         (9, "    if polygon:"), (10, "        return note"), (11, '    """'),
         (12, "    a string, said alone"), (13, '    """'))
+
+
+def test_a_lambda_or_a_source_that_does_not_parse_alone_is_shown_whole(tmp_path):
+    from geometry.user_heuristics import shown_source
+
+    path = tmp_path / "odd.py"
+    path.write_text('first_and_third = lambda polygon: (1, 3)\n\n\ndef outer():\n'
+                    '    def inner(polygon):\n        note = """two\nlines"""\n'
+                    '        return (0, 2)\n    return inner\n\n\n'
+                    'def short(p): "doc"; return p\n')
+    namespace: dict = {}
+    exec(compile(path.read_text(), str(path), "exec"), namespace)
+    import linecache
+    linecache.updatecache(str(path))
+    assert shown_source(namespace["first_and_third"]) == (
+        (1, "first_and_third = lambda polygon: (1, 3)"),)
+    assert [n for n, _ in shown_source(namespace["outer"]())] == [5, 6, 7, 8]
+    assert shown_source(namespace["short"]) == ((12, 'def short(p): "doc"; return p'),)
