@@ -59,7 +59,9 @@ class SweepStatus:
             left = (xs[k] - px) * (ys[after] - py)
             right = (ys[k] - py) * (xs[after] - px)
             det, bound = left - right, ORIENT_BOUND * (abs(left) + abs(right)) + TINY
-            if det > bound or (det >= -bound and self._exactly_left(k, after, v)):
+            # (``not det < -bound``, not ``det >= -bound``: an overflow's nan or inf goes to
+            # the exact test too)
+            if det > bound or (not det < -bound and self._exactly_left(k, after, v)):
                 lo = mid + 1
             else:
                 hi = mid

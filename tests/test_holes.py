@@ -193,7 +193,7 @@ def test_degenerate_bridges(case, algorithm):
         assert bridge_holes(shape).fallbacks == 0
 
 
-@pytest.mark.parametrize("algorithm", ["ear-clipping", "cdt"])
+@pytest.mark.parametrize("algorithm", HOLE_ALGORITHMS)
 def test_walls_wider_than_the_float_range(algorithm):
     """Coordinates at ±1.7e308: an edge's width overflows to inf (its ray crossing cannot be
     estimated in floats; the exact test still finds it)."""
