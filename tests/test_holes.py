@@ -420,3 +420,30 @@ def test_geos_failing_is_one_line_naming_it(monkeypatch):
     with pytest.raises(PolygonError, match=r"^GEOS cannot triangulate this polygon \(coordinates "
                        r"from 2 to 10\): Unable to find shell join$"):
         cdt.constrained_delaunay(shape)
+
+
+def test_geos_failing_in_the_cli_is_one_line_and_status_2(monkeypatch, tmp_path, capsys):
+    import json
+    import sys
+
+    import shapely
+
+    from geometry import cdt
+    from trex.cli import main
+
+    def fails(_):
+        raise shapely.errors.GEOSException("IllegalStateException: Unable to find shell join")
+
+    monkeypatch.setattr(cdt.shapely, "constrained_delaunay_triangles", fails)
+    polygon = tmp_path / "p.json"
+    polygon.write_text(json.dumps(cases()["shared M"]))
+    for command in (["triangulate", str(polygon), "--algorithm", "cdt"],
+                    ["log", "cdt", str(polygon), "-o", str(tmp_path / "log.json")]):
+        monkeypatch.setattr(sys, "argv", ["trex", *command])
+        with pytest.raises(SystemExit) as stopped:
+            main()
+        assert stopped.value.code == 2
+        err = capsys.readouterr().err
+        assert err == f"error: {polygon}: GEOS cannot triangulate this polygon (coordinates " \
+                      "from 2 to 10): Unable to find shell join\n"
+    assert not (tmp_path / "log.json").exists()

@@ -15,7 +15,7 @@ from pathlib import Path
 import click
 
 from geometry.check import is_inner_diagonal
-from geometry.errors import HolesNotSupportedError
+from geometry.errors import GeometryError
 from geometry.io import Shape, write_atomic
 from geometry.polygon import Polygon
 from geometry.triangulate import HOLE_ALGORITHMS, triangulate
@@ -113,7 +113,7 @@ def _run_each(polygons, make, show_human, as_json: bool, *, holes: bool = False)
             continue
         try:
             record = make(arg, polygon)
-        except (ValueError, HolesNotSupportedError) as exc:  # no diagonal; holes refused
+        except (ValueError, GeometryError) as exc:  # no diagonal; holes refused; GEOS fails
             report_error(arg, exc)
             bad = True
             continue
@@ -181,7 +181,7 @@ def log_command(algorithm: str, polygon: str, heuristic: str | UserHeuristic,
     named = heuristic.spec if isinstance(heuristic, UserHeuristic) else heuristic
     try:  # the very log a scene records for this run, so that it replays the same video
         log = record_run(algorithm, p, polygon, named if algorithm in triangulations() else None)
-    except (ValueError, HolesNotSupportedError) as exc:
+    except (ValueError, GeometryError) as exc:  # holes refused; GEOS fails
         fail(f"{polygon}: {exc}")
     try:
         write_atomic(Path(output), log.to_json())
