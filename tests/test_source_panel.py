@@ -168,18 +168,25 @@ def test_a_source_that_cannot_be_read_leaves_the_polygon_in_the_panel(tmp_path):
         assert panel.outline not in panel.mobjects()
 
 
+def _module(path, source: str) -> dict:
+    """The names a module of this source defines, its source readable by inspect."""
+    import linecache
+
+    path.write_text(source)
+    namespace: dict = {}
+    exec(compile(source, str(path), "exec"), namespace)
+    linecache.updatecache(str(path))
+    return namespace
+
+
 def test_the_source_shown_leaves_out_the_docstring_only(tmp_path):
     from geometry.user_heuristics import shown_source
 
-    path = tmp_path / "mine.py"
-    path.write_text('import functools\n\n\n@functools.cache\ndef mine(polygon):\n'
-                    '\tr"""A raw docstring,\n\ton two lines."""\n'
-                    '\tnote = """not a docstring"""\n'
-                    '\tif polygon:\n\t\treturn note\n\t"""\n\ta string, said alone\n\t"""\n')
-    namespace: dict = {}
-    exec(compile(path.read_text(), str(path), "exec"), namespace)
-    import linecache
-    linecache.updatecache(str(path))
+    namespace = _module(tmp_path / "mine.py", (
+        'import functools\n\n\n@functools.cache\ndef mine(polygon):\n'
+        '\tr"""A raw docstring,\n\ton two lines."""\n'
+        '\tnote = """not a docstring"""\n'
+        '\tif polygon:\n\t\treturn note\n\t"""\n\ta string, said alone\n\t"""\n'))
     assert shown_source(namespace["mine"].__wrapped__) == (
         (5, "def mine(polygon):"), (8, '    note = """not a docstring"""'),
         (9, "    if polygon:"), (10, "        return note"), (11, '    """'),
@@ -189,15 +196,11 @@ def test_the_source_shown_leaves_out_the_docstring_only(tmp_path):
 def test_a_lambda_or_a_source_that_does_not_parse_alone_is_shown_whole(tmp_path):
     from geometry.user_heuristics import shown_source
 
-    path = tmp_path / "odd.py"
-    path.write_text('first_and_third = lambda polygon: (1, 3)\n\n\ndef outer():\n'
-                    '    def inner(polygon):\n        note = """two\nlines"""\n'
-                    '        return (0, 2)\n    return inner\n\n\n'
-                    'def short(p): "doc"; return p\n')
-    namespace: dict = {}
-    exec(compile(path.read_text(), str(path), "exec"), namespace)
-    import linecache
-    linecache.updatecache(str(path))
+    namespace = _module(tmp_path / "odd.py", (
+        'first_and_third = lambda polygon: (1, 3)\n\n\ndef outer():\n'
+        '    def inner(polygon):\n        note = """two\nlines"""\n'
+        '        return (0, 2)\n    return inner\n\n\n'
+        'def short(p): "doc"; return p\n'))
     assert shown_source(namespace["first_and_third"]) == (
         (1, "first_and_third = lambda polygon: (1, 3)"),)
     assert [n for n, _ in shown_source(namespace["outer"]())] == [5, 6, 7, 8]
