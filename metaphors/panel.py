@@ -119,11 +119,12 @@ class Panel:
     def _code_block(self) -> VGroup:
         """The source's rows (:data:`SOURCE_SIZE`, wrapped to the panel's width), all of them
         if they fit its height, else the first window of them."""
-        self.rows = listing_rows([text for _, text in self.code_lines], self._columns(),
-                                 most=self._slots() - 2)
-        counts = self._row_counts()
-        fits = len(self.rows) <= self._slots()
-        self.window = None if fits else window_for(counts, self._slots() - 2, 0)
+        lines, slots = [text for _, text in self.code_lines], self._slots()
+        self.rows = listing_rows(lines, self._columns(), most=slots)
+        if len(self.rows) > slots:  # a window's notes take two slots: no line may take more
+            self.rows = listing_rows(lines, self._columns(), most=slots - 2)
+        fits = len(self.rows) <= slots
+        self.window = None if fits else window_for(self._row_counts(), slots - 2, 0)
         return self._window_block()
 
     def _cell(self) -> float:

@@ -205,3 +205,17 @@ def test_a_lambda_or_a_source_that_does_not_parse_alone_is_shown_whole(tmp_path)
         (1, "first_and_third = lambda polygon: (1, 3)"),)
     assert [n for n, _ in shown_source(namespace["outer"]())] == [5, 6, 7, 8]
     assert shown_source(namespace["short"]) == ((12, 'def short(p): "doc"; return p'),)
+
+
+def test_a_listing_of_one_tall_line_that_fits_is_not_cut(tmp_path):
+    with tempconfig({"media_dir": str(tmp_path)}):
+        panel = Panel([(0, 0), (4, 0), (2, 3)], ["A", "B", "C"], None)
+        slots, columns = panel._slots(), panel._columns()
+        # one line of exactly as many rows as the panel has slots
+        line = next(line for line in (", ".join(f"item_{k}" for k in range(n))
+                                      for n in range(1, 200))
+                    if len(wrap_line(0, line, columns)) == slots)
+        panel.show_code([(1, line)])
+        rows = _rows(panel)
+        assert len(rows) == slots and panel.window is None
+        assert not any(r.original_text.endswith("…") for r in rows)
