@@ -12,6 +12,15 @@ import html
 import json
 from pathlib import Path
 
+#: how both pages start, up to their own ``<style>`` (no icon is fetched: ``data:,``)
+HEAD = """<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<link rel="icon" href="data:,">
+<title>{{TITLE}}</title>"""
+
 #: the CSS both pages start from (colours as the theme's: ink, idle grey, called blue)
 BASE_CSS = """
   :root { color-scheme: dark; --ink: #e8ecf2; --idle: #8a93a3; --called: #4f8ff7; }
@@ -41,13 +50,14 @@ def embedded_json(data: object) -> str:
 
 
 def fill(template: str, data: object, **fields: str | int) -> str:
-    """The page: ``{{BASE_CSS}}``, ``{{DATA}}`` (``data``, :func:`embedded_json`) and each
-    ``{{NAME}}`` of ``fields``, HTML-escaped, put into ``template``.
+    """The page: ``{{HEAD}}``, ``{{BASE_CSS}}``, ``{{DATA}}`` (``data``,
+    :func:`embedded_json`) and each ``{{NAME}}`` of ``fields``, HTML-escaped, put into
+    ``template``.
 
     >>> fill("<b>{{TITLE}}</b>{{DATA}}", [1], TITLE="a < b")
     '<b>a &lt; b</b>[1]'
     """
-    page = template.replace("{{BASE_CSS}}", BASE_CSS)
+    page = template.replace("{{HEAD}}", HEAD).replace("{{BASE_CSS}}", BASE_CSS)
     for name, value in fields.items():
         page = page.replace("{{" + name + "}}", html.escape(str(value)))
     return page.replace("{{DATA}}", embedded_json(data))

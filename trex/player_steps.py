@@ -94,13 +94,7 @@ def write_player(folder: Path, steps: list[Step], title: str, subtitle: str = ""
                       FIRST=steps[0].image if steps else "", WIDTH=PIXELS[0], HEIGHT=PIXELS[1])
 
 
-_PAGE = """<!DOCTYPE html>
-<html lang="en">
-<head>
-<meta charset="utf-8">
-<meta name="viewport" content="width=device-width, initial-scale=1">
-<link rel="icon" href="data:,">
-<title>{{TITLE}}</title>
+_PAGE = """{{HEAD}}
 <style>
 {{BASE_CSS}}  figure { margin: 0; }
   img { display: block; width: 100%; height: auto; aspect-ratio: {{WIDTH}} / {{HEIGHT}};

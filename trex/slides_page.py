@@ -50,13 +50,7 @@ def write_slides(folder: Path, slides: Sequence[Slide], title: str, subtitle: st
                       WIDTH=pixels[0], HEIGHT=pixels[1])
 
 
-_PAGE = """<!DOCTYPE html>
-<html lang="en">
-<head>
-<meta charset="utf-8">
-<meta name="viewport" content="width=device-width, initial-scale=1">
-<link rel="icon" href="data:,">
-<title>{{TITLE}}</title>
+_PAGE = """{{HEAD}}
 <style>{{BASE_CSS}}
   main { max-width: 1100px; }
   figure { margin: 0; background: #000; }
