@@ -372,12 +372,18 @@ def plot(results: Results, path: Path) -> None:
     draw_panels(panels, path, columns=2)
 
 
-def main(argv: list[str] | None = None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def timing_arguments(doc: str, argv: list[str] | None) -> argparse.Namespace:
+    """The options of a timing bench (repeats, a time budget, where its tables go), described
+    by the first paragraph of its module's ``doc``."""
+    parser = argparse.ArgumentParser(description=doc.split("\n\n")[0])
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--budget", type=float, default=20.0, help="seconds: no repeat beyond")
     parser.add_argument("--out", type=Path, default=ROOT / "docs")
-    args = parser.parse_args(argv)
+    return parser.parse_args(argv)
+
+
+def main(argv: list[str] | None = None) -> None:
+    args = timing_arguments(__doc__, argv)
     results = Results(load=[os.getloadavg()[0]])
     run_table(results, args.repeats, args.budget)
     run_ears(results, args.repeats, args.budget)

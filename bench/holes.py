@@ -18,7 +18,6 @@ Run from the repository root: ``python -m bench.holes [--repeats 5]``.
 
 from __future__ import annotations
 
-import argparse
 import os
 import platform
 import sys
@@ -35,7 +34,7 @@ try:
 except ModuleNotFoundError:  # run as ``python bench/holes.py``: add the repo root
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from bench.algorithms import Timing, measure
+from bench.algorithms import Timing, measure, timing_arguments
 from geometry.cdt import shapely_polygon
 from geometry.hole_samples import swiss_cheese
 from geometry.holes import PolygonWithHoles
@@ -115,11 +114,7 @@ def markdown(table: dict, validation: dict, repeats: int) -> str:
 
 
 def main(argv: list[str] | None = None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--repeats", type=int, default=5)
-    parser.add_argument("--budget", type=float, default=20.0, help="seconds: no repeat beyond")
-    parser.add_argument("--out", type=Path, default=ROOT / "docs")
-    args = parser.parse_args(argv)
+    args = timing_arguments(__doc__, argv)
     table, validation = run(args.repeats, args.budget)
     args.out.mkdir(parents=True, exist_ok=True)
     (args.out / "benchmarks-holes.md").write_text(markdown(table, validation, args.repeats))

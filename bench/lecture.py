@@ -31,18 +31,25 @@ def frame_sums(path: Path) -> list[str]:
                 for f in container.decode(video=0)]
 
 
+def run_timed(command: list[str], what: str) -> tuple[float, str]:
+    """Run a command: its wall time in seconds and its output; a failure ends the bench with
+    one line naming ``what`` failed."""
+    began = time.perf_counter()
+    result = subprocess.run(command, capture_output=True, text=True)
+    seconds = time.perf_counter() - began
+    if result.returncode != 0:
+        sys.exit(f"{what} failed ({result.returncode}): "
+                 f"{result.stderr.strip().splitlines()[-1:]}")
+    return seconds, result.stdout
+
+
 def timed_lecture(trex: Path, out: Path, jobs: int, quality: str,
                   chapters: str | None) -> float:
     command = [str(trex), "lecture", "-q", quality, "-j", str(jobs), "-o", str(out)]
     if chapters:
         command += ["--chapters", chapters]
-    began = time.perf_counter()
-    result = subprocess.run(command, capture_output=True, text=True)
-    seconds = time.perf_counter() - began
-    if result.returncode != 0:
-        sys.exit(f"trex lecture -j {jobs} failed ({result.returncode}): "
-                 f"{result.stderr.strip().splitlines()[-1:]}")
-    for line in result.stdout.splitlines():
+    seconds, stdout = run_timed(command, f"trex lecture -j {jobs}")
+    for line in stdout.splitlines():
         if line.startswith("chapter "):
             print(f"  -j {jobs}  {line}")
     return seconds

@@ -22,21 +22,15 @@ from __future__ import annotations
 
 import argparse
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
+
+from bench.lecture import run_timed
 
 
 def timed(command: list[str]) -> float:
-    began = time.perf_counter()
-    result = subprocess.run(command, capture_output=True, text=True)
-    seconds = time.perf_counter() - began
-    if result.returncode != 0:
-        sys.exit(f"{' '.join(command[1:3])} failed ({result.returncode}): "
-                 f"{result.stderr.strip().splitlines()[-1:]}")
-    return seconds
+    return run_timed(command, " ".join(command[1:3]))[0]
 
 
 def size(path: Path) -> int:
