@@ -32,6 +32,8 @@ import contextlib
 import json
 import os
 import secrets
+import stat
+import warnings
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -62,6 +64,11 @@ __all__ = [
 ]
 
 _FORMATS = ".json, .geojson, .wkt or .dat"
+#: The largest polygon file read, in bytes (16 MiB): a file is refused above it before
+#: it is parsed, so reading costs memory in proportion to a bounded input.
+MAX_FILE_BYTES = 16 * 1024 * 1024
+#: The most vertices (all rings together) a polygon file may hold; refused before validation.
+MAX_VERTICES = 500_000
 Ring = Sequence[object]
 Shape = Polygon | PolygonWithHoles
 
@@ -96,7 +103,7 @@ def read_polygon(arg: str | os.PathLike[str], *, ignore_holes: bool = False) -> 
     ...
     geometry.errors.InputFormatError: no such file or sample: no/such.json
     """
-    path = Path(arg)
+    path = _argument_path(arg)
     if not path.exists() and str(arg) in HOLE_SAMPLES:
         return polygon_from_rings(HOLE_SAMPLES[str(arg)], ignore_holes=ignore_holes)
     if not path.exists() and is_sample(str(arg)):
@@ -111,12 +118,25 @@ def read_shape(arg: str | os.PathLike[str]) -> Shape:
     >>> read_shape("counterexample").n, read_shape("keyhole").hole_count
     (5, 2)
     """
-    path = Path(arg)
+    path = _argument_path(arg)
     if not path.exists() and str(arg) in HOLE_SAMPLES:
         return shape_from_rings(HOLE_SAMPLES[str(arg)])
     if not path.exists() and is_sample(str(arg)):
         return Polygon.from_points(sample_from_spec(str(arg)))
     return shape_from_rings(read_rings(path))
+
+
+def _argument_path(arg: str | os.PathLike[str]) -> Path:
+    """``arg`` as a path; an empty string (``Path("")`` is the current directory) is refused.
+
+    >>> _argument_path("")
+    Traceback (most recent call last):
+    ...
+    geometry.errors.InputFormatError: empty argument; expected a polygon file or a sample name
+    """
+    if not str(arg).strip():
+        raise InputFormatError("empty argument; expected a polygon file or a sample name")
+    return Path(arg)
 
 
 def shape_from_rings(rings: Sequence[Ring]) -> Shape:
@@ -164,12 +184,17 @@ def read_rings(path: str | os.PathLike[str]) -> list[Ring]:
     reader = _READERS.get(path.suffix.lower())
     if reader is None:
         raise InputFormatError(f"unknown format '{path.suffix}'; expected {_FORMATS}")
-    return reader(_read_text(path))
+    rings = reader(_read_text(path))
+    vertices = sum(len(ring) for ring in rings if isinstance(ring, list | tuple))
+    if vertices > MAX_VERTICES:
+        raise InputFormatError(
+            f"{vertices:,} points; a polygon file holds at most {MAX_VERTICES:,}")
+    return rings
 
 
 def _read_text(path: Path) -> str:
     try:
-        data = path.read_bytes()
+        data = _read_regular(path)
     except FileNotFoundError:
         raise InputFormatError(f"no such file or sample: {path}") from None
     except OSError as exc:
@@ -183,6 +208,33 @@ def _read_text(path: Path) -> str:
     if not text.strip():
         raise InputFormatError("file is empty")
     return text
+
+
+def _read_regular(path: Path) -> bytes:
+    """The bytes of a regular file of at most :data:`MAX_FILE_BYTES`.
+
+    Opened without blocking (a FIFO would wait for a writer) and checked on the open
+    file: a FIFO, a device (a link to ``/dev/zero``) or a socket never ends, so it is
+    refused, and at most one byte past the limit is read.
+    """
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            raise InputFormatError("not a regular file (a FIFO, device or socket)")
+        if info.st_size > MAX_FILE_BYTES:
+            raise InputFormatError(_too_big(info.st_size))
+        with os.fdopen(fd, "rb", closefd=False) as handle:
+            data = handle.read(MAX_FILE_BYTES + 1)
+    finally:
+        os.close(fd)
+    if len(data) > MAX_FILE_BYTES:  # it grew while being read
+        raise InputFormatError(_too_big(len(data)))
+    return data
+
+
+def _too_big(size: int) -> str:
+    return f"file has {size:,} bytes; a polygon file has at most {MAX_FILE_BYTES:,}"
 
 
 def _parse_int(digits: str) -> int | float:
@@ -256,12 +308,23 @@ def _geojson_rings(obj: dict) -> list[Ring]:
         raise InputFormatError(
             "JSON object has no 'type'; expected [x, y] points, rings or a GeoJSON Polygon"
         )
+    if kind == "MultiPolygon":
+        return _single_polygon(obj.get("coordinates"))
     if kind != "Polygon":
         raise InputFormatError(f"GeoJSON {kind} is not supported; expected a Polygon")
     rings = obj.get("coordinates")
     if not isinstance(rings, list) or (rings and not _is_ring_list(rings)):
         raise InputFormatError("GeoJSON Polygon 'coordinates' must be a list of rings")
     return rings
+
+
+def _single_polygon(polygons: object) -> list[Ring]:
+    """The rings of a GeoJSON MultiPolygon's one polygon (more are refused)."""
+    if not isinstance(polygons, list) or len(polygons) != 1:
+        count = len(polygons) if isinstance(polygons, list) else "no"
+        raise InputFormatError(
+            f"GeoJSON MultiPolygon has {count} polygons; expected exactly one")
+    return _geojson_rings({"type": "Polygon", "coordinates": polygons[0]})
 
 
 def _expect_object(value: object, what: str) -> dict:
@@ -271,15 +334,24 @@ def _expect_object(value: object, what: str) -> dict:
 
 
 def _wkt_rings(text: str) -> list[Ring]:
-    try:
-        geom = shapely.wkt.loads(text)
-    except (shapely.errors.ShapelyError, ValueError) as exc:
-        raise InputFormatError(f"malformed WKT: {_short_reason(exc)}") from None
-    if geom.geom_type != "Polygon":
-        raise InputFormatError(f"WKT {geom.geom_type.upper()} is not supported; expected a POLYGON")
-    if geom.is_empty:
-        return [[]]
-    return [list(geom.exterior.coords), *(list(r.coords) for r in geom.interiors)]
+    # GEOS warns (RuntimeWarning) on NaN or overflowing numbers; validation names them.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        try:
+            geom = shapely.wkt.loads(text)
+        except (shapely.errors.ShapelyError, ValueError) as exc:
+            raise InputFormatError(f"malformed WKT: {_short_reason(exc)}") from None
+        except NotImplementedError:  # shapely has no class for curves (CURVEPOLYGON …)
+            kind = text.strip().split("(", 1)[0].split()[0].upper() if text.strip() else "?"
+            raise InputFormatError(f"WKT {kind} is not supported; expected a POLYGON") from None
+        if geom.geom_type == "MultiPolygon" and len(geom.geoms) == 1:
+            geom = geom.geoms[0]
+        if geom.geom_type != "Polygon":
+            raise InputFormatError(
+                f"WKT {geom.geom_type.upper()} is not supported; expected a POLYGON")
+        if geom.is_empty:
+            return [[]]
+        return [list(geom.exterior.coords), *(list(r.coords) for r in geom.interiors)]
 
 
 def _short_reason(exc: Exception) -> str:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -10,6 +11,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from geometry.io import MAX_FILE_BYTES, MAX_VERTICES
 from geometry.samples import make_sample
 from trex.cli import main
 
@@ -209,3 +211,89 @@ def test_python_dash_m_trex_cli():
     )
     assert result.returncode == 0
     assert result.stdout.startswith("square: valid, 4 vertices")
+
+
+# --- areas beyond a float's range (issue 24 items 2 and 14) ------------------------
+
+
+@pytest.mark.parametrize(("points", "area"), [
+    ([[0, 0], [4e300, 0], [4e300, 4e300], [2e300, 1e300], [0, 4e300]], "1e+601"),
+    ([[-1.7e308, -1.7e308], [1.7e308, -1.7e308], [1.7e308, 1.7e308], [-1.7e308, 1.7e308]],
+     "1.156e+617"),
+    ([[0, 0], [1e300, 0], [1e300, 1e300], [0, 1e300]], "1e+600"),
+])
+def test_check_gives_huge_areas_exactly_without_warnings(tmp_path, points, area):
+    path = tmp_path / "huge.json"
+    path.write_text(json.dumps(points))
+    result = trex("check", str(path))
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""
+    assert f", area {area}, " in result.stdout
+
+
+def test_check_of_an_empty_argument_says_so():
+    result = trex("check", "")
+    assert result.returncode == 2
+    assert_one_error_line(result.stderr, "error: ")
+    assert "directory" not in result.stderr
+    assert "empty" in result.stderr
+
+
+# --- the readers' robustness (issue 24 items 12 and 14) -----------------------------
+
+
+@pytest.mark.parametrize(("name", "text", "message"), [
+    ("curve.wkt", "CURVEPOLYGON (CIRCULARSTRING (0 0, 1 1, 2 0, 1 -1, 0 0))",
+     "WKT CURVEPOLYGON is not supported"),
+    ("nan.wkt", "POLYGON ((0 0, nan 0, 0 1, 0 0))", "NaN"),
+    ("inf.wkt", "POLYGON ((0 0, 1e999 0, 0 1, 0 0))", "+inf"),
+    ("digits.wkt", f"POLYGON ((0 0, 1{'0' * 5000} 0, 0 1, 0 0))", "+inf"),
+])
+def test_check_reports_unreadable_wkt_in_one_line(tmp_path, name, text, message):
+    (tmp_path / name).write_text(text)
+    result = trex("check", str(tmp_path / name))
+    assert result.returncode == 2
+    assert_one_error_line(result.stderr, f"error: {tmp_path / name}: ")
+    assert message in result.stderr
+
+
+def test_check_refuses_files_that_never_end(tmp_path):
+    (tmp_path / "zero.json").symlink_to("/dev/zero")
+    os.mkfifo(tmp_path / "fifo.json")
+    for name in ("zero.json", "fifo.json"):
+        result = subprocess.run([sys.executable, "-m", "trex", "check", str(tmp_path / name)],
+                                capture_output=True, text=True, cwd=ROOT, timeout=60)
+        assert result.returncode == 2
+        assert_one_error_line(result.stderr, f"error: {tmp_path / name}: not a regular file")
+
+
+def test_check_refuses_a_file_beyond_the_size_limit_at_once(tmp_path):
+    path = tmp_path / "big.json"
+    with open(path, "w") as handle:  # sparse beyond the limit: nothing is parsed
+        handle.truncate(MAX_FILE_BYTES + 1)
+    result = trex("check", str(path))
+    assert result.returncode == 2
+    assert_one_error_line(result.stderr, f"error: {path}: file has {MAX_FILE_BYTES + 1:,} bytes")
+
+
+def test_check_refuses_too_many_vertices_before_validating(tmp_path):
+    path = tmp_path / "many.dat"
+    path.write_text("".join(f"{i} {i % 7}\n" for i in range(MAX_VERTICES + 1)))
+    result = trex("check", str(path))
+    assert result.returncode == 2
+    assert_one_error_line(result.stderr, f"error: {path}: {MAX_VERTICES + 1:,} points")
+
+
+def test_check_reads_a_multipolygon_of_one_polygon(tmp_path):
+    ring = [[0, 0], [4, 0], [0, 4], [0, 0]]
+    (tmp_path / "one.geojson").write_text(
+        json.dumps({"type": "MultiPolygon", "coordinates": [[ring]]}))
+    (tmp_path / "two.geojson").write_text(
+        json.dumps({"type": "MultiPolygon", "coordinates": [[ring], [ring]]}))
+    one = trex("check", str(tmp_path / "one.geojson"))
+    assert one.returncode == 0, one.stderr
+    assert "valid, 3 vertices" in one.stdout
+    two = trex("check", str(tmp_path / "two.geojson"))
+    assert two.returncode == 2
+    assert_one_error_line(two.stderr, f"error: {tmp_path / 'two.geojson'}: GeoJSON MultiPolygon "
+                                      "has 2 polygons; expected exactly one")

@@ -72,7 +72,7 @@ BAD_INPUTS = {
     "hole-bow-tie.geojson": (SelfIntersectionError, "hole 1: edges d₁–c₁ and b₁–a₁ cross at (3, 3)"),
     "multipolygon.geojson": (
         InputFormatError,
-        "GeoJSON MultiPolygon is not supported; expected a Polygon",
+        "GeoJSON MultiPolygon has 2 polygons; expected exactly one",
     ),
     "linestring.geojson": (InputFormatError, "GeoJSON LineString is not supported"),
     "empty-collection.geojson": (InputFormatError, "FeatureCollection has 0 features"),
@@ -230,10 +230,10 @@ def test_byte_order_mark_is_accepted(tmp_path):
 def test_unreadable_file_is_one_line(tmp_path, monkeypatch):
     path = write(tmp_path / "p.json", "[]")
 
-    def refuse(self):
+    def refuse(*_args):
         raise PermissionError(13, "Permission denied")
 
-    monkeypatch.setattr(Path, "read_bytes", refuse)
+    monkeypatch.setattr(os, "open", refuse)
     with pytest.raises(InputFormatError, match="cannot read file: Permission denied"):
         read_polygon(path)
 

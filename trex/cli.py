@@ -6,12 +6,12 @@ usage errors too (click's multi-line usage report is folded into one line).
 
 from __future__ import annotations
 
-import math
+import decimal
 import sys
+from fractions import Fraction
 from typing import Any
 
 import click
-import numpy as np
 
 from geometry.errors import GeometryError
 from geometry.io import Shape, to_json, write_polygon
@@ -76,19 +76,41 @@ def _reflex_text(polygon: Shape) -> str:
     return f"{len(reflex)} reflex {noun} ({', '.join(labels)})"
 
 
-def display_area(polygon: Shape) -> float:
-    """The area for printing: float shoelace about the first vertex, summed with fsum.
+def exact_area2(polygon: Shape) -> Fraction:
+    """Twice the area, exact: shoelace in integers over a common power-of-two denominator.
 
-    ``Polygon.area`` is exact but goes through Fractions (seconds at 100,000
-    vertices); six printed digits do not need that. Holes (clockwise) subtract.
+    ``Polygon.area2`` is exact too but sums Fractions (seconds at 100,000 vertices);
+    floats share denominators that are powers of two, so one scale makes every
+    coordinate an integer and the sum is integer arithmetic. Holes (clockwise) subtract.
 
-    >>> display_area(Polygon.from_points([(1e9, 1e9), (1e9 + 3, 1e9), (1e9, 1e9 + 4)]))
-    6.0
+    >>> exact_area2(Polygon.from_points([(1e9, 1e9), (1e9 + 3, 1e9), (1e9, 1e9 + 4)]))
+    Fraction(12, 1)
     """
-    pts = np.asarray(polygon.points, dtype=float)
-    pts = pts - pts[0]
-    nxt = pts[polygon.next_array] if polygon.hole_count else np.roll(pts, -1, 0)
-    return math.fsum(np.concatenate([pts[:, 0] * nxt[:, 1], -(nxt[:, 0] * pts[:, 1])])) / 2
+    ratios = [float(c).as_integer_ratio() for point in polygon.points for c in point]
+    scale = max(den for _, den in ratios)
+    ints = [num * (scale // den) for num, den in ratios]
+    xs, ys = ints[0::2], ints[1::2]
+    twice = sum(xs[i] * ys[j] - xs[j] * ys[i] for i, j in enumerate(polygon.next_array))
+    return Fraction(twice, scale * scale)
+
+
+def display_area(polygon: Shape) -> str:
+    """The area to six significant digits, rounded from the exact value, so that an
+    area beyond a float's range (coordinates near 1.7e308) is still a number.
+
+    >>> display_area(Polygon.from_points([(0, 0), (1e300, 0), (0, 1e300)]))
+    '5e+599'
+    """
+    area = exact_area2(polygon) / 2
+    try:
+        return f"{float(area):.6g}"  # float(Fraction) rounds correctly
+    except OverflowError:
+        pass
+    with decimal.localcontext() as context:
+        context.prec = 6
+        context.Emax, context.Emin = decimal.MAX_EMAX, decimal.MIN_EMIN
+        value = decimal.Decimal(area.numerator) / decimal.Decimal(area.denominator)
+    return f"{value.normalize():g}".replace("E", "e")
 
 
 def _size_text(polygon: Shape) -> str:
@@ -116,7 +138,7 @@ def summary(polygon: Shape) -> str:
     orientation = "clockwise" if polygon.input_clockwise else "counter-clockwise"
     return (
         f"valid, {_size_text(polygon)}, {orientation}, "
-        f"area {display_area(polygon):.6g}, {_reflex_text(polygon)}"
+        f"area {display_area(polygon)}, {_reflex_text(polygon)}"
     )
 
 
