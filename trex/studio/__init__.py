@@ -1,0 +1,1 @@
+"""``trex studio``: a local web app to draw a polygon and see every heuristic decide on it."""

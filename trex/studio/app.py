@@ -1,0 +1,81 @@
+"""The studio's ASGI app (Starlette): the JSON routes, the page, and the Host/Origin guard.
+
+The guard refuses, 403, a request whose ``Host`` is not the served one (DNS rebinding)
+or whose ``Origin`` is foreign (a cross-site POST): the page runs heuristics on the
+user's machine, so only the page the studio served may call it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from starlette.applications import Starlette
+from starlette.requests import Request
+from starlette.responses import JSONResponse, Response
+from starlette.routing import Route
+from starlette.types import ASGIApp, Receive, Scope, Send
+
+from geometry.user_heuristics import UserHeuristic
+from story.registry import entry, heuristics
+from trex.studio import api
+
+
+class HostGuard:
+    """ASGI middleware: 403 unless Host is one of ``hosts`` and Origin, if any, matches it."""
+
+    def __init__(self, app: ASGIApp, hosts: set[str]) -> None:
+        self.app, self.hosts = app, hosts
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] == "http":
+            headers = {k.decode("latin-1"): v.decode("latin-1") for k, v in scope["headers"]}
+            host = headers.get("host", "")
+            origin = headers.get("origin")
+            if host not in self.hosts:
+                await _forbidden(f"host {host!r} is not served here")(scope, receive, send)
+                return
+            if origin is not None and origin != f"http://{host}":
+                await _forbidden(f"origin {origin!r} is foreign")(scope, receive, send)
+                return
+        await self.app(scope, receive, send)
+
+
+def _forbidden(message: str) -> Response:
+    return JSONResponse({"error": message}, status_code=403)
+
+
+def _json_route(work: Callable[[dict], dict]) -> Callable:
+    """A POST endpoint: parse the body, run ``work``, answer its dict or a 4xx one-liner."""
+
+    async def endpoint(request: Request) -> Response:
+        try:
+            body = api.parse_body(await request.body())
+            return JSONResponse(work(body))
+        except api.BadRequest as exc:
+            return JSONResponse({"error": str(exc)}, status_code=exc.status)
+
+    return endpoint
+
+
+def _rules(own: dict[str, UserHeuristic]) -> list[dict]:
+    """Every rule the page asks about: the built-ins with their metaphor, then one's own."""
+    built_in = [{"name": n, "metaphor": entry(n).metaphor, "title": entry(n).title}
+                for n in heuristics()]
+    return built_in + [{"name": n, "metaphor": None, "title": n} for n in own]
+
+
+def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None) -> ASGIApp:
+    """The studio app, serving ``hosts`` (``"127.0.0.1:8765"`` and the like) only."""
+    own = dict(own or {})
+
+    async def rules(_request: Request) -> Response:
+        return JSONResponse(_rules(own))
+
+    routes = [
+        Route("/api/rules", rules),
+        Route("/api/check", _json_route(api.check), methods=["POST"]),
+        Route("/api/diagonal", _json_route(lambda b: api.diagonal(b, own)), methods=["POST"]),
+        Route("/api/triangulate", _json_route(lambda b: api.triangulate(b, own)),
+              methods=["POST"]),
+    ]
+    return HostGuard(Starlette(routes=routes), hosts)
