@@ -57,6 +57,7 @@ class Board:
                             "subtitle")
         self.objects: dict[str, object] = {}  # persistent metaphor objects by key
         self.caption = ""  # the caption of this board's subtitle
+        self.outgoing = None  # the subtitle a beat replaces, cut once the beat's caption shows
         self.captions = captions_of(scene)
         self.roles: dict[str, str] = {}
 
@@ -98,6 +99,7 @@ class Board:
         total = max(0.1, run_time * beat.pace)
         # a new caption waits until the one before it has been read
         caption = self.captions.show(beat.caption, total) if beat.caption != self.caption else {}
+        self._cut_outgoing()  # read: it goes before the next comes in (never crossfaded)
         lead = min(WORDS_TIME, total / 2)
         if words and lead >= MIN_PLAY:
             for animation in words:
@@ -161,8 +163,15 @@ class Board:
         new = tag(balanced(caption, font=self.theme.font, size=self.theme.caption_size,
                            colour=self.theme.ink, width=SUBTITLE_WIDTH), None, "subtitle")
         new.move_to(subtitle_centre(new.height))
-        old, self.subtitle = self.subtitle, new
-        return [FadeOut(old), FadeIn(new)]
+        self.outgoing, self.subtitle = self.subtitle, new
+        return [FadeIn(new)]
+
+    def _cut_outgoing(self) -> None:
+        """Take the subtitle being replaced off the screen at once (a cut): two subtitles
+        are never up together, as a crossfade would show them."""
+        old, self.outgoing = self.outgoing, None
+        if old is not None:
+            self.scene.remove(old)
 
     def keep(self, key: str, mobject) -> None:
         """Remember a metaphor object (it turns with the polygon and is cleared by ``drop``)."""

@@ -88,9 +88,10 @@ class Stage:
         first_time = max(first_time, 0.3)
         cue = captions_of(self.scene).show(caption, first_time)  # may wait for the one before
         mark_step(self.scene, caption, kind="analysis")
-        change = [FadeIn(words)] + ([FadeOut(self.subtitle)] if self.subtitle else [])
+        if self.subtitle is not None:  # read: a cut, so two subtitles are never up at once
+            self.scene.remove(self.subtitle)
         self.subtitle = words
-        self.scene.play(*change, *first, run_time=first_time, **cue)
+        self.scene.play(FadeIn(words), *first, run_time=first_time, **cue)
         for anims, run_time in rest:
             if anims:
                 self.scene.play(*anims, run_time=run_time)

@@ -69,3 +69,31 @@ def small_texts(data: dict) -> list[str]:
         if height < LEAST_LINE:
             found[(node["name"], node["text"])] = height
     return [f"{name} {text!r} {h:.3f}" for (name, text), h in sorted(found.items())]
+
+
+#: the animations that take a mobject off the screen, and those that put one on
+OUTGOING = {"FadeOut", "Uncreate", "Unwrite", "ShrinkToCenter"}
+INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter"}
+
+
+def _played_subtitles(anim: dict) -> Iterator[tuple[str, str]]:
+    """(animation type, text) of every subtitle an animation (or its members) plays."""
+    mobject = anim.get("mobject") or {}
+    if mobject.get("name") == "subtitle" and (mobject.get("text") or "").strip():
+        yield anim["type"], mobject["text"]
+    for child in anim.get("animations", ()):
+        yield from _played_subtitles(child)
+
+
+def crossfaded_subtitles(data: dict) -> list[str]:
+    """Issue 22 item 9: the plays that take one subtitle off while putting the next on (two
+    subtitles on screen at once), as ``"play 12: 'old' → 'new'"``. A caption goes before the
+    next comes: a cut, or a play that takes it off and then one that puts the next on."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        played = [pair for anim in play["animations"] for pair in _played_subtitles(anim)]
+        gone = [text for kind, text in played if kind in OUTGOING]
+        come = [text for kind, text in played if kind in INCOMING]
+        if gone and come:
+            found.append(f"play {k}: {gone[0]!r} → {come[0]!r}")
+    return found

@@ -26,7 +26,7 @@ import pytest
 import srt
 from click.testing import CliRunner
 
-from tests.reading_rules import small_texts, unreadable_cues
+from tests.reading_rules import crossfaded_subtitles, small_texts, unreadable_cues
 from trex import assemble, lecture_command
 from trex.cli import main
 from trex.render_command import load_scene_class
@@ -454,6 +454,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert [c["text"] for c in data["cues"]] == captions
     assert unreadable_cues(data) == [], chapter.slug
     assert small_texts(data) == [], chapter.slug
+    # issue 22 item 9: never two subtitles at once
+    assert crossfaded_subtitles(data) == [], chapter.slug
 
 
 @pytest.mark.parametrize("chapter", _chapters())

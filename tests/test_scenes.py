@@ -37,7 +37,13 @@ from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon, read_shape
 from metaphors.pseudocode import source_of
 from story.registry import entry, hole_pseudocode, wrong
-from tests.reading_rules import LEAST_LINE, graph_nodes, small_texts, unreadable_cues
+from tests.reading_rules import (
+    LEAST_LINE,
+    crossfaded_subtitles,
+    graph_nodes,
+    small_texts,
+    unreadable_cues,
+)
 from tests.test_pseudocode import (
     EXAMPLE,
     PLUMBING,
@@ -190,6 +196,13 @@ def test_a_viewer_can_read_every_caption_and_text(case):
     data = graph(case).data
     assert unreadable_cues(data) == [], case.id
     assert small_texts(data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_never_two_subtitles_at_once(case):
+    """Issue 22 item 9: a caption goes before the next comes (no play fades one subtitle
+    out while the next fades in)."""
+    assert crossfaded_subtitles(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
