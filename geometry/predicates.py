@@ -19,6 +19,7 @@ False
 
 from __future__ import annotations
 
+import math
 import sys
 from enum import Enum
 from fractions import Fraction
@@ -322,11 +323,20 @@ def signed_area2(points: list[Point] | tuple[Point, ...]) -> Fraction:
 
     >>> signed_area2([(0, 0), (1, 0), (0, 1)])
     Fraction(1, 1)
+    >>> signed_area2([(1e9, 1e9), (1e9 + 3, 1e9), (1e9, 1e9 + 4)])  # no cancellation lost
+    Fraction(12, 1)
+    >>> signed_area2([(Fraction(1, 3), 0), (1, 0), (0, 1)])
+    Fraction(2, 3)
     """
-    total = Fraction(0)
-    n = len(points)
-    for i in range(n):
-        x1, y1 = points[i]
-        x2, y2 = points[(i + 1) % n]
-        total += Fraction(x1) * Fraction(y2) - Fraction(x2) * Fraction(y1)
-    return total
+    # Every coordinate is a ratio of integers (a float's denominator a power of two): over
+    # their common denominator the shoelace is integer arithmetic, exact and far faster than
+    # summing Fractions (seconds at 100,000 vertices), also beyond a float's range.
+    ratios = [c.as_integer_ratio() for point in points for c in point]
+    if not ratios:
+        return Fraction(0)
+    scale = math.lcm(*(den for _, den in ratios))
+    ints = [num * (scale // den) for num, den in ratios]
+    xs, ys = ints[0::2], ints[1::2]
+    n = len(xs)
+    twice = sum(xs[i] * ys[(i + 1) % n] - xs[(i + 1) % n] * ys[i] for i in range(n))
+    return Fraction(twice, scale * scale)

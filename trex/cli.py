@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import decimal
 import sys
-from fractions import Fraction
 from typing import Any
 
 import click
@@ -76,24 +75,6 @@ def _reflex_text(polygon: Shape) -> str:
     return f"{len(reflex)} reflex {noun} ({', '.join(labels)})"
 
 
-def exact_area2(polygon: Shape) -> Fraction:
-    """Twice the area, exact: shoelace in integers over a common power-of-two denominator.
-
-    ``Polygon.area2`` is exact too but sums Fractions (seconds at 100,000 vertices);
-    floats share denominators that are powers of two, so one scale makes every
-    coordinate an integer and the sum is integer arithmetic. Holes (clockwise) subtract.
-
-    >>> exact_area2(Polygon.from_points([(1e9, 1e9), (1e9 + 3, 1e9), (1e9, 1e9 + 4)]))
-    Fraction(12, 1)
-    """
-    ratios = [float(c).as_integer_ratio() for point in polygon.points for c in point]
-    scale = max(den for _, den in ratios)
-    ints = [num * (scale // den) for num, den in ratios]
-    xs, ys = ints[0::2], ints[1::2]
-    twice = sum(xs[i] * ys[j] - xs[j] * ys[i] for i, j in enumerate(polygon.next_array))
-    return Fraction(twice, scale * scale)
-
-
 def display_area(polygon: Shape) -> str:
     """The area to six significant digits, rounded from the exact value, so that an
     area beyond a float's range (coordinates near 1.7e308) is still a number.
@@ -101,7 +82,7 @@ def display_area(polygon: Shape) -> str:
     >>> display_area(Polygon.from_points([(0, 0), (1e300, 0), (0, 1e300)]))
     '5e+599'
     """
-    area = exact_area2(polygon) / 2
+    area = polygon.area2 / 2  # exact (geometry.predicates.signed_area2)
     try:
         return f"{float(area):.6g}"  # float(Fraction) rounds correctly
     except OverflowError:
