@@ -183,13 +183,14 @@ _HEURISTICS_TRACED = tuple(_traced_name(f) for f in HEURISTICS.values())
 
 #: The rows of gravity (thesis ch. 2.1.2, after Forišek and Steinová), also inside the others.
 _GRAVITY = (
-    Step("V = a reflex vertex (the first after B)", ("reflex_vertex", "straight_vertex")),
+    Step("B = the left-most vertex"),
+    Step("V = the first reflex vertex after B", ("reflex_vertex", "straight_vertex")),
     Step("turn P: V's sides point up, no edge level", ("gravity_direction",)),
     Step("drop a ball on a band at V: it hits a side", ("drop_ball",)),
     Step("it slides down the side to a vertex X", ("slide_to_vertex",)),
     Step("Y = the first vertex the band snags", ("band_snag",)),
     Step("claim VY, or VX if the band stays straight", ("claim",)),
-    Step("no reflex vertex: P is convex, claim AC", ("leftmost_vertex", "triangle_at", "claim")),
+    Step("no reflex or straight vertex: claim AC", ("leftmost_vertex", "triangle_at", "claim")),
 )
 
 
@@ -242,7 +243,7 @@ _ENTRIES = (
                    pseudocode=(
                        Step("while P has more than 3 vertices:"),
                        Step("  for each vertex V, from the first:"),
-                       Step("    is V an ear? (V−1 V V+1 is empty)", ("is_ear",)),
+                       Step("    is V an ear? (convex, V−1 V V+1 empty)", ("is_ear",)),
                        Step("    yes: slice V−1 V V+1 off, start again", ("clip_ear",)),
                        Step("the triangle left is the last slice", ("ear-clipping-naive",)),
                    )),
@@ -272,10 +273,13 @@ _ENTRIES = (
                    pseudocode=(
                        Step("sweep a line down P, vertex by vertex:", ("make_monotone",)),
                        Step("  v is start, end, split, merge or regular", ("classify_vertex",)),
-                       Step("  start, end, regular: update the helpers",
-                            ("handle_start", "handle_end", "handle_regular")),
-                       Step("  split: join v to the helper on its left", ("handle_split",)),
-                       Step("  merge: v helps the edge on its left", ("handle_merge",)),
+                       Step("  start or end: an edge begins or ends at v",
+                            ("handle_start", "handle_end")),
+                       Step("  regular: v helps its edge or the left one",
+                            ("handle_regular",)),
+                       Step("  split: v helps the edge on its left", ("handle_split",)),
+                       Step("  merge: v ends an edge, helps the left one", ("handle_merge",)),
+                       Step("  split, or v replaces a merge helper:"),
                        Step("    add the diagonal v–helper", ("add_diagonal",)),
                        Step("cut P along them into y-monotone pieces", ("monotone_pieces",)),
                        Step("triangulate each piece with a stack",
@@ -388,8 +392,8 @@ def pseudocode(name: str) -> tuple[Step, ...]:
     """The pseudocode of ``name``; none for any other name (a heuristic of one's own carries
     its own in its log, if its docstring has it).
 
-    >>> pseudocode("gravity")[0].text, pseudocode("cdt"), pseudocode("biggest_angle")
-    ('V = a reflex vertex (the first after B)', (), ())
+    >>> pseudocode("gravity")[1].text, pseudocode("cdt"), pseudocode("biggest_angle")
+    ('V = the first reflex vertex after B', (), ())
     """
     known = REGISTRY.get(name)
     return known.pseudocode if known is not None else ()

@@ -50,7 +50,7 @@ class Heuristics(LectureScene):
 
     def chapter_segments(self) -> tuple:
         frame = Card("The frame every heuristic shares", (
-            "B: the left-most vertex (lowest on ties) — always convex.",
+            "B: the left-most vertex (lowest on ties) — always convex: P lies to its right.",
             "A and C: its neighbours; T = triangle ABC.",
             "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate D: is BD?"))
         return (frame, *[s for family in FAMILIES for s in family_segments(family)])
