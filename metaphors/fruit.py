@@ -242,7 +242,7 @@ def _slice(corners, labels, points, clipped) -> dict:
 
 
 def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    state = walk.entered_after(ret, ret.result["ref"])
+    state = walk.entered_after(ret, walk.result_ref(ret))
     yield walk.step(Good, "A good sub-polygon: one cut edge, about half the vertices; "
                     "its middle vertex is tested next", call, ret, points=state["points"],
                     labels=state["labels"])

@@ -137,7 +137,7 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 
 
 def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    pieces = [walk.entered_after(call, r["ref"]) for r in ret.result]
+    pieces = [walk.entered_after(call, key) for key in walk.result_refs(ret)]
     yield walk.step(Pieces, f"The diagonals cut the polygon into {len(pieces)} y-monotone "
                     "pieces", call, ret, pieces=[p.get("points", []) for p in pieces])
 
