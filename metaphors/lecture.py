@@ -23,11 +23,10 @@ from geometry.triangulate import triangulate
 from geometry.user_heuristics import load_user_heuristic
 from metaphors import catalog
 from metaphors.analysis import Analysis, play_analysis
-from metaphors.captions import captions_of
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
+from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
-from metaphors.steps import end_steps, lead_in, mark_step
 from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
