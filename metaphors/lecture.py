@@ -124,11 +124,29 @@ class LectureScene(TraceScene):
         self.next_section(self.chapter_title)
         for segment in self.chapter_segments():
             self.clear_screen()
-            getattr(self, f"play_{type(segment).__name__.lower()}")(segment)
+            self.play_segment(segment)
         captions_of(self).hold()  # the last caption is read within the last step
         end_steps(self)
         self.clear_screen()
         self.wait(0.5)
+
+    def play_segment(self, segment) -> None:
+        """Play one segment by its kind."""
+        match segment:
+            case Card():
+                self.play_card(segment)
+            case Run():
+                self.play_run(segment)
+            case Hunted():
+                self.play_hunted(segment)
+            case Analysis():
+                self.play_analysis(segment)
+            case Compare():
+                self.play_compare(segment)
+            case Quiz():
+                self.play_quiz(segment)
+            case _:
+                raise TypeError(f"{type(self).__name__}: no way to play {segment!r}")
 
     def clear_screen(self) -> None:
         """Fade out everything (the caption on screen read first): the fade opens the step

@@ -157,3 +157,18 @@ def test_a_log_whose_parameter_was_renamed_fails_in_the_reading_by_name():
         if e.kind == "call" and e.name == "nearest_to" else e for e in log.events])
     with pytest.raises(LogFormatError, match="call of nearest_to has no argument 'b'"):
         storyboard(renamed, readings=water.READS)
+
+
+def test_a_saved_log_with_a_renamed_parameter_is_refused_in_one_line():
+    # what trex player/snapshot/slides say of such a --log, before anything is drawn
+    from scenes.scaling import Scaling
+    from trex.scene_inputs import check_log
+
+    log = _log("scaling")
+    renamed = Log(meta=dict(log.meta), events=[
+        replace(e, args={("centre" if k == "b" else k): v for k, v in e.args.items()})
+        if e.kind == "call" and e.name == "nearest_to" else e for e in log.events])
+    with pytest.raises(ValueError) as refused:
+        check_log(Scaling, renamed)
+    assert str(refused.value) == ("cannot be played: LogFormatError: the log's call of "
+                                  "nearest_to has no argument 'b'")
