@@ -183,7 +183,7 @@ def unprimed(label: str) -> str:
 
 
 def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    v, ear = show(call.args["v"]), bool(ret.result)
+    v, ear = walk.ref(call, "v"), bool(ret.result)
     caption = f"Is {v} an ear? " + ("yes: its triangle holds no other vertex" if ear
                                      else "no: a cut between its neighbours is not a clean slice")
     yield walk.step(EarTest, caption, call, ret,

@@ -14,7 +14,7 @@ from manim import Polygon as MPolygon
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk, show
+from story.storyboard import Walk
 from tracing import Event
 
 
@@ -120,7 +120,7 @@ class Stack(Beat):
 
 
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    v, kind = show(call.args["v"]), ret.result
+    v, kind = walk.ref(call, "v"), ret.result
     yield walk.step(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
                     roles={v: "rejected" if kind in ("split", "merge") else "called"},
                     vertex=v, kind=kind, at=walk.root_points()[v])
