@@ -23,11 +23,10 @@ from geometry.triangulate import triangulate
 from geometry.user_heuristics import load_user_heuristic
 from metaphors import catalog
 from metaphors.analysis import Analysis, play_analysis
-from metaphors.captions import captions_of
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
+from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
-from metaphors.steps import end_steps, lead_in, mark_step
 from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
@@ -125,11 +124,29 @@ class LectureScene(TraceScene):
         self.next_section(self.chapter_title)
         for segment in self.chapter_segments():
             self.clear_screen()
-            getattr(self, f"play_{type(segment).__name__.lower()}")(segment)
+            self.play_segment(segment)
         captions_of(self).hold()  # the last caption is read within the last step
         end_steps(self)
         self.clear_screen()
         self.wait(0.5)
+
+    def play_segment(self, segment) -> None:
+        """Play one segment by its kind."""
+        match segment:
+            case Card():
+                self.play_card(segment)
+            case Run():
+                self.play_run(segment)
+            case Hunted():
+                self.play_hunted(segment)
+            case Analysis():
+                self.play_analysis(segment)
+            case Compare():
+                self.play_compare(segment)
+            case Quiz():
+                self.play_quiz(segment)
+            case _:
+                raise TypeError(f"{type(self).__name__}: no way to play {segment!r}")
 
     def clear_screen(self) -> None:
         """Fade out everything (the caption on screen read first): the fade opens the step

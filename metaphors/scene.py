@@ -30,10 +30,9 @@ from geometry.user_heuristics import (
 )
 from metaphors import catalog
 from metaphors.board import Board
-from metaphors.captions import captions_of
 from metaphors.layout import METAPHOR
 from metaphors.play import board_for, play_beats
-from metaphors.steps import lead_in
+from metaphors.recorded import Recorded, captions_of, lead_in
 from metaphors.tags import tag
 from metaphors.theme import THEME
 from rendering.camera import PathCamera
@@ -100,7 +99,7 @@ class SpecScene:
         return self.spec if self.spec is not None else spec_from_environment(self.default_spec())
 
 
-class TraceScene(SpecScene, Scene):
+class TraceScene(SpecScene, Recorded, Scene):
     """Plays the log of one algorithm run."""
 
     algorithm = "scaling"
@@ -161,15 +160,15 @@ class TraceScene(SpecScene, Scene):
 
     def play_log(self, log, title: str) -> Board:
         """Turn one log into beats and play them on a fresh board (both kept, as
-        ``trex_beats`` and ``trex_board``, for tests)."""
+        ``played_beats`` and ``played_board``, for tests)."""
         beats = self.beats(log)
         # the frame a run shown before showed too (same polygon, T, candidates): one caption
-        key, seen = frame_key(beats), self.__dict__.setdefault("trex_frames_seen", set())
-        self.trex_beats = frame_summarised(beats) if key is not None and key in seen else beats
+        key, seen = frame_key(beats), self.frames_seen
+        self.played_beats = frame_summarised(beats) if key is not None and key in seen else beats
         if key is not None:
             seen.add(key)
-        self.trex_board = board_for(self, log, self.trex_beats, title, self.theme)
-        return play_beats(self.trex_board, self.trex_beats)
+        self.played_board = board_for(self, log, self.played_beats, title, self.theme)
+        return play_beats(self.played_board, self.played_beats)
 
 
 class SequenceScene(TraceScene):

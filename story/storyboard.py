@@ -48,6 +48,7 @@ from story.beats import (
 from story.pseudocode import Step, from_json, lit_row
 from story.reach import Reach, reach_of
 from story.reading import summarised
+from story.refs import ref, result_ref, result_refs
 from story.registry import heuristics, pseudocode
 from story.roles import ROLES
 from tracing import Event, Log
@@ -165,6 +166,11 @@ class Walk:
         # ``heuristic_function``) is a heuristic too: its claims are judged on its piece
         self._heuristics = (frozenset(heuristics()) | _HEURISTIC_CALLS
                             | ({heuristic_function} if heuristic_function else set()))
+
+    #: the log's keys a call's argument and a function's result refer to (:mod:`story.refs`)
+    ref = staticmethod(ref)
+    result_ref = staticmethod(result_ref)
+    result_refs = staticmethod(result_refs)
 
     def memo(self, name: str, make: Callable[[], Any]) -> Any:
         """A reading's own state for the whole walk (made on first use)."""
@@ -321,7 +327,7 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
                             labels=e.state["labels"], holes=e.state.get("holes", []))
         return
     if e.kind == "call" and "polygon" in (e.args or {}) and walk.is_heuristic(e.name):
-        walk.heuristic_polygon.append(e.args["polygon"]["ref"])
+        walk.heuristic_polygon.append(ref(e, "polygon"))
         return
     if e.kind == "return" and walk.is_heuristic(e.name) and walk.heuristic_polygon:
         walk.heuristic_polygon.pop()
@@ -372,7 +378,7 @@ def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 
 
 def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    key = ret.result["ref"]
+    key = result_ref(ret)
     walk.claimed.add(key)
     state = walk.live.get(key) or walk.entered_after(ret, key)
     u, v = state["labels"]

@@ -36,7 +36,9 @@ from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon, read_shape
 from metaphors.pseudocode import source_of
+from metaphors.scene import SequenceScene, TraceScene
 from story.registry import entry, hole_pseudocode, wrong
+from story.scene_kinds import Handed, WithPanel, algorithm_of, plays_several
 from tests.reading_rules import (
     LEAST_LINE,
     crossfaded_subtitles,
@@ -92,7 +94,7 @@ class SceneCase:
         replaying ``saved`` — so that no environment variable counts; a scene that takes
         no input: itself."""
         cls = self.scene_class()
-        return cls.handed(polygon, saved) if callable(getattr(cls, "handed", None)) else cls
+        return cls.handed(polygon, saved) if isinstance(cls, Handed) else cls
 
 
 def _import(path: Path):
@@ -132,7 +134,7 @@ def _params(cases) -> list:
 def _single_run_scenes(heuristic: str) -> list[SceneCase]:
     """Scenes that play one run of this algorithm (named in their own class body)."""
     return [c for c in SCENES if c.cls is not None and vars(c.cls).get("algorithm") == heuristic
-            and not getattr(c.cls, "runs", None)]
+            and not plays_several(c.cls)]
 
 
 # --- builds (cached for the session) -------------------------------------------------------------
@@ -217,9 +219,9 @@ def _save_logs(case: SceneCase, folder: Path) -> tuple[str, ...] | None:
     plays none."""
     with tempconfig({"dry_run": True, "media_dir": str(folder), "verbosity": "WARNING"}):
         scene = case.handed()(skip_animations=True)
-        if callable(getattr(scene, "logs", None)):
+        if isinstance(scene, SequenceScene):
             logs = scene.logs()
-        elif callable(getattr(scene, "log", None)):
+        elif isinstance(scene, TraceScene):
             logs = [scene.log()]
         else:
             return None
@@ -276,16 +278,15 @@ def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
 
 def _last_algorithm(case: SceneCase) -> str | None:
     """The algorithm whose run the scene's last board plays."""
-    runs = getattr(case.cls, "runs", None)
-    return runs[-1][0] if runs else getattr(case.cls, "algorithm", None)
+    return case.cls.runs[-1][0] if plays_several(case.cls) else algorithm_of(case.cls)
 
 
 def _last_pseudocode(case: SceneCase) -> tuple:
     """The rows the scene's last board shows: its algorithm's, with the holes' rows first when
     its polygon has holes."""
-    runs = getattr(case.cls, "runs", None)
     algorithm = _last_algorithm(case)
-    polygon = runs[-1][1] if runs else getattr(case.cls, "polygon", None)
+    polygon = (case.cls.runs[-1][1] if plays_several(case.cls)
+               else case.cls.polygon if isinstance(case.cls, Handed) else None)
     if polygon and read_shape(polygon).hole_count:
         return hole_pseudocode(algorithm)
     return entry(algorithm).pseudocode
@@ -311,9 +312,9 @@ def _scene_logs(case: SceneCase, folder: Path):
     """The scene (not built) and the logs it plays, or None if it plays none."""
     with tempconfig({"dry_run": True, "media_dir": str(folder), "verbosity": "WARNING"}):
         scene = case.handed()(skip_animations=True)
-        if callable(getattr(scene, "logs", None)):
+        if isinstance(scene, SequenceScene):
             return scene, scene.logs()
-        if callable(getattr(scene, "log", None)):
+        if isinstance(scene, TraceScene):
             return scene, [scene.log()]
     return None
 
@@ -402,7 +403,7 @@ def assert_source_panel_readable(data: dict, what: str) -> None:
 
 @pytest.mark.parametrize("case", [c for c in _params(SCENES)
                                   if c.values[0].cls is not None
-                                  and callable(getattr(c.values[0].cls, "with_panel", None))])
+                                  and isinstance(c.values[0].cls, WithPanel)])
 def test_a_viewer_can_read_the_source_panel(case):
     """The source at a readable size in every scene: its long lines wrap, a long listing
     shows a window of it that holds the lit line (metaphors/listing.py)."""

@@ -446,18 +446,18 @@ def _dry_render(spec: str, polygon: str | None, monkeypatch):
 def test_scene_plays_the_generic_beats(polygon, ok, monkeypatch):
     cls, scene, played = _dry_render(EXAMPLE, polygon, monkeypatch)
     assert cls.title.startswith("biggest_angle: Claim BD for the candidate D")
-    actions = [b.action for b in scene.trex_beats]
+    actions = [b.action for b in scene.played_beats]
     assert {"shape", "call", "claim", "verdict"} <= set(actions)
     assert ("Create", "shape:best") in played  # the shape appeared …
     assert ("Transform", "shape:best") in played  # … moved to the better candidate …
     assert ("FadeOut", "shape:best") in played  # … and went
-    assert "shape:best" not in scene.trex_board.objects
-    verdict = scene.trex_beats[-1]
+    assert "shape:best" not in scene.played_board.objects
+    verdict = scene.played_beats[-1]
     assert verdict.action == "verdict" and verdict.data["ok"] is ok
     assert ("FadeIn", "tick" if ok else "cross") in played
     if not ok:
         assert ("Create", "edge:C–D") in played  # the edge the claim crosses
-    rows = [text.strip() for _, text in scene.trex_board.panel.code_lines]
+    rows = [text.strip() for _, text in scene.played_board.panel.code_lines]
     assert rows[0] == "def biggest_angle(polygon):" and rows[-1] == "return b, best"
 
 

@@ -42,6 +42,7 @@ import click
 
 from geometry.errors import GeometryError
 from story.pseudocode import PANELS
+from story.scene_kinds import ChapterScene, plays_several
 from trex.inputs import error_line, fail, first_line, load_or_exit, make_parent
 from trex.render_command import (
     EXIT_FAILED,
@@ -98,7 +99,7 @@ def lecture_chapters() -> tuple[Chapter, ...]:
     chapters = []
     for number, slug, path in sorted(found):
         cls = load_scene_class(path, None)
-        title = str(getattr(cls, "chapter_title", slug)).partition(". ")
+        title = str(cls.chapter_title if isinstance(cls, ChapterScene) else slug).partition(". ")
         chapters.append(Chapter(number, slug, title[2] or title[0], str(path.relative_to(REPO)),
                                 cls.__name__))
     return tuple(chapters)
@@ -225,7 +226,7 @@ def _check_polygon(cls: type, polygon: str, label: str, done: set) -> None:
         raise ChapterFailed(f"{label}: cannot list its segments: {type(exc).__name__}: "
                             f"{error_line(exc)}") from None
     if segments is None:
-        if not getattr(cls, "runs", None):
+        if not plays_several(cls):
             try:
                 dry_run(cls, polygon)
             except (GeometryError, ValueError, KeyError) as exc:

@@ -27,6 +27,7 @@ from pathlib import Path
 import click
 
 from story.pseudocode import PANELS
+from story.scene_kinds import plays_several
 from trex.inputs import error_line, fail, load_or_exit
 from trex.output_dir import build_guarded, built_beside, check_output
 
@@ -104,10 +105,10 @@ def _played(chosen, scene: str) -> tuple[type, str]:
     (as the player's), or all its runs, each on its own polygon."""
     from trex.scene_inputs import run_of
 
-    runs = getattr(chosen.cls, "runs", None)
-    if not runs:
+    if not plays_several(chosen.cls):
         spec, _, subtitle = run_of(chosen)
         return chosen.cls.with_spec(spec), subtitle
+    runs = chosen.cls.runs
     if chosen.saved is not None:
         fail(f"{chosen.saved_as}: {scene} plays {len(runs)} runs, each on its own polygon; a "
              "saved log is one run")
