@@ -20,7 +20,7 @@ from metaphors.layout import METAPHOR
 from metaphors.steps import mark_step
 from story.beats import Beat
 from story.pseudocode import PSEUDOCODE
-from story.storyboard import pseudocode_of
+from story.storyboard import spoken_pseudocode
 from tracing import Log
 
 #: widest title (scene units) before it is shrunk to fit the frame
@@ -33,8 +33,9 @@ def board_for(scene: Scene, log: Log, beats: Sequence[Beat], title: str, theme) 
     first = beats[0]
     board = Board(scene, first.points, first.labels, log.meta.get("shown"), title, theme,
                   getattr(scene, "metaphor_box", METAPHOR), getattr(first, "holes", ()))
+    board.panel.shows_calls = getattr(scene, "call_line", True)
     code = log.meta.get("code")
-    rows = pseudocode_of(log)
+    rows = spoken_pseudocode(log)
     if getattr(scene, "panel", PSEUDOCODE) == PSEUDOCODE and rows:
         board.panel.show_pseudocode(rows)
     elif code:
