@@ -43,6 +43,7 @@ from tests.reading_rules import (
     graph_nodes,
     small_texts,
     unreadable_cues,
+    unspoken_words,
 )
 from tests.test_pseudocode import (
     EXAMPLE,
@@ -203,6 +204,14 @@ def test_never_two_subtitles_at_once(case):
     """Issue 22 item 9: a caption goes before the next comes (no play fades one subtitle
     out while the next fades in)."""
     assert crossfaded_subtitles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_every_scene_speaks_the_taught_words(case):
+    """Issue 22 items 1 and 10: a scene's titles, captions and cards name the algorithms as
+    the thesis does (no slug), show no code and no number with two decimals; only the
+    panel's call line shows the real call (a programmer's render keeps it)."""
+    assert unspoken_words(graph(case).data, call_line=True) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
