@@ -303,7 +303,7 @@ _PLACEHOLDERS = MappingProxyType({"leftmost_vertex": "B", "pick": "D", "reflex_v
 def run_vertices(log: Log) -> dict[str, str]:
     """Each placeholder of the pseudocode → the vertex the run gave it (``{"B": "B", "A":
     "A", "C": "C", "D": "E"}``): A, B, C from T as it enters, the others from the calls of
-    :data:`_PLACEHOLDERS`. A placeholder given two different vertices (divide and conquer
+    :data:`_PLACEHOLDERS`, D also from a claim BD. A placeholder given two different vertices (divide and conquer
     runs the frame on every piece) is left out: no one vertex is it.
 
     >>> import tracing
@@ -317,6 +317,7 @@ def run_vertices(log: Log) -> dict[str, str]:
     {'A': 'A', 'B': 'B', 'C': 'C', 'D': 'E'}
     """
     given: dict[str, set[str]] = {}
+    claims: list[list[str]] = []
     for e in log.events:
         if e.kind == "enter" and is_frame_key(e.target) and not is_polygon_key(e.target):
             for placeholder, label in zip("ABC", e.state["labels"], strict=False):
@@ -324,6 +325,14 @@ def run_vertices(log: Log) -> dict[str, str]:
         elif (e.kind == "return" and e.name in _PLACEHOLDERS and isinstance(e.result, dict)
               and "ref" in e.result):
             given.setdefault(_PLACEHOLDERS[e.name], set()).add(e.result["ref"])
+        elif e.kind == "call" and e.name == "claim":
+            claims.append([k for v in (e.args or {}).values() for k in refs(v)])
+    found = {k: next(iter(v)) for k, v in given.items() if len(v) == 1}
+    # a claim BD names D too (a heuristic of one's own picks D by a step of its own)
+    for ends in claims:
+        if len(ends) == 2 and ends[0] == found.get("B") and ends[1] not in (found.get("A"),
+                                                                            found.get("C")):
+            given.setdefault("D", set()).add(ends[1])
     return {k: next(iter(v)) for k, v in sorted(given.items()) if len(v) == 1}
 
 

@@ -36,7 +36,10 @@ from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon, read_shape
 from metaphors.pseudocode import source_of
+from story.pseudocode import named
 from story.registry import entry, hole_pseudocode, wrong
+from story.spec import RunSpec
+from story.storyboard import run_vertices
 from tests.reading_rules import (
     LEAST_LINE,
     crossfaded_subtitles,
@@ -297,7 +300,9 @@ def _last_pseudocode(case: SceneCase) -> tuple:
     polygon = runs[-1][1] if runs else getattr(case.cls, "polygon", None)
     if polygon and read_shape(polygon).hole_count:
         return hole_pseudocode(algorithm)
-    return entry(algorithm).pseudocode
+    # the rows name the run's own vertices where the picture has one of that name (issue 22)
+    log = RunSpec(algorithm, polygon, heuristic=getattr(case.cls, "heuristic", None)).log()
+    return named(entry(algorithm).pseudocode, run_vertices(log), read_polygon(polygon).labels)
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
