@@ -43,7 +43,7 @@ from metaphors.theme import Theme
 from rendering import typeset
 from story.analysis import Band, Motion, motion, split
 from story.beats import Beat, Claim, ShowPolygon, ShowTriangle, Verdict
-from story.registry import entry
+from story.registry import entry, spoken
 from story.spec import RunSpec
 from story.states import Moving, Tool
 
@@ -67,7 +67,7 @@ class Analysis:
     polygon: str = "counterexample"
     fails: str = ""
     holds: str = ""
-    title: str | None = None  # default: "Water: why scaling fails" and the like
+    title: str | None = None  # default: "Water: why Scaling fails" and the like
     slow: float = SLOW
 
 
@@ -323,18 +323,19 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
     name = NAMES.get(known.metaphor, str(known.metaphor).capitalize())
     first = moment(analysis.heuristic, analysis.polygon)
     _check(analysis, first)
+    said = spoken(analysis.heuristic)  # the thesis's names, never the slugs (issue 22)
     if known.correct:
-        holds(_stage(scene, first, analysis.title or f"{name}: why {analysis.heuristic} is right",
-                     theme), first, analysis)
+        holds(_stage(scene, first, analysis.title or f"{name}: why {said} is right", theme),
+              first, analysis)
         return
     if known.correction is None:
         raise ValueError(f"{analysis.heuristic} is wrong and has no correction to analyse")
-    stage = _stage(scene, first, analysis.title or f"{name}: why {analysis.heuristic} fails",
-                   theme)
+    stage = _stage(scene, first, analysis.title or f"{name}: why {said} fails", theme)
     cleared = fails(stage, first, analysis)
     right = moment(known.correction, analysis.polygon)
-    holds(stage, right, analysis, [*[FadeOut(m) for m in cleared],
-                                   *stage.retitle(f"{name}: the correction, {known.correction}")])
+    holds(stage, right, analysis, [
+        *[FadeOut(m) for m in cleared],
+        *stage.retitle(f"{name}: the correction, {spoken(known.correction)}")])
 
 
 def _stage(scene, seen: Moment, title: str, theme: Theme) -> Stage:

@@ -19,7 +19,7 @@ from metaphors.layout import Box
 from metaphors.recorded import captions_of, mark_step
 from story.beats import Beat, ShowPolygon
 from story.pseudocode import PSEUDOCODE
-from story.storyboard import pseudocode_of
+from story.storyboard import spoken_pseudocode
 from tracing import Log
 
 #: widest title (scene units) before it is shrunk to fit the frame
@@ -33,6 +33,7 @@ class BoardScene(Protocol):
 
     metaphor_box: Box
     panel: str
+    call_line: bool  # False in the lecture: a run's steps are its rows and captions
 
 
 def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
@@ -43,8 +44,9 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     holes = first.holes if isinstance(first, ShowPolygon) else ()
     board = Board(scene, first.points, first.labels, log.meta.get("shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(scene))
+    board.panel.shows_calls = scene.call_line
     code = log.meta.get("code")
-    rows = pseudocode_of(log)
+    rows = spoken_pseudocode(log)
     if scene.panel == PSEUDOCODE and rows:
         board.panel.show_pseudocode(rows)
     elif code:

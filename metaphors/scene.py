@@ -42,7 +42,7 @@ from story.beats import Beat
 from story.environment import spec_from_environment, specs_from_environment
 from story.pseudocode import PANELS, PSEUDOCODE
 from story.reading import frame_key, frame_summarised
-from story.registry import heuristics
+from story.registry import heuristics, spoken
 from story.spec import RunSpec
 from story.storyboard import Pacing
 from tracing import Log
@@ -111,6 +111,9 @@ class TraceScene(SpecScene, Recorded, Scene):
     metaphor_box = METAPHOR  # where the metaphor's polygon goes (left half by default)
     #: what the panel shows: the run's pseudocode (the source when it has none) or "source"
     panel = PSEUDOCODE
+    #: whether the panel's call line shows each step's real call (``nearest_to(B, [D, E]) →
+    #: D``): a programmer wants it; the lecture, which shows no code, turns it off
+    call_line = True
 
     def __init__(self, renderer=None, **kwargs):
         if renderer is None and config.renderer == RendererType.CAIRO:
@@ -134,8 +137,10 @@ class TraceScene(SpecScene, Recorded, Scene):
         else:
             raise ValueError(f"unknown heuristic {heuristic!r}; expected one of "
                              f"{', '.join(heuristics())}, or FILE.py:FUNCTION of your own")
-        title = (cls.title.replace(cls.heuristic, name) if cls.heuristic in cls.title
-                 else f"{cls.title} (heuristic: {name})")
+        # the title names the heuristic as the screen says it (story.registry.SPOKEN)
+        was, said = spoken(cls.heuristic), spoken(name)
+        title = (cls.title.replace(was, said) if was in cls.title
+                 else f"{cls.title} (heuristic: {said})")
         return _subclass(cls, heuristic=heuristic, title=title)
 
     @classmethod

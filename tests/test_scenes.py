@@ -37,14 +37,18 @@ from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon, read_shape
 from metaphors.pseudocode import source_of
 from metaphors.scene import SequenceScene, TraceScene
+from story.pseudocode import named
 from story.registry import entry, hole_pseudocode, wrong
-from story.scene_kinds import Handed, WithPanel, algorithm_of, plays_several
+from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
+from story.spec import RunSpec
+from story.storyboard import run_vertices
 from tests.reading_rules import (
     LEAST_LINE,
     crossfaded_subtitles,
     graph_nodes,
     small_texts,
     unreadable_cues,
+    unspoken_words,
 )
 from tests.test_pseudocode import (
     EXAMPLE,
@@ -208,6 +212,14 @@ def test_never_two_subtitles_at_once(case):
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
+def test_every_scene_speaks_the_taught_words(case):
+    """Issue 22 items 1 and 10: a scene's titles, captions and cards name the algorithms as
+    the thesis does (no slug), show no code and no number with two decimals; only the
+    panel's call line shows the real call (a programmer's render keeps it)."""
+    assert unspoken_words(graph(case).data, call_line=True) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
 def test_same_input_gives_identical_graph(case, request):
     skip_if_heavy(case, request)
     again = build(case.handed())
@@ -289,7 +301,9 @@ def _last_pseudocode(case: SceneCase) -> tuple:
                else case.cls.polygon if isinstance(case.cls, Handed) else None)
     if polygon and read_shape(polygon).hole_count:
         return hole_pseudocode(algorithm)
-    return entry(algorithm).pseudocode
+    # the rows name the run's own vertices where the picture has one of that name (issue 22)
+    log = RunSpec(algorithm, polygon, heuristic=heuristic_of(case.cls)).log()
+    return named(entry(algorithm).pseudocode, run_vertices(log), read_polygon(polygon).labels)
 
 
 @pytest.mark.parametrize("case", _params(SCENES))

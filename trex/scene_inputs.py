@@ -20,6 +20,7 @@ from pathlib import Path
 from geometry.errors import GeometryError
 from geometry.triangulate import HOLE_ALGORITHMS
 from geometry.user_heuristics import is_user_spec
+from story.registry import spoken
 from story.scene_kinds import algorithm_of, heuristic_of, plays_several
 from trex.inputs import error_line, fail, load_or_exit
 
@@ -142,6 +143,12 @@ def choose(scene: str, polygon: str | None, saved: str | None,
     return Chosen(cls, log, saved, saved_as, polygon)
 
 
+def _said(log) -> str:
+    """The log's algorithm as the page says it: its spoken name (``Correct Scaling``), never
+    the command line's slug (issue 22)."""
+    return spoken(str(log.meta.get("algorithm")), start=True)
+
+
 def run_of(chosen: Chosen):
     """``(spec, log, subtitle)``: the run the scene plays (computed now when live; a polygon
     the algorithm rejects is one line and exit 2) and the line saying what it is."""
@@ -152,8 +159,8 @@ def run_of(chosen: Chosen):
             log = spec.log()
         except (GeometryError, ValueError, KeyError) as exc:
             fail(f"{spec.polygon}: {error_line(exc)}")
-        return spec, log, f"{log.meta.get('algorithm')} on {spec.polygon}"
+        return spec, log, f"{_said(log)} on {spec.polygon}"
     log = chosen.log
     return (spec.replaying(chosen.saved), log,
-            f"{log.meta.get('algorithm')} on {log.meta.get('polygon', '?')}, "
+            f"{_said(log)} on {log.meta.get('polygon', '?')}, "
             f"saved in {Path(chosen.saved).name}")
