@@ -481,7 +481,7 @@ def test_scene_for_heuristic_errors_and_scene_classes(tmp_path):
 def test_trex_diagonal_with_the_example_json():
     code, out, err = run("diagonal", "--heuristic", EXAMPLE, "counterexample",
                          "counterexample-twin", "--json")
-    assert code == 0, err
+    assert code == 1, err  # a finding: its claim on the twin is not an inner diagonal
     first, second = (json.loads(line) for line in out.splitlines())
     assert first["polygon"] == "counterexample"
     assert first["inner"] is True and first["why"] is None and sorted(first["diagonal"]) == [0, 3]
@@ -523,8 +523,7 @@ def test_every_answer_form_is_one_claim(tmp_path, answer):
 
 
 BAD_SPECS = {
-    "missing file": ("{d}/nope.py:f", "error: Invalid value for '--heuristic': {d}/nope.py: "
-                     "no such file"),
+    "missing file": ("{d}/nope.py:f", "error: {d}/nope.py: no such file"),
     "no function named": ("{d}/good.py", "name the function too, as {d}/good.py:FUNCTION"),
     "syntax error": ("{d}/broken.py:f", "{d}/broken.py:2: syntax error: '(' was never closed"),
     "fails to import": ("{d}/imports.py:f", "{d}/imports.py:1: ModuleNotFoundError while "
@@ -534,7 +533,8 @@ BAD_SPECS = {
     "not callable": ("{d}/good.py:LIMIT", "{d}/good.py: 'LIMIT' is an int, not a function"),
     "wrong arity": ("{d}/good.py:pair", "{d}/good.py: pair() must take one argument, the "
                     "polygon"),
-    "unknown name": ("nonesuch", "'nonesuch' is not one of 'scaling', 'rotation', "),
+    "unknown name": ("nonesuch", "error: unknown heuristic 'nonesuch' (try 'main diagonal "
+                     "--help')"),
     "raises": ("{d}/good.py:good", "error: counterexample: good raised ZeroDivisionError: "
                "division by zero (good.py, line 5)"),
     "bad answer": ("{d}/answers.py:f", "error: counterexample: f returned ('B', 'Q'): 'Q' is not "

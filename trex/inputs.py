@@ -23,8 +23,8 @@ from geometry.errors import GeometryError
 from geometry.io import Shape, read_polygon, read_shape
 from geometry.polygon import Polygon
 from geometry.user_heuristics import DEFAULT_CALL_TIMEOUT, set_call_timeout
+from trex.exit_status import INVALID as EXIT_INVALID
 
-EXIT_INVALID = 2
 # Reading can also fail outside the GeometryError family (an unexpected OS
 # error, a value shapely rejects); those must still end as one line.
 READ_ERRORS = (GeometryError, OSError, ValueError, RecursionError, MemoryError)
