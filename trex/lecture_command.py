@@ -41,8 +41,18 @@ from typing import NoReturn
 import click
 
 from geometry.errors import GeometryError
+from geometry.user_heuristics import call_timeout, set_call_timeout
+from story.environment import CALL_TIMEOUT, call_timeout_from_environment
 from story.pseudocode import PANELS
-from trex.inputs import error_line, fail, first_line, load_or_exit, make_parent
+from trex.inputs import (
+    EXIT_INVALID,
+    call_timeout_option,
+    error_line,
+    fail,
+    first_line,
+    load_or_exit,
+    make_parent,
+)
 from trex.render_command import (
     EXIT_FAILED,
     EXIT_SIGNAL,
@@ -275,10 +285,12 @@ def _start(k: int, chapter, folder: Path, logs: Path, quality: str,
     log = logs / f"{chapter_stem(chapter)}.log"
     command = [sys.executable, "-m", "trex.lecture_command", str(scene_path(chapter)),
                chapter.scene_class or "", str(output), quality, polygon or "", panel or ""]
+    # this command's --call-timeout, for the functions of one's own the chapter runs
+    env = {**os.environ, CALL_TIMEOUT: f"{call_timeout() or 0:g}"}
     with open(log, "wb") as sink:
         # its own session: Ctrl-C at the terminal reaches only us, and we stop it
         process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=sink,
-                                   stderr=subprocess.STDOUT, start_new_session=True)
+                                   stderr=subprocess.STDOUT, start_new_session=True, env=env)
     return _Render(k, chapter, process, log, output, time.monotonic())
 
 
@@ -443,6 +455,7 @@ def build_lecture(chapters: Sequence, out_dir: Path, quality: str, jobs: int,
 @click.option("--panel", type=click.Choice(PANELS), default=None,
               help="What the panels show: the pseudocode (the scenes' default; the source "
                    "when a run has none) or the real source.")
+@call_timeout_option
 def lecture(quality: str, jobs: int, polygon: str | None, out_dir: str,
             only: str | None, panel: str | None) -> None:
     """Render every chapter of the lecture and join them: DIR/lecture.mp4, lecture.srt,
@@ -549,8 +562,17 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
     (None or empty: what ``manim`` would give it), its panel showing ``panel`` (None or
     empty: the scene's own); the exit status.
 
-    Failures are one line on stderr; SIGTERM/SIGINT stop it with nothing left behind.
+    Failures are one line on stderr; SIGTERM/SIGINT stop it with nothing left behind. A
+    function of one's own it runs has the time limit of ``TREX_CALL_TIMEOUT`` (the
+    lecture's ``--call-timeout``), else the default.
     """
+    try:
+        seconds = call_timeout_from_environment()
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_INVALID
+    if seconds is not None:
+        set_call_timeout(seconds)
     with interrupts_raise() as signals:
         try:
             try:

@@ -238,6 +238,7 @@ def triangulate_command(polygons: tuple[str, ...], algorithm: str,
               help="For divide-and-conquer: how each diagonal is found, a name or "
                    "FILE.py:FUNCTION of your own.")
 @click.option("-o", "--output", required=True, metavar="FILE.json", help="Where to write the log.")
+@call_timeout_option
 def log_command(algorithm: str, polygon: str, heuristic: str | UserHeuristic,
                 output: str) -> None:
     """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
