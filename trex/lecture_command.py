@@ -41,7 +41,7 @@ from typing import NoReturn
 import click
 
 from geometry.errors import GeometryError
-from geometry.user_heuristics import call_timeout, set_call_timeout
+from geometry.user_heuristics import UserHeuristicError, call_timeout, set_call_timeout
 from story.environment import CALL_TIMEOUT, call_timeout_from_environment
 from story.pseudocode import PANELS
 from trex.inputs import (
@@ -93,7 +93,12 @@ class Chapter:
 
 
 class ChapterFailed(Exception):
-    """A chapter could not be rendered (its one-line reason is the message)."""
+    """A chapter could not be rendered (its one-line reason is the message); ``status``: the
+    command's exit status for it (2 when a function of one's own failed in it, else 1)."""
+
+    def __init__(self, message: str, status: int = EXIT_FAILED) -> None:
+        super().__init__(message)
+        self.status = status
 
 
 def lecture_chapters() -> tuple[Chapter, ...]:
@@ -351,7 +356,8 @@ def render_chapters(chapters: Sequence, folder: Path, logs: Path, quality: str, 
                 running.remove(render)
                 label = chapter_label(render.k, len(chapters), render.chapter)
                 if code != 0:
-                    raise ChapterFailed(f"{label}: {_reason(render, code)}")
+                    raise ChapterFailed(f"{label}: {_reason(render, code)}",
+                                        EXIT_INVALID if code == EXIT_INVALID else EXIT_FAILED)
                 try:
                     video = probe(render.output)
                 except (OSError, ValueError, RuntimeError) as exc:  # av errors are OSErrors
@@ -504,7 +510,7 @@ def run_lecture(chapters: Sequence | None, out_dir: Path, quality: str = "l", jo
             raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
         except ChapterFailed as exc:
             signals.check()
-            chapter_failed(str(exc))
+            chapter_failed(str(exc), exc.status)
         except (KeyboardInterrupt, click.exceptions.Exit):
             raise
         except Exception as exc:
@@ -516,10 +522,11 @@ def run_lecture(chapters: Sequence | None, out_dir: Path, quality: str = "l", jo
     return video
 
 
-def chapter_failed(message: str) -> NoReturn:
-    """``error: MESSAGE`` and exit status 1 (a chapter, or the list of them, failed)."""
+def chapter_failed(message: str, status: int = EXIT_FAILED) -> NoReturn:
+    """``error: MESSAGE`` and exit status 1 (a chapter, or the list of them, failed), or
+    ``status``."""
     click.echo(f"error: {message}", err=True)
-    raise click.exceptions.Exit(EXIT_FAILED)
+    raise click.exceptions.Exit(status)
 
 
 # --- one chapter, in its own process ------------------------------------------------------------
@@ -581,6 +588,10 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
                 render_into(scene_input(cls, polygon or None, panel or None), Path(output),
                             "mp4", QUALITIES[quality], progress=False, signals=signals,
                             steps=settings)
+            except UserHeuristicError as exc:  # a function of one's own failed: status 2
+                signals.check()
+                print(f"error: {exc}", file=sys.stderr)
+                return EXIT_INVALID
             except Exception as exc:
                 signals.check()
                 print(f"error: render failed: {type(exc).__name__}: {error_line(exc)}",
