@@ -512,8 +512,9 @@ def verdict_line(result: Hunt) -> str:
     a function of one's own; or ``no counterexample in 2,000 polygons of up to 8 vertices in
     1.2 s`` (and how many draws of the budget made no polygon, if any did)."""
     if not result.found:
-        return (f"no counterexample in {result.tried:,} polygons of up to "
-                f"{result.max_vertices} vertices in {result.seconds:.1f} s{skipped_note(result)}")
+        polygons = "1 polygon" if result.tried == 1 else f"{result.tried:,} polygons"
+        return (f"no counterexample in {polygons} of up to {result.max_vertices} vertices in "
+                f"{result.seconds:.1f} s{skipped_note(result)}")
     assert result.polygon is not None
     if result.error is not None:
         return (f"{result.heuristic} fails on this {result.polygon.n}-vertex polygon: "
@@ -528,6 +529,8 @@ def skipped_note(result: Hunt) -> str:
 
     >>> skipped_note(Hunt("gravity", False, 922, 20, 1.0, skipped=78))
     ' (78 of the 1,000 draws made no simple polygon)'
+    >>> verdict_line(Hunt("gravity", False, 1, 8, 0.01))
+    'no counterexample in 1 polygon of up to 8 vertices in 0.0 s'
     """
     if not result.skipped:
         return ""
