@@ -149,3 +149,13 @@ def test_a_lectures_chapters_get_its_call_timeout(looping, tmp_path):
     assert len(lines) == 1 and "forever did not finish within 0.3 s" in lines[0], result.stderr
     assert result.returncode == 2  # a function of one's own that failed in the chapter
     assert not (tmp_path / "lecture").exists()
+
+
+def test_a_commands_limit_ends_with_the_command():
+    """Invoked in process (as tests and the studio do), a command's --call-timeout must not
+    stay the limit for what runs after it."""
+    before = call_timeout()
+    code, _, err = _in_process("diagonal", "lecture", "--heuristic", "gravity",
+                               "--call-timeout", "0.3")
+    assert code == 0, err
+    assert call_timeout() == before
