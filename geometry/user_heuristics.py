@@ -197,8 +197,14 @@ def _signals_noted(seen: list[int]):
 @contextlib.contextmanager
 def _users_code(what: str, seen: list[int]):
     """Run the user's code: within the time limit (:func:`_time_limit`), its prints on stderr
-    (a command's stdout may be one JSON line), real interrupts noted in ``seen``."""
-    with _time_limit(what), _signals_noted(seen), contextlib.redirect_stdout(sys.stderr):
+    (a command's stdout may be one JSON line), real interrupts noted in ``seen``.
+
+    The prints are moved in the main thread only, where the commands run: ``sys.stdout`` is
+    one for all threads, and two threads swapping it at once (a server's) could leave it
+    swapped for good."""
+    main = threading.current_thread() is threading.main_thread()
+    prints = contextlib.redirect_stdout(sys.stderr) if main else contextlib.nullcontext()
+    with _time_limit(what), _signals_noted(seen), prints:
         yield
 
 
