@@ -31,7 +31,7 @@ from dataclasses import replace
 
 from story.spec import RunSpec
 
-__all__ = ["CALL_TIMEOUT", "LOG", "POLYGON", "call_timeout_from_environment",
+__all__ = ["CALL_TIMEOUT", "LOG", "POLYGON", "call_timeout_from_environment", "child_environment",
            "environment_values", "spec_from_environment", "specs_from_environment"]
 
 #: The polygon a scene runs on (a file or a sample name).
@@ -66,6 +66,16 @@ def call_timeout_from_environment(environ: Mapping[str, str] | None = None) -> f
     if not seconds >= 0:  # negative or NaN
         raise ValueError(f"{CALL_TIMEOUT}={value!r}: not a number of seconds")
     return seconds
+
+
+def child_environment(call_timeout: float | None) -> dict[str, str]:
+    """The environment of a process a command starts: ours, with ``TREX_CALL_TIMEOUT`` set to
+    the command's limit (None: no limit, said as 0).
+
+    >>> child_environment(2.5)[CALL_TIMEOUT], child_environment(None)[CALL_TIMEOUT]
+    ('2.5', '0')
+    """
+    return {**os.environ, CALL_TIMEOUT: f"{call_timeout or 0:g}"}
 
 
 def environment_values(environ: Mapping[str, str] | None = None) -> dict[str, str]:

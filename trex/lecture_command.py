@@ -42,7 +42,7 @@ import click
 
 from geometry.errors import GeometryError
 from geometry.user_heuristics import UserHeuristicError, call_timeout, set_call_timeout
-from story.environment import CALL_TIMEOUT, call_timeout_from_environment
+from story.environment import call_timeout_from_environment, child_environment
 from story.pseudocode import PANELS
 from trex.inputs import (
     EXIT_INVALID,
@@ -291,7 +291,7 @@ def _start(k: int, chapter, folder: Path, logs: Path, quality: str,
     command = [sys.executable, "-m", "trex.lecture_command", str(scene_path(chapter)),
                chapter.scene_class or "", str(output), quality, polygon or "", panel or ""]
     # this command's --call-timeout, for the functions of one's own the chapter runs
-    env = {**os.environ, CALL_TIMEOUT: f"{call_timeout() or 0:g}"}
+    env = child_environment(call_timeout())
     with open(log, "wb") as sink:
         # its own session: Ctrl-C at the terminal reaches only us, and we stop it
         process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=sink,
