@@ -28,7 +28,7 @@ import click
 
 from story.pseudocode import PANELS
 from story.scene_kinds import plays_several
-from trex.inputs import error_line, fail, load_or_exit
+from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 from trex.output_dir import build_guarded, built_beside, check_output
 
 MARKER = ".trex-slides"
@@ -63,6 +63,7 @@ def _report(slides: list, folder: Path, began: float) -> None:
 @click.option("--lecture", "lecture_dir", metavar="LDIR", default=None,
               help="lecture only: where `trex lecture` rendered its chapters, to reuse "
                    "(default media/lecture).")
+@call_timeout_option
 def slides(scene: str, polygon: str | None, saved: str | None, quality: str,
            panel: str | None, output: str, jobs: int | None, only: str | None,
            lecture_dir: str | None) -> None:
