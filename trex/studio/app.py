@@ -7,17 +7,22 @@ user's machine, so only the page the studio served may call it.
 
 from __future__ import annotations
 
+import tempfile
 from collections.abc import Callable
+from pathlib import Path
 
 from starlette.applications import Starlette
 from starlette.requests import Request
-from starlette.responses import JSONResponse, Response
-from starlette.routing import Route
+from starlette.responses import FileResponse, JSONResponse, Response
+from starlette.routing import Mount, Route
+from starlette.staticfiles import StaticFiles
 from starlette.types import ASGIApp, Receive, Scope, Send
 
 from geometry.user_heuristics import UserHeuristic
-from story.registry import entry, heuristics
+from story.registry import entry, heuristics, triangulations
 from trex.studio import api
+
+STATIC = Path(__file__).with_name("static")
 
 
 class HostGuard:
@@ -44,8 +49,8 @@ def _forbidden(message: str) -> Response:
     return JSONResponse({"error": message}, status_code=403)
 
 
-def _json_route(work: Callable[[dict], dict]) -> Callable:
-    """A POST endpoint: parse the body, run ``work``, answer its dict or a 4xx one-liner."""
+def _json_route(work: Callable[[dict], object]) -> Callable:
+    """A POST endpoint: parse the body, run ``work``, answer its result or a 4xx one-liner."""
 
     async def endpoint(request: Request) -> Response:
         try:
@@ -59,23 +64,48 @@ def _json_route(work: Callable[[dict], dict]) -> Callable:
 
 def _rules(own: dict[str, UserHeuristic]) -> list[dict]:
     """Every rule the page asks about: the built-ins with their metaphor, then one's own."""
-    built_in = [{"name": n, "metaphor": entry(n).metaphor, "title": entry(n).title}
-                for n in heuristics()]
-    return built_in + [{"name": n, "metaphor": None, "title": n} for n in own]
+    built_in = [{"name": n, "metaphor": entry(n).metaphor, "title": entry(n).title,
+                 "correct": entry(n).correct} for n in heuristics()]
+    return built_in + [{"name": n, "metaphor": None, "title": h.title, "correct": None}
+                       for n, h in own.items()]
 
 
-def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None) -> ASGIApp:
-    """The studio app, serving ``hosts`` (``"127.0.0.1:8765"`` and the like) only."""
+def _page_routes() -> list:
+    """The page and its script and style sheet, all served from the package: no CDN."""
+
+    async def index(_request: Request) -> Response:
+        return FileResponse(STATIC / "index.html", media_type="text/html; charset=utf-8")
+
+    return [Route("/", index), Mount("/static", StaticFiles(directory=STATIC), name="static")]
+
+
+def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None,
+               work: Path | None = None, initial: dict | None = None,
+               call_timeout: float | None = None) -> ASGIApp:
+    """The studio app, serving ``hosts`` (``"127.0.0.1:8765"`` and the like) only.
+
+    ``own``: the heuristics named on the command line; ``work``: the only directory the app
+    writes to; ``initial``: the polygon the page opens with (``polygon`` and ``holes``).
+    """
     own = dict(own or {})
+    work = work if work is not None else Path(tempfile.mkdtemp(prefix="trex-studio-"))
 
     async def rules(_request: Request) -> Response:
         return JSONResponse(_rules(own))
 
+    async def setup(_request: Request) -> Response:
+        return JSONResponse({"samples": api.samples(), "algorithms": list(triangulations()),
+                             "initial": initial, "max_vertices": api.MAX_VERTICES})
+
     routes = [
+        *_page_routes(),
         Route("/api/rules", rules),
+        Route("/api/setup", setup),
         Route("/api/check", _json_route(api.check), methods=["POST"]),
         Route("/api/diagonal", _json_route(lambda b: api.diagonal(b, own)), methods=["POST"]),
+        Route("/api/claims", _json_route(lambda b: api.claims(b, own)), methods=["POST"]),
         Route("/api/triangulate", _json_route(lambda b: api.triangulate(b, own)),
               methods=["POST"]),
+        Route("/api/load", _json_route(lambda b: api.load(b, work / "uploads")), methods=["POST"]),
     ]
     return HostGuard(Starlette(routes=routes), hosts)
