@@ -1,0 +1,135 @@
+"""The studio's page, driven in Debian's headless Chromium through playwright, against a real
+``trex studio`` process: draw, drag, load, and the rules' verdicts as a user sees them.
+
+Needs /usr/bin/chromium (the Makefile's system packages) and playwright (the `test` extra);
+no browser is ever downloaded.
+"""
+
+from __future__ import annotations
+
+import signal
+from pathlib import Path
+
+import pytest
+
+from tests.test_player import CHROMIUM, CHROMIUM_ARGS
+from tests.test_studio_command import start_studio
+
+pytestmark = pytest.mark.skipif(not CHROMIUM.exists(),
+                                reason="needs Debian's chromium at /usr/bin/chromium")
+ROOT = Path(__file__).resolve().parent.parent
+SCREENSHOT = ROOT / "docs" / "studio.png"
+
+
+@pytest.fixture(scope="module")
+def studio(tmp_path_factory):
+    process, url = start_studio(tmp_path_factory.mktemp("studio"))
+    yield url
+    process.send_signal(signal.SIGINT)
+    process.communicate(timeout=30)
+
+
+@pytest.fixture(scope="module")
+def browser():
+    sync_api = pytest.importorskip("playwright.sync_api", reason="needs playwright")
+    with sync_api.sync_playwright() as pw:
+        launched = pw.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
+        yield launched
+        launched.close()
+
+
+@pytest.fixture
+def page(browser, studio):
+    requests: list[str] = []
+    page = browser.new_page(viewport={"width": 1280, "height": 900})
+    page.on("request", lambda r: requests.append(r.url))
+    page.goto(studio)
+    page.wait_for_selector("body[data-ready=yes]")
+    yield page
+    page.close()
+    assert all(url.startswith(studio) or url.startswith("blob:") for url in requests), requests
+
+
+def click_at(page, x: float, y: float) -> None:
+    """Click the canvas at its own coordinates (the SVG is 640 × 640, shown 1:1)."""
+    box = page.locator("#canvas").bounding_box()
+    page.mouse.click(box["x"] + x, box["y"] + y)
+
+
+def labels(page) -> list[str]:
+    return sorted(page.locator("#labels text").all_text_contents())
+
+
+def vertex_xy(page, ring: int, index: int) -> tuple[float, float]:
+    circle = page.locator(f'#vertices circle[data-ring="{ring}"][data-index="{index}"]')
+    box = circle.bounding_box()
+    return box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+
+
+HEXAGON = [(320, 100), (500, 200), (500, 420), (320, 520), (140, 420), (140, 200)]
+
+
+def test_draw_six_vertices_by_clicks_then_drag_one_across(page):
+    for x, y in HEXAGON:
+        click_at(page, x, y)
+    status = page.locator("#status")
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 6 vertices'")
+    page.wait_for_function("document.querySelectorAll('#labels text').length === 6")
+    assert labels(page) == list("ABCDEF")
+    assert page.locator('#rules tr[data-rule="gravity"] td').nth(2).inner_text().startswith("✓")
+    # drag the top vertex far down, below the bottom one: its edges cross two others
+    x, y = vertex_xy(page, 0, 0)
+    box = page.locator("#canvas").bounding_box()
+    page.mouse.move(x, y)
+    page.mouse.down()
+    page.mouse.move(box["x"] + 330, box["y"] + 600, steps=8)
+    page.mouse.up()
+    page.wait_for_function("document.getElementById('status').textContent.startsWith('invalid')")
+    assert "cross" in status.inner_text()
+    assert page.locator("#bad-edges line.bad-edge").count() >= 2
+    assert page.locator("#labels text").count() == 0
+    # undo puts it back; redo breaks it again
+    page.locator("#undo").click()
+    page.wait_for_function("document.getElementById('status').textContent.startsWith('valid')")
+    page.keyboard.press("Control+y")
+    page.wait_for_function("document.getElementById('status').textContent.startsWith('invalid')")
+
+
+def test_delete_and_a_hole(page):
+    for x, y in [(100, 100), (540, 100), (540, 540), (100, 540)]:
+        click_at(page, x, y)
+    page.keyboard.down("Shift")
+    click_at(page, 250, 250)  # Shift+click: a hole starts
+    page.keyboard.up("Shift")
+    click_at(page, 390, 250)
+    click_at(page, 320, 380)
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 7 vertices, 1 hole'")
+    x, y = vertex_xy(page, 1, 2)
+    page.mouse.click(x, y, button="right")  # the hole has 2 vertices left: invalid
+    page.wait_for_function("document.getElementById('status').textContent.startsWith('invalid')")
+    page.keyboard.press("Backspace")  # the selected (last) vertex of the hole
+    page.keyboard.press("Backspace")
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 4 vertices'")
+    assert page.locator("#vertices circle").count() == 4
+
+
+def test_counterexample_scaling_fails_at_edge_ea_and_gravity_holds(page):
+    page.select_option("#sample", "counterexample")
+    page.locator("#load-sample").click()
+    page.wait_for_function(
+        "document.querySelector('#rules tr[data-rule=\"scaling\"] td:nth-child(3)')"
+        ".textContent.includes('✗')")
+    cells = page.locator('#rules tr[data-rule="scaling"] td')
+    assert cells.nth(1).inner_text() == "BD"
+    assert "crosses edge E–A" in cells.nth(2).inner_text()
+    assert page.locator('#rules tr[data-rule="gravity"] td').nth(2).inner_text().startswith("✓")
+    assert labels(page) == list("ABCDE")
+    assert page.locator("#frame polygon.triangle-t").count() == 1
+    assert page.locator("#frame circle.candidate").count() == 2  # D and E lie in T
+    assert page.locator('#claims line.claim.outer.selected[data-rule="scaling"]').count() == 1
+    page.locator("#triangulate").click()
+    page.wait_for_function("document.getElementById('tri-result').textContent.includes('valid')")
+    assert page.locator("#tri-result").inner_text().startswith("3 triangles (n + 2h − 2 = 5 + 0 − 2 = 3)")
+    assert page.locator("#triangles polygon.tri").count() == 3
+    SCREENSHOT.parent.mkdir(exist_ok=True)
+    page.screenshot(path=str(SCREENSHOT))
