@@ -85,6 +85,11 @@ def rings_of(body: dict, *, holes: bool = True) -> list[list[list[float]]]:
     return rings
 
 
+def check_shape(rings: list) -> Shape:
+    """The valid shape of the rings, or a 422 saying why not."""
+    return _shape(rings)
+
+
 def _shape(rings: list) -> Shape:
     try:
         return shape_from_rings(rings)

@@ -7,11 +7,13 @@ user's machine, so only the page the studio served may call it.
 
 from __future__ import annotations
 
+import contextlib
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
 
 from starlette.applications import Starlette
+from starlette.concurrency import run_in_threadpool
 from starlette.requests import Request
 from starlette.responses import FileResponse, JSONResponse, Response
 from starlette.routing import Mount, Route
@@ -20,7 +22,8 @@ from starlette.types import ASGIApp, Receive, Scope, Send
 
 from geometry.user_heuristics import UserHeuristic
 from story.registry import entry, heuristics, triangulations
-from trex.studio import api
+from trex.studio import api, job_routes
+from trex.studio.jobs import Jobs
 
 STATIC = Path(__file__).with_name("static")
 
@@ -79,16 +82,41 @@ def _page_routes() -> list:
     return [Route("/", index), Mount("/static", StaticFiles(directory=STATIC), name="static")]
 
 
+def _job_routes(jobs: Jobs, own: dict[str, UserHeuristic], timeout: float | None) -> list:
+    """Start a hunt or a render, follow or cancel a job, fetch what it made (``/media``)."""
+
+    async def status(request: Request) -> Response:
+        job = jobs.get(request.path_params["job"])
+        if job is None:
+            return JSONResponse({"error": "no such job"}, status_code=404)
+        if request.method == "DELETE":
+            await run_in_threadpool(jobs.cancel, job.id)
+        return JSONResponse(job.status())
+
+    return [
+        Route("/api/hunt", _json_route(lambda b: job_routes.hunt(b, jobs, own, timeout)),
+              methods=["POST"]),
+        Route("/api/render", _json_route(lambda b: job_routes.render(b, jobs, own, timeout)),
+              methods=["POST"]),
+        Route("/api/jobs/{job}", status, methods=["GET", "DELETE"]),
+        Mount("/media", StaticFiles(directory=jobs.root), name="media"),
+    ]
+
+
 def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None,
                work: Path | None = None, initial: dict | None = None,
                call_timeout: float | None = None) -> ASGIApp:
     """The studio app, serving ``hosts`` (``"127.0.0.1:8765"`` and the like) only.
 
     ``own``: the heuristics named on the command line; ``work``: the only directory the app
-    writes to; ``initial``: the polygon the page opens with (``polygon`` and ``holes``).
+    writes to; ``initial``: the polygon the page opens with (``polygon`` and ``holes``);
+    ``call_timeout``: the limit for one's own heuristics in jobs. When the app shuts down,
+    its jobs are ended.
     """
     own = dict(own or {})
     work = work if work is not None else Path(tempfile.mkdtemp(prefix="trex-studio-"))
+    jobs = Jobs(work)
+    jobs.root.mkdir(parents=True, exist_ok=True)
 
     async def rules(_request: Request) -> Response:
         return JSONResponse(_rules(own))
@@ -96,6 +124,11 @@ def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None,
     async def setup(_request: Request) -> Response:
         return JSONResponse({"samples": api.samples(), "algorithms": list(triangulations()),
                              "initial": initial, "max_vertices": api.MAX_VERTICES})
+
+    @contextlib.asynccontextmanager
+    async def lifespan(_app: Starlette):
+        yield
+        await run_in_threadpool(jobs.close)
 
     routes = [
         *_page_routes(),
@@ -107,5 +140,8 @@ def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None,
         Route("/api/triangulate", _json_route(lambda b: api.triangulate(b, own)),
               methods=["POST"]),
         Route("/api/load", _json_route(lambda b: api.load(b, work / "uploads")), methods=["POST"]),
+        *_job_routes(jobs, own, call_timeout),
     ]
-    return HostGuard(Starlette(routes=routes), hosts)
+    app = Starlette(routes=routes, lifespan=lifespan)
+    app.state.jobs = jobs
+    return HostGuard(app, hosts)

@@ -25,6 +25,7 @@ from geometry.user_heuristics import (
 from trex.inputs import call_timeout_option, fail, load_or_exit
 from trex.render_command import EXIT_SIGNAL
 from trex.studio.api import rings_of_shape
+from trex.studio.children import COMMANDS as JOB_COMMANDS
 
 
 def _own_heuristics(specs: tuple[str, ...]) -> dict[str, UserHeuristic]:
@@ -106,4 +107,4 @@ def studio(host: str, port: int, no_browser: bool, heuristics: tuple[str, ...],
         raise click.exceptions.Exit(EXIT_SIGNAL + stopped_by)
 
 
-COMMANDS = (studio,)
+COMMANDS = (studio, *JOB_COMMANDS)
