@@ -85,7 +85,8 @@ def test_claims_of_every_rule_and_the_triangulation_in_input_order(client):
     rows = client.post("/api/claims", json={"polygon": COUNTER}).json()
     verdict = {r["name"]: r["inner"] for r in rows}
     assert verdict["scaling"] is False and verdict["gravity"] is True
-    assert next(r for r in rows if r["name"] == "scaling")["why"].startswith("B–D crosses edge E–A")
+    scaling = next(r for r in rows if r["name"] == "scaling")
+    assert scaling["why"].startswith("B–D crosses edge E–A") and scaling["crossed"] == [3, 4]
     ring = [*SQUARE, SQUARE[0]]
     t = client.post("/api/triangulate", json={"polygon": ring, "algorithm": "ear-clipping"}).json()
     assert t["vertices"] == ring and all(4 not in tri for tri in t["triangles"])

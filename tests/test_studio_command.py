@@ -8,6 +8,7 @@ import signal
 import socket
 import subprocess
 import sys
+import time
 import urllib.request
 from pathlib import Path
 
@@ -84,3 +85,28 @@ def test_bad_arguments_are_one_line_before_serving(args, message):
     result = run_refused("--port", "0", *args)
     assert result.returncode == 2 and result.stdout == ""
     assert result.stderr.startswith(message) and result.stderr.count("\n") == 1
+
+
+def get(url: str) -> dict:
+    with urllib.request.urlopen(url, timeout=10) as answer:
+        return json.loads(answer.read())
+
+
+def test_stopping_ends_a_running_render_and_leaves_nothing(tmp_path):
+    process, url = start_studio(tmp_path)
+    try:
+        polygon = [[1, 4.5], [9, 2], [3, 6.5], [4.6, 4.1], [1.6, 8]]
+        job = post(url + "api/render", {"polygon": polygon, "scene": "scaling"})["job"]
+        deadline = time.monotonic() + 120
+        while get(f"{url}api/jobs/{job}")["state"] != "running":
+            assert time.monotonic() < deadline
+            time.sleep(0.2)
+        child = next(tmp_path.glob("trex-studio-*/jobs/*"))
+        assert (child / "polygon.json").is_file()
+    finally:
+        process.send_signal(signal.SIGTERM)
+        process.communicate(timeout=30)
+    assert process.returncode == 143
+    assert list(tmp_path.iterdir()) == []
+    left = subprocess.run(["pgrep", "-f", f"studio-video.*{tmp_path}"], capture_output=True)
+    assert left.stdout == b""  # the render's process ended with the studio

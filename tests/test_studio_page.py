@@ -7,6 +7,8 @@ no browser is ever downloaded.
 
 from __future__ import annotations
 
+import os
+import shutil
 import signal
 from pathlib import Path
 
@@ -18,7 +20,9 @@ from tests.test_studio_command import start_studio
 pytestmark = pytest.mark.skipif(not CHROMIUM.exists(),
                                 reason="needs Debian's chromium at /usr/bin/chromium")
 ROOT = Path(__file__).resolve().parent.parent
-SCREENSHOT = ROOT / "docs" / "studio.png"
+# README's picture: `TREX_STUDIO_SCREENSHOT=docs/studio.png pytest tests/test_studio_page.py`
+# writes it from this test's browser (otherwise the picture goes to a temporary folder only).
+SCREENSHOT_ENV = "TREX_STUDIO_SCREENSHOT"
 
 
 @pytest.fixture(scope="module")
@@ -113,7 +117,7 @@ def test_delete_and_a_hole(page):
     assert page.locator("#vertices circle").count() == 4
 
 
-def test_counterexample_scaling_fails_at_edge_ea_and_gravity_holds(page):
+def test_counterexample_scaling_fails_at_edge_ea_and_gravity_holds(page, tmp_path):
     page.select_option("#sample", "counterexample")
     page.locator("#load-sample").click()
     page.wait_for_function(
@@ -127,9 +131,38 @@ def test_counterexample_scaling_fails_at_edge_ea_and_gravity_holds(page):
     assert page.locator("#frame polygon.triangle-t").count() == 1
     assert page.locator("#frame circle.candidate").count() == 2  # D and E lie in T
     assert page.locator('#claims line.claim.outer.selected[data-rule="scaling"]').count() == 1
+    assert page.locator('#claims line.crossed[data-edge="3-4"]').count() == 1  # E–A drawn
+    shot = tmp_path / "studio.png"
+    page.screenshot(path=str(shot))
+    assert shot.stat().st_size > 10_000
+    if os.environ.get(SCREENSHOT_ENV):
+        shutil.copyfile(shot, ROOT / os.environ[SCREENSHOT_ENV])
     page.locator("#triangulate").click()
     page.wait_for_function("document.getElementById('tri-result').textContent.includes('valid')")
     assert page.locator("#tri-result").inner_text().startswith("3 triangles (n + 2h − 2 = 5 + 0 − 2 = 3)")
     assert page.locator("#triangles polygon.tri").count() == 3
-    SCREENSHOT.parent.mkdir(exist_ok=True)
-    page.screenshot(path=str(SCREENSHOT))
+
+
+def test_hunt_on_rotation_loads_its_counterexample(page):
+    page.select_option("#hunt-rule", "rotation")
+    page.locator("#hunt").click()
+    page.wait_for_function("document.getElementById('hunt-result').textContent.startsWith('found')",
+                           timeout=120_000)
+    page.wait_for_function(
+        "document.querySelector('#rules tr[data-rule=\"rotation\"] td:nth-child(3)')"
+        ".textContent.includes('✗')")
+    assert page.locator("#vertices circle").count() >= 4
+    assert page.locator("#status").inner_text().startswith("valid")
+
+
+def test_render_a_video_and_see_it_play(page):
+    page.select_option("#sample", "counterexample")
+    page.locator("#load-sample").click()
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 5 vertices'")
+    page.select_option("#scene", "scaling")
+    page.locator("#video").click()
+    page.wait_for_selector("#cancel", state="visible")
+    page.wait_for_function("document.getElementById('render-progress').value > 0", timeout=240_000)
+    page.wait_for_function("!document.getElementById('player').hidden", timeout=300_000)
+    page.wait_for_function("document.getElementById('player').currentTime > 0.5", timeout=60_000)
+    assert page.locator("#render-result").inner_text() == ""

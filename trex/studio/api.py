@@ -15,16 +15,17 @@ import time
 from pathlib import Path
 from typing import Any
 
+from geometry.check import is_inner_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.hole_samples import HOLE_SAMPLES
 from geometry.io import Shape, polygon_to_json_points, read_rings, shape_from_rings
 from geometry.samples import is_sample, sample_from_spec, sample_names
-from geometry.user_heuristics import UserHeuristic
+from geometry.user_heuristics import UserHeuristic, run_heuristic
 from geometry.validate import kept_indices
 from story.registry import heuristics, triangulations
 from trex.inputs import error_line
-from trex.run_commands import diagonal_record, triangulation_record
+from trex.run_commands import triangulation_record
 from trex.studio.edges import offending_edges
 
 READ_SUFFIXES = (".json", ".geojson", ".wkt", ".dat")
@@ -160,12 +161,19 @@ def _heuristic(name: object, own: dict[str, UserHeuristic]) -> str | UserHeurist
 
 
 def _claim(shape: Shape, raw: list[int], heuristic: str | UserHeuristic, name: str) -> dict:
+    """The claim and its exact verdict as ``trex diagonal --json`` gives them, plus what the
+    page draws: the edge the claim crosses (``crossed``) or the vertex it passes through
+    (``through``), request indices."""
     try:
-        record = diagonal_record("studio", shape, heuristic)
+        claim = run_heuristic(shape, heuristic)
+        verdict = is_inner_diagonal(shape, *claim.pair)
     except (ValueError, GeometryError) as exc:
         raise BadRequest(f"{name}: {error_line(exc)}", 422) from None
-    return {"diagonal": [raw[i] for i in record["diagonal"]], "inner": record["inner"],
-            "why": record["why"], "labels": record["labels"]}
+    to_raw = [raw[s] for s in shape.source]
+    return {"diagonal": [to_raw[i] for i in claim.pair], "inner": verdict.ok,
+            "why": verdict.why, "labels": [claim.u.label, claim.v.label],
+            "crossed": [to_raw[i] for i in verdict.edge] if verdict.edge else None,
+            "through": to_raw[verdict.vertex] if verdict.vertex is not None else None}
 
 
 def diagonal(body: dict, own: dict[str, UserHeuristic]) -> dict:
@@ -187,7 +195,7 @@ def claims(body: dict, own: dict[str, UserHeuristic]) -> list[dict]:
                         **_claim(shape, raw, _heuristic(name, own), name)})
         except BadRequest as exc:
             out.append({"name": name, "error": str(exc), "diagonal": None, "inner": None,
-                        "why": None, "labels": None})
+                        "why": None, "labels": None, "crossed": None, "through": None})
     return out
 
 

@@ -226,6 +226,11 @@ function drawClaims() {
     const classes = ["claim", row.inner ? "inner" : "outer", row.name === state.chosen ? "selected" : ""];
     svg("line", {x1: a[0], y1: a[1], x2: b[0], y2: b[1], class: classes.join(" ").trim(),
                  "data-rule": row.name}, g);
+    if (row.name === state.chosen && row.crossed) {  // the edge the wrong claim crosses
+      const [c, d] = row.crossed.map((k) => toScreen(pointAt(k)));
+      svg("line", {x1: c[0], y1: c[1], x2: d[0], y2: d[1], class: "crossed",
+                   "data-edge": row.crossed.join("-")}, g);
+    }
   }
 }
 
