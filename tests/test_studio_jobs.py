@@ -104,3 +104,40 @@ def test_renders_queue_one_at_a_time_and_cancel_leaves_nothing(client, tmp_path)
     assert client.delete(f"/api/jobs/{second}").json()["state"] == "cancelled"
     assert client.delete(f"/api/jobs/{first}").json()["state"] == "cancelled"
     assert sorted((tmp_path / "work" / "jobs").iterdir()) == []
+
+
+def test_ones_own_heuristic_answers_live_from_a_worker_and_cannot_stop_the_server(tmp_path):
+    source = tmp_path / "live.py"
+    source.write_text(textwrap.dedent("""
+        import os
+
+        def chatty(polygon):
+            print("hello from the user's code")
+            return "B", "D"
+
+        def forever(polygon):
+            while True:
+                pass
+
+        def leaves(polygon):
+            raise SystemExit(3)
+
+        def dies(polygon):
+            os._exit(7)
+    """))
+    own = {f"{source}:{n}": load_user_heuristic(f"{source}:{n}")
+           for n in ("chatty", "forever", "leaves", "dies")}
+    with TestClient(create_app(hosts={HOST}, own=own, work=tmp_path / "w", call_timeout=1),
+                    base_url=f"http://{HOST}") as client:
+        rows = {r["name"].rsplit(":", 1)[-1]: r
+                for r in client.post("/api/claims", json={"polygon": COUNTER}).json()}
+        assert rows["chatty"]["labels"] == ["B", "D"] and rows["chatty"]["inner"] is False
+        assert "did not finish within 1 s" in rows["forever"]["error"]
+        assert "SystemExit" in rows["leaves"]["error"]
+        assert "ended" in rows["dies"]["error"] and rows["scaling"]["inner"] is False
+        diagonal = client.post("/api/diagonal", json={"polygon": COUNTER,
+                                                      "heuristic": f"{source}:chatty"})
+        assert diagonal.status_code == 200 and diagonal.json()["diagonal"] == [0, 2]
+        dead = client.post("/api/diagonal", json={"polygon": COUNTER, "heuristic": f"{source}:dies"})
+        assert dead.status_code == 422 and "\n" not in dead.json()["error"]
+        assert client.post("/api/check", json={"polygon": SQUARE}).json()["valid"] is True

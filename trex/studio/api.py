@@ -12,6 +12,7 @@ import json
 import math
 import secrets
 import time
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
@@ -150,14 +151,17 @@ def rings_of_shape(shape: Shape) -> dict:
     return {"polygon": rings[0], "holes": rings[1:]}
 
 
+def check_heuristic(name: object, own: Iterable[str]) -> None:
+    """Refuse a name that is neither a built-in nor one named on the command line."""
+    own = list(own)
+    if not isinstance(name, str) or (name not in heuristics() and name not in own):
+        raise BadRequest(f"unknown heuristic {name!r} (known: {', '.join([*heuristics(), *own])})")
+
+
 def _heuristic(name: object, own: dict[str, UserHeuristic]) -> str | UserHeuristic:
     """A built-in's name or one named on the command line; never code sent by the page."""
-    if isinstance(name, str) and name in heuristics():
-        return name
-    if isinstance(name, str) and name in own:
-        return own[name]
-    known = ", ".join([*heuristics(), *own])
-    raise BadRequest(f"unknown heuristic {name!r} (known: {known})")
+    check_heuristic(name, own)
+    return own.get(name, name)
 
 
 def _claim(shape: Shape, raw: list[int], heuristic: str | UserHeuristic, name: str) -> dict:
@@ -183,19 +187,25 @@ def diagonal(body: dict, own: dict[str, UserHeuristic]) -> dict:
     return _claim(_shape(rings), _raw_index(rings), heuristic, str(body.get("heuristic")))
 
 
-def claims(body: dict, own: dict[str, UserHeuristic]) -> list[dict]:
-    """Every rule's claim and verdict (the built-ins, then one's own), for the page's table;
-    a rule that fails on this polygon (one's own raising, say) has its ``error``."""
+def failed_claim(name: str, error: str) -> dict:
+    """A row of the table for a rule that gave no claim."""
+    return {"name": name, "error": error, "diagonal": None, "inner": None, "why": None,
+            "labels": None, "crossed": None, "through": None}
+
+
+def claims(body: dict, own: dict[str, UserHeuristic],
+           names: Iterable[str] | None = None) -> list[dict]:
+    """Every rule's claim and verdict (``names``; default the built-ins, then one's own), for
+    the page's table; a rule that fails on this polygon has its ``error``."""
     rings = rings_of(body, holes=False)
     shape, raw = _shape(rings), _raw_index(rings)
     out = []
-    for name in [*heuristics(), *own]:
+    for name in [*heuristics(), *own] if names is None else names:
         try:
             out.append({"name": name, "error": None,
                         **_claim(shape, raw, _heuristic(name, own), name)})
         except BadRequest as exc:
-            out.append({"name": name, "error": str(exc), "diagonal": None, "inner": None,
-                        "why": None, "labels": None, "crossed": None, "through": None})
+            out.append(failed_claim(name, str(exc)))
     return out
 
 

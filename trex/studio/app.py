@@ -24,6 +24,7 @@ from geometry.user_heuristics import UserHeuristic
 from story.registry import entry, heuristics, triangulations
 from trex.studio import api, job_routes
 from trex.studio.jobs import Jobs
+from trex.studio.own import OwnHeuristics
 
 STATIC = Path(__file__).with_name("static")
 
@@ -58,7 +59,9 @@ def _json_route(work: Callable[[dict], object]) -> Callable:
     async def endpoint(request: Request) -> Response:
         try:
             body = api.parse_body(await request.body())
-            return JSONResponse(work(body))
+            # in a thread: the loop keeps answering while a big polygon is checked, or one's
+            # own heuristic's worker is waited for
+            return JSONResponse(await run_in_threadpool(work, body))
         except api.BadRequest as exc:
             return JSONResponse({"error": str(exc)}, status_code=exc.status)
 
@@ -82,7 +85,38 @@ def _page_routes() -> list:
     return [Route("/", index), Mount("/static", StaticFiles(directory=STATIC), name="static")]
 
 
-def _job_routes(jobs: Jobs, own: dict[str, UserHeuristic], timeout: float | None) -> list:
+def _live_routes(own: OwnHeuristics) -> list:
+    """The live answers: built-ins here, one's own by their worker process."""
+
+    def diagonal(body: dict) -> dict:
+        api.check_heuristic(body.get("heuristic"), own)
+        if body["heuristic"] in own:
+            return own.call("diagonal", body)
+        return api.diagonal(body, {})
+
+    def claims(body: dict) -> list[dict]:
+        rows = api.claims(body, {}, names=heuristics())
+        for name in own:  # one call each: one that ends its worker takes only its own row
+            try:
+                rows += own.call("claims", {**body, "rules": [name]})
+            except api.BadRequest as exc:
+                rows.append(api.failed_claim(name, str(exc)))
+        return rows
+
+    def triangulate(body: dict) -> dict:
+        if body.get("heuristic") in own:
+            return own.call("triangulate", body)
+        return api.triangulate(body, {})
+
+    return [
+        Route("/api/check", _json_route(api.check), methods=["POST"]),
+        Route("/api/diagonal", _json_route(diagonal), methods=["POST"]),
+        Route("/api/claims", _json_route(claims), methods=["POST"]),
+        Route("/api/triangulate", _json_route(triangulate), methods=["POST"]),
+    ]
+
+
+def _job_routes(jobs: Jobs, own: OwnHeuristics, timeout: float | None) -> list:
     """Start a hunt or a render, follow or cancel a job, fetch what it made (``/media``)."""
 
     async def status(request: Request) -> Response:
@@ -108,15 +142,16 @@ def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None,
                call_timeout: float | None = None) -> ASGIApp:
     """The studio app, serving ``hosts`` (``"127.0.0.1:8765"`` and the like) only.
 
-    ``own``: the heuristics named on the command line; ``work``: the only directory the app
-    writes to; ``initial``: the polygon the page opens with (``polygon`` and ``holes``);
-    ``call_timeout``: the limit for one's own heuristics in jobs. When the app shuts down,
-    its jobs are ended.
+    ``own``: the heuristics named on the command line (loaded: their titles; they are called
+    only by worker processes); ``work``: the only directory the app writes to; ``initial``:
+    the polygon the page opens with (``polygon`` and ``holes``); ``call_timeout``: the limit
+    for one's own heuristics. When the app shuts down, its jobs and worker are ended.
     """
     own = dict(own or {})
     work = work if work is not None else Path(tempfile.mkdtemp(prefix="trex-studio-"))
     jobs = Jobs(work)
     jobs.root.mkdir(parents=True, exist_ok=True)
+    worker = OwnHeuristics(list(own), call_timeout)
 
     async def rules(_request: Request) -> Response:
         return JSONResponse(_rules(own))
@@ -129,18 +164,15 @@ def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None,
     async def lifespan(_app: Starlette):
         yield
         await run_in_threadpool(jobs.close)
+        await run_in_threadpool(worker.close)
 
     routes = [
         *_page_routes(),
         Route("/api/rules", rules),
         Route("/api/setup", setup),
-        Route("/api/check", _json_route(api.check), methods=["POST"]),
-        Route("/api/diagonal", _json_route(lambda b: api.diagonal(b, own)), methods=["POST"]),
-        Route("/api/claims", _json_route(lambda b: api.claims(b, own)), methods=["POST"]),
-        Route("/api/triangulate", _json_route(lambda b: api.triangulate(b, own)),
-              methods=["POST"]),
+        *_live_routes(worker),
         Route("/api/load", _json_route(lambda b: api.load(b, work / "uploads")), methods=["POST"]),
-        *_job_routes(jobs, own, call_timeout),
+        *_job_routes(jobs, worker, call_timeout),
     ]
     app = Starlette(routes=routes, lifespan=lifespan)
     app.state.jobs = jobs

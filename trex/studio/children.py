@@ -10,6 +10,7 @@ A heuristic of one's own runs here, never in the server, under ``--call-timeout`
 from __future__ import annotations
 
 import json
+import os
 import sys
 import tempfile
 from pathlib import Path
@@ -167,4 +168,52 @@ def studio_slides(ctx: click.Context, rule: str, polygon: str, output: str) -> N
                output=output, jobs=None, only=None, lecture_dir=None)
 
 
-COMMANDS = (studio_hunt, studio_video, studio_slides)
+def _own_claims(body: dict, own: dict[str, UserHeuristic]) -> list[dict]:
+    """The table's rows of one's own heuristics (``body["rules"]``, default all), each one's
+    failure its own row's."""
+    from trex.studio import api
+
+    rows = []
+    for name in [n for n in body.get("rules", own) if n in own]:
+        try:
+            rows += api.claims(body, own, names=[name])
+        except api.BadRequest:
+            raise  # the polygon itself was refused: the same for every rule
+        except BaseException as exc:  # SystemExit, KeyboardInterrupt: the user's
+            rows.append(api.failed_claim(name, f"{name}: {type(exc).__name__}: {error_line(exc)}"))
+    return rows
+
+
+def _answer(request: dict, own: dict[str, UserHeuristic]) -> dict:
+    from trex.studio import api
+
+    routes = {"diagonal": api.diagonal, "triangulate": api.triangulate, "claims": _own_claims}
+    try:
+        return {"ok": routes[request["route"]](request["body"], own)}
+    except api.BadRequest as exc:
+        return {"error": str(exc), "status": exc.status}
+    except BaseException as exc:  # whatever the user's code raised
+        return {"error": f"{type(exc).__name__}: {error_line(exc)}", "status": 422}
+
+
+@click.command(name="studio-own", hidden=True)
+@click.argument("specs", nargs=-1, metavar="FILE.py:FUNCTION...")
+@call_timeout_option
+def studio_own(specs: tuple[str, ...]) -> None:
+    """Answer the studio's live requests about one's own heuristics: a JSON line in, a JSON
+    line out (:mod:`trex.studio.own`)."""
+    from geometry.user_heuristics import load_user_heuristic
+
+    answers = os.fdopen(os.dup(1), "w", encoding="utf-8")
+    os.dup2(2, 1)  # whatever the user's code prints goes to stderr, never into the answers
+    sys.stdout = sys.stderr
+    try:
+        own = {spec: load_user_heuristic(spec) for spec in specs}
+    except UserHeuristicError as exc:
+        fail(str(exc))
+    for line in sys.stdin:
+        answers.write(json.dumps(_answer(json.loads(line), own), ensure_ascii=False) + "\n")
+        answers.flush()
+
+
+COMMANDS = (studio_hunt, studio_video, studio_slides, studio_own)
