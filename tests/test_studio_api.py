@@ -35,6 +35,11 @@ def test_diagonal_and_triangulate(client):
 @pytest.mark.parametrize("route, body, status", [
     ("/api/check", b"{nope", 400),
     ("/api/check", b'{"polygon": [[0, NaN], [1, 0], [0, 1]]}', 400),
+    ("/api/check", b'{"polygon": [[0, 0], [1' + b"0" * 400 + b', 0], [0, 1]]}', 400),
+    ("/api/check", b'[[0, 0], [1, 0], [0, 1]]', 400),
+    ("/api/check", b'{"polygon": [[0, 0], [1, 0], [0, 1]], "holes": 5}', 400),
+    ("/api/load", b'{"sample": "random-star:1000000"}', 413),
+    ("/api/triangulate", b'{"polygon": [[0, 0], [4, 0], [4, 4]], "algorithm": ["x"]}', 400),
     ("/api/diagonal", b'{"polygon": [[0, 0], [4, 0], [4, 4]], "heuristic": "nope"}', 400),
     ("/api/diagonal", b'{"polygon": [[0, 0], [4, 4], [4, 0], [0, 4]], "heuristic": "gravity"}', 422),
     ("/api/triangulate", b'{"polygon": [[0, 0], [1, 1], [2, 2]]}', 422),

@@ -110,3 +110,31 @@ def test_stopping_ends_a_running_render_and_leaves_nothing(tmp_path):
     assert list(tmp_path.iterdir()) == []
     left = subprocess.run(["pgrep", "-f", f"studio-video.*{tmp_path}"], capture_output=True)
     assert left.stdout == b""  # the render's process ended with the studio
+
+
+@pytest.mark.parametrize("flags", [[], ["--no-browser"]])
+def test_opens_the_page_in_the_browser_unless_told_not_to(tmp_path, flags):
+    opened = tmp_path / "opened.txt"
+    browser = tmp_path / "browser"  # $BROWSER, which webbrowser runs with the URL
+    browser.write_text(f"#!/bin/sh\necho \"$1\" > {opened}\n")
+    browser.chmod(0o755)
+    env = {**os.environ, "PYTHONPATH": str(ROOT), "BROWSER": str(browser),
+           "TMPDIR": str(tmp_path)}
+    process = subprocess.Popen([sys.executable, "-m", "trex", "studio", "--port", "0", *flags],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               env=env, cwd=ROOT)
+    try:
+        url = process.stdout.readline().split(" ", 1)[1].strip()
+        if flags:
+            post(url + "api/check", {"polygon": [[0, 0], [4, 0], [0, 4]]})
+            time.sleep(1)
+            assert not opened.exists()
+            return
+        deadline = time.monotonic() + 30
+        while not opened.exists() or not opened.read_text():
+            assert time.monotonic() < deadline, "the browser was not opened"
+            time.sleep(0.1)
+        assert opened.read_text().strip() == url
+    finally:
+        process.send_signal(signal.SIGINT)
+        process.communicate(timeout=30)

@@ -21,7 +21,7 @@ from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.hole_samples import HOLE_SAMPLES
 from geometry.io import Shape, polygon_to_json_points, read_rings, shape_from_rings
-from geometry.samples import is_sample, sample_from_spec, sample_names
+from geometry.samples import is_sample, parse_spec, sample_from_spec, sample_names
 from geometry.user_heuristics import UserHeuristic, run_heuristic
 from geometry.validate import kept_indices
 from story.registry import heuristics, triangulations
@@ -59,13 +59,23 @@ def parse_body(raw: bytes) -> dict:
     return body
 
 
+def _finite(c: object) -> bool:
+    """A JSON number that is a finite float (an integer too big for one is not)."""
+    if isinstance(c, bool) or not isinstance(c, int | float):
+        return False
+    try:
+        return math.isfinite(float(c))
+    except OverflowError:
+        return False
+
+
 def _ring(value: object, what: str) -> list[list[float]]:
     if not isinstance(value, list):
         raise BadRequest(f"{what} must be a list of [x, y] points")
+    if len(value) > MAX_VERTICES:  # before looking at each point
+        raise BadRequest(f"{len(value)} vertices: live calls take at most {MAX_VERTICES}", 413)
     for k, point in enumerate(value):
-        if (not isinstance(point, list) or len(point) != 2
-                or not all(isinstance(c, int | float) and not isinstance(c, bool)
-                           and math.isfinite(c) for c in point)):
+        if not isinstance(point, list) or len(point) != 2 or not all(map(_finite, point)):
             raise BadRequest(f"{what}: point {k} is not two finite numbers")
     return value
 
@@ -269,6 +279,9 @@ def _sample(spec: str) -> dict:
     if not is_sample(spec):
         raise BadRequest(f"unknown sample {spec!r}")
     try:
+        _, n, _ = parse_spec(spec)
+        if n is not None and n > MAX_VERTICES:  # refused before it is made
+            raise BadRequest(f"{spec}: {n} vertices: live calls take at most {MAX_VERTICES}", 413)
         return _request_of([sample_from_spec(spec)], spec)
     except GeometryError as exc:
         raise BadRequest(f"{spec}: {error_line(exc)}") from None

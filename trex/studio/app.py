@@ -22,6 +22,7 @@ from starlette.types import ASGIApp, Receive, Scope, Send
 
 from geometry.user_heuristics import UserHeuristic
 from story.registry import entry, heuristics, triangulations
+from trex.inputs import first_line
 from trex.studio import api, job_routes
 from trex.studio.jobs import Jobs
 from trex.studio.own import OwnHeuristics
@@ -64,6 +65,9 @@ def _json_route(work: Callable[[dict], object]) -> Callable:
             return JSONResponse(await run_in_threadpool(work, body))
         except api.BadRequest as exc:
             return JSONResponse({"error": str(exc)}, status_code=exc.status)
+        except Exception as exc:  # a bug of ours: still one line, never a traceback
+            return JSONResponse({"error": f"internal error: {type(exc).__name__}: "
+                                          f"{first_line(str(exc))}"}, status_code=500)
 
     return endpoint
 
