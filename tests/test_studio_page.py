@@ -7,6 +7,7 @@ no browser is ever downloaded.
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import signal
@@ -166,3 +167,38 @@ def test_render_a_video_and_see_it_play(page):
     page.wait_for_function("!document.getElementById('player').hidden", timeout=300_000)
     page.wait_for_function("document.getElementById('player').currentTime > 0.5", timeout=60_000)
     assert page.locator("#render-result").inner_text() == ""
+
+
+def test_open_a_file_save_it_as_json_and_snap_to_the_grid(page, tmp_path):
+    wkt = tmp_path / "square.wkt"
+    wkt.write_text("POLYGON ((0 0, 6 0, 6 6, 0 6, 0 0), (2 2, 2 4, 4 4, 4 2, 2 2))\n")
+    page.locator("#file").set_input_files(str(wkt))
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 8 vertices, 1 hole'")
+    assert "without holes" in page.locator('#rules tr[data-rule="scaling"] td').nth(2).inner_text()
+    with page.expect_download() as download:
+        page.locator("#save").click()
+    saved = json.loads(Path(download.value.path()).read_text())
+    assert saved == [[[0, 0], [6, 0], [6, 6], [0, 6], [0, 0]],
+                     [[2, 2], [2, 4], [4, 4], [4, 2], [2, 2]]]
+    page.locator("#clear").click()
+    page.locator("#snap").check()
+    for x, y in [(103, 98), (541, 104), (318, 523)]:
+        click_at(page, x, y)
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 3 vertices'")
+    with page.expect_download() as download:
+        page.locator("#save").click()
+    points = json.loads(Path(download.value.path()).read_text())
+    step = page.evaluate("gridStep()")
+    assert all(abs(c / step - round(c / step)) < 1e-9 for p in points for c in p)
+
+
+def test_cancel_a_video(page):
+    page.select_option("#sample", "counterexample")
+    page.locator("#load-sample").click()
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 5 vertices'")
+    page.locator("#video").click()
+    page.wait_for_selector("#cancel", state="visible")
+    page.locator("#cancel").click()
+    page.wait_for_function("document.getElementById('render-result').textContent === 'cancelled'",
+                           timeout=60_000)
+    assert page.locator("#player").is_hidden()
