@@ -106,3 +106,14 @@ def test_load_a_sample_or_a_files_text(client):
     for body in ({"sample": "/etc/passwd"}, {"file": {"name": "x.txt", "text": ""}}):
         r = client.post("/api/load", json=body)
         assert r.status_code == 400 and "\n" not in r.json()["error"]
+
+
+def test_on_every_interface_any_ip_address_but_no_name_is_served():
+    app = create_app(hosts={"0.0.0.0:8765"}, any_address_port=8765)
+    client = TestClient(app, base_url="http://192.168.1.20:8765")
+    assert client.post("/api/check", json={"polygon": SQUARE}).status_code == 200
+    for host in ("evil.example:8765", "192.168.1.20:9999", "[::1]:8765x"):
+        r = client.post("/api/check", json={"polygon": SQUARE}, headers={"host": host})
+        assert r.status_code == 403, host
+    ipv6 = client.post("/api/check", json={"polygon": SQUARE}, headers={"host": "[fe80::1]:8765"})
+    assert ipv6.status_code == 200

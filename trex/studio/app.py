@@ -8,6 +8,7 @@ user's machine, so only the page the studio served may call it.
 from __future__ import annotations
 
 import contextlib
+import ipaddress
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -30,18 +31,37 @@ from trex.studio.own import OwnHeuristics
 STATIC = Path(__file__).with_name("static")
 
 
-class HostGuard:
-    """ASGI middleware: 403 unless Host is one of ``hosts`` and Origin, if any, matches it."""
+def _is_address_on(host: str, port: int) -> bool:
+    """Whether a Host header is an IP address (not a name) with ``port``."""
+    name, _, given = host.rpartition(":")
+    try:
+        ipaddress.ip_address(name.removeprefix("[").removesuffix("]"))
+    except ValueError:
+        return False
+    return given == str(port)
 
-    def __init__(self, app: ASGIApp, hosts: set[str]) -> None:
-        self.app, self.hosts = app, hosts
+
+class HostGuard:
+    """ASGI middleware: 403 unless Host is one of ``hosts`` and Origin, if any, matches it.
+
+    Served on every interface (``--host 0.0.0.0``), any IP address with the served port
+    (``any_address_port``) is accepted too: the machine's own addresses cannot be listed
+    ahead, and DNS rebinding needs a host *name*.
+    """
+
+    def __init__(self, app: ASGIApp, hosts: set[str], any_address_port: int | None = None) -> None:
+        self.app, self.hosts, self.any_address_port = app, hosts, any_address_port
+
+    def serves(self, host: str) -> bool:
+        return host in self.hosts or (self.any_address_port is not None
+                                      and _is_address_on(host, self.any_address_port))
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] == "http":
             headers = {k.decode("latin-1"): v.decode("latin-1") for k, v in scope["headers"]}
             host = headers.get("host", "")
             origin = headers.get("origin")
-            if host not in self.hosts:
+            if not self.serves(host):
                 await _forbidden(f"host {host!r} is not served here")(scope, receive, send)
                 return
             if origin is not None and origin != f"http://{host}":
@@ -145,13 +165,14 @@ def _job_routes(jobs: Jobs, own: OwnHeuristics, timeout: float | None) -> list:
 
 def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None,
                work: Path | None = None, initial: dict | None = None,
-               call_timeout: float | None = None) -> ASGIApp:
+               call_timeout: float | None = None, any_address_port: int | None = None) -> ASGIApp:
     """The studio app, serving ``hosts`` (``"127.0.0.1:8765"`` and the like) only.
 
     ``own``: the heuristics named on the command line (loaded: their titles; they are called
     only by worker processes); ``work``: the only directory the app writes to; ``initial``:
     the polygon the page opens with (``polygon`` and ``holes``); ``call_timeout``: the limit
-    for one's own heuristics. When the app shuts down, its jobs and worker are ended.
+    for one's own heuristics; ``any_address_port``: see :class:`HostGuard`. When the app
+    shuts down, its jobs and worker are ended.
     """
     own = dict(own or {})
     work = work if work is not None else Path(tempfile.mkdtemp(prefix="trex-studio-"))
@@ -182,4 +203,4 @@ def create_app(*, hosts: set[str], own: dict[str, UserHeuristic] | None = None,
     ]
     app = Starlette(routes=routes, lifespan=lifespan)
     app.state.jobs = jobs
-    return HostGuard(app, hosts)
+    return HostGuard(app, hosts, any_address_port)

@@ -88,8 +88,10 @@ def studio(host: str, port: int, no_browser: bool, heuristics: tuple[str, ...],
         fail(str(exc))
     url = server.url_of(sock, host)
     work = _work_dir(keep)
-    app = create_app(hosts=_served_hosts(host, sock.getsockname()[1]), own=own, work=work,
-                     initial=initial, call_timeout=call_timeout())
+    bound = sock.getsockname()[1]
+    app = create_app(hosts=_served_hosts(host, bound), own=own, work=work, initial=initial,
+                     call_timeout=call_timeout(),
+                     any_address_port=bound if host in ("0.0.0.0", "::") else None)
 
     def listening() -> None:
         click.echo(f"studio: {url}")
