@@ -202,3 +202,16 @@ def test_cancel_a_video(page):
     page.wait_for_function("document.getElementById('render-result').textContent === 'cancelled'",
                            timeout=60_000)
     assert page.locator("#player").is_hidden()
+
+
+def test_slides_open_in_a_new_tab(page):
+    page.select_option("#sample", "counterexample")
+    page.locator("#load-sample").click()
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 5 vertices'")
+    page.select_option("#scene", "gravity")
+    with page.context.expect_page(timeout=400_000) as opened:
+        page.locator("#slides").click()
+    slides = opened.value
+    slides.wait_for_load_state()
+    assert "/media/" in slides.url and "/slides/index.html" in slides.url
+    assert slides.locator("video").count() >= 1
