@@ -138,3 +138,19 @@ def test_opens_the_page_in_the_browser_unless_told_not_to(tmp_path, flags):
     finally:
         process.send_signal(signal.SIGINT)
         process.communicate(timeout=30)
+
+
+def test_the_polygon_and_ones_own_heuristic_given_on_the_command_line(tmp_path):
+    mine = f"{ROOT / 'examples' / 'my_heuristic.py'}:biggest_angle"
+    process, url = start_studio(tmp_path, "--polygon", "counterexample", "--heuristic", mine)
+    try:
+        setup = get(url + "api/setup")
+        assert setup["initial"] == {"polygon": [[1, 4.5], [9, 2], [3, 6.5], [4.6, 4.1], [1.6, 8]],
+                                    "holes": []}
+        assert get(url + "api/rules")[-1]["name"] == mine
+        rows = post(url + "api/claims", setup["initial"])
+        assert rows[-1]["name"] == mine and rows[-1]["labels"] == ["B", "E"]
+        assert rows[-1]["inner"] is True
+    finally:
+        process.send_signal(signal.SIGINT)
+        process.communicate(timeout=30)
