@@ -215,3 +215,14 @@ def test_slides_open_in_a_new_tab(page):
     slides.wait_for_load_state()
     assert "/media/" in slides.url and "/slides/index.html" in slides.url
     assert slides.locator("video").count() >= 1
+
+
+def test_a_click_adds_after_the_selected_vertex(page):
+    for x, y in [(100, 100), (540, 100), (540, 540), (100, 540)]:
+        click_at(page, x, y)
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 4 vertices'")
+    x, y = vertex_xy(page, 0, 0)
+    page.mouse.click(x, y)  # select the first vertex: the next one goes between it and the second
+    click_at(page, 320, 60)
+    page.wait_for_function("document.getElementById('status').textContent === 'valid: 5 vertices'")
+    assert vertex_xy(page, 0, 1) == pytest.approx((x + 220, y - 40), abs=1)

@@ -93,8 +93,11 @@ function addVertex(point, newRing) {
     state.rings.push([]);
     state.active = state.rings.length - 1;
   }
-  state.rings[state.active].push(snapped(point));
-  state.selected = {ring: state.active, index: state.rings[state.active].length - 1};
+  // after the selected vertex of this ring (to add one in the middle of an edge), else last
+  const ring = state.rings[state.active], chosen = state.selected;
+  const at = chosen && chosen.ring === state.active ? chosen.index + 1 : ring.length;
+  ring.splice(at, 0, snapped(point));
+  state.selected = {ring: state.active, index: at};
   edited();
 }
 
@@ -458,7 +461,7 @@ function listen() {
   canvas.addEventListener("mousedown", (event) => {
     if (event.button !== 0) return;
     const hit = vertexAt(...eventPoint(event));
-    if (hit) { drag = hit; moved = false; state.selected = hit; }
+    if (hit) { drag = hit; moved = false; state.selected = hit; state.active = hit.ring; }
   });
   canvas.addEventListener("mousemove", (event) => {
     if (!drag) return;
