@@ -133,6 +133,10 @@ def test_counterexample_scaling_fails_at_edge_ea_and_gravity_holds(page, tmp_pat
     assert page.locator("#frame circle.candidate").count() == 2  # D and E lie in T
     assert page.locator('#claims line.claim.outer.selected[data-rule="scaling"]').count() == 1
     assert page.locator('#claims line.crossed[data-edge="3-4"]').count() == 1  # E–A drawn
+    page.locator('#rules tr[data-rule="translation"]').click()  # Hunt and Video act on it
+    assert page.input_value("#hunt-rule") == page.input_value("#scene") == "translation"
+    assert page.locator('#claims line.claim.selected[data-rule="translation"]').count() == 1
+    page.locator('#rules tr[data-rule="scaling"]').click()
     shot = tmp_path / "studio.png"
     page.screenshot(path=str(shot))
     assert shot.stat().st_size > 10_000

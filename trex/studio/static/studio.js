@@ -284,7 +284,11 @@ function drawTable(message) {
     tr.insertCell().innerHTML = ruleCell(rule);
     tr.insertCell().textContent = row && row.labels ? row.labels.join("") : "";
     tr.insertCell().innerHTML = row ? verdictCell(row) : escapeHtml(message || "");
-    tr.addEventListener("click", () => { state.chosen = rule.name; drawTable(message); drawClaims(); });
+    tr.addEventListener("click", () => {  // the chosen rule is the one Hunt and Video act on
+      state.chosen = $("hunt-rule").value = $("scene").value = rule.name;
+      drawTable(message);
+      drawClaims();
+    });
   }
 }
 
