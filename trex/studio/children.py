@@ -82,11 +82,12 @@ def played_scene(rule: str) -> type:
         fail(f"{rule}: {error_line(exc)}")
 
 
-def _total_frames(cls: type, quality: str) -> int:
-    """How many frames the scene will write: one dry run of it (nothing drawn or encoded)."""
+def _total_frames(cls: type, quality: str, beside: Path) -> int:
+    """How many frames the scene will write: one dry run of it (nothing drawn or encoded),
+    its scratch directory in ``beside`` (the job's folder: the studio writes only there)."""
     from manim import config, tempconfig
 
-    with tempfile.TemporaryDirectory(prefix="trex-studio-count-") as media, tempconfig({
+    with tempfile.TemporaryDirectory(prefix=".count-", dir=beside) as media, tempconfig({
         "quality": quality, "dry_run": True, "disable_caching": True, "media_dir": media,
         "progress_bar": "none", "verbosity": "ERROR", "preview": False,
     }):
@@ -133,7 +134,7 @@ def studio_video(rule: str, polygon: str, output: str, progress_file: str) -> No
     try:
         dry_run(cls, polygon)
         played = scene_input(cls, polygon)
-        total = _total_frames(played, QUALITIES["l"])
+        total = _total_frames(played, QUALITIES["l"], Path(output).parent)
     except (ValueError, KeyError) as exc:
         fail(f"{rule}: {error_line(exc)}")
     progress = Progress(Path(progress_file), total, every=15)

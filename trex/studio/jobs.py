@@ -128,7 +128,9 @@ class Jobs:
                 job.process = subprocess.Popen(
                     job.argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                     start_new_session=True, cwd=Path(__file__).resolve().parents[2],
-                    env={**os.environ, "TQDM_DISABLE": "1"})
+                    # its scratch files too go under the job's folder: the studio writes
+                    # only under its work directory
+                    env={**os.environ, "TQDM_DISABLE": "1", "TMPDIR": str(job.folder)})
                 job.state = "running"
             stdout, stderr = job.process.communicate()
             with self.lock:
