@@ -146,6 +146,10 @@ def test_counterexample_scaling_fails_at_edge_ea_and_gravity_holds(page, tmp_pat
     page.wait_for_function("document.getElementById('tri-result').textContent.includes('valid')")
     assert page.locator("#tri-result").inner_text().startswith("3 triangles (n + 2h − 2 = 5 + 0 − 2 = 3)")
     assert page.locator("#triangles polygon.tri").count() == 3
+    page.select_option("#algorithm", "divide-and-conquer")  # with the chosen rule, Scaling
+    page.locator("#triangulate").click()
+    page.wait_for_function("document.getElementById('tri-result').textContent.startsWith('stopped')")
+    assert "B–D crosses edge E–A" in page.locator("#tri-result").inner_text()
 
 
 def test_hunt_on_rotation_loads_its_counterexample(page):

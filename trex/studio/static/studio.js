@@ -357,7 +357,9 @@ async function recheck() {
 async function triangulate() {
   const algorithm = $("algorithm").value, started = performance.now();
   try {
-    const answer = await api("/api/triangulate", {...request(), algorithm});
+    // divide and conquer finds each diagonal with the chosen rule (a wrong one stops it)
+    const heuristic = algorithm === "divide-and-conquer" ? state.chosen : undefined;
+    const answer = await api("/api/triangulate", {...request(), algorithm, heuristic});
     state.triangles = answer.triangles;
     const n = state.check ? state.check.labels.filter((l) => l !== null).length : 0;
     const h = request().holes.length;
