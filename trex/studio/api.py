@@ -1,8 +1,12 @@
-"""The studio's JSON API: check, diagonal and triangulate, as the command line computes them.
+"""The studio's live JSON answers: check, diagonal, claims, triangulate, load.
 
-Every answer is built by the command line's own code (:mod:`trex.run_commands`,
-:func:`trex.cli.summary`'s polygon types), so the page and ``trex … --json`` agree.
-Bad input is a :class:`BadRequest`, answered 4xx with ``{"error": "one line"}``.
+Every answer is built by the command line's own code (the polygon types of
+:mod:`geometry`, :func:`trex.run_commands.triangulation_record`, the exact checks of
+:mod:`geometry.check`), so the page and ``trex … --json`` agree; every index is into the
+request's own points (the rings concatenated, outer first), even where cleaning drops a
+repeated or closing point. Bad input is a :class:`BadRequest`, answered 4xx with
+``{"error": "one line"}``. One's own heuristics are passed in by the worker that runs them
+(:mod:`trex.studio.own`); the server calls these functions with the built-ins only.
 """
 
 from __future__ import annotations
