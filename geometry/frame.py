@@ -80,11 +80,15 @@ def triangle_at(polygon: Polygon, b: Vertex) -> Triangle:
 def candidates_in_triangle(polygon: Polygon, t: Triangle) -> list[Vertex]:
     """The vertices other than A, B, C lying in the closed triangle T, counter-clockwise from C."""
     corners = (t.a.point, t.b.point, t.c.point)
+    xs, ys = [p[0] for p in corners], [p[1] for p in corners]
+    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
     out = []
     for k in range(2, polygon.n - 1):
-        v = polygon.vertex((t.b.index + k) % polygon.n)
-        if in_triangle(v.point, *corners):
-            out.append(v)
+        i = (t.b.index + k) % polygon.n
+        x, y = polygon.points[i]
+        # outside T's bounding box is outside T (exact: comparisons of the same floats)
+        if x0 <= x <= x1 and y0 <= y <= y1 and in_triangle((x, y), *corners):
+            out.append(polygon.vertex(i))
     return out
 
 

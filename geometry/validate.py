@@ -101,12 +101,7 @@ def clean_points(raw: object) -> tuple[list[Point], list[str]]:
     if isinstance(raw, str | bytes | dict) or not isinstance(raw, Sequence):
         raise CoordinateError("expected a list of [x, y] points")
     points = [_point(p, i) for i, p in enumerate(raw)]
-    kept: list[Point] = []
-    for p in points:
-        if not kept or kept[-1] != p:
-            kept.append(p)
-    while len(kept) > 1 and kept[-1] == kept[0]:
-        kept.pop()
+    kept = [points[i] for i in kept_indices(points)]
     warnings = []
     repeats = len(points) - len(kept) - (len(points) > 1 and points[-1] == points[0])
     if repeats > 0:
@@ -119,6 +114,22 @@ def clean_points(raw: object) -> tuple[list[Point], list[str]]:
             "at least 3 are needed"
         )
     return kept, warnings
+
+
+def kept_indices(points: Sequence[Point]) -> list[int]:
+    """The input positions :func:`clean_points` keeps: a closing point and consecutive
+    repeats are dropped (the first of a run is kept). The studio maps labels back with it.
+
+    >>> kept_indices([(0, 0), (0, 0), (1, 0), (0, 1), (0, 0)])
+    [0, 2, 3]
+    """
+    kept: list[int] = []
+    for i, p in enumerate(points):
+        if not kept or points[kept[-1]] != p:
+            kept.append(i)
+    while len(kept) > 1 and points[kept[-1]] == points[kept[0]]:
+        kept.pop()
+    return kept
 
 
 def orient_array(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:

@@ -26,6 +26,7 @@ from trex.render_command import COMMANDS as RENDER_COMMANDS
 from trex.run_commands import COMMANDS
 from trex.slides_command import COMMANDS as SLIDES_COMMANDS
 from trex.snapshot_command import COMMANDS as SNAPSHOT_COMMANDS
+from trex.studio.command import COMMANDS as STUDIO_COMMANDS
 
 _SHOWN_LABELS = 8
 
@@ -179,7 +180,7 @@ def sample(name: str, n: int | None, seed: int, output: str | None) -> None:
 
 
 for _command in (*COMMANDS, *HUNT_COMMANDS, *RENDER_COMMANDS, *EXERCISE_COMMANDS, *LECTURE_COMMANDS,
-                 *PLAYER_COMMANDS, *SLIDES_COMMANDS, *SNAPSHOT_COMMANDS):
+                 *PLAYER_COMMANDS, *SLIDES_COMMANDS, *SNAPSHOT_COMMANDS, *STUDIO_COMMANDS):
     main.add_command(_command)
 
 if __name__ == "__main__":
