@@ -125,6 +125,7 @@ def test_counterexample_scaling_fails_at_edge_ea_and_gravity_holds(page, tmp_pat
         "document.querySelector('#rules tr[data-rule=\"scaling\"] td:nth-child(3)')"
         ".textContent.includes('✗')")
     cells = page.locator('#rules tr[data-rule="scaling"] td')
+    assert cells.nth(0).inner_text() == "Scaling (spilled water)"  # the thesis's words
     assert cells.nth(1).inner_text() == "BD"
     assert "crosses edge E–A" in cells.nth(2).inner_text()
     assert page.locator('#rules tr[data-rule="gravity"] td').nth(2).inner_text().startswith("✓")

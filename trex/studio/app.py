@@ -22,7 +22,7 @@ from starlette.staticfiles import StaticFiles
 from starlette.types import ASGIApp, Receive, Scope, Send
 
 from geometry.user_heuristics import UserHeuristic
-from story.registry import entry, heuristics, triangulations
+from story.registry import SPOKEN, entry, heuristics, spoken, triangulations
 from trex.inputs import first_line
 from trex.studio import api, job_routes
 from trex.studio.jobs import Jobs
@@ -97,9 +97,10 @@ def _json_route(work: Callable[[dict], object], *, threaded: bool = False) -> Ca
 def _rules(own: dict[str, UserHeuristic]) -> list[dict]:
     """Every rule the page asks about: the built-ins with their metaphor, then one's own."""
     built_in = [{"name": n, "metaphor": entry(n).metaphor, "title": entry(n).title,
+                 "spoken": spoken(n), "picture": SPOKEN[n].picture,
                  "correct": entry(n).correct} for n in heuristics()]
-    return built_in + [{"name": n, "metaphor": None, "title": h.title, "correct": None}
-                       for n, h in own.items()]
+    return built_in + [{"name": n, "metaphor": None, "title": h.title, "spoken": n,
+                        "picture": None, "correct": None} for n, h in own.items()]
 
 
 def _page_routes() -> list:

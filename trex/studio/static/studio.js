@@ -253,12 +253,10 @@ function draw() {
 
 // --- the rules' table --------------------------------------------------------------------
 
-const METAPHORS = {water: "spilled water", clock: "the clock hand", sweep: "the sweeping line",
-                   gravity: "a ball on a rubber band"};
-
+// The names are the thesis's, from the registry's one table (story.registry.SPOKEN).
 function ruleCell(rule) {
-  const name = rule.title.split(":")[0];
-  const metaphor = METAPHORS[rule.metaphor] || (rule.metaphor ? rule.metaphor : "your own");
+  const name = rule.spoken;
+  const metaphor = rule.picture || "your own";
   return `<b>${escapeHtml(name)}</b> <span class="metaphor">(${escapeHtml(metaphor)})</span>`;
 }
 
