@@ -21,7 +21,7 @@ No manim here.
 >>> [b.action for b in storyboard(log)]  # the frame only: the water's step needs its reading
 ['polygon', 'pick', 'triangle', 'candidates', 'claim', 'verdict']
 >>> storyboard(log)[-1].caption
-'✗ BD is not an inner diagonal: B–D crosses edge E–A at (2.86087, 6.36087)'
+'✗ BD is not an inner diagonal: B–D crosses edge E–A at (3.26163, 3.44041)'
 """
 
 from __future__ import annotations
