@@ -10,7 +10,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from geometry.user_heuristics import call_timeout, set_call_timeout
 from story.environment import (
+    CALL_TIMEOUT,
     LOG,
     POLYGON,
     environment_values,
@@ -171,6 +173,12 @@ def test_a_lecture_chapter_gets_the_polygon_as_an_argument(tmp_path, environment
 
     environment.setattr(lecture_command.subprocess, "Popen", Process)
     chapter = lecture_command.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
-    lecture_command._start(0, chapter, tmp_path, tmp_path, "l", "star")
+    before = call_timeout()
+    set_call_timeout(2.5)  # as the lecture's --call-timeout 2.5 sets it
+    try:
+        lecture_command._start(0, chapter, tmp_path, tmp_path, "l", "star")
+    finally:
+        set_call_timeout(before)
     assert started["command"][-3:] == ["l", "star", ""]  # quality, polygon, panel (none)
-    assert "env" not in started["kwargs"]  # the child inherits ours, untouched
+    # the child inherits ours, untouched but for the time limit on functions of one's own
+    assert started["kwargs"]["env"] == {**os.environ, CALL_TIMEOUT: "2.5"}

@@ -41,8 +41,19 @@ from typing import NoReturn
 import click
 
 from geometry.errors import GeometryError
+from geometry.user_heuristics import UserHeuristicError, call_timeout, set_call_timeout
+from story.environment import call_timeout_from_environment, child_environment
 from story.pseudocode import PANELS
-from trex.inputs import error_line, fail, first_line, load_or_exit, make_parent
+from story.scene_kinds import ChapterScene, plays_several
+from trex.inputs import (
+    EXIT_INVALID,
+    call_timeout_option,
+    error_line,
+    fail,
+    first_line,
+    load_or_exit,
+    make_parent,
+)
 from trex.render_command import (
     EXIT_FAILED,
     EXIT_SIGNAL,
@@ -83,7 +94,12 @@ class Chapter:
 
 
 class ChapterFailed(Exception):
-    """A chapter could not be rendered (its one-line reason is the message)."""
+    """A chapter could not be rendered (its one-line reason is the message); ``status``: the
+    command's exit status for it (2 when a function of one's own failed in it, else 1)."""
+
+    def __init__(self, message: str, status: int = EXIT_FAILED) -> None:
+        super().__init__(message)
+        self.status = status
 
 
 def lecture_chapters() -> tuple[Chapter, ...]:
@@ -98,7 +114,7 @@ def lecture_chapters() -> tuple[Chapter, ...]:
     chapters = []
     for number, slug, path in sorted(found):
         cls = load_scene_class(path, None)
-        title = str(getattr(cls, "chapter_title", slug)).partition(". ")
+        title = str(cls.chapter_title if isinstance(cls, ChapterScene) else slug).partition(". ")
         chapters.append(Chapter(number, slug, title[2] or title[0], str(path.relative_to(REPO)),
                                 cls.__name__))
     return tuple(chapters)
@@ -225,7 +241,7 @@ def _check_polygon(cls: type, polygon: str, label: str, done: set) -> None:
         raise ChapterFailed(f"{label}: cannot list its segments: {type(exc).__name__}: "
                             f"{error_line(exc)}") from None
     if segments is None:
-        if not getattr(cls, "runs", None):
+        if not plays_several(cls):
             try:
                 dry_run(cls, polygon)
             except (GeometryError, ValueError, KeyError) as exc:
@@ -275,10 +291,12 @@ def _start(k: int, chapter, folder: Path, logs: Path, quality: str,
     log = logs / f"{chapter_stem(chapter)}.log"
     command = [sys.executable, "-m", "trex.lecture_command", str(scene_path(chapter)),
                chapter.scene_class or "", str(output), quality, polygon or "", panel or ""]
+    # this command's --call-timeout, for the functions of one's own the chapter runs
+    env = child_environment(call_timeout())
     with open(log, "wb") as sink:
         # its own session: Ctrl-C at the terminal reaches only us, and we stop it
         process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=sink,
-                                   stderr=subprocess.STDOUT, start_new_session=True)
+                                   stderr=subprocess.STDOUT, start_new_session=True, env=env)
     return _Render(k, chapter, process, log, output, time.monotonic())
 
 
@@ -339,7 +357,8 @@ def render_chapters(chapters: Sequence, folder: Path, logs: Path, quality: str, 
                 running.remove(render)
                 label = chapter_label(render.k, len(chapters), render.chapter)
                 if code != 0:
-                    raise ChapterFailed(f"{label}: {_reason(render, code)}")
+                    raise ChapterFailed(f"{label}: {_reason(render, code)}",
+                                        EXIT_INVALID if code == EXIT_INVALID else EXIT_FAILED)
                 try:
                     video = probe(render.output)
                 except (OSError, ValueError, RuntimeError) as exc:  # av errors are OSErrors
@@ -443,6 +462,7 @@ def build_lecture(chapters: Sequence, out_dir: Path, quality: str, jobs: int,
 @click.option("--panel", type=click.Choice(PANELS), default=None,
               help="What the panels show: the pseudocode (the scenes' default; the source "
                    "when a run has none) or the real source.")
+@call_timeout_option
 def lecture(quality: str, jobs: int, polygon: str | None, out_dir: str,
             only: str | None, panel: str | None) -> None:
     """Render every chapter of the lecture and join them: DIR/lecture.mp4, lecture.srt,
@@ -491,7 +511,7 @@ def run_lecture(chapters: Sequence | None, out_dir: Path, quality: str = "l", jo
             raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
         except ChapterFailed as exc:
             signals.check()
-            chapter_failed(str(exc))
+            chapter_failed(str(exc), exc.status)
         except (KeyboardInterrupt, click.exceptions.Exit):
             raise
         except Exception as exc:
@@ -503,10 +523,11 @@ def run_lecture(chapters: Sequence | None, out_dir: Path, quality: str = "l", jo
     return video
 
 
-def chapter_failed(message: str) -> NoReturn:
-    """``error: MESSAGE`` and exit status 1 (a chapter, or the list of them, failed)."""
+def chapter_failed(message: str, status: int = EXIT_FAILED) -> NoReturn:
+    """``error: MESSAGE`` and exit status 1 (a chapter, or the list of them, failed), or
+    ``status``."""
     click.echo(f"error: {message}", err=True)
-    raise click.exceptions.Exit(EXIT_FAILED)
+    raise click.exceptions.Exit(status)
 
 
 # --- one chapter, in its own process ------------------------------------------------------------
@@ -549,8 +570,17 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
     (None or empty: what ``manim`` would give it), its panel showing ``panel`` (None or
     empty: the scene's own); the exit status.
 
-    Failures are one line on stderr; SIGTERM/SIGINT stop it with nothing left behind.
+    Failures are one line on stderr; SIGTERM/SIGINT stop it with nothing left behind. A
+    function of one's own it runs has the time limit of ``TREX_CALL_TIMEOUT`` (the
+    lecture's ``--call-timeout``), else the default.
     """
+    try:
+        seconds = call_timeout_from_environment()
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_INVALID
+    if seconds is not None:
+        set_call_timeout(seconds)
     with interrupts_raise() as signals:
         try:
             try:
@@ -559,6 +589,10 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
                 render_into(scene_input(cls, polygon or None, panel or None), Path(output),
                             "mp4", QUALITIES[quality], progress=False, signals=signals,
                             steps=settings)
+            except UserHeuristicError as exc:  # a function of one's own failed: status 2
+                signals.check()
+                print(f"error: {exc}", file=sys.stderr)
+                return EXIT_INVALID
             except Exception as exc:
                 signals.check()
                 print(f"error: render failed: {type(exc).__name__}: {error_line(exc)}",

@@ -4,6 +4,7 @@ Run: ``manim -pql scenes/chapters/ch1_overview.py``; the whole lecture: ``trex l
 """
 
 from metaphors.lecture import Card, LectureScene, Run
+from story.registry import spoken
 
 
 class Overview(LectureScene):
@@ -21,6 +22,7 @@ class Overview(LectureScene):
                 "Find an inner diagonal, split the polygon along it, repeat on both halves.",
                 "Each diagonal takes O(n) steps, and n − 3 are needed: O(n²) in all.",
                 "Everything hinges on one question: how do we find an inner diagonal?")),
-            Run("divide-and-conquer", None, "Lennes' divide and conquer (diagonals by gravity)",
+            Run("divide-and-conquer", None,
+                f"Lennes' divide and conquer (diagonals by {spoken('gravity')})",
                 heuristic="gravity", speed=0.6),
         )
