@@ -14,7 +14,7 @@ deterministic families are built with margins far larger than float rounding.
 Examples
 --------
 >>> make_sample("counterexample")
-[(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)]
+[(0.3, 2.7), (6.5, 1.1), (3.9, 3.6), (4.5, 1.9), (0.4, 7)]
 >>> len(make_sample("random-star", n=7, seed=3))
 7
 >>> make_sample("random-star", n=7, seed=3) == make_sample("random-star", n=7, seed=3)
@@ -56,7 +56,11 @@ __all__ = [
     "sample_names",
 ]
 
-_COUNTEREXAMPLE: tuple[Point, ...] = ((1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8))
+# The thesis's Fig. 2.1 (A, B, C and two vertices D, E inside T), drawn with room: Scaling,
+# Rotation and Translation all claim BD, which leaves P across edge E–A for 7 % of the frame's
+# height as the scenes draw it; D is nearer to B than E, further left and first from A by
+# clear margins; no three vertices are collinear, no angle is under 15°.
+_COUNTEREXAMPLE: tuple[Point, ...] = ((0.3, 2.7), (6.5, 1.1), (3.9, 3.6), (4.5, 1.9), (0.4, 7))
 
 # 13 vertices, 5 reflex; triangle ABC at the left-most vertex B holds three
 # candidates (G, H, M), so every inner-diagonal heuristic has a choice to make.

@@ -283,7 +283,7 @@ def pseudocode_of(log: Log) -> tuple[Step, ...]:
     >>> import tracing
     >>> with tracing.record(algorithm="gravity") as log:
     ...     pass
-    >>> pseudocode_of(log)[0].calls
+    >>> pseudocode_of(log)[1].calls
     ('reflex_vertex', 'straight_vertex')
     >>> log.meta["pseudocode"] = [["claim BD", ["claim"]]]
     >>> pseudocode_of(log)

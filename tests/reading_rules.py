@@ -164,3 +164,44 @@ def unspoken_words(data: dict, *, call_line: bool = False) -> list[str]:
             if pattern.search(text):
                 found.setdefault(f"{kind}: {text!r}", None)
     return sorted(found)
+
+
+#: 4 % of the frame's height: the least of a wrong claim that must be seen outside P
+LEAST_OUTSIDE = 0.32
+#: the colour of what is rejected (metaphors.theme.THEME.rejected), as the graph writes it
+_REJECTED = "#EF4B4B"
+
+
+def _corners(node: dict) -> list[tuple[float, float]]:
+    """The corners of a polygon node: the first point of every cubic segment."""
+    return [(x, y) for x, y, _ in node["points"][::4]]
+
+
+def _near(p: tuple[float, float], corners: list[tuple[float, float]]) -> bool:
+    return any(abs(p[0] - x) < 1e-3 and abs(p[1] - y) < 1e-3 for x, y in corners)
+
+
+def hidden_failures(data: dict) -> list[str]:
+    """Issue 22 item 3: the red (rejected) claims whose part outside their polygon is under
+    :data:`LEAST_OUTSIDE` on screen, as ``"claim (x, y)–(x, y): 0.14 outside"``. A claim is
+    matched to the drawn polygon that has both its ends as corners; one with no such polygon
+    is reported too, so that a claim drawn elsewhere cannot pass unmeasured."""
+    from shapely.geometry import LineString
+    from shapely.geometry import Polygon as Region
+
+    nodes = list(graph_nodes(data))
+    polygons = [_corners(n) for n in nodes if n.get("name") == "polygon" and n.get("points")]
+    found = {}
+    for node in nodes:
+        if node.get("name") != "claim" or (node.get("stroke") or "").upper() != _REJECTED:
+            continue
+        a, b = (tuple(node["points"][k][:2]) for k in (0, -1))
+        home = [c for c in polygons if _near(a, c) and _near(b, c)]
+        where = f"claim ({a[0]:g}, {a[1]:g})–({b[0]:g}, {b[1]:g})"
+        if not home:
+            found[where] = "no polygon has both its ends"
+            continue
+        outside = LineString([a, b]).difference(Region(home[0])).length
+        if outside < LEAST_OUTSIDE:
+            found[where] = f"{outside:.2f} outside"
+    return [f"{where}: {what}" for where, what in sorted(found.items())]

@@ -54,7 +54,8 @@ def test_a_wrong_heuristics_sweep_leaves_the_polygon_inside_t(wrong):
     assert lies_inside(astray, t) and shape(points).intersection(astray).area < 1e-6
     # the part outside P holds the stretch of BD beyond the crossed edge, next to D
     beyond = shapely.LineString([seen.verdict.point, points[seen.labels.index("D")]])
-    assert astray.buffer(1e-6).covers(beyond)
+    # the water is a 256-gon inscribed in its circle: D, on the circle, lies up to 1e-4 off it
+    assert astray.buffer(1e-4).covers(beyond)
 
 
 @pytest.mark.parametrize("wrong", WRONG)

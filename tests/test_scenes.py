@@ -46,6 +46,7 @@ from tests.reading_rules import (
     LEAST_LINE,
     crossfaded_subtitles,
     graph_nodes,
+    hidden_failures,
     small_texts,
     unreadable_cues,
     unspoken_words,
@@ -209,6 +210,13 @@ def test_never_two_subtitles_at_once(case):
     """Issue 22 item 9: a caption goes before the next comes (no play fades one subtitle
     out while the next fades in)."""
     assert crossfaded_subtitles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_wrong_claim_is_seen_leaving_p(case):
+    """Issue 22 item 3: every red claim leaves its polygon by at least 4 % of the frame's
+    height on screen."""
+    assert hidden_failures(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
