@@ -87,13 +87,15 @@ class Compare:
 class Hunted:
     """A heuristic the lecture did not cover (``FILE.py:FUNCTION``), a counterexample hunted
     for at build time (:func:`story.hunt.hunt`, fixed ``seed`` and ``budget``), then its run
-    on it: a card says how it was found."""
+    on it: a card says how it was found. ``general``: hunt only polygons in general position
+    whose wrong claim crosses an edge, so that the class sees it fail (issue 22)."""
 
     heuristic: str
     title: str
     rule: str  # the rule in words
     seed: int = 0
     budget: int = 2000
+    general: bool = True
 
 
 @dataclass(frozen=True)
@@ -218,7 +220,8 @@ class LectureScene(TraceScene):
 
     def play_hunted(self, hunted: Hunted) -> None:
         heuristic = load_user_heuristic(hunted.heuristic)
-        found = hunt(heuristic, budget=hunted.budget, seed=hunted.seed)
+        found = hunt(heuristic, budget=hunted.budget, seed=hunted.seed,
+                     general=hunted.general)
         if not found.found:
             raise ValueError(f"{heuristic.name}: no counterexample in {found.tried} polygons")
         # the card tells what the computer did, not the command that did it (issue 22)

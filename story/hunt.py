@@ -51,8 +51,19 @@ from geometry.user_heuristics import (
     run_heuristic,
 )
 
-__all__ = ["BATCH", "Failure", "Hunt", "Shrunk", "candidates", "fails", "hunt", "is_minimal",
-           "reason", "shrink"]
+__all__ = [
+    "BATCH",
+    "Failure",
+    "Hunt",
+    "Shrunk",
+    "candidates",
+    "fails",
+    "hunt",
+    "in_general_position",
+    "is_minimal",
+    "reason",
+    "shrink",
+]
 
 #: Polygons of each size per round of the search.
 BATCH = 16
@@ -123,11 +134,27 @@ class Failure:
         return "wrong claim" if self.error is None else self.error.way
 
 
-def fails(points: Sequence[Point], heuristic: Heuristic, way: str | None = None) -> Failure | None:
+def in_general_position(points: Sequence[Point]) -> bool:
+    """Whether no three of the points lie on one line (decided exactly).
+
+    >>> in_general_position([(0, 0), (2, 0), (1, 1), (0, 3)])
+    True
+    >>> in_general_position([(0, 0), (1, 1), (2, 2)])
+    False
+    """
+    n = len(points)
+    return all(orient(points[i], points[j], points[k]) != 0
+               for i in range(n) for j in range(i + 1, n) for k in range(j + 1, n))
+
+
+def fails(points: Sequence[Point], heuristic: Heuristic, way: str | None = None, *,
+          general: bool = False) -> Failure | None:
     """How the heuristic fails when ``points`` make a valid polygon of at least four vertices
     on which its claim is not an inner diagonal, or on which a function of one's own fails
     (raises, answers nonsense, runs out of time); None otherwise. With ``way``, only a
-    failure of that :attr:`Failure.way` counts.
+    failure of that :attr:`Failure.way` counts. With ``general``, only a polygon in general
+    position (:func:`in_general_position`) on which a wrong claim crosses an edge counts:
+    one a class can see fail (not a claim that only passes through a vertex).
 
     A function of one's own that tries to end the program
     (:class:`~geometry.user_heuristics.UserHeuristicExit`) raises here, as does a built-in
@@ -140,6 +167,8 @@ def fails(points: Sequence[Point], heuristic: Heuristic, way: str | None = None)
         return None
     if polygon.n != len(points):  # cleaning dropped a repeated point: not this polygon
         return None
+    if general and not in_general_position(polygon.points):
+        return None
     try:
         claim = run_heuristic(polygon, heuristic)
     except UserHeuristicExit:
@@ -148,7 +177,8 @@ def fails(points: Sequence[Point], heuristic: Heuristic, way: str | None = None)
         found = Failure(polygon, error=exc)
     else:
         verdict = is_inner_diagonal(polygon, *claim.pair)
-        found = None if verdict.ok else Failure(polygon, claim, verdict)
+        seen = not general or verdict.code == "crosses"
+        found = None if verdict.ok or not seen else Failure(polygon, claim, verdict)
     return found if found is not None and way in (None, found.way) else None
 
 
@@ -287,14 +317,14 @@ class _Trials:
     not; counted (``checks``), and stopped by :class:`_Enough` after
     :data:`MAX_SHRINK_TIMEOUTS` that ran out of time."""
 
-    def __init__(self, heuristic: Heuristic, first: Failure) -> None:
-        self.heuristic, self.way = heuristic, first.way
+    def __init__(self, heuristic: Heuristic, first: Failure, general: bool = False) -> None:
+        self.heuristic, self.way, self.general = heuristic, first.way, general
         self.best = first  # the last failure found: the polygon the shrinker holds
         self.checks = self.timeouts = 0
 
     def fails(self, points: Sequence[Point]) -> Failure | None:
         self.checks += 1
-        found = fails(points, self.heuristic)
+        found = fails(points, self.heuristic, general=self.general)
         if found is not None and found.way == "timeout":
             self.timeouts += 1
             if self.timeouts > MAX_SHRINK_TIMEOUTS:
@@ -390,7 +420,7 @@ def _move_coordinates(points: list[Point], trials: _Trials) -> list[Point]:
 
 
 def shrink(points: Sequence[Point], heuristic: Heuristic,
-           found: Failure | None = None) -> Shrunk:
+           found: Failure | None = None, *, general: bool = False) -> Shrunk:
     """Shrink a failing polygon (see the module docs) while it fails the same way (a wrong
     claim; or the same error of a function of one's own: :attr:`Failure.way`): the minimal
     failure, how many checks it took, and whether it stopped early (too many trials ran out
@@ -399,10 +429,10 @@ def shrink(points: Sequence[Point], heuristic: Heuristic,
 
     Raises ValueError if ``points`` is not a failing polygon to begin with.
     """
-    found = found if found is not None else fails(points, heuristic)
+    found = found if found is not None else fails(points, heuristic, general=general)
     if found is None:
         raise ValueError("not a counterexample: nothing to shrink")
-    trials = _Trials(heuristic, found)
+    trials = _Trials(heuristic, found, general)
     current = list(found.polygon.points)
     stopped = False
     try:
@@ -427,10 +457,13 @@ class Shrunk:
     stopped: bool = False
 
 
-def is_minimal(polygon: Polygon, heuristic: Heuristic, way: str = "wrong claim") -> bool:
-    """Whether dropping any one vertex makes the polygon invalid or stops it failing ``way``."""
+def is_minimal(polygon: Polygon, heuristic: Heuristic, way: str = "wrong claim", *,
+               general: bool = False) -> bool:
+    """Whether dropping any one vertex makes the polygon invalid or stops it failing ``way``
+    (in general position, crossing an edge, with ``general``)."""
     pts = list(polygon.points)
-    return all(fails(pts[:k] + pts[k + 1:], heuristic, way) is None for k in range(len(pts)))
+    return all(fails(pts[:k] + pts[k + 1:], heuristic, way, general=general) is None
+               for k in range(len(pts)))
 
 
 # --- the hunt --------------------------------------------------------------------------------------------
@@ -441,7 +474,7 @@ def _name(heuristic: Heuristic) -> str:
 
 
 def hunt(heuristic: Heuristic, *, budget: int = 5000, seed: int = 0, max_vertices: int = 8,
-         progress: Callable[[int], None] | None = None) -> Hunt:
+         progress: Callable[[int], None] | None = None, general: bool = False) -> Hunt:
     """Search up to ``budget`` polygons of 4 … ``max_vertices`` vertices for one on which the
     heuristic fails (its claim is not an inner diagonal, or a function of one's own raises,
     answers nonsense or runs out of time); shrink the first found.
@@ -450,6 +483,8 @@ def hunt(heuristic: Heuristic, *, budget: int = 5000, seed: int = 0, max_vertice
     heuristic, the budget, the seed and ``max_vertices`` only (``seconds`` aside; and which
     polygons run out of time, for a function that does). A function of one's own that tries
     to end the program raises :class:`~geometry.user_heuristics.UserHeuristicExit`.
+    ``general``: only polygons in general position whose wrong claim crosses an edge count,
+    and the shrinker keeps them so (:func:`fails`; the lecture shows such a one).
     """
     start = time.perf_counter()
     tried = skipped = 0
@@ -462,9 +497,9 @@ def hunt(heuristic: Heuristic, *, budget: int = 5000, seed: int = 0, max_vertice
             continue
         tried += 1
         sizes[n] = sizes.get(n, 0) + 1
-        found = fails(points, heuristic)
+        found = fails(points, heuristic, general=general)
         if found is not None:
-            shrunk = shrink(points, heuristic, found)
+            shrunk = shrink(points, heuristic, found, general=general)
             failure = shrunk.failure
             return Hunt(_name(heuristic), True, tried, max_vertices,
                         time.perf_counter() - start, failure.polygon,

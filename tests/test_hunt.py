@@ -19,6 +19,7 @@ from geometry.diagonals import find_diagonal
 from geometry.errors import GeometryError
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
+from geometry.predicates import orient
 from geometry.samples import make_sample
 from story.hunt import fails, hunt, is_minimal, shrink
 from story.registry import correct, wrong
@@ -341,3 +342,27 @@ def test_hunt_in_a_subprocess():
                             cwd=ROOT, env=env, timeout=120)
     assert result.returncode == 1, result.stderr
     assert "rotation-ccw is wrong" in result.stdout
+
+
+NEAREST_TO_C = f"{Path(__file__).resolve().parents[1] / 'examples' / 'nearest_to_c.py'}:nearest_to_c"
+
+
+def test_general_position_finds_a_failure_a_class_can_see():
+    """Issue 22 item 3: with --general-position the hunt skips polygons with three vertices on
+    a line and claims that only pass through a vertex; the shrinker keeps it so. Without it,
+    this rule's first counterexample is a claim through a vertex on a grid of collinear
+    points."""
+    plain = json.loads(CliRunner().invoke(main, ["hunt", NEAREST_TO_C, "--budget", "2000",
+                                                 "--json"]).stdout)
+    assert "passes through vertex" in plain["why"]
+    result = CliRunner().invoke(main, ["hunt", NEAREST_TO_C, "--budget", "2000", "--json",
+                                       "--general-position"])
+    assert result.exit_code == 1
+    seen = json.loads(result.stdout)
+    assert "crosses edge" in seen["why"]
+    polygon = Polygon.from_points(seen["polygon"])
+    points = polygon.points
+    assert all(orient(points[i], points[j], points[k]) != 0
+               for i in range(len(points)) for j in range(i + 1, len(points))
+               for k in range(j + 1, len(points)))
+    assert is_inner_diagonal(polygon, *seen["diagonal"]).code == "crosses"

@@ -481,7 +481,7 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     from geometry.check import is_inner_diagonal
     from geometry.user_heuristics import load_user_heuristic, run_heuristic
     from metaphors.lecture import Hunted
-    from story.hunt import hunt
+    from story.hunt import hunt, in_general_position
     from trex.lecture_command import lecture_chapters
     from trex.snapshot import build
 
@@ -490,10 +490,13 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     hunted = [s for s in cls.__new__(cls).chapter_segments() if isinstance(s, Hunted)]
     assert len(hunted) == 1
     found = hunt(load_user_heuristic(hunted[0].heuristic), budget=hunted[0].budget,
-                 seed=hunted[0].seed)
-    assert found.found and found.polygon.n <= 5
+                 seed=hunted[0].seed, general=hunted[0].general)
+    assert hunted[0].general and found.found and found.polygon.n <= 6
     claim = run_heuristic(found.polygon, load_user_heuristic(hunted[0].heuristic))
-    assert not is_inner_diagonal(found.polygon, *claim.pair)
+    verdict = is_inner_diagonal(found.polygon, *claim.pair)
+    # issue 22 item 3: in general position, the claim crossing an edge, not a vertex
+    assert not verdict and verdict.code == "crosses"
+    assert in_general_position(found.polygon.points)
     data = build(cls.handed()).data
     cues = [c["text"] for c in data["cues"]]
     assert hunted[0].title in cues  # the card: its title, then each line its own cue

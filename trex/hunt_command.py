@@ -67,13 +67,17 @@ def hunt_record(result: Hunt) -> dict:
 @click.option("-o", "--output", metavar="FILE",
               help="Write the counterexample here (format by extension), for trex render "
                    "--polygon.")
+@click.option("--general-position", "general", is_flag=True,
+              help="Only polygons with no three vertices on a line, on which the wrong claim "
+                   "crosses an edge (not only passes through a vertex): one a class can see "
+                   "fail.")
 @click.option("--json", "as_json", is_flag=True, help="One JSON line.")
 @click.option("--render", "render", is_flag=True,
               help="Render the heuristic's video on the counterexample (480p) and print the "
                    "mp4's path.")
 @call_timeout_option
 def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_vertices: int,
-                 output: str | None, as_json: bool, render: bool) -> None:
+                 output: str | None, general: bool, as_json: bool, render: bool) -> None:
     """Search small polygons for one on which HEURISTIC's claim is not an inner diagonal,
     shrink it to a minimal one and say why the claim is wrong.
 
@@ -86,7 +90,7 @@ def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_ver
     with bar_context as bar:
         try:
             result = hunt(heuristic, budget=budget, seed=seed, max_vertices=max_vertices,
-                          progress=bar.update if bar is not None else None)
+                          progress=bar.update if bar is not None else None, general=general)
         except UserHeuristicError as exc:  # it tried to end the program: no polygon explains it
             fail(f"{heuristic}: {exc}")
         except ValueError as exc:  # a built-in heuristic that refuses a polygon
