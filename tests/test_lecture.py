@@ -28,6 +28,7 @@ from click.testing import CliRunner
 
 from tests.reading_rules import (
     crossfaded_subtitles,
+    hidden_failures,
     small_texts,
     unreadable_cues,
     unspoken_words,
@@ -461,6 +462,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert small_texts(data) == [], chapter.slug
     # issue 22 item 9: never two subtitles at once
     assert crossfaded_subtitles(data) == [], chapter.slug
+    # issue 22 item 3: every red claim leaves its polygon by 4 % of the frame's height
+    assert hidden_failures(data) == [], chapter.slug
     # issue 22 items 1 and 10: the taught words, no slug, no code (no call line either), no
     # number with two decimals
     assert unspoken_words(data) == [], chapter.slug
