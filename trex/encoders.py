@@ -18,7 +18,9 @@ leave one so in two ways:
 :func:`guard` mends both on one scene's writer, without changing manim: it opens each stream
 with signals deferred (2), notes every job opened, and before manim's abort runs, gives each
 unfinished job its closing message, put with a short timeout and retried while its thread
-lives (1). The cleanup runs with signals deferred, so a second signal cannot interrupt it.
+lives (1), its queued frames discarded unencoded (the segment is thrown away: the process
+exits sooner). The cleanup runs with signals deferred, so a second signal cannot interrupt
+it.
 """
 
 from __future__ import annotations
@@ -51,6 +53,13 @@ def send_closing(job: Any) -> None:
             return
         except queue.Full:
             continue
+
+
+def discard_frames(job: Any) -> None:
+    """Take the frames still queued for ``job`` off its queue, unencoded."""
+    with contextlib.suppress(queue.Empty):
+        while True:
+            job.queue.get_nowait()
 
 
 class EncoderGuard:
@@ -87,6 +96,7 @@ class EncoderGuard:
         for job in self.unfinished():
             job._abort_requested = True  # discard the segment (what manim's job.abort() sets)
             job._sealed = True  # manim's seal() then sends nothing more: it is sent here
+            discard_frames(job)  # frames of a discarded segment need no encoding: exit sooner
             send_closing(job)
 
     def unfinished(self) -> list[Any]:
@@ -123,4 +133,4 @@ def guard(scene: object, deferred: Deferring) -> EncoderGuard | _NoEncoders:
     return EncoderGuard(writer, deferred)
 
 
-__all__ = ["CLOSING", "EncoderGuard", "guard", "send_closing"]
+__all__ = ["CLOSING", "EncoderGuard", "discard_frames", "guard", "send_closing"]
