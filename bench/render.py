@@ -17,12 +17,18 @@ directory, in this process (so imports are not counted; the text caches of
 4. Gravity rendered twice with manim's cache on, in one media directory: the time of the
    second render and how many plays it took from the cache ("Using cached data" in manim's
    log; the cache key hashes the mobjects and animations, so every play hits only if the
-   scene builds the same points every time). Target: ≤ 2 s.
+   scene builds the same points every time). Target: ≤ 2 s;
+5. the commands side by side, each a fresh process as a user starts it, from the repository
+   root (so plain manim reads manim.cfg): ``trex render gravity -q l`` against
+   ``manim -ql --disable_caching scenes/gravity.py Gravity``, alternately ``--repeat``
+   times, best and median wall time of each and their ratio (trex ÷ manim; target ≤ 1.05,
+   issue 24 item 13: trex render once held one encoder in flight where manim.cfg has 4).
 
 It prints numbers and never fails on timings. The last line is exactly
 ``render throughput ratio vs bare manim: N.NN`` (ours ÷ bare; target ≥ 0.8).
 
-Run from the repository root: ``python bench/render.py`` (``--skip-builds`` leaves out 3).
+Run from the repository root: ``python bench/render.py`` (``--skip-builds`` leaves out 3,
+``--commands-only`` runs 5 alone; ``--quality`` sets 5's quality).
 """
 
 from __future__ import annotations
@@ -33,6 +39,7 @@ import inspect
 import logging
 import shutil
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -186,6 +193,44 @@ def render(cls: type[Scene], media: Path, caching: bool) -> Run:
     return Run(wall, seconds, counter.hits, cpu, main)
 
 
+def command_time(argv: list[str], media: Path) -> float:
+    """Wall seconds of one command run from the repository root (its output to /dev/null:
+    both print progress bars)."""
+    media.mkdir()
+    start = time.perf_counter()
+    subprocess.run(argv, cwd=ROOT, check=True, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL)
+    return time.perf_counter() - start
+
+
+def commands_side_by_side(scratch: Path, repeat: int, quality: str) -> float:
+    """Section 5: ``trex render`` against plain ``manim`` on Gravity; returns the ratio of
+    their best times (trex ÷ manim)."""
+    bin_dir = Path(sys.executable).parent
+    scene = ROOT / "scenes" / f"{SCENE_FILE}.py"
+
+    def trex(out: Path) -> list[str]:
+        return [str(bin_dir / "trex"), "render", SCENE_FILE, "-q", quality,
+                "-o", str(out / f"{SCENE_NAME}.mp4")]
+
+    def manim_cli(out: Path) -> list[str]:
+        return [str(bin_dir / "manim"), f"-q{quality}", "--disable_caching",
+                "--media_dir", str(out), str(scene), SCENE_NAME]
+
+    times: dict[str, list[float]] = {"trex render": [], "manim": []}
+    for k in range(repeat):  # interleaved, so that a slow spell of the machine hits both
+        times["trex render"].append(command_time(trex(scratch / f"trex{k}"), scratch / f"trex{k}"))
+        times["manim"].append(command_time(manim_cli(scratch / f"manim{k}"),
+                                           scratch / f"manim{k}"))
+    print(f"{SCENE_NAME} at -q {quality}, each a fresh process (best of {repeat}; median):")
+    for name, done in times.items():
+        print(f"  {name:12s} {min(done):7.2f} s  ({statistics.median(done):.2f} s)")
+    ratio = min(times["trex render"]) / min(times["manim"])
+    print(f"  trex render ÷ manim: {ratio:.3f} (target ≤ 1.05); medians "
+          f"{statistics.median(times['trex render']) / statistics.median(times['manim']):.3f}")
+    return ratio
+
+
 def _main(runs: list[Run]) -> float:
     return statistics.median(r.main for r in runs)
 
@@ -199,9 +244,19 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--skip-builds", action="store_true", help="no dry-run build times")
     parser.add_argument("--repeat", type=int, default=3,
                         help="renders of each scene for the throughput (the best counts)")
+    parser.add_argument("--commands-only", action="store_true",
+                        help="only trex render against plain manim (section 5)")
+    parser.add_argument("--quality", choices=["l", "m", "h", "k"], default="l",
+                        help="the quality of section 5")
     args = parser.parse_args(argv)
     logging.getLogger("manim").setLevel(logging.INFO)
     scratch = Path(tempfile.mkdtemp(prefix="trex-bench-render-"))
+    if args.commands_only:
+        try:
+            commands_side_by_side(scratch, args.repeat, args.quality)
+        finally:
+            shutil.rmtree(scratch, ignore_errors=True)
+        return
     try:
         ours_cls = handed(getattr(load_module(SCENE_FILE), SCENE_NAME))
         scene, plays = build(ours_cls)
@@ -249,6 +304,7 @@ def main(argv: list[str] | None = None) -> None:
         print(f"cached render: first {first.wall:.2f} s ({first.hits} hits), second "
               f"{second.wall:.2f} s with {second.hits}/{len(graph)} plays from cache "
               "(target ≤ 2 s)")
+        commands_side_by_side(scratch, args.repeat, args.quality)
         print(f"render throughput ratio vs bare manim: {rates['ours'] / rates['bare']:.2f}")
     finally:
         shutil.rmtree(scratch, ignore_errors=True)

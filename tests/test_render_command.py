@@ -318,3 +318,23 @@ def test_a_signal_deferred_is_raised_at_the_end_even_if_the_block_fails():
     done = render_command.Signals()
     with done.deferred():
         done.signum, done.done = signal.SIGINT, True  # after the output is in place: no matter
+
+
+def test_trex_render_runs_as_many_encoders_as_manim_cfg(tmp_path, monkeypatch):
+    """No longer one encoder at a time (the old workaround for the hang): manim.cfg's
+    number, read from the project's file wherever trex runs from; none set, manim's own."""
+    import configparser
+
+    parser = configparser.ConfigParser()
+    parser.read(render_command.MANIM_CFG, encoding="utf-8")
+    wanted = parser.getint("CLI", "max_inflight_encoders")
+    assert wanted > 1
+    monkeypatch.chdir(tmp_path)  # not the repository: its manim.cfg is still the one read
+    settings = render_command._settings(tmp_path / "media", "mp4", "low_quality", False)
+    assert settings["max_inflight_encoders"] == wanted
+    bare = tmp_path / "manim.cfg"
+    bare.write_text("[CLI]\nmedia_dir = media\n")
+    assert render_command.inflight_encoders(bare) is None
+    monkeypatch.setattr(render_command, "MANIM_CFG", bare)
+    assert "max_inflight_encoders" not in render_command._settings(
+        tmp_path / "media", "mp4", "low_quality", False)

@@ -321,7 +321,7 @@ def _settings(media: Path, fmt: str, quality: str, progress: bool) -> dict:
         # x264 as manim.cfg has it (the same input, the same bytes)
         "video_encoder_options": dict(X264_OPTIONS),
     }
-    inflight = inflight_encoders()
+    inflight = inflight_encoders(MANIM_CFG)
     if inflight is not None:  # as many encoders at once as plain manim runs (manim.cfg)
         settings["max_inflight_encoders"] = inflight
     return settings
