@@ -10,6 +10,10 @@ interrupt must:
 - exit 128 + the signal (130 for SIGINT, 143 for SIGTERM), saying ``render interrupted``;
 - leave nothing in the output's directory (no video, no subtitles, no temporary directory).
 
+Beside the wall time after the signal it prints the CPU time the process spent after it
+(from ``/proc``): on a machine whose cores are shared with other work, the wall time says
+as much about the others as about the exit; the machine's load average is printed too.
+
 A render that finished before its signal came is not an interrupt: it is counted apart and
 run again, until ``--count`` (50) renders were interrupted. A process still running 60 s after
 its signal is killed and counted as hung. Prints one line per interrupt and a summary;
@@ -23,6 +27,7 @@ defaults on two cores).
 from __future__ import annotations
 
 import argparse
+import os
 import random
 import shutil
 import signal
@@ -42,6 +47,8 @@ TREX = [sys.executable, "-c", "import faulthandler, signal, sys; "
         "from trex.cli import main; main()"]
 BUSY = "while True: pass"
 HUNG = 60.0  # seconds after the signal: killed, counted as hung
+DUMP = 20.0  # seconds after the signal: faulthandler prints every thread's stack to its log
+TICK = os.sysconf("SC_CLK_TCK")
 POLL = 0.01
 
 
@@ -56,6 +63,7 @@ class Outcome:
     exit_after: float | None
     left: list[str]
     stderr: str
+    cpu_after: float | None = None
 
     @property
     def interrupted(self) -> bool:
@@ -64,6 +72,8 @@ class Outcome:
     def problems(self, deadline: float) -> list[str]:
         if self.exit_after is None:
             return [f"hung: still running {HUNG:.0f} s after the signal"]
+        if self.status == -signal.SIGUSR1:  # faulthandler had ended: it was exiting
+            return [f"still exiting {DUMP:.0f} s after the signal (ended by the stack request)"]
         found = []
         if self.exit_after > deadline:
             found.append(f"exited {self.exit_after:.2f} s after the signal")
@@ -118,42 +128,67 @@ def calibrate(scene: str, scratch: Path, parallel: int) -> float:
     return statistics.median(lengths)
 
 
-def interrupt(renders: list[tuple[Render, int, float]], deadline: float) -> list[Outcome]:
-    """Send each render its signal ``delay`` after it began, and note when each ends (one
-    still running ``deadline`` after its signal is asked for its threads' stacks; one still
-    running :data:`HUNG` after it is killed)."""
-    sent: dict[int, float] = {}
-    ended: dict[int, float] = {}
-    dumped: set[int] = set()
-    while len(ended) < len(renders):
+def cpu_seconds(pid: int) -> float | None:
+    """CPU seconds (user + system) process ``pid`` has used: also readable for a process that
+    has exited and is not yet reaped. None: no such process."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return None
+    fields = stat.rsplit(")", 1)[1].split()  # from the state on: utime, stime are 12th, 13th
+    return (int(fields[11]) + int(fields[12])) / TICK
+
+
+class Watch:
+    """One render under interrupt: when its signal went, when it ended, its CPU then."""
+
+    def __init__(self, render: Render, signum: int, delay: float) -> None:
+        self.render, self.signum, self.delay = render, signum, delay
+        self.sent: float | None = None
+        self.ended: float | None = None
+        self.cpu_sent: float | None = None
+        self.cpu_last: float | None = None
+        self.dumped = False
+
+    def step(self, now: float) -> None:
+        """One poll: note its CPU (before reaping), see if it ended, send what is due."""
+        proc = self.render.proc
+        self.cpu_last = cpu_seconds(proc.pid) or self.cpu_last
+        if proc.poll() is not None:
+            self.ended = now
+        elif self.sent is None:
+            if self.render.poll_began() and now >= self.render.began + self.delay:
+                self.cpu_sent = self.cpu_last
+                proc.send_signal(self.signum)
+                self.sent = time.monotonic()
+        elif now - self.sent > HUNG:
+            self.render.kill()
+            self.ended = now
+        elif now - self.sent > DUMP and not self.dumped:
+            self.dumped = True
+            proc.send_signal(signal.SIGUSR1)  # faulthandler: where it is stuck
+
+    def outcome(self) -> Outcome:
+        render, status = self.render, self.render.proc.returncode
+        left, log = render.left(), render.log.read_text()
+        if self.sent is None:  # it ended before its signal was due
+            return Outcome(self.signum, self.delay, status, None, left, log)
+        after = None if status == -signal.SIGKILL else self.ended - self.sent
+        cpu = (None if self.cpu_sent is None or self.cpu_last is None
+               else self.cpu_last - self.cpu_sent)
+        return Outcome(self.signum, self.delay, status, after, left, log, cpu)
+
+
+def interrupt(renders: list[tuple[Render, int, float]]) -> list[Outcome]:
+    """Send each render its signal ``delay`` after it began, and note when each ends."""
+    watches = [Watch(*r) for r in renders]
+    while any(w.ended is None for w in watches):
         now = time.monotonic()
-        for k, (render, signum, delay) in enumerate(renders):
-            if k in ended:
-                continue
-            if render.proc.poll() is not None:
-                ended[k] = now
-            elif k not in sent:
-                if render.poll_began() and now >= render.began + delay:
-                    render.proc.send_signal(signum)
-                    sent[k] = time.monotonic()
-            elif now - sent[k] > HUNG:
-                render.kill()
-                ended[k] = now
-            elif now - sent[k] > deadline and k not in dumped:
-                dumped.add(k)
-                render.proc.send_signal(signal.SIGUSR1)  # faulthandler: where it is stuck
+        for watch in watches:
+            if watch.ended is None:
+                watch.step(now)
         time.sleep(POLL)
-    return [_outcome(render, signum, delay, sent.get(k), ended[k])
-            for k, (render, signum, delay) in enumerate(renders)]
-
-
-def _outcome(render: Render, signum: int, delay: float, sent: float | None,
-             ended: float) -> Outcome:
-    status = render.proc.returncode
-    if sent is None:  # it ended before its signal was due
-        return Outcome(signum, delay, status, None, render.left(), render.log.read_text())
-    after = None if status == -signal.SIGKILL else ended - sent
-    return Outcome(signum, delay, status, after, render.left(), render.log.read_text())
+    return [w.outcome() for w in watches]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -173,14 +208,15 @@ def main(argv: list[str] | None = None) -> int:
     try:
         length = calibrate(args.scene, scratch, args.parallel)
         print(f"{args.scene} at -q l, {args.parallel} at once beside {args.load} busy "
-              f"process(es): a render takes {length:.1f} s from its beginning to its exit")
+              f"process(es): a render takes {length:.1f} s from its beginning to its exit; "
+              f"load average {_load()} on {os.cpu_count()} cores")
         signals = (signal.SIGINT, signal.SIGTERM)
         while len(done) < args.count:
             batch = [(Render(args.scene, scratch / f"r{len(done)}-{k}-{finished_first}"),
                       signals[(len(done) + k) % 2], draw.uniform(0, length))
                      for k in range(min(args.parallel, args.count - len(done)))]
             try:
-                outcomes = interrupt(batch, args.deadline)
+                outcomes = interrupt(batch)
             finally:
                 for render, _, _ in batch:
                     render.kill()
@@ -201,15 +237,20 @@ def main(argv: list[str] | None = None) -> int:
 def _print(n: int, outcome: Outcome, deadline: float) -> None:
     name = signal.Signals(outcome.signum).name
     after = "—" if outcome.exit_after is None else f"{outcome.exit_after:5.2f} s"
+    cpu = "" if outcome.cpu_after is None else f" (CPU {outcome.cpu_after:4.2f} s)"
     problems = outcome.problems(deadline)
     verdict = "ok" if not problems else "FAILED: " + "; ".join(problems)
     print(f"{n:3d}  {name:7s} {outcome.delay:5.2f} s into the render  exit {outcome.status}"
-          f" after {after}  {verdict}", flush=True)
-    if problems:  # where it was when the deadline passed (faulthandler, on SIGUSR1)
+          f" after {after}{cpu}  {verdict}", flush=True)
+    if problems:  # where it was DUMP s after the signal (faulthandler, on SIGUSR1)
         stacks = [line for line in outcome.stderr.splitlines()
                   if line.startswith(("Thread 0x", "Current thread", "  File"))]
         for line in stacks[:60]:
             print(f"       {line}")
+
+
+def _load() -> str:
+    return " ".join(f"{x:.1f}" for x in os.getloadavg())
 
 
 def _summary(done: list[Outcome], finished_first: int, deadline: float) -> int:
@@ -219,9 +260,15 @@ def _summary(done: list[Outcome], finished_first: int, deadline: float) -> int:
         mine = [o for o in done if o.signum == signum]
         bad = sum(1 for o in mine if o.problems(deadline))
         print(f"{signal.Signals(signum).name}: {len(mine)} interrupts, {len(mine) - bad} ok")
+    cpus = [o.cpu_after for o in done if o.cpu_after is not None]
     if times:
-        print(f"exit after the signal: median {statistics.median(times):.2f} s, "
-              f"max {max(times):.2f} s (deadline {deadline:.0f} s)")
+        within = sum(1 for t in times if t <= deadline)
+        print(f"exit after the signal: median {statistics.median(times):.2f} s, max "
+              f"{max(times):.2f} s; {within} of {len(times)} within {deadline:.0f} s")
+    if cpus:
+        print(f"CPU spent after the signal: median {statistics.median(cpus):.2f} s, "
+              f"max {max(cpus):.2f} s")
+    print(f"load average now {_load()}")
     print(f"renders that finished before their signal (not counted): {finished_first}")
     print(f"interrupted renders: {len(done)}, failed: {len(failed)}")
     return 1 if failed else 0
