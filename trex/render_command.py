@@ -297,15 +297,16 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
     SIGTERM raise :class:`Interrupted` while it renders (:func:`interrupts_raise`): either
     way, manim's encoder threads are closed however the render ends (:mod:`trex.encoders`).
     """
-    temp = Path(tempfile.mkdtemp(prefix=f".{output.name}.", suffix=".render", dir=output.parent))
-    try:
-        with contextlib.ExitStack() as own:
-            if signals is None:  # deferring a signal needs our handler (see Signals.deferred)
-                signals = own.enter_context(interrupts_raise())
+    with contextlib.ExitStack() as own:
+        if signals is None:  # deferring a signal needs our handler (see Signals.deferred)
+            signals = own.enter_context(interrupts_raise())
+        temp = Path(tempfile.mkdtemp(prefix=f".{output.name}.", suffix=".render",
+                                     dir=output.parent))
+        try:
             return _render_in(make_scene, temp, output, fmt, quality, progress=progress,
                               srt=srt, signals=signals, steps=steps)
-    finally:
-        shutil.rmtree(temp, ignore_errors=True)
+        finally:  # still under the handler: a second signal does not stop the removal
+            shutil.rmtree(temp, ignore_errors=True)
 
 
 def _settings(media: Path, fmt: str, quality: str, progress: bool) -> dict:
