@@ -17,12 +17,19 @@ directory, in this process (so imports are not counted; the text caches of
 4. Gravity rendered twice with manim's cache on, in one media directory: the time of the
    second render and how many plays it took from the cache ("Using cached data" in manim's
    log; the cache key hashes the mobjects and animations, so every play hits only if the
-   scene builds the same points every time). Target: ≤ 2 s.
+   scene builds the same points every time). Target: ≤ 2 s;
+5. the commands side by side, each a fresh process as a user starts it, from the repository
+   root (so plain manim reads manim.cfg): ``trex render gravity -q l`` against
+   ``manim -ql --disable_caching scenes/gravity.py Gravity``, alternately ``--repeat``
+   times, best and median wall time of each and their ratio (trex ÷ manim; target ≤ 1.05,
+   issue 24 item 13: trex render once held one encoder in flight where manim.cfg has 4),
+   with the CPU time of each (``--trex-code DIR`` runs an older checkout's trex).
 
 It prints numbers and never fails on timings. The last line is exactly
 ``render throughput ratio vs bare manim: N.NN`` (ours ÷ bare; target ≥ 0.8).
 
-Run from the repository root: ``python bench/render.py`` (``--skip-builds`` leaves out 3).
+Run from the repository root: ``python bench/render.py`` (``--skip-builds`` leaves out 3,
+``--commands-only`` runs 5 alone; ``--quality`` sets 5's quality).
 """
 
 from __future__ import annotations
@@ -31,8 +38,11 @@ import argparse
 import importlib.util
 import inspect
 import logging
+import os
+import resource
 import shutil
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -186,6 +196,61 @@ def render(cls: type[Scene], media: Path, caching: bool) -> Run:
     return Run(wall, seconds, counter.hits, cpu, main)
 
 
+def command_time(argv: list[str], media: Path, env: dict | None = None) -> tuple[float, float]:
+    """Wall and CPU seconds (user + system, all its threads) of one command run from the
+    repository root (its output to /dev/null: both print progress bars). The CPU time hardly
+    depends on what else the machine runs; the wall time does."""
+    media.mkdir()
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    subprocess.run(argv, cwd=ROOT, check=True, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL, env=env)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+
+
+def commands_side_by_side(scratch: Path, repeat: int, quality: str,
+                          trex_code: Path | None = None) -> float:
+    """Section 5: ``trex render`` against plain ``manim`` on Gravity; returns the ratio of
+    their best wall times (trex ÷ manim). ``trex_code``: the checkout whose trex runs
+    (PYTHONPATH; None: the installed one), to compare a change with what came before."""
+    bin_dir = Path(sys.executable).parent
+    scene = ROOT / "scenes" / f"{SCENE_FILE}.py"
+
+    def trex(out: Path) -> list[str]:
+        return [str(bin_dir / "trex"), "render", SCENE_FILE, "-q", quality,
+                "-o", str(out / f"{SCENE_NAME}.mp4")]
+
+    def manim_cli(out: Path) -> list[str]:
+        return [str(bin_dir / "manim"), f"-q{quality}", "--disable_caching",
+                "--media_dir", str(out), str(scene), SCENE_NAME]
+
+    env = None if trex_code is None else {**os.environ, "PYTHONPATH": str(trex_code)}
+    runs: dict[str, list[tuple[float, float]]] = {"trex render": [], "manim": []}
+    for k in range(repeat):  # interleaved, so that a slow spell of the machine hits both
+        runs["trex render"].append(command_time(trex(scratch / f"trex{k}"),
+                                                scratch / f"trex{k}", env))
+        runs["manim"].append(command_time(manim_cli(scratch / f"manim{k}"),
+                                          scratch / f"manim{k}"))
+    print(f"{SCENE_NAME} at -q {quality}, each a fresh process (best of {repeat}; median), "
+          f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores:")
+    best = {name: min(w for w, _ in done) for name, done in runs.items()}
+    for name, done in runs.items():
+        walls, cpus = [w for w, _ in done], [c for _, c in done]
+        print(f"  {name:12s} wall {best[name]:7.2f} s ({statistics.median(walls):.2f} s)   "
+              f"CPU {min(cpus):7.2f} s ({statistics.median(cpus):.2f} s)")
+    ratio = best["trex render"] / best["manim"]
+
+    def median_ratio(at: int) -> float:
+        return (statistics.median(r[at] for r in runs["trex render"])
+                / statistics.median(r[at] for r in runs["manim"]))
+
+    print(f"  trex render ÷ manim: wall {ratio:.3f} (target ≤ 1.05; medians "
+          f"{median_ratio(0):.3f}), CPU medians {median_ratio(1):.3f}")
+    return ratio
+
+
 def _main(runs: list[Run]) -> float:
     return statistics.median(r.main for r in runs)
 
@@ -199,9 +264,21 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--skip-builds", action="store_true", help="no dry-run build times")
     parser.add_argument("--repeat", type=int, default=3,
                         help="renders of each scene for the throughput (the best counts)")
+    parser.add_argument("--commands-only", action="store_true",
+                        help="only trex render against plain manim (section 5)")
+    parser.add_argument("--quality", choices=["l", "m", "h", "k"], default="l",
+                        help="the quality of section 5")
+    parser.add_argument("--trex-code", type=Path, default=None,
+                        help="section 5 runs the trex of this checkout (e.g. an older one)")
     args = parser.parse_args(argv)
     logging.getLogger("manim").setLevel(logging.INFO)
     scratch = Path(tempfile.mkdtemp(prefix="trex-bench-render-"))
+    if args.commands_only:
+        try:
+            commands_side_by_side(scratch, args.repeat, args.quality, args.trex_code)
+        finally:
+            shutil.rmtree(scratch, ignore_errors=True)
+        return
     try:
         ours_cls = handed(getattr(load_module(SCENE_FILE), SCENE_NAME))
         scene, plays = build(ours_cls)
@@ -249,6 +326,7 @@ def main(argv: list[str] | None = None) -> None:
         print(f"cached render: first {first.wall:.2f} s ({first.hits} hits), second "
               f"{second.wall:.2f} s with {second.hits}/{len(graph)} plays from cache "
               "(target ≤ 2 s)")
+        commands_side_by_side(scratch, args.repeat, args.quality, args.trex_code)
         print(f"render throughput ratio vs bare manim: {rates['ours'] / rates['bare']:.2f}")
     finally:
         shutil.rmtree(scratch, ignore_errors=True)

@@ -204,10 +204,36 @@ def _encoder_threads() -> list:
             if t.name.startswith("partial-movie-encoder") and t.is_alive()]
 
 
-def test_an_interrupt_as_an_encoder_starts_orphans_no_thread(tmp_path, monkeypatch):
+def _scaling_scene():
+    scene_file = Path(__file__).resolve().parents[1] / "scenes" / "scaling.py"
+    return render_command.scene_input(render_command.load_scene_class(scene_file, None),
+                                      "counterexample")
+
+
+def _render_interrupted(tmp_path, own_signals: bool) -> BaseException:
+    """What render_into of the scaling scene raised, which must be a KeyboardInterrupt; with
+    ``own_signals`` inside :func:`interrupts_raise`, else without (render_into then installs
+    its own)."""
+    out = tmp_path / "scaling.mp4"
+    with pytest.raises(KeyboardInterrupt) as raised:  # a bare one would stop pytest itself
+        if own_signals:
+            with render_command.interrupts_raise() as signals:
+                render_command.render_into(_scaling_scene(), out, "mp4", "low_quality",
+                                           progress=False, signals=signals)
+        else:
+            render_command.render_into(_scaling_scene(), out, "mp4", "low_quality",
+                                       progress=False)
+    return raised.value
+
+
+@pytest.mark.parametrize("own_signals", [True, False], ids=["signals", "no-signals"])
+def test_an_interrupt_as_an_encoder_starts_orphans_no_thread(tmp_path, monkeypatch,
+                                                              own_signals):
     """SIGINT arriving just after manim started a segment's encoder thread, before its writer
     kept the job: the render is interrupted and no encoder thread is left waiting for frames
-    (one would keep the process from ever exiting)."""
+    (one would keep the process from ever exiting). Also when the caller hands render_into
+    no ``signals``: blocking signals in the main thread (as it did then) does not defer them,
+    since the kernel hands them to an encoder thread."""
     from manim.scene import scene_file_writer
 
     started = scene_file_writer._PartialMovieEncodeJob.__init__
@@ -222,20 +248,65 @@ def test_an_interrupt_as_an_encoder_starts_orphans_no_thread(tmp_path, monkeypat
     monkeypatch.setattr(scene_file_writer._PartialMovieEncodeJob, "__init__",
                         start_then_interrupt)
     before = set(_encoder_threads())
-    scene_file = Path(__file__).resolve().parents[1] / "scenes" / "scaling.py"
-    cls = render_command.scene_input(render_command.load_scene_class(scene_file, None),
-                                     "counterexample")
     try:
-        with pytest.raises(render_command.Interrupted), \
-                render_command.interrupts_raise() as signals:
-            render_command.render_into(cls, tmp_path / "scaling.mp4", "mp4", "low_quality",
-                                       progress=False, signals=signals)
+        raised = _render_interrupted(tmp_path, own_signals)
     finally:
         orphans = [t for t in _encoder_threads() if t not in before]
         for job in sent:  # unblock an orphan, so a failure here does not hang the suite
             job.abort()
     assert sent, "no encoder was started"
     assert orphans == []
+    assert isinstance(raised, render_command.Interrupted)
+    assert leftovers(tmp_path) == []
+
+
+def test_an_interrupt_inside_a_full_seal_still_exits(tmp_path, monkeypatch):
+    """The hang of issue 24 item 13, forced: manim's ``seal()`` marks the job sealed, then
+    blocks putting the closing message on a full queue (the encoder is behind); SIGINT
+    arrives inside that put. manim's abort then sealed again, sending nothing, and joined
+    the encoder thread for ever. Now the render is interrupted at once, and no thread is
+    left. (A watchdog unblocks the thread after 30 s, so that the old hang fails the test
+    instead of hanging the suite.)"""
+    from manim import config
+    from manim.scene import scene_file_writer
+
+    write_frame = scene_file_writer.VideoSegmentEncoder.write_frame
+
+    def write_slowly(encoder, *args, **kwargs):  # an encoder behind, as on loaded cores
+        time.sleep(0.2)
+        return write_frame(encoder, *args, **kwargs)
+
+    seal = scene_file_writer._PartialMovieEncodeJob.seal
+    sealed = []
+
+    def seal_interrupted(job):
+        if not sealed and job.queue.full():  # the put below will block: signal inside it
+            sealed.append(job)
+            threading.Timer(0.05, os.kill, (os.getpid(), signal.SIGINT)).start()
+        seal(job)
+
+    monkeypatch.setattr(config, "encoder_queue_size", 1)
+    monkeypatch.setattr(scene_file_writer.VideoSegmentEncoder, "write_frame", write_slowly)
+    monkeypatch.setattr(scene_file_writer._PartialMovieEncodeJob, "seal", seal_interrupted)
+    hung = threading.Event()
+
+    def watchdog():
+        if not done.wait(30):
+            hung.set()
+            for job in sealed:
+                job.queue.put((-1, None))
+
+    done = threading.Event()
+    threading.Thread(target=watchdog, daemon=True).start()
+    before = set(_encoder_threads())
+    try:
+        raised = _render_interrupted(tmp_path, own_signals=True)
+    finally:
+        done.set()
+    assert sealed, "no seal found its queue full"
+    assert not hung.is_set(), "the interrupted render hung in manim's abort"
+    assert isinstance(raised, render_command.Interrupted)
+    assert [t for t in _encoder_threads() if t not in before] == []
     assert leftovers(tmp_path) == []
 
 
@@ -247,3 +318,23 @@ def test_a_signal_deferred_is_raised_at_the_end_even_if_the_block_fails():
     done = render_command.Signals()
     with done.deferred():
         done.signum, done.done = signal.SIGINT, True  # after the output is in place: no matter
+
+
+def test_trex_render_runs_as_many_encoders_as_manim_cfg(tmp_path, monkeypatch):
+    """No longer one encoder at a time (the old workaround for the hang): manim.cfg's
+    number, read from the project's file wherever trex runs from; none set, manim's own."""
+    import configparser
+
+    parser = configparser.ConfigParser()
+    parser.read(render_command.MANIM_CFG, encoding="utf-8")
+    wanted = parser.getint("CLI", "max_inflight_encoders")
+    assert wanted > 1
+    monkeypatch.chdir(tmp_path)  # not the repository: its manim.cfg is still the one read
+    settings = render_command._settings(tmp_path / "media", "mp4", "low_quality", False)
+    assert settings["max_inflight_encoders"] == wanted
+    bare = tmp_path / "manim.cfg"
+    bare.write_text("[CLI]\nmedia_dir = media\n")
+    assert render_command.inflight_encoders(bare) is None
+    monkeypatch.setattr(render_command, "MANIM_CFG", bare)
+    assert "max_inflight_encoders" not in render_command._settings(
+        tmp_path / "media", "mp4", "low_quality", False)

@@ -2,7 +2,8 @@
 
 0 fine; 1 a finding (a wrong claim, a counterexample, a stopped triangulation, a snapshot that
 differs, a chapter that failed to render); 2 bad input or a failing function of one's own
-(click's usage errors are 2 as well); 130 interrupted by Ctrl-C, as a shell reports SIGINT.
+(click's usage errors are 2 as well); 130 interrupted by Ctrl-C, 143 stopped by SIGTERM:
+128 + the signal's number, as a shell reports it.
 
 >>> INTERRUPTED == 128 + 2
 True
@@ -18,6 +19,15 @@ INVALID = 2
 #: 128 + the signal's number is how a shell reports a process a signal ended.
 SIGNALLED = 128
 INTERRUPTED = SIGNALLED + signal.SIGINT
+
+
+def interrupted(signum: int) -> int:
+    """The status of a command stopped by signal ``signum`` (128 + its number).
+
+    >>> interrupted(signal.SIGINT), interrupted(signal.SIGTERM)
+    (130, 143)
+    """
+    return SIGNALLED + int(signal.Signals(signum))
 
 
 def worst(*statuses: int) -> int:

@@ -12,6 +12,7 @@ render leaves nothing at the output path, and no temporary files behind.
 
 from __future__ import annotations
 
+import configparser
 import contextlib
 import importlib.util
 import os
@@ -38,16 +39,19 @@ from story.scene_kinds import (
     plays_one,
     plays_several,
 )
+from trex import encoders, exit_status
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit, make_parent
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
+#: The project's manim settings, which plain ``manim`` reads when run from the repository
+MANIM_CFG = SCENES_DIR.parent / "manim.cfg"
 QUALITIES = {"l": "low_quality", "m": "medium_quality", "h": "high_quality", "k": "fourk_quality"}
 FORMATS = ("mp4", "gif", "png")
-EXIT_FAILED = 1
+EXIT_FAILED = exit_status.FINDING
 #: x264's options, as manim.cfg sets them for ``manim`` itself: one thread and no macroblock
 #: tree, so that the same input gives the same video, byte for byte (see manim.cfg)
 X264_OPTIONS = {"threads": "1", "x264-params": "mbtree=0"}
-EXIT_SIGNAL = 128  # + the signal's number, as a shell reports it
+EXIT_SIGNAL = exit_status.SIGNALLED  # + the signal's number, as a shell reports it
 
 
 class Interrupted(KeyboardInterrupt):
@@ -273,29 +277,17 @@ def _artifact(scene, fmt: str, media: Path) -> Path:
     return found[0]
 
 
-def _abort_encoders(scene) -> None:
-    """Stop manim's encoder threads after an interrupt (they would keep the process alive)."""
-    writer = getattr(getattr(scene, "renderer", None), "file_writer", None)
-    abort = getattr(writer, "abort_encode_jobs", None)
-    if abort is not None:
-        with contextlib.suppress(Exception):
-            abort()
+def inflight_encoders(cfg: Path = MANIM_CFG) -> int | None:
+    """How many encoders manim.cfg lets run at once (``[CLI] max_inflight_encoders``; None:
+    not set, manim's own default). Read from the project's file, so that ``trex render``
+    encodes as plain ``manim`` does from the repository, wherever it is run from.
 
-
-def _hold_signals_while_encoders_start(scene, signals: Signals | None) -> None:
-    """Defer SIGINT/SIGTERM while manim opens a segment: its encoder thread starts before the
-    writer keeps the job, and an interrupt in between would orphan a thread that waits for
-    frames forever (the process never exits)."""
-    writer = getattr(getattr(scene, "renderer", None), "file_writer", None)
-    opener = getattr(writer, "open_partial_movie_stream", None)
-    if opener is None:
-        return
-
-    def open_held(*args, **kwargs):
-        with signals.deferred() if signals is not None else _signals_held():
-            return opener(*args, **kwargs)
-
-    writer.open_partial_movie_stream = open_held
+    >>> inflight_encoders()
+    4
+    """
+    parser = configparser.ConfigParser()
+    parser.read(cfg, encoding="utf-8")
+    return parser.getint("CLI", "max_inflight_encoders", fallback=None)
 
 
 def render_into(make_scene: Callable[[], object], output: Path, fmt: str, quality: str,
@@ -310,55 +302,70 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
     still cancels the move, and one arriving after the move no longer counts. With ``steps``
     (what made the render: its settings), the step marks the scene noted while rendering
     (:mod:`metaphors.steps`) are written beside the video as ``NAME.steps.json``
-    (:mod:`trex.clips`), ``steps`` as their ``made_by``.
+    (:mod:`trex.clips`), ``steps`` as their ``made_by``. Without ``signals``, SIGINT and
+    SIGTERM raise :class:`Interrupted` while it renders (:func:`interrupts_raise`): either
+    way, manim's encoder threads are closed however the render ends (:mod:`trex.encoders`).
     """
+    with contextlib.ExitStack() as own:
+        if signals is None:  # deferring a signal needs our handler (see Signals.deferred)
+            signals = own.enter_context(interrupts_raise())
+        temp = Path(tempfile.mkdtemp(prefix=f".{output.name}.", suffix=".render",
+                                     dir=output.parent))
+        try:
+            return _render_in(make_scene, temp, output, fmt, quality, progress=progress,
+                              srt=srt, signals=signals, steps=steps)
+        finally:  # still under the handler: a second signal does not stop the removal
+            shutil.rmtree(temp, ignore_errors=True)
+
+
+def _settings(media: Path, fmt: str, quality: str, progress: bool) -> dict:
+    """What manim is told for one render into ``media``."""
+    settings = {
+        "quality": quality,
+        "format": fmt,
+        "media_dir": str(media),
+        "disable_caching": True,
+        "verbosity": "WARNING",
+        "progress_bar": "display" if progress else "none",
+        "preview": False,
+        # x264 as manim.cfg has it (the same input, the same bytes)
+        "video_encoder_options": dict(X264_OPTIONS),
+    }
+    inflight = inflight_encoders(MANIM_CFG)
+    if inflight is not None:  # as many encoders at once as plain manim runs (manim.cfg)
+        settings["max_inflight_encoders"] = inflight
+    return settings
+
+
+def _render_in(make_scene: Callable[[], object], temp: Path, output: Path, fmt: str,
+               quality: str, *, progress: bool, srt: bool, signals: Signals,
+               steps: dict | None) -> Path:
+    """:func:`render_into`'s work, in its temporary directory ``temp``."""
     from manim import tempconfig
 
-    temp = Path(tempfile.mkdtemp(prefix=f".{output.name}.", suffix=".render", dir=output.parent))
-    try:
-        media = temp / "media"
-        settings = {
-            "quality": quality,
-            "format": fmt,
-            "media_dir": str(media),
-            "disable_caching": True,
-            "verbosity": "WARNING",
-            "progress_bar": "display" if progress else "none",
-            "preview": False,
-            # x264 as manim.cfg has it (the same input, the same bytes); but one encoder at a
-            # time, not manim.cfg's 4: with several in flight, an interrupted render now and
-            # then never exited (tests/test_render_command.py, two renders interrupted at once
-            # under load)
-            "max_inflight_encoders": 1,
-            "video_encoder_options": dict(X264_OPTIONS),
-        }
-        with tempconfig(settings):
-            scene = make_scene()
-            _hold_signals_while_encoders_start(scene, signals)
-            try:
-                scene.render()
-            except BaseException:
-                _abort_encoders(scene)
-                raise
-            produced = _artifact(scene, fmt, media)
-        marks = _write_marks(scene, produced, steps) if steps is not None else None
-        with _signals_held(), (signals.deferred() if signals is not None
-                               else contextlib.nullcontext()):
-            if signals is not None:
-                signals.check()
-            subtitles = produced.with_suffix(".srt")
-            if srt and fmt != "png" and subtitles.is_file():
-                os.replace(subtitles, output.with_suffix(".srt"))
-            if marks is not None:
-                from trex.clips import marks_path  # loaded already: _write_marks used it
+    media = temp / "media"
+    with tempconfig(_settings(media, fmt, quality, progress)):
+        scene = make_scene()
+        guard = encoders.guard(scene, signals.deferred)
+        try:
+            scene.render()
+        except BaseException:
+            guard.stop()  # no encoder thread left waiting for frames: the process can exit
+            raise
+        produced = _artifact(scene, fmt, media)
+    marks = _write_marks(scene, produced, steps) if steps is not None else None
+    with signals.deferred():  # the moves happen together, or not at all
+        signals.check()
+        subtitles = produced.with_suffix(".srt")
+        if srt and fmt != "png" and subtitles.is_file():
+            os.replace(subtitles, output.with_suffix(".srt"))
+        if marks is not None:
+            from trex.clips import marks_path  # loaded already: _write_marks used it
 
-                os.replace(marks, marks_path(output))
-            os.replace(produced, output)
-            if signals is not None:
-                signals.done = True
-        return output
-    finally:
-        shutil.rmtree(temp, ignore_errors=True)
+            os.replace(marks, marks_path(output))
+        os.replace(produced, output)
+        signals.done = True
+    return output
 
 
 def _write_marks(scene, video: Path, made_by: dict) -> Path:
@@ -416,7 +423,7 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
                     heuristic)
         except Interrupted as exc:
             click.echo(f"error: {scene}: render interrupted; nothing written", err=True)
-            raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
+            raise click.exceptions.Exit(exit_status.interrupted(exc.signum)) from None
     click.echo(str(target))
 
 
