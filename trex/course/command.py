@@ -19,7 +19,7 @@ from trex.course.manifest import MANIFEST, read_manifest, reusable
 from trex.course.run import run_tasks, stderr_echo
 from trex.course.schema import CourseError, read_course
 from trex.course.tasks import Task, plan
-from trex.inputs import error_line, fail, make_parent
+from trex.inputs import error_line, fail
 from trex.render_command import EXIT_FAILED, EXIT_SIGNAL, Interrupted, interrupts_raise
 
 
@@ -30,10 +30,9 @@ def _check_output(out_dir: Path, tasks: list[Task]) -> None:
 
     if out_dir.exists() and not out_dir.is_dir():
         fail(f"{out_dir}: exists and is not a directory")
-    try:
-        make_parent(out_dir / MANIFEST)
-    except ValueError as exc:
-        fail(f"{out_dir}: {exc}")
+    existing = next(p for p in (out_dir, *out_dir.resolve().parents) if p.exists())
+    if not existing.is_dir() or not os.access(existing, os.W_OK | os.X_OK):
+        fail(f"{out_dir}: cannot write to {existing}")  # created only when the course runs
     for task in tasks:
         if task.kind == "slides":
             folder = out_dir / Path(task.files[0]).parent
@@ -94,7 +93,7 @@ def course(course_file: str, out_dir: str, workers: int | None, scheduler: str |
     if dry_run:
         _dry_run(tasks, target)
         return
-    target.mkdir(exist_ok=True)
+    target.mkdir(parents=True, exist_ok=True)
     began = time.monotonic()
     with interrupts_raise() as signals:
         try:

@@ -224,12 +224,21 @@ def _scene(course: Course, item: SceneItem, checked: _Checked) -> list[Task]:
         polygon = _polygon(course, given)
         if polygon is not None:
             _dry_run(item.name, f"polygons[{k}]", cls, polygon, checked)
-        name = f"scene-{scene_slug(item.scene)}-{slug(given) if given else 'default'}"
+        name = f"scene-{scene_slug(item.scene)}{_polygon_part(cls, given)}"
         settings = {"scene": scene, "polygon": polygon, "format": item.format,
                     "quality": item.quality, "panel": item.panel}
         tasks.append(Task(name, "scene", item.name, (f"{name}.{item.format}",), settings,
                           _inputs(polygon, scene)))
     return tasks
+
+
+def _polygon_part(cls: type, given: str | None) -> str:
+    """``-star`` for a polygon given, else the scene's own (``-counterexample``); nothing
+    for a scene of several runs, or of none."""
+    own = getattr(cls, "polygon", None)
+    if given is None and (getattr(cls, "runs", None) or not isinstance(own, str)):
+        return ""
+    return f"-{slug(given if given is not None else own)}"
 
 
 def _slides(course: Course, item: Slides, checked: _Checked,
