@@ -85,6 +85,7 @@ class Slides:
     quality: str
     polygon: str | None
     panel: str | None
+    chapters: tuple[str, ...] | None = None  # the lecture's slides only (None: all)
 
     @property
     def name(self) -> str:
@@ -210,10 +211,14 @@ def _scene(number: int, table: Any, quality: str) -> SceneItem:
 
 
 def _slides(number: int, table: Any, quality: str) -> Slides:
-    f = _Fields(f"slides {number}", table, ("scene", "quality", "polygon", "panel"))
+    f = _Fields(f"slides {number}", table, ("scene", "quality", "polygon", "panel", "chapters"))
     f.required("scene")
-    return Slides(number, f.text("scene"), f.choice("quality", QUALITY_KEYS, quality),
-                  f.text("polygon"), f.choice("panel", PANELS, None))
+    slides = Slides(number, f.text("scene"), f.choice("quality", QUALITY_KEYS, quality),
+                    f.text("polygon"), f.choice("panel", PANELS, None), f.texts("chapters"))
+    if slides.chapters is not None and slides.scene != "lecture":
+        raise CourseError(slides.name, "chapters", "only for the lecture's slides "
+                                                   '(scene = "lecture")')
+    return slides
 
 
 def _exercises(number: int, table: Any, quality: str) -> Exercises:

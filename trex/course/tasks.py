@@ -248,9 +248,9 @@ def _slides(course: Course, item: Slides, checked: _Checked,
     settings: dict[str, Any] = {"scene": item.scene, "quality": item.quality,
                                 "polygon": polygon, "panel": item.panel}
     if item.scene == LECTURE_SCENE:
-        chapters = _chapters(course, item.name, None)
+        chapters = _chapters(course, item.name, item.chapters)
         _check_chapters(item.name, chapters, polygon, checked)
-        parts = lectures.get((item.quality, polygon, item.panel, None), [])
+        parts = lectures.get((item.quality, polygon, item.panel, item.chapters), [])
         settings["chapters"] = [_chapter_dict(c) for c in chapters]
         settings["lecture"] = parts[0].id.rpartition("/chapters/")[0] if parts else None
         return [Task(name, "slides", item.name, (f"{name}/index.html",), settings,

@@ -9,6 +9,8 @@ A body raises :class:`TaskFailed` with a one-line reason; it returns a :class:`D
 
 from __future__ import annotations
 
+import contextlib
+import io
 import os
 import shutil
 import tempfile
@@ -43,7 +45,9 @@ def run_task(task: Task, out_dir: str, *deps: Done) -> Done:
     began = time.monotonic()
     root = Path(out_dir)
     try:
-        files, seconds = BODIES[task.kind](task, root, deps)
+        # what the commands' functions print (``reused …``) would land in the client's stdout
+        with contextlib.redirect_stdout(io.StringIO()):
+            files, seconds = BODIES[task.kind](task, root, deps)
     except TaskFailed:
         raise
     except Exception as exc:  # a render that failed: one line, as trex render says it
