@@ -26,6 +26,8 @@ from trex.course.manifest import record, reusable, write_manifest
 from trex.course.run import sweep
 
 REPO = Path(__file__).resolve().parent.parent
+# one xdist worker runs them all: the course is rendered once, by the module's fixture
+pytestmark = pytest.mark.xdist_group("course")
 
 TINY = textwrap.dedent("""
     from manim import BLUE, Circle, Create, FadeOut, Scene, Square
@@ -361,3 +363,13 @@ def test_a_worker_killed_mid_task_has_its_task_run_again(tmp_path):
     with av.open(str(out / "scene-slow-Slow.mp4")) as container:
         assert container.streams.video[0].frames == 16  # both plays (8 frames each at -ql)
     assert sorted(p.name for p in out.iterdir()) == ["course.json", "scene-slow-Slow.mp4"]
+
+
+def test_a_scheduler_that_cannot_be_reached_is_one_line_and_leaves_nothing(folder, tmp_path):
+    out = tmp_path / "out"
+    code, stdout, stderr = in_process("course", str(folder / "course.toml"), "-o", str(out),
+                                      "--scheduler", "tcp://127.0.0.1:1")
+    assert code == 2 and stdout == ""
+    assert stderr.startswith("error: tcp://127.0.0.1:1: Timed out trying to connect")
+    assert len(stderr.splitlines()) == 1
+    assert not out.exists()

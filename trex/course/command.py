@@ -42,12 +42,22 @@ def _check_output(out_dir: Path, tasks: list[Task]) -> None:
                 fail(f"{task.item}: {folder}: {exc}")
 
 
-def _planned(course_file: str) -> tuple[object, list[Task]]:
+def code_fingerprint() -> str:
+    """What every task's output depends on besides its own settings: the code that renders
+    (the project's sources, manim's version) and the ``TREX_*`` environment a scene reads
+    when it is handed no polygon."""
+    import json
+
+    from story.environment import environment_values
     from trex import lecture_command as lc
 
+    return lc.source_fingerprint() + json.dumps(environment_values(), sort_keys=True)
+
+
+def _planned(course_file: str) -> tuple[object, list[Task]]:
     try:
         course = read_course(Path(course_file))
-        return course, plan(course, lc.source_fingerprint())
+        return course, plan(course, code_fingerprint())
     except CourseError as exc:
         fail(f"{course_file}: {exc}")
 
@@ -93,6 +103,7 @@ def course(course_file: str, out_dir: str, workers: int | None, scheduler: str |
     if dry_run:
         _dry_run(tasks, target)
         return
+    created = not target.exists()
     target.mkdir(parents=True, exist_ok=True)
     began = time.monotonic()
     with interrupts_raise() as signals:
@@ -106,6 +117,8 @@ def course(course_file: str, out_dir: str, workers: int | None, scheduler: str |
             raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
         except OSError as exc:  # the scheduler cannot be reached, DIR cannot be written
             signals.check()
+            if created and not any(target.iterdir()):
+                target.rmdir()  # nothing was done: leave no trace
             fail(f"{scheduler or out_dir}: {error_line(exc)}")
     _report(records, target, time.monotonic() - began)
 

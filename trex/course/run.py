@@ -137,7 +137,8 @@ def run_tasks(tasks: Sequence[Task], out_dir: Path, title: str, *, workers: int,
     finally:
         if finished_cleanly or scheduler is None:  # no task of ours still writes
             sweep(tasks, out_dir)
-        _write(out_dir, title, tasks, records)
+        if records:  # (none: the cluster could not even be reached)
+            _write(out_dir, title, tasks, records)
     return _ordered(tasks, records)
 
 

@@ -72,13 +72,12 @@ def _duration(path: Path) -> float:
 
 
 def _handed(cls: type, polygon: str | None, panel: str | None) -> type:
-    """The scene handed its run on ``polygon`` (None: its own default, not the environment:
-    a course renders the same wherever it runs)."""
-    if panel is not None and callable(getattr(cls, "with_panel", None)):
-        cls = cls.with_panel(panel)
-    if not callable(getattr(cls, "handed", None)):
-        return cls
-    return cls.handed(polygon)
+    """The scene handed its run on ``polygon`` as ``trex render`` and ``trex lecture`` hand
+    it (None: what ``manim`` would play, ``TREX_*`` read from the environment, which the
+    fingerprints cover: :func:`trex.course.command.code_fingerprint`)."""
+    from trex.render_command import scene_input
+
+    return scene_input(cls, polygon, panel)
 
 
 # --- the bodies -------------------------------------------------------------------------------------
