@@ -146,7 +146,7 @@ def test_the_outputs_are_laid_out_and_listed(first, manifest):
     workers = {t["worker"] for t in manifest.values() if t["status"] == "done"}
     assert workers <= {"0", "1"}
     assert "dashboard: http" in result.stderr
-    assert "course: 9/9 tasks" in result.stderr
+    assert "course: [####################] 9/9 tasks" in result.stderr
     # nothing half-written anywhere: no temporary name is left
     assert not [p for p in out.rglob(".*")]
 

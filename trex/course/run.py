@@ -83,7 +83,8 @@ def _output_names(tasks: Sequence[Task], out_dir: Path) -> dict[Path, set[str]]:
 
 
 class Progress:
-    """``course: 3/8 tasks, 25.3 s of video, ETA 0:31``: one line per finished task."""
+    """``course: [#######.............] 3/8 tasks, 25.3 s of video, ETA 0:31; ID done``: one
+    line per finished task (stderr)."""
 
     def __init__(self, total: int, reused: int, echo: Callable[[str], None]) -> None:
         self.total, self.done, self.seconds, self.echo = total, reused, 0.0, echo
@@ -98,8 +99,18 @@ class Progress:
         elapsed = time.monotonic() - self.began
         eta = f"ETA {_clock(elapsed / rendered * left)}" if rendered and left else "—"
         said = rec["status"] if rec["status"] != "failed" else f"FAILED: {rec['error']}"
-        self.echo(f"course: {self.done}/{self.total} tasks, {self.seconds:.1f} s of video, "
-                  f"{eta}; {task.id} {said}")
+        self.echo(f"course: [{bar(self.done, self.total)}] {self.done}/{self.total} tasks, "
+                  f"{self.seconds:.1f} s of video, {eta}; {task.id} {said}")
+
+
+def bar(done: int, total: int, width: int = 20) -> str:
+    """``#####...............``: ``done`` of ``total`` as a bar of ``width`` characters.
+
+    >>> bar(1, 4, 8)
+    '##......'
+    """
+    filled = round(width * done / total) if total else width
+    return "#" * filled + "." * (width - filled)
 
 
 def _clock(seconds: float) -> str:
