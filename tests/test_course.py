@@ -71,6 +71,10 @@ COURSE = textwrap.dedent("""
     scene = "tiny.py:Cues"
     format = "png"
 
+    [[slides]]
+    scene = "lecture"
+    chapters = ["tiny.py:Cues", "tiny.py:MoreCues"]
+
     [[exercises]]
     students = 3
     n = 1
@@ -124,7 +128,7 @@ def test_a_failing_item_is_reported_while_the_others_finish(first, manifest):
     assert manifest["scene-broken-Boom"]["status"] == "failed"
     assert manifest["scene-broken-Boom"]["error"] == "RuntimeError: the scene broke"
     others = [t for t in manifest.values() if t["id"] != "scene-broken-Boom"]
-    assert len(others) == 8 and {t["status"] for t in others} == {"done"}
+    assert len(others) == 9 and {t["status"] for t in others} == {"done"}
     assert not (out / "scene-broken-Boom.png").exists()
 
 
@@ -133,7 +137,7 @@ def test_the_outputs_are_laid_out_and_listed(first, manifest):
     assert sorted(manifest) == [
         "exercises/student-1", "exercises/student-2", "exercises/student-3", "lecture-1",
         "lecture-1/chapters/01-tiny-Cues", "lecture-1/chapters/02-tiny-MoreCues",
-        "scene-broken-Boom", "scene-polygon-star", "scene-tiny-Cues"]
+        "scene-broken-Boom", "scene-polygon-star", "scene-tiny-Cues", "slides-lecture"]
     for task in manifest.values():
         assert set(task) == {"id", "kind", "item", "files", "status", "video_seconds",
                              "wall_seconds", "worker", "fingerprint", "error"}
@@ -146,9 +150,10 @@ def test_the_outputs_are_laid_out_and_listed(first, manifest):
     workers = {t["worker"] for t in manifest.values() if t["status"] == "done"}
     assert workers <= {"0", "1"}
     assert "dashboard: http" in result.stderr
-    assert "course: [####################] 9/9 tasks" in result.stderr
+    assert "course: [####################] 10/10 tasks" in result.stderr
     # nothing half-written anywhere: no temporary name is left
-    assert not [p for p in out.rglob(".*")]
+    assert [p.relative_to(out).as_posix() for p in out.rglob(".*")] == [
+        "slides-lecture/.trex-slides"]  # trex slides' own marker
 
 
 def test_the_students_get_their_own_seeded_exercises(first):
@@ -179,17 +184,27 @@ def test_the_lecture_is_joined_from_its_chapters(first, manifest):
     assert marks["made_by"]["class"] == "Cues" and marks["made_by"]["quality"] == "l"
 
 
+def test_the_lectures_slides_reuse_its_chapters(first, manifest):
+    out, _ = first
+    slides = manifest["slides-lecture"]
+    assert slides["files"] == ["slides-lecture/index.html"]
+    assert not any(t["id"].startswith("slides-lecture-chapters") for t in manifest.values())
+    clips = sorted((out / "slides-lecture" / "clips").glob("*.mp4"))
+    assert len(clips) >= 2  # a step at least per chapter
+    assert (out / "slides-lecture" / "handout.pdf").is_file()
+    assert slides["video_seconds"] > 0
+
+
 def test_a_rerun_renders_nothing(first, folder):
     out, _ = first
     before = {p: p.stat().st_mtime_ns for p in out.rglob("*") if p.is_file()
               and p.name != "course.json"}
     result = trex("course", str(folder / "course.toml"), "-o", str(out))
     assert result.returncode == 0, result.stderr
-    assert result.stdout.splitlines()[0] == "course: 0 done, 8 reused, 0 failed; 0.0 s of " \
-                                            "video in " + result.stdout.split(" in ")[1].split()[0] + " s"
+    assert result.stdout.startswith("course: 0 done, 9 reused, 0 failed; 0.0 s of video in ")
     assert "dashboard" not in result.stderr  # no cluster was even started
     tasks = json.loads((out / "course.json").read_text())["tasks"]
-    assert {t["status"] for t in tasks} == {"reused"} and len(tasks) == 8
+    assert {t["status"] for t in tasks} == {"reused"} and len(tasks) == 9
     after = {p: p.stat().st_mtime_ns for p in before}
     assert after == before
 
@@ -202,7 +217,7 @@ def test_a_dry_run_lists_the_tasks_and_renders_nothing(folder, tmp_path):
     lines = stdout.splitlines()
     assert lines[0] == "lecture-1/chapters/01-tiny-Cues: chapter of lecture 1, to render"
     assert lines[2].startswith("lecture-1: join of lecture 1, to render (after ")
-    assert lines[-1] == "course: 8 tasks, 8 to render, 0 reused (dry run: nothing rendered)"
+    assert lines[-1] == "course: 9 tasks, 9 to render, 0 reused (dry run: nothing rendered)"
     assert not out.exists()
 
 
@@ -251,6 +266,17 @@ def test_an_output_that_is_a_file_is_refused(folder, tmp_path):
     out.write_text("x")
     code, _, stderr = in_process("course", str(folder / "course.toml"), "-o", str(out))
     assert (code, stderr) == (2, f"error: {out}: exists and is not a directory\n")
+
+
+def test_a_slides_folder_that_is_not_slides_is_refused(folder, tmp_path):
+    out = tmp_path / "out"
+    (out / "slides-lecture").mkdir(parents=True)
+    (out / "slides-lecture" / "notes.txt").write_text("mine")
+    code, _, stderr = in_process("course", str(folder / "course.toml"), "-o", str(out))
+    assert code == 2
+    assert stderr.startswith(f"error: slides 1: {out / 'slides-lecture'}: exists and is not "
+                             "earlier slides")
+    assert sorted(p.name for p in out.rglob("*")) == ["notes.txt", "slides-lecture"]
 
 
 # --- the parts, without a cluster -------------------------------------------------------------------

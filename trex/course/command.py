@@ -34,8 +34,8 @@ def _check_output(out_dir: Path, tasks: list[Task]) -> None:
     if not existing.is_dir() or not os.access(existing, os.W_OK | os.X_OK):
         fail(f"{out_dir}: cannot write to {existing}")  # created only when the course runs
     for task in tasks:
-        if task.kind == "slides":
-            folder = out_dir / Path(task.files[0]).parent
+        folder = out_dir / Path(task.files[0]).parent
+        if task.kind == "slides" and folder.exists():  # (check_output would create DIR)
             try:
                 check_output(folder, MARKER, "earlier slides")
             except ValueError as exc:
@@ -108,8 +108,10 @@ def course(course_file: str, out_dir: str, workers: int | None, scheduler: str |
     began = time.monotonic()
     with interrupts_raise() as signals:
         try:
-            records = run_tasks(tasks, target, course_.title, workers=workers or _cores(),
-                                scheduler=scheduler, retries=retries, echo=stderr_echo)
+            # the directory as every worker sees it, wherever it started
+            records = run_tasks(tasks, target.resolve(), course_.title,
+                                workers=workers or _cores(), scheduler=scheduler,
+                                retries=retries, echo=stderr_echo)
             signals.done = True
         except Interrupted as exc:
             click.echo(f"error: course interrupted; the finished tasks are in {out_dir} "

@@ -10,7 +10,8 @@ problem, before anything is submitted. Then each item becomes tasks:
   waits for them;
 - a scene: one ``scene`` task per polygon (``scene-<scene>-<polygon>.<ext>``);
 - slides: one ``slides`` task (``slides-<scene>/``); those of the lecture wait for a lecture
-  item of the same settings and reuse its chapters, as ``trex slides lecture`` does;
+  item of the same settings and reuse its chapters, as ``trex slides lecture`` does (with
+  no such item, chapter tasks of their own first, into ``slides-lecture-chapters/``);
 - exercises: one ``student`` task per student (``exercises/student-K/``), student K getting
   what ``trex exercises --n N --seed SEED+K-1`` writes, and ``video.mp4`` when asked.
 
@@ -251,10 +252,12 @@ def _slides(course: Course, item: Slides, checked: _Checked,
         chapters = _chapters(course, item.name, item.chapters)
         _check_chapters(item.name, chapters, polygon, checked)
         parts = lectures.get((item.quality, polygon, item.panel, item.chapters), [])
+        own = [] if parts else _chapter_tasks(f"{name}-chapters", item.name, chapters,
+                                              item.quality, polygon, item.panel)
         settings["chapters"] = [_chapter_dict(c) for c in chapters]
-        settings["lecture"] = parts[0].id.rpartition("/chapters/")[0] if parts else None
-        return [Task(name, "slides", item.name, (f"{name}/index.html",), settings,
-                     _inputs(polygon), tuple(t.id for t in parts))]
+        settings["lecture"] = (parts or own)[0].id.rpartition("/chapters/")[0]
+        return [*own, Task(name, "slides", item.name, (f"{name}/index.html",), settings,
+                           _inputs(polygon), tuple(t.id for t in parts or own))]
     scene = _scene_file(course, item.scene)
     settings["scene"] = scene
     from trex.scene_inputs import load_scene

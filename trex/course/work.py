@@ -150,8 +150,8 @@ def _slides(task: Task, root: Path, _deps) -> tuple[list[str], float]:
     target = root / Path(task.files[0]).parent
     if s["scene"] == "lecture":
         chapters = [lc.Chapter(**c) for c in s["chapters"]]
-        where = root / s["lecture"] if s["lecture"] else target.with_name(f".{target.name}.none")
-        sc._lecture_slides(chapters, target, s["quality"], 1, s["polygon"], s["panel"], where)
+        sc._lecture_slides(chapters, target, s["quality"], 1, s["polygon"], s["panel"],
+                           root / s["lecture"])
     else:
         chosen = choose(s["scene"], s["polygon"], None, "slides", several_runs=True)
         played, subtitle = sc._played(chosen, s["scene"])
