@@ -17,7 +17,7 @@ import click
 
 from trex.course.manifest import MANIFEST, read_manifest, reusable
 from trex.course.run import run_tasks, stderr_echo
-from trex.course.schema import CourseError, read_course
+from trex.course.schema import Course, CourseError, read_course
 from trex.course.tasks import Task, plan
 from trex.inputs import error_line, fail
 from trex.render_command import EXIT_FAILED, EXIT_SIGNAL, Interrupted, interrupts_raise
@@ -54,7 +54,7 @@ def code_fingerprint() -> str:
     return lc.source_fingerprint() + json.dumps(environment_values(), sort_keys=True)
 
 
-def _planned(course_file: str) -> tuple[object, list[Task]]:
+def _planned(course_file: str) -> tuple[Course, list[Task]]:
     try:
         course = read_course(Path(course_file))
         return course, plan(course, code_fingerprint())
@@ -97,7 +97,12 @@ def course(course_file: str, out_dir: str, workers: int | None, scheduler: str |
     """
     if workers is not None and scheduler is not None:
         fail("--workers: the cluster at --scheduler has its own workers")
-    course_, tasks = _planned(course_file)
+    with interrupts_raise():  # checking loads every scene and runs every polygon: a while
+        try:
+            course_, tasks = _planned(course_file)
+        except Interrupted as exc:
+            click.echo("error: course interrupted while checking; nothing written", err=True)
+            raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
     target = Path(out_dir)
     _check_output(target, tasks)
     if dry_run:
