@@ -34,6 +34,7 @@ bench: $(STAMP)
 	$(BIN)/python -m bench.lecture
 	$(BIN)/python -m bench.slides
 	$(BIN)/python -m bench.studio
+	$(BIN)/python -m bench.course
 
 $(STAMP): pyproject.toml | system-deps
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)

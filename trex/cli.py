@@ -17,6 +17,7 @@ from geometry.io import Shape, to_json, write_polygon
 from geometry.polygon import Polygon  # noqa: F401  (the doctests' polygons)
 from geometry.samples import make_sample
 from trex import exit_status
+from trex.course.command import COMMANDS as COURSE_COMMANDS
 from trex.exercises_command import COMMANDS as EXERCISE_COMMANDS
 from trex.hunt_command import COMMANDS as HUNT_COMMANDS
 from trex.inputs import EXIT_INVALID, error_line, fail, first_line, try_load
@@ -180,7 +181,8 @@ def sample(name: str, n: int | None, seed: int, output: str | None) -> None:
 
 
 for _command in (*COMMANDS, *HUNT_COMMANDS, *RENDER_COMMANDS, *EXERCISE_COMMANDS, *LECTURE_COMMANDS,
-                 *PLAYER_COMMANDS, *SLIDES_COMMANDS, *SNAPSHOT_COMMANDS, *STUDIO_COMMANDS):
+                 *PLAYER_COMMANDS, *SLIDES_COMMANDS, *SNAPSHOT_COMMANDS, *STUDIO_COMMANDS,
+                 *COURSE_COMMANDS):
     main.add_command(_command)
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import functools
 import os
+from collections.abc import Callable
 from pathlib import Path
 
 import click
@@ -49,17 +50,8 @@ def exercises(n: int, seed: int, out_dir: str) -> None:
     except ValueError as exc:
         fail(f"{out_dir}: {exc}")
     items = make_exercises(n, seed)
-    from metaphors.stills import ExerciseStill
-
     try:
-        for exercise in items:
-            target = directory / exercise.still
-            with interrupts_raise() as signals:
-                render_into(functools.partial(ExerciseStill, exercise), target, "png",
-                            STILL_QUALITY, progress=False, srt=False, signals=signals)
-            click.echo(str(target))
-        answers = directory / ANSWERS
-        write_atomic(answers, answers_markdown(items, seed))
+        answers = write_exercises(items, directory, seed, click.echo)[-1]
     except Interrupted as exc:
         click.echo("error: exercises interrupted; the files listed above are complete", err=True)
         raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
@@ -69,6 +61,27 @@ def exercises(n: int, seed: int, out_dir: str) -> None:
         click.echo(f"error: exercises: {type(exc).__name__}: {error_line(exc)}", err=True)
         raise click.exceptions.Exit(EXIT_FAILED) from None
     click.echo(str(answers))
+
+
+def write_exercises(items: list, directory: Path, seed: int,
+                    echo: Callable[[str], None] | None = None) -> list[Path]:
+    """Render each exercise's still into ``directory`` (``echo`` its path when done), then
+    write ``answers.md``; the files written, ``answers.md`` last (``trex course`` writes
+    each student's sheets with it)."""
+    from metaphors.stills import ExerciseStill
+
+    written = []
+    for exercise in items:
+        target = directory / exercise.still
+        with interrupts_raise() as signals:
+            render_into(functools.partial(ExerciseStill, exercise), target, "png",
+                        STILL_QUALITY, progress=False, srt=False, signals=signals)
+        if echo is not None:
+            echo(str(target))
+        written.append(target)
+    answers = directory / ANSWERS
+    write_atomic(answers, answers_markdown(items, seed))
+    return [*written, answers]
 
 
 COMMANDS = (exercises,)

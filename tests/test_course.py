@@ -1,0 +1,401 @@
+"""trex course: a small course rendered at -q l on a LocalCluster of 2 worker processes.
+
+The course: a lecture of two tiny subtitled chapters (written here: the project's chapters
+take minutes at -ql), two scenes (the polygon scene on a polygon file, a tiny scene as a
+png), exercises for 3 students, and a scene that breaks. One run renders it all (the
+broken scene fails, the rest finish); a second run, of the same course without the broken
+scene, renders nothing. The command runs as a user runs it, in a process of its own.
+"""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import av
+import pytest
+from click.testing import CliRunner
+
+from trex.cli import main
+from trex.course import tasks as course_tasks
+from trex.course.manifest import record, reusable, write_manifest
+from trex.course.run import sweep
+
+REPO = Path(__file__).resolve().parent.parent
+# one xdist worker runs them all: the course is rendered once, by the module's fixture
+pytestmark = pytest.mark.xdist_group("course")
+
+TINY = textwrap.dedent("""
+    from manim import BLUE, Circle, Create, FadeOut, Scene, Square
+
+    class Cues(Scene):
+        def construct(self):
+            self.next_section("Cues")
+            square = Square(color=BLUE)
+            self.play(Create(square), subcaption="a square", subcaption_duration=1.0,
+                      run_time=1.0)
+            self.wait(0.4)
+            self.play(FadeOut(square), subcaption="gone", run_time=0.5)
+
+    class MoreCues(Scene):
+        def construct(self):
+            self.next_section("More cues")
+            self.play(Create(Circle()), subcaption="a circle", run_time=1.0)
+            self.wait(0.4)
+""")
+BROKEN = textwrap.dedent("""
+    from manim import Scene
+
+    class Boom(Scene):
+        def construct(self):
+            raise RuntimeError("the scene broke")
+""")
+STAR = "[[0, 0], [4, 1], [8, 0], [7, 4], [8, 8], [4, 7], [0, 8], [1, 4]]"
+COURSE = textwrap.dedent("""
+    [course]
+    title = "A small course"
+    quality = "l"
+
+    [[lecture]]
+    chapters = ["tiny.py:Cues", "tiny.py:MoreCues"]
+
+    [[scene]]
+    scene = "polygon"
+    polygons = ["star.json"]
+
+    [[scene]]
+    scene = "tiny.py:Cues"
+    format = "png"
+
+    [[slides]]
+    scene = "lecture"
+    chapters = ["tiny.py:Cues", "tiny.py:MoreCues"]
+
+    [[exercises]]
+    students = 3
+    n = 1
+    seed = 7
+""")
+BROKEN_ITEM = '\n[[scene]]\nscene = "broken.py:Boom"\nformat = "png"\n'
+
+
+def trex(*args, timeout=400):
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+        p for p in (str(REPO), os.environ.get("PYTHONPATH", "")) if p)}
+    return subprocess.run([sys.executable, "-m", "trex", *args], capture_output=True,
+                          text=True, env=env, cwd=REPO, timeout=timeout)
+
+
+def in_process(*args):
+    result = CliRunner().invoke(main, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+@pytest.fixture(scope="module")
+def folder(tmp_path_factory) -> Path:
+    folder = tmp_path_factory.mktemp("course")
+    (folder / "tiny.py").write_text(TINY)
+    (folder / "broken.py").write_text(BROKEN)
+    (folder / "star.json").write_text(STAR)
+    (folder / "course.toml").write_text(COURSE)
+    (folder / "with-broken.toml").write_text(COURSE + BROKEN_ITEM)
+    return folder
+
+
+@pytest.fixture(scope="module")
+def first(folder):
+    """The course with its broken scene, rendered once on 2 workers."""
+    result = trex("course", str(folder / "with-broken.toml"), "-o", str(folder / "out"),
+                  "--workers", "2")
+    return folder / "out", result
+
+
+@pytest.fixture(scope="module")
+def manifest(first):
+    out, _ = first
+    return {t["id"]: t for t in json.loads((out / "course.json").read_text())["tasks"]}
+
+
+def test_a_failing_item_is_reported_while_the_others_finish(first, manifest):
+    out, result = first
+    assert result.returncode == 1, result.stderr
+    failed = [line for line in result.stderr.splitlines() if line.startswith("error: ")]
+    assert failed == ["error: scene-broken-Boom (scene 3): RuntimeError: the scene broke"]
+    assert manifest["scene-broken-Boom"]["status"] == "failed"
+    assert manifest["scene-broken-Boom"]["error"] == "RuntimeError: the scene broke"
+    others = [t for t in manifest.values() if t["id"] != "scene-broken-Boom"]
+    assert len(others) == 9 and {t["status"] for t in others} == {"done"}
+    assert not (out / "scene-broken-Boom.png").exists()
+
+
+def test_the_outputs_are_laid_out_and_listed(first, manifest):
+    out, result = first
+    assert sorted(manifest) == [
+        "exercises/student-1", "exercises/student-2", "exercises/student-3", "lecture-1",
+        "lecture-1/chapters/01-tiny-Cues", "lecture-1/chapters/02-tiny-MoreCues",
+        "scene-broken-Boom", "scene-polygon-star", "scene-tiny-Cues", "slides-lecture"]
+    for task in manifest.values():
+        assert set(task) == {"id", "kind", "item", "files", "status", "video_seconds",
+                             "wall_seconds", "worker", "fingerprint", "error"}
+        assert all((out / name).is_file() for name in task["files"])
+        assert len(task["fingerprint"]) == 64
+    assert manifest["scene-polygon-star"]["files"] == ["scene-polygon-star.mp4"]
+    assert manifest["scene-tiny-Cues"]["files"] == ["scene-tiny-Cues.png"]
+    assert manifest["exercises/student-2"]["files"] == [
+        "exercises/student-2/answers.md", "exercises/student-2/exercise-01.png"]
+    workers = {t["worker"] for t in manifest.values() if t["status"] == "done"}
+    assert workers <= {"0", "1"}
+    assert "dashboard: http" in result.stderr
+    assert "course: [####################] 10/10 tasks" in result.stderr
+    # nothing half-written anywhere: no temporary name is left
+    assert [p.relative_to(out).as_posix() for p in out.rglob(".*")] == [
+        "slides-lecture/.trex-slides"]  # trex slides' own marker
+
+
+def test_the_students_get_their_own_seeded_exercises(first):
+    out, _ = first
+    answers = [(out / f"exercises/student-{k}/answers.md").read_text() for k in (1, 2, 3)]
+    assert len(set(answers)) == 3
+    assert "seed 7" in answers[0] and "seed 9" in answers[2]
+
+
+def test_the_lecture_is_joined_from_its_chapters(first, manifest):
+    out, _ = first
+    lecture = out / "lecture-1"
+    entries = json.loads((lecture / "chapters.json").read_text())
+    assert [e["file"] for e in entries] == ["chapters/01-tiny-Cues.mp4",
+                                            "chapters/02-tiny-MoreCues.mp4"]
+
+    def frames(path):
+        with av.open(str(path)) as container:
+            return container.streams.video[0].frames
+
+    assert frames(lecture / "lecture.mp4") == sum(
+        frames(lecture / e["file"]) for e in entries)
+    assert "a circle" in (lecture / "lecture.srt").read_text()
+    assert manifest["lecture-1"]["video_seconds"] == pytest.approx(
+        sum(manifest[f"lecture-1/{e['file'][:-4]}"]["video_seconds"] for e in entries))
+    # the chapter's step marks say how it was made, as trex lecture's: trex slides reuses it
+    marks = json.loads((lecture / "chapters" / "01-tiny-Cues.steps.json").read_text())
+    assert marks["made_by"]["class"] == "Cues" and marks["made_by"]["quality"] == "l"
+
+
+def test_the_lectures_slides_reuse_its_chapters(first, manifest):
+    out, _ = first
+    slides = manifest["slides-lecture"]
+    assert slides["files"] == ["slides-lecture/index.html"]
+    assert not any(t["id"].startswith("slides-lecture-chapters") for t in manifest.values())
+    clips = sorted((out / "slides-lecture" / "clips").glob("*.mp4"))
+    assert len(clips) >= 2  # a step at least per chapter
+    assert (out / "slides-lecture" / "handout.pdf").is_file()
+    assert slides["video_seconds"] > 0
+
+
+def test_a_rerun_renders_nothing(first, folder):
+    out, _ = first
+    before = {p: p.stat().st_mtime_ns for p in out.rglob("*") if p.is_file()
+              and p.name != "course.json"}
+    result = trex("course", str(folder / "course.toml"), "-o", str(out))
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("course: 0 done, 9 reused, 0 failed; 0.0 s of video in ")
+    assert "dashboard" not in result.stderr  # no cluster was even started
+    tasks = json.loads((out / "course.json").read_text())["tasks"]
+    assert {t["status"] for t in tasks} == {"reused"} and len(tasks) == 9
+    after = {p: p.stat().st_mtime_ns for p in before}
+    assert after == before
+
+
+def test_a_dry_run_lists_the_tasks_and_renders_nothing(folder, tmp_path):
+    out = tmp_path / "none"
+    code, stdout, stderr = in_process("course", str(folder / "course.toml"), "-o", str(out),
+                                      "--dry-run")
+    assert code == 0, stderr
+    lines = stdout.splitlines()
+    assert lines[0] == "lecture-1/chapters/01-tiny-Cues: chapter of lecture 1, to render"
+    assert lines[2].startswith("lecture-1: join of lecture 1, to render (after ")
+    assert lines[-1] == "course: 9 tasks, 9 to render, 0 reused (dry run: nothing rendered)"
+    assert not out.exists()
+
+
+# --- bad course files ---------------------------------------------------------------------------
+
+
+BAD = {
+    "unknown kind": ("[[video]]\nscene = 'gravity'\n", "[video]: unknown kind; known: course, "
+                     "lecture, scene, slides, exercises"),
+    "unknown field": ("[[scene]]\nscene = 'gravity'\npolygon = 'star.json'\n",
+                      "scene 1, field polygon: unknown field; known: scene, polygons, format, "
+                      "quality, panel"),
+    "unknown scene": ("[[scene]]\nscene = 'nonesuch'\n",
+                      "scene 1, field scene: unknown scene 'nonesuch'; known: "),
+    "bad polygon": ("[[scene]]\nscene = 'polygon'\npolygons = ['counterexample', 'bow.json']\n",
+                    "scene 1, field polygons[1]: "),
+    "no students": ("[[exercises]]\nstudents = 0\n",
+                    "exercises 1, field students: must be from 1 to 10000, not 0"),
+    "a wrong type": ("[[exercises]]\nstudents = '3'\n",
+                     "exercises 1, field students: must be a whole number, not '3'"),
+    "bad quality": ("[course]\nquality = 'x'\n[[scene]]\nscene = 'gravity'\n",
+                    "[course], field quality: 'x' is not one of l, m, h, k"),
+    "not TOML": ("[[scene]\n", "the file: not TOML: "),
+    "a rejected run": ("[[lecture]]\npolygon = 'triangle'\nchapters = ['polygon', 'scaling']\n",
+                       "lecture 1, field polygon: triangle: "),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD))
+def test_a_bad_course_file_is_one_line_before_anything(case, tmp_path):
+    text, said = BAD[case]
+    (tmp_path / "bow.json").write_text("[[0, 0], [4, 4], [4, 0], [0, 4]]")
+    course = tmp_path / "course.toml"
+    course.write_text(text)
+    out = tmp_path / "out"
+    code, stdout, stderr = in_process("course", str(course), "-o", str(out))
+    assert code == 2
+    assert stdout == ""
+    assert len(stderr.splitlines()) == 1
+    assert stderr.startswith(f"error: {course}: {said}"), stderr
+    assert not out.exists()
+
+
+def test_an_output_that_is_a_file_is_refused(folder, tmp_path):
+    out = tmp_path / "file"
+    out.write_text("x")
+    code, _, stderr = in_process("course", str(folder / "course.toml"), "-o", str(out))
+    assert (code, stderr) == (2, f"error: {out}: exists and is not a directory\n")
+
+
+def test_a_slides_folder_that_is_not_slides_is_refused(folder, tmp_path):
+    out = tmp_path / "out"
+    (out / "slides-lecture").mkdir(parents=True)
+    (out / "slides-lecture" / "notes.txt").write_text("mine")
+    code, _, stderr = in_process("course", str(folder / "course.toml"), "-o", str(out))
+    assert code == 2
+    assert stderr.startswith(f"error: slides 1: {out / 'slides-lecture'}: exists and is not "
+                             "earlier slides")
+    assert sorted(p.name for p in out.rglob("*")) == ["notes.txt", "slides-lecture"]
+
+
+# --- the parts, without a cluster -------------------------------------------------------------------
+
+
+def _task(files=("a.mp4",), settings=None, inputs=()):
+    return course_tasks.Task("a", "scene", "scene 1", files, settings or {"x": 1}, inputs)
+
+
+def test_a_fingerprint_covers_settings_input_bytes_code_and_dependencies(tmp_path):
+    polygon = tmp_path / "p.json"
+    polygon.write_text(STAR)
+    base = _task(inputs=(str(polygon),))
+
+    def fp(*tasks, code="c"):
+        return course_tasks.fingerprinted(list(tasks), code)[-1].fingerprint
+
+    first = fp(base)
+    assert fp(base) == first
+    assert fp(_task(settings={"x": 2}, inputs=(str(polygon),))) != first
+    assert fp(base, code="d") != first
+    polygon.write_text(STAR.replace("[1, 4]", "[2, 4]"))
+    assert fp(base) != first
+    dep = course_tasks.Task("b", "join", "lecture 1", ("b.mp4",), {}, deps=("a",))
+    assert fp(base, dep) != fp(_task(settings={"x": 2}, inputs=(str(polygon),)), dep)
+
+
+def test_reuse_needs_the_fingerprint_a_finished_status_and_every_file(tmp_path):
+    task = course_tasks.fingerprinted([_task()], "c")[0]
+    (tmp_path / "a.mp4").write_bytes(b"video")
+    done = record(task, "done", files=("a.mp4",))
+    assert reusable(task, {"a": done}, tmp_path) == done
+    assert reusable(task, {"a": {**done, "fingerprint": "other"}}, tmp_path) is None
+    assert reusable(task, {"a": {**done, "status": "failed"}}, tmp_path) is None
+    (tmp_path / "a.mp4").unlink()
+    assert reusable(task, {"a": done}, tmp_path) is None
+
+
+def test_sweep_removes_only_what_a_stopped_task_left(tmp_path):
+    task = _task(files=("scene-x.mp4", "exercises/student-1/answers.md"))
+    (tmp_path / "exercises").mkdir()
+    left = [tmp_path / ".scene-x.mp4.k2j3.render", tmp_path / "exercises/.student-1.9x.build"]
+    for path in left:
+        path.mkdir()
+        (path / "half.mp4").write_bytes(b"half")
+    kept = [tmp_path / ".other.mp4.k2j3.render", tmp_path / "scene-x.mp4",
+            tmp_path / ".hidden"]
+    for path in kept:
+        path.write_text("mine")
+    assert sweep([task], tmp_path) == 2
+    assert not any(p.exists() for p in left) and all(p.exists() for p in kept)
+
+
+def test_the_manifest_is_written_whole(tmp_path):
+    task = course_tasks.fingerprinted([_task()], "c")[0]
+    write_manifest(tmp_path, "T", [record(task, "failed", error="boom")])
+    data = json.loads((tmp_path / "course.json").read_text())
+    assert data["title"] == "T" and data["tasks"][0]["error"] == "boom"
+    assert [p.name for p in tmp_path.iterdir()] == ["course.json"]
+
+
+# --- a worker killed mid-task ------------------------------------------------------------------------
+
+SLOW = textwrap.dedent("""
+    import os
+    import time
+    from pathlib import Path
+
+    from manim import Circle, Create, Scene, Square
+
+    STARTED = Path(__file__).with_name("started")
+
+    class Slow(Scene):
+        def construct(self):
+            self.play(Create(Square()), run_time=0.5)
+            if not STARTED.exists():  # the first try: say where, then wait to be killed
+                STARTED.write_text(str(os.getpid()))
+                time.sleep(120)
+            self.play(Create(Circle()), run_time=0.5)
+""")
+
+
+def test_a_worker_killed_mid_task_has_its_task_run_again(tmp_path):
+    (tmp_path / "slow.py").write_text(SLOW)
+    (tmp_path / "course.toml").write_text("[[scene]]\nscene = 'slow.py:Slow'\n")
+    out = tmp_path / "out"
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+        p for p in (str(REPO), os.environ.get("PYTHONPATH", "")) if p)}
+    process = subprocess.Popen([sys.executable, "-m", "trex", "course",
+                                str(tmp_path / "course.toml"), "-o", str(out), "--workers", "2"],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               env=env, cwd=REPO)
+    try:
+        started = tmp_path / "started"
+        deadline = time.monotonic() + 300
+        while not started.exists() or not started.read_text():
+            assert process.poll() is None, process.communicate()
+            assert time.monotonic() < deadline, "the task never started"
+            time.sleep(0.2)
+        time.sleep(0.5)  # mid-task: its first frames are written, beside the output
+        assert [p.name for p in out.glob(".*.render")]
+        os.kill(int(started.read_text()), signal.SIGKILL)
+        _, stderr = process.communicate(timeout=300)
+    finally:
+        process.kill()
+    assert process.returncode == 0, stderr
+    task, = json.loads((out / "course.json").read_text())["tasks"]
+    assert (task["id"], task["status"], task["files"]) == (
+        "scene-slow-Slow", "done", ["scene-slow-Slow.mp4"])
+    with av.open(str(out / "scene-slow-Slow.mp4")) as container:
+        assert container.streams.video[0].frames == 16  # both plays (8 frames each at -ql)
+    assert sorted(p.name for p in out.iterdir()) == ["course.json", "scene-slow-Slow.mp4"]
+
+
+def test_a_scheduler_that_cannot_be_reached_is_one_line_and_leaves_nothing(folder, tmp_path):
+    out = tmp_path / "out"
+    code, stdout, stderr = in_process("course", str(folder / "course.toml"), "-o", str(out),
+                                      "--scheduler", "tcp://127.0.0.1:1")
+    assert code == 2 and stdout == ""
+    assert stderr.startswith("error: tcp://127.0.0.1:1: Timed out trying to connect")
+    assert len(stderr.splitlines()) == 1
+    assert not out.exists()
