@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import NoReturn
+from typing import TYPE_CHECKING, NoReturn
 
 import click
 
@@ -23,6 +23,9 @@ from geometry.errors import GeometryError
 from geometry.io import Shape, read_polygon, read_shape
 from geometry.polygon import Polygon
 from geometry.user_heuristics import DEFAULT_CALL_TIMEOUT, set_call_timeout
+
+if TYPE_CHECKING:
+    from story.spec import RunSpec
 
 EXIT_INVALID = 2
 # Reading can also fail outside the GeometryError family (an unexpected OS
@@ -78,6 +81,23 @@ def load_or_exit(arg: str, *, holes: bool = False) -> Polygon:
     if polygon is None:
         raise click.exceptions.Exit(EXIT_INVALID)
     return polygon
+
+
+def load_run(spec: RunSpec, shape: Shape | None = None) -> RunSpec:
+    """The :class:`story.spec.RunSpec` ``spec`` with its polygon read once and checked by the
+    one rule a run's polygon obeys (:meth:`story.spec.RunSpec.read`: holes only for the
+    algorithms that take them); a scene handed it reads no file. ``shape`` is the polygon
+    read already (a command reads its ``--polygon`` before manim is imported), else it is
+    read here, warnings reported. A bad polygon is one line and exit 2; a replay comes back
+    as it is."""
+    if spec.saved:
+        return spec
+    if shape is None:
+        shape = load_or_exit(spec.polygon, holes=True)
+    try:
+        return spec.read(shape)
+    except READ_ERRORS as exc:
+        fail(f"{spec.polygon}: {error_line(exc)}")
 
 
 def _set_call_timeout(_ctx, _param, value: float) -> float:

@@ -26,10 +26,10 @@ from pathlib import Path
 import click
 
 from geometry.errors import GeometryError
-from geometry.triangulate import HOLE_ALGORITHMS
+from geometry.io import Shape
 from geometry.user_heuristics import UserHeuristicError
 from story.pseudocode import PANELS
-from trex.inputs import call_timeout_option, error_line, fail, load_or_exit, make_parent
+from trex.inputs import call_timeout_option, error_line, fail, load_or_exit, load_run, make_parent
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 QUALITIES = {"l": "low_quality", "m": "medium_quality", "h": "high_quality", "k": "fourk_quality"}
@@ -153,34 +153,40 @@ def dry_run(cls: type, polygon: str) -> None:
     RunSpec(algorithm, polygon, heuristic=getattr(cls, "heuristic", None)).log()
 
 
-def _environment_polygon(cls: type) -> str | None:
-    """The polygon plain ``manim`` would hand a one-run scene from ``TREX_POLYGON`` (None: its
-    default, a saved log, or not a one-run scene)."""
-    if not callable(getattr(cls, "from_environment", None)) or getattr(cls, "runs", None):
-        return None
+def run_once(spec) -> None:
+    """Run the :class:`story.spec.RunSpec` a scene was handed once, without drawing: an input
+    the algorithm rejects (a triangle has no diagonal …) is one line naming the polygon and
+    exit 2, before rendering starts."""
     try:
-        spec = cls.from_environment().spec
-    except ValueError:
-        return None  # a TREX_LOG it cannot play: reported when the render starts
-    if spec is None or spec.saved is not None or spec.polygon == cls.default_spec().polygon:
-        return None
-    return spec.polygon
+        spec.log()
+    except (GeometryError, ValueError, KeyError) as exc:
+        fail(f"{spec.polygon}: {error_line(exc)}")
 
 
-def scene_input(cls: type, polygon: str | None, panel: str | None = None) -> type:
+def scene_input(cls: type, polygon: str | None, panel: str | None = None,
+                shape: Shape | None = None) -> type:
     """The scene class handed its run as data (a subclass carrying a
     :class:`story.spec.RunSpec`, see :class:`metaphors.scene.SpecScene`): on ``polygon`` if
     given, else as ``manim`` would give it (its default run, with ``TREX_POLYGON`` and
-    ``TREX_LOG`` from the environment). A scene of several runs plays its own polygons; a
-    Scene that takes no run comes back as it is. ``panel`` (one of
-    :data:`story.pseudocode.PANELS`), if given, is what a scene with a panel shows there
-    (:meth:`metaphors.scene.TraceScene.with_panel`); None: the scene's own. Raises ValueError
-    for a ``TREX_LOG`` the scene cannot play."""
+    ``TREX_LOG`` from the environment). A polygon given, or from ``TREX_POLYGON``, is read
+    here once and checked by the run's rule (:func:`trex.inputs.load_run`; ``shape``: it read
+    already), one line and exit 2 if bad: the scene plays what was checked and reads no file.
+    A scene of several runs plays its own polygons; a Scene that takes no run comes back as
+    it is. ``panel`` (one of :data:`story.pseudocode.PANELS`), if given, is what a scene with
+    a panel shows there (:meth:`metaphors.scene.TraceScene.with_panel`); None: the scene's
+    own. Raises ValueError for a ``TREX_LOG`` the scene cannot play."""
     if panel is not None and callable(getattr(cls, "with_panel", None)):
         cls = cls.with_panel(panel)
     if not callable(getattr(cls, "handed", None)):
         return cls
-    return cls.handed(polygon) if polygon is not None else cls.from_environment()
+    if getattr(cls, "runs", None) or not callable(getattr(cls, "with_spec", None)):
+        return cls.handed(polygon) if polygon is not None else cls.from_environment()
+    if polygon is not None:
+        return cls.with_spec(load_run(cls.default_spec().on(polygon), shape))
+    spec = cls.from_environment().spec
+    if spec.saved or spec == cls.default_spec():
+        return cls.with_spec(spec)  # a replay, or the default run: nothing handed to check
+    return cls.with_spec(load_run(spec))
 
 
 # --- rendering --------------------------------------------------------------------------------------
@@ -389,8 +395,9 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
 
     Prints the output path. An interrupted or failed render leaves nothing at it.
     """
-    if polygon is not None:
-        load_or_exit(polygon)  # bad input: one line, exit 2, before manim is even imported
+    # bad input: one line, exit 2, before manim is even imported (holes: the scene's rule,
+    # once its algorithm is known)
+    shape = load_or_exit(polygon, holes=True) if polygon is not None else None
     try:
         path, class_name = resolve_scene(scene)
     except ValueError as exc:
@@ -403,8 +410,8 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
         fail(f"{target}: {exc}")
     with interrupts_raise() as signals:
         try:
-            _render(scene, path, class_name, polygon, target, fmt, quality, signals, panel,
-                    heuristic)
+            _render(scene, path, class_name, (polygon, shape), target, fmt, quality, signals,
+                    panel, heuristic)
         except Interrupted as exc:
             click.echo(f"error: {scene}: render interrupted; nothing written", err=True)
             raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
@@ -421,9 +428,10 @@ def with_heuristic(cls: type, heuristic: str | None) -> type:
     return cls.with_heuristic(heuristic)
 
 
-def _render(scene: str, path: Path, class_name: str | None, polygon: str | None, target: Path,
-            fmt: str, quality: str, signals: Signals, panel: str | None = None,
-            heuristic: str | None = None) -> None:
+def _render(scene: str, path: Path, class_name: str | None,
+            given: tuple[str | None, Shape | None], target: Path, fmt: str, quality: str,
+            signals: Signals, panel: str | None = None, heuristic: str | None = None) -> None:
+    polygon, shape = given  # --polygon, and that polygon read already
     try:
         if ".py:" in scene:  # the file's Scene class, or a heuristic of one's own
             from metaphors.scene import scene_for_heuristic
@@ -436,17 +444,15 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
         fail(f"{scene}: {exc}")
     if polygon is not None and getattr(cls, "runs", None):
         click.echo(f"warning: {scene}: plays its own polygons; --polygon is ignored", err=True)
-    else:
-        given = polygon if polygon is not None else _environment_polygon(cls)
-        if given is not None:  # a bad polygon, given or from TREX_POLYGON: one line, exit 2
-            load_or_exit(given, holes=getattr(cls, "algorithm", None) in HOLE_ALGORITHMS)
-            try:
-                dry_run(cls, given)
-            except (GeometryError, ValueError, KeyError) as exc:
-                fail(f"{given}: {error_line(exc)}")
     try:
-        render_into(scene_input(cls, polygon, panel), target, fmt, QUALITIES[quality],
-                    signals=signals)
+        handed = scene_input(cls, polygon, panel, shape)  # a bad polygon: one line, exit 2
+    except ValueError as exc:  # a TREX_LOG it cannot play
+        fail(f"{scene}: {error_line(exc)}")
+    spec = getattr(handed, "spec", None)
+    if spec is not None and spec.shape is not None:  # a polygon handed: run it once, now
+        run_once(spec)
+    try:
+        render_into(handed, target, fmt, QUALITIES[quality], signals=signals)
     except (KeyboardInterrupt, click.exceptions.Exit):
         raise
     except UserHeuristicError as exc:  # raised, answered nonsense or was stopped: one line
