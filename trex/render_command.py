@@ -300,6 +300,7 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
                 signals: Signals | None = None, steps: dict | None = None) -> Path:
     """Render ``make_scene()`` with manim and move the finished file to ``output``.
 
+    With ``progress``, manim's progress bars are shown when stderr is a terminal.
     Renders inside a temporary directory next to ``output`` (same filesystem, so the final
     ``os.replace`` is atomic) and removes it whatever happens. With ``srt``, the subtitle
     file manim writes beside a video is moved to ``output`` with suffix ``.srt``.
@@ -320,7 +321,9 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
             "media_dir": str(media),
             "disable_caching": True,
             "verbosity": "WARNING",
-            "progress_bar": "display" if progress else "none",
+            # manim's bars redraw a line in place: on a terminal only (a pipe or a log file
+            # would get every redraw, hundreds of lines)
+            "progress_bar": "display" if progress and sys.stderr.isatty() else "none",
             "preview": False,
             # x264 as manim.cfg has it (the same input, the same bytes); but one encoder at a
             # time, not manim.cfg's 4: with several in flight, an interrupted render now and
@@ -367,11 +370,36 @@ def _write_marks(scene, video: Path, made_by: dict) -> Path:
     return write_marks(Marks(steps, steps_end(scene), made_by), video)
 
 
-def _format_of(fmt: str | None, output: str | None) -> str:
-    if fmt:
+def format_of(fmt: str | None, output: str | None) -> str:
+    """The format to render: ``--format`` if given, else ``-o``'s extension, else mp4. Raises
+    ValueError (one line) for an extension that contradicts ``--format``, or, with no
+    ``--format``, one that names no format :data:`FORMATS` has.
+
+    >>> format_of(None, "clock.GIF"), format_of("png", None), format_of(None, None)
+    ('gif', 'png', 'mp4')
+    >>> format_of("png", "p.mp4")
+    Traceback (most recent call last):
+    ...
+    ValueError: the extension .mp4 contradicts --format png; give -o p.png, or drop --format
+    >>> format_of(None, "out.webm")
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown format '.webm'; expected .mp4, .gif or .png (or --format)
+    """
+    if output is None:
+        return fmt or "mp4"
+    path = Path(output)
+    suffix = path.suffix.lower().lstrip(".")
+    if fmt is not None and suffix and suffix != fmt:
+        raise ValueError(f"the extension .{suffix} contradicts --format {fmt}; give -o "
+                         f"{path.with_suffix('.' + fmt).name}, or drop --format")
+    if fmt is not None:
         return fmt
-    suffix = Path(output).suffix.lower().lstrip(".") if output else ""
-    return suffix if suffix in FORMATS else "mp4"
+    if suffix in FORMATS:
+        return suffix
+    named = f"unknown format '{path.suffix}'" if suffix else "no extension to name the format"
+    expected = ", ".join(f".{f}" for f in FORMATS[:-1]) + f" or .{FORMATS[-1]}"
+    raise ValueError(f"{named}; expected {expected} (or --format)")
 
 
 @click.command()
@@ -380,7 +408,8 @@ def _format_of(fmt: str | None, output: str | None) -> str:
 @click.option("-q", "--quality", type=click.Choice(list(QUALITIES)), default="l",
               show_default=True, help="l 480p15, m 720p30, h 1080p60, k 2160p60.")
 @click.option("--format", "fmt", type=click.Choice(FORMATS),
-              help="png = the last frame. Default: from -o's extension, else mp4.")
+              help="png = the last frame. Default: from -o's extension (which must not "
+                   "contradict --format), else mp4.")
 @click.option("-o", "--output", metavar="PATH", help="Where to write (default media/<scene>.<ext>).")
 @click.option("--panel", type=click.Choice(PANELS), default=None,
               help="What the panel shows: the pseudocode (the scenes' default; the source "
@@ -402,7 +431,10 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
         path, class_name = resolve_scene(scene)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
-    fmt = _format_of(fmt, output)
+    try:
+        fmt = format_of(fmt, output)
+    except ValueError as exc:
+        fail(f"{output or repr(output)}: {exc}")
     target = Path(output) if output else default_output(path, class_name, fmt)
     try:
         prepare_output(target)

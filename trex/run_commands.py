@@ -33,6 +33,7 @@ from trex.inputs import (
     fail,
     load_or_exit,
     load_run,
+    output_or_exit,
     report_error,
     try_load,
 )
@@ -178,6 +179,7 @@ def log_command(algorithm: str, polygon: str, heuristic: str | UserHeuristic,
     """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
     from story.spec import RunSpec  # geometry and tracing only: no manim
 
+    output_or_exit(output)  # before any work: one line, exit 2
     named = heuristic.spec if isinstance(heuristic, UserHeuristic) else heuristic
     spec = RunSpec(algorithm, polygon, heuristic=named if algorithm in triangulations() else None)
     spec = load_run(spec, load_or_exit(polygon, holes=True))  # a scene's rule: holes if it can
