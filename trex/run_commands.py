@@ -159,9 +159,10 @@ def triangulate_command(polygons: tuple[str, ...], algorithm: str,
 
     def human(r: dict) -> str:
         n = len(r["triangles"])
+        count = f"{n} triangle{'' if n == 1 else 's'}"
         if r["valid"]:
-            return f"{r['polygon']}: {algorithm}: {n} triangles, valid"
-        return f"{r['polygon']}: {algorithm}: stopped after {n} triangles: {r['why']}"
+            return f"{r['polygon']}: {algorithm}: {count}, valid"
+        return f"{r['polygon']}: {algorithm}: stopped after {count}: {r['why']}"
 
     _run_each(polygons, lambda arg, p: triangulation_record(arg, p, algorithm, heuristic),
               human, as_json, holes=True)
