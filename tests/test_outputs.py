@@ -107,3 +107,11 @@ def test_render_takes_a_format_the_name_agrees_with(fmt, output, chosen, tmp_pat
     code, _, stderr = run(*args)
     assert (code, stderr) == (0, "")
     assert seen == [chosen]
+
+
+@pytest.mark.parametrize("command", [["render", "gravity"], ["hunt", "scaling"],
+                                     ["sample", "star"]])
+def test_an_empty_output_path_is_one_line(command, no_render, no_search):
+    code, _, stderr = run(*command, "-o", "")
+    assert code == 2
+    assert stderr == "error: '': empty path; give a file path\n"

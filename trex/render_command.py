@@ -431,10 +431,12 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
         path, class_name = resolve_scene(scene)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
+    if output == "":
+        fail("'': empty path; give a file path")
     try:
         fmt = format_of(fmt, output)
     except ValueError as exc:
-        fail(f"{output or repr(output)}: {exc}")
+        fail(f"{output}: {exc}")
     target = Path(output) if output else default_output(path, class_name, fmt)
     try:
         prepare_output(target)
