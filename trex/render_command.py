@@ -2,8 +2,9 @@
 
 The scene is a name (``scaling`` → ``scenes/scaling.py``, ``rotation:RotationCcw``) or a
 path (``my_scene.py[:Class]``). Everything that can be checked without manim is checked
-first: the polygon (as ``trex check`` does), the scene's file, the output path. Manim is
-imported only then. It renders into a temporary directory beside the output; the finished
+first: the polygon (as ``trex check`` does), the scene's file, the output path and format
+(:func:`format_of`). Manim is imported only then; the polygon, read once, is checked by the
+scene's rule and handed to it (:func:`scene_input`). It renders into a temporary directory beside the output; the finished
 file is moved into place with ``os.replace``, so an interrupted (Ctrl-C, SIGTERM) or failed
 render leaves nothing at the output path, and no temporary files behind.
 
