@@ -434,6 +434,8 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
         fail(f"{scene}: {exc}")
     if output == "":
         fail("'': empty path; give a file path")
+    if output is not None and Path(output).is_dir():  # said as such, not as a bad extension
+        fail(f"{output}: is a directory; give a file path")
     try:
         fmt = format_of(fmt, output)
     except ValueError as exc:
