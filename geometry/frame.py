@@ -33,13 +33,13 @@ class Diagonal:
 
     @property
     def trace_key(self) -> str:
-        return self.name
+        return f"{self.u.trace_key}{self.v.trace_key}"  # the name, as the board labels them
 
     def trace_state(self) -> dict:
         return {
             "kind": "segment",
             "points": [list(self.u.point), list(self.v.point)],
-            "labels": [self.u.label, self.v.label],
+            "labels": [self.u.trace_key, self.v.trace_key],
             "indices": [self.u.index, self.v.index],
         }
 
@@ -54,13 +54,13 @@ class Triangle:
 
     @property
     def trace_key(self) -> str:
-        return f"T({self.a.label}{self.b.label}{self.c.label})"
+        return f"T({self.a.trace_key}{self.b.trace_key}{self.c.trace_key})"
 
     def trace_state(self) -> dict:
         return {
             "kind": "polygon",
             "points": [list(v.point) for v in (self.a, self.b, self.c)],
-            "labels": [v.label for v in (self.a, self.b, self.c)],
+            "labels": [v.trace_key for v in (self.a, self.b, self.c)],
         }
 
 

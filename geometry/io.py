@@ -50,6 +50,7 @@ from geometry.samples import is_sample, sample_from_spec
 
 __all__ = [
     "Shape",
+    "check_format",
     "polygon_from_rings",
     "polygon_to_json_points",
     "read_polygon",
@@ -482,11 +483,26 @@ def write_polygon(shape: Polygon | Sequence[Point], path: str | os.PathLike[str]
     geometry.errors.InputFormatError: unknown format '.xyz'; expected .json, .geojson, .wkt or .dat
     """
     path = Path(path)
-    writer = _WRITERS.get(path.suffix.lower())
-    if writer is None:
-        raise InputFormatError(f"unknown format '{path.suffix}'; expected {_FORMATS}")
-    text = writer(shape)
+    check_format(path)
+    text = _WRITERS[path.suffix.lower()](shape)
     write_atomic(path, text if text.endswith("\n") else text + "\n")
+
+
+def check_format(path: str | os.PathLike[str]) -> None:
+    """Raise :class:`InputFormatError` unless ``path``'s extension names a format
+    :func:`write_polygon` writes (checked before any work, so a long search is not lost).
+
+    >>> check_format("ce.wkt")
+    >>> check_format("ce")
+    Traceback (most recent call last):
+    ...
+    geometry.errors.InputFormatError: no extension to name the format; expected .json, .geojson, .wkt or .dat
+    """
+    suffix = Path(path).suffix
+    if suffix.lower() in _WRITERS:
+        return
+    named = f"unknown format '{suffix}'" if suffix else "no extension to name the format"
+    raise InputFormatError(f"{named}; expected {_FORMATS}")
 
 
 def write_atomic(path: Path, text: str) -> None:

@@ -25,7 +25,7 @@ geometry.errors.SelfIntersectionError: edges B–C and D–A cross at (1, 1)
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cached_property
 
@@ -85,13 +85,16 @@ class Vertex:
     index: int
     label: str
     point: Point
+    #: the label the log shows, when it is not ``label`` (a vertex of a polygon handed in its
+    #: own frame, :meth:`Polygon.own_frame`: the video keeps the labels on the board)
+    shown: str | None = field(default=None, repr=False, compare=False)
 
     @property
     def trace_key(self) -> str:
-        return self.label
+        return self.shown or self.label
 
     def trace_state(self) -> dict:
-        return {"kind": "point", "at": list(self.point), "label": self.label}
+        return {"kind": "point", "at": list(self.point), "label": self.trace_key}
 
 
 @dataclass(frozen=True, eq=False)
@@ -107,6 +110,8 @@ class Polygon:
     source: tuple[int, ...]
     input_clockwise: bool = False
     warnings: tuple[str, ...] = ()
+    #: the labels the log shows, when they are not ``labels`` (see :meth:`own_frame`)
+    shown: tuple[str, ...] | None = field(default=None, repr=False)
 
     @classmethod
     def from_points(cls, raw: object) -> Polygon:
@@ -139,23 +144,55 @@ class Polygon:
             labels=tuple(self.labels[i] for i in indices),
             source=tuple(self.source[i] for i in indices),
             input_clockwise=self.input_clockwise,
+            shown=tuple(self.shown[i] for i in indices) if self.shown else None,
         )
 
+    def own_frame(self) -> Polygon:
+        """This polygon in its own frame, as :meth:`from_points` would store it: from the
+        vertex before the left-most, so that the left-most is **B** (index 1), A and C its
+        neighbours, the rest labelled in order; ``source`` maps each vertex to its index
+        here. A sub-polygon keeps its parent's labels (:meth:`sub_polygon`); a heuristic is
+        handed it in this frame. What it traces still shows the labels it had (``shown``),
+        as the video draws them. A polygon already in its own frame is returned as it is.
+
+        >>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 6), (0, 4)])
+        >>> piece = p.sub_polygon([2, 3, 4]).own_frame()
+        >>> piece.labels, piece.source, piece.trace_key, piece.vertex(1).trace_key
+        (('A', 'B', 'C'), (1, 2, 0), 'P(DEC)', 'E')
+        >>> p.own_frame() is p
+        True
+        """
+        n = self.n
+        start = (self.leftmost() - 1) % n
+        labels = tuple(vertex_label(k) for k in range(n))
+        if start == 0 and self.labels == labels:
+            return self
+        order = tuple((start + k) % n for k in range(n))
+        return Polygon(points=tuple(self.points[i] for i in order), labels=labels,
+                       source=order, input_clockwise=self.input_clockwise,
+                       shown=tuple(self.shown_labels[i] for i in order))
+
+    @property
+    def shown_labels(self) -> tuple[str, ...]:
+        """The labels the log shows: ``labels``, unless handed in another frame."""
+        return self.shown or self.labels
+
     def vertex(self, i: int) -> Vertex:
-        return Vertex(i, self.labels[i], self.points[i])
+        return Vertex(i, self.labels[i], self.points[i], self.shown[i] if self.shown else None)
 
     @property
     def trace_key(self) -> str:
         """``P(ABCDE)``; long polygons are named by their first and last labels and size."""
+        labels = self.shown_labels
         if self.n <= 16:
-            return f"P({''.join(self.labels)})"
-        return f"P({''.join(self.labels[:3])}…{''.join(self.labels[-3:])}, n={self.n})"
+            return f"P({''.join(labels)})"
+        return f"P({''.join(labels[:3])}…{''.join(labels[-3:])}, n={self.n})"
 
     def trace_state(self) -> dict:
         return {
             "kind": "polygon",
             "points": [list(p) for p in self.points],
-            "labels": list(self.labels),
+            "labels": list(self.shown_labels),
         }
 
     def __len__(self) -> int:

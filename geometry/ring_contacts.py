@@ -48,12 +48,32 @@ def check_rings(shape) -> None:
     ``shape`` is a :class:`geometry.holes.PolygonWithHoles` whose rings are each simple.
     """
     points = shape.points
+    _check_repeats(points, shape.starts)
     arr = np.asarray(points, dtype=float)
     ends = np.asarray(shape.next_array)
     rings = shape.ring_ids
     tree = shapely.STRtree(shapely.linestrings(np.stack([arr, arr[ends]], axis=1)))
     _check_contacts(points, arr, ends, rings, tree)
     _check_containment(shape, arr, ends, rings, tree)
+
+
+def _check_repeats(points, starts) -> None:
+    """A ring given twice (the same vertices, in either direction) is said so, not as the
+    rings touching at its first vertex.
+
+    >>> _check_repeats([(0, 0), (9, 0), (0, 9), (1, 1), (2, 1), (1, 2), (1, 2), (2, 1), (1, 1)],
+    ...                [0, 3, 6, 9])
+    Traceback (most recent call last):
+    ...
+    geometry.errors.HoleError: holes 1 and 2 are the same ring twice
+    """
+    seen: dict[frozenset, int] = {}
+    for ring in range(len(starts) - 1):
+        key = frozenset(points[starts[ring]:starts[ring + 1]])
+        first = seen.setdefault(key, ring)
+        if first != ring:
+            raise HoleError(f"hole {ring} is the outer ring again" if first == 0
+                            else f"holes {first} and {ring} are the same ring twice")
 
 
 def _check_contacts(points, arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree) -> None:
@@ -78,7 +98,8 @@ def _contact_message(first: int, second: int, contact: Contact, seg: tuple[Point
     if contact is Contact.PROPER:
         if first == 0:
             return f"hole {second} crosses the outer ring at {fmt_point(intersection_point(p, q, r, s))}"
-        return f"holes {first} and {second} overlap"
+        where = fmt_point(intersection_point(p, q, r, s))
+        return f"holes {first} and {second} overlap: their edges cross at {where}"
     where = fmt_point(_touch_point(p, q, r, s))
     if first == 0:
         return f"hole {second} touches the outer ring at {where}"

@@ -3,7 +3,9 @@
 A user's heuristic is a function that takes a :class:`~geometry.polygon.Polygon` and returns
 the diagonal it claims: a :class:`~geometry.frame.Diagonal`, or a pair of vertices given as
 indices (``polygon.points[i]``), labels (``"B"``) or :class:`~geometry.polygon.Vertex`
-objects. It may use the shared logger (``@tracing.traced`` on its helpers,
+objects, all read in the frame of the polygon it is handed: B its left-most vertex, A and C
+B's neighbours, the rest in order, also for a piece of divide and conquer, which keeps its
+parent's labels otherwise (:meth:`~geometry.polygon.Polygon.own_frame`). It may use the shared logger (``@tracing.traced`` on its helpers,
 ``tracing.Shape`` for what it wants drawn); :func:`load_user_heuristic` wraps it so that,
 like the built-in heuristics, the whole run is one traced call named after the function
 and its answer is entered into the log by :func:`geometry.frame.claim`, stated
@@ -577,9 +579,12 @@ def _wrap(raw: Callable[[Polygon], Any], name: str, path: Path) -> Callable[[Pol
         lines: list[int | None] = []
         seen: list[int] = []
         token = _RETURN_LINES.set(lines)
+        # the function reads the polygon in its own frame (B its left-most vertex), as the
+        # thesis does: a piece of divide and conquer keeps its parent's labels otherwise
+        framed = polygon.own_frame()
         try:
             with _users_code(name, seen):
-                answer = raw(polygon)
+                answer = raw(framed)
         except UserHeuristicError:
             raise
         except (SystemExit, KeyboardInterrupt) as exc:
@@ -597,7 +602,9 @@ def _wrap(raw: Callable[[Polygon], Any], name: str, path: Path) -> Callable[[Pol
                 way=f"raised {type(exc).__name__} at line {line}") from None
         finally:
             _RETURN_LINES.reset(token)
-        u, v = endpoints(polygon, answer, name)
+        u, v = endpoints(framed, answer, name)  # the answer, read in that frame
+        if framed is not polygon:  # … is claimed in the polygon's own vertices
+            u, v = (polygon.vertex(framed.source[w.index]) for w in (u, v))
         if _claimed(tracing.events_so_far()[start:], f"{u.label}{v.label}"):
             return Diagonal(u, v)  # it called claim() itself: the log has it already
         with tracing.at_line(lines[-1] if lines else None):

@@ -270,8 +270,22 @@ def _contact_error(
         where = fmt_point(intersection_point(a, b, c, d))
         return SelfIntersectionError(f"edges {name1} and {name2} cross at {where}")
     if contact is Contact.OVERLAP:
-        return SelfIntersectionError(f"edges {name1} and {name2} overlap")
+        a, b, c, d = points[i], points[(i + 1) % n], points[j], points[(j + 1) % n]
+        start, end = overlap_ends(a, b, c, d)
+        return SelfIntersectionError(f"edges {name1} and {name2} overlap from "
+                                     f"{fmt_point(start)} to {fmt_point(end)}")
     return SelfIntersectionError(_touch_message(points, i, j, label))
+
+
+def overlap_ends(a: Point, b: Point, c: Point, d: Point) -> tuple[Point, Point]:
+    """The ends of the stretch two collinear overlapping segments ab and cd share.
+
+    >>> overlap_ends((0, 0), (4, 0), (6, 0), (2, 0))
+    ((2, 0), (4, 0))
+    """
+    shared = sorted({x for x in (a, b) if on_segment(x, c, d)}
+                    | {x for x in (c, d) if on_segment(x, a, b)})
+    return shared[0], shared[-1]
 
 
 def _touch_message(points: list[Point], i: int, j: int, label: Callable[[int], str]) -> str:

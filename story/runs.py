@@ -16,22 +16,48 @@ import tracing
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.holes import PolygonWithHoles
-from geometry.io import read_polygon, read_shape
+from geometry.io import Shape, read_shape
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
-from geometry.triangulate import HOLE_ALGORITHMS, triangulate
+from geometry.triangulate import refuse_holes, triangulate
 from geometry.user_heuristics import UserHeuristic, is_user_spec, load_user_heuristic
 from story.pseudocode import from_docstring, to_json
 from story.registry import REGISTRY, hole_pseudocode, shown
 
 
-def run_logged(algorithm: str, polygon: str, heuristic: str | None = None) -> tracing.Log:
+def fit_for(algorithm: str, shape: Shape) -> Shape:
+    """``shape`` if ``algorithm`` can run on it: the one rule for a polygon handed to a run.
+    Only :data:`geometry.triangulate.HOLE_ALGORITHMS` take holes; the heuristics, the other
+    triangulations and a heuristic of one's own refuse them in one line.
+
+    >>> fit_for("scaling", read_shape("keyhole"))
+    Traceback (most recent call last):
+    ...
+    geometry.errors.HolesNotSupportedError: scaling needs a simple polygon and this one has 2 holes; ear-clipping, monotone and cdt triangulate polygons with holes
+    >>> fit_for("monotone", read_shape("keyhole")).hole_count
+    2
+    """
+    refuse_holes(shape, algorithm)
+    return shape
+
+
+def read_for(algorithm: str, polygon: str) -> Shape:
+    """The polygon file or sample ``polygon``, read as a run of ``algorithm`` takes it
+    (:func:`fit_for`). Raises :class:`geometry.errors.GeometryError` (one line)."""
+    return fit_for(algorithm, read_shape(polygon))
+
+
+def run_logged(algorithm: str, polygon: str, heuristic: str | None = None,
+               shape: Shape | None = None) -> tracing.Log:
     """Run a heuristic (by name, or ``file.py:function`` of one's own) or a triangulation
-    algorithm on a polygon file or sample (with holes, for the algorithms that take them)."""
-    if is_user_spec(algorithm):
-        return _run_user(algorithm, polygon)
-    read = read_shape if algorithm in HOLE_ALGORITHMS else read_polygon
-    return record_run(algorithm, read(polygon), polygon, heuristic)
+    algorithm on a polygon file or sample (with holes, for the algorithms that take them).
+    ``shape``, if given, is that polygon read already (:func:`read_for`): it is not read
+    again."""
+    own = load_user_heuristic(algorithm) if is_user_spec(algorithm) else None  # a bad spec first
+    shape = read_for(algorithm, polygon) if shape is None else fit_for(algorithm, shape)
+    if own is not None:
+        return record_user_run(own, shape, polygon)
+    return record_run(algorithm, shape, polygon, heuristic)
 
 
 def record_run(algorithm: str, p: Polygon | PolygonWithHoles, polygon: str,
@@ -73,16 +99,12 @@ def saved_log(path: str) -> tracing.Log:
     return log
 
 
-def _run_user(spec: str, polygon: str) -> tracing.Log:
-    """A heuristic of one's own: the meta names it (``user_heuristic``, which turns on the
-    storyboard's generic beats) and carries its source, and the pseudocode of its docstring
-    if it has some (:func:`story.pseudocode.from_docstring`), so a saved log shows them too."""
-    return record_user_run(load_user_heuristic(spec), read_polygon(polygon), polygon)
-
-
 def record_user_run(heuristic: UserHeuristic, p: Polygon, polygon: str) -> tracing.Log:
     """The log of a loaded heuristic of one's own on the polygon ``p`` (``polygon``: the name
-    the log records for it), as :func:`run_logged` records it."""
+    the log records for it), as :func:`run_logged` records it: the meta names it
+    (``user_heuristic``, which turns on the storyboard's generic beats) and carries its
+    source, and the pseudocode of its docstring if it has some
+    (:func:`story.pseudocode.from_docstring`), so a saved log shows them too."""
     spec = heuristic.spec
     meta = {"algorithm": spec, "polygon": polygon, "shown": heuristic.name,
             "user_heuristic": heuristic.name, "code": [list(row) for row in heuristic.source()]}

@@ -15,14 +15,27 @@ a saved one. ``trex`` and the tests build specs and hand them to scenes; under p
 RunSpec(algorithm='scaling', polygon='counterexample-twin', heuristic=None, saved=None)
 >>> spec.replaying("run.json").saved
 'run.json'
+
+A polygon is read once, by one rule (:func:`story.runs.read_for`: holes only for the
+algorithms that take them): :meth:`RunSpec.read` keeps the polygon read (``shape``) in the
+spec, and a scene handed that spec plays it without reading the file again. ``trex`` reads
+and checks the polygon that way before anything renders, then hands the scene the spec.
+
+>>> spec.on("keyhole").read()
+Traceback (most recent call last):
+...
+geometry.errors.HolesNotSupportedError: scaling needs a simple polygon and this one has 2 holes; ear-clipping, monotone and cdt triangulate polygons with holes
+>>> RunSpec("monotone", "keyhole").read().shape.hole_count
+2
 """
 
 from __future__ import annotations
 
-from dataclasses import KW_ONLY, dataclass, replace
+from dataclasses import KW_ONLY, dataclass, field, replace
 
 import tracing
-from story.runs import run_logged, saved_log
+from geometry.io import Shape, read_shape
+from story.runs import fit_for, run_logged, saved_log
 
 __all__ = ["RunSpec"]
 
@@ -41,6 +54,9 @@ class RunSpec:
         Divide and conquer's heuristic (None: gravity); other algorithms take none.
     saved : str or None
         The path of a saved log (``trex log`` writes them) to replay instead of running.
+    shape : Polygon, PolygonWithHoles or None
+        ``polygon`` as read and checked (:meth:`read`); None: not read yet, the run reads it.
+        Not compared: it is what ``polygon`` names.
 
     More options (pacing, the panel's) are to come as further keyword fields with defaults.
     """
@@ -50,17 +66,29 @@ class RunSpec:
     _: KW_ONLY
     heuristic: str | None = None
     saved: str | None = None
+    shape: Shape | None = field(default=None, repr=False, compare=False)
 
     def log(self) -> tracing.Log:
-        """The log of this run: the saved one if given, else a live run."""
+        """The log of this run: the saved one if given, else a live run (on ``shape`` when the
+        polygon was read already)."""
         if self.saved:
             return saved_log(self.saved)
-        return run_logged(self.algorithm, self.polygon, self.heuristic)
+        return run_logged(self.algorithm, self.polygon, self.heuristic, self.shape)
+
+    def read(self, shape: Shape | None = None) -> RunSpec:
+        """This run with its polygon read: ``shape`` (``polygon`` read already, as ``trex``
+        reads every polygon argument) or read now, and checked by the one rule
+        (:func:`story.runs.fit_for`). A replay reads nothing: it comes back as it is.
+        Raises :class:`geometry.errors.GeometryError` (or OSError, ValueError) in one line."""
+        if self.saved:
+            return self
+        shape = read_shape(self.polygon) if shape is None else shape
+        return replace(self, shape=fit_for(self.algorithm, shape))
 
     def on(self, polygon: str) -> RunSpec:
         """The same run, live on another polygon (a saved log no longer applies)."""
-        return replace(self, polygon=polygon, saved=None)
+        return replace(self, polygon=polygon, saved=None, shape=None)
 
     def replaying(self, saved: str) -> RunSpec:
         """The same run, replayed from the saved log at ``saved``."""
-        return replace(self, saved=saved)
+        return replace(self, saved=saved, shape=None)

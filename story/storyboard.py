@@ -387,9 +387,9 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
         walk.heuristic_polygon.pop()
         return
     if e.kind == "enter" and is_frame_key(e.target):
-        labels = "".join(e.state["labels"])
-        b = e.state["labels"][1]  # T = triangle_at(B) is (A, B, C): its tip is the middle one
-        yield walk.beat(ShowTriangle, f"T = {labels}: {b} and its two neighbours", e,
+        corners = e.state["labels"]  # the run's own: a piece keeps its parent's labels
+        middle = corners[1] if len(corners) == 3 else "B"
+        yield walk.beat(ShowTriangle, f"T = {''.join(corners)}: {middle} and its two neighbours", e,
                         points=e.state["points"], labels=e.state["labels"])
         return
     if e.kind == "return":
@@ -428,8 +428,16 @@ def read_pick(caption: str, none_caption: str | None = None) -> Reading:
 def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     found = [show(v) for v in ret.result or []]
     caption = (f"Candidates inside T: {', '.join(found)}" if found
-               else "No vertex inside T: AC is an inner diagonal")
+               else f"No vertex inside T: {_outer_corners(walk, call)} is an inner diagonal")
     yield walk.step(Candidates, caption, call, ret, candidates=found)
+
+
+def _outer_corners(walk: Walk, call: Event) -> str:
+    """T's corners but B, named as the run's own vertices (``AC`` on the whole polygon, the
+    piece's own on a piece of divide and conquer): T as the call was handed it."""
+    state = walk.live.get(ref(call, "t"))
+    labels = state.get("labels") if state else None
+    return f"{labels[0]}{labels[2]}" if labels and len(labels) == 3 else "AC"
 
 
 def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:

@@ -175,7 +175,7 @@ def test_sample_to_file_then_check(tmp_path, suffix):
         (("sample", "nope"), "error: unknown sample 'nope'; known: comb"),
         (("sample", "comb", "-n", "3"), "error: sample comb needs n ≥ 12, got 3"),
         (("sample", "square", "-o", "out.xyz"), "error: out.xyz: unknown format '.xyz'"),
-        (("sample", "square", "-o", "/no/such/dir/x.json"), "error: /no/such/dir/x.json: cannot"),
+        (("sample", "square", "-o", "/no/such/dir/x.json"), "error: /no/such/dir/x.json: no such directory: /no/such/dir"),
     ],
 )
 def test_sample_errors(args, fragment):

@@ -96,13 +96,18 @@ def test_geojson_feature_with_interior_rings(tmp_path):
     ([SQUARE, [(1, 1), (5, 1), (5, 5)], [(7, 7), (8, 7), (8, 8)], [(5, 2), (6, 2), (6, 3)]],
      "holes 1 and 3 touch at (5, 2)"),
     ([SQUARE, [(1, 1), (5, 1), (5, 5)], [(7, 7), (8, 7), (8, 8)], [(3, 0.5), (6, 1.5), (3.5, 2.5)]],
-     "holes 1 and 3 overlap"),
-    ([SQUARE, [(1, 1), (5, 1), (5, 5)], [(1, 1), (5, 1), (5, 5)]], "holes 1 and 2 touch at (1, 1)"),
+     "holes 1 and 3 overlap: their edges cross at (5, 1.9)"),
+    ([SQUARE, [(1, 1), (5, 1), (5, 5)], [(1, 1), (5, 1), (5, 5)]],
+     "holes 1 and 2 are the same ring twice"),
+    ([SQUARE, [(1, 1), (5, 1), (5, 5)], [(5, 5), (5, 1), (1, 1)]],
+     "holes 1 and 2 are the same ring twice"),  # also the other way round
+    ([SQUARE, [(1, 1), (5, 1), (5, 5)], [(1, 1), (5, 1), (5, 4)]], "holes 1 and 2 touch at (1, 1)"),
+    ([SQUARE, list(reversed(SQUARE))], "hole 1 is the outer ring again"),
     ([SQUARE, [(1, 1), (6, 1), (6, 6), (1, 6)], [(2, 2), (3, 2), (3, 3)]], "hole 2 lies inside hole 1"),
     ([SQUARE, [(2, 2), (3, 2), (3, 3)], [(1, 1), (6, 1), (6, 6), (1, 6)]], "hole 1 lies inside hole 2"),
     ([SQUARE, [(11, 1), (12, 1), (12, 2)]], "hole 1 lies outside the polygon"),
     ([SQUARE, [(-5, -5), (15, -5), (15, 15), (-5, 15)]], "hole 1 lies outside the polygon"),
-    ([SQUARE, SQUARE], "hole 1 touches the outer ring at (0, 0)"),
+    ([SQUARE, SQUARE], "hole 1 is the outer ring again"),
     ([SQUARE, [(1, 1), (1, 1), (2, 2)]], "hole 1: polygon has 2 distinct points"),
     ([SQUARE, [(1, 1), (2, 2), (3, 3)]], "hole 1: all 3 points are collinear"),
     ([SQUARE, [(1, 1), (1 + 1e-9, 1), (1, 2)], [(5, 5), (10 - 1e-12, 5), (5, 6)]], None),
@@ -394,7 +399,8 @@ def test_trex_log_with_holes(tmp_path):
     assert invoke("log", "ear-clipping", "keyhole", "-o", str(out)).exit_code == 0
     assert '"join_hole"' in out.read_text()
     result = invoke("log", "prune-and-search", "keyhole", "-o", str(out))
-    assert result.exit_code == 2 and "holes are not supported here" in result.stderr
+    assert result.exit_code == 2
+    assert "prune-and-search needs a simple polygon and this one has 2 holes" in result.stderr
 
 
 def test_huge_and_tiny_coordinates_in_one_polygon_for_geos():

@@ -35,6 +35,7 @@ def scaling_mp4(tmp_path_factory):
     out = tmp_path_factory.mktemp("mp4") / "scaling.mp4"
     code, stdout, stderr = run("render", "scaling", "-q", "l", "-o", str(out))
     assert code == 0, stderr
+    assert stderr == ""  # stderr is no terminal here: no progress bars (issue 24 item 12)
     return out, stdout
 
 

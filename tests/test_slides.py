@@ -433,3 +433,22 @@ def test_a_scene_of_several_runs_is_one_clip_per_beat_of_every_run(tmp_path):
     assert code == 0, stderr
     assert len(clips_of(out)) == len(beats)
     assert [s["kind"] for s in page_data(out)["steps"]] == [b.action for b in beats]
+
+
+def test_the_speaker_view_keeps_next_above_the_fold_at_1366x768(tmp_path, browser):
+    """A laptop's screen (issue 24 item 12): the next step's caption shows without scrolling,
+    as do the video's foot and the buttons. The page alone: its layout needs no clip."""
+    from trex.slides_page import Slide, write_slides
+
+    long = "Candidates inside T: D, E, F, G — the water reaches them one after another"
+    slides = [Slide(f"clips/{k:03d}.mp4", f"{long} ({k})") for k in range(1, 6)]
+    write_slides(tmp_path, slides, "Gravity: the ball drops from B", "gravity on lecture",
+                 (854, 480))
+    page = browser.new_page(viewport={"width": 1366, "height": 768})
+    page.goto((tmp_path / "index.html").as_uri() + "?notes#2")
+    page.wait_for_function("() => document.getElementById('next').textContent !== ''")
+    assert page.locator("#next").inner_text() == f"{long} (3)"
+    for element in ("#notes", "#clip", "#counter", "#caption"):
+        box = page.locator(element).bounding_box()
+        assert box is not None and box["y"] + box["height"] <= 768, (element, box)
+    page.close()

@@ -20,7 +20,7 @@ from trex import exit_status
 from trex.course.command import COMMANDS as COURSE_COMMANDS
 from trex.exercises_command import COMMANDS as EXERCISE_COMMANDS
 from trex.hunt_command import COMMANDS as HUNT_COMMANDS
-from trex.inputs import EXIT_INVALID, error_line, fail, first_line, try_load
+from trex.inputs import EXIT_INVALID, error_line, fail, first_line, output_or_exit, try_load
 from trex.lecture_command import COMMANDS as LECTURE_COMMANDS
 from trex.player_command import COMMANDS as PLAYER_COMMANDS
 from trex.render_command import COMMANDS as RENDER_COMMANDS
@@ -165,6 +165,8 @@ def check(polygons: tuple[str, ...]) -> None:
 @click.option("-o", "--output", metavar="FILE", help="Write here (format by extension).")
 def sample(name: str, n: int | None, seed: int, output: str | None) -> None:
     """Write sample NAME as JSON points to stdout, or to FILE (format by extension)."""
+    if output is not None:
+        output_or_exit(output, polygon=True)  # before any work
     try:
         points = make_sample(name, n, seed)
     except GeometryError as exc:

@@ -30,7 +30,7 @@ from story.hunt import (
     verdict_line,
 )
 from trex.exit_status import FINDING as EXIT_FOUND
-from trex.inputs import call_timeout_option, error_line, fail
+from trex.inputs import call_timeout_option, error_line, fail, output_or_exit
 from trex.run_commands import HeuristicOrFile
 
 
@@ -84,6 +84,8 @@ def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_ver
     HEURISTIC is a built-in name or FILE.py:FUNCTION of your own. Exit status 1: found;
     0: none within the budget; 2: bad input.
     """
+    if output is not None:
+        output_or_exit(output, polygon=True)  # before the search: one line, exit 2
     show_bar = not as_json and sys.stderr.isatty()
     bar_context = (click.progressbar(length=budget, label="hunting", file=sys.stderr)
                    if show_bar else contextlib.nullcontext())

@@ -15,15 +15,18 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import NoReturn
+from typing import TYPE_CHECKING, NoReturn
 
 import click
 
 from geometry.errors import GeometryError
-from geometry.io import Shape, read_polygon, read_shape
+from geometry.io import Shape, check_format, read_polygon, read_shape
 from geometry.polygon import Polygon
 from geometry.user_heuristics import DEFAULT_CALL_TIMEOUT, call_timeout, set_call_timeout
 from trex.exit_status import INVALID as EXIT_INVALID
+
+if TYPE_CHECKING:
+    from story.spec import RunSpec
 
 # Reading can also fail outside the GeometryError family (an unexpected OS
 # error, a value shapely rejects); those must still end as one line.
@@ -80,6 +83,23 @@ def load_or_exit(arg: str, *, holes: bool = False) -> Polygon:
     return polygon
 
 
+def load_run(spec: RunSpec, shape: Shape | None = None) -> RunSpec:
+    """The :class:`story.spec.RunSpec` ``spec`` with its polygon read once and checked by the
+    one rule a run's polygon obeys (:meth:`story.spec.RunSpec.read`: holes only for the
+    algorithms that take them); a scene handed it reads no file. ``shape`` is the polygon
+    read already (a command reads its ``--polygon`` before manim is imported), else it is
+    read here, warnings reported. A bad polygon is one line and exit 2; a replay comes back
+    as it is."""
+    if spec.saved:
+        return spec
+    if shape is None:
+        shape = load_or_exit(spec.polygon, holes=True)
+    try:
+        return spec.read(shape)
+    except READ_ERRORS as exc:
+        fail(f"{spec.polygon}: {error_line(exc)}")
+
+
 def _set_call_timeout(ctx: click.Context, _param, value: float) -> float:
     """Set the limit for this command, and put the one before back when it ends (a command
     invoked in process, as tests do, leaves no limit behind)."""
@@ -95,6 +115,45 @@ call_timeout_option = click.option(
     "--call-timeout", type=click.FloatRange(min=0), default=DEFAULT_CALL_TIMEOUT,
     show_default=True, is_eager=True, expose_value=False, callback=_set_call_timeout,
     metavar="SECONDS", help="Stop a FILE.py:FUNCTION of your own that runs longer (0: never).")
+
+
+def check_output_file(path: str, *, polygon: bool = False) -> Path:
+    """``path`` as a file a command may write when its work is done, checked before the work:
+    not a directory, in an existing directory that can be written to, and with ``polygon``,
+    an extension naming a polygon format (:func:`geometry.io.check_format`). Raises
+    ValueError with a one-line reason (the caller names the path).
+
+    >>> check_output_file("/no/such/dir/ce.json")
+    Traceback (most recent call last):
+    ...
+    ValueError: no such directory: /no/such/dir
+    """
+    target = Path(path)
+    if not path:
+        raise ValueError("empty path; give a file path")
+    if target.is_dir():
+        raise ValueError("is a directory; give a file path")
+    if polygon:
+        try:
+            check_format(target)
+        except GeometryError as exc:
+            raise ValueError(error_line(exc)) from None
+    parent = target.parent
+    if not parent.exists():
+        raise ValueError(f"no such directory: {parent}")
+    if not parent.is_dir():
+        raise ValueError(f"not a directory: {parent}")
+    if not os.access(parent, os.W_OK):
+        raise ValueError(f"cannot write to directory {parent}")
+    return target
+
+
+def output_or_exit(path: str, *, polygon: bool = False) -> Path:
+    """:func:`check_output_file`, or one line naming ``path`` and exit 2."""
+    try:
+        return check_output_file(path, polygon=polygon)
+    except ValueError as exc:
+        fail(f"{path or repr(path)}: {exc}")
 
 
 def make_parent(path: Path) -> None:

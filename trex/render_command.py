@@ -2,8 +2,9 @@
 
 The scene is a name (``scaling`` → ``scenes/scaling.py``, ``rotation:RotationCcw``) or a
 path (``my_scene.py[:Class]``). Everything that can be checked without manim is checked
-first: the polygon (as ``trex check`` does), the scene's file, the output path. Manim is
-imported only then. It renders into a temporary directory beside the output; the finished
+first: the polygon (as ``trex check`` does), the scene's file, the output path and format
+(:func:`format_of`). Manim is imported only then; the polygon, read once, is checked by the
+scene's rule and handed to it (:func:`scene_input`). It renders into a temporary directory beside the output; the finished
 file is moved into place with ``os.replace``, so an interrupted (Ctrl-C, SIGTERM) or failed
 render leaves nothing at the output path, and no temporary files behind.
 
@@ -27,7 +28,7 @@ from pathlib import Path
 import click
 
 from geometry.errors import GeometryError
-from geometry.triangulate import HOLE_ALGORITHMS
+from geometry.io import Shape
 from geometry.user_heuristics import UserHeuristicError
 from story.pseudocode import PANELS
 from story.scene_kinds import (
@@ -36,11 +37,17 @@ from story.scene_kinds import (
     WithPanel,
     algorithm_of,
     heuristic_of,
-    plays_one,
     plays_several,
 )
 from trex import encoders, exit_status
-from trex.inputs import call_timeout_option, error_line, fail, load_or_exit, make_parent
+from trex.inputs import (
+    call_timeout_option,
+    error_line,
+    fail,
+    load_or_exit,
+    load_run,
+    make_parent,
+)
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 #: The project's manim settings, which plain ``manim`` reads when run from the repository
@@ -166,34 +173,40 @@ def dry_run(cls: type, polygon: str) -> None:
     RunSpec(algorithm, polygon, heuristic=heuristic_of(cls)).log()
 
 
-def _environment_polygon(cls: type) -> str | None:
-    """The polygon plain ``manim`` would hand a one-run scene from ``TREX_POLYGON`` (None: its
-    default, a saved log, or not a one-run scene)."""
-    if not plays_one(cls):
-        return None
+def run_once(spec) -> None:
+    """Run the :class:`story.spec.RunSpec` a scene was handed once, without drawing: an input
+    the algorithm rejects (a triangle has no diagonal …) is one line naming the polygon and
+    exit 2, before rendering starts."""
     try:
-        spec = cls.from_environment().spec
-    except ValueError:
-        return None  # a TREX_LOG it cannot play: reported when the render starts
-    if spec is None or spec.saved is not None or spec.polygon == cls.default_spec().polygon:
-        return None
-    return spec.polygon
+        spec.log()
+    except (GeometryError, ValueError, KeyError) as exc:
+        fail(f"{spec.polygon}: {error_line(exc)}")
 
 
-def scene_input(cls: type, polygon: str | None, panel: str | None = None) -> type:
+def scene_input(cls: type, polygon: str | None, panel: str | None = None,
+                shape: Shape | None = None) -> type:
     """The scene class handed its run as data (a subclass carrying a
     :class:`story.spec.RunSpec`, see :class:`metaphors.scene.SpecScene`): on ``polygon`` if
     given, else as ``manim`` would give it (its default run, with ``TREX_POLYGON`` and
-    ``TREX_LOG`` from the environment). A scene of several runs plays its own polygons; a
-    Scene that takes no run comes back as it is. ``panel`` (one of
-    :data:`story.pseudocode.PANELS`), if given, is what a scene with a panel shows there
-    (:meth:`metaphors.scene.TraceScene.with_panel`); None: the scene's own. Raises ValueError
-    for a ``TREX_LOG`` the scene cannot play."""
+    ``TREX_LOG`` from the environment). A polygon given, or from ``TREX_POLYGON``, is read
+    here once and checked by the run's rule (:func:`trex.inputs.load_run`; ``shape``: it read
+    already), one line and exit 2 if bad: the scene plays what was checked and reads no file.
+    A scene of several runs plays its own polygons; a Scene that takes no run comes back as
+    it is. ``panel`` (one of :data:`story.pseudocode.PANELS`), if given, is what a scene with
+    a panel shows there (:meth:`metaphors.scene.TraceScene.with_panel`); None: the scene's
+    own. Raises ValueError for a ``TREX_LOG`` the scene cannot play."""
     if panel is not None and isinstance(cls, WithPanel):
         cls = cls.with_panel(panel)
     if not isinstance(cls, Handed):
         return cls
-    return cls.handed(polygon) if polygon is not None else cls.from_environment()
+    if plays_several(cls):
+        return cls.handed(polygon) if polygon is not None else cls.from_environment()
+    if polygon is not None:
+        return cls.with_spec(load_run(cls.default_spec().on(polygon), shape))
+    spec = cls.from_environment().spec
+    if spec.saved or spec == cls.default_spec():
+        return cls.with_spec(spec)  # a replay, or the default run: nothing handed to check
+    return cls.with_spec(load_run(spec))
 
 
 # --- rendering --------------------------------------------------------------------------------------
@@ -295,6 +308,7 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
                 signals: Signals | None = None, steps: dict | None = None) -> Path:
     """Render ``make_scene()`` with manim and move the finished file to ``output``.
 
+    With ``progress``, manim's progress bars are shown when stderr is a terminal.
     Renders inside a temporary directory next to ``output`` (same filesystem, so the final
     ``os.replace`` is atomic) and removes it whatever happens. With ``srt``, the subtitle
     file manim writes beside a video is moved to ``output`` with suffix ``.srt``.
@@ -326,7 +340,9 @@ def _settings(media: Path, fmt: str, quality: str, progress: bool) -> dict:
         "media_dir": str(media),
         "disable_caching": True,
         "verbosity": "WARNING",
-        "progress_bar": "display" if progress else "none",
+        # manim's bars redraw a line in place: on a terminal only (a pipe or a log file
+        # would get every redraw, hundreds of lines)
+        "progress_bar": "display" if progress and sys.stderr.isatty() else "none",
         "preview": False,
         # x264 as manim.cfg has it (the same input, the same bytes)
         "video_encoder_options": dict(X264_OPTIONS),
@@ -377,11 +393,36 @@ def _write_marks(scene, video: Path, made_by: dict) -> Path:
     return write_marks(Marks(steps, steps_end(scene), made_by), video)
 
 
-def _format_of(fmt: str | None, output: str | None) -> str:
-    if fmt:
+def format_of(fmt: str | None, output: str | None) -> str:
+    """The format to render: ``--format`` if given, else ``-o``'s extension, else mp4. Raises
+    ValueError (one line) for an extension that contradicts ``--format``, or, with no
+    ``--format``, one that names no format :data:`FORMATS` has.
+
+    >>> format_of(None, "clock.GIF"), format_of("png", None), format_of(None, None)
+    ('gif', 'png', 'mp4')
+    >>> format_of("png", "p.mp4")
+    Traceback (most recent call last):
+    ...
+    ValueError: the extension .mp4 contradicts --format png; give -o p.png, or drop --format
+    >>> format_of(None, "out.webm")
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown format '.webm'; expected .mp4, .gif or .png (or --format)
+    """
+    if output is None:
+        return fmt or "mp4"
+    path = Path(output)
+    suffix = path.suffix.lower().lstrip(".")
+    if fmt is not None and suffix and suffix != fmt:
+        raise ValueError(f"the extension .{suffix} contradicts --format {fmt}; give -o "
+                         f"{path.with_suffix('.' + fmt).name}, or drop --format")
+    if fmt is not None:
         return fmt
-    suffix = Path(output).suffix.lower().lstrip(".") if output else ""
-    return suffix if suffix in FORMATS else "mp4"
+    if suffix in FORMATS:
+        return suffix
+    named = f"unknown format '{path.suffix}'" if suffix else "no extension to name the format"
+    expected = ", ".join(f".{f}" for f in FORMATS[:-1]) + f" or .{FORMATS[-1]}"
+    raise ValueError(f"{named}; expected {expected} (or --format)")
 
 
 @click.command()
@@ -390,7 +431,8 @@ def _format_of(fmt: str | None, output: str | None) -> str:
 @click.option("-q", "--quality", type=click.Choice(list(QUALITIES)), default="l",
               show_default=True, help="l 480p15, m 720p30, h 1080p60, k 2160p60.")
 @click.option("--format", "fmt", type=click.Choice(FORMATS),
-              help="png = the last frame. Default: from -o's extension, else mp4.")
+              help="png = the last frame. Default: from -o's extension (which must not "
+                   "contradict --format), else mp4.")
 @click.option("-o", "--output", metavar="PATH", help="Where to write (default media/<scene>.<ext>).")
 @click.option("--panel", type=click.Choice(PANELS), default=None,
               help="What the panel shows: the pseudocode (the scenes' default; the source "
@@ -405,13 +447,21 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
 
     Prints the output path. An interrupted or failed render leaves nothing at it.
     """
-    if polygon is not None:
-        load_or_exit(polygon)  # bad input: one line, exit 2, before manim is even imported
+    # bad input: one line, exit 2, before manim is even imported (holes: the scene's rule,
+    # once its algorithm is known)
+    shape = load_or_exit(polygon, holes=True) if polygon is not None else None
     try:
         path, class_name = resolve_scene(scene)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
-    fmt = _format_of(fmt, output)
+    if output == "":
+        fail("'': empty path; give a file path")
+    if output is not None and Path(output).is_dir():  # said as such, not as a bad extension
+        fail(f"{output}: is a directory; give a file path")
+    try:
+        fmt = format_of(fmt, output)
+    except ValueError as exc:
+        fail(f"{output}: {exc}")
     target = Path(output) if output else default_output(path, class_name, fmt)
     try:
         prepare_output(target)
@@ -419,8 +469,8 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
         fail(f"{target}: {exc}")
     with interrupts_raise() as signals:
         try:
-            _render(scene, path, class_name, polygon, target, fmt, quality, signals, panel,
-                    heuristic)
+            _render(scene, path, class_name, (polygon, shape), target, fmt, quality, signals,
+                    panel, heuristic)
         except Interrupted as exc:
             click.echo(f"error: {scene}: render interrupted; nothing written", err=True)
             raise click.exceptions.Exit(exit_status.interrupted(exc.signum)) from None
@@ -437,9 +487,10 @@ def with_heuristic(cls: type, heuristic: str | None) -> type:
     return cls.with_heuristic(heuristic)
 
 
-def _render(scene: str, path: Path, class_name: str | None, polygon: str | None, target: Path,
-            fmt: str, quality: str, signals: Signals, panel: str | None = None,
-            heuristic: str | None = None) -> None:
+def _render(scene: str, path: Path, class_name: str | None,
+            given: tuple[str | None, Shape | None], target: Path, fmt: str, quality: str,
+            signals: Signals, panel: str | None = None, heuristic: str | None = None) -> None:
+    polygon, shape = given  # --polygon, and that polygon read already
     try:
         if ".py:" in scene:  # the file's Scene class, or a heuristic of one's own
             from metaphors.scene import scene_for_heuristic
@@ -452,17 +503,15 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
         fail(f"{scene}: {exc}")
     if polygon is not None and plays_several(cls):
         click.echo(f"warning: {scene}: plays its own polygons; --polygon is ignored", err=True)
-    else:
-        given = polygon if polygon is not None else _environment_polygon(cls)
-        if given is not None:  # a bad polygon, given or from TREX_POLYGON: one line, exit 2
-            load_or_exit(given, holes=algorithm_of(cls) in HOLE_ALGORITHMS)
-            try:
-                dry_run(cls, given)
-            except (GeometryError, ValueError, KeyError) as exc:
-                fail(f"{given}: {error_line(exc)}")
     try:
-        render_into(scene_input(cls, polygon, panel), target, fmt, QUALITIES[quality],
-                    signals=signals)
+        handed = scene_input(cls, polygon, panel, shape)  # a bad polygon: one line, exit 2
+    except ValueError as exc:  # a TREX_LOG it cannot play
+        fail(f"{scene}: {error_line(exc)}")
+    spec = handed.spec if isinstance(handed, Handed) else None
+    if spec is not None and spec.shape is not None:  # a polygon handed: run it once, now
+        run_once(spec)
+    try:
+        render_into(handed, target, fmt, QUALITIES[quality], signals=signals)
     except (KeyboardInterrupt, click.exceptions.Exit):
         raise
     except UserHeuristicError as exc:  # raised, answered nonsense or was stopped: one line

@@ -19,7 +19,7 @@ from geometry.check import is_inner_diagonal
 from geometry.errors import GeometryError
 from geometry.io import Shape, write_atomic
 from geometry.polygon import Polygon
-from geometry.triangulate import HOLE_ALGORITHMS, triangulate
+from geometry.triangulate import triangulate
 from geometry.user_heuristics import (
     UserHeuristic,
     UserHeuristicError,
@@ -34,6 +34,8 @@ from trex.inputs import (
     call_timeout_option,
     fail,
     load_or_exit,
+    load_run,
+    output_or_exit,
     report_error,
     try_load,
 )
@@ -242,14 +244,16 @@ def triangulate_command(polygons: tuple[str, ...], algorithm: str,
 def log_command(algorithm: str, polygon: str, heuristic: str | UserHeuristic,
                 output: str) -> None:
     """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
-    from story.runs import record_run  # geometry and tracing only: no manim
+    from story.spec import RunSpec  # geometry and tracing only: no manim
 
     refuse_unused_heuristic(algorithm)
-    p = load_or_exit(polygon, holes=algorithm in HOLE_ALGORITHMS)
+    output_or_exit(output)  # before any work: one line, exit 2
     named = heuristic.spec if isinstance(heuristic, UserHeuristic) else heuristic
+    spec = RunSpec(algorithm, polygon, heuristic=named if algorithm in triangulations() else None)
+    spec = load_run(spec, load_or_exit(polygon, holes=True))  # a scene's rule: holes if it can
     try:  # the very log a scene records for this run, so that it replays the same video
-        log = record_run(algorithm, p, polygon, named if algorithm in triangulations() else None)
-    except (ValueError, GeometryError) as exc:  # holes refused; GEOS fails
+        log = spec.log()
+    except (ValueError, GeometryError) as exc:  # no diagonal; GEOS fails
         fail(f"{polygon}: {exc}")
     try:
         write_atomic(Path(output), log.to_json())

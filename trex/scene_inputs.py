@@ -18,11 +18,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from geometry.errors import GeometryError
-from geometry.triangulate import HOLE_ALGORITHMS
 from geometry.user_heuristics import is_user_spec
 from story.registry import spoken
-from story.scene_kinds import algorithm_of, heuristic_of, plays_several
-from trex.inputs import error_line, fail, load_or_exit
+from story.scene_kinds import heuristic_of, plays_several
+from trex.inputs import error_line, fail, load_or_exit, load_run
 
 
 def load_scene(scene: str, command: str = "player", several_runs: bool = False) -> type:
@@ -98,13 +97,16 @@ def check_log(cls: type, log, scene: str | None = None) -> None:
 @dataclass(frozen=True)
 class Chosen:
     """The scene class and where its run comes from, checked: a saved log (read, and its
-    path as the user named it) or a polygon (None: the scene's default)."""
+    path as the user named it) or a polygon (None: the scene's default), and for a scene of
+    one run, the run on that polygon with the polygon read (``spec``, see
+    :func:`trex.inputs.load_run`; None: the default run)."""
 
     cls: type
     log: object | None
     saved: str | None
     saved_as: str | None
     polygon: str | None
+    spec: object | None = None
 
 
 def choose(scene: str, polygon: str | None, saved: str | None,
@@ -133,14 +135,18 @@ def choose(scene: str, polygon: str | None, saved: str | None,
         cls = load_scene(scene, command, several_runs)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
-    if log is None and polygon is not None:  # holes only for a scene whose algorithm takes them
-        load_or_exit(polygon, holes=algorithm_of(cls) in HOLE_ALGORITHMS)
+    spec = None
+    if log is None and polygon is not None:
+        if plays_several(cls):  # ignored (its runs name their own), but not bad
+            load_or_exit(polygon, holes=True)
+        else:
+            spec = load_run(cls.default_spec().on(polygon))  # read once, by the run's rule
     if log is not None:
         try:
             check_log(cls, log, scene)
         except ValueError as exc:
             fail(f"{saved_as}: {exc}")
-    return Chosen(cls, log, saved, saved_as, polygon)
+    return Chosen(cls, log, saved, saved_as, polygon, spec)
 
 
 def _said(log) -> str:
@@ -154,7 +160,7 @@ def run_of(chosen: Chosen):
     the algorithm rejects is one line and exit 2) and the line saying what it is."""
     spec = chosen.cls.default_spec()
     if chosen.log is None:
-        spec = spec.on(chosen.polygon) if chosen.polygon is not None else spec
+        spec = chosen.spec if chosen.spec is not None else spec  # the polygon, read once
         try:
             log = spec.log()
         except (GeometryError, ValueError, KeyError) as exc:

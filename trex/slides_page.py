@@ -9,7 +9,8 @@ font, script or video from anywhere else (clips are named relatively, ``clips/�
   at its end. R: play the step again. F: full screen. S: a speaker window.
 - The caption and "step 7 / 31" are under the video (and the chapter, for a lecture). The
   speaker view (``index.html?notes``, or the window S opens, which follows this one and
-  steers it) shows the next step's caption too.
+  steers it) shows the next step's caption too, its video smaller so that the caption stays
+  above the fold on a laptop (1366×768).
 - ``#7`` in the address opens step 7 at its end; without it step 1 plays (the clips have no
   sound, so a muted video may play unasked).
 """
@@ -62,6 +63,10 @@ _PAGE = """{{HEAD}}
   #jump { color: var(--called); font-variant-numeric: tabular-nums; min-width: 4em; }
   #notes { display: none; border-top: 1px solid #2a3a55; margin-top: 12px; padding-top: 8px; }
   .speaker #notes { display: block; }
+  /* the speaker view on a laptop (1366×768): a smaller video, so that the next step's
+     caption stays above the fold */
+  .speaker figure { display: flex; justify-content: center; }
+  .speaker video { width: auto; max-width: 100%; height: 46vh; }
   #next { color: var(--idle); font-size: 1.1rem; }
 </style>
 </head>

@@ -30,11 +30,14 @@ import tempfile
 import warnings
 from collections.abc import Iterable, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from story.scene_kinds import Handed, algorithm_of, plays_several
 from trex.graph_diff import report
 from trex.graph_format import SCHEMA, read_graph, to_json
+
+if TYPE_CHECKING:
+    from geometry.io import Shape
 
 
 class SnapshotError(ValueError):
@@ -211,10 +214,13 @@ def plays_own_polygons(cls: type) -> bool:
     return plays_several(cls)
 
 
-def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = ()) -> type:
+def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = (),
+         shape: Shape | None = None) -> type:
     """The scene class handed its input: its default run, on ``polygon``, or replaying saved
     ``logs`` (one per run). No environment variable counts: a graph is its arguments' alone.
-    Raises :class:`SnapshotError` (one line) for input the scene cannot take."""
+    A scene of one run is handed the polygon read once and checked by its run's rule
+    (:meth:`story.spec.RunSpec.read`; ``shape``: ``polygon`` read already). Raises
+    :class:`SnapshotError` (one line) for input the scene cannot take."""
     logs = tuple(os.fspath(p) for p in logs)
     if not takes_input(cls):
         if polygon is not None or logs:
@@ -224,24 +230,30 @@ def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = ()) -> typ
     if polygon is not None and logs:
         raise SnapshotError("a polygon and saved logs: give one of them (a saved log has its "
                             "own polygon)")
-    if polygon is not None:
-        _check_polygon(polygon)
     for path in logs:
         _check_log(cls, path, len(logs))
+    if polygon is not None:
+        one_run = not plays_own_polygons(cls) and hasattr(cls, "with_spec")
+        spec = _read(polygon, shape, cls.default_spec() if one_run else None)
+        if spec is not None:
+            return cls.with_spec(spec)
     try:
         return cls.handed(polygon, logs)
     except ValueError as exc:
         raise SnapshotError(str(exc)) from None
 
 
-def _check_polygon(polygon: str) -> None:
-    """A polygon that cannot be read, or is invalid, is one line (holes are judged by the
-    scene's run: the algorithms that cannot take them say so)."""
+def _read(polygon: str, shape: Shape | None, default=None):
+    """``polygon`` read (``shape``: read already) and, for a scene of one run, its
+    ``default`` run on it, checked by that run's rule (None for a scene of several runs,
+    which plays its own polygons: the polygon is only read). A polygon that cannot be read,
+    is invalid, or is one the run cannot take raises :class:`SnapshotError` (one line)."""
     from geometry.io import read_shape
     from trex.inputs import READ_ERRORS, error_line
 
     try:
-        read_shape(polygon)
+        shape = read_shape(polygon) if shape is None else shape
+        return default.on(polygon).read(shape) if default is not None else None
     except READ_ERRORS as exc:
         raise SnapshotError(f"{polygon}: {error_line(exc)}") from None
 

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import click
 
-from geometry.errors import GeometryError
+from geometry.io import Shape
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 
 EXIT_DIFFERS = 1
@@ -37,9 +37,9 @@ def _where(exc: BaseException, scene: str) -> str:
     return f" ({Path(file_part).name}:{frames[-1].lineno})" if frames else ""
 
 
-def _build(scene: str, polygon: str | None, logs: tuple[str, ...]):
-    """The scene's graph, or exit 2 with one line."""
-    from trex.render_command import dry_run
+def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: Shape | None = None):
+    """The scene's graph, or exit 2 with one line (``shape``: ``polygon`` read already)."""
+    from trex.render_command import run_once
     from trex.snapshot import SnapshotError, build, hand, load_scene, plays_own_polygons
 
     try:
@@ -50,15 +50,13 @@ def _build(scene: str, polygon: str | None, logs: tuple[str, ...]):
         click.echo(f"warning: {scene}: plays its own polygons; --polygon is ignored", err=True)
         polygon = None
     try:
-        handed = hand(cls, polygon, logs)
+        handed = hand(cls, polygon, logs, shape)
     except SnapshotError as exc:  # a polygon's or log's fault names it; else the scene's
         named = [p for p in (polygon, *logs) if p is not None and str(exc).startswith(f"{p}:")]
         fail(str(exc) if named else f"{scene}: {exc}")
-    if polygon is not None:
-        try:
-            dry_run(cls, polygon)  # an input the algorithm rejects: said as the polygon's fault
-        except (GeometryError, ValueError, KeyError) as exc:
-            fail(f"{polygon}: {error_line(exc)}")
+    spec = getattr(handed, "spec", None)
+    if spec is not None and spec.shape is not None:
+        run_once(spec)  # an input the algorithm rejects: said as the polygon's fault
     try:
         return build(handed)
     except (KeyboardInterrupt, click.exceptions.Exit):
@@ -119,13 +117,13 @@ def snapshot(scene: str, polygon: str | None, logs: tuple[str, ...], output: str
         fail("-o and --check: give one of them (--check FILE --update rewrites FILE)")
     if polygon is not None and logs:
         fail("--polygon and --log: give one of them (a saved log has its own polygon)")
-    if polygon is not None:
-        load_or_exit(polygon, holes=True)  # one line, exit 2, before manim is even imported
+    # one line, exit 2, before manim is even imported (holes: the scene's rule, later)
+    shape = load_or_exit(polygon, holes=True) if polygon is not None else None
     target = output if output is not None else check if update else None
     if target is not None:
         _writable(target)
     stored = _stored(check, update) if check is not None else None
-    graph = _build(scene, polygon, logs)
+    graph = _build(scene, polygon, logs, shape)
     if check is None:
         if output is None:
             click.echo(graph.text)
