@@ -18,7 +18,8 @@ from story.environment import (
     specs_from_environment,
 )
 from story.spec import RunSpec
-from trex import lecture_command, render_command
+from trex import chapter_pool, chapters, render_command
+from trex.chapter_command import chapter
 from trex.cli import main
 from trex.render_command import load_scene_class, scene_input
 
@@ -169,8 +170,10 @@ def test_a_lecture_chapter_gets_the_polygon_as_an_argument(tmp_path, environment
         def __init__(self, command, **kwargs):
             started.update(command=command, kwargs=kwargs)
 
-    environment.setattr(lecture_command.subprocess, "Popen", Process)
-    chapter = lecture_command.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
-    lecture_command._start(0, chapter, tmp_path, tmp_path, "l", "star")
-    assert started["command"][-3:] == ["l", "star", ""]  # quality, polygon, panel (none)
+    environment.setattr(chapter_pool.subprocess, "Popen", Process)
+    one = chapters.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
+    chapter_pool._start(0, one, tmp_path, tmp_path, "l", "star")
+    assert started["command"][2:4] == ["trex", "chapter"]
+    given = chapter.make_context("chapter", started["command"][4:]).params
+    assert (given["quality"], given["polygon"], given["panel"]) == ("l", "star", None)
     assert "env" not in started["kwargs"]  # the child inherits ours, untouched
