@@ -23,7 +23,8 @@ test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
 
 # The edit-test loop: the tracing, geometry and story tests only (tests/conftest.py's --fast
-# picks them by what they import), under a minute; `make test` stays the whole suite.
+# picks them by what they import), without the hypothesis sweeps, under a minute; `make test`
+# stays the whole suite.
 test-fast: $(STAMP)
 	$(BIN)/python -m pytest -n 2 -q --fast
 

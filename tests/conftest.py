@@ -76,6 +76,16 @@ def is_fast(path: Path) -> bool:
     return parts[0] == "tests" and not (_imports(path.resolve()) & ABOVE)
 
 
+def _leave_out_property_sweeps(config, items):
+    """--fast leaves out the hypothesis tests (hundreds to thousands of generated polygons
+    each: most of the lower layers' time); `make test` runs them."""
+    swept = [item for item in items
+             if getattr(getattr(item, "obj", None), "is_hypothesis_test", False)]
+    if swept:
+        config.hook.pytest_deselected(items=swept)
+        items[:] = [item for item in items if item not in swept]
+
+
 def pytest_ignore_collect(collection_path, config):
     # Decided from the file's text, before importing it: the upper layers' modules (and manim)
     # are never loaded, which is most of the time the whole suite spends collecting.
@@ -86,6 +96,8 @@ def pytest_ignore_collect(collection_path, config):
 
 
 def pytest_collection_modifyitems(config, items):
+    if config.getoption("--fast"):
+        _leave_out_property_sweeps(config, items)
     if config.getoption("--runslow"):
         return
     skip = pytest.mark.skip(reason="slow: run with --runslow")
