@@ -50,3 +50,7 @@ class UnknownSampleError(GeometryError):
 
 class HoleError(PolygonError):
     """A hole crosses or touches another ring, lies outside the polygon or inside another hole."""
+
+
+class LogFormatError(InputFormatError):
+    """A log lacks what reading it needs: a traced function's argument, or a reference."""

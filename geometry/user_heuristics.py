@@ -21,7 +21,11 @@ object, a ``functools.partial`` …): the claim keeps the line of the wrapper's 
 
 Every problem is a :class:`UserHeuristicError` (a ``ValueError``) with a one-line message:
 a missing file, a syntax error in it, a missing or non-callable function, an exception the
-function raised, an answer that is not two vertices of the polygon.
+function raised, an answer that is not two vertices of the polygon. A ``sys.exit()`` or a
+``KeyboardInterrupt`` raised by the user's code itself is a :class:`UserHeuristicExit` (one of
+them): an error of that function, never the end of the command; a real Ctrl-C (SIGINT, or
+SIGTERM where a handler of ours raises) passes through as the interrupt it is. Whatever the
+user's code prints goes to stderr, so a command's stdout (``--json``) stays its own.
 
 No manim here.
 
@@ -75,6 +79,7 @@ __all__ = [
     "DEFAULT_CALL_TIMEOUT",
     "UserHeuristic",
     "UserHeuristicError",
+    "UserHeuristicExit",
     "as_heuristic",
     "call_timeout",
     "is_user_spec",
@@ -86,7 +91,22 @@ __all__ = [
 
 
 class UserHeuristicError(ValueError):
-    """A user's heuristic cannot be loaded or run; the message is one line."""
+    """A user's heuristic cannot be loaded or run; the message is one line.
+
+    ``way`` tells failures apart without their particulars (``raised ZeroDivisionError at
+    line 5``, ``timeout``, ``answer: label`` …): a hunt shrinks a polygon on which the function
+    fails while it still fails the same way. By default the message itself.
+    """
+
+    def __init__(self, message: str, way: str | None = None) -> None:
+        super().__init__(message)
+        self.way = way if way is not None else message
+
+
+class UserHeuristicExit(UserHeuristicError):
+    """The user's code called ``sys.exit()`` or raised ``KeyboardInterrupt`` itself: it tried
+    to end the program, which no polygon explains (``trex hunt`` reports it as bad input, not
+    as a finding)."""
 
 
 # --- the time limit --------------------------------------------------------------------------------
@@ -141,12 +161,58 @@ def _time_limit(what: str):
     except _Stopped:
         raise UserHeuristicError(
             f"{what} did not finish within {seconds:g} s: stopped "
-            "(a loop that never ends? --call-timeout sets the limit)") from None
+            "(a loop that never ends? --call-timeout sets the limit)", way="timeout") from None
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
         if outer:
             signal.setitimer(signal.ITIMER_REAL, max(outer - (time.monotonic() - started), 1e-3))
+
+
+@contextlib.contextmanager
+def _signals_noted(seen: list[int]):
+    """Note in ``seen`` each SIGINT/SIGTERM that arrives during the block, then let the handler
+    in force act on it as before (Python's own raises ``KeyboardInterrupt``; a command's may
+    raise its own interrupt). A ``KeyboardInterrupt`` with nothing noted was raised by the
+    user's code itself. A signal with no Python handler (SIGTERM by default) ends the process
+    as it would have; off the main thread no signal can raise, so nothing needs noting."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = {}
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        handler = signal.getsignal(signum)
+        if callable(handler):
+            def note(number, frame, handler=handler):
+                seen.append(number)
+                handler(number, frame)
+            previous[signum] = signal.signal(signum, note)
+    try:
+        yield
+    finally:
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
+
+
+@contextlib.contextmanager
+def _users_code(what: str, seen: list[int]):
+    """Run the user's code: within the time limit (:func:`_time_limit`), its prints on stderr
+    (a command's stdout may be one JSON line), real interrupts noted in ``seen``.
+
+    The prints are moved in the main thread only, where the commands run: ``sys.stdout`` is
+    one for all threads, and two threads swapping it at once (a server's) could leave it
+    swapped for good."""
+    main = threading.current_thread() is threading.main_thread()
+    prints = contextlib.redirect_stdout(sys.stderr) if main else contextlib.nullcontext()
+    with _time_limit(what), _signals_noted(seen), prints:
+        yield
+
+
+def _ending(exc: SystemExit | KeyboardInterrupt) -> str:
+    """What the user's code did to end the program: ``called sys.exit(3)``."""
+    if isinstance(exc, SystemExit):
+        return f"called sys.exit({'' if exc.code is None else repr(exc.code)})"
+    return f"raised {type(exc).__name__}"
 
 
 @dataclass(frozen=True)
@@ -340,18 +406,23 @@ def _load_module(path: Path, shown: str, function: str | None = None):
     sys.modules[module_name] = module
     folder = str(resolved.parent)
     sys.path.insert(0, folder)
+    seen: list[int] = []
     try:
-        with _time_limit(f"{shown}: loading"):
+        with _users_code(f"{shown}: loading", seen):
             exec(code, module.__dict__)
     except UserHeuristicError:
         sys.modules.pop(module_name, None)
         raise
     except BaseException as exc:
         sys.modules.pop(module_name, None)
-        if not isinstance(exc, Exception):
-            raise
         line = _line_in(exc, resolved)
         where = f"{shown}:{line}" if line else shown
+        if isinstance(exc, SystemExit | KeyboardInterrupt) and not seen:
+            told = _ending(exc)
+            raise UserHeuristicExit(f"{where}: {told} while loading: a heuristic's file "
+                                    "defines it, it does not end the program", way=told) from None
+        if not isinstance(exc, Exception):
+            raise  # a real interrupt, or Python's own (GeneratorExit …)
         raise UserHeuristicError(
             f"{where}: {type(exc).__name__} while loading: {_message(exc)}") from None
     finally:
@@ -504,17 +575,26 @@ def _wrap(raw: Callable[[Polygon], Any], name: str, path: Path) -> Callable[[Pol
     def heuristic(polygon: Polygon) -> Diagonal:
         start = len(tracing.events_so_far())
         lines: list[int | None] = []
+        seen: list[int] = []
         token = _RETURN_LINES.set(lines)
         try:
-            with _time_limit(name):
+            with _users_code(name, seen):
                 answer = raw(polygon)
         except UserHeuristicError:
             raise
+        except (SystemExit, KeyboardInterrupt) as exc:
+            if seen:
+                raise  # a real Ctrl-C (or SIGTERM): the command's, not the function's
+            line, told = _line_in(exc, path), _ending(exc)
+            where = f" ({path.name}, line {line})" if line else ""
+            raise UserHeuristicExit(f"{name} {told}{where}: a heuristic returns its claim, it "
+                                    "does not end the program", way=told) from None
         except Exception as exc:
             line = _line_in(exc, path)
             where = f" ({path.name}, line {line})" if line else ""
             raise UserHeuristicError(
-                f"{name} raised {type(exc).__name__}: {_message(exc)}{where}") from None
+                f"{name} raised {type(exc).__name__}: {_message(exc)}{where}",
+                way=f"raised {type(exc).__name__} at line {line}") from None
         finally:
             _RETURN_LINES.reset(token)
         u, v = endpoints(polygon, answer, name)
@@ -555,7 +635,7 @@ def endpoints(polygon: Polygon, answer: Any, name: str = "the heuristic") -> tup
     if items is None or len(items) != 2:
         raise UserHeuristicError(
             f"{name} returned {_short(answer)}: expected a Diagonal or a pair of vertices "
-            "(indices, labels or Vertex objects)")
+            "(indices, labels or Vertex objects)", way="answer: not a pair")
     return _vertex(polygon, items[0], answer, name), _vertex(polygon, items[1], answer, name)
 
 
@@ -565,13 +645,14 @@ def _vertex(polygon: Polygon, item: Any, answer: Any, name: str) -> Vertex:
         if 0 <= item.index < n and polygon.points[item.index] == item.point:
             return polygon.vertex(item.index)
         raise UserHeuristicError(
-            f"{name} returned {_short(answer)}: vertex {item.label} is not a vertex of this polygon")
+            f"{name} returned {_short(answer)}: vertex {item.label} is not a vertex of this polygon",
+            way="answer: a vertex of another polygon")
     if isinstance(item, str):
         if item in polygon.labels:
             return polygon.vertex(polygon.labels.index(item))
         raise UserHeuristicError(
             f"{name} returned {_short(answer)}: {item!r} is not a vertex label "
-            f"({polygon.labels[0]} … {polygon.labels[-1]})")
+            f"({polygon.labels[0]} … {polygon.labels[-1]})", way="answer: not a label")
     if not isinstance(item, bool):
         try:
             index = operator.index(item)
@@ -581,10 +662,11 @@ def _vertex(polygon: Polygon, item: Any, answer: Any, name: str) -> Vertex:
             if 0 <= index < n:
                 return polygon.vertex(index)
             raise UserHeuristicError(
-                f"{name} returned {_short(answer)}: index {index} is out of range 0…{n - 1}")
+                f"{name} returned {_short(answer)}: index {index} is out of range 0…{n - 1}",
+                way="answer: index out of range")
     raise UserHeuristicError(
         f"{name} returned {_short(answer)}: {_short(item)} is not a vertex "
-        "(give an index, a label or a Vertex)")
+        "(give an index, a label or a Vertex)", way="answer: not a vertex")
 
 
 def _short(value: Any) -> str:

@@ -43,8 +43,9 @@ from metaphors.theme import Theme
 from rendering import typeset
 from story.analysis import Band, Motion, motion, split
 from story.beats import Beat, Claim, ShowPolygon, ShowTriangle, Verdict
-from story.registry import entry
+from story.registry import entry, spoken
 from story.spec import RunSpec
+from story.states import Moving, Tool
 
 #: seconds the tool takes to reach its pick: slowly, the moment the argument is about
 SLOW = 5.0
@@ -66,7 +67,7 @@ class Analysis:
     polygon: str = "counterexample"
     fails: str = ""
     holds: str = ""
-    title: str | None = None  # default: "Water: why scaling fails" and the like
+    title: str | None = None  # default: "Water: why Scaling fails" and the like
     slow: float = SLOW
 
 
@@ -121,12 +122,9 @@ def _first(beats: Sequence[Beat], kind: type[Beat]):
     return found
 
 
-def _target(beat: Beat) -> dict | None:
-    """The shape state of a metaphor's step at the vertex it picks (None: no such step)."""
-    states, result = getattr(beat, "states", None), getattr(beat, "result", None)
-    if not states or not isinstance(states[0], dict) or "kind" not in states[0]:
-        return None
-    return next((s for s in states if s.get("reached") == result), None)
+def _target(beat: Beat) -> Tool | None:
+    """The tool's state of a metaphor's step at the vertex it picks (None: no such step)."""
+    return beat.at_pick() if isinstance(beat, Moving) else None
 
 
 def _band(beats: Sequence[Beat]) -> tuple[Band | None, dict[str, str]]:
@@ -137,10 +135,10 @@ def _band(beats: Sequence[Beat]) -> tuple[Band | None, dict[str, str]]:
         return None, {}
     where = dict(zip(_first(beats, ShowPolygon).labels, _first(beats, ShowPolygon).points,
                      strict=True))
-    hit = tuple(drop.hit)
-    x = tuple(slide.states[-1]["at"]) if slide is not None and slide.states else hit
-    y = tuple(where[snag.result]) if snag.result in where else None
-    band = Band(tuple(where[drop.vertex]), hit, x, y, turn.turn_picture if turn else 0.0)
+    hit = tuple(drop.drop.hit)
+    x = tuple(slide.slide.to) if slide is not None and slide.slide else hit
+    y = tuple(where[snag.snagged]) if snag.snagged in where else None
+    band = Band(tuple(where[drop.drop.vertex]), hit, x, y, turn.turn_picture if turn else 0.0)
     return band, {b.action: b.caption for b in (turn, drop, slide, snag) if b is not None}
 
 
@@ -150,7 +148,7 @@ def tool_drawing(stage: Stage, moving: Motion, t: float, colour: str) -> VGroup:
     not what the argument is about)."""
     theme, points, corners = stage.theme, stage.polygon.points, moving.triangle
     swept, tool = moving.swept(t), moving.tool(t)
-    if moving.kind == "band":
+    if moving.rising:
         return VGroup(region(stage, swept, colour, 0.35, "swept"),
                       path(stage, tool, colour, theme.stroke * 1.3, "tool"))
     area, line = split(swept, points, corners), split(tool, points, corners)
@@ -247,7 +245,7 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
     else:
         m = right.motion
         colour = tool_colour(theme, right.heuristic)
-        if m.kind == "band":  # what the rising water covers may lie outside P: another key
+        if m.rising:  # what the rising water covers may lie outside P: another key
             first += [*stage.forget_legend(), *stage.key(colour, "under water", "water")]
         motion_anims, drawing = moving(stage, lambda t: tool_drawing(stage, m, t, colour),
                                        analysis.slow)
@@ -255,7 +253,7 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
                   (motion_anims, analysis.slow),
                   ([Indicate(stage.markers[right.pick], color=theme.result)], 0.6))
         witness = m.witness()
-        label = "still dry" if m.kind == "band" else "swept"
+        label = "still dry" if m.rising else "swept"
     shaded = region(stage, witness, theme.result, 0.45, "analysis:witness",
                     "result").set_z_index(2)
     u, v = right.claim.labels
@@ -325,18 +323,19 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
     name = NAMES.get(known.metaphor, str(known.metaphor).capitalize())
     first = moment(analysis.heuristic, analysis.polygon)
     _check(analysis, first)
+    said = spoken(analysis.heuristic)  # the thesis's names, never the slugs (issue 22)
     if known.correct:
-        holds(_stage(scene, first, analysis.title or f"{name}: why {analysis.heuristic} is right",
-                     theme), first, analysis)
+        holds(_stage(scene, first, analysis.title or f"{name}: why {said} is right", theme),
+              first, analysis)
         return
     if known.correction is None:
         raise ValueError(f"{analysis.heuristic} is wrong and has no correction to analyse")
-    stage = _stage(scene, first, analysis.title or f"{name}: why {analysis.heuristic} fails",
-                   theme)
+    stage = _stage(scene, first, analysis.title or f"{name}: why {said} fails", theme)
     cleared = fails(stage, first, analysis)
     right = moment(known.correction, analysis.polygon)
-    holds(stage, right, analysis, [*[FadeOut(m) for m in cleared],
-                                   *stage.retitle(f"{name}: the correction, {known.correction}")])
+    holds(stage, right, analysis, [
+        *[FadeOut(m) for m in cleared],
+        *stage.retitle(f"{name}: the correction, {spoken(known.correction)}")])
 
 
 def _stage(scene, seen: Moment, title: str, theme: Theme) -> Stage:

@@ -13,7 +13,7 @@ import numpy as np
 from manim import FadeIn, FadeOut, Scene, VGroup
 
 from geometry.polygon import Polygon
-from metaphors.captions import captions_of, whole_frames
+from metaphors.captions import CaptionTrack, whole_frames
 from metaphors.drawing import Frame, hole_markers, polygon_mobject, vertex_markers
 from metaphors.layout import METAPHOR, SUBTITLE_WIDTH, TITLE_Y, Box, subtitle_centre
 from metaphors.panel import Panel
@@ -34,7 +34,8 @@ class Board:
     """Everything on screen, and the play loop's helpers."""
 
     def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
-                 theme: Theme = THEME, box: Box = METAPHOR, holes=()):
+                 theme: Theme = THEME, box: Box = METAPHOR, holes=(), *,
+                 captions: CaptionTrack):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
@@ -58,7 +59,7 @@ class Board:
         self.objects: dict[str, object] = {}  # persistent metaphor objects by key
         self.caption = ""  # the caption of this board's subtitle
         self.outgoing = None  # the subtitle a beat replaces, cut once the beat's caption shows
-        self.captions = captions_of(scene)
+        self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
 
     # --- coordinates -----------------------------------------------------------------------------

@@ -1,7 +1,7 @@
 """The subtitle track of a scene: each caption held on screen until it has been read.
 
 Every caption a scene shows goes through the scene's one :class:`CaptionTrack`
-(:func:`captions_of`): :meth:`~CaptionTrack.show` first holds the caption before it until
+(:func:`metaphors.recorded.captions_of`): :meth:`~CaptionTrack.show` first holds the caption before it until
 it has been read (:func:`story.reading.reading_time`: at least 0.83 s, at most 17
 characters per second), ends its ``.srt`` cue there, and gives the keyword arguments that
 put the new one up with the next play. So a beat lasts as long as its caption needs, and
@@ -95,12 +95,3 @@ class CaptionTrack:
         self.hold()
         self.stretch()
         self.text = ""
-
-
-def captions_of(scene: Scene) -> CaptionTrack:
-    """The scene's caption track (made on first use)."""
-    track = getattr(scene, "trex_captions", None)
-    if track is None:
-        track = CaptionTrack(scene)
-        scene.trex_captions = track
-    return track

@@ -18,18 +18,19 @@ from manim import DEGREES, Circle, Dot, FadeIn, FadeOut, Line, Rotate, VGroup
 
 from metaphors.sweep import follower, light
 from metaphors.tags import tag
-from story.beats import Beat, beat_kind
+from story.beats import beat_kind
 from story.reach import heading
+from story.states import Hand, Moving, point
 from story.storyboard import Walk, read_step
 from tracing import Event
 
 
 @beat_kind("clock")
-class Clock(Beat):
+class Clock(Moving):
     """The clock hand's ``states`` (heading, angle turned, the mark reached)."""
 
-    states: list
-    result: str
+    states: tuple[Hand, ...]
+
 
 #: Radius of the clock face (scene units); the hand reaches past the farthest mark.
 FACE_RADIUS = 0.55
@@ -56,12 +57,12 @@ def clock(board, beat) -> None:
     theme = board.theme
     states = beat.states
     first = states[0]
-    origin, heading = first["origin"], first["heading"]
-    hits = [s for s in states[1:] if "reached" in s]
+    origin, heading = first.origin, first.heading
+    hits = [s for s in states[1:] if s.reached is not None]
     if not hits:
         board.play(beat, run_time=1.0)
         return
-    labels = [s["reached"] for s in hits]
+    labels = [s.reached for s in hits]
     sign = turn_sign(origin, heading, _point(board, labels[0]))
     centre = board.at(origin)
     reach = max(float(np.linalg.norm(board.vertex(label) - centre)) for label in labels)
@@ -81,13 +82,13 @@ def clock(board, beat) -> None:
 
     lit, turned = [], 0.0
     for k, state in enumerate(hits):
-        step = state["angle"] - turned
-        turned = state["angle"]
+        step = state.angle - turned
+        turned = state.angle
         board.play(beat, Rotate(axis, angle=sign * step * DEGREES, about_point=centre),
                    run_time=0.6 + abs(step) / 60)
-        kept, anims = light(board, state["reached"], k == 0, axis)
+        kept, anims = light(board, state.reached, k == 0, axis)
         lit += kept
-        mark = marks[state["reached"]]
+        mark = marks[state.reached]
         colour = theme.result if k == 0 else theme.argument
         anims.append(tag(mark, "result" if k == 0 else "argument").animate.set_color(colour))
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
@@ -120,11 +121,11 @@ def _unit(v) -> np.ndarray:
 def _turn(walk: Walk, call: Event, ret: Event) -> dict:
     """The hand set to the start, then at each candidate it passes (:func:`story.reach.turning`)."""
     where = walk.root_points()
-    centre = where[call.args["centre"]["ref"]]
-    hand = {"kind": "ray", "origin": centre,
-            "heading": heading(centre, where[call.args["start"]["ref"]])}
-    return {"states": [{**hand, "angle": 0.0},
-                       *({**hand, "angle": a, "reached": v} for v, a in walk.reach(call, ret))]}
+    centre = point(where[walk.ref(call, "centre")])
+    towards = heading(centre, where[walk.ref(call, "start")])
+    return {"states": (Hand(origin=centre, heading=towards, angle=0.0),
+                       *(Hand(origin=centre, heading=towards, angle=a, reached=v)
+                         for v, a in walk.reach(call, ret)))}
 
 
 READS = {"first_hit_rotating": read_step(

@@ -183,7 +183,7 @@ def unprimed(label: str) -> str:
 
 
 def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    v, ear = show(call.args["v"]), bool(ret.result)
+    v, ear = walk.ref(call, "v"), bool(ret.result)
     caption = f"Is {v} an ear? " + ("yes: its triangle holds no other vertex" if ear
                                      else "no: a cut between its neighbours is not a clean slice")
     yield walk.step(EarTest, caption, call, ret,
@@ -242,7 +242,7 @@ def _slice(corners, labels, points, clipped) -> dict:
 
 
 def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    state = walk.entered_after(ret, ret.result["ref"])
+    state = walk.entered_after(ret, walk.result_ref(ret))
     yield walk.step(Good, "A good sub-polygon: one cut edge, about half the vertices; "
                     "its middle vertex is tested next", call, ret, points=state["points"],
                     labels=state["labels"])

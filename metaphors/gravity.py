@@ -33,13 +33,9 @@ from metaphors.picture import again, turn_to
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk, read_pick, read_step, show
+from story.states import BallDrop, BallSlide, RubberBand, point
+from story.storyboard import Walk, read_pick, read_step
 from tracing import Event
-
-
-def _called(beat) -> str | None:
-    """The vertex the call runs on (the ball hangs there)."""
-    return next((k for k, role in beat.roles.items() if role == "called"), None)
 
 
 def _ball(board, at):
@@ -87,8 +83,8 @@ def gravity_turn(board, beat) -> None:
 
 def drop(board, beat) -> None:
     """A ball hangs from V on its band, falls straight down and hits the boundary."""
-    v = board.vertex(beat.vertex or _called(beat))
-    hit = board.at(beat.hit)
+    v = board.vertex(beat.drop.vertex)
+    hit = board.at(beat.drop.hit)
     ball, band = _ball(board, v), _band(board, [v, v])
     board.keep("band", band)
     board.keep("ball", ball)
@@ -112,11 +108,10 @@ def _scene_point(mobject) -> np.ndarray:
 def slide(board, beat) -> None:
     """The ball slides down the edge it hit to its lower end X; the band stretches behind it."""
     ball, band = board.objects.get("ball"), board.objects.get("band")
-    states = beat.states
-    if ball is None or not states:  # it landed on a vertex: nothing to slide
+    if ball is None or beat.slide is None:  # it landed on a vertex: nothing to slide
         board.play(beat, run_time=0.8)
         return
-    x = board.at(states[-1]["at"])
+    x = board.at(beat.slide.to)
     v = band.get_start()
     board.play(beat, ball.animate(rate_func=rush_into).move_to(x),
                Transform(band, _band(board, [v, x]), rate_func=rush_into), run_time=1.2)
@@ -127,14 +122,13 @@ def snag(board, beat) -> None:
     straight."""
     theme = board.theme
     band = board.objects.get("band")
-    states = beat.states
-    if not states:  # the ball landed on a vertex: the band never moved off the drop line
+    if beat.band is None:  # the ball landed on a vertex: the band never moved off the drop line
         if band is None:
             board.play(beat, run_time=0.8)
         else:
             board.play(beat, Indicate(band, color=theme.result, scale_factor=1.0), run_time=0.8)
         return
-    corners = [board.at(p) for p in states[-1]["points"]]
+    corners = [board.at(p) for p in beat.band.corners]
     hit = board.objects.get("hit")
     swept = None
     if hit is not None and len(corners) >= 2:
@@ -174,36 +168,35 @@ class GravityTurn(Beat):
 
 @beat_kind("drop")
 class Drop(Beat):
-    """The ball falls from ``vertex`` and ``hit``s the boundary."""
+    """The ball falls from V and hits the boundary (``drop``); ``result`` as the call shows it."""
 
     result: str
-    hit: list
-    vertex: str
+    drop: BallDrop
 
 
 @beat_kind("slide")
 class Slide(Beat):
-    """The ball slides down the edge it hit to ``result``; ``states`` holds where it goes
-    (``{"at": point}``), empty when it landed on a vertex."""
+    """The ball slides down the edge it hit to ``result``: ``slide`` says where it goes, None
+    when it landed on a vertex."""
 
-    states: list
     result: str
+    slide: BallSlide | None
 
 
 @beat_kind("snag")
 class Snag(Beat):
-    """The band's shape (``states``: ``{"points": [V, X]}`` straight, ``[V, Y, X]`` bent at
-    ``result``), empty when the ball landed on a vertex."""
+    """The band's shape (``band``: straight, or bent at the ``snagged`` vertex), None when
+    the ball landed on a vertex; ``snagged`` None: the band stays straight."""
 
-    states: list
-    result: str
+    band: RubberBand | None
+    snagged: str | None
 
 
 def read_turn(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     g = ret.result
     yield walk.step(GravityTurn, "Turn the polygon so that gravity points down", call, ret,
                     down=g["down"], tilt=g["tilt"], turn_picture=g["turn_picture"],
-                    polygon=call.args["polygon"]["ref"])
+                    polygon=walk.ref(call, "polygon"))
 
 
 def _hit(walk: Walk, call: Event) -> dict:
@@ -212,25 +205,27 @@ def _hit(walk: Walk, call: Event) -> dict:
 
 
 def _drop(walk: Walk, call: Event, ret: Event) -> dict:
-    return {"hit": walk.entered_after(ret, "hit")["at"], "vertex": show(call.args["v"])}
+    return {"drop": BallDrop(vertex=walk.ref(call, "v"),
+                             hit=point(walk.entered_after(ret, "hit")["at"]))}
 
 
 def _slide(walk: Walk, call: Event, ret: Event) -> dict:
     """Where the ball slides to: nowhere when it landed on a vertex."""
     slid = "vertex" not in _hit(walk, call)
-    return {"states": [{"kind": "point", "at": walk.root_points()[show(ret.result)]}]
-            if slid else []}
+    return {"slide": BallSlide(to=point(walk.root_points()[walk.result_ref(ret)]))
+            if slid else None}
 
 
 def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    result = show(ret.result)
-    caption = ("The rubber band stays straight" if result == "—"
-               else f"The rubber band snags {result}")
-    where, args = walk.root_points(), call.args
-    corners = [args["v"]["ref"], *([result] if result != "—" else []), args["x"]["ref"]]
-    band = [] if "vertex" in _hit(walk, call) else [
-        {"kind": "band", "points": [where[c] for c in corners]}]
-    yield walk.step(Snag, caption, call, ret, states=band, result=result)
+    snagged = None if ret.result is None else walk.result_ref(ret)
+    caption = ("The rubber band stays straight" if snagged is None
+               else f"The rubber band snags {snagged}")
+    where = walk.root_points()
+    corners = [walk.ref(call, "v"), *([snagged] if snagged is not None else []),
+               walk.ref(call, "x")]
+    band = None if "vertex" in _hit(walk, call) else RubberBand(
+        corners=tuple(point(where[c]) for c in corners))
+    yield walk.step(Snag, caption, call, ret, band=band, snagged=snagged)
 
 
 READS = {

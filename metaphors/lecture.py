@@ -23,17 +23,17 @@ from geometry.triangulate import triangulate
 from geometry.user_heuristics import load_user_heuristic
 from metaphors import catalog
 from metaphors.analysis import Analysis, play_analysis
-from metaphors.captions import captions_of
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
+from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
-from metaphors.steps import end_steps, lead_in, mark_step
 from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
 from story.exercises import Exercise, make_exercises
 from story.hunt import hunt
+from story.registry import spoken
 from story.runs import record_user_run
 from story.spec import RunSpec
 from story.storyboard import Pacing
@@ -110,6 +110,7 @@ class LectureScene(TraceScene):
 
     chapter_title = "Chapter"
     polygon = "lecture"  # the lecture's polygon, unless one is handed (trex lecture --polygon)
+    call_line = False  # no code in the lecture: a run's steps are its lit rows and captions
 
     def chapter_segments(self) -> tuple:
         """The chapter's segments, in order (a chapter's scene file says them)."""
@@ -125,11 +126,29 @@ class LectureScene(TraceScene):
         self.next_section(self.chapter_title)
         for segment in self.chapter_segments():
             self.clear_screen()
-            getattr(self, f"play_{type(segment).__name__.lower()}")(segment)
+            self.play_segment(segment)
         captions_of(self).hold()  # the last caption is read within the last step
         end_steps(self)
         self.clear_screen()
         self.wait(0.5)
+
+    def play_segment(self, segment) -> None:
+        """Play one segment by its kind."""
+        match segment:
+            case Card():
+                self.play_card(segment)
+            case Run():
+                self.play_run(segment)
+            case Hunted():
+                self.play_hunted(segment)
+            case Analysis():
+                self.play_analysis(segment)
+            case Compare():
+                self.play_compare(segment)
+            case Quiz():
+                self.play_quiz(segment)
+            case _:
+                raise TypeError(f"{type(self).__name__}: no way to play {segment!r}")
 
     def clear_screen(self) -> None:
         """Fade out everything (the caption on screen read first): the fade opens the step
@@ -202,15 +221,14 @@ class LectureScene(TraceScene):
         found = hunt(heuristic, budget=hunted.budget, seed=hunted.seed)
         if not found.found:
             raise ValueError(f"{heuristic.name}: no counterexample in {found.tried} polygons")
+        # the card tells what the computer did, not the command that did it (issue 22)
         self.play_card(Card(hunted.title, (
             f"{hunted.rule}: a rule this lecture did not cover.",
-            f"trex hunt tried {found.tried} small polygons (seed {hunted.seed}), fewest "
-            "vertices first.",
+            f"The computer tried {found.tried} small polygons, fewest vertices first.",
             f"It shrank the first failure to {found.polygon.n} vertices.")))
         self.clear_screen()
         log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")
-        self.play_run(Run(hunted.heuristic, None, f"{heuristic.name} on the polygon the hunt "
-                          "found"), log)
+        self.play_run(Run(hunted.heuristic, None, f"{hunted.rule}, on the polygon found"), log)
 
     def play_analysis(self, analysis: Analysis) -> None:
         play_analysis(self, analysis, self.theme)
@@ -221,8 +239,8 @@ class LectureScene(TraceScene):
     def play_compare(self, compare: Compare) -> None:
         polygon = read_polygon(compare.polygon or self.lecture_polygon())
         ours = triangulate(polygon, compare.ours).triangles
-        sides = ((-3.6, compare.ours, ours), (3.6, "constrained Delaunay (shapely)",
-                                              constrained_delaunay(polygon)))
+        sides = ((-3.6, spoken(compare.ours, start=True), ours),
+                 (3.6, spoken("cdt", start=True), constrained_delaunay(polygon)))
         theme, captions = self.theme, captions_of(self)
         for x, name, triangles in sides:
             frame = Frame(polygon.points, (x, -0.2), 6.0, 5.2)

@@ -14,7 +14,7 @@ from manim import Polygon as MPolygon
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk, show
+from story.storyboard import Walk
 from tracing import Event
 
 
@@ -120,7 +120,7 @@ class Stack(Beat):
 
 
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    v, kind = show(call.args["v"]), ret.result
+    v, kind = walk.ref(call, "v"), ret.result
     yield walk.step(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
                     roles={v: "rejected" if kind in ("split", "merge") else "called"},
                     vertex=v, kind=kind, at=walk.root_points()[v])
@@ -137,7 +137,7 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 
 
 def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    pieces = [walk.entered_after(call, r["ref"]) for r in ret.result]
+    pieces = [walk.entered_after(call, key) for key in walk.result_refs(ret)]
     yield walk.step(Pieces, f"The diagonals cut the polygon into {len(pieces)} y-monotone "
                     "pieces", call, ret, pieces=[p.get("points", []) for p in pieces])
 

@@ -84,6 +84,9 @@ class Panel:
         self.lit: tuple[int, Rectangle, object] | None = None
         self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
         self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
+        #: whether the call line shows each beat's real call: a programmer's render does, the
+        #: lecture does not (issue 22: no code in the lecture; see TraceScene.call_line)
+        self.shows_calls = True
         self.roles: dict[str, str] = {}
 
     def show_code(self, code) -> None:
@@ -220,7 +223,7 @@ class Panel:
             anims = self._light_row(beat.row)
         else:
             anims = self._light_line(beat.line)
-        if beat.call is not None:
+        if beat.call is not None and self.shows_calls:
             anims += self._call_line(beat.call)
         return anims
 

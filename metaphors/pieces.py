@@ -28,12 +28,12 @@ class Split(Beat):
 
 
 def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    pieces = [r["ref"] for r in ret.result]
+    pieces = walk.result_refs(ret)
     entered = {e.target: e.state for e in walk.log.events[ret.seq:]
                if e.kind == "enter" and e.target in pieces}
     yield walk.step(Split, "Split along the diagonal into two smaller polygons", call, ret,
                     pieces=pieces,
-                    parent=call.args["piece"]["ref"],
+                    parent=walk.ref(call, "piece"),
                     points=[entered[k]["points"] for k in pieces if k in entered],
                     labels=[entered[k]["labels"] for k in pieces if k in entered])
 

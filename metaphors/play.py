@@ -11,31 +11,43 @@ lasts until the run ends).
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-
-from manim import Scene
+from typing import Protocol
 
 from metaphors.board import Board
 from metaphors.catalog import perform
-from metaphors.layout import METAPHOR
-from metaphors.steps import mark_step
-from story.beats import Beat
+from metaphors.layout import Box
+from metaphors.recorded import captions_of, mark_step
+from story.beats import Beat, ShowPolygon
 from story.pseudocode import PSEUDOCODE
-from story.storyboard import pseudocode_of
+from story.storyboard import spoken_pseudocode
 from tracing import Log
 
 #: widest title (scene units) before it is shrunk to fit the frame
 TITLE_WIDTH = 13.4
 
 
-def board_for(scene: Scene, log: Log, beats: Sequence[Beat], title: str, theme) -> Board:
-    """The board a log plays on; its panel shows what the scene's ``panel`` says (default:
-    the pseudocode, when the run has some)."""
+class BoardScene(Protocol):
+    """What a board asks of its scene (a :class:`metaphors.scene.TraceScene`, which records
+    steps and captions as :class:`metaphors.recorded.Recorded`): where the metaphor goes and
+    what the panel shows."""
+
+    metaphor_box: Box
+    panel: str
+    call_line: bool  # False in the lecture: a run's steps are its rows and captions
+
+
+def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
+              theme) -> Board:
+    """The board a log plays on; its panel shows what the scene's ``panel`` says (the
+    pseudocode, when the run has some, or the source)."""
     first = beats[0]
+    holes = first.holes if isinstance(first, ShowPolygon) else ()
     board = Board(scene, first.points, first.labels, log.meta.get("shown"), title, theme,
-                  getattr(scene, "metaphor_box", METAPHOR), getattr(first, "holes", ()))
+                  scene.metaphor_box, holes, captions=captions_of(scene))
+    board.panel.shows_calls = scene.call_line
     code = log.meta.get("code")
-    rows = pseudocode_of(log)
-    if getattr(scene, "panel", PSEUDOCODE) == PSEUDOCODE and rows:
+    rows = spoken_pseudocode(log)
+    if scene.panel == PSEUDOCODE and rows:
         board.panel.show_pseudocode(rows)
     elif code:
         board.panel.show_code(code)
@@ -47,7 +59,7 @@ def board_for(scene: Scene, log: Log, beats: Sequence[Beat], title: str, theme) 
 def play_beats(board: Board, beats: Sequence[Beat],
                after: Callable[[int, Beat], None] | None = None) -> Board:
     """Perform each beat on the board (``after(k, beat)`` once each is played, k from 1),
-    then close it. Each beat is a step of the video (:func:`metaphors.steps.mark_step`)."""
+    then close it. Each beat is a step of the video (:func:`metaphors.recorded.mark_step`)."""
     for k, beat in enumerate(beats, start=1):
         if beat.caption != board.caption:
             board.captions.hold()  # the caption before is read in its own step

@@ -30,10 +30,9 @@ from geometry.user_heuristics import (
 )
 from metaphors import catalog
 from metaphors.board import Board
-from metaphors.captions import captions_of
 from metaphors.layout import METAPHOR
 from metaphors.play import board_for, play_beats
-from metaphors.steps import lead_in
+from metaphors.recorded import Recorded, captions_of, lead_in
 from metaphors.tags import tag
 from metaphors.theme import THEME
 from rendering.camera import PathCamera
@@ -43,7 +42,7 @@ from story.beats import Beat
 from story.environment import spec_from_environment, specs_from_environment
 from story.pseudocode import PANELS, PSEUDOCODE
 from story.reading import frame_key, frame_summarised
-from story.registry import heuristics
+from story.registry import heuristics, spoken
 from story.spec import RunSpec
 from story.storyboard import Pacing
 from tracing import Log
@@ -100,7 +99,7 @@ class SpecScene:
         return self.spec if self.spec is not None else spec_from_environment(self.default_spec())
 
 
-class TraceScene(SpecScene, Scene):
+class TraceScene(SpecScene, Recorded, Scene):
     """Plays the log of one algorithm run."""
 
     algorithm = "scaling"
@@ -112,6 +111,9 @@ class TraceScene(SpecScene, Scene):
     metaphor_box = METAPHOR  # where the metaphor's polygon goes (left half by default)
     #: what the panel shows: the run's pseudocode (the source when it has none) or "source"
     panel = PSEUDOCODE
+    #: whether the panel's call line shows each step's real call (``nearest_to(B, [D, E]) →
+    #: D``): a programmer wants it; the lecture, which shows no code, turns it off
+    call_line = True
 
     def __init__(self, renderer=None, **kwargs):
         if renderer is None and config.renderer == RendererType.CAIRO:
@@ -135,8 +137,10 @@ class TraceScene(SpecScene, Scene):
         else:
             raise ValueError(f"unknown heuristic {heuristic!r}; expected one of "
                              f"{', '.join(heuristics())}, or FILE.py:FUNCTION of your own")
-        title = (cls.title.replace(cls.heuristic, name) if cls.heuristic in cls.title
-                 else f"{cls.title} (heuristic: {name})")
+        # the title names the heuristic as the screen says it (story.registry.SPOKEN)
+        was, said = spoken(cls.heuristic), spoken(name)
+        title = (cls.title.replace(was, said) if was in cls.title
+                 else f"{cls.title} (heuristic: {said})")
         return _subclass(cls, heuristic=heuristic, title=title)
 
     @classmethod
@@ -161,15 +165,15 @@ class TraceScene(SpecScene, Scene):
 
     def play_log(self, log, title: str) -> Board:
         """Turn one log into beats and play them on a fresh board (both kept, as
-        ``trex_beats`` and ``trex_board``, for tests)."""
+        ``played_beats`` and ``played_board``, for tests)."""
         beats = self.beats(log)
         # the frame a run shown before showed too (same polygon, T, candidates): one caption
-        key, seen = frame_key(beats), self.__dict__.setdefault("trex_frames_seen", set())
-        self.trex_beats = frame_summarised(beats) if key is not None and key in seen else beats
+        key, seen = frame_key(beats), self.frames_seen
+        self.played_beats = frame_summarised(beats) if key is not None and key in seen else beats
         if key is not None:
             seen.add(key)
-        self.trex_board = board_for(self, log, self.trex_beats, title, self.theme)
-        return play_beats(self.trex_board, self.trex_beats)
+        self.played_board = board_for(self, log, self.played_beats, title, self.theme)
+        return play_beats(self.played_board, self.played_beats)
 
 
 class SequenceScene(TraceScene):

@@ -18,10 +18,10 @@ from manim import Create, FadeIn, FadeOut, Line, Square, VGroup, VMobject, Write
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
-from metaphors.captions import captions_of, whole_frames
+from metaphors.captions import whole_frames
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.layout import SUBTITLE_WIDTH, TITLE_Y, Box, subtitle_centre
-from metaphors.steps import mark_step
+from metaphors.recorded import captions_of, mark_step
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset

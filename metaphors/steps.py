@@ -2,13 +2,13 @@
 
 A *step* is what a presenter plays with one key press (``trex slides``): one beat of a run
 (a call, a metaphor action, a verdict), a card's title or one of its lines, a question or its
-answer. :func:`mark_step` notes that a step starts now — the frame the renderer is about to
-write — with its caption; the marks are kept on the scene (``scene.trex_steps``), so they come
-from the render itself and never from a second computation of its timing. A step lasts until
+answer. :func:`metaphors.recorded.mark_step` notes that a step starts now — the frame the
+renderer is about to write — with its caption; the marks are kept on the scene (declared by
+:class:`metaphors.recorded.Recorded`), so they come from the render itself and never from a second computation of its timing. A step lasts until
 the next one starts; the last lasts to the end of the video.
 
 What plays between two segments (the fade that clears the screen) belongs to the step after
-it, so that every step ends on the picture it built: :func:`lead_in` notes where that
+it, so that every step ends on the picture it built: :func:`metaphors.recorded.lead_in` notes where that
 transition starts, and the next mark starts there.
 
 The frame is counted by the renderer's clock: manim's Cairo renderer adds ``1 / frame_rate``
@@ -43,31 +43,3 @@ class StepMark:
 def frame_now(scene: Scene) -> int:
     """The index of the next frame the scene's renderer writes."""
     return round(float(scene.renderer.time) * scene.camera.frame_rate)
-
-
-def mark_step(scene: Scene, caption: str, call: str | None = None, kind: str = "beat") -> None:
-    """Note that a step starts now (or where :func:`lead_in` last said), with ``caption``."""
-    marks = scene.__dict__.setdefault("trex_steps", [])
-    start = scene.__dict__.pop("trex_lead_in", None)
-    marks.append(StepMark(frame_now(scene) if start is None else start, caption, call, kind))
-
-
-def lead_in(scene: Scene) -> None:
-    """What plays from now on, up to the next :func:`mark_step`, opens that step (a lead-in
-    already noted and not yet used stays where it is)."""
-    scene.__dict__.setdefault("trex_lead_in", frame_now(scene))
-
-
-def end_steps(scene: Scene) -> None:
-    """The last step ends now: what plays after it (a closing fade) is in no step."""
-    scene.trex_steps_end = frame_now(scene)
-
-
-def recorded_steps(scene: Scene) -> list[StepMark]:
-    """The marks noted while the scene played, in order."""
-    return list(getattr(scene, "trex_steps", ()))
-
-
-def steps_end(scene: Scene) -> int | None:
-    """The frame the last step ends before (None: the end of the video)."""
-    return getattr(scene, "trex_steps_end", None)

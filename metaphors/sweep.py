@@ -33,18 +33,20 @@ from manim import (
 from metaphors.layout import METAPHOR
 from metaphors.tags import tag
 from rendering.typeset import text
-from story.beats import Beat, beat_kind
+from story.beats import beat_kind
 from story.reach import side_normal
+from story.refs import arg
+from story.states import Line as Sweeping
+from story.states import Moving, point
 from story.storyboard import Walk, read_step
 from tracing import Event
 
 
 @beat_kind("sweep")
-class Sweep(Beat):
+class Sweep(Moving):
     """The sweeping line's ``states`` (through, direction, offset, the vertex reached)."""
 
-    states: list
-    result: str
+    states: tuple[Sweeping, ...]
 
 
 #: How far inside/outside counts as "on the boundary" (scene units).
@@ -232,13 +234,13 @@ def sweep(board, beat) -> None:
     when the line reaches it (the first green, the others amber)."""
     states = beat.states
     first = states[0]
-    through, direction = first["through"], first["direction"]
-    hits = [s for s in states[1:] if "reached" in s]
+    through, direction = first.through, first.direction
+    hits = [s for s in states[1:] if s.reached is not None]
     if not hits:
         board.play(beat, run_time=1.0)
         return
     normal = side_normal(direction, through, board.polygon.points[
-        board.polygon.labels.index(hits[0]["reached"])])
+        board.polygon.labels.index(hits[0].reached)])
     start, end, box = _long_line(board, through, direction)
     axis = tag(Line(start, end, stroke_opacity=0), "argument", "sweep")
     drawing = follower(board, axis, board.theme.sweep, "sweep", clip=box).set_z_index(1)
@@ -248,11 +250,11 @@ def sweep(board, beat) -> None:
     board.play(beat, FadeIn(drawing), run_time=0.6)
     lit, offset = [], 0.0
     for k, state in enumerate(hits):
-        travel = state["offset"] - offset
-        offset = state["offset"]
+        travel = state.offset - offset
+        offset = state.offset
         board.play(beat, axis.animate.shift(step * travel),
                    run_time=0.6 + board.length(abs(travel)) / 2.5)
-        kept, anims = light(board, state["reached"], k == 0, axis, box)
+        kept, anims = light(board, state.reached, k == 0, axis, box)
         lit += kept
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
     drawing.clear_updaters()
@@ -284,10 +286,11 @@ def _cut(start, end, box):
 
 def _move(walk: Walk, call: Event, ret: Event) -> dict:
     """The line through B, then at each candidate it touches (:func:`story.reach.sweeping`)."""
-    line = {"kind": "line", "through": walk.root_points()[call.args["b"]["ref"]],
-            "direction": call.args["direction"]}
-    return {"states": [{**line, "offset": 0.0},
-                       *({**line, "offset": d, "reached": v} for v, d in walk.reach(call, ret))]}
+    through = point(walk.root_points()[walk.ref(call, "b")])
+    direction = point(arg(call, "direction"))
+    return {"states": (Sweeping(through=through, direction=direction, offset=0.0),
+                       *(Sweeping(through=through, direction=direction, offset=d, reached=v)
+                         for v, d in walk.reach(call, ret)))}
 
 
 READS = {"first_hit_sweeping": read_step(

@@ -14,68 +14,65 @@ from manim import Polygon as MPolygon
 
 from geometry.visibility import visible_region
 from metaphors.tags import tag
-from story.beats import Beat, beat_kind
+from story.beats import beat_kind
 from story.reach import distance
-from story.storyboard import Walk, read_step, show
+from story.states import Disk, Moving, Tide, point
+from story.storyboard import Walk, read_step
 from tracing import Event
 
 
 @beat_kind("water")
-class Water(Beat):
+class Water(Moving):
     """Water spilled at B: the disk's ``states`` (centre, radius, the vertex it reached)."""
 
-    states: list
-    result: str
+    states: tuple[Disk, ...]
 
 
 @beat_kind("walled-water")
-class WalledWater(Beat):
+class WalledWater(Moving):
     """Water that respects the walls; ``visible`` pairs each vertex reached with whether B
     sees it."""
 
-    states: list
-    result: str
-    visible: list
+    states: tuple[Disk, ...]
+    visible: tuple[tuple[str, bool], ...]
 
 
 @beat_kind("flood")
-class Flood(Beat):
-    """Water rising from the shore AC: the band's ``states`` (level, the vertex it reached)."""
+class Flood(Moving):
+    """Water rising from the shore AC: the tide's ``states`` (level, the vertex it reached)."""
 
-    states: list
-    result: str
+    states: tuple[Tide, ...]
 
 
 def _spread(walk: Walk, call: Event, ret: Event) -> dict:
     """The disk through each candidate in the order it wets them (:func:`story.reach.spreading`)."""
-    centre = walk.root_points()[call.args["b"]["ref"]]
-    disk = {"kind": "circle", "center": centre}
-    return {"states": [{**disk, "radius": 0.0},
-                       *({**disk, "radius": r, "reached": v} for v, r in walk.reach(call, ret))]}
+    centre = point(walk.root_points()[walk.ref(call, "b")])
+    return {"states": (Disk(center=centre, radius=0.0),
+                       *(Disk(center=centre, radius=r, reached=v)
+                         for v, r in walk.reach(call, ret)))}
 
 
 def _walled(walk: Walk, call: Event, ret: Event) -> dict:
     """The disk through each vertex B was tested to see, nearest first, until one was seen."""
     where = walk.root_points()
-    labels = walk.entered_after(call, call.args["t"]["ref"])["labels"]
-    centre = where[labels[1]]
-    disk = {"kind": "circle", "center": centre, "walled": True}
+    labels = walk.entered_after(call, walk.ref(call, "t"))["labels"]
+    centre = point(where[labels[1]])
     sees = [e for e in walk.log.events[call.seq:ret.seq] if e.kind == "call" and e.name == "sees"]
-    reached = [show(s.args["v"]) for s in sees]
-    return {"states": [{**disk, "radius": 0.0},
-                       *({**disk, "radius": distance(centre, where[v]), "reached": v}
-                         for v in reached)],
-            "visible": [(v, bool(walk.returns[s.seq].result)) for v, s in
-                        zip(reached, sees, strict=True)]}
+    reached = [walk.ref(s, "v") for s in sees]
+    return {"states": (Disk(center=centre, radius=0.0, walled=True),
+                       *(Disk(center=centre, radius=distance(centre, where[v]), reached=v,
+                              walled=True) for v in reached)),
+            "visible": tuple((v, bool(walk.returns[s.seq].result)) for v, s in
+                             zip(reached, sees, strict=True))}
 
 
 def _rise(walk: Walk, call: Event, ret: Event) -> dict:
-    """The band rising from AC through each candidate, the last one dry (:func:`story.reach.rising`)."""
-    t = walk.entered_after(call, call.args["t"]["ref"])
-    a, b, c = t["points"]
-    band = {"kind": "band", "shore": [a, c], "towards": b}
-    return {"states": [{**band, "level": 0.0},
-                       *({**band, "level": h, "reached": v} for v, h in walk.reach(call, ret))]}
+    """The tide rising from AC through each candidate, the last one dry (:func:`story.reach.rising`)."""
+    t = walk.entered_after(call, walk.ref(call, "t"))
+    a, b, c = (point(p) for p in t["points"])
+    return {"states": (Tide(shore=(a, c), towards=b, level=0.0),
+                       *(Tide(shore=(a, c), towards=b, level=h, reached=v)
+                         for v, h in walk.reach(call, ret)))}
 
 
 def _disk(board, center, radius: float):
@@ -87,31 +84,31 @@ def _disk(board, center, radius: float):
 def water(board, beat) -> None:
     """The disk grows through each radius in turn; the first vertex it wets is the pick."""
     states = beat.states
-    disk = _disk(board, states[0]["center"], 0.0)
+    disk = _disk(board, states[0].center, 0.0)
     board.play(beat, FadeIn(disk), run_time=0.5)
     for k, state in enumerate(states[1:]):
-        grown = _disk(board, state["center"], state["radius"])
+        grown = _disk(board, state.center, state.radius)
         colour = board.theme.result if k == 0 else board.theme.argument
         board.play(beat, Transform(disk, grown),
-                   Indicate(board.markers[state["reached"]], color=colour), run_time=1.2)
+                   Indicate(board.markers[state.reached], color=colour), run_time=1.2)
     board.play(beat, FadeOut(disk), run_time=0.5)
 
 
 def walled_water(board, beat) -> None:
     """The disk clipped to what B sees: water that cannot flow through walls."""
     states = beat.states
-    centre = states[0]["center"]
+    centre = states[0].center
     region = visible_region(board.polygon, board.polygon.points.index(tuple(centre)))
     disk = tag(MPolygon(board.at(centre), board.at(centre)), "argument", "water")
     board.play(beat, FadeIn(disk), run_time=0.3)
     visible = dict(beat.visible)
     for state in states[1:]:
-        clipped = region.intersection(shapely.Point(centre).buffer(state["radius"], 64))
+        clipped = region.intersection(shapely.Point(centre).buffer(state.radius, 64))
         grown = _region_mobject(board, clipped)
-        seen = visible.get(state["reached"], False)
+        seen = visible.get(state.reached, False)
         colour = board.theme.result if seen else board.theme.rejected
         board.play(beat, Transform(disk, grown),
-                   Indicate(board.markers[state["reached"]], color=colour), run_time=1.2)
+                   Indicate(board.markers[state.reached], color=colour), run_time=1.2)
     board.play(beat, FadeOut(disk), run_time=0.5)
 
 
@@ -129,14 +126,14 @@ def flood(board, beat) -> None:
     """A band of water rises from AC towards B; each candidate goes under in turn, the last
     one still dry is the pick."""
     states = beat.states
-    a, c = states[0]["shore"]
-    towards = states[0]["towards"]
+    a, c = states[0].shore
+    towards = states[0].towards
     triangle = shapely.Polygon([a, c, towards])
     band = tag(MPolygon(board.at(a), board.at(c)), "argument", "flood")
     board.play(beat, FadeIn(band), run_time=0.3)
     for state in states[1:]:
-        wet = triangle.intersection(_strip(a, c, towards, state["level"]))
-        drowned = board.markers[state["reached"]]
+        wet = triangle.intersection(_strip(a, c, towards, state.level))
+        drowned = board.markers[state.reached]
         is_last = state is states[-1]
         colour = board.theme.result if is_last else board.theme.rejected
         board.play(beat, Transform(band, _region_mobject(board, wet)),

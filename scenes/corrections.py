@@ -5,27 +5,28 @@ Run: ``manim -pql scenes/corrections.py TranslationCorrect`` (or ``ScalingCorrec
 """
 
 from metaphors.scene import TraceScene
+from story.registry import entry
 
 
 class TranslationCorrect(TraceScene):
     algorithm = "translation-correct"
     polygon = "counterexample"
-    title = "Correct translation: a line parallel to AC swept from B"
+    title = entry("translation-correct").title
 
 
 class ScalingCorrect(TraceScene):
     algorithm = "scaling-correct"
     polygon = "counterexample"
-    title = "Correct scaling: water rises from AC; the last dry candidate"
+    title = entry("scaling-correct").title
 
 
 class RotationCorrect(TraceScene):
     algorithm = "rotation-correct"
     polygon = "counterexample"
-    title = "Correct rotation: the clock moves to C, set to B"
+    title = entry("rotation-correct").title
 
 
 class ScalingWalled(TraceScene):
     algorithm = "scaling-walled"
     polygon = "counterexample"
-    title = "Scaling with walls: water that cannot pass the edges"
+    title = entry("scaling-walled").title

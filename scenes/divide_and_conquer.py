@@ -14,5 +14,5 @@ class DivideAndConquer(TraceScene):
     algorithm = "divide-and-conquer"
     heuristic = "gravity"
     polygon = "lecture"
-    title = "Divide and conquer: split along diagonals found by gravity"
+    title = "Divide and conquer: split along diagonals found by Gravity"
     pacing = Pacing(full=2, fast=0.35)

@@ -18,11 +18,11 @@ Examples
 --------
 >>> P = [(1.6, 8.0), (1.0, 4.5), (9.0, 2.0), (3.0, 6.5), (4.6, 4.1)]  # A B C D E
 >>> T = P[:3]
->>> water = motion({"kind": "circle", "center": [1.0, 4.5], "radius": 2.83, "reached": "D"}, T)
+>>> water = motion(Disk(center=(1.0, 4.5), radius=2.83, reached="D"), T)
 >>> round(water.astray(P).area, 3) > 0  # the circle wets D through the wall E–A
 True
->>> line = motion({"kind": "line", "through": [1.0, 4.5], "direction": [7.4, -6.0],
-...                "offset": 1.9566, "reached": "E"}, T)
+>>> line = motion(Line(through=(1.0, 4.5), direction=(7.4, -6.0), offset=1.9566,
+...                     reached="E"), T)
 >>> line.astray(P).area < 1e-6  # the corrected sweep stays inside P until it reaches E
 True
 """
@@ -37,6 +37,7 @@ import shapely
 from shapely.geometry.base import BaseGeometry
 
 from story.reach import side_normal
+from story.states import Disk, Hand, Line, Tide, Tool
 
 Point = Sequence[float]
 
@@ -112,24 +113,37 @@ def split(geometry: BaseGeometry, polygon: Sequence[Point],
 class Motion:
     """A heuristic's tool from its start to its pick, in polygon coordinates.
 
-    ``kind`` is the shape state's kind: ``circle`` (water spilled at ``origin``, growing to
-    radius ``amount``), ``ray`` (a clock hand at ``origin`` set to ``heading`` degrees,
-    turning by ``amount`` degrees, ``sign`` +1 counter-clockwise), ``line`` (the line through
-    ``origin`` along ``direction``, moving ``amount`` along its unit normal ``normal``) or
-    ``band`` (water rising from the shore ``shore`` to the level ``amount`` towards
-    ``origin``). ``triangle`` is T, ``reached`` the vertex it stops at.
+    ``state`` is the tool's state at the pick (:mod:`story.states`): a :class:`Disk` (water
+    spilled at its centre, growing to its radius), a :class:`Hand` (a clock hand set to its
+    heading, turning by its angle; ``sign`` +1 counter-clockwise), a :class:`Line` (the line
+    through a point along its direction, moving by its offset along the unit normal
+    ``normal``) or a :class:`Tide` (water rising from its shore to its level towards B, along
+    ``normal``). ``triangle`` is T.
     """
 
-    kind: str
-    origin: tuple[float, float]
-    amount: float
+    state: Tool
     triangle: tuple[tuple[float, float], ...]
-    reached: str
-    heading: float = 0.0
     sign: int = 1
-    direction: tuple[float, float] = (0.0, 1.0)
     normal: tuple[float, float] = (1.0, 0.0)
-    shore: tuple[tuple[float, float], ...] = ()
+
+    @property
+    def reached(self) -> str:
+        """The vertex the tool stops at."""
+        return str(self.state.reached)
+
+    @property
+    def rising(self) -> bool:
+        """Whether this is the rising water: its witness is what is still dry."""
+        return isinstance(self.state, Tide)
+
+    @property
+    def origin(self) -> tuple[float, float]:
+        """Where the tool starts from: the disk's centre, the hand's hub, the line's point,
+        B for the tide."""
+        match self.state:
+            case Disk(center=p) | Hand(origin=p) | Line(through=p) | Tide(towards=p):
+                return _pt(p)
+        raise TypeError(f"no motion for {self.state!r}")
 
     @property
     def t_shape(self) -> shapely.Polygon:
@@ -142,12 +156,15 @@ class Motion:
     def tool(self, t: float = 1.0) -> BaseGeometry:
         """The tool at time ``t`` (0: the start, 1: at its pick): the circle's rim, or the
         hand, the line or the water's level inside T."""
-        if self.kind == "circle":
-            return shapely.Point(self.origin).buffer(max(t * self.amount, 1e-9), 64).exterior
-        if self.kind == "ray":
-            far = _ahead(self.origin, self.heading + self.sign * t * self.amount, self._far())
-            return _within(shapely.LineString([self.origin, far]), self.t_shape)
-        (px, py), (dx, dy) = self._line_at(t), self.direction
+        match self.state:
+            case Disk(radius=radius):
+                return shapely.Point(self.origin).buffer(max(t * float(radius), 1e-9),
+                                                         64).exterior
+            case Hand(heading=heading, angle=angle):
+                far = _ahead(self.origin, float(heading) + self.sign * t * float(angle),
+                             self._far())
+                return _within(shapely.LineString([self.origin, far]), self.t_shape)
+        (px, py), (dx, dy) = self._line_at(t), self._direction()
         norm, far = math.hypot(dx, dy), self._far()
         ux, uy = dx / norm * far, dy / norm * far
         return _within(shapely.LineString([(px - ux, py - uy), (px + ux, py + uy)]),
@@ -156,21 +173,24 @@ class Motion:
     def swept(self, t: float = 1.0) -> BaseGeometry:
         """What the tool has passed over by time ``t``, inside T (for the rising water: what
         is under water)."""
-        if self.kind == "circle":
-            region = shapely.Point(self.origin).buffer(max(t * self.amount, 1e-9), 64)
-        elif self.kind == "ray":
-            steps = max(2, math.ceil(self.amount * t / ARC_STEP) + 1)
-            region = shapely.Polygon([self.origin, *(
-                _ahead(self.origin, self.heading + self.sign * self.amount * t * k / (steps - 1),
-                       self._far()) for k in range(steps))])
-        else:
-            region = _strip(self._line_at(0.0), self._line_at(t), self.direction, self._far())
+        match self.state:
+            case Disk(radius=radius):
+                region = shapely.Point(self.origin).buffer(max(t * float(radius), 1e-9), 64)
+            case Hand(heading=heading, angle=angle):
+                heading, angle = float(heading), float(angle)
+                steps = max(2, math.ceil(angle * t / ARC_STEP) + 1)
+                region = shapely.Polygon([self.origin, *(
+                    _ahead(self.origin, heading + self.sign * angle * t * k / (steps - 1),
+                           self._far()) for k in range(steps))])
+            case _:
+                region = _strip(self._line_at(0.0), self._line_at(t), self._direction(),
+                                self._far())
         return _clean(self.t_shape.intersection(region))
 
     def witness(self) -> BaseGeometry:
         """The part of T the argument is about, at the pick: what the tool swept on its way
         there; for the rising water, what is still dry (on B's side of the level)."""
-        if self.kind == "band":
+        if self.rising:
             return _clean(self.t_shape.difference(self.swept(1.0)))
         return self.swept(1.0)
 
@@ -178,45 +198,51 @@ class Motion:
         """The witness's part outside ``polygon``: empty for a correct heuristic."""
         return outside(self.witness(), polygon)
 
+    def _direction(self) -> tuple[float, float]:
+        """The direction of the line, or of the tide's level (along its shore)."""
+        match self.state:
+            case Line(direction=d):
+                return _pt(d)
+            case Tide(shore=(a, c)):
+                return (float(c[0]) - float(a[0]), float(c[1]) - float(a[1]))
+        raise TypeError(f"{self.state!r} moves along no line")
+
     def _line_at(self, t: float) -> tuple[float, float]:
         """A point of the line (or the level) at time ``t``."""
-        if self.kind == "band":
-            (ax, ay), _ = self.shore
-            nx, ny = self.normal
-            return (ax + nx * t * self.amount, ay + ny * t * self.amount)
-        (ox, oy), (nx, ny) = self.origin, self.normal
-        return (ox + nx * t * self.amount, oy + ny * t * self.amount)
+        nx, ny = self.normal
+        match self.state:
+            case Tide(shore=(a, _), level=level):
+                (ax, ay), amount = _pt(a), float(level)
+                return (ax + nx * t * amount, ay + ny * t * amount)
+            case Line(offset=offset):
+                (ox, oy), amount = self.origin, float(offset)
+                return (ox + nx * t * amount, oy + ny * t * amount)
+        raise TypeError(f"{self.state!r} moves along no line")
 
 
-def motion(reached: dict, triangle: Sequence[Point]) -> Motion:
-    """The motion that ends in a metaphor's shape state at its pick (the states the
+def motion(reached: Tool, triangle: Sequence[Point]) -> Motion:
+    """The motion that ends in a metaphor's tool state at its pick (the states the
     storyboard computes: :mod:`story.reach` via the metaphors' readings; each starts from
     radius, angle, offset or level 0).
 
-    >>> m = motion({"kind": "ray", "origin": [9.0, 2.0], "heading": 162.6, "angle": 8.16,
-    ...             "reached": "E"}, [(1.6, 8.0), (1.0, 4.5), (9.0, 2.0)])
-    >>> m.kind, m.sign, m.reached
-    ('ray', -1, 'E')
+    >>> m = motion(Hand(origin=(9.0, 2.0), heading=162.6, angle=8.16, reached="E"),
+    ...            [(1.6, 8.0), (1.0, 4.5), (9.0, 2.0)])
+    >>> type(m.state).__name__, m.sign, m.reached
+    ('Hand', -1, 'E')
     """
-    kind, t, label = reached["kind"], tuple(tuple(map(float, p[:2])) for p in triangle), reached[
-        "reached"]
-    if kind == "circle":
-        return Motion("circle", _pt(reached["center"]), float(reached["radius"]), t, label)
-    if kind == "ray":
-        origin, heading = _pt(reached["origin"]), float(reached["heading"])
-        return Motion("ray", origin, float(reached["angle"]), t, label, heading=heading,
-                      sign=_turn_sign(origin, heading, reached["angle"], t))
-    if kind == "line":
-        through, direction = _pt(reached["through"]), _pt(reached["direction"])
-        return Motion("line", through, float(reached["offset"]), t, label, direction=direction,
-                      normal=side_normal(direction, through, _centroid(t)))
-    if kind == "band":
-        a, c = (_pt(p) for p in reached["shore"])
-        towards = _pt(reached["towards"])
-        direction = (c[0] - a[0], c[1] - a[1])
-        return Motion("band", towards, float(reached["level"]), t, label, direction=direction,
-                      normal=side_normal(direction, a, towards), shore=(a, c))
-    raise ValueError(f"no motion for a {kind!r} shape state")
+    t = tuple(tuple(map(float, p[:2])) for p in triangle)
+    match reached:
+        case Disk():
+            return Motion(reached, t)
+        case Hand(origin=origin, heading=heading, angle=angle):
+            return Motion(reached, t, sign=_turn_sign(_pt(origin), float(heading), angle, t))
+        case Line(through=through, direction=direction):
+            return Motion(reached, t, normal=side_normal(_pt(direction), _pt(through),
+                                                         _centroid(t)))
+        case Tide(shore=(a, c), towards=towards):
+            direction = (float(c[0]) - float(a[0]), float(c[1]) - float(a[1]))
+            return Motion(reached, t, normal=side_normal(direction, _pt(a), _pt(towards)))
+    raise TypeError(f"no motion for {reached!r}")
 
 
 def _pt(p: Point) -> tuple[float, float]:

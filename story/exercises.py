@@ -3,12 +3,12 @@
 Three kinds, mixed in turn:
 
 ``pick``
-    "Which vertex does rotation pick?" — the answer is the label of D from
+    "Which vertex does Rotation pick?" — the answer is the label of D from
     :func:`geometry.diagonals.find_diagonal`; the reason quotes the metaphor's own numbers
     computed from the run's log (the water's radius, the clock hand's angle, the sweep's
     offset: :mod:`story.reach`).
 ``claim``
-    "Is the claim of scaling an inner diagonal?" (a wrong heuristic) — yes or no from
+    "Is the claim of Scaling an inner diagonal?" (a wrong heuristic) — yes or no from
     :func:`geometry.check.is_inner_diagonal`, with its reason. Yes and no alternate in a
     seeded order, so a set of two or more holds both.
 ``inner``
@@ -42,7 +42,8 @@ from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.polygon import Polygon
 from geometry.samples import sample_from_spec
 from story.reach import reach_of
-from story.registry import heuristics, wrong
+from story.registry import heuristics, spoken, wrong
+from story.words import why_not_inner
 
 __all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "make_exercises"]
 
@@ -54,13 +55,13 @@ MIN_GAP = 0.04  # closest two vertices, as a fraction of the bounding box's diag
 MAX_TRIES = 20_000
 
 _STORY = {
-    "scaling": ("the water spilled at B reaches", "distance ", "{:.2f}"),
+    "scaling": ("the water spilled at B reaches", "distance ", "{:.1f}"),
     "rotation": ("the clock hand at B, set to A, passes", "after ", "{:.1f}°"),
     "rotation-ccw": ("the clock hand at B, set to C, turning back, passes", "after ", "{:.1f}°"),
     "rotation-correct": ("the clock hand at C, set to B, passes", "after ", "{:.1f}°"),
-    "translation": ("the vertical line swept rightwards from B reaches", "after ", "{:.2f}"),
-    "translation-correct": ("the line parallel to AC, swept from B, reaches", "after ", "{:.2f}"),
-    "scaling-correct": ("the water rising from the shore AC wets", "height ", "{:.2f}"),
+    "translation": ("the vertical line swept rightwards from B reaches", "after ", "{:.1f}"),
+    "translation-correct": ("the line parallel to AC, swept from B, reaches", "after ", "{:.1f}"),
+    "scaling-correct": ("the water rising from the shore AC wets", "height ", "{:.1f}"),
 }
 #: Heuristics that pick a candidate of T by a rule a student can apply by hand: those whose
 #: metaphor's story is told above, in the registry's order.
@@ -173,7 +174,7 @@ def _reached(polygon: Polygon, heuristic: str) -> tuple[int, list[tuple[str, flo
 
 
 def _pick_reason(heuristic: str, steps: list[tuple[str, float]]) -> str | None:
-    """"the water spilled at B reaches D (distance 2.83) before E (3.62)"; None when the
+    """"the water spilled at B reaches D (distance 2.8) before E (3.6)"; None when the
     deciding two values would print alike (the tie rule would be the real reason)."""
     lead, unit, fmt = _STORY[heuristic]
     shown = [(label, fmt.format(value)) for label, value in steps]
@@ -196,8 +197,9 @@ def _pick(number: int, heuristic: str):
         reason = _pick_reason(heuristic, steps)
         if reason is None:
             return None
-        return _exercise(number, "pick", frame, heuristic, f"Which vertex does {heuristic} pick?",
-                         frame.polygon.labels[d], reason)
+        return _exercise(number, "pick", frame, heuristic,
+                         f"Which vertex does {spoken(heuristic)} pick?", frame.polygon.labels[d],
+                         reason)
 
     return build
 
@@ -210,10 +212,11 @@ def _claim(number: int, heuristics: list[str], wanted: bool):
             verdict = is_inner_diagonal(p, *claim.pair)
             if verdict.ok != wanted:
                 continue
-            name = claim.name
-            answer = f"{'yes' if verdict.ok else 'no'} ({heuristic} claims {name})"
-            reason = verdict.why if not verdict.ok else _inside(p, *claim.pair)
-            question = f"Is the claim of {heuristic} an inner diagonal?"
+            name, said = claim.name, spoken(heuristic)
+            answer = f"{'yes' if verdict.ok else 'no'} ({said} claims {name})"
+            reason = why_not_inner(verdict, p.labels, name) if not verdict.ok else _inside(
+                p, *claim.pair)
+            question = f"Is the claim of {said} an inner diagonal?"
             return _exercise(number, "claim", frame, heuristic, question, answer, reason)
         return None
 
@@ -235,7 +238,8 @@ def _inner(number: int):
             return None  # no B-diagonal to reject: too easy
         names = [_label(p, *pair) for pair in options]
         yes = [n for n, v in zip(names, verdicts, strict=True) if v.ok]
-        reasons = [v.why for v in verdicts if not v.ok]
+        reasons = [why_not_inner(v, p.labels, n)
+                   for n, v in zip(names, verdicts, strict=True) if not v.ok]
         reasons.append(f"{_and(yes)} {'runs' if len(yes) == 1 else 'run'} inside the polygon")
         question = f"Which of these diagonals are inner: {', '.join(names)}?"
         return _exercise(number, "inner", frame, None, question, ", ".join(yes),

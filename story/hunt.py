@@ -44,9 +44,15 @@ from geometry.frame import Diagonal
 from geometry.polygon import Polygon
 from geometry.predicates import Point, orient
 from geometry.samples import make_sample
-from geometry.user_heuristics import UserHeuristic, run_heuristic
+from geometry.user_heuristics import (
+    UserHeuristic,
+    UserHeuristicError,
+    UserHeuristicExit,
+    run_heuristic,
+)
 
-__all__ = ["BATCH", "Hunt", "candidates", "fails", "hunt", "is_minimal", "reason", "shrink"]
+__all__ = ["BATCH", "Failure", "Hunt", "Shrunk", "candidates", "fails", "hunt", "is_minimal",
+           "reason", "shrink"]
 
 #: Polygons of each size per round of the search.
 BATCH = 16
@@ -64,8 +70,14 @@ class Hunt:
     """What a hunt found.
 
     ``polygon`` (shrunk), ``diagonal`` (its indices into ``polygon.points``) and ``verdict``
-    are None when nothing was found. ``tried`` counts the polygons searched (not those the
-    shrinker tried: ``checks``); ``first`` is the size of the polygon found before shrinking.
+    are None when nothing was found; so are ``diagonal`` and ``verdict`` when the finding is an
+    ``error`` of a function of one's own (its one-line message: it raised, answered nonsense
+    or ran out of time on ``polygon``). ``tried`` counts the polygons searched (not those the
+    shrinker tried: ``checks``); ``skipped`` the draws of the budget that made no polygon (a
+    generator gave up: large random simple polygons are hard to draw), so that ``tried +
+    skipped`` is the budget when nothing was found; ``first`` is the size of the polygon found
+    before shrinking; ``stopped``: the shrinking stopped early (too many of its trials ran out
+    of time).
     """
 
     heuristic: str
@@ -79,6 +91,9 @@ class Hunt:
     first: int | None = None
     checks: int = 0
     sizes: dict[int, int] = field(default_factory=dict)
+    skipped: int = 0
+    error: str | None = None
+    stopped: bool = False
 
     @property
     def claim_name(self) -> str | None:
@@ -90,12 +105,33 @@ class Hunt:
 # --- judging ---------------------------------------------------------------------------------------
 
 
-def fails(points: Sequence[Point], heuristic: Heuristic) -> tuple[Polygon, Diagonal, Verdict] | None:
-    """The polygon, claim and verdict when ``points`` make a valid polygon of at least four
-    vertices on which the heuristic's claim is not an inner diagonal; None otherwise.
+@dataclass(frozen=True)
+class Failure:
+    """How a heuristic fails on a polygon: a claim that is not an inner diagonal (``claim`` and
+    ``verdict``), or an error of a function of one's own (``error``: it raised, answered
+    something that is not two vertices, or did not finish within the time limit)."""
 
-    A heuristic that raises (a user's: :class:`~geometry.user_heuristics.UserHeuristicError`)
-    raises here too."""
+    polygon: Polygon
+    claim: Diagonal | None = None
+    verdict: Verdict | None = None
+    error: UserHeuristicError | None = None
+
+    @property
+    def way(self) -> str:
+        """What a shrunk polygon must still do: ``wrong claim``, or the error's
+        :attr:`~geometry.user_heuristics.UserHeuristicError.way` (``timeout`` …)."""
+        return "wrong claim" if self.error is None else self.error.way
+
+
+def fails(points: Sequence[Point], heuristic: Heuristic, way: str | None = None) -> Failure | None:
+    """How the heuristic fails when ``points`` make a valid polygon of at least four vertices
+    on which its claim is not an inner diagonal, or on which a function of one's own fails
+    (raises, answers nonsense, runs out of time); None otherwise. With ``way``, only a
+    failure of that :attr:`Failure.way` counts.
+
+    A function of one's own that tries to end the program
+    (:class:`~geometry.user_heuristics.UserHeuristicExit`) raises here, as does a built-in
+    heuristic that refuses a polygon (ValueError)."""
     if len(points) < 4:
         return None
     try:
@@ -104,9 +140,16 @@ def fails(points: Sequence[Point], heuristic: Heuristic) -> tuple[Polygon, Diago
         return None
     if polygon.n != len(points):  # cleaning dropped a repeated point: not this polygon
         return None
-    claim = run_heuristic(polygon, heuristic)
-    verdict = is_inner_diagonal(polygon, *claim.pair)
-    return None if verdict.ok else (polygon, claim, verdict)
+    try:
+        claim = run_heuristic(polygon, heuristic)
+    except UserHeuristicExit:
+        raise
+    except UserHeuristicError as exc:
+        found = Failure(polygon, error=exc)
+    else:
+        verdict = is_inner_diagonal(polygon, *claim.pair)
+        found = None if verdict.ok else Failure(polygon, claim, verdict)
+    return found if found is not None and way in (None, found.way) else None
 
 
 # --- generating --------------------------------------------------------------------------------------
@@ -230,43 +273,68 @@ def candidates(budget: int, seed: int = 0, max_vertices: int = 8):
 
 # --- shrinking -----------------------------------------------------------------------------------------
 
+#: Trials that may run out of time while one polygon is shrunk (each costs the whole limit):
+#: then the shrinker stops with the smallest polygon so far.
+MAX_SHRINK_TIMEOUTS = 8
 
-def _drop_vertices(points: list[Point], heuristic: Heuristic, count: list[int]) -> list[Point]:
+
+class _Enough(Exception):
+    """Too many trials ran out of time: stop shrinking."""
+
+
+class _Trials:
+    """The shrinker's trials: each judged as failing the same way as the first (``way``), or
+    not; counted (``checks``), and stopped by :class:`_Enough` after
+    :data:`MAX_SHRINK_TIMEOUTS` that ran out of time."""
+
+    def __init__(self, heuristic: Heuristic, first: Failure) -> None:
+        self.heuristic, self.way = heuristic, first.way
+        self.best = first  # the last failure found: the polygon the shrinker holds
+        self.checks = self.timeouts = 0
+
+    def fails(self, points: Sequence[Point]) -> Failure | None:
+        self.checks += 1
+        found = fails(points, self.heuristic)
+        if found is not None and found.way == "timeout":
+            self.timeouts += 1
+            if self.timeouts > MAX_SHRINK_TIMEOUTS:
+                raise _Enough
+        if found is None or found.way != self.way:
+            return None
+        self.best = found
+        return found
+
+
+def _drop_vertices(points: list[Point], trials: _Trials) -> list[Point]:
     changed = True
     while changed:
         changed = False
         for k in range(len(points)):
-            trial = points[:k] + points[k + 1:]
-            count[0] += 1
-            found = fails(trial, heuristic)
+            found = trials.fails(points[:k] + points[k + 1:])
             if found is not None:
-                points = list(found[0].points)
+                points = list(found.polygon.points)
                 changed = True
                 break
     return points
 
 
-def _snap(points: list[Point], heuristic: Heuristic, count: list[int]) -> list[Point]:
+def _snap(points: list[Point], trials: _Trials) -> list[Point]:
     """Integer coordinates: snapped to a grid (floats), translated to the origin."""
     if not all(float(x).is_integer() and float(y).is_integer() for x, y in points):
         xs, ys = [p[0] for p in points], [p[1] for p in points]
         span = max(max(xs) - min(xs), max(ys) - min(ys)) or 1
         for g in (4, 6, 8, 10, 12, 16, 20, 30, 50, 100, 1000):
-            trial = [(round((x - min(xs)) * g / span), round((y - min(ys)) * g / span))
-                     for x, y in points]
-            count[0] += 1
-            found = fails(trial, heuristic)
+            found = trials.fails([(round((x - min(xs)) * g / span),
+                                   round((y - min(ys)) * g / span)) for x, y in points])
             if found is not None:
-                points = list(found[0].points)
+                points = list(found.polygon.points)
                 break
         else:
             return points
     points = [(int(x), int(y)) for x, y in points]
     mx, my = min(p[0] for p in points), min(p[1] for p in points)
-    trial = [(x - mx, y - my) for x, y in points]
-    count[0] += 1
-    found = fails(trial, heuristic)
-    return list(found[0].points) if found is not None else points
+    found = trials.fails([(x - mx, y - my) for x, y in points])
+    return list(found.polygon.points) if found is not None else points
 
 
 def _towards_zero(v: int) -> list[int]:
@@ -278,7 +346,7 @@ def _towards_zero(v: int) -> list[int]:
     return seen
 
 
-def _scale_down(points: list[Point], heuristic: Heuristic, count: list[int]) -> list[Point]:
+def _scale_down(points: list[Point], trials: _Trials) -> list[Point]:
     """The whole polygon scaled by 1/2, 2/3, 3/4 or 4/5 (rounded) while it still fails."""
     if not all(float(x).is_integer() and float(y).is_integer() for x, y in points):
         return points
@@ -287,16 +355,15 @@ def _scale_down(points: list[Point], heuristic: Heuristic, count: list[int]) -> 
         changed = False
         for num, den in ((1, 2), (2, 3), (3, 4), (4, 5)):
             trial = [(round(x * num / den), round(y * num / den)) for x, y in points]
-            count[0] += 1
-            found = fails(trial, heuristic)
-            if found is not None and found[0].points != tuple(points):
-                points = [(int(x), int(y)) for x, y in found[0].points]
+            found = trials.fails(trial)
+            if found is not None and found.polygon.points != tuple(points):
+                points = [(int(x), int(y)) for x, y in found.polygon.points]
                 changed = True
                 break
     return points
 
 
-def _move_coordinates(points: list[Point], heuristic: Heuristic, count: list[int]) -> list[Point]:
+def _move_coordinates(points: list[Point], trials: _Trials) -> list[Point]:
     if not all(float(x).is_integer() and float(y).is_integer() for x, y in points):
         return points
     changed = True
@@ -310,10 +377,9 @@ def _move_coordinates(points: list[Point], heuristic: Heuristic, count: list[int
                     moved = list(points[k])
                     moved[axis] = w
                     trial = [*points[:k], (int(moved[0]), int(moved[1])), *points[k + 1:]]
-                    count[0] += 1
-                    found = fails(trial, heuristic)
+                    found = trials.fails(trial)
                     if found is not None:
-                        points = [(int(x), int(y)) for x, y in found[0].points]
+                        points = [(int(x), int(y)) for x, y in found.polygon.points]
                         changed = True
                         break
                 if changed:
@@ -324,33 +390,47 @@ def _move_coordinates(points: list[Point], heuristic: Heuristic, count: list[int
 
 
 def shrink(points: Sequence[Point], heuristic: Heuristic,
-           count: list[int] | None = None) -> tuple[Polygon, Diagonal, Verdict]:
-    """Shrink a failing polygon (see the module docs): the minimal polygon, claim and verdict.
+           found: Failure | None = None) -> Shrunk:
+    """Shrink a failing polygon (see the module docs) while it fails the same way (a wrong
+    claim; or the same error of a function of one's own: :attr:`Failure.way`): the minimal
+    failure, how many checks it took, and whether it stopped early (too many trials ran out
+    of time: :data:`MAX_SHRINK_TIMEOUTS`). ``found``: how ``points`` fail, if known (a
+    polygon that runs out of time is not run again).
 
     Raises ValueError if ``points`` is not a failing polygon to begin with.
     """
-    count = count if count is not None else [0]
-    found = fails(points, heuristic)
+    found = found if found is not None else fails(points, heuristic)
     if found is None:
         raise ValueError("not a counterexample: nothing to shrink")
-    current = list(found[0].points)
-    while True:
-        before = current
-        current = _drop_vertices(current, heuristic, count)
-        current = _snap(current, heuristic, count)
-        current = _scale_down(current, heuristic, count)
-        current = _move_coordinates(current, heuristic, count)
-        if current == before:
-            break
-    result = fails(current, heuristic)
-    assert result is not None
-    return result
+    trials = _Trials(heuristic, found)
+    current = list(found.polygon.points)
+    stopped = False
+    try:
+        while True:
+            before = current
+            for step in (_drop_vertices, _snap, _scale_down, _move_coordinates):
+                current = step(current, trials)
+            if current == before:
+                break
+    except _Enough:  # the last failure found is a step further than ``current``
+        stopped = True
+    return Shrunk(trials.best, trials.checks, stopped)
 
 
-def is_minimal(polygon: Polygon, heuristic: Heuristic) -> bool:
-    """Whether dropping any one vertex makes the polygon invalid or the claim right."""
+@dataclass(frozen=True)
+class Shrunk:
+    """What :func:`shrink` made: the minimal ``failure``, the ``checks`` it took, and whether
+    it ``stopped`` early because too many trials ran out of time."""
+
+    failure: Failure
+    checks: int
+    stopped: bool = False
+
+
+def is_minimal(polygon: Polygon, heuristic: Heuristic, way: str = "wrong claim") -> bool:
+    """Whether dropping any one vertex makes the polygon invalid or stops it failing ``way``."""
     pts = list(polygon.points)
-    return all(fails(pts[:k] + pts[k + 1:], heuristic) is None for k in range(len(pts)))
+    return all(fails(pts[:k] + pts[k + 1:], heuristic, way) is None for k in range(len(pts)))
 
 
 # --- the hunt --------------------------------------------------------------------------------------------
@@ -363,30 +443,38 @@ def _name(heuristic: Heuristic) -> str:
 def hunt(heuristic: Heuristic, *, budget: int = 5000, seed: int = 0, max_vertices: int = 8,
          progress: Callable[[int], None] | None = None) -> Hunt:
     """Search up to ``budget`` polygons of 4 … ``max_vertices`` vertices for one on which the
-    heuristic's claim is not an inner diagonal; shrink the first found.
+    heuristic fails (its claim is not an inner diagonal, or a function of one's own raises,
+    answers nonsense or runs out of time); shrink the first found.
 
-    ``progress(k)`` is told of every ``k`` polygons tried. The result depends on the
-    heuristic, the budget, the seed and ``max_vertices`` only (``seconds`` aside).
+    ``progress(k)`` is told of every ``k`` polygons drawn. The result depends on the
+    heuristic, the budget, the seed and ``max_vertices`` only (``seconds`` aside; and which
+    polygons run out of time, for a function that does). A function of one's own that tries
+    to end the program raises :class:`~geometry.user_heuristics.UserHeuristicExit`.
     """
     start = time.perf_counter()
-    tried = 0
+    tried = skipped = 0
     sizes: dict[int, int] = {}
     for _t, n, points in candidates(budget, seed, max_vertices):
         if progress is not None:
             progress(1)
         if points is None:
+            skipped += 1
             continue
         tried += 1
         sizes[n] = sizes.get(n, 0) + 1
         found = fails(points, heuristic)
         if found is not None:
-            count = [0]
-            polygon, claim, verdict = shrink(points, heuristic, count)
+            shrunk = shrink(points, heuristic, found)
+            failure = shrunk.failure
             return Hunt(_name(heuristic), True, tried, max_vertices,
-                        time.perf_counter() - start, polygon, claim.pair, verdict,
-                        first=found[0].n, checks=count[0], sizes=sizes)
+                        time.perf_counter() - start, failure.polygon,
+                        failure.claim.pair if failure.claim is not None else None,
+                        failure.verdict, first=found.polygon.n, checks=shrunk.checks,
+                        sizes=sizes, skipped=skipped,
+                        error=str(failure.error) if failure.error is not None else None,
+                        stopped=shrunk.stopped)
     return Hunt(_name(heuristic), False, tried, max_vertices, time.perf_counter() - start,
-                sizes=sizes)
+                sizes=sizes, skipped=skipped)
 
 
 # --- in words --------------------------------------------------------------------------------------------
@@ -420,13 +508,34 @@ def reason(result: Hunt) -> str:
 
 def verdict_line(result: Hunt) -> str:
     """``scaling is wrong: on this 5-vertex polygon it claims BD, which crosses edge E–A at
-    (2.86, 6.36)``, or ``no counterexample in 2,000 polygons of up to 8 vertices in 1.2 s``."""
+    (2.86, 6.36)``; ``mine.py:f fails on this 4-vertex polygon: f raised …`` for an error of
+    a function of one's own; or ``no counterexample in 2,000 polygons of up to 8 vertices in
+    1.2 s`` (and how many draws of the budget made no polygon, if any did)."""
     if not result.found:
-        return (f"no counterexample in {result.tried:,} polygons of up to "
-                f"{result.max_vertices} vertices in {result.seconds:.1f} s")
+        polygons = "1 polygon" if result.tried == 1 else f"{result.tried:,} polygons"
+        return (f"no counterexample in {polygons} of up to {result.max_vertices} vertices in "
+                f"{result.seconds:.1f} s{skipped_note(result)}")
     assert result.polygon is not None
+    if result.error is not None:
+        return (f"{result.heuristic} fails on this {result.polygon.n}-vertex polygon: "
+                f"{result.error}")
     return (f"{result.heuristic} is wrong: on this {result.polygon.n}-vertex polygon it claims "
             f"{result.claim_name}, which {reason(result)}")
+
+
+def skipped_note(result: Hunt) -> str:
+    """Why fewer polygons were tried than the budget allowed, if they were: `` (78 of the 1,000
+    draws made no simple polygon)``; empty otherwise.
+
+    >>> skipped_note(Hunt("gravity", False, 922, 20, 1.0, skipped=78))
+    ' (78 of the 1,000 draws made no simple polygon)'
+    >>> verdict_line(Hunt("gravity", False, 1, 8, 0.01))
+    'no counterexample in 1 polygon of up to 8 vertices in 0.0 s'
+    """
+    if not result.skipped:
+        return ""
+    drawn = result.tried + result.skipped
+    return f" ({result.skipped:,} of the {drawn:,} draws made no simple polygon)"
 
 
 def polygon_lines(polygon: Polygon) -> list[str]:

@@ -38,6 +38,7 @@ __all__ = [
     "from_docstring",
     "from_json",
     "lit_row",
+    "named",
     "to_json",
 ]
 
@@ -85,6 +86,41 @@ def lit_row(pseudocode: Sequence[Step], running: Sequence[str], lit: int | None)
             later = [k for k in rows if lit is not None and k >= lit]
             return later[0] if later else rows[0]
     return None
+
+
+# --- the picture's own vertices -----------------------------------------------------------------
+
+#: A name in a row: a run of capitals (``B``, ``AC``, ``ABC``).
+_NAME = re.compile(r"\b[A-Z]+\b")
+
+
+def named(pseudocode: Sequence[Step], vertices: dict[str, str],
+          labels: Iterable[str]) -> tuple[Step, ...]:
+    """The rows speaking of the picture's own vertices (issue 22): where a placeholder
+    (``D``) is also a label on screen (``labels``) and the run gave it another vertex
+    (``vertices``: placeholder → label, ``{"D": "E"}``), the rows name that vertex instead
+    — the screen's D is not the rule's D. Every name made only of placeholders is rewritten
+    letter by letter, all at once (``BD`` → ``BE``); other capitals (``P``, ``T``) stay.
+
+    >>> rows = (Step("else: D = the candidate closest to B", ("pick",)),
+    ...         Step("  BD is an inner diagonal", ("claim",)))
+    >>> [s.text for s in named(rows, {"B": "B", "D": "E"}, "ABCDE")]
+    ['else: E = the candidate closest to B', '  BE is an inner diagonal']
+    >>> [s.text for s in named(rows, {"B": "D", "D": "B"}, "ABCDE")]
+    ['else: B = the candidate closest to D', '  DB is an inner diagonal']
+    >>> named(rows, {"D": "E"}, "ABC") == rows  # no D on screen: the rule's D is no one else
+    True
+    """
+    shown = set(labels)
+    swap = {k: v for k, v in vertices.items() if k in shown and v != k}
+    if not swap:
+        return tuple(pseudocode)
+
+    def rename(found: re.Match) -> str:
+        word = found.group()
+        return "".join(swap.get(c, c) for c in word) if set(word) <= set(vertices) else word
+
+    return tuple(Step(_NAME.sub(rename, step.text), step.calls) for step in pseudocode)
 
 
 # --- a heuristic of one's own: pseudocode in its docstring ------------------------------------

@@ -24,6 +24,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 
+from story.refs import arg, ref, ref_list, result_ref
 from tracing import Event
 
 Point = Sequence[float]
@@ -120,14 +121,6 @@ def rising(where: Mapping[str, Point], order: Sequence[str], shore: tuple[str, s
 # --- from the log --------------------------------------------------------------------------------
 
 
-def _ref(value) -> str:
-    return value["ref"]
-
-
-def _refs(values) -> list[str]:
-    return [v["ref"] for v in values]
-
-
 def reach_of(call: Event, ret: Event, where: Mapping[str, Point], order: Sequence[str],
              state_of: Callable[[str], dict]) -> Reach | None:
     """The reach of a heuristic's step from its call and return, or None for another call.
@@ -135,18 +128,18 @@ def reach_of(call: Event, ret: Event, where: Mapping[str, Point], order: Sequenc
     ``where`` maps labels to points (``order``: the labels counter-clockwise), and
     ``state_of(key)`` gives the logged state of an object (the triangle T).
     """
-    args, pick = call.args or {}, _ref(ret.result) if isinstance(ret.result, dict) else None
+    pick = result_ref(ret) if isinstance(ret.result, dict) else None
     if pick is None:
         return None
     if call.name == "nearest_to":
-        return spreading(where, order, _ref(args["b"]), _refs(args["candidates"]), pick)
+        return spreading(where, order, ref(call, "b"), ref_list(call, "candidates"), pick)
     if call.name == "first_hit_rotating":
-        return turning(where, order, _ref(args["centre"]), _ref(args["start"]),
-                       _refs(args["candidates"]), pick)
+        return turning(where, order, ref(call, "centre"), ref(call, "start"),
+                       ref_list(call, "candidates"), pick)
     if call.name == "first_hit_sweeping":
-        return sweeping(where, order, _ref(args["b"]), args["direction"],
-                        _refs(args["candidates"]), pick)
+        return sweeping(where, order, ref(call, "b"), arg(call, "direction"),
+                        ref_list(call, "candidates"), pick)
     if call.name == "last_dry":
-        a, b, c = state_of(_ref(args["t"]))["labels"]
-        return rising(where, order, (a, c), b, _refs(args["candidates"]), pick)
+        a, b, c = state_of(ref(call, "t"))["labels"]
+        return rising(where, order, (a, c), b, ref_list(call, "candidates"), pick)
     return None

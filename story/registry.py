@@ -49,20 +49,83 @@ __all__ = [
     "HEURISTIC",
     "KINDS",
     "REGISTRY",
+    "SPOKEN",
     "TRIANGULATION",
     "Entry",
+    "Spoken",
     "correct",
     "entry",
     "heuristics",
+    "introduced",
     "names",
     "pseudocode",
     "shown",
+    "spoken",
     "triangulations",
     "wrong",
 ]
 
 HEURISTIC, TRIANGULATION = "heuristic", "triangulation"
 KINDS = (HEURISTIC, TRIANGULATION)
+
+
+@dataclass(frozen=True)
+class Spoken:
+    """What a viewer hears and reads for an algorithm: its ``name`` as the thesis says it
+    (ch. 2: "Scaling", "Correct Translation"; the command line's slugs never reach the
+    screen), and its ``picture``, the metaphor said with the name the first time (None: the
+    name says it all)."""
+
+    name: str
+    picture: str | None = None
+
+    @property
+    def introduced(self) -> str:
+        """The name with its picture, for its first appearance: ``Scaling (spilled water)``."""
+        return f"{self.name} ({self.picture})" if self.picture else self.name
+
+
+#: The one table of spoken names: every title, caption and card that names an algorithm
+#: takes its words from here (thesis ch. 2; the pictures after Forišek and Steinová).
+SPOKEN: Mapping[str, Spoken] = MappingProxyType({
+    "scaling": Spoken("Scaling", "spilled water"),
+    "rotation": Spoken("Rotation", "the clock hand"),
+    "rotation-ccw": Spoken("Rotation the other way", "the clock hand set to C"),
+    "translation": Spoken("Translation", "the sweeping line"),
+    "translation-correct": Spoken("Correct Translation", "the line parallel to AC"),
+    "scaling-correct": Spoken("Correct Scaling", "water rising from AC"),
+    "rotation-correct": Spoken("Correct Rotation", "the clock at C"),
+    "scaling-walled": Spoken("Scaling with walls", "water that respects the edges"),
+    "gravity": Spoken("Gravity", "the ball on a rubber band"),
+    "divide-and-conquer": Spoken("divide and conquer", "cut along inner diagonals"),
+    "ear-clipping-naive": Spoken("ear clipping", "slicing fruit"),
+    "ear-clipping": Spoken("faster ear clipping", "slicing fruit"),
+    "prune-and-search": Spoken("prune and search", "slicing fruit"),
+    "monotone": Spoken("monotone partition", "a line swept down"),
+    "cdt": Spoken("constrained Delaunay"),
+})
+
+
+def spoken(name: str, *, first: bool = False, start: bool = False) -> str:
+    """How the screen names ``name``: the thesis's word (with its picture when ``first``,
+    capitalised when it ``start``s a sentence). A name not in the table (a heuristic of
+    one's own) is said as it is.
+
+    >>> spoken("scaling-correct"), spoken("scaling", first=True)
+    ('Correct Scaling', 'Scaling (spilled water)')
+    >>> spoken("ear-clipping-naive", start=True), spoken("biggest_angle")
+    ('Ear clipping', 'biggest_angle')
+    """
+    known = SPOKEN.get(name)
+    if known is None:
+        return name
+    said = known.introduced if first else known.name
+    return said[:1].upper() + said[1:] if start else said
+
+
+def introduced(name: str) -> str:
+    """``name`` said for the first time, with its picture: ``spoken(name, first=True)``."""
+    return spoken(name, first=True)
 
 
 @dataclass(frozen=True)
@@ -131,12 +194,17 @@ class Entry:
         return self.kind == HEURISTIC
 
 
-def _heuristic(name: str, *, correct: bool, metaphor: str, polygon: str, title: str,
+def _title(name: str, idea: str) -> str:
+    """A title: the spoken name (:data:`SPOKEN`), then its idea."""
+    return f"{spoken(name, start=True)}: {idea}"
+
+
+def _heuristic(name: str, *, correct: bool, metaphor: str, polygon: str, idea: str,
                pseudocode: tuple[Step, ...], shown: Callable | None = None,
                correction: str | None = None) -> Entry:
     source = shown or HEURISTICS[name]
     return Entry(name, HEURISTIC, HEURISTICS[name], correct, metaphor, _traced_name(source),
-                 source, polygon, title, pseudocode, correction)
+                 source, polygon, _title(name, idea), pseudocode, correction)
 
 
 def _frame(rule: str, *calls: str, inside: tuple[Step, ...] = ()) -> tuple[Step, ...]:
@@ -170,12 +238,12 @@ def _runner(name: str) -> Callable[..., Triangulation]:
     return run
 
 
-def _triangulation(name: str, *, metaphor: str | None, title: str,
+def _triangulation(name: str, *, metaphor: str | None, idea: str,
                    pseudocode: tuple[Step, ...] = (), shown: Callable | None = None,
                    polygon: str = "lecture", show_source: bool = True) -> Entry:
     source = shown or RUNNERS[name]
     return Entry(name, TRIANGULATION, _runner(name), True, metaphor, _traced_name(source),
-                 source if show_source else None, polygon, title, pseudocode)
+                 source if show_source else None, polygon, _title(name, idea), pseudocode)
 
 
 #: The traced names of the heuristics (divide and conquer calls one of them on each piece).
@@ -183,53 +251,54 @@ _HEURISTICS_TRACED = tuple(_traced_name(f) for f in HEURISTICS.values())
 
 #: The rows of gravity (thesis ch. 2.1.2, after Forišek and Steinová), also inside the others.
 _GRAVITY = (
-    Step("V = a reflex vertex (the first after B)", ("reflex_vertex", "straight_vertex")),
+    Step("B = the left-most vertex"),
+    Step("V = the first reflex vertex after B", ("reflex_vertex", "straight_vertex")),
     Step("turn P: V's sides point up, no edge level", ("gravity_direction",)),
     Step("drop a ball on a band at V: it hits a side", ("drop_ball",)),
     Step("it slides down the side to a vertex X", ("slide_to_vertex",)),
     Step("Y = the first vertex the band snags", ("band_snag",)),
     Step("claim VY, or VX if the band stays straight", ("claim",)),
-    Step("no reflex vertex: P is convex, claim AC", ("leftmost_vertex", "triangle_at", "claim")),
+    Step("no reflex or straight vertex: claim AC", ("leftmost_vertex", "triangle_at", "claim")),
 )
 
 
 _ENTRIES = (
     # --- heuristics (thesis ch. 2.1): the wrong ones, then the corrections -------------------
     _heuristic("scaling", correct=False, metaphor="water", polygon="counterexample",
-               title="Scaling: water spilled at B wets the nearest candidate",
+               idea="water spilled at B wets the nearest candidate",
                pseudocode=_frame("the candidate closest to B", "nearest_to"),
                correction="scaling-correct"),
     _heuristic("rotation", correct=False, metaphor="clock", polygon="counterexample",
-               title="Rotation: a clock at B, set to A, stops at the first candidate",
+               idea="a clock at B, set to A, stops at the first candidate",
                pseudocode=_frame("first hit of a hand at B set to A", "first_hit_rotating"),
                correction="rotation-correct"),
     _heuristic("rotation-ccw", correct=False, metaphor="clock", polygon="counterexample-twin",
-               title="Rotation the other way: the clock at B set to C",
+               idea="the clock at B set to C",
                pseudocode=_frame("first hit of a hand at B set to C", "first_hit_rotating"),
                correction="rotation-correct"),
     _heuristic("translation", correct=False, metaphor="sweep", polygon="counterexample",
-               title="Translation: a vertical line swept from B",
+               idea="a vertical line swept from B",
                pseudocode=_frame("the left-most candidate", "first_hit_sweeping"),
                correction="translation-correct"),
     _heuristic("translation-correct", correct=True, metaphor="sweep", polygon="counterexample",
-               title="Correct translation: a line parallel to AC swept from B",
+               idea="a line parallel to AC swept from B",
                pseudocode=_frame("first hit of a line ∥ AC from B", "first_hit_sweeping")),
     _heuristic("scaling-correct", correct=True, metaphor="water", polygon="counterexample",
-               title="Correct scaling: water rises from AC; the last dry candidate",
+               idea="water rises from AC; the last dry candidate",
                pseudocode=_frame("the candidate farthest from AC", "last_dry")),
     _heuristic("rotation-correct", correct=True, metaphor="clock", polygon="counterexample",
-               title="Correct rotation: the clock moves to C, set to B",
+               idea="the clock moves to C, set to B",
                pseudocode=_frame("first hit of a hand at C set to B", "first_hit_rotating")),
     _heuristic("scaling-walled", correct=True, metaphor="water", polygon="counterexample",
-               title="Scaling with walls: water that cannot pass the edges",
+               idea="water that cannot pass the edges",
                pseudocode=_frame("the nearest vertex that B sees", "nearest_visible",
                                  inside=(Step("  B sees V if BV runs inside P", ("sees",)),))),
     _heuristic("gravity", correct=True, metaphor="gravity", polygon="gravity-snag",
-               title="Gravity: a ball on a rubber band finds a diagonal", shown=gravity_at,
+               idea="a ball on a rubber band finds a diagonal", shown=gravity_at,
                pseudocode=_GRAVITY),
     # --- triangulations (thesis ch. 2.2-2.4) -----------------------------------------------------
     _triangulation("divide-and-conquer", metaphor="pieces", shown=divide_and_conquer,
-                   title="Divide and conquer (Lennes): split along inner diagonals",
+                   idea="Lennes splits along inner diagonals",
                    pseudocode=(
                        Step("if P is a triangle, we are done"),
                        Step("else find an inner diagonal d of P", _HEURISTICS_TRACED),
@@ -238,16 +307,16 @@ _ENTRIES = (
                        Step("their union is the triangulation of P"),
                    )),
     _triangulation("ear-clipping-naive", metaphor="fruit",
-                   title="Ear clipping (Meisters): slice the first ear found",
+                   idea="Meisters slices the first ear found",
                    pseudocode=(
                        Step("while P has more than 3 vertices:"),
                        Step("  for each vertex V, from the first:"),
-                       Step("    is V an ear? (V−1 V V+1 is empty)", ("is_ear",)),
+                       Step("    is V an ear? (convex, V−1 V V+1 empty)", ("is_ear",)),
                        Step("    yes: slice V−1 V V+1 off, start again", ("clip_ear",)),
                        Step("the triangle left is the last slice", ("ear-clipping-naive",)),
                    )),
     _triangulation("ear-clipping", metaphor="fruit",
-                   title="Ear clipping with ear status kept up to date",
+                   idea="only the neighbours of a slice change",
                    pseudocode=(
                        Step("ear status of every vertex: unknown"),
                        Step("walk round P while it has > 3 vertices:"),
@@ -258,7 +327,7 @@ _ENTRIES = (
                        Step("the triangle left is the last slice", ("ear-clipping",)),
                    )),
     _triangulation("prune-and-search", metaphor="fruit",
-                   title="Prune and search: the good sub-polygons shrink",
+                   idea="the good sub-polygons shrink",
                    pseudocode=(
                        Step("G = P, good: it has no cutting edge"),
                        Step("while P is more than a triangle:"),
@@ -268,20 +337,23 @@ _ENTRIES = (
                        Step("    (V convex: the sweep; else gravity)", ("sweep_at", "gravity_at")),
                        Step("    G = the good part beyond V–W", ("good_subpolygon",)),
                    )),
-    _triangulation("monotone", metaphor="monotone", title="Monotone partition, then the stack",
+    _triangulation("monotone", metaphor="monotone", idea="y-monotone pieces, then the stack",
                    pseudocode=(
                        Step("sweep a line down P, vertex by vertex:", ("make_monotone",)),
                        Step("  v is start, end, split, merge or regular", ("classify_vertex",)),
-                       Step("  start, end, regular: update the helpers",
-                            ("handle_start", "handle_end", "handle_regular")),
-                       Step("  split: join v to the helper on its left", ("handle_split",)),
-                       Step("  merge: v helps the edge on its left", ("handle_merge",)),
+                       Step("  start or end: an edge begins or ends at v",
+                            ("handle_start", "handle_end")),
+                       Step("  regular: v helps its edge or the left one",
+                            ("handle_regular",)),
+                       Step("  split: v helps the edge on its left", ("handle_split",)),
+                       Step("  merge: v ends an edge, helps the left one", ("handle_merge",)),
+                       Step("  split, or v replaces a merge helper:"),
                        Step("    add the diagonal v–helper", ("add_diagonal",)),
                        Step("cut P along them into y-monotone pieces", ("monotone_pieces",)),
                        Step("triangulate each piece with a stack",
                             ("triangulate_monotone_piece",)),
                    )),
-    _triangulation("cdt", metaphor=None, title="Constrained Delaunay (shapely)",
+    _triangulation("cdt", metaphor=None, idea="the reference, by shapely",
                    show_source=False),
 )
 
@@ -300,7 +372,7 @@ def entry(name: str) -> Entry:
     Examples
     --------
     >>> entry("cdt").title
-    'Constrained Delaunay (shapely)'
+    'Constrained Delaunay: the reference, by shapely'
     >>> entry("magic")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
@@ -388,8 +460,8 @@ def pseudocode(name: str) -> tuple[Step, ...]:
     """The pseudocode of ``name``; none for any other name (a heuristic of one's own carries
     its own in its log, if its docstring has it).
 
-    >>> pseudocode("gravity")[0].text, pseudocode("cdt"), pseudocode("biggest_angle")
-    ('V = a reflex vertex (the first after B)', (), ())
+    >>> pseudocode("gravity")[1].text, pseudocode("cdt"), pseudocode("biggest_angle")
+    ('V = the first reflex vertex after B', (), ())
     """
     known = REGISTRY.get(name)
     return known.pseudocode if known is not None else ()

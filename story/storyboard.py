@@ -21,7 +21,7 @@ No manim here.
 >>> [b.action for b in storyboard(log)]  # the frame only: the water's step needs its reading
 ['polygon', 'pick', 'triangle', 'candidates', 'claim', 'verdict']
 >>> storyboard(log)[-1].caption
-'✗ BD is not an inner diagonal: B–D crosses edge E–A at (2.86087, 6.36087)'
+'✗ BD is not an inner diagonal: BD crosses edge E–A'
 """
 
 from __future__ import annotations
@@ -45,11 +45,13 @@ from story.beats import (
     ShowTriangle,
     Verdict,
 )
-from story.pseudocode import Step, from_json, lit_row
+from story.pseudocode import Step, from_json, lit_row, named
 from story.reach import Reach, reach_of
 from story.reading import summarised
+from story.refs import ref, result_ref, result_refs
 from story.registry import heuristics, pseudocode
 from story.roles import ROLES
+from story.words import number, said, why_not_inner
 from tracing import Event, Log
 
 #: A reading: the beats of one returned call (``walk``, its call event, its return event).
@@ -93,6 +95,8 @@ def show(value) -> str:
 
     >>> show({"ref": "P(ABCDE)"}), show([{"ref": "D"}, {"ref": "E"}]), show(2.5), show(None)
     ('P', '[D, E]', '2.5', '—')
+    >>> show(1.41421), show(12.0)  # no number on screen has more than one decimal
+    ('1.4', '12')
     """
     if isinstance(value, dict) and "ref" in value:
         key = value["ref"]
@@ -100,7 +104,7 @@ def show(value) -> str:
     if isinstance(value, list):
         return "[" + ", ".join(show(v) for v in value) + "]"
     if isinstance(value, float):
-        return f"{value:.3g}"
+        return number(value)
     if value is None:
         return "—"
     if isinstance(value, dict):
@@ -165,6 +169,11 @@ class Walk:
         # ``heuristic_function``) is a heuristic too: its claims are judged on its piece
         self._heuristics = (frozenset(heuristics()) | _HEURISTIC_CALLS
                             | ({heuristic_function} if heuristic_function else set()))
+
+    #: the log's keys a call's argument and a function's result refer to (:mod:`story.refs`)
+    ref = staticmethod(ref)
+    result_ref = staticmethod(result_ref)
+    result_refs = staticmethod(result_refs)
 
     def memo(self, name: str, make: Callable[[], Any]) -> Any:
         """A reading's own state for the whole walk (made on first use)."""
@@ -291,6 +300,57 @@ def pseudocode_of(log: Log) -> tuple[Step, ...]:
     return rows
 
 
+#: The traced calls whose result is a vertex the pseudocode names by a placeholder: the
+#: frame's B and D (thesis ch. 2.1), gravity's V, X and Y.
+_PLACEHOLDERS = MappingProxyType({"leftmost_vertex": "B", "pick": "D", "reflex_vertex": "V",
+                                  "slide_to_vertex": "X", "band_snag": "Y"})
+
+
+def run_vertices(log: Log) -> dict[str, str]:
+    """Each placeholder of the pseudocode → the vertex the run gave it (``{"B": "B", "A":
+    "A", "C": "C", "D": "E"}``): A, B, C from T as it enters, the others from the calls of
+    :data:`_PLACEHOLDERS`, D also from a claim BD. A placeholder given two different vertices (divide and conquer
+    runs the frame on every piece) is left out: no one vertex is it.
+
+    >>> import tracing
+    >>> from geometry.diagonals import find_diagonal
+    >>> from geometry.polygon import Polygon
+    >>> from geometry.samples import make_sample
+    >>> with tracing.record(algorithm="rotation-ccw") as log:
+    ...     _ = find_diagonal(Polygon.from_points(make_sample("counterexample-twin")),
+    ...                       "rotation-ccw")
+    >>> run_vertices(log)
+    {'A': 'A', 'B': 'B', 'C': 'C', 'D': 'E'}
+    """
+    given: dict[str, set[str]] = {}
+    claims: list[list[str]] = []
+    for e in log.events:
+        if e.kind == "enter" and is_frame_key(e.target) and not is_polygon_key(e.target):
+            for placeholder, label in zip("ABC", e.state["labels"], strict=False):
+                given.setdefault(placeholder, set()).add(label)
+        elif (e.kind == "return" and e.name in _PLACEHOLDERS and isinstance(e.result, dict)
+              and "ref" in e.result):
+            given.setdefault(_PLACEHOLDERS[e.name], set()).add(e.result["ref"])
+        elif e.kind == "call" and e.name == "claim":
+            claims.append([k for v in (e.args or {}).values() for k in refs(v)])
+    found = {k: next(iter(v)) for k, v in given.items() if len(v) == 1}
+    # a claim BD names D too (a heuristic of one's own picks D by a step of its own)
+    for ends in claims:
+        if len(ends) == 2 and ends[0] == found.get("B") and ends[1] not in (found.get("A"),
+                                                                            found.get("C")):
+            given.setdefault("D", set()).add(ends[1])
+    return {k: next(iter(v)) for k, v in sorted(given.items()) if len(v) == 1}
+
+
+def spoken_pseudocode(log: Log) -> tuple[Step, ...]:
+    """The pseudocode the panel shows for a log: :func:`pseudocode_of`, its placeholders
+    naming the run's own vertices where the picture has a vertex of that name
+    (:func:`story.pseudocode.named`)."""
+    labels = next((e.state["labels"] for e in log.events
+                   if e.kind == "enter" and is_polygon_key(e.target)), ())
+    return named(pseudocode_of(log), run_vertices(log), labels)
+
+
 def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = None,
                readings: Mapping[str, Reading] = MappingProxyType({})) -> list[Beat]:
     """The beats of a log, in order.
@@ -321,14 +381,15 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
                             labels=e.state["labels"], holes=e.state.get("holes", []))
         return
     if e.kind == "call" and "polygon" in (e.args or {}) and walk.is_heuristic(e.name):
-        walk.heuristic_polygon.append(e.args["polygon"]["ref"])
+        walk.heuristic_polygon.append(ref(e, "polygon"))
         return
     if e.kind == "return" and walk.is_heuristic(e.name) and walk.heuristic_polygon:
         walk.heuristic_polygon.pop()
         return
     if e.kind == "enter" and is_frame_key(e.target):
         labels = "".join(e.state["labels"])
-        yield walk.beat(ShowTriangle, f"T = {labels}: B and its two neighbours", e,
+        b = e.state["labels"][1]  # T = triangle_at(B) is (A, B, C): its tip is the middle one
+        yield walk.beat(ShowTriangle, f"T = {labels}: {b} and its two neighbours", e,
                         points=e.state["points"], labels=e.state["labels"])
         return
     if e.kind == "return":
@@ -372,7 +433,7 @@ def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 
 
 def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    key = ret.result["ref"]
+    key = result_ref(ret)
     walk.claimed.add(key)
     state = walk.live.get(key) or walk.entered_after(ret, key)
     u, v = state["labels"]
@@ -386,8 +447,9 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         return
     i, j = polygon.labels.index(u), polygon.labels.index(v)
     verdict = is_inner_diagonal(polygon, i, j)
+    # the screen names the crossed edge; verdict.why (with coordinates) is the command line's
     caption = f"✓ {name} is an inner diagonal" if verdict else (
-        f"✗ {name} is not an inner diagonal: {verdict.why}")
+        f"✗ {name} is not an inner diagonal: {why_not_inner(verdict, polygon.labels, name)}")
     roles = {u: "result", v: "result"} if verdict else {u: "rejected", v: "rejected"}
     yield walk.beat(Verdict, caption, call, roles=roles, ok=verdict.ok, labels=[u, v],
                     why=verdict.why, code=verdict.code,
@@ -428,9 +490,15 @@ def read_step(kind: type[Beat], caption: str,
     return read
 
 
+def _read_nothing(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """A step the frame shows otherwise: ``triangle_at``'s T is drawn as it enters the log,
+    so a heuristic of one's own that calls it gets no second caption naming the call."""
+    return iter(())
+
+
 FRAME_READS: Mapping[str, Reading] = MappingProxyType({
-    "leftmost_vertex": read_pick(
-        "{result} is the left-most vertex (lowest on ties): convex, it plays B"),
+    "leftmost_vertex": read_pick("{result} is the left-most vertex (lowest on ties): convex"),
+    "triangle_at": _read_nothing,
     "candidates_in_triangle": _read_candidates,
     "claim": _read_claim,
 })
@@ -440,9 +508,15 @@ FRAME_READS: Mapping[str, Reading] = MappingProxyType({
 
 
 def _call_caption(call: Event, ret: Event) -> str:
+    """A step of one's own in words (its call line shows the code): ``Distance to c for C,
+    E: 1.4``."""
+    name = said(call.name)
+    name = name[:1].upper() + name[1:]
+    given = [show(v) for v in (call.args or {}).values()]
+    step = f"{name} for {', '.join(given)}" if given else name
     if isinstance(ret.result, dict) and "raised" in ret.result:
-        return f"{call.name} raised {ret.result['raised']}"
-    return f"{call.name} is done" if ret.result is None else f"{call.name} gives {show(ret.result)}"
+        return f"{step}: it raised {ret.result['raised']}"
+    return f"{step}: done" if ret.result is None else f"{step}: {show(ret.result)}"
 
 
 def _shape_beats(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[Beat]:

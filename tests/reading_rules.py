@@ -5,6 +5,7 @@ every cue of the ``.srt`` at least 0.83 s and at most 17 characters per second
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from story.reading import readable
@@ -97,3 +98,69 @@ def crossfaded_subtitles(data: dict) -> list[str]:
         if gone and come:
             found.append(f"play {k}: {gone[0]!r} → {come[0]!r}")
     return found
+
+
+# --- issue 22 item 10: the words ------------------------------------------------------------------
+
+#: the command line's names that are no English word: every hyphenated registry name, and
+#: the lower-case names of the heuristics the thesis capitalises (``gravity`` and
+#: ``monotone`` are words a caption may use: "gravity points down", "y-monotone")
+_SLUG_WORDS = ("scaling", "rotation", "translation", "cdt")
+#: code on screen: an identifier with an underscore, a call, an arrow to a result, an index
+#: list, an elided dict, a Python truth value, the command's name
+_CODE = re.compile(r"\b[A-Za-z]\w*_\w+|\b[a-z]\w*\(|→|\[\s*\[?\s*-?\d|\{…\}|\b(?:True|False|None)\b"
+                   r"|\btrex\b")
+#: a number with more than one decimal
+_LONG_NUMBER = re.compile(r"\d\.\d\d")
+
+
+def _slug_pattern() -> re.Pattern:
+    from story.registry import names
+
+    slugs = sorted({n for n in names() if "-" in n} | set(_SLUG_WORDS), key=len, reverse=True)
+    return re.compile(r"(?<![\w-])(?:" + "|".join(map(re.escape, slugs)) + r")(?![\w-])")
+
+
+def _shown_texts(node: dict, skip: frozenset[str]) -> Iterator[str]:
+    """The drawn texts of a node and its parts, leaving out the subtrees named in ``skip``."""
+    if node.get("name") in skip:
+        return
+    if (node.get("text") or "").strip() and (node.get("fill_opacity") or 0) > 0:
+        yield node["text"]
+    for child in node.get("submobjects", ()):
+        yield from _shown_texts(child, skip)
+
+
+def _all_shown_texts(data: dict, skip: frozenset[str]) -> Iterator[str]:
+    def tops(anim: dict) -> Iterator[dict]:
+        for key in ("mobject", "target"):
+            if key in anim:
+                yield anim[key]
+        for child in anim.get("animations", ()):
+            yield from tops(child)
+
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for top in tops(anim):
+                yield from _shown_texts(top, skip)
+    for mobject in data.get("final", ()):
+        yield from _shown_texts(mobject, skip)
+    for cue in data.get("cues", ()):
+        yield cue["text"]
+    for play in data["plays"]:
+        if play.get("subcaption"):
+            yield play["subcaption"]
+
+
+def unspoken_words(data: dict, *, call_line: bool = False) -> list[str]:
+    """Issue 22 item 10: the texts on screen (and the cues) that use the command line's
+    slugs, show code, or a number with two decimals, as ``"slug: 'scaling on …'"``.
+    ``call_line``: the panel's call line is allowed (``trex render`` and the player keep it,
+    a programmer wants the real call) and not read."""
+    skip = frozenset({"panel:call"} if call_line else ())
+    slug, found = _slug_pattern(), {}
+    for text in _all_shown_texts(data, skip):
+        for kind, pattern in (("slug", slug), ("code", _CODE), ("number", _LONG_NUMBER)):
+            if pattern.search(text):
+                found.setdefault(f"{kind}: {text!r}", None)
+    return sorted(found)

@@ -25,7 +25,7 @@ def run(*args):
 def test_diagonal_json_in_input_order():
     code, out, _ = run("diagonal", "counterexample", "counterexample-twin", "--heuristic",
                        "scaling", "--json")
-    assert code == 0
+    assert code == 1  # a finding: the claims are not inner diagonals
     first, second = (json.loads(line) for line in out.splitlines())
     assert first["polygon"] == "counterexample"
     assert first["vertices"] == [list(map(float, p)) for p in CE]
@@ -62,7 +62,7 @@ def test_triangulate_json_is_valid_in_input_order():
 
 def test_triangulate_stops_with_a_wrong_heuristic():
     code, out, _ = run("triangulate", "counterexample", "--heuristic", "translation", "--json")
-    assert code == 0
+    assert code == 1  # a finding: it stopped early
     record = json.loads(out)
     assert record["valid"] is False and record["triangles"] == []
     assert record["why"].startswith("B–D crosses edge E–A")
@@ -70,12 +70,65 @@ def test_triangulate_stops_with_a_wrong_heuristic():
 
 def test_human_lines():
     code, out, _ = run("triangulate", "lecture", "counterexample", "--heuristic", "rotation")
-    assert code == 0
+    assert code == 1  # one of them stopped
     assert out.splitlines() == [
         "lecture: divide-and-conquer: 11 triangles, valid",
         "counterexample: divide-and-conquer: stopped after 0 triangles: "
         "B–D crosses edge E–A at (2.86087, 6.36087)",
     ]
+
+
+@pytest.mark.parametrize(("args", "code"), [
+    (["diagonal", "lecture", "--heuristic", "gravity"], 0),
+    (["diagonal", "counterexample", "--heuristic", "scaling"], 1),
+    (["diagonal", "lecture", "counterexample", "--heuristic", "scaling"], 1),
+    (["diagonal", "counterexample", "nosuch.json", "--heuristic", "scaling"], 2),
+    (["triangulate", "lecture", "--heuristic", "rotation-correct"], 0),
+    (["triangulate", "counterexample", "--heuristic", "rotation"], 1),
+    (["triangulate", "counterexample", "tests/data/bad/bow-tie.json", "--heuristic",
+      "rotation"], 2),
+])
+def test_exit_status_says_what_was_found(args, code):
+    """Issue 24 item 9: 0 fine, 1 a finding (a claim that is not an inner diagonal, a stopped
+    triangulation), 2 bad input (outweighing a finding)."""
+    assert run(*args)[0] == code
+
+
+def test_one_triangle_is_said_in_the_singular():
+    code, out, _ = run("triangulate", "triangle", "square", "--algorithm", "ear-clipping")
+    assert code == 0
+    assert out.splitlines() == ["triangle: ear-clipping: 1 triangle, valid",
+                                "square: ear-clipping: 2 triangles, valid"]
+
+
+@pytest.mark.parametrize("args", [
+    ["triangulate", "lecture", "--algorithm", "ear-clipping", "--heuristic", "rotation"],
+    ["triangulate", "lecture", "--algorithm", "monotone", "--heuristic", "gravity"],
+    ["log", "ear-clipping", "lecture", "--heuristic", "rotation", "-o", "/tmp/never.json"],
+])
+def test_a_heuristic_for_an_algorithm_that_takes_none_is_refused(args):
+    """Issue 24 item 9: it was silently ignored; refused as trex render refuses it."""
+    code, out, err = run(*args)
+    algorithm = args[args.index("--algorithm") + 1] if "--algorithm" in args else args[1]
+    assert code == 2 and out == ""
+    assert err == (f"error: --heuristic: {algorithm} takes no heuristic (only "
+                   "divide-and-conquer does)\n")
+
+
+@pytest.mark.parametrize(("args", "line"), [
+    (["diagonal", "lecture", "--heuristic", "gravty"],
+     "error: unknown heuristic 'gravty'; did you mean 'gravity'? (try 'main diagonal --help')"),
+    (["hunt", "magic"], "error: unknown heuristic 'magic' (try 'main hunt --help')"),
+    (["triangulate", "lecture", "--algorithm", "ear"],
+     "error: unknown algorithm 'ear'; did you mean one of ear-clipping-naive, ear-clipping? "
+     "(try 'main triangulate --help')"),
+    (["diagonal", "lecture", "--heuristic", "nope.py:f"], "error: nope.py: no such file"),
+])
+def test_a_bad_heuristic_argument_is_one_short_line(args, line):
+    """Issue 24 item 12: no 150-character 'Invalid value for '[scaling|rotation|…]'' first."""
+    code, out, err = run(*args)
+    assert code == 2 and out == "" and err == line + "\n"
+    assert "Invalid value" not in err
 
 
 def test_log_round_trips_and_is_deterministic(tmp_path):

@@ -22,6 +22,7 @@ from geometry.polygon import Polygon
 from geometry.predicates import orient
 from geometry.samples import make_sample
 from geometry.triangulate import triangulate
+from story.refs import ref, result_refs
 from tests.strategies import generated_polygons
 
 EARCUT = Path(__file__).parent / "data" / "earcut"
@@ -90,7 +91,7 @@ def assert_valid(polygon: Polygon, result) -> None:
 
 def clipped_ears(log: tracing.Log) -> list[list[str]]:
     """The corners (labels) of every clip, in order, from the log."""
-    return [[ref["ref"] for ref in e.result] for e in log.find(kind="return", name="clip_ear")]
+    return [result_refs(e) for e in log.find(kind="return", name="clip_ear")]
 
 
 ALGORITHMS = {"ear-clipping-naive": ear_clipping_naive, "ear-clipping": ear_clipping}
@@ -121,13 +122,13 @@ def test_naive_tests_from_the_start_after_every_clip():
     expect_first = True
     for event in log.events:
         if event.kind == "call" and event.name == "is_ear":
-            i = left.index(p.label_of(event.args["v"]["ref"]))
+            i = left.index(p.label_of(ref(event, "v")))
             assert (i == 0) == expect_first
             expect_first = False
         elif event.kind == "return" and event.name == "is_ear":
             assert event.result == is_ear_by_definition(p.sub_polygon(left), i)
         elif event.kind == "return" and event.name == "clip_ear":
-            left.remove(p.label_of(event.result[1]["ref"]))
+            left.remove(p.label_of(result_refs(event)[1]))
             expect_first = True
     assert len(left) == 3
 
@@ -137,7 +138,7 @@ def test_incremental_retests_only_the_neighbours_of_a_clip():
     with tracing.record() as log:
         result = ear_clipping(p)
     assert_valid(p, result)
-    tests = [e.args["v"]["ref"] for e in log.find(kind="call", name="is_ear")]
+    tests = [ref(e, "v") for e in log.find(kind="call", name="is_ear")]
     clips = clipped_ears(log)
     # Every vertex is tested once before its first clip-related change; after that only the
     # two neighbours of each clip can be tested again.

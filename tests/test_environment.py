@@ -10,7 +10,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from geometry.user_heuristics import call_timeout, set_call_timeout
 from story.environment import (
+    CALL_TIMEOUT,
     LOG,
     POLYGON,
     environment_values,
@@ -172,8 +174,14 @@ def test_a_lecture_chapter_gets_the_polygon_as_an_argument(tmp_path, environment
 
     environment.setattr(chapter_pool.subprocess, "Popen", Process)
     one = chapters.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
-    chapter_pool._start(0, one, tmp_path, tmp_path, "l", "star")
+    before = call_timeout()
+    set_call_timeout(2.5)  # as the lecture's --call-timeout 2.5 sets it
+    try:
+        chapter_pool._start(0, one, tmp_path, tmp_path, "l", "star")
+    finally:
+        set_call_timeout(before)
     assert started["command"][2:4] == ["trex", "chapter"]
     given = chapter.make_context("chapter", started["command"][4:]).params
     assert (given["quality"], given["polygon"], given["panel"]) == ("l", "star", None)
-    assert "env" not in started["kwargs"]  # the child inherits ours, untouched
+    # the child inherits ours, untouched but for the time limit on functions of one's own
+    assert started["kwargs"]["env"] == {**os.environ, CALL_TIMEOUT: "2.5"}

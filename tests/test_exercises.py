@@ -11,8 +11,12 @@ from geometry.diagonals import find_diagonal
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.io import read_polygon
 from story.exercises import PICKABLE, answers_markdown, make_exercises
-from story.registry import wrong
+from story.registry import SPOKEN, wrong
+from story.words import why_not_inner
 from trex.cli import main
+
+#: the heuristics by their spoken names, as the questions say them (never the slugs)
+BY_SPOKEN = {said.name: name for name, said in SPOKEN.items()}
 
 ENTRY = re.compile(
     r"^## (\d+)\. (.+)\n\n"
@@ -45,22 +49,22 @@ def check_entry(number, question, spec, picture, answer, reason) -> str:
     t = triangle_at(p, leftmost_vertex(p))
     assert len(candidates_in_triangle(p, t)) >= 2, spec  # an exercise worth asking
     assert picture == f"exercise-{int(number):02d}.png"
-    if m := re.fullmatch(r"Which vertex does (\S+) pick\?", question):
-        heuristic = m[1]
+    if m := re.fullmatch(r"Which vertex does (.+) pick\?", question):
+        heuristic = BY_SPOKEN[m[1]]
         assert heuristic in PICKABLE
         claim = find_diagonal(p, heuristic)
         assert claim.u.label == "B" and answer == claim.v.label
         assert f" {answer} (" in reason  # the reason quotes the winner's number
         return "pick"
-    if m := re.fullmatch(r"Is the claim of (\S+) an inner diagonal\?", question):
-        heuristic = m[1]
+    if m := re.fullmatch(r"Is the claim of (.+) an inner diagonal\?", question):
+        heuristic = BY_SPOKEN[m[1]]
         assert heuristic in wrong()
         claim = find_diagonal(p, heuristic)
         verdict = is_inner_diagonal(p, *claim.pair)
         expected = "yes" if verdict else "no"
-        assert answer == f"{expected} ({heuristic} claims {claim.name})"
-        if not verdict:
-            assert reason == verdict.why
+        assert answer == f"{expected} ({m[1]} claims {claim.name})"
+        if not verdict:  # the crossed edge by name, no coordinates
+            assert reason == why_not_inner(verdict, p.labels, claim.name)
         return "claim"
     m = re.fullmatch(r"Which of these diagonals are inner: (.+)\?", question)
     assert m, question
@@ -72,7 +76,7 @@ def check_entry(number, question, spec, picture, answer, reason) -> str:
     for o in options:
         verdict = is_inner_diagonal(p, _index(p, o[0]), _index(p, o[1]))
         if not verdict:
-            assert verdict.why in reason
+            assert why_not_inner(verdict, p.labels, o) in reason
     return "inner"
 
 

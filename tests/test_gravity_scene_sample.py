@@ -23,8 +23,8 @@ def _beat(log, action: str):
 def test_gravity_snag_band_bends_at_a_vertex():
     polygon, diagonal, log = _run("gravity-snag")
     snag = _beat(log, "snag")
-    v, y, x = snag.states[-1]["points"]
-    assert snag.result == "H"
+    v, y, x = snag.band.corners
+    assert snag.snagged == "H" and snag.band.snagged
     assert orient(v, y, x) != 0  # really bent, not a vertex lying on the straight band
     assert diagonal.name == "CH"
     assert is_inner_diagonal(polygon, *diagonal.pair)
@@ -37,8 +37,8 @@ def test_gravity_snag_turns_the_picture_and_slides():
     _, _, log = _run("gravity-snag")
     turn = next(e.result for e in log.events if e.kind == "return" and e.name == "gravity_direction")
     assert 30 < abs(turn["turn_picture"]) < 150
-    hit, slid = _beat(log, "drop").hit, _beat(log, "slide").states
-    assert len(slid) == 1 and slid[0]["at"] != hit  # it hits an edge, then slides along it
+    hit, slid = _beat(log, "drop").drop.hit, _beat(log, "slide").slide
+    assert slid is not None and slid.to != hit  # it hits an edge, then slides along it
 
 
 def test_gravity_scene_defaults_to_the_snag():

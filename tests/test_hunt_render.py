@@ -58,3 +58,17 @@ def test_hunt_render_with_json_keeps_stdout_one_line(rendered, tmp_path, monkeyp
     assert record["found"] is True
     assert result.stderr.strip().splitlines()[-1] == "media/hunt-scaling.mp4"
     assert json.loads((tmp_path / "media" / "hunt-scaling.json").read_text())
+
+
+def test_hunt_render_of_a_crash_renders_nothing_and_says_so(rendered, tmp_path, monkeypatch):
+    """A function that raises on the polygon found has no run to show: the finding stands
+    (exit 1, the polygon written), and a note says why no video was made."""
+    monkeypatch.chdir(tmp_path)
+    mine = tmp_path / "mine.py"
+    mine.write_text("def bad(polygon):\n    return 1 / 0\n")
+    result = CliRunner().invoke(main, ["hunt", f"{mine}:bad", "--budget", "20", "-o",
+                                       str(tmp_path / "found.json"), "--render", "--json"])
+    assert result.exit_code == 1, result.output
+    assert json.loads(result.stdout)["error"].startswith("bad raised ZeroDivisionError")
+    assert result.stderr == "note: --render: no video of a run that does not end in a claim\n"
+    assert rendered == [] and (tmp_path / "found.json").is_file()

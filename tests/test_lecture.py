@@ -26,7 +26,12 @@ import pytest
 import srt
 from click.testing import CliRunner
 
-from tests.reading_rules import crossfaded_subtitles, small_texts, unreadable_cues
+from tests.reading_rules import (
+    crossfaded_subtitles,
+    small_texts,
+    unreadable_cues,
+    unspoken_words,
+)
 from trex import assemble, chapter_pool, lecture_command
 from trex.cli import main
 from trex.render_command import load_scene_class
@@ -456,6 +461,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert small_texts(data) == [], chapter.slug
     # issue 22 item 9: never two subtitles at once
     assert crossfaded_subtitles(data) == [], chapter.slug
+    # issue 22 items 1 and 10: the taught words, no slug, no code (no call line either), no
+    # number with two decimals
+    assert unspoken_words(data) == [], chapter.slug
 
 
 @pytest.mark.parametrize("chapter", _chapters())
@@ -489,5 +497,7 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     data = build(cls.handed()).data
     cues = [c["text"] for c in data["cues"]]
     assert hunted[0].title in cues  # the card: its title, then each line its own cue
-    assert any(c.startswith(f"trex hunt tried {found.tried} small polygons") for c in cues)
+    # issue 22: the card tells what the computer did, naming no command
+    assert f"The computer tried {found.tried} small polygons, fewest vertices first." in cues
+    assert not any("trex" in c or "seed" in c for c in cues)
     assert any(c.startswith(f"✗ {found.claim_name} is not an inner diagonal") for c in cues)

@@ -12,6 +12,7 @@ from geometry.monotone_pieces import MonotonePiece, monotone_pieces, triangulate
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import triangulate
+from story.refs import ref
 from tests.strategies import generated_polygons
 from tests.test_ears import CORPUS, NAMED, assert_valid, collinear_polygons
 
@@ -71,7 +72,7 @@ def test_split_and_merge_are_joined_into_two_known_pieces():
         diagonals = make_monotone(p)
     assert [labels(p, d) for d in diagonals] == ["DI"]
     (call,) = log.find(kind="call", name="add_diagonal")
-    assert (call.args["u"]["ref"], call.args["w"]["ref"]) == ("D", "I")
+    assert (ref(call, "u"), ref(call, "w")) == ("D", "I")
     pieces = monotone_pieces(p, diagonals)
     assert cyclic_sets(p, pieces) == {"ABCDIJ", "DEFGHI"}
     assert all(is_y_monotone(p, piece.ids) for piece in pieces)

@@ -74,7 +74,7 @@ def test_a_right_heuristic_of_ones_own_triangulates(mine):
 def test_a_wrong_heuristic_of_ones_own_stops_at_its_first_wrong_claim(mine):
     code, out, _ = run("triangulate", "counterexample-twin", "--heuristic",
                        f"{mine}:nearest_to_c", "--json")
-    assert code == 0  # as for a wrong built-in: the run failed, the input was fine
+    assert code == 1  # as for a wrong built-in: a finding (the run stopped), the input was fine
     record = json.loads(out)
     assert record["valid"] is False and record["triangles"] == []
     assert record["why"] == "B–E crosses edge C–D at (2.86087, -6.36087)"
@@ -87,7 +87,7 @@ def test_a_wrong_heuristic_of_ones_own_stops_at_its_first_wrong_claim(mine):
 def test_the_readmes_example_fails_like_a_wrong_builtin():
     code, out, _ = run("triangulate", "counterexample", "counterexample-twin", "--heuristic",
                        "examples/my_heuristic.py:biggest_angle")
-    assert code == 0
+    assert code == 1  # the twin stopped: a finding
     right, wrong = out.splitlines()
     assert right == "counterexample: divide-and-conquer: 3 triangles, valid"
     assert wrong.endswith("stopped after 0 triangles: B–E crosses edge C–D at "

@@ -225,7 +225,7 @@ def test_a_saved_log_gives_the_live_runs_steps(scaling_player, tmp_path):
     live = sorted((scaling_player / "steps").glob("*.png"))
     replayed = sorted((out / "steps").glob("*.png"))
     assert [p.read_bytes() for p in replayed] == [p.read_bytes() for p in live]
-    assert "scaling on counterexample, saved in" in (out / "index.html").read_text()
+    assert "Scaling on counterexample, saved in" in (out / "index.html").read_text()
 
 
 def test_trex_log_is_read_as_scenes_read_it(tmp_path, monkeypatch, fake_steps):

@@ -36,13 +36,19 @@ from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon, read_shape
 from metaphors.pseudocode import source_of
+from metaphors.scene import SequenceScene, TraceScene
+from story.pseudocode import named
 from story.registry import entry, hole_pseudocode, wrong
+from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
+from story.spec import RunSpec
+from story.storyboard import run_vertices
 from tests.reading_rules import (
     LEAST_LINE,
     crossfaded_subtitles,
     graph_nodes,
     small_texts,
     unreadable_cues,
+    unspoken_words,
 )
 from tests.test_pseudocode import (
     EXAMPLE,
@@ -92,7 +98,7 @@ class SceneCase:
         replaying ``saved`` — so that no environment variable counts; a scene that takes
         no input: itself."""
         cls = self.scene_class()
-        return cls.handed(polygon, saved) if callable(getattr(cls, "handed", None)) else cls
+        return cls.handed(polygon, saved) if isinstance(cls, Handed) else cls
 
 
 def _import(path: Path):
@@ -132,7 +138,7 @@ def _params(cases) -> list:
 def _single_run_scenes(heuristic: str) -> list[SceneCase]:
     """Scenes that play one run of this algorithm (named in their own class body)."""
     return [c for c in SCENES if c.cls is not None and vars(c.cls).get("algorithm") == heuristic
-            and not getattr(c.cls, "runs", None)]
+            and not plays_several(c.cls)]
 
 
 # --- builds (cached for the session) -------------------------------------------------------------
@@ -206,6 +212,14 @@ def test_never_two_subtitles_at_once(case):
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
+def test_every_scene_speaks_the_taught_words(case):
+    """Issue 22 items 1 and 10: a scene's titles, captions and cards name the algorithms as
+    the thesis does (no slug), show no code and no number with two decimals; only the
+    panel's call line shows the real call (a programmer's render keeps it)."""
+    assert unspoken_words(graph(case).data, call_line=True) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
 def test_same_input_gives_identical_graph(case, request):
     skip_if_heavy(case, request)
     again = build(case.handed())
@@ -217,9 +231,9 @@ def _save_logs(case: SceneCase, folder: Path) -> tuple[str, ...] | None:
     plays none."""
     with tempconfig({"dry_run": True, "media_dir": str(folder), "verbosity": "WARNING"}):
         scene = case.handed()(skip_animations=True)
-        if callable(getattr(scene, "logs", None)):
+        if isinstance(scene, SequenceScene):
             logs = scene.logs()
-        elif callable(getattr(scene, "log", None)):
+        elif isinstance(scene, TraceScene):
             logs = [scene.log()]
         else:
             return None
@@ -276,19 +290,20 @@ def test_wrong_heuristic_shows_the_crossed_edge(heuristic):
 
 def _last_algorithm(case: SceneCase) -> str | None:
     """The algorithm whose run the scene's last board plays."""
-    runs = getattr(case.cls, "runs", None)
-    return runs[-1][0] if runs else getattr(case.cls, "algorithm", None)
+    return case.cls.runs[-1][0] if plays_several(case.cls) else algorithm_of(case.cls)
 
 
 def _last_pseudocode(case: SceneCase) -> tuple:
     """The rows the scene's last board shows: its algorithm's, with the holes' rows first when
     its polygon has holes."""
-    runs = getattr(case.cls, "runs", None)
     algorithm = _last_algorithm(case)
-    polygon = runs[-1][1] if runs else getattr(case.cls, "polygon", None)
+    polygon = (case.cls.runs[-1][1] if plays_several(case.cls)
+               else case.cls.polygon if isinstance(case.cls, Handed) else None)
     if polygon and read_shape(polygon).hole_count:
         return hole_pseudocode(algorithm)
-    return entry(algorithm).pseudocode
+    # the rows name the run's own vertices where the picture has one of that name (issue 22)
+    log = RunSpec(algorithm, polygon, heuristic=heuristic_of(case.cls)).log()
+    return named(entry(algorithm).pseudocode, run_vertices(log), read_polygon(polygon).labels)
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -311,9 +326,9 @@ def _scene_logs(case: SceneCase, folder: Path):
     """The scene (not built) and the logs it plays, or None if it plays none."""
     with tempconfig({"dry_run": True, "media_dir": str(folder), "verbosity": "WARNING"}):
         scene = case.handed()(skip_animations=True)
-        if callable(getattr(scene, "logs", None)):
+        if isinstance(scene, SequenceScene):
             return scene, scene.logs()
-        if callable(getattr(scene, "log", None)):
+        if isinstance(scene, TraceScene):
             return scene, [scene.log()]
     return None
 
@@ -402,7 +417,7 @@ def assert_source_panel_readable(data: dict, what: str) -> None:
 
 @pytest.mark.parametrize("case", [c for c in _params(SCENES)
                                   if c.values[0].cls is not None
-                                  and callable(getattr(c.values[0].cls, "with_panel", None))])
+                                  and isinstance(c.values[0].cls, WithPanel)])
 def test_a_viewer_can_read_the_source_panel(case):
     """The source at a readable size in every scene: its long lines wrap, a long listing
     shows a window of it that holds the lit line (metaphors/listing.py)."""

@@ -446,18 +446,18 @@ def _dry_render(spec: str, polygon: str | None, monkeypatch):
 def test_scene_plays_the_generic_beats(polygon, ok, monkeypatch):
     cls, scene, played = _dry_render(EXAMPLE, polygon, monkeypatch)
     assert cls.title.startswith("biggest_angle: Claim BD for the candidate D")
-    actions = [b.action for b in scene.trex_beats]
+    actions = [b.action for b in scene.played_beats]
     assert {"shape", "call", "claim", "verdict"} <= set(actions)
     assert ("Create", "shape:best") in played  # the shape appeared …
     assert ("Transform", "shape:best") in played  # … moved to the better candidate …
     assert ("FadeOut", "shape:best") in played  # … and went
-    assert "shape:best" not in scene.trex_board.objects
-    verdict = scene.trex_beats[-1]
+    assert "shape:best" not in scene.played_board.objects
+    verdict = scene.played_beats[-1]
     assert verdict.action == "verdict" and verdict.data["ok"] is ok
     assert ("FadeIn", "tick" if ok else "cross") in played
     if not ok:
         assert ("Create", "edge:C–D") in played  # the edge the claim crosses
-    rows = [text.strip() for _, text in scene.trex_board.panel.code_lines]
+    rows = [text.strip() for _, text in scene.played_board.panel.code_lines]
     assert rows[0] == "def biggest_angle(polygon):" and rows[-1] == "return b, best"
 
 
@@ -481,7 +481,7 @@ def test_scene_for_heuristic_errors_and_scene_classes(tmp_path):
 def test_trex_diagonal_with_the_example_json():
     code, out, err = run("diagonal", "--heuristic", EXAMPLE, "counterexample",
                          "counterexample-twin", "--json")
-    assert code == 0, err
+    assert code == 1, err  # a finding: its claim on the twin is not an inner diagonal
     first, second = (json.loads(line) for line in out.splitlines())
     assert first["polygon"] == "counterexample"
     assert first["inner"] is True and first["why"] is None and sorted(first["diagonal"]) == [0, 3]
@@ -523,8 +523,7 @@ def test_every_answer_form_is_one_claim(tmp_path, answer):
 
 
 BAD_SPECS = {
-    "missing file": ("{d}/nope.py:f", "error: Invalid value for '--heuristic': {d}/nope.py: "
-                     "no such file"),
+    "missing file": ("{d}/nope.py:f", "error: {d}/nope.py: no such file"),
     "no function named": ("{d}/good.py", "name the function too, as {d}/good.py:FUNCTION"),
     "syntax error": ("{d}/broken.py:f", "{d}/broken.py:2: syntax error: '(' was never closed"),
     "fails to import": ("{d}/imports.py:f", "{d}/imports.py:1: ModuleNotFoundError while "
@@ -534,7 +533,8 @@ BAD_SPECS = {
     "not callable": ("{d}/good.py:LIMIT", "{d}/good.py: 'LIMIT' is an int, not a function"),
     "wrong arity": ("{d}/good.py:pair", "{d}/good.py: pair() must take one argument, the "
                     "polygon"),
-    "unknown name": ("nonesuch", "'nonesuch' is not one of 'scaling', 'rotation', "),
+    "unknown name": ("nonesuch", "error: unknown heuristic 'nonesuch' (try 'main diagonal "
+                     "--help')"),
     "raises": ("{d}/good.py:good", "error: counterexample: good raised ZeroDivisionError: "
                "division by zero (good.py, line 5)"),
     "bad answer": ("{d}/answers.py:f", "error: counterexample: f returned ('B', 'Q'): 'Q' is not "
@@ -595,3 +595,84 @@ def test_trex_render_bad_spec_is_one_line(tmp_path, monkeypatch):
     code, out, err = run("render", f"{path}:g", "-o", str(tmp_path / "x.mp4"))
     assert code == 2 and out == ""
     assert err == f"error: {path}:g: {path}: no function 'g' (it defines: f)\n"
+
+
+# --- what the user's code may do besides answering (issue 24 items 5 and 6) --------------------
+
+ENDINGS = '''
+import os, signal, sys, time
+
+def quits(polygon):
+    sys.exit("done")
+
+def own_interrupt(polygon):
+    raise KeyboardInterrupt
+
+def swallowed_exit(polygon):
+    try:
+        sys.exit(1)
+    except SystemExit:
+        return 1, 3
+
+def ctrl_c(polygon):
+    os.kill(os.getpid(), signal.SIGINT)
+    time.sleep(5)
+
+def chatty(polygon):
+    print("thinking")
+    return 1, 3
+'''
+
+
+@pytest.fixture
+def endings(tmp_path):
+    path = write(tmp_path, "endings.py", ENDINGS)
+    return lambda name: load_user_heuristic(f"{path}:{name}")
+
+
+def test_its_own_exit_or_interrupt_is_an_error_of_the_function(endings):
+    from geometry.user_heuristics import UserHeuristicExit
+
+    polygon = read_polygon("counterexample")
+    with pytest.raises(UserHeuristicExit, match=r"^quits called sys\.exit\('done'\) "
+                                                r"\(endings\.py, line 5\)"):
+        endings("quits").run(polygon)
+    with pytest.raises(UserHeuristicExit, match=r"^own_interrupt raised KeyboardInterrupt"):
+        endings("own_interrupt").run(polygon)
+    assert endings("swallowed_exit").run(polygon).name == "BD"  # what it catches is its own
+
+
+def test_a_real_ctrl_c_passes_through_as_the_interrupt_it_is(endings):
+    """SIGINT while the function runs is the command's: KeyboardInterrupt (Python's handler),
+    or the interrupt of the handler in force (trex render's), never the function's error."""
+    from trex.render_command import Interrupted, interrupts_raise
+
+    polygon = read_polygon("counterexample")
+    with pytest.raises(KeyboardInterrupt) as caught:
+        endings("ctrl_c").run(polygon)
+    assert not isinstance(caught.value, UserHeuristicError)
+    with interrupts_raise(), pytest.raises(Interrupted):
+        endings("ctrl_c").run(polygon)
+
+
+def test_its_prints_go_to_stderr(endings, capsys):
+    endings("chatty").run(read_polygon("counterexample"))
+    captured = capsys.readouterr()
+    assert captured.out == "" and captured.err == "thinking\n"
+
+
+def test_off_the_main_thread_its_interrupt_is_its_error(endings):
+    from geometry.user_heuristics import UserHeuristicExit
+
+    errors = []
+
+    def run():
+        try:
+            endings("own_interrupt").run(read_polygon("counterexample"))
+        except BaseException as exc:  # what came out is the test
+            errors.append(exc)
+
+    thread = threading.Thread(target=run)
+    thread.start()
+    thread.join()
+    assert len(errors) == 1 and isinstance(errors[0], UserHeuristicExit)

@@ -17,8 +17,10 @@ from pathlib import Path
 
 import click
 
+from geometry.user_heuristics import UserHeuristicError, set_call_timeout
+from story.environment import call_timeout_from_environment
 from story.pseudocode import PANELS
-from trex.inputs import error_line
+from trex.inputs import EXIT_INVALID, error_line
 from trex.render_command import (
     EXIT_FAILED,
     QUALITIES,
@@ -67,7 +69,16 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
                    polygon: str | None = None, panel: str | None = None) -> int:
     """Render one scene to ``output`` (mp4 + .srt + .steps.json, its step marks), handed
     ``polygon`` (None or empty: what ``manim`` would give it), its panel showing ``panel``
-    (None or empty: the scene's own); the exit status."""
+    (None or empty: the scene's own); the exit status. A function of one's own it runs has
+    the time limit of ``TREX_CALL_TIMEOUT`` (the lecture's ``--call-timeout``), else the
+    default; when one fails, the status is 2."""
+    try:
+        seconds = call_timeout_from_environment()
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_INVALID
+    if seconds is not None:
+        set_call_timeout(seconds)
     with interrupts_raise() as signals:
         try:
             try:
@@ -76,6 +87,10 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
                 render_into(scene_input(cls, polygon or None, panel or None), Path(output),
                             "mp4", QUALITIES[quality], progress=False, signals=signals,
                             steps=settings)
+            except UserHeuristicError as exc:  # a function of one's own failed: status 2
+                signals.check()
+                print(f"error: {exc}", file=sys.stderr)
+                return EXIT_INVALID
             except Exception as exc:
                 signals.check()
                 print(f"error: render failed: {type(exc).__name__}: {error_line(exc)}",

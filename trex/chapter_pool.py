@@ -17,9 +17,12 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from geometry.user_heuristics import call_timeout
+from story.environment import child_environment
 from trex.chapter_command import chapter_command_line
 from trex.chapters import Chapter, ChapterFailed, chapter_label, chapter_stem, scene_path
-from trex.inputs import error_line, first_line
+from trex.inputs import EXIT_INVALID, error_line, first_line
+from trex.render_command import EXIT_FAILED
 
 __all__ = ["POLL", "STOP_WAIT", "render_chapters"]
 
@@ -46,10 +49,12 @@ def _start(k: int, chapter: Chapter, folder: Path, logs: Path, quality: str,
     log = logs / f"{chapter_stem(chapter)}.log"
     command = chapter_command_line(scene_path(chapter), chapter.scene_class, output, quality,
                                    polygon, panel)
+    # this command's --call-timeout, for the functions of one's own the chapter runs
+    env = child_environment(call_timeout())
     with open(log, "wb") as sink:
         # its own session: Ctrl-C at the terminal reaches only us, and we stop it
         process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=sink,
-                                   stderr=subprocess.STDOUT, start_new_session=True)
+                                   stderr=subprocess.STDOUT, start_new_session=True, env=env)
     return _Render(k, chapter, process, log, output, time.monotonic())
 
 
@@ -89,7 +94,8 @@ def _finished(render: _Render, n: int):
     code = render.process.returncode
     label = chapter_label(render.k, n, render.chapter)
     if code != 0:
-        raise ChapterFailed(f"{label}: {_reason(render, code)}")
+        raise ChapterFailed(f"{label}: {_reason(render, code)}",
+                            EXIT_INVALID if code == EXIT_INVALID else EXIT_FAILED)
     try:
         return probe(render.output)
     except (OSError, ValueError, RuntimeError) as exc:  # av errors are OSErrors

@@ -22,6 +22,7 @@ from typing import NoReturn
 import click
 
 from geometry.errors import GeometryError
+from story.scene_kinds import ChapterScene, plays_several
 from trex.inputs import error_line, fail
 from trex.render_command import EXIT_FAILED, SCENES_DIR, dry_run, load_scene_class, resolve_scene
 
@@ -46,13 +47,19 @@ class Chapter:
 
 
 class ChapterFailed(Exception):
-    """A chapter could not be rendered (its one-line reason is the message)."""
+    """A chapter could not be rendered (its one-line reason is the message); ``status``: the
+    command's exit status for it (2 when a function of one's own failed in it, else 1)."""
+
+    def __init__(self, message: str, status: int = EXIT_FAILED) -> None:
+        super().__init__(message)
+        self.status = status
 
 
-def chapter_failed(message: str) -> NoReturn:
-    """``error: MESSAGE`` and exit status 1 (a chapter, or the list of them, failed)."""
+def chapter_failed(message: str, status: int = EXIT_FAILED) -> NoReturn:
+    """``error: MESSAGE`` and exit status 1 (a chapter, or the list of them, failed), or
+    ``status``."""
     click.echo(f"error: {message}", err=True)
-    raise click.exceptions.Exit(EXIT_FAILED)
+    raise click.exceptions.Exit(status)
 
 
 def lecture_chapters() -> tuple[Chapter, ...]:
@@ -67,7 +74,7 @@ def lecture_chapters() -> tuple[Chapter, ...]:
     chapters = []
     for number, slug, path in sorted(found):
         cls = load_scene_class(path, None)
-        title = str(getattr(cls, "chapter_title", slug)).partition(". ")
+        title = str(cls.chapter_title if isinstance(cls, ChapterScene) else slug).partition(". ")
         chapters.append(Chapter(number, slug, title[2] or title[0], str(path.relative_to(REPO)),
                                 cls.__name__))
     return tuple(chapters)
@@ -194,7 +201,7 @@ def _check_polygon(cls: type, polygon: str, label: str, done: set) -> None:
         raise ChapterFailed(f"{label}: cannot list its segments: {type(exc).__name__}: "
                             f"{error_line(exc)}") from None
     if segments is None:
-        if not getattr(cls, "runs", None):
+        if not plays_several(cls):
             try:
                 dry_run(cls, polygon)
             except (GeometryError, ValueError, KeyError) as exc:

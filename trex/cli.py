@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import decimal
 import sys
-from typing import Any
+from typing import Any, NoReturn
 
 import click
 
@@ -16,6 +16,7 @@ from geometry.errors import GeometryError
 from geometry.io import Shape, to_json, write_polygon
 from geometry.polygon import Polygon  # noqa: F401  (the doctests' polygons)
 from geometry.samples import make_sample
+from trex import exit_status
 from trex.exercises_command import COMMANDS as EXERCISE_COMMANDS
 from trex.hunt_command import COMMANDS as HUNT_COMMANDS
 from trex.inputs import EXIT_INVALID, error_line, fail, first_line, try_load
@@ -30,7 +31,14 @@ _SHOWN_LABELS = 8
 
 
 class _OneLineGroup(click.Group):
-    """A group whose usage errors print as ``error: <message> (try '… --help')``."""
+    """A group whose usage errors print as ``error: <message> (try '… --help')``, and whose
+    commands, interrupted by Ctrl-C, say so in one line and exit 130."""
+
+    def invoke(self, ctx: click.Context) -> Any:
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt:  # a real Ctrl-C: a user's own raise is their function's error
+            _interrupted(ctx.invoked_subcommand)
 
     def main(self, *args: Any, standalone_mode: bool = True, **kwargs: Any) -> Any:
         if not standalone_mode:
@@ -49,10 +57,17 @@ class _OneLineGroup(click.Group):
         except click.ClickException as exc:
             click.echo(f"error: {first_line(exc.format_message())}", err=True)
             sys.exit(exc.exit_code)
-        except click.Abort:
-            click.echo("aborted", err=True)
-            sys.exit(1)
+        except click.Abort:  # Ctrl-C before the command ran (click turned it into Abort)
+            _interrupted(None)
         sys.exit(code if isinstance(code, int) else 0)
+
+
+def _interrupted(command: str | None) -> NoReturn:
+    """``error: hunt interrupted`` on stderr (on a line of its own after the terminal's ``^C``)
+    and the status of an interrupt."""
+    start = "\n" if sys.stderr.isatty() else ""
+    click.echo(f"{start}error: {command or 'trex'} interrupted", err=True)
+    sys.exit(exit_status.INTERRUPTED)
 
 
 @click.group(cls=_OneLineGroup, context_settings={"help_option_names": ["-h", "--help"]})

@@ -2,9 +2,11 @@
 
 The search and the shrinker are :mod:`story.hunt` (no manim); this is the command: the
 verdict in words and the polygon, or one JSON line; ``-o`` writes the polygon for
-``trex render --polygon``. Exit status 1: a counterexample was found; 0: none within the
-budget; 2: bad input (an unknown heuristic, a broken file, a function of one's own that
-raises, answers nonsense or does not return within ``--call-timeout`` seconds).
+``trex render --polygon``. Exit status 1: a counterexample was found, or a polygon on which a
+function of one's own raises, answers nonsense or does not return within ``--call-timeout``
+seconds (a finding too: the polygon is what its author needs, shrunk while it fails the same
+way); 0: none within the budget; 2: bad input (an unknown heuristic, a broken file, a
+function of one's own that calls ``sys.exit()``); 130: interrupted (Ctrl-C).
 """
 
 from __future__ import annotations
@@ -18,24 +20,37 @@ import click
 
 from geometry.io import polygon_to_json_points, write_polygon
 from geometry.user_heuristics import UserHeuristic, UserHeuristicError
-from story.hunt import Hunt, hunt, polygon_lines, reason, verdict_line
+from story.hunt import (
+    MAX_SHRINK_TIMEOUTS,
+    Hunt,
+    hunt,
+    polygon_lines,
+    reason,
+    skipped_note,
+    verdict_line,
+)
+from trex.exit_status import FINDING as EXIT_FOUND
 from trex.inputs import call_timeout_option, error_line, fail
 from trex.run_commands import HeuristicOrFile
 
-EXIT_FOUND = 1
-
 
 def hunt_record(result: Hunt) -> dict:
-    """The one JSON line: indices into ``polygon`` as listed (counter-clockwise from A)."""
+    """The one JSON line: indices into ``polygon`` as listed (counter-clockwise from A).
+    ``why`` says why the claim is wrong (as ``trex diagonal`` does), ``error`` what a function
+    of one's own did instead of claiming (then ``diagonal``, ``inner`` and ``why`` are null);
+    ``skipped`` counts the draws of the budget that made no polygon."""
     found = result.found and result.polygon is not None
+    claimed = found and result.error is None
     return {
         "heuristic": result.heuristic,
         "found": result.found,
         "polygon": polygon_to_json_points(list(result.polygon.points)) if found else None,
-        "diagonal": list(result.diagonal) if found and result.diagonal else None,
-        "inner": False if found else None,
-        "reason": reason(result) if found else None,
+        "diagonal": list(result.diagonal) if claimed and result.diagonal else None,
+        "inner": False if claimed else None,
+        "why": reason(result) if claimed else None,
+        "error": result.error if found else None,
         "tried": result.tried,
+        "skipped": result.skipped,
         "max_vertices": result.max_vertices,
         "seconds": round(result.seconds, 3),
     }
@@ -72,7 +87,7 @@ def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_ver
         try:
             result = hunt(heuristic, budget=budget, seed=seed, max_vertices=max_vertices,
                           progress=bar.update if bar is not None else None)
-        except UserHeuristicError as exc:
+        except UserHeuristicError as exc:  # it tried to end the program: no polygon explains it
             fail(f"{heuristic}: {exc}")
         except ValueError as exc:  # a built-in heuristic that refuses a polygon
             fail(f"{heuristic}: {error_line(exc)}")
@@ -82,9 +97,10 @@ def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_ver
         click.echo(verdict_line(result))
         if result.found and result.polygon is not None:
             click.echo("\n".join(polygon_lines(result.polygon)))
-            click.echo(f"(found among {result.tried:,} polygons, on one of {result.first} "
-                       f"vertices, shrunk in {result.checks:,} checks, "
-                       f"{result.seconds:.2f} s)")
+            noun = "polygon" if result.tried == 1 else "polygons"
+            click.echo(f"(found among {result.tried:,} {noun}, on one of {result.first} "
+                       f"vertices, shrunk in {result.checks:,} checks{_stopped(result)}, "
+                       f"{result.seconds:.2f} s){skipped_note(result)}")
     if result.found and result.polygon is not None:
         if output is not None:
             try:
@@ -93,10 +109,19 @@ def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_ver
                 fail(f"{output}: cannot write: {error_line(exc)}")
             if not as_json:
                 click.echo(f"wrote {output}")
-        if render:
+        if render and result.error is not None:
+            click.echo("note: --render: no video of a run that does not end in a claim",
+                       err=True)
+        elif render:
             click.echo(str(render_counterexample(heuristic, result, output)),
                        err=as_json)  # --json: stdout stays one JSON line
         raise click.exceptions.Exit(EXIT_FOUND)
+
+
+def _stopped(result: Hunt) -> str:
+    if not result.stopped:
+        return ""
+    return f" (stopped: more than {MAX_SHRINK_TIMEOUTS} of them ran out of time)"
 
 
 def heuristic_video(heuristic: str | UserHeuristic) -> type:

@@ -22,9 +22,9 @@ import click
 from geometry.errors import GeometryError
 from geometry.io import Shape, read_polygon, read_shape
 from geometry.polygon import Polygon
-from geometry.user_heuristics import DEFAULT_CALL_TIMEOUT, set_call_timeout
+from geometry.user_heuristics import DEFAULT_CALL_TIMEOUT, call_timeout, set_call_timeout
+from trex.exit_status import INVALID as EXIT_INVALID
 
-EXIT_INVALID = 2
 # Reading can also fail outside the GeometryError family (an unexpected OS
 # error, a value shapely rejects); those must still end as one line.
 READ_ERRORS = (GeometryError, OSError, ValueError, RecursionError, MemoryError)
@@ -80,8 +80,12 @@ def load_or_exit(arg: str, *, holes: bool = False) -> Polygon:
     return polygon
 
 
-def _set_call_timeout(_ctx, _param, value: float) -> float:
+def _set_call_timeout(ctx: click.Context, _param, value: float) -> float:
+    """Set the limit for this command, and put the one before back when it ends (a command
+    invoked in process, as tests do, leaves no limit behind)."""
+    previous = call_timeout()
     set_call_timeout(value)
+    ctx.call_on_close(lambda: set_call_timeout(previous))
     return value
 
 

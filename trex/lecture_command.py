@@ -44,7 +44,7 @@ from trex.chapters import (
     lecture_chapters,
     pick_chapters,
 )
-from trex.inputs import error_line, fail, load_or_exit
+from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 from trex.lecture_join import (
     CHAPTER_DIR,
     DEFAULT_DIR,
@@ -114,6 +114,7 @@ def build_lecture(chapters: Sequence[Chapter], out_dir: Path, quality: str, jobs
 @click.option("--panel", type=click.Choice(PANELS), default=None,
               help="What the panels show: the pseudocode (the scenes' default; the source "
                    "when a run has none) or the real source.")
+@call_timeout_option
 def lecture(quality: str, jobs: int, polygon: str | None, out_dir: str,
             only: str | None, panel: str | None) -> None:
     """Render every chapter of the lecture and join them: DIR/lecture.mp4, lecture.srt,
@@ -168,7 +169,7 @@ def run_lecture(chapters: Sequence[Chapter] | None, out_dir: Path, quality: str 
             raise click.exceptions.Exit(EXIT_SIGNAL + exc.signum) from None
         except ChapterFailed as exc:
             signals.check()
-            chapter_failed(str(exc))
+            chapter_failed(str(exc), exc.status)
         except (KeyboardInterrupt, click.exceptions.Exit):
             raise
         except Exception as exc:

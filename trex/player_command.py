@@ -27,7 +27,7 @@ from pathlib import Path
 import click
 
 from story.pseudocode import PANELS
-from trex.inputs import fail
+from trex.inputs import call_timeout_option, fail
 from trex.output_dir import EXIT_FAILED, build_guarded, built_beside, check_output
 from trex.scene_inputs import check_log, choose, load_scene, read_log, run_of
 
@@ -46,6 +46,7 @@ MARKER = ".trex-player"
 @click.option("--panel", type=click.Choice(PANELS), default=None,
               help="What the panel shows: the pseudocode (the scenes' default; the source "
                    "when the run has none) or the real source.")
+@call_timeout_option
 def player(scene: str, polygon: str | None, saved: str | None, output: str,
            panel: str | None) -> None:
     """Write an offline HTML page that steps through SCENE's run, one picture per step.

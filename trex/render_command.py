@@ -27,6 +27,15 @@ from geometry.errors import GeometryError
 from geometry.triangulate import HOLE_ALGORITHMS
 from geometry.user_heuristics import UserHeuristicError
 from story.pseudocode import PANELS
+from story.scene_kinds import (
+    Handed,
+    WithHeuristic,
+    WithPanel,
+    algorithm_of,
+    heuristic_of,
+    plays_one,
+    plays_several,
+)
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit, make_parent
 from trex.signals import EXIT_SIGNAL, Interrupted, Signals, interrupts_raise, signals_held
 
@@ -135,18 +144,18 @@ def load_scene_class(path: Path, class_name: str | None) -> type:
 def dry_run(cls: type, polygon: str) -> None:
     """Run the scene's algorithm on the polygon once, without drawing: an input the algorithm
     rejects (a triangle has no diagonal …) is then reported before rendering starts."""
-    algorithm = getattr(cls, "algorithm", None)
-    if not isinstance(algorithm, str) or getattr(cls, "runs", None):
+    algorithm = algorithm_of(cls)
+    if algorithm is None or plays_several(cls):
         return
     from story.spec import RunSpec
 
-    RunSpec(algorithm, polygon, heuristic=getattr(cls, "heuristic", None)).log()
+    RunSpec(algorithm, polygon, heuristic=heuristic_of(cls)).log()
 
 
 def _environment_polygon(cls: type) -> str | None:
     """The polygon plain ``manim`` would hand a one-run scene from ``TREX_POLYGON`` (None: its
     default, a saved log, or not a one-run scene)."""
-    if not callable(getattr(cls, "from_environment", None)) or getattr(cls, "runs", None):
+    if not plays_one(cls):
         return None
     try:
         spec = cls.from_environment().spec
@@ -166,9 +175,9 @@ def scene_input(cls: type, polygon: str | None, panel: str | None = None) -> typ
     :data:`story.pseudocode.PANELS`), if given, is what a scene with a panel shows there
     (:meth:`metaphors.scene.TraceScene.with_panel`); None: the scene's own. Raises ValueError
     for a ``TREX_LOG`` the scene cannot play."""
-    if panel is not None and callable(getattr(cls, "with_panel", None)):
+    if panel is not None and isinstance(cls, WithPanel):
         cls = cls.with_panel(panel)
-    if not callable(getattr(cls, "handed", None)):
+    if not isinstance(cls, Handed):
         return cls
     return cls.handed(polygon) if polygon is not None else cls.from_environment()
 
@@ -279,7 +288,7 @@ def render_into(make_scene: Callable[[], object], output: Path, fmt: str, qualit
 
 def _write_marks(scene, video: Path, made_by: dict) -> Path:
     """The scene's step marks, beside the video it rendered."""
-    from metaphors.steps import recorded_steps, steps_end
+    from metaphors.recorded import recorded_steps, steps_end
     from trex.clips import Marks, Step, write_marks
 
     steps = tuple(Step(m.frame, m.caption, m.call, m.kind) for m in recorded_steps(scene))
@@ -341,7 +350,7 @@ def with_heuristic(cls: type, heuristic: str | None) -> type:
     None. Raises ValueError (one line) for a scene that takes none or a bad heuristic."""
     if heuristic is None:
         return cls
-    if not callable(getattr(cls, "with_heuristic", None)):
+    if not isinstance(cls, WithHeuristic):
         raise ValueError("takes no heuristic")
     return cls.with_heuristic(heuristic)
 
@@ -359,12 +368,12 @@ def _render(scene: str, path: Path, class_name: str | None, polygon: str | None,
         cls = with_heuristic(cls, heuristic)
     except ValueError as exc:
         fail(f"{scene}: {exc}")
-    if polygon is not None and getattr(cls, "runs", None):
+    if polygon is not None and plays_several(cls):
         click.echo(f"warning: {scene}: plays its own polygons; --polygon is ignored", err=True)
     else:
         given = polygon if polygon is not None else _environment_polygon(cls)
         if given is not None:  # a bad polygon, given or from TREX_POLYGON: one line, exit 2
-            load_or_exit(given, holes=getattr(cls, "algorithm", None) in HOLE_ALGORITHMS)
+            load_or_exit(given, holes=algorithm_of(cls) in HOLE_ALGORITHMS)
             try:
                 dry_run(cls, given)
             except (GeometryError, ValueError, KeyError) as exc:

@@ -9,6 +9,7 @@ others refuse them in one line. None of these commands imports manim.
 
 from __future__ import annotations
 
+import difflib
 import json
 from pathlib import Path
 
@@ -27,6 +28,7 @@ from geometry.user_heuristics import (
     run_heuristic,
 )
 from story.registry import heuristics, names, triangulations
+from trex import exit_status
 from trex.inputs import (
     EXIT_INVALID,
     call_timeout_option,
@@ -36,13 +38,34 @@ from trex.inputs import (
     try_load,
 )
 
-HEURISTIC = click.Choice(list(heuristics()))
+
+class BadHeuristic(click.ClickException):
+    """A heuristic of one's own that cannot be loaded: its one line as it is (no click
+    ``Invalid value for '[scaling|rotation|…]'`` before it), exit status 2."""
+
+    exit_code = EXIT_INVALID
+
+
+def unknown(kind: str, value: str, known: tuple[str, ...], ctx) -> click.UsageError:
+    """The short usage error for a name that is not one of ``known``: ``unknown heuristic
+    'gravty'; did you mean 'gravity'?`` (the command's ``--help`` lists them).
+
+    >>> unknown("algorithm", "ear", ("divide-and-conquer", "ear-clipping"), None).message
+    "unknown algorithm 'ear'; did you mean 'ear-clipping'?"
+    >>> unknown("heuristic", "rot", ("rotation", "rotation-ccw", "scaling"), None).message
+    "unknown heuristic 'rot'; did you mean one of rotation, rotation-ccw?"
+    """
+    close = ([k for k in known if value and k.startswith(value)]
+             or difflib.get_close_matches(value, known, n=1))
+    hint = (f"; did you mean '{close[0]}'?" if len(close) == 1
+            else f"; did you mean one of {', '.join(close)}?" if 1 < len(close) <= 4 else "")
+    return click.UsageError(f"unknown {kind} '{value}'{hint}", ctx)
 
 
 class HeuristicOrFile(click.ParamType):
-    """A built-in heuristic's name (click's Choice error for an unknown one), or
-    ``path/to/file.py:function``: a heuristic of one's own, loaded here so a bad spec is one
-    line before any polygon is read."""
+    """A built-in heuristic's name, or ``path/to/file.py:function``: a heuristic of one's own,
+    loaded here so a bad spec is one line before any polygon is read. Either error is one
+    short line (:func:`unknown`, :class:`BadHeuristic`)."""
 
     name = "heuristic"
 
@@ -56,12 +79,29 @@ class HeuristicOrFile(click.ParamType):
             try:
                 return load_user_heuristic(value)
             except UserHeuristicError as exc:
-                self.fail(str(exc), param, ctx)
-        try:
-            return HEURISTIC.convert(value, param, ctx)
-        except click.BadParameter as exc:
-            self.fail(f"{exc.message.rstrip('.')}, or FILE.py:FUNCTION of your own", param, ctx)
-ALGORITHM = click.Choice(list(triangulations()))
+                raise BadHeuristic(str(exc)) from None
+        if value in heuristics():
+            return value
+        raise unknown("heuristic", value, heuristics(), ctx)
+
+
+class ShortChoice(click.Choice):
+    """A :class:`click.Choice` whose error is one short line (:func:`unknown`), not the whole
+    list of choices twice."""
+
+    def __init__(self, choices, kind: str) -> None:
+        super().__init__(choices)
+        self.kind = kind
+
+    def convert(self, value, param, ctx):
+        if value in self.choices:
+            return value
+        raise unknown(self.kind, value, tuple(self.choices), ctx)
+
+
+#: The one algorithm a heuristic is handed to: it finds each piece's diagonal.
+TAKES_HEURISTIC = "divide-and-conquer"
+ALGORITHM = ShortChoice(list(triangulations()), "algorithm")
 
 
 def _vertices(polygon: Shape) -> list[list[float]]:
@@ -103,9 +143,12 @@ def triangulation_record(arg: str, polygon: Shape, algorithm: str,
     }
 
 
-def _run_each(polygons, make, show_human, as_json: bool, *, holes: bool = False) -> None:
-    """Load each polygon, build its record, print it; exit 2 if any input was bad."""
-    bad = False
+def _run_each(polygons, make, show_human, as_json: bool, finding, *,
+              holes: bool = False) -> None:
+    """Load each polygon, build its record, print it; then exit 2 if any input was bad (or a
+    function of one's own failed), else 1 if any record is a ``finding`` (a wrong claim, a
+    stopped triangulation), else 0."""
+    bad = found = False
     for arg in polygons:
         polygon = try_load(arg, holes=holes)
         if polygon is None:
@@ -117,13 +160,26 @@ def _run_each(polygons, make, show_human, as_json: bool, *, holes: bool = False)
             report_error(arg, exc)
             bad = True
             continue
+        found = found or finding(record)
         if as_json:
             record.pop("labels", None)
             click.echo(json.dumps(record, separators=(",", ":"), ensure_ascii=False))
         else:
             click.echo(show_human(record))
-    if bad:
-        raise click.exceptions.Exit(EXIT_INVALID)
+    status = exit_status.worst(EXIT_INVALID if bad else exit_status.OK,
+                               exit_status.FINDING if found else exit_status.OK)
+    if status:
+        raise click.exceptions.Exit(status)
+
+
+def refuse_unused_heuristic(algorithm: str) -> None:
+    """``--heuristic`` given to an algorithm that takes none: one line, exit 2 (as ``trex
+    render`` refuses it), before any polygon is read. Only divide and conquer takes one."""
+    ctx = click.get_current_context()
+    given = ctx.get_parameter_source("heuristic") not in (
+        click.core.ParameterSource.DEFAULT, None)
+    if given and algorithm in triangulations() and algorithm != TAKES_HEURISTIC:
+        fail(f"--heuristic: {algorithm} takes no heuristic (only {TAKES_HEURISTIC} does)")
 
 
 @click.command()
@@ -133,14 +189,18 @@ def _run_each(polygons, make, show_human, as_json: bool, *, holes: bool = False)
 @click.option("--json", "as_json", is_flag=True, help="One JSON object per line.")
 @call_timeout_option
 def diagonal(polygons: tuple[str, ...], heuristic: str | UserHeuristic, as_json: bool) -> None:
-    """Claim an inner diagonal of each POLYGON with a heuristic, and check the claim exactly."""
+    """Claim an inner diagonal of each POLYGON with a heuristic, and check the claim exactly.
+
+    Exit status 1 when a claim is not an inner diagonal, 2 for bad input.
+    """
 
     def human(r: dict) -> str:
         name = "".join(r["labels"])
         verdict = "inner diagonal" if r["inner"] else f"NOT an inner diagonal: {r['why']}"
         return f"{r['polygon']}: {heuristic} claims {name} (input vertices {r['diagonal'][0]} and {r['diagonal'][1]}): {verdict}"
 
-    _run_each(polygons, lambda arg, p: diagonal_record(arg, p, heuristic), human, as_json)
+    _run_each(polygons, lambda arg, p: diagonal_record(arg, p, heuristic), human, as_json,
+              lambda r: not r["inner"])
 
 
 @click.command(name="triangulate")
@@ -153,30 +213,38 @@ def diagonal(polygons: tuple[str, ...], heuristic: str | UserHeuristic, as_json:
 @call_timeout_option
 def triangulate_command(polygons: tuple[str, ...], algorithm: str,
                         heuristic: str | UserHeuristic, as_json: bool) -> None:
-    """Triangulate each POLYGON and verify the triangles exactly."""
+    """Triangulate each POLYGON and verify the triangles exactly.
+
+    Exit status 1 when a triangulation stopped early (a heuristic's wrong claim), 2 for bad
+    input (or ``--heuristic`` for an algorithm that takes none).
+    """
+    refuse_unused_heuristic(algorithm)
 
     def human(r: dict) -> str:
         n = len(r["triangles"])
+        count = f"{n} triangle" if n == 1 else f"{n} triangles"
         if r["valid"]:
-            return f"{r['polygon']}: {algorithm}: {n} triangles, valid"
-        return f"{r['polygon']}: {algorithm}: stopped after {n} triangles: {r['why']}"
+            return f"{r['polygon']}: {algorithm}: {count}, valid"
+        return f"{r['polygon']}: {algorithm}: stopped after {count}: {r['why']}"
 
     _run_each(polygons, lambda arg, p: triangulation_record(arg, p, algorithm, heuristic),
-              human, as_json, holes=True)
+              human, as_json, lambda r: not r["valid"], holes=True)
 
 
 @click.command(name="log")
-@click.argument("algorithm", type=click.Choice(list(names())))
+@click.argument("algorithm", type=ShortChoice(list(names()), "algorithm"))
 @click.argument("polygon")
 @click.option("--heuristic", type=HeuristicOrFile(), default="gravity", show_default=True,
               help="For divide-and-conquer: how each diagonal is found, a name or "
                    "FILE.py:FUNCTION of your own.")
 @click.option("-o", "--output", required=True, metavar="FILE.json", help="Where to write the log.")
+@call_timeout_option
 def log_command(algorithm: str, polygon: str, heuristic: str | UserHeuristic,
                 output: str) -> None:
     """Run ALGORITHM (a heuristic or a triangulation) on POLYGON and write its log as JSON."""
     from story.runs import record_run  # geometry and tracing only: no manim
 
+    refuse_unused_heuristic(algorithm)
     p = load_or_exit(polygon, holes=algorithm in HOLE_ALGORITHMS)
     named = heuristic.spec if isinstance(heuristic, UserHeuristic) else heuristic
     try:  # the very log a scene records for this run, so that it replays the same video

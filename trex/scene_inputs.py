@@ -20,6 +20,8 @@ from pathlib import Path
 from geometry.errors import GeometryError
 from geometry.triangulate import HOLE_ALGORITHMS
 from geometry.user_heuristics import is_user_spec
+from story.registry import spoken
+from story.scene_kinds import algorithm_of, heuristic_of, plays_several
 from trex.inputs import error_line, fail, load_or_exit
 
 
@@ -40,7 +42,7 @@ def load_scene(scene: str, command: str = "player", several_runs: bool = False) 
     if not (isinstance(cls, type) and issubclass(cls, TraceScene)):
         raise ValueError(f"{cls.__name__} does not play an algorithm's log; the {command} "
                          f"{'need' if plural else 'needs'} a TraceScene")
-    if getattr(cls, "runs", None) and not several_runs:
+    if plays_several(cls) and not several_runs:
         raise ValueError(f"{cls.__name__} plays several runs; the {command} "
                          f"{'step' if plural else 'steps'} through one (pick a scene of one "
                          "algorithm)")
@@ -81,7 +83,7 @@ def check_log(cls: type, log, scene: str | None = None) -> None:
     logged, plays, name = log.meta["algorithm"], cls.algorithm, scene or cls.__name__
     if not _same_algorithm(plays, logged):
         raise ValueError(f"is a log of {logged}, but {name} plays {plays}")
-    ran_with, wants = log.meta.get("heuristic"), getattr(cls, "heuristic", None)
+    ran_with, wants = log.meta.get("heuristic"), heuristic_of(cls)
     if ran_with and wants and ran_with != wants:
         raise ValueError(f"is a log of {logged} with {ran_with}, but {name} plays "
                          f"{plays} with {wants}")
@@ -132,13 +134,19 @@ def choose(scene: str, polygon: str | None, saved: str | None,
     except ValueError as exc:
         fail(f"{scene}: {exc}")
     if log is None and polygon is not None:  # holes only for a scene whose algorithm takes them
-        load_or_exit(polygon, holes=getattr(cls, "algorithm", None) in HOLE_ALGORITHMS)
+        load_or_exit(polygon, holes=algorithm_of(cls) in HOLE_ALGORITHMS)
     if log is not None:
         try:
             check_log(cls, log, scene)
         except ValueError as exc:
             fail(f"{saved_as}: {exc}")
     return Chosen(cls, log, saved, saved_as, polygon)
+
+
+def _said(log) -> str:
+    """The log's algorithm as the page says it: its spoken name (``Correct Scaling``), never
+    the command line's slug (issue 22)."""
+    return spoken(str(log.meta.get("algorithm")), start=True)
 
 
 def run_of(chosen: Chosen):
@@ -151,8 +159,8 @@ def run_of(chosen: Chosen):
             log = spec.log()
         except (GeometryError, ValueError, KeyError) as exc:
             fail(f"{spec.polygon}: {error_line(exc)}")
-        return spec, log, f"{log.meta.get('algorithm')} on {spec.polygon}"
+        return spec, log, f"{_said(log)} on {spec.polygon}"
     log = chosen.log
     return (spec.replaying(chosen.saved), log,
-            f"{log.meta.get('algorithm')} on {log.meta.get('polygon', '?')}, "
+            f"{_said(log)} on {log.meta.get('polygon', '?')}, "
             f"saved in {Path(chosen.saved).name}")

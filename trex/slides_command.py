@@ -27,7 +27,8 @@ from pathlib import Path
 import click
 
 from story.pseudocode import PANELS
-from trex.inputs import error_line, fail, load_or_exit
+from story.scene_kinds import plays_several
+from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 from trex.output_dir import build_guarded, built_beside, check_output
 
 MARKER = ".trex-slides"
@@ -62,6 +63,7 @@ def _report(slides: list, folder: Path, began: float) -> None:
 @click.option("--lecture", "lecture_dir", metavar="LDIR", default=None,
               help="lecture only: where `trex lecture` rendered its chapters, to reuse "
                    "(default media/lecture).")
+@call_timeout_option
 def slides(scene: str, polygon: str | None, saved: str | None, quality: str,
            panel: str | None, output: str, jobs: int | None, only: str | None,
            lecture_dir: str | None) -> None:
@@ -104,10 +106,10 @@ def _played(chosen, scene: str) -> tuple[type, str]:
     (as the player's), or all its runs, each on its own polygon."""
     from trex.scene_inputs import run_of
 
-    runs = getattr(chosen.cls, "runs", None)
-    if not runs:
+    if not plays_several(chosen.cls):
         spec, _, subtitle = run_of(chosen)
         return chosen.cls.with_spec(spec), subtitle
+    runs = chosen.cls.runs
     if chosen.saved is not None:
         fail(f"{chosen.saved_as}: {scene} plays {len(runs)} runs, each on its own polygon; a "
              "saved log is one run")

@@ -32,6 +32,7 @@ from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
+from story.scene_kinds import Handed, algorithm_of, plays_several
 from trex.graph_diff import report
 from trex.graph_format import SCHEMA, read_graph, to_json
 
@@ -202,12 +203,12 @@ def load_scene(scene: str) -> type:
 
 def takes_input(cls: type) -> bool:
     """Whether the scene is handed its run (this project's scenes), or is a plain Scene."""
-    return callable(getattr(cls, "handed", None))
+    return isinstance(cls, Handed)
 
 
 def plays_own_polygons(cls: type) -> bool:
     """A scene of several runs: each names its polygon, a handed one is not played."""
-    return bool(getattr(cls, "runs", None))
+    return plays_several(cls)
 
 
 def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = ()) -> type:
@@ -250,8 +251,7 @@ def _check_log(cls: type, path: str, runs: int) -> None:
 
     try:
         log = read_log(path)
-        if runs == 1 and not plays_own_polygons(cls) and isinstance(
-                getattr(cls, "algorithm", None), str):
+        if runs == 1 and not plays_own_polygons(cls) and algorithm_of(cls) is not None:
             check_log(cls, log)
     except ValueError as exc:
         raise SnapshotError(f"{path}: {exc}") from None

@@ -21,7 +21,7 @@ from pathlib import Path
 import click
 
 from geometry.errors import GeometryError
-from trex.inputs import error_line, fail, load_or_exit
+from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 
 EXIT_DIFFERS = 1
 
@@ -103,6 +103,7 @@ def _writable(path: str) -> None:
               help="Compare with the graph stored in FILE: exit 0 if equal, 1 with the "
                    "differences in words.")
 @click.option("--update", is_flag=True, help="With --check: rewrite FILE when it differs.")
+@call_timeout_option
 def snapshot(scene: str, polygon: str | None, logs: tuple[str, ...], output: str | None,
              check: str | None, update: bool) -> None:
     """Write the scene graph of SCENE (JSON; a dry run, no video), or --check it.

@@ -4,6 +4,7 @@ Run: ``manim -pql scenes/chapters/ch1_overview.py``; the whole lecture: ``trex l
 """
 
 from metaphors.lecture import Card, LectureScene, Run
+from story.registry import spoken
 
 
 class Overview(LectureScene):
@@ -14,11 +15,14 @@ class Overview(LectureScene):
         return (
             Card("Triangulating a simple polygon", (
                 "A simple polygon: its edges meet only where neighbours share a vertex.",
-                "A diagonal joins two vertices; an inner diagonal lies inside the polygon.",
-                "Every simple polygon with n vertices splits into exactly n − 2 triangles.")),
+                "A diagonal joins two vertices that are not neighbours.",
+                "An inner diagonal lies inside, touching the boundary only at its two ends.",
+                "n vertices: n − 2 triangles and n − 3 diagonals (angles: (n − 2) · 180°).")),
             Card("Lennes, 1911: divide and conquer", (
                 "Find an inner diagonal, split the polygon along it, repeat on both halves.",
+                "Each diagonal takes O(n) steps, and n − 3 are needed: O(n²) in all.",
                 "Everything hinges on one question: how do we find an inner diagonal?")),
-            Run("divide-and-conquer", None, "Lennes' divide and conquer (diagonals by gravity)",
+            Run("divide-and-conquer", None,
+                f"Lennes' divide and conquer (diagonals by {spoken('gravity')})",
                 heuristic="gravity", speed=0.6),
         )

@@ -4,7 +4,7 @@ Run: ``manim -pql scenes/chapters/ch2_heuristics.py``; the whole lecture: ``trex
 """
 
 from metaphors.lecture import Analysis, Card, LectureScene, Run
-from story.registry import entry
+from story.registry import SPOKEN, entry, spoken
 from story.runs import working_example
 
 #: The wrong heuristic of each metaphor: the card of its metaphor, and what its analysis says
@@ -34,13 +34,15 @@ def family_segments(family: tuple) -> tuple:
     known = entry(wrong)
     if known.correct or known.correction is None:
         raise ValueError(f"{wrong} is no wrong heuristic with a correction")
-    name, right = known.metaphor.capitalize(), known.correction
+    # each name said with its picture the first time (its card; the correction's run)
+    right, said = known.correction, SPOKEN[wrong]
     return (
-        Card(f"{name}: the metaphor", metaphor),
-        Run(wrong, working_example(wrong), f"{wrong} on a polygon where it happens to work"),
-        Run(wrong, "counterexample", f"{wrong} on the counterexample"),
+        Card(f"{said.name}: {said.picture}", metaphor),
+        Run(wrong, working_example(wrong), f"{spoken(wrong)} on a polygon where it happens to "
+            "work"),
+        Run(wrong, "counterexample", f"{spoken(wrong)} on the counterexample"),
         Analysis(wrong, "counterexample", fails=fails, holds=holds),
-        Run(right, "counterexample", f"{right}: the correction"),
+        Run(right, "counterexample", f"{spoken(right, first=True)}: the correction"),
     )
 
 
@@ -50,7 +52,7 @@ class Heuristics(LectureScene):
 
     def chapter_segments(self) -> tuple:
         frame = Card("The frame every heuristic shares", (
-            "B: the left-most vertex (lowest on ties) — always convex.",
+            "B: the left-most vertex (lowest on ties) — always convex: P lies to its right.",
             "A and C: its neighbours; T = triangle ABC.",
             "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate D: is BD?"))
         return (frame, *[s for family in FAMILIES for s in family_segments(family)])

@@ -14,8 +14,9 @@ class Gravity(LectureScene):
         return (
             Card("Gravity (Forišek and Steinová)", (
                 "Hang a ball on a rubber band at a reflex vertex V.",
-                "Turn the polygon so that both edges at V point up, and let the ball drop.",
-                "It hits an edge and slides down to a vertex X; the band may snag a vertex Y first.")),
+                "Turn P so that both edges at V point up and no edge is level; drop the ball.",
+                "It hits an edge and slides down to a vertex X; the band may snag a vertex Y.",
+                "Claim VY where the band snags, else VX: an inner diagonal either way.")),
             Run("gravity", "gravity-snag", "Gravity: the band snags a vertex"),
             Analysis("gravity", "gravity-snag", title="Gravity: why the band is always right",
                      holds="The band sweeps only the inside of P: it touches {pick} from "

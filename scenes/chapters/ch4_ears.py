@@ -13,7 +13,8 @@ class Ears(LectureScene):
     def chapter_segments(self) -> tuple:
         return (
             Card("Ears: slicing fruit", (
-                "An ear: three consecutive vertices whose triangle holds no other vertex.",
+                "An ear: a convex vertex V whose triangle V−1 V V+1 holds no other vertex,",
+                "so that V−1 V+1 is an inner diagonal.",
                 "Slice an ear off, put it on the plate, repeat until one triangle is left.")),
             Run("ear-clipping-naive", None, "Ear clipping (Meisters): slice the first ear found",
                 box=FRUIT_BOX, speed=0.6),

@@ -13,9 +13,9 @@ class Faster(LectureScene):
     def chapter_segments(self) -> tuple:
         return (
             Card("Garey, Johnson, Preparata, Tarjan (1978)", (
-                "Sweep a horizontal line downwards; classify each vertex.",
-                "Diagonals at split and merge vertices cut the polygon into y-monotone pieces.",
-                "A stack triangulates each piece in linear time: O(n log n) in all.")),
+                "Cut the polygon into y-monotone pieces in O(n log n);",
+                "a stack triangulates each piece in linear time: O(n log n) in all.",
+                "The sweep shown, with split and merge vertices, is the textbooks' later telling.")),
             Run("monotone", None, "Monotone partition, then the stack", speed=0.7),
             Card("Tarjan and van Wyk (1988)", (
                 "O(n log log n), with finger trees and Jordan sorting;",
@@ -24,7 +24,8 @@ class Faster(LectureScene):
                 "Linear time: O(n). Correct, celebrated — and famously hard to implement.",
                 "No implementation is known to be practical.")),
             Card("Constrained Delaunay", (
-                "Delaunay triangulation of the vertices, keeping the polygon's edges:",
-                "the reference triangulation libraries use (here: shapely / GEOS).")),
+                "It keeps the polygon's edges; each triangle's circumcircle holds no vertex",
+                "seen from inside the triangle. Our reference here: GEOS, through shapely.",
+                "(earcut, another library, clips ears instead.)")),
             Compare(None),
         )

@@ -19,7 +19,7 @@ class Experience(LectureScene):
             Card("Teaching notes: metaphors", (
                 "Water, a clock, a sweeping line: each wrong heuristic is a familiar motion.",
                 "Ask where the motion leaves the polygon — that is the bug.",
-                "The corrections keep the motion inside T and inside the polygon.")),
+                "The corrections move only inside T, up to the first candidate: inside P.")),
             Card("Teaching notes: from metaphor to proof", (
                 "Kinesthetic heuristics are fast to invent and easy to get wrong.",
                 "Ask for the invariant: what does the water, hand or line never cross?",

@@ -1,0 +1,67 @@
+"""The keys a log's calls refer to: one lookup for every reading of an argument or a result.
+
+A traced argument that is an object of the log is encoded as ``{"ref": key}``
+(:mod:`tracing.encoding`); the readings of the metaphors ask for it by the parameter's name.
+A log whose call lacks that parameter (a renamed one, a heuristic of one's own with other
+names, a hand-edited log) gets one clear line naming the function and the parameter, not a
+``KeyError`` from deep inside a scene.
+
+>>> from tracing import Event
+>>> call = Event(0, "call", "nearest_to", None, {"b": {"ref": "B"}, "k": 2}, call=0)
+>>> ref(call, "b")
+'B'
+>>> ref(call, "c")
+Traceback (most recent call last):
+...
+geometry.errors.LogFormatError: the log's call of nearest_to has no argument 'c'
+>>> ref(call, "k")
+Traceback (most recent call last):
+...
+geometry.errors.LogFormatError: the log's call of nearest_to: argument 'k' is not an object of the log
+"""
+
+from __future__ import annotations
+
+from geometry.errors import LogFormatError
+from tracing import Event
+
+
+def ref(call: Event, name: str) -> str:
+    """The key of the log's object that argument ``name`` of ``call`` refers to."""
+    return _key(arg(call, name), f"the log's call of {call.name}: argument {name!r}")
+
+
+def ref_list(call: Event, name: str) -> list[str]:
+    """The keys of the log's objects that argument ``name`` of ``call`` lists."""
+    value = arg(call, name)
+    what = f"the log's call of {call.name}: argument {name!r}"
+    if not isinstance(value, list):
+        raise LogFormatError(f"{what} is not a list")
+    return [_key(v, f"{what}: an item") for v in value]
+
+
+def arg(call: Event, name: str):
+    """Argument ``name`` of ``call`` as the log encodes it (a value, not an object)."""
+    args = call.args or {}
+    if name not in args:
+        raise LogFormatError(f"the log's call of {call.name} has no argument {name!r}")
+    return args[name]
+
+
+def result_ref(ret: Event) -> str:
+    """The key of the log's object a traced function returned."""
+    return _key(ret.result, f"the log's return of {ret.name}: its result")
+
+
+def result_refs(ret: Event) -> list[str]:
+    """The keys of the log's objects a traced function returned as a list."""
+    what = f"the log's return of {ret.name}: its result"
+    if not isinstance(ret.result, list):
+        raise LogFormatError(f"{what} is not a list")
+    return [_key(v, f"{what}: an item") for v in ret.result]
+
+
+def _key(value, what: str) -> str:
+    if isinstance(value, dict) and isinstance(value.get("ref"), str):
+        return value["ref"]
+    raise LogFormatError(f"{what} is not an object of the log")

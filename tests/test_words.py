@@ -1,0 +1,106 @@
+"""Issue 22 item 1, the taught words: the thesis's names from one table, crossings named by
+their edge, short numbers, the pseudocode naming the picture's own vertices, no code in a
+heuristic of one's own's captions — and the words rule of item 10 able to fail."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import tracing
+from geometry.diagonals import find_diagonal
+from geometry.polygon import Polygon
+from geometry.samples import make_sample
+from geometry.user_heuristics import load_user_heuristic, run_heuristic
+from story.registry import REGISTRY, SPOKEN, entry, spoken
+from story.runs import record_user_run
+from story.storyboard import pseudocode_of, run_vertices, spoken_pseudocode, storyboard
+from tests.reading_rules import unspoken_words
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+def _log(heuristic: str, sample: str) -> tracing.Log:
+    with tracing.record(algorithm=heuristic) as log:
+        find_diagonal(Polygon.from_points(make_sample(sample)), heuristic)
+    return log
+
+
+def test_every_algorithm_has_one_spoken_name_and_its_titles_use_it():
+    assert set(SPOKEN) == set(REGISTRY)
+    for name, said in SPOKEN.items():
+        assert "-" not in said.name and said.name != name, name  # no slug on screen
+        assert entry(name).title.startswith(spoken(name, start=True) + ": "), name
+    assert spoken("scaling-correct") == "Correct Scaling"
+    assert spoken("rotation", first=True) == "Rotation (the clock hand)"
+    assert spoken("gravity", first=True) == "Gravity (the ball on a rubber band)"
+
+
+def test_a_crossing_is_named_by_its_edge_not_its_coordinates():
+    verdict = storyboard(_log("scaling", "counterexample"))[-1]
+    assert verdict.caption == "✗ BD is not an inner diagonal: BD crosses edge E–A"
+    assert verdict.why.startswith("B–D crosses edge E–A at (")  # the command line's text stays
+
+
+def test_the_pseudocode_names_the_vertex_the_run_picked():
+    """Rotation the other way picks E on the twin: the lit row says E, not the screen's D."""
+    log = _log("rotation-ccw", "counterexample-twin")
+    assert run_vertices(log) == {"A": "A", "B": "B", "C": "C", "D": "E"}
+    rows = [step.text.strip() for step in spoken_pseudocode(log)]
+    assert "else: E = first hit of a hand at B set to C" in rows
+    assert "BE is an inner diagonal" in rows
+    assert not any("D" in row.split() or "BD" in row for row in rows), rows
+    assert [s.calls for s in spoken_pseudocode(log)] == [s.calls for s in pseudocode_of(log)]
+
+
+def test_the_pseudocode_keeps_its_placeholders_when_the_run_agrees():
+    log = _log("scaling", "counterexample")  # picks D: nothing to rename
+    assert spoken_pseudocode(log) == pseudocode_of(log)
+
+
+def test_a_heuristic_of_ones_own_is_captioned_in_words():
+    heuristic = load_user_heuristic(f"{EXAMPLES / 'nearest_to_c.py'}:nearest_to_c")
+    p = Polygon.from_points(make_sample("counterexample"))
+    captions = [b.caption for b in storyboard(record_user_run(heuristic, p, "counterexample"))]
+    steps = [c for c in captions if c.startswith("Distance to c for ")]
+    log = record_user_run(heuristic, p, "counterexample")
+    claimed = run_heuristic(p, heuristic)  # the pseudocode's D is the vertex it claims
+    assert claimed.u.label == "B" and run_vertices(log)["D"] == claimed.v.label
+    assert steps and all("_" not in c for c in captions), captions
+    assert not any(c.startswith("Triangle at") or "triangle_at" in c for c in captions)
+
+
+def _graph(*texts: str) -> dict:
+    """A scene graph holding these texts on screen, one subtitle each."""
+    return {"plays": [{"subcaption": None, "animations": [
+        {"type": "FadeIn", "mobject": {"name": "subtitle", "text": t, "fill_opacity": 1}}]}
+        for t in texts], "cues": []}
+
+
+@pytest.mark.parametrize(("text", "kind"), [
+    ("scaling on the counterexample", "slug"),
+    ("rotation-correct: the correction", "slug"),
+    ("nearest_to(B, [D, E]) → D", "code"),
+    ("[[12, 7, 8], [0, 1, 12]]", "code"),
+    ("trex hunt tried 35 polygons", "code"),
+    ("B–D crosses edge E–A at (2.86087, 6.36087)", "number"),
+])
+def test_the_words_rule_finds_slugs_code_and_long_numbers(text, kind):
+    assert unspoken_words(_graph(text)) == [f"{kind}: {text!r}"]
+
+
+def test_the_words_rule_passes_the_taught_words():
+    fine = ("Scaling (spilled water) on a polygon where it happens to work",
+            "Gravity: the ball falls until it hits the boundary", "BD crosses edge E–A",
+            "The diagonals cut the polygon into 3 y-monotone pieces", "distance 2.8")
+    assert unspoken_words(_graph(*fine)) == []
+
+
+def test_the_call_line_is_left_out_only_when_allowed():
+    data = {"plays": [{"subcaption": None, "animations": [{"type": "FadeIn", "mobject": {
+        "name": "panel:call", "text": "", "submobjects": [
+            {"name": "FlatText", "text": "nearest_to(B, [D, E]) → D", "fill_opacity": 1}]}}]}],
+        "cues": []}
+    assert unspoken_words(data, call_line=True) == []
+    assert unspoken_words(data) == ["code: 'nearest_to(B, [D, E]) → D'"]
