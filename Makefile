@@ -11,7 +11,7 @@ STAMP  := $(VENV)/.installed
 # plays the slides' H.264 clips; no browser is ever downloaded). The handout's font is DejaVu.
 DEB_PACKAGES := libpango1.0-dev pkg-config fonts-dejavu-core xdg-utils chromium
 
-.PHONY: demo test lint system-deps bench clean
+.PHONY: demo test test-fast lint system-deps bench clean
 
 demo: $(STAMP)
 	$(BIN)/manim -ql --disable_caching scenes/gravity.py Gravity
@@ -21,6 +21,12 @@ test: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/lint-imports
 	$(BIN)/python -m pytest -n 2
+
+# The edit-test loop: the tracing, geometry and story tests only (tests/conftest.py's --fast
+# picks them by what they import), without the hypothesis sweeps, under a minute; `make test`
+# stays the whole suite.
+test-fast: $(STAMP)
+	$(BIN)/python -m pytest -n 2 -q --fast
 
 lint: $(STAMP)
 	$(BIN)/ruff check .

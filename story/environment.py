@@ -1,5 +1,4 @@
-"""The one module that reads the environment: ``TREX_POLYGON``, ``TREX_LOG`` and
-``TREX_CALL_TIMEOUT``.
+"""The one module that reads the environment: ``TREX_POLYGON`` and ``TREX_LOG``.
 
 ``manim -pql scenes/x.py`` cannot pass a scene anything but the environment, so a scene
 handed no :class:`~story.spec.RunSpec` builds its own here: its default run, on
@@ -9,9 +8,8 @@ if set — the saved log wins, as it has its own polygon. A scene of several run
 ``TREX_POLYGON`` (its runs name their own polygons). A variable set to the empty string
 counts as unset. ``trex`` commands read the environment through here too, where they
 document it (``trex player`` without ``--polygon`` or ``--log``, say); nothing else in
-the library looks at ``os.environ``. ``TREX_CALL_TIMEOUT`` is how a command hands its
-``--call-timeout`` to the processes it starts (a lecture's chapters): the seconds a function
-of one's own may run (0: no limit).
+the library looks at ``os.environ``. (A command hands the processes it starts their
+settings as named options, not variables: ``trex chapter --call-timeout``.)
 
 >>> from story.spec import RunSpec
 >>> default = RunSpec("gravity", "gravity-snag")
@@ -31,51 +29,13 @@ from dataclasses import replace
 
 from story.spec import RunSpec
 
-__all__ = ["CALL_TIMEOUT", "LOG", "POLYGON", "call_timeout_from_environment", "child_environment",
-           "environment_values", "spec_from_environment", "specs_from_environment"]
+__all__ = ["LOG", "POLYGON", "environment_values", "spec_from_environment",
+           "specs_from_environment"]
 
 #: The polygon a scene runs on (a file or a sample name).
 POLYGON = "TREX_POLYGON"
 #: A saved log to replay (several, joined with ``os.pathsep``, for a scene of several runs).
 LOG = "TREX_LOG"
-
-
-#: The time limit on a function of one's own, in seconds, handed to a process started by a
-#: command (its ``--call-timeout``).
-CALL_TIMEOUT = "TREX_CALL_TIMEOUT"
-
-
-def call_timeout_from_environment(environ: Mapping[str, str] | None = None) -> float | None:
-    """The seconds ``TREX_CALL_TIMEOUT`` gives (0: no limit), None when unset. Raises
-    ValueError (one line) for a value that is not a number of seconds.
-
-    >>> call_timeout_from_environment({"TREX_CALL_TIMEOUT": "0.5"}), call_timeout_from_environment({})
-    (0.5, None)
-    >>> call_timeout_from_environment({"TREX_CALL_TIMEOUT": "soon"})
-    Traceback (most recent call last):
-    ...
-    ValueError: TREX_CALL_TIMEOUT='soon': not a number of seconds
-    """
-    value = (os.environ if environ is None else environ).get(CALL_TIMEOUT)
-    if not value:
-        return None
-    try:
-        seconds = float(value)
-    except ValueError:
-        seconds = -1.0
-    if not seconds >= 0:  # negative or NaN
-        raise ValueError(f"{CALL_TIMEOUT}={value!r}: not a number of seconds")
-    return seconds
-
-
-def child_environment(call_timeout: float | None) -> dict[str, str]:
-    """The environment of a process a command starts: ours, with ``TREX_CALL_TIMEOUT`` set to
-    the command's limit (None: no limit, said as 0).
-
-    >>> child_environment(2.5)[CALL_TIMEOUT], child_environment(None)[CALL_TIMEOUT]
-    ('2.5', '0')
-    """
-    return {**os.environ, CALL_TIMEOUT: f"{call_timeout or 0:g}"}
 
 
 def environment_values(environ: Mapping[str, str] | None = None) -> dict[str, str]:

@@ -133,7 +133,7 @@ def test_every_command_running_ones_own_takes_call_timeout(looping, tmp_path, co
 
 
 def test_a_lectures_chapters_get_its_call_timeout(looping, tmp_path):
-    """`trex lecture --call-timeout` reaches the chapter's own process (TREX_CALL_TIMEOUT)."""
+    """`trex lecture --call-timeout` reaches the chapter's own process (trex chapter --call-timeout)."""
     scene = tmp_path / "looping_scene.py"
     scene.write_text(textwrap.dedent(f"""
         from metaphors.scene import scene_for_heuristic

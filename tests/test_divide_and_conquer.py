@@ -110,6 +110,12 @@ def test_unknown_algorithm():
 
 
 def test_every_heuristic_name_is_usable():
+    """Each name runs its own heuristic, once per diagonal (no other heuristic, no default),
+    and on the lecture's polygon every one of them triangulates it."""
     p = Polygon.from_points(make_sample("lecture"))
     for heuristic in HEURISTICS:
-        triangulate(p, "divide-and-conquer", heuristic)
+        with tracing.record() as log:
+            result = triangulate(p, "divide-and-conquer", heuristic)
+        called = [e.name for e in log.events if e.kind == "call" and e.name in HEURISTICS]
+        assert called == [heuristic] * (p.n - 3), heuristic
+        assert result.valid and verify_triangulation(p, result.triangles), heuristic

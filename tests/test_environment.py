@@ -12,7 +12,6 @@ from click.testing import CliRunner
 
 from geometry.user_heuristics import call_timeout, set_call_timeout
 from story.environment import (
-    CALL_TIMEOUT,
     LOG,
     POLYGON,
     environment_values,
@@ -20,7 +19,8 @@ from story.environment import (
     specs_from_environment,
 )
 from story.spec import RunSpec
-from trex import lecture_command, render_command
+from trex import chapter_pool, chapters, render_command
+from trex.chapter_command import chapter
 from trex.cli import main
 from trex.render_command import load_scene_class, scene_input
 
@@ -171,14 +171,17 @@ def test_a_lecture_chapter_gets_the_polygon_as_an_argument(tmp_path, environment
         def __init__(self, command, **kwargs):
             started.update(command=command, kwargs=kwargs)
 
-    environment.setattr(lecture_command.subprocess, "Popen", Process)
-    chapter = lecture_command.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
+    environment.setattr(chapter_pool.subprocess, "Popen", Process)
+    one = chapters.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
     before = call_timeout()
     set_call_timeout(2.5)  # as the lecture's --call-timeout 2.5 sets it
     try:
-        lecture_command._start(0, chapter, tmp_path, tmp_path, "l", "star")
+        chapter_pool._start(0, one, tmp_path, tmp_path, "l", "star")
     finally:
         set_call_timeout(before)
-    assert started["command"][-3:] == ["l", "star", ""]  # quality, polygon, panel (none)
-    # the child inherits ours, untouched but for the time limit on functions of one's own
-    assert started["kwargs"]["env"] == {**os.environ, CALL_TIMEOUT: "2.5"}
+    assert started["command"][2:4] == ["trex", "chapter"]
+    given = chapter.make_context("chapter", started["command"][4:]).params
+    assert (given["quality"], given["polygon"], given["panel"]) == ("l", "star", None)
+    # the lecture's time limit on functions of one's own is a named option, not a variable
+    assert started["command"][-1] == "--call-timeout=2.5"
+    assert "env" not in started["kwargs"]  # the child inherits ours, untouched

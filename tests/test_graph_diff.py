@@ -9,10 +9,12 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from trex.graph_diff import differences, report
+from trex import graph_diff
+from trex.graph_diff import differences, malformed, report
 
-GRAVITY = (Path(__file__).parent / "__snapshots__" / "test_scenes"
-           / "test_scene_graph_matches_snapshot[gravity.Gravity].json")
+SNAPSHOTS = Path(__file__).parent / "__snapshots__"
+GRAVITY = SNAPSHOTS / "test_scenes" / "test_scene_graph_matches_snapshot[gravity.Gravity].json"
+FALLBACK = "graph is not a scene graph ("
 
 
 def line(name="claim", stroke="#83C167", points=((0.0, 0.0, 0.0), (1.0, 0.0, 0.0))):
@@ -153,6 +155,7 @@ def test_any_change_to_a_real_graph_is_reported(path, cut, value):
     node[path[-1]] = value
     found = differences(old, new)
     assert found and all(len(line) < 400 for line in found), (path, found)
+    assert (FALLBACK in found[0]) == (malformed(new) is not None), (path, found)
 
 
 @pytest.mark.parametrize("cut", [0, 5, 23])
@@ -162,3 +165,37 @@ def test_a_removed_play_of_a_real_graph_is_one_line(cut):
     del new["plays"][cut]
     found = differences(old, new)
     assert found[0].startswith(f"play {cut + 1} removed: "), found
+
+
+def test_every_stored_graph_is_shaped_as_the_format_says():
+    stored = sorted(SNAPSHOTS.rglob("*.json"))
+    assert stored
+    assert [(p.name, malformed(json.loads(p.read_text()))) for p in stored] == [
+        (p.name, None) for p in stored]
+
+
+def test_a_malformed_graph_is_compared_field_by_field_and_says_so():
+    old = graph(play(create(line()), run_time=1.0))
+    new = copy.deepcopy(old)
+    new["plays"][0]["run_time"] = 1.5
+    new["plays"][0]["animations"][0]["mobject"]["points"] = [[0.0, 0.0]]
+    assert differences(old, new) == [
+        "the new graph is not a scene graph (plays[0].animations[0].mobject.points is not a "
+        "list of [x, y, z]): compared field by field",
+        "plays[0].animations[0].mobject.points: [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]] → "
+        "[[0.0, 0.0]]",
+        "plays[0].run_time: 1.0 → 1.5"]
+    assert differences(new, old)[0].startswith("the stored graph is not a scene graph (")
+
+
+def test_a_bug_in_the_comparison_is_not_hidden(monkeypatch):
+    """Two well-formed graphs: an error inside the comparison raises, rather than turning
+    into a field-by-field diff that looks like an answer."""
+    def broken(old, new):
+        raise TypeError("a bug in the differ")
+
+    monkeypatch.setattr(graph_diff, "_play_changes", broken)
+    old = graph(play(create(line())))
+    new = graph(play(create(line(stroke="#FC6255"))))
+    with pytest.raises(TypeError, match="a bug in the differ"):
+        differences(old, new)

@@ -33,7 +33,7 @@ from tests.reading_rules import (
     unreadable_cues,
     unspoken_words,
 )
-from trex import assemble, lecture_command
+from trex import assemble, chapter_pool, lecture_command
 from trex.cli import main
 from trex.render_command import load_scene_class
 
@@ -69,7 +69,7 @@ BROKEN = textwrap.dedent("""
 
 
 @dataclass(frozen=True)
-class Chapter:  # the shape of trex.lecture_command.Chapter
+class Chapter:  # the shape of trex.chapters.Chapter
     number: int
     slug: str
     title: str
@@ -235,7 +235,7 @@ def test_parallel_gives_the_same_lecture(serial, parallel, tmp_path):
 
 
 def test_bad_polygon_exits_2_before_rendering(tmp_path, monkeypatch):
-    monkeypatch.setattr(lecture_command, "_start", lambda *a: pytest.fail("rendered"))
+    monkeypatch.setattr(chapter_pool, "_start", lambda *a: pytest.fail("rendered"))
     bad = tmp_path / "bowtie.json"
     bad.write_text("[[0,0],[2,2],[2,0],[0,2]]")
     out = tmp_path / "out" / "lecture"
@@ -248,7 +248,7 @@ def test_bad_polygon_exits_2_before_rendering(tmp_path, monkeypatch):
 
 
 def test_polygon_an_algorithm_rejects_exits_2_before_rendering(tmp_path, monkeypatch):
-    monkeypatch.setattr(lecture_command, "_start", lambda *a: pytest.fail("rendered"))
+    monkeypatch.setattr(chapter_pool, "_start", lambda *a: pytest.fail("rendered"))
     code, _, stderr = run("lecture", "--polygon", "triangle", "--chapters", "polygon,scaling",
                           "-o", str(tmp_path / "lecture"))
     assert code == 2
@@ -383,7 +383,7 @@ def no_rendering(monkeypatch):
         built.append([c.slug for c in chapters])
         return out_dir / "lecture.mp4", 1.0
 
-    monkeypatch.setattr(lecture_command, "_start", lambda *a: pytest.fail("rendered"))
+    monkeypatch.setattr(chapter_pool, "_start", lambda *a: pytest.fail("rendered"))
     monkeypatch.setattr(lecture_command, "build_lecture", fake)
     return built
 
@@ -441,7 +441,7 @@ def _chapter_class(chapter):
 
 
 def _chapters():
-    from trex.lecture_command import lecture_chapters
+    from trex.chapters import lecture_chapters
 
     return [pytest.param(c, id=c.slug) for c in lecture_chapters()]
 
@@ -485,7 +485,7 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     from geometry.user_heuristics import load_user_heuristic, run_heuristic
     from metaphors.lecture import Hunted
     from story.hunt import hunt, in_general_position
-    from trex.lecture_command import lecture_chapters
+    from trex.chapters import lecture_chapters
     from trex.snapshot import build
 
     chapter = next(c for c in lecture_chapters() if c.slug == "exercises")

@@ -19,7 +19,7 @@ from story.pseudocode import PANELS, Step, from_docstring, lit_row, to_json
 from story.registry import REGISTRY, entry, heuristics, names
 from story.runs import run_logged
 from story.storyboard import pseudocode_of
-from trex import lecture_command, player_steps, render_command
+from trex import chapter_command, chapter_pool, chapters, player_steps, render_command
 from trex.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -329,18 +329,19 @@ def test_a_lecture_chapter_gets_the_panel_as_an_argument(tmp_path, monkeypatch):
         def __init__(self, command, **kwargs):
             started["command"] = command
 
-    monkeypatch.setattr(lecture_command.subprocess, "Popen", Process)
-    chapter = lecture_command.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
-    lecture_command._start(0, chapter, tmp_path, tmp_path, "l", None, "source")
-    assert started["command"][-3:] == ["l", "", "source"]
+    monkeypatch.setattr(chapter_pool.subprocess, "Popen", Process)
+    chapter = chapters.Chapter(1, "gravity", "Gravity", "scenes/gravity.py", None)
+    chapter_pool._start(0, chapter, tmp_path, tmp_path, "l", None, "source")
+    given = chapter_command.chapter.make_context("chapter", started["command"][4:]).params
+    assert (given["quality"], given["polygon"], given["panel"]) == ("l", None, "source")
     seen = {}
 
     def fake_render(cls, output, *args, **kwargs):
         seen["panel"] = cls.panel
         return output
 
-    monkeypatch.setattr(lecture_command, "render_into", fake_render)
-    code = lecture_command.render_chapter(str(ROOT / "scenes" / "gravity.py"), "",
+    monkeypatch.setattr(chapter_command, "render_into", fake_render)
+    code = chapter_command.render_chapter(str(ROOT / "scenes" / "gravity.py"), "",
                                           str(tmp_path / "g.mp4"), "l", "", "source")
     assert code == 0 and seen == {"panel": "source"}
 

@@ -9,7 +9,9 @@ from metaphors.catalog import beats as storyboard
 from story.runs import run_logged
 from tests.test_lecture import frame_sums
 from tests.test_slides import page_data, run
-from trex import lecture_command
+from trex import chapter_pool
+from trex.chapter_command import render_settings
+from trex.chapters import pick_chapters, scene_path
 from trex.clips import marks_path, read_marks
 from trex.slides_command import reusable
 
@@ -63,7 +65,7 @@ def test_the_chapters_of_trex_lecture_are_reused(rendered, chapters, tmp_path, m
     assert code == 0, stderr
     videos = sorted((lecture / "chapters").glob("*.mp4"))
     assert all(marks_path(v).is_file() for v in videos)  # trex lecture keeps the marks
-    monkeypatch.setattr(lecture_command, "render_chapters",
+    monkeypatch.setattr(chapter_pool, "render_chapters",
                         lambda *a, **k: pytest.fail("rendered again"))
     out = tmp_path / "slides"
     code, stdout, stderr = run("slides", "lecture", "--chapters", chapters, "--lecture",
@@ -80,9 +82,8 @@ def test_a_chapter_made_otherwise_is_not_reused(rendered, chapters, tmp_path):
     code, _, stderr = run("lecture", "--chapters", "polygon", "-o", str(lecture))
     assert code == 0, stderr
     video = next((lecture / "chapters").glob("*.mp4"))
-    chapter = lecture_command.pick_chapters("polygon", ())[0]
-    settings = lecture_command.render_settings(str(lecture_command.scene_path(chapter)),
-                                               chapter.scene_class, "l", None, None)
+    chapter = pick_chapters("polygon", ())[0]
+    settings = render_settings(str(scene_path(chapter)), chapter.scene_class, "l", None, None)
     assert reusable(video, settings) == read_marks(video)
     assert reusable(video, {**settings, "quality": "m"}) is None
     assert reusable(video, {**settings, "polygon": "star"}) is None

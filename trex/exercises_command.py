@@ -17,7 +17,8 @@ import click
 from geometry.io import write_atomic
 from story.exercises import answers_markdown, make_exercises
 from trex.inputs import error_line, fail
-from trex.render_command import EXIT_FAILED, EXIT_SIGNAL, Interrupted, interrupts_raise, render_into
+from trex.render_command import EXIT_FAILED, render_into
+from trex.signals import EXIT_SIGNAL, Interrupted, interrupts_raise
 
 STILL_QUALITY = "medium_quality"
 ANSWERS = "answers.md"

@@ -166,21 +166,15 @@ class Difference:
 def _points_change(old: list, new: list) -> str:
     if len(old) != len(new):
         return f"{len(old)} → {len(new)} points"
-    try:
-        moved = max((abs(a - b) for p, q in zip(old, new, strict=True)
-                     for a, b in zip(p, q, strict=True)), default=0.0)
-    except (TypeError, ValueError):
-        return "points changed"
+    moved = max((abs(a - b) for p, q in zip(old, new, strict=True)
+                 for a, b in zip(p, q, strict=True)), default=0.0)
     return f"points moved by up to {moved:.3g}"
 
 
 def _box_change(old: Any, new: Any) -> str:
-    if not (isinstance(old, list) and isinstance(new, list) and len(old) == len(new) == 4):
+    if old is None or new is None:  # a text-like mobject has a box (malformed() checks it)
         return f"box {_value(old)} → {_value(new)}"
-    try:
-        moved = max(abs(a - b) for a, b in zip(old, new, strict=True))
-    except TypeError:
-        return f"box {_value(old)} → {_value(new)}"
+    moved = max(abs(a - b) for a, b in zip(old, new, strict=True))
     return f"box moved by up to {moved:.3g}"
 
 
@@ -445,16 +439,80 @@ def _grouped(found: Iterable[Difference]) -> list[str]:
 def differences(old: dict, new: dict) -> list[str]:
     """Every difference from the graph ``old`` (stored, expected) to ``new`` (built), in words;
     empty when they are equal. A graph not shaped as docs/scene-graph.md says (a file edited by
-    hand) is compared field by field instead: ``plays[3].run_time: 1.0 → 1.5``."""
+    hand; :func:`malformed`) is compared field by field instead, after a first line saying so:
+    ``plays[3].run_time: 1.0 → 1.5``. Any other failure here is a bug, and raises."""
     if old == new:
         return []
-    try:
-        lines = _grouped(_differences(old, new))
-    except (AttributeError, TypeError, KeyError, ValueError):
-        lines = list(_paths(old, new, ""))
-    if not lines:  # nothing named it: say so rather than call them equal
-        lines = list(_paths(old, new, "")) or ["the graphs differ"]
+    for which, graph in (("stored", old), ("new", new)):
+        problem = malformed(graph)
+        if problem is not None:
+            return [f"the {which} graph is not a scene graph ({problem}): compared field by "
+                    "field", *_paths(old, new, "")]
+    lines = _grouped(_differences(old, new))
+    if not lines:
+        raise RuntimeError("trex.graph_diff named no difference between unequal graphs (a bug)")
     return lines
+
+
+# --- the shape the comparison reads (docs/scene-graph.md) -------------------------------------
+
+
+def malformed(graph: Any) -> str | None:
+    """Where ``graph`` is not shaped as docs/scene-graph.md says, in a few words; None when it
+    is. Only the parts the comparison reads are checked: the lists of plays, animations and
+    mobjects, and the numbers of points and boxes.
+
+    >>> malformed({"plays": [{"animations": [{"mobject": {"points": [[0, 1]]}}]}]})
+    'plays[0].animations[0].mobject.points is not a list of [x, y, z]'
+    >>> malformed({"plays": [], "final": [{"type": "Dot", "box": None, "points": []}]}) is None
+    True
+    """
+    if not isinstance(graph, dict):
+        return "not an object"
+    return (_listed(graph, "plays", "", _play_shape)
+            or _listed(graph, "final", "", _mobject_shape))
+
+
+def _listed(node: dict, key: str, where: str, shape: Any) -> str | None:
+    """``node[key]``, if there, as a list whose items have ``shape``."""
+    if key not in node:
+        return None
+    at = f"{where}.{key}" if where else key
+    if not isinstance(node[key], list):
+        return f"{at} is not a list"
+    return next((p for k, item in enumerate(node[key])
+                 if (p := shape(item, f"{at}[{k}]")) is not None), None)
+
+
+def _play_shape(node: Any, where: str) -> str | None:
+    if not isinstance(node, dict):
+        return f"{where} is not an object"
+    return _listed(node, "animations", where, _animation_shape)
+
+
+def _animation_shape(node: Any, where: str) -> str | None:
+    if not isinstance(node, dict):
+        return f"{where} is not an object"
+    for part in ("mobject", "target"):
+        if part in node and (problem := _mobject_shape(node[part], f"{where}.{part}")):
+            return problem
+    return _listed(node, "animations", where, _animation_shape)
+
+
+def _numbers(value: Any, count: int) -> bool:
+    return (isinstance(value, list) and len(value) == count
+            and all(isinstance(v, int | float) and not isinstance(v, bool) for v in value))
+
+
+def _mobject_shape(node: Any, where: str) -> str | None:
+    if not isinstance(node, dict):
+        return f"{where} is not an object"
+    points = node.get("points", [])
+    if not (isinstance(points, list) and all(_numbers(p, 3) for p in points)):
+        return f"{where}.points is not a list of [x, y, z]"
+    if node.get("box") is not None and not _numbers(node["box"], 4):
+        return f"{where}.box is not [x0, y0, x1, y1]"
+    return _listed(node, "submobjects", where, _mobject_shape)
 
 
 def _differences(old: dict, new: dict) -> list[Difference]:

@@ -14,12 +14,13 @@ import contextlib
 import os
 import shutil
 import tempfile
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 
 import click
 
 from trex.inputs import error_line, make_parent
+from trex.signals import EXIT_SIGNAL, Interrupted, interrupts_raise
 
 EXIT_FAILED = 1
 
@@ -35,20 +36,40 @@ def check_output(target: Path, marker: str, earlier: str) -> None:
     make_parent(target)
 
 
-def move_into_place(built: Path, target: Path) -> None:
-    """Put the finished directory at ``target``; an earlier one there is removed after."""
+def move_into_place(built: Path, target: Path, entries: Sequence[str] | None = None) -> None:
+    """Put the finished directory ``built`` at ``target``.
+
+    When ``target`` does not exist yet, or ``entries`` is None, the whole directory: an
+    earlier ``target`` is removed after (and put back if the move fails). Else only the
+    ``entries`` of ``built`` move into the existing ``target``, each replacing its namesake
+    (``trex lecture``: files of the user's in the directory stay). Call with signals held
+    (:func:`trex.signals.signals_held`) when the moves must happen together.
+    """
     if not target.exists():
         os.replace(built, target)
         return
     old = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".old", dir=target.parent))
-    os.replace(target, old / "earlier")
     try:
-        os.replace(built, target)
-    except OSError:
-        os.replace(old / "earlier", target)  # put the earlier one back
-        raise
+        for name in (None,) if entries is None else entries:
+            _replace(built if name is None else built / name,
+                     target if name is None else target / name, old)
     finally:
         shutil.rmtree(old, ignore_errors=True)
+
+
+def _replace(new: Path, target: Path, old: Path) -> None:
+    """``os.replace(new, target)``; a directory at ``target`` (which ``os.replace`` cannot
+    overwrite unless empty) is first moved into ``old``, and put back if the move fails."""
+    if not target.is_dir():
+        os.replace(new, target)
+        return
+    aside = old / target.name  # the entries' names differ: one each
+    os.replace(target, aside)
+    try:
+        os.replace(new, target)
+    except OSError:
+        os.replace(aside, target)
+        raise
 
 
 @contextlib.contextmanager
@@ -69,8 +90,6 @@ def built_beside(target: Path, marker: str, written_by: str) -> Iterator[Path]:
 def build_guarded(label: str, output: str, what: str, build: Callable[[], Path]) -> Path:
     """``build()``, with Ctrl-C and SIGTERM raising (its cleanup runs) and any failure one
     line: ``error: LABEL: WHAT failed: …`` and exit 1, or exit 128 + the signal."""
-    from trex.render_command import EXIT_SIGNAL, Interrupted, interrupts_raise
-
     with interrupts_raise() as signals:
         try:
             done = build()

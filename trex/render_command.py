@@ -18,11 +18,9 @@ import contextlib
 import importlib.util
 import os
 import shutil
-import signal
 import sys
 import tempfile
-import threading
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from pathlib import Path
 
 import click
@@ -48,6 +46,7 @@ from trex.inputs import (
     load_run,
     make_parent,
 )
+from trex.signals import Interrupted, Signals, interrupts_raise
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 #: The project's manim settings, which plain ``manim`` reads when run from the repository
@@ -58,17 +57,6 @@ EXIT_FAILED = exit_status.FINDING
 #: x264's options, as manim.cfg sets them for ``manim`` itself: one thread and no macroblock
 #: tree, so that the same input gives the same video, byte for byte (see manim.cfg)
 X264_OPTIONS = {"threads": "1", "x264-params": "mbtree=0"}
-EXIT_SIGNAL = exit_status.SIGNALLED  # + the signal's number, as a shell reports it
-
-
-class Interrupted(KeyboardInterrupt):
-    """Ctrl-C or SIGTERM during a render (``signum`` says which)."""
-
-    def __init__(self, signum: int = signal.SIGINT) -> None:
-        super().__init__(signal.Signals(signum).name)
-        self.signum = signum
-
-
 # --- finding the scene (no manim) ----------------------------------------------------------------
 
 
@@ -210,71 +198,6 @@ def scene_input(cls: type, polygon: str | None, panel: str | None = None,
 
 
 # --- rendering --------------------------------------------------------------------------------------
-
-
-class Signals:
-    """What :func:`interrupts_raise` has seen: ``signum`` of the first SIGINT/SIGTERM, or None."""
-
-    def __init__(self) -> None:
-        self.signum: int | None = None
-        self.done = False  # the output is in place: a signal now interrupts nothing
-        self.deferring = 0  # inside :meth:`deferred`: a signal is noted, raised at its end
-
-    def check(self) -> None:
-        """Raise :class:`Interrupted` if a signal came (its exception may have been swallowed
-        where Python ignores exceptions, such as a finalizer: this is the second chance)."""
-        if self.signum is not None and not self.done:
-            raise Interrupted(self.signum)
-
-    @contextlib.contextmanager
-    def deferred(self) -> Iterator[None]:
-        """A signal during the block raises at its end, not inside it. (Blocking the signal in
-        the main thread would not do: the kernel hands it to another thread, and Python still
-        runs the handler in the main thread at once.)"""
-        self.deferring += 1
-        try:
-            yield
-        finally:
-            self.deferring -= 1
-            if not self.deferring:
-                self.check()  # a signal came: interrupted, even if the block failed too
-
-
-@contextlib.contextmanager
-def interrupts_raise() -> Iterator[Signals]:
-    """SIGINT and SIGTERM raise :class:`Interrupted` (so cleanup runs) while inside; later
-    signals are only recorded, so the cleanup is not interrupted in turn."""
-    seen = Signals()
-    if threading.current_thread() is not threading.main_thread():
-        yield seen
-        return
-
-    def handler(signum, _frame):
-        if seen.signum is None:
-            seen.signum = signum
-            if not seen.done and not seen.deferring:
-                raise Interrupted(signum)
-
-    previous = {s: signal.signal(s, handler) for s in (signal.SIGINT, signal.SIGTERM)}
-    try:
-        yield seen
-    finally:
-        for s, h in previous.items():
-            signal.signal(s, h)
-
-
-@contextlib.contextmanager
-def _signals_held() -> Iterator[None]:
-    """SIGINT and SIGTERM wait (blocked) until the block ends: the moves happen together."""
-    held = {signal.SIGINT, signal.SIGTERM}
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    before = signal.pthread_sigmask(signal.SIG_BLOCK, held)
-    try:
-        yield
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, before)
 
 
 def _artifact(scene, fmt: str, media: Path) -> Path:

@@ -10,7 +10,7 @@ it rendered (:mod:`metaphors.steps`, :mod:`trex.clips`): DIR gets ``index.html``
 ``trex slides lecture [-j N] [--chapters …] [--polygon P] [--lecture LDIR] -o DIR`` does
 the same for the lecture, one source per chapter. A chapter rendered already by
 ``trex lecture`` into LDIR (default ``media/lecture``) is reused when its step marks say it
-was made with the same settings and code (:func:`trex.lecture_command.render_settings`);
+was made with the same settings and code (:func:`trex.chapter_command.render_settings`);
 the others are rendered as ``trex lecture`` renders them, ``-j`` at a time.
 
 DIR is built beside itself and renamed into place; an existing DIR is replaced only if it
@@ -141,29 +141,30 @@ def _scene_slides(cls: type, quality: str, subtitle: str, target: Path) -> list:
 
 def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: str | None,
              only: str | None, lecture_dir: Path | None) -> None:
-    from trex import lecture_command as lc
+    from trex import chapters as ch
+    from trex.lecture_join import DEFAULT_DIR
 
     try:
-        chapters = lc.lecture_chapters()
+        chapters = ch.lecture_chapters()
     except Exception as exc:  # the chapter list itself is broken
-        lc.chapter_failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
+        ch.chapter_failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
     if only is not None:
         try:
-            chapters = lc.pick_chapters(only, chapters)
+            chapters = ch.pick_chapters(only, chapters)
         except ValueError as exc:
             fail(f"--chapters {only}: {exc}")
     if not chapters:
-        lc.chapter_failed("the lecture has no chapters")
+        ch.chapter_failed("the lecture has no chapters")
     try:
         check_output(target, MARKER, "earlier slides")
     except ValueError as exc:
         fail(f"{target}: {exc}")
     try:
-        lc.check_chapters(chapters, polygon)
-    except lc.ChapterFailed as exc:
-        lc.chapter_failed(str(exc))
+        ch.check_chapters(chapters, polygon)
+    except ch.ChapterFailed as exc:
+        ch.chapter_failed(str(exc))
     began = time.monotonic()
-    where = lecture_dir if lecture_dir is not None else lc.DEFAULT_DIR
+    where = lecture_dir if lecture_dir is not None else DEFAULT_DIR
     shown = build_guarded(LECTURE, str(target), "slides",
                           lambda: _lecture_slides(chapters, target, quality, jobs, polygon,
                                                   panel, where))
@@ -203,35 +204,39 @@ def _source(video: Path, marks, chapter):
 
 def _lecture_slides(chapters, target: Path, quality: str, jobs: int, polygon: str | None,
                     panel: str | None, lecture_dir: Path) -> list:
-    from trex import lecture_command as lc
+    from trex import chapter_pool
     from trex.assemble import probe
+    from trex.chapter_command import render_settings
+    from trex.chapters import chapter_label, chapter_stem, scene_path
     from trex.clips import read_marks
+    from trex.lecture_join import CHAPTER_DIR
     from trex.slides_build import build_slides
 
     with built_beside(target, MARKER, "trex slides") as built:
         sources: list = [None] * len(chapters)
         missing = []
         for k, chapter in enumerate(chapters):
-            video = lecture_dir / lc.CHAPTER_DIR / f"{lc.chapter_stem(chapter)}.mp4"
-            settings = lc.render_settings(str(lc.scene_path(chapter)), chapter.scene_class,
-                                          quality, polygon, panel)
+            video = lecture_dir / CHAPTER_DIR / f"{chapter_stem(chapter)}.mp4"
+            settings = render_settings(str(scene_path(chapter)), chapter.scene_class,
+                                       quality, polygon, panel)
             marks = reusable(video, settings)
             if marks is None:
                 missing.append(k)
             else:
                 sources[k] = _source(video, marks, chapter)
-                click.echo(f"{lc.chapter_label(k, len(chapters), chapter)}: reused {video}")
+                click.echo(f"{chapter_label(k, len(chapters), chapter)}: reused {video}")
         renders, logs = built / "render", built / "logs"
         renders.mkdir()
         logs.mkdir()
 
         def done(k, chapter, video, seconds):
-            click.echo(f"{lc.chapter_label(missing[k], len(chapters), chapter)}: "
+            click.echo(f"{chapter_label(missing[k], len(chapters), chapter)}: "
                        f"{float(video.duration):.1f} s of video in {seconds:.1f} s")
 
         picked = [chapters[k] for k in missing]
-        videos = lc.render_chapters(picked, renders, logs, quality, min(jobs, len(picked)),
-                                    polygon, done, panel) if picked else []
+        videos = chapter_pool.render_chapters(picked, renders, logs, quality,
+                                              min(jobs, len(picked)), polygon, done,
+                                              panel) if picked else []
         for k, video in zip(missing, videos, strict=True):
             sources[k] = _source(video.path, read_marks(video.path), chapters[k])
         found = probe(sources[0].video)

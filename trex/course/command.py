@@ -20,7 +20,8 @@ from trex.course.run import run_tasks, stderr_echo
 from trex.course.schema import Course, CourseError, read_course
 from trex.course.tasks import Task, plan
 from trex.inputs import error_line, fail
-from trex.render_command import EXIT_FAILED, EXIT_SIGNAL, Interrupted, interrupts_raise
+from trex.render_command import EXIT_FAILED
+from trex.signals import EXIT_SIGNAL, Interrupted, interrupts_raise
 
 
 def _check_output(out_dir: Path, tasks: list[Task]) -> None:
@@ -49,9 +50,9 @@ def code_fingerprint() -> str:
     import json
 
     from story.environment import environment_values
-    from trex import lecture_command as lc
+    from trex import chapter_command as cc
 
-    return lc.source_fingerprint() + json.dumps(environment_values(), sort_keys=True)
+    return cc.source_fingerprint() + json.dumps(environment_values(), sort_keys=True)
 
 
 def _planned(course_file: str) -> tuple[Course, list[Task]]:

@@ -16,7 +16,7 @@ problem, before anything is submitted. Then each item becomes tasks:
   what ``trex exercises --n N --seed SEED+K-1`` writes, and ``video.mp4`` when asked.
 
 Each task has a fingerprint: its settings, the bytes of its input files, the code that
-renders (:func:`trex.lecture_command.source_fingerprint`) and its dependencies'
+renders (:func:`trex.chapter_command.source_fingerprint`) and its dependencies'
 fingerprints. Importing this module imports no manim; :func:`plan` does.
 """
 
@@ -31,6 +31,7 @@ from pathlib import Path
 from typing import Any
 
 from geometry.errors import GeometryError
+from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
 from trex.course.schema import Course, CourseError, Exercises, Lecture, SceneItem, Slides
 from trex.course.schema import polygon_path as _polygon_path
 from trex.inputs import READ_ERRORS, error_line
@@ -121,51 +122,52 @@ def _dry_run(item: str, name: str, cls: type, polygon: str, checked: _Checked) -
     from geometry.triangulate import HOLE_ALGORITHMS
     from trex.render_command import dry_run
 
-    algorithm = getattr(cls, "algorithm", None)
+    algorithm = algorithm_of(cls)
     _read(item, name, polygon, algorithm in HOLE_ALGORITHMS)
     try:
-        checked.once(("run", algorithm, getattr(cls, "heuristic", None), polygon),
+        checked.once(("run", algorithm, heuristic_of(cls), polygon),
                      lambda: dry_run(cls, polygon))
     except (GeometryError, ValueError, KeyError) as exc:
         raise CourseError(item, name, f"{polygon}: {error_line(exc)}") from None
 
 
 def _chapters(course: Course, item: str, only: tuple[str, ...] | None) -> list:
-    from trex import lecture_command as lc
+    from trex import chapters as ch
 
     try:
-        chapters = list(lc.lecture_chapters())
+        chapters = list(ch.lecture_chapters())
         if only is not None:
-            chapters = lc.pick_chapters(",".join(_scene_file(course, c) for c in only),
+            chapters = ch.pick_chapters(",".join(_scene_file(course, c) for c in only),
                                         chapters)
     except Exception as exc:  # a scene that does not load, an unknown name
         raise CourseError(item, "chapters", error_line(exc)) from None
-    stems = [lc.chapter_stem(c) for c in chapters]
+    stems = [ch.chapter_stem(c) for c in chapters]
     if len(set(stems)) != len(stems):
         raise CourseError(item, "chapters", f"chapters repeat: {', '.join(stems)}")
     return chapters
 
 
 def _check_chapters(item: str, chapters: list, polygon: str | None, checked: _Checked) -> None:
-    """What ``trex lecture`` checks (:func:`trex.lecture_command.check_chapters`), each
+    """What ``trex lecture`` checks (:func:`trex.chapters.check_chapters`), each
     problem named by the item."""
-    from trex import lecture_command as lc
+    from trex import chapters as ch
+    from trex import render_command as rc
 
     for k, chapter in enumerate(chapters):
-        label = lc.chapter_label(k, len(chapters), chapter)
+        label = ch.chapter_label(k, len(chapters), chapter)
         try:
-            cls = lc.load_scene_class(lc.scene_path(chapter), chapter.scene_class or None)
+            cls = rc.load_scene_class(ch.scene_path(chapter), chapter.scene_class or None)
         except ValueError as exc:
             raise CourseError(item, "chapters", f"{label}: {error_line(exc)}") from None
         if polygon is None:
             continue
-        segments = lc.lecture_segments(cls)
+        segments = ch.lecture_segments(cls)
         if segments is None:
-            if not getattr(cls, "runs", None):
+            if not plays_several(cls):
                 _dry_run(item, "polygon", cls, polygon, checked)
             continue
         _read(item, "polygon", polygon, False)
-        for what, key, check in lc.polygon_checks(segments, polygon):
+        for what, key, check in ch.polygon_checks(segments, polygon):
             try:
                 checked.once((key, polygon), check)
             except (GeometryError, ValueError, KeyError) as exc:
@@ -178,11 +180,12 @@ def _check_chapters(item: str, chapters: list, polygon: str | None, checked: _Ch
 
 def _chapter_tasks(folder: str, item: str, chapters: list, quality: str, polygon: str | None,
                    panel: str | None) -> list[Task]:
-    from trex import lecture_command as lc
+    from trex import chapters as ch
+    from trex import lecture_join as lj
 
     tasks = []
     for chapter in chapters:
-        stem = f"{folder}/{lc.CHAPTER_DIR}/{lc.chapter_stem(chapter)}"
+        stem = f"{folder}/{lj.CHAPTER_DIR}/{ch.chapter_stem(chapter)}"
         settings = {"chapter": _chapter_dict(chapter), "quality": quality, "polygon": polygon,
                     "panel": panel}
         tasks.append(Task(stem, "chapter", item, (f"{stem}.mp4",), settings, _inputs(polygon)))
@@ -190,22 +193,22 @@ def _chapter_tasks(folder: str, item: str, chapters: list, quality: str, polygon
 
 
 def _chapter_dict(chapter) -> dict[str, Any]:
-    from trex import lecture_command as lc
+    from trex import chapters as ch
 
     return {"number": chapter.number, "slug": chapter.slug, "title": chapter.title,
-            "scene_file": str(lc.scene_path(chapter)), "scene_class": chapter.scene_class}
+            "scene_file": str(ch.scene_path(chapter)), "scene_class": chapter.scene_class}
 
 
 def _lecture(course: Course, item: Lecture, checked: _Checked) -> list[Task]:
-    from trex import lecture_command as lc
+    from trex import lecture_join as lj
 
     polygon = _polygon(course, item.polygon)
     chapters = _chapters(course, item.name, item.chapters)
     _check_chapters(item.name, chapters, polygon, checked)
     folder = f"lecture-{item.number}"
     parts = _chapter_tasks(folder, item.name, chapters, item.quality, polygon, item.panel)
-    files = tuple(f"{folder}/{name}" for name in (lc.VIDEO, lc.SUBTITLES, lc.LIST_JSON,
-                                                   lc.LIST_MD))
+    files = tuple(f"{folder}/{name}" for name in (lj.VIDEO, lj.SUBTITLES, lj.LIST_JSON,
+                                                   lj.LIST_MD))
     join = Task(folder, "join", item.name, files,
                 {"folder": folder, "chapters": [t.settings["chapter"] for t in parts]},
                 deps=tuple(t.id for t in parts))
@@ -215,10 +218,10 @@ def _lecture(course: Course, item: Lecture, checked: _Checked) -> list[Task]:
 def _scene(course: Course, item: SceneItem, checked: _Checked) -> list[Task]:
     scene = _scene_file(course, item.scene)
     cls = _scene_class(item.name, scene)
-    if getattr(cls, "runs", None) and item.polygons != (None,):
+    if plays_several(cls) and item.polygons != (None,):
         raise CourseError(item.name, "polygons", f"{item.scene} plays its own polygons; "
                                                  "give none")
-    if item.panel is not None and not callable(getattr(cls, "with_panel", None)):
+    if item.panel is not None and not isinstance(cls, WithPanel):
         raise CourseError(item.name, "panel", f"{item.scene} has no panel")
     tasks = []
     for k, given in enumerate(item.polygons):
@@ -236,8 +239,8 @@ def _scene(course: Course, item: SceneItem, checked: _Checked) -> list[Task]:
 def _polygon_part(cls: type, given: str | None) -> str:
     """``-star`` for a polygon given, else the scene's own (``-counterexample``); nothing
     for a scene of several runs, or of none."""
-    own = getattr(cls, "polygon", None)
-    if given is None and (getattr(cls, "runs", None) or not isinstance(own, str)):
+    own = cls.polygon if isinstance(cls, Handed) else None
+    if given is None and (plays_several(cls) or not isinstance(own, str)):
         return ""
     return f"-{slug(given if given is not None else own)}"
 
@@ -266,7 +269,7 @@ def _slides(course: Course, item: Slides, checked: _Checked,
         cls = load_scene(scene, "slides", several_runs=True)
     except ValueError as exc:
         raise CourseError(item.name, "scene", error_line(exc)) from None
-    if polygon is not None and not getattr(cls, "runs", None):
+    if polygon is not None and not plays_several(cls):
         _dry_run(item.name, "polygon", cls, polygon, checked)
     return [Task(name, "slides", item.name, (f"{name}/index.html",), settings,
                  _inputs(polygon, scene))]

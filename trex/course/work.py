@@ -86,14 +86,14 @@ def _handed(cls: type, polygon: str | None, panel: str | None) -> type:
 def _chapter(task: Task, root: Path, _deps) -> tuple[list[str], float]:
     """One chapter as ``trex lecture`` renders it (its step marks' settings too, so that
     ``trex slides lecture --lecture DIR/lecture-K`` reuses it)."""
-    from trex import lecture_command as lc
+    from trex import chapter_command as cc
     from trex.render_command import QUALITIES, load_scene_class, render_into
 
     s, chapter = task.settings, task.settings["chapter"]
     output = root / task.files[0]
     output.parent.mkdir(parents=True, exist_ok=True)
     cls = load_scene_class(Path(chapter["scene_file"]), chapter["scene_class"])
-    made_by = lc.render_settings(chapter["scene_file"], chapter["scene_class"], s["quality"],
+    made_by = cc.render_settings(chapter["scene_file"], chapter["scene_class"], s["quality"],
                                  s["polygon"], s["panel"])
     render_into(_handed(cls, s["polygon"], s["panel"]), output, "mp4", QUALITIES[s["quality"]],
                 progress=False, steps=made_by)
@@ -104,15 +104,16 @@ def _chapter(task: Task, root: Path, _deps) -> tuple[list[str], float]:
 
 def _join(task: Task, root: Path, deps: Sequence[Done]) -> tuple[list[str], float]:
     """The chapters joined by ``trex lecture``'s own join, staged beside and renamed in."""
-    from trex import lecture_command as lc
+    from trex import chapters as ch
+    from trex import lecture_join as lj
     from trex.assemble import probe
 
     folder = root / task.settings["folder"]
-    chapters = [lc.Chapter(**c) for c in task.settings["chapters"]]
+    chapters = [ch.Chapter(**c) for c in task.settings["chapters"]]
     videos = [probe(root / done.files[0]) for done in deps]
     stage = Path(tempfile.mkdtemp(prefix=".lecture.", suffix=".join", dir=folder))
     try:
-        lc.assemble(chapters, videos, stage)
+        lj.join_lecture(chapters, videos, stage)
         for name in task.files:
             os.replace(stage / Path(name).name, root / name)
     finally:
@@ -142,14 +143,14 @@ def _scene(task: Task, root: Path, _deps) -> tuple[list[str], float]:
 
 def _slides(task: Task, root: Path, _deps) -> tuple[list[str], float]:
     """``trex slides``' page, of a scene or of the lecture (reusing the course's chapters)."""
-    from trex import lecture_command as lc
+    from trex import chapters as ch
     from trex import slides_command as sc
     from trex.scene_inputs import choose
 
     s = task.settings
     target = root / Path(task.files[0]).parent
     if s["scene"] == "lecture":
-        chapters = [lc.Chapter(**c) for c in s["chapters"]]
+        chapters = [ch.Chapter(**c) for c in s["chapters"]]
         sc._lecture_slides(chapters, target, s["quality"], 1, s["polygon"], s["panel"],
                            root / s["lecture"])
     else:

@@ -119,18 +119,12 @@ def studio_video(rule: str, polygon: str, output: str, progress_file: str) -> No
     """Render RULE's scene on POLYGON at 480p (as ``trex render``), telling frames written
     out of the total."""
     from geometry.triangulate import HOLE_ALGORITHMS
-    from trex.render_command import (
-        EXIT_SIGNAL,
-        QUALITIES,
-        Interrupted,
-        dry_run,
-        interrupts_raise,
-        render_into,
-        scene_input,
-    )
+    from story.scene_kinds import algorithm_of
+    from trex.render_command import QUALITIES, dry_run, render_into, scene_input
+    from trex.signals import EXIT_SIGNAL, Interrupted, interrupts_raise
 
     cls = played_scene(rule)
-    load_or_exit(polygon, holes=getattr(cls, "algorithm", None) in HOLE_ALGORITHMS)
+    load_or_exit(polygon, holes=algorithm_of(cls) in HOLE_ALGORITHMS)
     try:
         dry_run(cls, polygon)
         played = scene_input(cls, polygon)

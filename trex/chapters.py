@@ -1,0 +1,217 @@
+"""The lecture's chapters: found, picked, named, and checked before anything renders
+(``trex lecture``, ``trex slides lecture``).
+
+The chapters are the scene files ``scenes/chapters/ch<k>_<slug>.py`` (``--chapters`` picks
+some of them by slug, or names scenes to play as chapters instead).
+
+With ``--polygon``, a lecture chapter is checked by what it plays: each of its segments that
+runs on the lecture's polygon (a ``Run`` or ``Compare`` whose polygon is None) is computed
+once on it, as :class:`metaphors.lecture.LectureScene` would, without drawing
+(:func:`polygon_checks`); a scene played as a chapter dry-runs its ``algorithm``. A polygon a
+chapter rejects is bad input (one line, status 2); a chapter that does not load is
+:class:`ChapterFailed` (status 1, :func:`chapter_failed`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import NoReturn
+
+import click
+
+from geometry.errors import GeometryError
+from story.scene_kinds import ChapterScene, plays_several
+from trex.inputs import error_line, fail
+from trex.render_command import EXIT_FAILED, SCENES_DIR, dry_run, load_scene_class, resolve_scene
+
+__all__ = ["CHAPTERS_DIR", "REPO", "Chapter", "ChapterFailed", "chapter_failed",
+           "chapter_label", "chapter_stem", "check_chapters", "lecture_chapters",
+           "lecture_segments", "pick_chapters", "polygon_checks", "scene_path"]
+
+REPO = SCENES_DIR.parent
+CHAPTERS_DIR = SCENES_DIR / "chapters"
+
+
+@dataclass(frozen=True)
+class Chapter:
+    """A chapter: its place in the lecture, its slug and title, its scene file and class
+    (None: the file's first)."""
+
+    number: int
+    slug: str
+    title: str
+    scene_file: str
+    scene_class: str | None
+
+
+class ChapterFailed(Exception):
+    """A chapter could not be rendered (its one-line reason is the message); ``status``: the
+    command's exit status for it (2 when a function of one's own failed in it, else 1)."""
+
+    def __init__(self, message: str, status: int = EXIT_FAILED) -> None:
+        super().__init__(message)
+        self.status = status
+
+
+def chapter_failed(message: str, status: int = EXIT_FAILED) -> NoReturn:
+    """``error: MESSAGE`` and exit status 1 (a chapter, or the list of them, failed), or
+    ``status``."""
+    click.echo(f"error: {message}", err=True)
+    raise click.exceptions.Exit(status)
+
+
+def lecture_chapters() -> tuple[Chapter, ...]:
+    """The lecture's chapters: the scene files ``scenes/chapters/ch<k>_<slug>.py``, in the
+    order of ``k``, each titled by its class's ``chapter_title`` (``"3. Gravity"``: the part
+    after the number). Loading them imports manim, so only when asked for."""
+    found = []
+    for path in CHAPTERS_DIR.glob("ch*_*.py"):
+        number, _, slug = path.stem[2:].partition("_")
+        if number.isdigit():
+            found.append((int(number), slug.replace("_", "-"), path))
+    chapters = []
+    for number, slug, path in sorted(found):
+        cls = load_scene_class(path, None)
+        title = str(cls.chapter_title if isinstance(cls, ChapterScene) else slug).partition(". ")
+        chapters.append(Chapter(number, slug, title[2] or title[0], str(path.relative_to(REPO)),
+                                cls.__name__))
+    return tuple(chapters)
+
+
+def pick_chapters(spec: str, chapters: Sequence[Chapter] | None) -> list[Chapter]:
+    """Chapters named in ``spec`` (comma-separated): a slug of ``chapters``, else a scene
+    (``scaling``, ``rotation:RotationCcw``, ``my.py:Mine``) played as a chapter numbered by
+    its place. Raises ValueError with a one-line reason.
+
+    >>> [(c.number, c.slug, c.scene_class) for c in pick_chapters("scaling,rotation:RotationCcw",
+    ...                                                           None)]
+    [(1, 'scaling', None), (2, 'rotation-RotationCcw', 'RotationCcw')]
+    """
+    by_slug = {c.slug: c for c in chapters or ()}
+    picked = []
+    for k, item in enumerate((s.strip() for s in spec.split(",")), 1):
+        if not item:
+            raise ValueError("empty chapter name")
+        if item in by_slug:
+            picked.append(by_slug[item])
+            continue
+        path, class_name = resolve_scene(item)
+        slug = path.stem if class_name is None else f"{path.stem}-{class_name}"
+        title = path.stem.replace("_", " ").capitalize()
+        title = title if class_name is None else f"{title} ({class_name})"
+        picked.append(Chapter(k, slug.replace("_", "-"), title, str(path), class_name))
+    return picked
+
+
+def scene_path(chapter: Chapter) -> Path:
+    """A chapter's scene file (relative paths are from the repository root)."""
+    path = Path(chapter.scene_file)
+    return path if path.is_absolute() else REPO / path
+
+
+def chapter_stem(chapter: Chapter) -> str:
+    """``01-overview``: the chapter's files in ``chapters/``.
+
+    >>> chapter_stem(Chapter(3, "gravity", "Gravity", "scenes/gravity.py", None))
+    '03-gravity'
+    """
+    return f"{chapter.number:02d}-{chapter.slug}"
+
+
+def chapter_label(k: int, n: int, chapter: Chapter) -> str:
+    """``chapter 3/7 gravity``: how messages name chapter ``k`` (from 0) of ``n``."""
+    return f"chapter {k + 1}/{n} {chapter.slug}"
+
+
+# --- checks before rendering ------------------------------------------------------------------------
+
+
+def lecture_segments(cls: type) -> tuple | None:
+    """The segments a lecture chapter's class plays (None: not a lecture chapter). Listed
+    without building the scene: ``chapter_segments`` needs only the class's attributes."""
+    from metaphors.lecture import LectureScene
+
+    if not (isinstance(cls, type) and issubclass(cls, LectureScene)):
+        return None
+    return tuple(cls.__new__(cls).chapter_segments())
+
+
+def polygon_checks(segments: Sequence,
+                   polygon: str) -> list[tuple[str, tuple, Callable[[], object]]]:
+    """``(what, key, check)`` for each segment that plays the lecture's polygon: ``check()``
+    computes what the chapter would show — a Run's log, a Compare's two triangulations — by
+    the chapter's own calls, on ``polygon`` (the one the chapter is handed). Equal keys are
+    the same computation."""
+    from geometry.cdt import constrained_delaunay
+    from geometry.triangulate import triangulate
+    from metaphors import lecture
+    from metaphors.lecture import Compare, Run
+
+    def run(segment: Run):
+        return segment.spec(polygon).log()
+
+    def compare(segment: Compare):
+        shape = lecture.read_polygon(polygon)
+        return triangulate(shape, segment.ours), constrained_delaunay(shape)
+
+    checks = []
+    for segment in segments:
+        if isinstance(segment, Run) and segment.polygon is None:
+            what = segment.algorithm + (f" with {segment.heuristic}" if segment.heuristic
+                                        else "")
+            checks.append((what, ("run", segment.algorithm, segment.heuristic),
+                           lambda segment=segment: run(segment)))
+        elif isinstance(segment, Compare) and segment.polygon is None:
+            checks.append((f"{segment.ours} beside constrained Delaunay",
+                           ("compare", segment.ours), lambda segment=segment: compare(segment)))
+    return checks
+
+
+def check_chapters(chapters: Sequence[Chapter], polygon: str | None) -> None:
+    """Load every chapter's scene class and, with a polygon, compute on it what the chapter
+    plays on it (:func:`polygon_checks`; a scene that is not a lecture chapter: its
+    ``algorithm``, once), drawing nothing.
+
+    A scene that does not load raises :class:`ChapterFailed`; a polygon a chapter's run
+    rejects exits with status 2 (bad input).
+    """
+    stems = [chapter_stem(c) for c in chapters]
+    if len(set(stems)) != len(stems):
+        raise ChapterFailed(f"chapters repeat: {', '.join(stems)}")
+    done: set = set()  # computations already checked (chapters share runs)
+    for k, chapter in enumerate(chapters):
+        path = scene_path(chapter)
+        try:
+            if not path.is_file():
+                raise ValueError(f"no such scene file: {chapter.scene_file}")
+            cls = load_scene_class(path, chapter.scene_class or None)
+        except ValueError as exc:
+            raise ChapterFailed(f"{chapter_label(k, len(chapters), chapter)}: {exc}") from None
+        if polygon is not None:
+            _check_polygon(cls, polygon, chapter_label(k, len(chapters), chapter), done)
+
+
+def _check_polygon(cls: type, polygon: str, label: str, done: set) -> None:
+    """One chapter's part of :func:`check_chapters`; ``done`` holds the keys already run."""
+    try:
+        segments = lecture_segments(cls)
+    except Exception as exc:  # the chapter's own list is broken: it would not render either
+        raise ChapterFailed(f"{label}: cannot list its segments: {type(exc).__name__}: "
+                            f"{error_line(exc)}") from None
+    if segments is None:
+        if not plays_several(cls):
+            try:
+                dry_run(cls, polygon)
+            except (GeometryError, ValueError, KeyError) as exc:
+                fail(f"{polygon}: {error_line(exc)}")
+        return
+    for what, key, check in polygon_checks(segments, polygon):
+        if key in done:
+            continue
+        try:
+            check()
+        except (GeometryError, ValueError, KeyError) as exc:
+            fail(f"{polygon}: {label}: {what}: {error_line(exc)}")
+        done.add(key)
