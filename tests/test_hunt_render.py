@@ -72,3 +72,31 @@ def test_hunt_render_of_a_crash_renders_nothing_and_says_so(rendered, tmp_path, 
     assert json.loads(result.stdout)["error"].startswith("bad raised ZeroDivisionError")
     assert result.stderr == "note: --render: no video of a run that does not end in a claim\n"
     assert rendered == [] and (tmp_path / "found.json").is_file()
+
+
+def test_hunt_render_takes_a_path(rendered, tmp_path, monkeypatch):
+    """Issue 24 item 12: ``--render FILE.mp4`` writes there (the polygon beside it)."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "out").mkdir()
+    result = CliRunner().invoke(main, ["hunt", "scaling", "--budget", "400", "--render",
+                                       "out/ce.mp4"])
+    assert result.exit_code == 1, result.output
+    assert result.stdout.strip().splitlines()[-1] == "out/ce.mp4"
+    assert (tmp_path / "out" / "ce.mp4").read_bytes() == b"mp4"
+    assert json.loads((tmp_path / "out" / "ce.json").read_text())
+    assert not (tmp_path / "media").exists()
+
+
+@pytest.mark.parametrize(("target", "said"), [
+    ("ce.gif", "--render writes an mp4"),
+    ("no/such/dir/ce.mp4", "no such directory"),
+])
+def test_hunt_render_path_is_checked_before_the_search(rendered, tmp_path, monkeypatch,
+                                                       target, said):
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, ["hunt", "scaling", "--budget", "400", "--render",
+                                       target])
+    assert result.exit_code == 2
+    assert result.stdout == "" and rendered == []  # no search, no render
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and said in lines[0] and target in lines[0]

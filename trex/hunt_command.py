@@ -72,12 +72,14 @@ def hunt_record(result: Hunt) -> dict:
                    "crosses an edge (not only passes through a vertex): one a class can see "
                    "fail.")
 @click.option("--json", "as_json", is_flag=True, help="One JSON line.")
-@click.option("--render", "render", is_flag=True,
-              help="Render the heuristic's video on the counterexample (480p) and print the "
-                   "mp4's path.")
+@click.option("--render", "render", is_flag=False, flag_value="", default=None,
+              metavar="[FILE.mp4]",
+              help="Render the heuristic's video on the counterexample (480p) into FILE.mp4 "
+                   "(default: media/hunt-<name>.mp4) and print the mp4's path.")
 @call_timeout_option
 def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_vertices: int,
-                 output: str | None, general: bool, as_json: bool, render: bool) -> None:
+                 output: str | None, general: bool, as_json: bool,
+                 render: str | None) -> None:
     """Search small polygons for one on which HEURISTIC's claim is not an inner diagonal,
     shrink it to a minimal one and say why the claim is wrong.
 
@@ -86,6 +88,7 @@ def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_ver
     """
     if output is not None:
         output_or_exit(output, polygon=True)  # before the search: one line, exit 2
+    video = _video_target(heuristic, render)
     show_bar = not as_json and sys.stderr.isatty()
     bar_context = (click.progressbar(length=budget, label="hunting", file=sys.stderr)
                    if show_bar else contextlib.nullcontext())
@@ -115,13 +118,27 @@ def hunt_command(heuristic: str | UserHeuristic, budget: int, seed: int, max_ver
                 fail(f"{output}: cannot write: {error_line(exc)}")
             if not as_json:
                 click.echo(f"wrote {output}")
-        if render and result.error is not None:
+        if video is not None and result.error is not None:
             click.echo("note: --render: no video of a run that does not end in a claim",
                        err=True)
-        elif render:
-            click.echo(str(render_counterexample(heuristic, result, output)),
+        elif video is not None:
+            click.echo(str(render_counterexample(heuristic, result, output, video)),
                        err=as_json)  # --json: stdout stays one JSON line
         raise click.exceptions.Exit(EXIT_FOUND)
+
+
+def _video_target(heuristic: str | UserHeuristic, render: str | None) -> Path | None:
+    """Where ``--render`` writes (None: no video): the path given, checked before the search
+    (an mp4, in a directory that exists and can be written to: one line, exit 2), else
+    ``media/hunt-<name>.mp4``."""
+    if render is None:
+        return None
+    if not render:
+        name = heuristic.name if isinstance(heuristic, UserHeuristic) else str(heuristic)
+        return Path("media") / f"hunt-{name}.mp4"
+    if Path(render).suffix.lower() != ".mp4":
+        fail(f"{render}: --render writes an mp4; give a path ending in .mp4")
+    return output_or_exit(render)
 
 
 def _stopped(result: Hunt) -> str:
@@ -156,10 +173,10 @@ def heuristic_video(heuristic: str | UserHeuristic) -> type:
 
 
 def render_counterexample(heuristic: str | UserHeuristic, result: Hunt,
-                          output: str | None) -> Path:
+                          output: str | None, target: Path) -> Path:
     """Render the heuristic's video on the counterexample (the polygon written to ``output``,
-    else to ``media/hunt-<name>.json``) into ``media/hunt-<name>.mp4``, as ``trex render``
-    does (atomically, interrupts leaving nothing); its path."""
+    else beside ``target`` as ``.json``) into ``target``, as ``trex render`` does
+    (atomically, interrupts leaving nothing); its path."""
     from trex.render_command import (
         QUALITIES,
         Interrupted,
@@ -170,7 +187,6 @@ def render_counterexample(heuristic: str | UserHeuristic, result: Hunt,
     )
 
     name = heuristic.name if isinstance(heuristic, UserHeuristic) else str(heuristic)
-    target = Path("media") / f"hunt-{name}.mp4"
     polygon = Path(output) if output is not None else target.with_suffix(".json")
     try:
         prepare_output(target)

@@ -23,7 +23,7 @@ from geometry.user_heuristics import (
     load_user_heuristic,
 )
 from trex.inputs import call_timeout_option, fail, load_or_exit
-from trex.render_command import EXIT_SIGNAL
+from trex.signals import EXIT_SIGNAL
 from trex.studio.api import rings_of_shape
 from trex.studio.children import COMMANDS as JOB_COMMANDS
 
