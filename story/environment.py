@@ -29,13 +29,23 @@ from dataclasses import replace
 
 from story.spec import RunSpec
 
-__all__ = ["LOG", "POLYGON", "environment_values", "spec_from_environment",
+__all__ = ["LOG", "POLYGON", "environment_values", "inherited", "spec_from_environment",
            "specs_from_environment"]
 
 #: The polygon a scene runs on (a file or a sample name).
 POLYGON = "TREX_POLYGON"
 #: A saved log to replay (several, joined with ``os.pathsep``, for a scene of several runs).
 LOG = "TREX_LOG"
+
+
+def inherited(**extra: str) -> dict[str, str]:
+    """The environment of a process a command starts: this process's, with ``extra`` set
+    (its scratch folder, a search path). trex's own settings go to it as named options.
+
+    >>> inherited(TMPDIR="/tmp/job")["TMPDIR"]
+    '/tmp/job'
+    """
+    return {**os.environ, **extra}
 
 
 def environment_values(environ: Mapping[str, str] | None = None) -> dict[str, str]:

@@ -112,7 +112,7 @@ def test_snapshot_takes_a_polygon_with_holes(holed, tmp_path, monkeypatch):
 def test_player_takes_a_polygon_with_holes(holed, tmp_path, monkeypatch):
     def fake_build(cls, log, subtitle, target):
         assert_plays_the_holes(cls, holed)
-        assert subtitle == f"monotone on {holed}" and log.meta["polygon"] == str(holed)
+        assert subtitle == f"Monotone partition on {holed}" and log.meta["polygon"] == str(holed)
         target.mkdir()
         (target / "index.html").write_text("page")
         return target / "index.html"
@@ -127,7 +127,7 @@ def test_player_takes_a_polygon_with_holes(holed, tmp_path, monkeypatch):
 def test_slides_take_a_polygon_with_holes(holed, tmp_path, monkeypatch):
     def fake_slides(cls, quality, subtitle, target):
         assert_plays_the_holes(cls, holed)
-        assert subtitle == f"monotone on {holed}"
+        assert subtitle == f"Monotone partition on {holed}"
         target.mkdir()
         return []
 

@@ -23,6 +23,7 @@ from story.storyboard import storyboard
 from tracing import Event, Log
 
 COUNTEREXAMPLE = Polygon.from_points(make_sample("counterexample"))
+AT = dict(zip(COUNTEREXAMPLE.labels, COUNTEREXAMPLE.points, strict=True))
 T = [(1.6, 8.0), (1.0, 4.5), (9.0, 2.0)]
 
 
@@ -57,13 +58,13 @@ def test_the_water_starts_dry_and_grows_through_each_candidate():
     assert isinstance(beat, water.Water)
     radii = [s.radius for s in beat.states]
     assert radii[0] == 0.0 and radii[1:] == sorted(radii[1:]) and radii[1] > 0
-    assert {s.center for s in beat.states} == {(1.0, 4.5)}  # all spilled at B
+    assert {s.center for s in beat.states} == {AT["B"]}  # all spilled at B
 
 
 def test_the_tide_keeps_its_shore_and_rises():
     beat = _moving("scaling-correct")
     assert isinstance(beat, water.Flood)
-    assert {s.shore for s in beat.states} == {((1.6, 8.0), (9.0, 2.0))}  # A and C
+    assert {s.shore for s in beat.states} == {(AT["A"], AT["C"])}  # A and C
     assert beat.states[0].level == 0.0 and beat.states[-1].reached == beat.result
 
 

@@ -34,13 +34,15 @@ def client_for(workers: int, scheduler: str | None) -> Iterator[Any]:
     single-threaded worker processes, which sees this checkout's code first."""
     from distributed import Client, LocalCluster
 
+    from story.environment import inherited
+
     # manim's rich handler on the root logger would print every scheduler event
     logging.getLogger("distributed").setLevel(logging.ERROR)
     if scheduler is not None:
         with Client(scheduler, timeout="10s") as client:
             yield client
         return
-    path = os.pathsep.join(p for p in (str(REPO), os.environ.get("PYTHONPATH", "")) if p)
+    path = os.pathsep.join(p for p in (str(REPO), inherited().get("PYTHONPATH", "")) if p)
     cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                            dashboard_address=":0", silence_logs=logging.ERROR,
                            env={"PYTHONPATH": path})

@@ -26,6 +26,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from story.environment import inherited
 from trex.inputs import first_line
 
 RENDERS = ("video", "slides")
@@ -130,7 +131,7 @@ class Jobs:
                     start_new_session=True, cwd=Path(__file__).resolve().parents[2],
                     # its scratch files too go under the job's folder: the studio writes
                     # only under its work directory
-                    env={**os.environ, "TQDM_DISABLE": "1", "TMPDIR": str(job.folder)})
+                    env=inherited(TQDM_DISABLE="1", TMPDIR=str(job.folder)))
                 job.state = "running"
             stdout, stderr = job.process.communicate()
             with self.lock:
