@@ -19,7 +19,7 @@ import click
 
 from geometry.io import polygon_to_json_points, write_atomic
 from geometry.user_heuristics import UserHeuristic, UserHeuristicError, is_user_spec
-from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
+from trex.inputs import call_timeout_option, error_line, fail, first_line, load_or_exit
 from trex.run_commands import HeuristicOrFile
 
 
@@ -60,8 +60,10 @@ def studio_hunt(heuristic: str | UserHeuristic, budget: int, seed: int, max_vert
     try:
         result = hunt(heuristic, budget=budget, seed=seed, max_vertices=max_vertices,
                       progress=progress.add)
-    except ValueError as exc:  # one's own raised, answered nonsense or timed out
+    except ValueError as exc:  # one's own tried to end the program
         fail(f"{heuristic}: {error_line(exc)}")
+    if result.error is not None:  # one's own raised, answered nonsense or timed out: the
+        fail(f"{heuristic}: {first_line(result.error)}")  # job fails (issue 20), in one line
     found = result.found and result.polygon is not None
     click.echo(json.dumps({
         "heuristic": str(heuristic), "found": found,
