@@ -100,3 +100,17 @@ def test_hunt_render_path_is_checked_before_the_search(rendered, tmp_path, monke
     assert result.stdout == "" and rendered == []  # no search, no render
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and said in lines[0] and target in lines[0]
+
+
+@pytest.mark.parametrize(("algorithm", "base"), [("prune-and-search", "Ears"),
+                                                 ("cdt", "TraceScene")])
+def test_an_algorithm_with_no_scene_of_its_own_still_has_a_video(algorithm, base):
+    """The studio's Video (and ``heuristic_video``) for an algorithm no file in scenes/ plays:
+    the scene of its metaphor (prune and search slices fruit as ear clipping does), else a
+    plain one; it plays that algorithm's run."""
+    from trex.hunt_command import heuristic_video
+
+    cls = heuristic_video(algorithm)
+    assert cls.algorithm == algorithm and cls.__mro__[1].__name__ == base
+    handed = cls.handed("lecture")
+    assert handed.spec.algorithm == algorithm and build(handed).data["plays"]

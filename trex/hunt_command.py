@@ -29,6 +29,7 @@ from story.hunt import (
     skipped_note,
     verdict_line,
 )
+from story.registry import REGISTRY, entry
 from trex.exit_status import FINDING as EXIT_FOUND
 from trex.inputs import call_timeout_option, error_line, fail, output_or_exit
 from trex.run_commands import HeuristicOrFile
@@ -149,7 +150,9 @@ def _stopped(result: Hunt) -> str:
 
 def heuristic_video(heuristic: str | UserHeuristic) -> type:
     """The Scene class of a heuristic's video: a built-in's own scene in ``scenes/`` (the
-    single run of it), or the scene of a heuristic of one's own."""
+    single run of it), or the scene of a heuristic of one's own. An algorithm with no scene
+    of its own (prune and search, constrained Delaunay) plays in the scene of another with
+    its metaphor (its plate and counter), else in a plain one."""
     from manim import Scene
 
     from metaphors.scene import SequenceScene, TraceScene, heuristic_scene
@@ -157,6 +160,7 @@ def heuristic_video(heuristic: str | UserHeuristic) -> type:
 
     if isinstance(heuristic, UserHeuristic):
         return heuristic_scene(heuristic)
+    kin: dict[str, type] = {}  # a scene of the same metaphor, for an algorithm with none
     for name in known_scenes():
         path, _ = resolve_scene(name)
         module_classes = [load_scene_class(path, None)]
@@ -169,7 +173,16 @@ def heuristic_video(heuristic: str | UserHeuristic) -> type:
             if (issubclass(cls, TraceScene) and not issubclass(cls, SequenceScene)
                     and cls.algorithm == heuristic):
                 return cls
-    raise ValueError(f"no scene in scenes/ plays {heuristic}")
+            if (issubclass(cls, TraceScene) and not issubclass(cls, SequenceScene)
+                    and heuristic in REGISTRY and entry(cls.algorithm).metaphor is not None
+                    and entry(cls.algorithm).metaphor == entry(heuristic).metaphor):
+                kin.setdefault(heuristic, cls)
+    if heuristic not in REGISTRY:
+        raise ValueError(f"no scene in scenes/ plays {heuristic}")
+    known, base = entry(heuristic), kin.get(heuristic, TraceScene)
+    name = "".join(word.capitalize() for word in heuristic.split("-"))  # PruneAndSearch
+    return type(name, (base,), {"algorithm": heuristic, "polygon": known.polygon,
+                                "title": known.title, "heuristic": None})
 
 
 def render_counterexample(heuristic: str | UserHeuristic, result: Hunt,
