@@ -81,6 +81,10 @@ def test_draw_six_vertices_by_clicks_then_drag_one_across(page):
     page.wait_for_function("document.getElementById('status').textContent === 'valid: 6 vertices'")
     page.wait_for_function("document.querySelectorAll('#labels text').length === 6")
     assert labels(page) == list("ABCDEF")
+    # the verdicts come from a second request, after the check's labels: wait for them
+    page.wait_for_function(
+        "document.querySelector('#rules tr[data-rule=\"gravity\"] td:nth-child(3)')"
+        ".textContent !== ''")
     assert page.locator('#rules tr[data-rule="gravity"] td').nth(2).inner_text().startswith("✓")
     # drag the top vertex far down, below the bottom one: its edges cross two others
     x, y = vertex_xy(page, 0, 0)
