@@ -23,11 +23,12 @@ from geometry.triangulate import triangulate
 from geometry.user_heuristics import load_user_heuristic
 from metaphors import catalog
 from metaphors.analysis import Analysis, play_analysis
+from metaphors.countdown import countdown
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
-from metaphors.stills import BOX_CENTER, BOX_HEIGHT, BOX_WIDTH, still_mobjects
+from metaphors.stills import still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
@@ -42,6 +43,10 @@ from story.storyboard import Pacing
 CARD_WIDTH = 13.2
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
+#: an exercise's picture on the left, so its answer is written beside it, never over it
+QUIZ_BOX = ((-2.7, -0.1), 7.4, 5.6)
+ANSWER_AT, ANSWER_WIDTH = (4.25, -0.3, 0), 4.6
+COUNTDOWN_AT = (4.25, 1.6, 0)
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
 
 
@@ -104,7 +109,7 @@ class Quiz:
 
     count: int = 3
     seed: int = 2022
-    think: int = 3  # seconds of countdown
+    think: int = 15  # seconds the question stays up, counted down, before its answer
 
 
 class LectureScene(TraceScene):
@@ -273,19 +278,18 @@ class LectureScene(TraceScene):
             self.ask(exercise, quiz.think)
 
     def ask(self, exercise: Exercise, think: int) -> None:
-        """The question, a countdown, the answer with its reason."""
-        theme = self.theme
-        picture = [tag(m, None, "exercise") for m in still_mobjects(exercise, theme)]
+        """The question, ``think`` seconds counted down, then the answer with its reason
+        beside the picture."""
+        picture = [tag(m, None, "exercise") for m in still_mobjects(exercise, self.theme,
+                                                                     QUIZ_BOX)]
         captions = captions_of(self)
         cue = captions.show(exercise.question, 0.8)
         mark_step(self, exercise.question, kind="question")
         self.play(*[FadeIn(m) for m in picture], run_time=0.8, **cue)
-        for k in range(think, 0, -1):
-            digit = tag(self.text(str(k), 60, theme.argument), None, "countdown")
-            digit.move_to((6.3, 2.7, 0))
-            self.play(FadeIn(digit), run_time=0.2)
-            self.wait(0.6)
-            self.play(FadeOut(digit), run_time=0.2)
+        clock, running = countdown(think, COUNTDOWN_AT, self.theme)
+        self.add(clock)
+        self.play(running)
+        self.remove(clock)
         answer = f"{exercise.answer}: {exercise.reason}"
         cue = captions.show(answer, 1.2)
         mark_step(self, answer, kind="answer")
@@ -294,11 +298,11 @@ class LectureScene(TraceScene):
 
     def answer_animations(self, exercise: Exercise) -> list:
         theme, polygon = self.theme, exercise.polygon
-        frame = Frame(polygon.points, BOX_CENTER, BOX_WIDTH, BOX_HEIGHT)
-        text = tag(typeset.wrapped(f"Answer: {exercise.answer} — {exercise.reason}", size=24,
-                                   colour=theme.result, font=theme.font, width=CARD_WIDTH),
-                   "result", "answer")
-        text.move_to((0, -3.05, 0))
+        frame = Frame(polygon.points, *QUIZ_BOX)
+        text = tag(typeset.wrapped(f"Answer: {exercise.answer} — {exercise.reason}",
+                                   size=theme.caption_size, colour=theme.result,
+                                   font=theme.font, width=ANSWER_WIDTH), "result", "answer")
+        text.move_to(ANSWER_AT)
         anims = [FadeIn(text)]
         if exercise.kind == "pick":
             label = exercise.answer.strip().split()[0]

@@ -27,10 +27,14 @@ def _text(text: str, size: int, colour: str, theme: Theme) -> FlatText:
     return typeset.text(text, font=theme.font, size=size, colour=colour, width=MAX_TEXT_WIDTH)
 
 
-def still_mobjects(exercise: Exercise, theme: Theme = THEME) -> list:
-    """Everything the still shows, back to front."""
+def still_mobjects(exercise: Exercise, theme: Theme = THEME,
+                   box: tuple[tuple[float, float], float, float] = (BOX_CENTER, BOX_WIDTH,
+                                                                    BOX_HEIGHT)) -> list:
+    """Everything the still shows, back to front: the polygon fitted in ``box`` (centre,
+    width, height; the lecture keeps a column beside it for the answer), its legend below."""
     p = exercise.polygon
-    frame = Frame(p.points, center=BOX_CENTER, width=BOX_WIDTH, height=BOX_HEIGHT)
+    center, width, height = box
+    frame = Frame(p.points, center=center, width=width, height=height)
     a, b, c = exercise.triangle
     t = MPolygon(*frame.many([p.points[k] for k in (a, b, c)]), color=theme.called,
                  stroke_width=theme.thin_stroke, fill_color=theme.called, fill_opacity=T_OPACITY)
@@ -53,7 +57,7 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME) -> list:
               theme),
         _text(f"candidates in T: {names}", theme.label_size, theme.argument, theme),
     ).arrange(buff=0.6)
-    legend.move_to((0, LEGEND_Y, 0))
+    legend.move_to((center[0], LEGEND_Y, 0))
     return [polygon_mobject(p, frame, theme), t, *options, markers, title, legend]
 
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
+from itertools import pairwise
 
 from story.reading import readable
 
@@ -205,3 +206,57 @@ def hidden_failures(data: dict) -> list[str]:
         if outside < LEAST_OUTSIDE:
             found[where] = f"{outside:.2f} outside"
     return [f"{where}: {what}" for where, what in sorted(found.items())]
+
+
+#: issue 22 item 6: the least time a question stays up, counted down, before its answer
+LEAST_THINKING = 15.0
+
+
+def rushed_questions(data: dict) -> list[str]:
+    """The exercise questions whose answer's cue starts under :data:`LEAST_THINKING` after
+    the question's own, as ``"3.2 s: Which vertex …"``; the cues are what the ``.srt`` says
+    (the question's cue is the question, the next cue its answer)."""
+    cues = data["cues"]
+    questions = {n["text"].split(". ", 1)[-1] for n in graph_nodes(data)
+                 if n.get("name") == "exercise" and n.get("text")}
+    found = []
+    for cue, after in pairwise(cues):
+        if cue["text"] in questions and after["start"] - cue["start"] < LEAST_THINKING:
+            found.append(f"{after['start'] - cue['start']:.1f} s: {cue['text']}")
+    return found
+
+
+def _box_of(node: dict) -> tuple[float, float, float, float] | None:
+    """A node's box on screen with all its parts: ``(left, bottom, right, top)``."""
+    boxes = [n["box"] for n in mobject_nodes(node) if n.get("box")]
+    boxes += [(x, y, x, y) for n in mobject_nodes(node) for x, y, _ in n.get("points", ())]
+    if not boxes:
+        return None
+    return (min(b[0] for b in boxes), min(b[1] for b in boxes),
+            max(b[2] for b in boxes), max(b[3] for b in boxes))
+
+
+def _overlap(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def answers_over_pictures(data: dict) -> list[str]:
+    """Issue 22 item 6: the answers written over their exercise's polygon (its outline and
+    vertex labels, not the title and legend lines), as ``"Answer: G — …"``."""
+    found = []
+    picture: list[tuple[float, ...]] = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in OUTGOING:
+                continue  # the screen cleared: what leaves is not drawn over
+            if node.get("name") == "exercise" and node.get("text"):
+                continue  # the title and the legend: lines of their own, above and below
+            if node.get("name") == "exercise" and (box := _box_of(node)):
+                picture.append(box)
+            elif node.get("name") == "answer" and (box := _box_of(node)):
+                text = " ".join(n["text"] for n in mobject_nodes(node) if n.get("text"))
+                if any(_overlap(box, p) for p in picture):
+                    found.append(text)
+                picture = []
+    return found

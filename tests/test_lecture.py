@@ -27,8 +27,10 @@ import srt
 from click.testing import CliRunner
 
 from tests.reading_rules import (
+    answers_over_pictures,
     crossfaded_subtitles,
     hidden_failures,
+    rushed_questions,
     small_texts,
     unreadable_cues,
     unspoken_words,
@@ -467,6 +469,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 items 1 and 10: the taught words, no slug, no code (no call line either), no
     # number with two decimals
     assert unspoken_words(data) == [], chapter.slug
+    # issue 22 item 6: time to think, and the answer beside the picture, not over it
+    assert rushed_questions(data) == [], chapter.slug
+    assert answers_over_pictures(data) == [], chapter.slug
 
 
 @pytest.mark.parametrize("chapter", _chapters())
