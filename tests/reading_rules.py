@@ -169,6 +169,9 @@ def unspoken_words(data: dict, *, call_line: bool = False) -> list[str]:
 
 #: 4 % of the frame's height: the least of a wrong claim that must be seen outside P
 LEAST_OUTSIDE = 0.32
+#: 3 % of the frame's height: the least gap between a red claim and a vertex not its own, so
+#: that it is seen to cross an edge, not to pass through the vertex
+LEAST_CLEARANCE = 0.24
 #: the colour of what is rejected (metaphors.theme.THEME.rejected), as the graph writes it
 _REJECTED = "#EF4B4B"
 
@@ -183,28 +186,39 @@ def _near(p: tuple[float, float], corners: list[tuple[float, float]]) -> bool:
 
 
 def hidden_failures(data: dict) -> list[str]:
-    """Issue 22 item 3: the red (rejected) claims whose part outside their polygon is under
-    :data:`LEAST_OUTSIDE` on screen, as ``"claim (x, y)–(x, y): 0.14 outside"``. A claim is
+    """Issue 22 items 3 and 6: the red (rejected) claims, and exercises' rejected diagonals,
+    whose part outside their polygon is under
+    :data:`LEAST_OUTSIDE` on screen, as ``"claim (x, y)–(x, y): 0.14 outside"``, or which
+    pass nearer than :data:`LEAST_CLEARANCE` to a vertex not their own. A claim is
     matched to the drawn polygon that has both its ends as corners; one with no such polygon
     is reported too, so that a claim drawn elsewhere cannot pass unmeasured."""
     from shapely.geometry import LineString
+    from shapely.geometry import Point as ShapelyPoint
     from shapely.geometry import Polygon as Region
 
     nodes = list(graph_nodes(data))
-    polygons = [_corners(n) for n in nodes if n.get("name") == "polygon" and n.get("points")]
+    polygons = [_corners(n) for n in nodes if n.get("points") and (
+        n.get("name") == "polygon" or (n.get("name"), n["type"]) == ("exercise", "Polygon"))]
     found = {}
     for node in nodes:
-        if node.get("name") != "claim" or (node.get("stroke") or "").upper() != _REJECTED:
+        if node.get("name") not in ("claim", "answer:diagonal") \
+                or (node.get("stroke") or "").upper() != _REJECTED:
             continue
         a, b = (tuple(node["points"][k][:2]) for k in (0, -1))
-        home = [c for c in polygons if _near(a, c) and _near(b, c)]
+        # the polygon itself, not an exercise's triangle T drawn on it
+        home = sorted((c for c in polygons if _near(a, c) and _near(b, c)), key=len,
+                      reverse=True)
         where = f"claim ({a[0]:g}, {a[1]:g})–({b[0]:g}, {b[1]:g})"
         if not home:
             found[where] = "no polygon has both its ends"
             continue
         outside = LineString([a, b]).difference(Region(home[0])).length
+        gap = min((LineString([a, b]).distance(ShapelyPoint(q)) for q in home[0]
+                   if not (_near(q, [a]) or _near(q, [b]))), default=float("inf"))
         if outside < LEAST_OUTSIDE:
             found[where] = f"{outside:.2f} outside"
+        elif gap < LEAST_CLEARANCE:
+            found[where] = f"{gap:.2f} from a vertex: it looks as if it passes through"
     return [f"{where}: {what}" for where, what in sorted(found.items())]
 
 

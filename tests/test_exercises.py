@@ -11,6 +11,7 @@ from geometry.diagonals import find_diagonal
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.io import read_polygon
 from story.exercises import PICKABLE, answers_markdown, make_exercises
+from story.hunt import in_general_position
 from story.registry import SPOKEN, wrong
 from story.words import why_not_inner
 from trex.cli import main
@@ -125,6 +126,19 @@ def test_answers_check_out_and_mix(seed):
     claims = [e.answer.split()[0] for e in exercises if e.kind == "claim"]
     assert {"yes", "no"} <= set(claims), claims
     assert len({e.spec for e in exercises}) == len(exercises)
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_exercise_polygons_are_in_general_position_and_fail_by_crossing(seed):
+    """Issue 22 item 6: no three vertices on one line, and every rejected diagonal crosses an
+    edge (rather than only passing through a vertex)."""
+    for e in make_exercises(6, seed):
+        assert in_general_position(e.polygon.points), e.spec
+        pairs = e.options or ((find_diagonal(e.polygon, e.heuristic).pair,)
+                              if e.kind == "claim" else ())
+        for i, j in pairs:
+            verdict = is_inner_diagonal(e.polygon, i, j)
+            assert verdict.ok or verdict.code == "crosses", (e.spec, verdict)
 
 
 def test_different_seeds_differ():
