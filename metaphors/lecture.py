@@ -13,7 +13,20 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from manim import DOWN, LEFT, RIGHT, UP, Create, Dot, FadeIn, FadeOut, Line, VGroup, Write
+from manim import (
+    DOWN,
+    LEFT,
+    RIGHT,
+    UP,
+    Create,
+    Dot,
+    FadeIn,
+    FadeOut,
+    Flash,
+    Line,
+    VGroup,
+    Write,
+)
 
 from geometry.cdt import constrained_delaunay
 from geometry.check import is_inner_diagonal
@@ -311,12 +324,29 @@ class LectureScene(TraceScene):
                 dot = tag(Dot(at, radius=0.13, color=theme.result), "result", "pick")
                 anims.append(FadeIn(dot, scale=2.5))
         for i, j in exercise.options or self._claimed(exercise):
-            ok = bool(is_inner_diagonal(polygon, i, j))
-            colour = theme.result if ok else theme.rejected
+            verdict = is_inner_diagonal(polygon, i, j)
+            colour = theme.result if verdict.ok else theme.rejected
             anims.append(Create(tag(Line(frame.to_scene(polygon.points[i]),
                                          frame.to_scene(polygon.points[j]), color=colour,
                                          stroke_width=theme.stroke * 1.5),
-                                    "result" if ok else "rejected", "answer:diagonal")))
+                                    "result" if verdict.ok else "rejected", "answer:diagonal")))
+            anims += self._crossing(verdict, polygon, frame)
+        return anims
+
+    def _crossing(self, verdict, polygon, frame: Frame) -> list:
+        """A rejected diagonal's crossed edge, thick in red (the answer's text names it), and a
+        flash where it is crossed."""
+        if verdict.edge is None:
+            return []
+        theme = self.theme
+        u, v = verdict.edge
+        name = f"edge:{polygon.labels[u]}–{polygon.labels[v]}"
+        edge = tag(Line(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[v]),
+                        color=theme.rejected, stroke_width=theme.stroke * 2.5), "rejected", name)
+        anims = [Create(edge)]
+        if verdict.point is not None:
+            anims.append(Flash(frame.to_scene(verdict.point), color=theme.rejected,
+                               flash_radius=0.45))
         return anims
 
     @staticmethod
