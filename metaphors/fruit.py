@@ -17,6 +17,7 @@ from manim import (
     Line,
     Polygram,
     Transform,
+    VGroup,
 )
 from manim import (
     Polygon as MPolygon,
@@ -64,9 +65,13 @@ def _setup(board, beat) -> None:
 
 
 def _counter(board, k: int, total: int):
+    return _counter_text(board, f"{k} / {total} slices", board.theme.ink)
+
+
+def _counter_text(board, words: str, colour: str):
     theme = board.theme
-    text = tag(typeset.text(f"{k} / {total} slices", font=theme.font, size=theme.label_size,
-                            colour=theme.ink), None, "counter")
+    text = tag(typeset.text(words, font=theme.font, size=theme.label_size, colour=colour),
+               None, "counter")
     return text.move_to((board.frame.center[0], PLATE_Y + 0.68, 0))
 
 
@@ -109,8 +114,10 @@ def clip(board, beat) -> None:
     left = board.frame.center[0] - PLATE_WIDTH / 2
     target.move_to((left + slot * (data.k - 0.5), PLATE_Y, 0))
     counter = _counter(board, data.k, data.total)
-    anims = [Transform(piece, target), FadeOut(knife),
-             Transform(board.objects["counter"], counter)]
+    # the count is cut, not morphed: glyphs melting into each other read as other numbers
+    board.scene.remove(board.objects["counter"])
+    board.keep("counter", counter)
+    anims = [Transform(piece, target), FadeOut(knife), FadeIn(counter)]
     if data.rest:
         anims.append(Transform(board.shape, _fruit(board, data.rest)))
     else:
@@ -118,6 +125,30 @@ def clip(board, beat) -> None:
     board.scene.add(piece)
     board.play(beat, *anims, run_time=1.0)
     board.keep(f"slice:{data.k}", piece)
+    if data.triangulation:
+        _whole(board, beat)
+
+
+def _whole(board, beat) -> None:
+    """After the last slice: every slice back in its place in P, the whole triangulation, and
+    the count it had to reach (n − 2, with two more per hole)."""
+    theme = board.theme
+    pieces = [tag(MPolygon(*[board.at(p) for p in corners],
+                           color=theme.pieces[k % len(theme.pieces)],
+                           stroke_width=theme.thin_stroke,
+                           fill_color=theme.pieces[k % len(theme.pieces)],
+                           fill_opacity=theme.fill_opacity), "result", "triangulation")
+              for k, corners in enumerate(beat.triangulation)]
+    holes = len(board.holes)
+    n = board.polygon.n + sum(len(h["points"]) for h in board.holes)
+    count = (f"n − 2 = {n} − 2 = {beat.total} triangles" if not holes else
+             f"n + 2h − 2 = {n} + {2 * holes} − 2 = {beat.total} triangles")
+    result = _counter_text(board, count, theme.result)
+    board.scene.remove(board.objects["counter"])
+    board.keep("counter", result)
+    board.keep("triangulation", VGroup(*pieces))
+    board.scene.play(*[FadeIn(p) for p in pieces], FadeIn(result), run_time=1.2)
+    board.scene.wait(1.0)
 
 
 
@@ -162,6 +193,7 @@ class Slice(Beat):
     k: int
     total: int
     rest: list
+    triangulation: list  # after the last slice, every slice's corners' points; else empty
 
 
 @beat_kind("last-slice")
@@ -238,6 +270,8 @@ def _slice(corners, labels, points, clipped) -> dict:
         # what is left of the fruit once this slice is off (empty after the last one)
         "rest": [where[x] for x in labels if x not in gone | {corners[1]}]
         if len(clipped) < len(labels) - 2 else [],
+        "triangulation": [[where[c] for c in cut] for cut in clipped]
+        if len(clipped) == len(labels) - 2 else [],
     }
 
 
@@ -249,6 +283,7 @@ def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 
 
 READS = {"is_ear": read_ear_test, "clip_ear": read_clip, "ear-clipping": read_clip,
-         "ear-clipping-naive": read_clip, "good_subpolygon": read_good,
+         "ear-clipping-naive": read_clip, "prune-and-search": read_clip,
+         "good_subpolygon": read_good,
          "join_hole": read_join_hole}
 PERFORMS = {EarTest: ear_test, Keyhole: keyhole, Slice: clip, LastSlice: clip, Good: good}

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from manim import Create, DashedLine, FadeIn, FadeOut, Indicate, Line, Transform
+from manim import Create, DashedLine, FadeIn, FadeOut, Indicate, Line, Transform, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.tags import tag
@@ -75,6 +75,30 @@ def stack(board, beat) -> None:
         board.keep(f"triangle:{beat.step}:{k}", t)
         drawn.append(Create(t))
     board.play(beat, *drawn, run_time=1.0)
+    if beat.triangulation:
+        _whole(board, beat)
+
+
+def _whole(board, beat) -> None:
+    """After the last piece: the pieces' tints give way to the whole triangulation, each
+    triangle its own colour, and the count it had to reach, n − 2."""
+    theme = board.theme
+    tints = [k for k in board.objects if k.startswith("piece:")]
+    whole = [tag(MPolygon(*[board.at(p) for p in corners],
+                          color=theme.pieces[k % len(theme.pieces)],
+                          stroke_width=theme.thin_stroke,
+                          fill_color=theme.pieces[k % len(theme.pieces)],
+                          fill_opacity=theme.fill_opacity), "result", "triangulation")
+             for k, corners in enumerate(beat.triangulation)]
+    n = board.polygon.n
+    count = tag(text(f"n − 2 = {n} − 2 = {len(whole)} triangles", font=theme.font,
+                     size=theme.label_size + 2, colour=theme.result), None, "counter")
+    count.next_to(board.shape, direction=[0, -1, 0], buff=0.3)
+    board.keep("triangulation", VGroup(*whole))
+    board.keep("counter", count)
+    board.scene.play(*board.drop(*tints), *[FadeIn(t) for t in whole], FadeIn(count),
+                     run_time=1.2)
+    board.scene.wait(1.0)
 
 
 # --- what the monotone triangulation reads from the log ------------------------------------------
@@ -114,9 +138,11 @@ class Pieces(Beat):
 
 @beat_kind("stack")
 class Stack(Beat):
-    """The triangles the stack cuts from one monotone piece."""
+    """The triangles the stack cuts from one monotone piece; after the last piece, every
+    triangle of the run (``triangulation``; else empty)."""
 
     triangles: list
+    triangulation: list
 
 
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -146,9 +172,12 @@ def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     where = walk.root_points()
     labels = list(where)
     triangles = [[where[labels[k]] for k in t] for t in ret.result]
+    done = walk.memo("monotone.triangles", list)  # the triangles of the pieces so far
+    done.extend(triangles)
     yield walk.step(Stack, f"The stack triangulates a monotone piece: "
                     f"{len(triangles)} triangle{'s' if len(triangles) != 1 else ''}", call, ret,
-                    triangles=triangles)
+                    triangles=triangles,
+                    triangulation=list(done) if len(done) == len(labels) - 2 else [])
 
 
 READS = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,

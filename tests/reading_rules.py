@@ -274,3 +274,37 @@ def answers_over_pictures(data: dict) -> list[str]:
                     found.append(text)
                 picture = []
     return found
+
+
+_SLICES = re.compile(r"(\d+) / (\d+) slices$")
+_RESULT = re.compile(r"= (\d+) triangles$")
+
+
+def broken_counts(data: dict) -> list[str]:
+    """Issue 22 item 5: the slice counts that do not run 0, 1 … n − 2 one by one, or that end
+    without the whole triangulation drawn and its ``… = n − 2 triangles``, as
+    ``"0 1 3 … / 11 → 11"``; and a count said (``… = 11 triangles``) that is not the number of
+    triangles drawn. A count is each counter shown, in order (a new run starts at 0)."""
+    shown = [n["text"] for play in data["plays"] for anim in play["animations"]
+             if anim["type"] in INCOMING and (n := anim.get("mobject", {})).get("name")
+             == "counter"]
+    runs: list[tuple[list[int], int, str | None]] = []
+    for text in shown:
+        if (m := _SLICES.search(text)) is not None:
+            k, total = int(m[1]), int(m[2])
+            if k == 0 or not runs or runs[-1][2] is not None:
+                runs.append(([], total, None))
+            runs[-1][0].append(k)
+        elif (m := _RESULT.search(text)) is not None and runs:
+            runs[-1] = (runs[-1][0], runs[-1][1], m[1])
+    drawn = sum(1 for play in data["plays"] for anim in play["animations"]
+                if anim["type"] in INCOMING
+                and anim.get("mobject", {}).get("name") == "triangulation")
+    found = []
+    for ks, total, result in runs:
+        if ks != list(range(total + 1)) or result != str(total):
+            found.append(f"{' '.join(map(str, ks))} / {total} → {result}")
+    said = sum(int(m[1]) for text in shown if (m := _RESULT.search(text)) is not None)
+    if drawn != said or drawn < sum(total for _, total, _ in runs):
+        found.append(f"{drawn} triangles drawn, {said} said")
+    return found

@@ -28,6 +28,7 @@ from click.testing import CliRunner
 
 from tests.reading_rules import (
     answers_over_pictures,
+    broken_counts,
     crossfaded_subtitles,
     hidden_failures,
     rushed_questions,
@@ -472,6 +473,24 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 item 6: time to think, and the answer beside the picture, not over it
     assert rushed_questions(data) == [], chapter.slug
     assert answers_over_pictures(data) == [], chapter.slug
+    # issue 22 item 5: counters run 1 … n − 2 and end on the whole triangulation
+    assert broken_counts(data) == [], chapter.slug
+
+
+@pytest.mark.parametrize("slug, runs", [("ears", 3), ("faster", 1)])
+def test_ear_clipping_and_monotone_end_on_the_whole_triangulation(slug, runs):
+    """Issue 22 item 5: each triangulating run ends on all its triangles drawn in P and
+    "n − 2 = … triangles" (broken_counts checks that the count said is the count drawn)."""
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    chapter = next(c for c in lecture_chapters() if c.slug == slug)
+    data = build(_chapter_class(chapter).handed()).data
+    said = [n["text"] for p in data["plays"] for a in p["animations"]
+            if a["type"] == "FadeIn" and (n := a["mobject"]).get("name") == "counter"
+            and n["text"].endswith(" triangles")]
+    assert len(said) == runs and all(s.startswith("n ") for s in said), said
+    assert broken_counts(data) == []
 
 
 @pytest.mark.parametrize("chapter", _chapters())

@@ -44,6 +44,7 @@ from story.spec import RunSpec
 from story.storyboard import run_vertices
 from tests.reading_rules import (
     LEAST_LINE,
+    broken_counts,
     crossfaded_subtitles,
     graph_nodes,
     hidden_failures,
@@ -210,6 +211,13 @@ def test_never_two_subtitles_at_once(case):
     """Issue 22 item 9: a caption goes before the next comes (no play fades one subtitle
     out while the next fades in)."""
     assert crossfaded_subtitles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_slices_are_counted_one_by_one_up_to_the_whole_triangulation(case):
+    """Issue 22 item 5: a slice counter runs 0, 1 … n − 2 and never jumps; the run ends on
+    the whole triangulation drawn in P with its count."""
+    assert broken_counts(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
