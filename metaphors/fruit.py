@@ -23,6 +23,8 @@ from manim import (
     Polygon as MPolygon,
 )
 
+from geometry.batch import in_closed_triangle
+from geometry.predicates import orient
 from metaphors.tags import tag
 from rendering import typeset
 from story.beats import Beat, beat_kind
@@ -76,9 +78,23 @@ def _counter_text(board, words: str, colour: str):
 
 
 def ear_test(board, beat) -> None:
+    """The vertex tested pulses; a vertex that is no ear shows why: its triangle, outlined in
+    red, with the vertex inside it pulsing too (or, not convex, the triangle alone)."""
     _setup(board, beat)
-    colour = board.theme.result if beat.ear else board.theme.rejected
-    board.play(beat, Indicate(board.markers[unprimed(beat.vertex)], color=colour), run_time=0.6)
+    theme = board.theme
+    colour = theme.result if beat.ear else theme.rejected
+    anims = [*board.drop("ear-triangle"),
+             Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
+    if beat.triangle:
+        outline = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.rejected,
+                               stroke_width=theme.stroke * 1.5, fill_color=theme.rejected,
+                               fill_opacity=0.3), "rejected", "ear-triangle")
+        board.keep("ear-triangle", outline)
+        anims.append(FadeIn(outline))
+    if beat.inside:
+        anims.append(Indicate(board.markers[unprimed(beat.inside)], color=theme.rejected,
+                              scale_factor=1.6))
+    board.play(beat, *anims, run_time=0.6 if beat.ear else 0.9)
 
 
 def keyhole(board, beat) -> None:
@@ -103,7 +119,7 @@ def clip(board, beat) -> None:
     a, b, c = data.points
     knife = tag(Line(board.at(a), board.at(c), color=theme.knife, stroke_width=theme.stroke * 2),
                 "called", "knife")
-    board.play(beat, Create(knife), run_time=0.6)
+    board.play(beat, *board.drop("ear-triangle"), Create(knife), run_time=0.6)
     piece = tag(MPolygon(*[board.at(p) for p in (a, b, c)], color=theme.rind,
                          stroke_width=theme.thin_stroke, fill_color=theme.fruit,
                          fill_opacity=0.9), "result", f"slice:{''.join(data.corners)}")
@@ -178,10 +194,13 @@ class Keyhole(Beat):
 
 @beat_kind("ear-test")
 class EarTest(Beat):
-    """Is ``vertex`` an ear (``ear``)?"""
+    """Is ``vertex`` an ear (``ear``)? If not, its ``triangle`` (points; empty for an ear) and
+    the vertex ``inside`` it (None when the vertex is not convex)."""
 
     vertex: str
     ear: bool
+    triangle: list
+    inside: str | None
 
 
 @beat_kind("clip")
@@ -216,10 +235,51 @@ def unprimed(label: str) -> str:
 
 def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, ear = walk.ref(call, "v"), bool(ret.result)
-    caption = f"Is {v} an ear? " + ("yes: its triangle holds no other vertex" if ear
-                                     else "no: a cut between its neighbours is not a clean slice")
-    yield walk.step(EarTest, caption, call, ret,
-                    roles={unprimed(v): "result" if ear else "rejected"}, vertex=v, ear=ear)
+    why = None if ear else _not_an_ear(walk, v)
+    if ear:
+        caption = f"Is {v} an ear? yes: its triangle holds no other vertex"
+    elif why is None:  # not found on the fruit as it stands (never seen): say it plainly
+        caption = f"Is {v} an ear? no: a cut between its neighbours is not a clean slice"
+    elif why[1] is None:
+        caption = f"Is {v} an ear? no: {v} is not convex"
+    else:
+        caption = f"Is {v} an ear? no: {why[1]} lies in its triangle"
+    roles = {unprimed(v): "result" if ear else "rejected"}
+    if why is not None and why[1] is not None:
+        roles[unprimed(why[1])] = "rejected"
+    yield walk.step(EarTest, caption, call, ret, roles=roles, vertex=v, ear=ear,
+                    triangle=why[0] if why else [], inside=why[1] if why else None)
+
+
+def _ring(walk: Walk) -> tuple[list[str], list]:
+    """The fruit's ring before any slice: P's labels and points, or with holes the ring its
+    keyholes made (kept: it has exited by the last slice)."""
+    labels, points = walk.root_polygon()
+    kept = walk.memo("fruit.keyhole", dict)
+    if "keyhole" in walk.live:
+        kept.update(walk.live["keyhole"])
+    if kept:
+        labels, points = kept["labels"], kept["points"]
+    return labels, points
+
+
+def _not_an_ear(walk: Walk, v: str) -> tuple[list, str | None] | None:
+    """Why ``v`` is no ear of the fruit as it stands: its triangle's points and a vertex in
+    the closed triangle, or None there when ``v`` is not convex; None if neither is found."""
+    labels, points = _ring(walk)
+    gone = {c[1] for c in walk.memo("fruit.clipped", list)}
+    ring = [k for k, label in enumerate(labels) if label not in gone]
+    if v not in labels or labels.index(v) not in ring:
+        return None
+    at = ring.index(labels.index(v))
+    corners = [ring[at - 1], ring[at], ring[(at + 1) % len(ring)]]
+    a, b, c = (points[k] for k in corners)
+    triangle = [a, b, c]
+    if orient(a, b, c) <= 0:
+        return triangle, None
+    inside = next((labels[k] for k in ring
+                   if k not in corners and in_closed_triangle(points[k], a, b, c)), None)
+    return (triangle, inside) if inside is not None else None
 
 
 def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -233,13 +293,7 @@ def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 
 def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     """A slice cut off (``clip_ear``), or at the end of the run the triangle left over."""
-    labels, points = walk.root_polygon()
-    # a polygon with holes: the ring its keyholes made (kept: it has exited by the last slice)
-    kept = walk.memo("fruit.keyhole", dict)
-    if "keyhole" in walk.live:
-        kept.update(walk.live["keyhole"])
-    if kept:
-        labels, points = kept["labels"], kept["points"]
+    labels, points = _ring(walk)
     if not labels:
         return
     clipped = walk.memo("fruit.clipped", list)  # the ears cut so far

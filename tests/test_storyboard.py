@@ -37,3 +37,34 @@ def test_fruit_beats_count_every_slice():
     assert [b.data["k"] for b in slices] == list(range(1, 12))
     assert slices[-1].action == "last-slice" and slices[-1].data["rest"] == []
     assert all(b.data["total"] == 11 for b in slices)
+
+
+@pytest.mark.parametrize("algorithm", ["ear-clipping-naive", "ear-clipping", "prune-and-search"])
+@pytest.mark.parametrize("polygon", ["lecture", "comb", "random-2opt:12:7", "random-comb:14:3"])
+def test_a_vertex_that_is_no_ear_shows_why(algorithm, polygon):
+    """Issue 22 item 5: "Is B an ear? no" names a vertex in B's triangle (which the fruit
+    scene pulses inside the triangle drawn), or says B is not convex; checked exactly."""
+    from geometry.batch import in_closed_triangle
+    from geometry.io import read_polygon
+    from geometry.predicates import orient
+
+    p = read_polygon(polygon)
+    where = dict(zip(p.labels, p.points, strict=True))
+    tests = [b for b in storyboard(run_logged(algorithm, polygon)) if b.action == "ear-test"]
+    assert any(not b.data["ear"] for b in tests)
+    for b in tests:
+        if b.data["ear"]:
+            assert b.data["triangle"] == [] and b.data["inside"] is None
+            continue
+        a, v, c = (tuple(q) for q in b.data["triangle"])
+        assert v == where[b.data["vertex"]]
+        inside = b.data["inside"]
+        if inside is None:
+            assert orient(a, v, c) <= 0
+            said = "is not convex"
+        else:
+            assert orient(a, v, c) > 0 and where[inside] not in (a, v, c)
+            assert in_closed_triangle(where[inside], a, v, c), b.caption
+            said = f"{inside} lies in its triangle"
+        # a beat played fast, several under one caption ("Slices 3–7: …"), says no more
+        assert b.caption.endswith(said) or not b.caption.startswith("Is "), b.caption
