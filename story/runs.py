@@ -20,9 +20,11 @@ from geometry.io import Shape, read_shape
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import refuse_holes, triangulate
-from geometry.user_heuristics import UserHeuristic, is_user_spec, load_user_heuristic
 from story.pseudocode import from_docstring, to_json
 from story.registry import REGISTRY, hole_pseudocode, shown
+from story.source import shown_source
+from usercode.heuristic import UserHeuristic, diagonal_rule, load_user_heuristic
+from usercode.loading import is_user_spec
 
 
 def fit_for(algorithm: str, shape: Shape) -> Shape:
@@ -80,7 +82,7 @@ def record_run(algorithm: str, p: Polygon | PolygonWithHoles, polygon: str,
     known = REGISTRY.get(algorithm)
     with tracing.record(**meta) as log, tracing.alive(p):
         if known is None:  # geometry's own one-line KeyError names the algorithms it runs
-            triangulate(p, algorithm, heuristic)
+            triangulate(p, algorithm, diagonal_rule(heuristic))
         elif known.is_heuristic:
             known.function(p)
         else:
@@ -107,7 +109,7 @@ def record_user_run(heuristic: UserHeuristic, p: Polygon, polygon: str) -> traci
     (:func:`story.pseudocode.from_docstring`), so a saved log shows them too."""
     spec = heuristic.spec
     meta = {"algorithm": spec, "polygon": polygon, "shown": heuristic.name,
-            "user_heuristic": heuristic.name, "code": [list(row) for row in heuristic.source()]}
+            "user_heuristic": heuristic.name, "code": [list(row) for row in shown_source(heuristic.raw)]}
     rows = from_docstring(inspect.getdoc(heuristic.raw))
     if rows:
         meta["pseudocode"] = to_json(rows)
