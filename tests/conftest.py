@@ -65,8 +65,8 @@ def _imports(path: Path) -> frozenset[str]:
 
 def is_fast(path: Path) -> bool:
     """Whether a test file belongs to ``make test-fast``: a module of tracing, geometry,
-    usercode or story (its doctests), or a test module importing nothing above story and starting no
-    process."""
+    usercode or story (its doctests), or a test module importing nothing above story and
+    starting no process."""
     try:
         parts = path.resolve().relative_to(ROOT).parts
     except ValueError:  # outside the repository
