@@ -22,9 +22,9 @@ test: $(STAMP)
 	$(BIN)/lint-imports
 	$(BIN)/python -m pytest -n 2
 
-# The edit-test loop: the tracing, geometry and story tests only (tests/conftest.py's --fast
-# picks them by what they import), without the hypothesis sweeps, under a minute; `make test`
-# stays the whole suite.
+# The edit-test loop: the tracing, geometry, usercode and story tests only (tests/conftest.py's
+# --fast picks them by what they import), without the hypothesis sweeps, under a minute;
+# `make test` stays the whole suite.
 test-fast: $(STAMP)
 	$(BIN)/python -m pytest -n 2 -q --fast
 

@@ -107,7 +107,7 @@ def divide_and_conquer(polygon: Polygon,
     """Lennes' triangulation: a triangle is done; otherwise find a diagonal, split, go on.
 
     ``heuristic`` is a built-in's name, or a function ``piece -> Diagonal`` (a heuristic of
-    one's own, :attr:`geometry.user_heuristics.UserHeuristic.function`, its errors and its
+    one's own, :attr:`usercode.heuristic.UserHeuristic.function`, its errors and its
     time limit its own): it runs on each piece until its first wrong claim.
     """
     find = heuristic if callable(heuristic) else HEURISTICS[heuristic]

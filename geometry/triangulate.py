@@ -23,13 +23,13 @@ from geometry.cdt import cdt
 from geometry.check import verify_triangulation
 from geometry.ears import ear_clipping, ear_clipping_naive
 from geometry.errors import HolesNotSupportedError
+from geometry.frame import Diagonal
 from geometry.holes import PolygonWithHoles
 from geometry.lennes import divide_and_conquer
 from geometry.monotone import monotone
 from geometry.polygon import Polygon
 from geometry.prune_search import prune_and_search
 from geometry.results import Triangulation
-from geometry.user_heuristics import UserHeuristic, is_user_spec, load_user_heuristic
 
 #: The algorithms that take only the polygon (divide and conquer also takes a heuristic).
 RUNNERS: dict[str, Callable[[Polygon], Triangulation]] = {
@@ -67,7 +67,7 @@ def refuse_holes(polygon: Polygon | PolygonWithHoles, algorithm: str) -> None:
 
 
 def triangulate(polygon: Polygon | PolygonWithHoles, algorithm: str,
-                heuristic: str | UserHeuristic | None = None) -> Triangulation:
+                heuristic: str | Callable[[Polygon], Diagonal] | None = None) -> Triangulation:
     """Run a triangulation algorithm by name and verify its answer exactly.
 
     Parameters
@@ -76,11 +76,11 @@ def triangulate(polygon: Polygon | PolygonWithHoles, algorithm: str,
         The polygon to triangulate; one with holes only by :data:`HOLE_ALGORITHMS`.
     algorithm : str
         One of :data:`ALGORITHMS`.
-    heuristic : str or UserHeuristic, optional
+    heuristic : str or callable, optional
         Divide and conquer's diagonal rule (gravity when None): a built-in's name, or a
-        heuristic of one's own (``file.py:function`` or loaded), called through
-        :mod:`geometry.user_heuristics` (its one-line errors and time limit apply); the other
-        algorithms take none and ignore it.
+        function ``piece -> Diagonal``; a heuristic of one's own is handed as
+        :func:`usercode.heuristic.diagonal_rule` makes it (its traced run, its one-line errors
+        and time limit its own). The other algorithms take none and ignore it.
 
     Raises
     ------
@@ -108,13 +108,6 @@ def triangulate(polygon: Polygon | PolygonWithHoles, algorithm: str,
     return result
 
 
-def diagonal_rule(heuristic: str | UserHeuristic | None):
-    """What divide and conquer calls on each piece: a built-in's name (gravity for None), or
-    the traced run of a heuristic of one's own (loaded now if given as ``file.py:function``)."""
-    if heuristic is None:
-        return "gravity"
-    if isinstance(heuristic, UserHeuristic):
-        return heuristic.function
-    if is_user_spec(heuristic):
-        return load_user_heuristic(heuristic).function
-    return heuristic
+def diagonal_rule(heuristic: str | Callable[[Polygon], Diagonal] | None):
+    """What divide and conquer calls on each piece: ``heuristic``, gravity for None."""
+    return "gravity" if heuristic is None else heuristic

@@ -33,7 +33,6 @@ from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
 from geometry.triangulate import triangulate
-from geometry.user_heuristics import load_user_heuristic
 from metaphors import catalog
 from metaphors.analysis import Analysis, play_analysis
 from metaphors.countdown import countdown
@@ -51,6 +50,7 @@ from story.registry import spoken
 from story.runs import record_user_run
 from story.spec import RunSpec
 from story.storyboard import Pacing
+from usercode.heuristic import load_user_heuristic
 
 #: the widest a card's line may be (scene units): a longer one wraps
 CARD_WIDTH = 13.2

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from functools import cache
 
-from geometry.user_heuristics import shown_source
 from story.registry import REGISTRY
+from story.source import shown_source
 
 
 def _functions() -> dict:
@@ -23,7 +23,7 @@ def _functions() -> dict:
 @cache
 def source_of(name: str) -> tuple[tuple[int, str], ...]:
     """(source line number, text) for each shown line: no decorators, docstring or blank lines
-    (:func:`geometry.user_heuristics.shown_source`). Empty for an unknown name (the panel then
+    (:func:`story.source.shown_source`). Empty for an unknown name (the panel then
     shows no code).
 
     >>> [text for _, text in source_of("divide_and_conquer")][2]  # past the docstring

@@ -21,13 +21,6 @@ from types import MappingProxyType
 from manim import DOWN, FadeIn, FadeOut, Scene, VGroup, config
 from manim.constants import RendererType
 
-from geometry.user_heuristics import (
-    UserHeuristic,
-    as_heuristic,
-    is_user_spec,
-    load_attribute,
-    load_user_heuristic,
-)
 from metaphors import catalog
 from metaphors.board import Board
 from metaphors.layout import METAPHOR
@@ -46,6 +39,8 @@ from story.registry import heuristics, spoken
 from story.spec import RunSpec
 from story.storyboard import Pacing
 from tracing import Log
+from usercode.heuristic import UserHeuristic, as_heuristic, load_user_heuristic
+from usercode.loading import is_user_spec, load_attribute
 
 
 def _subclass(cls: type, **attributes) -> type:
@@ -125,7 +120,7 @@ class TraceScene(SpecScene, Recorded, Scene):
     def with_heuristic(cls, heuristic: str) -> type:
         """This scene with divide and conquer's diagonals found by ``heuristic``: a built-in's
         name, or ``file.py:function`` of one's own (loaded now, so that a bad spec is one
-        line: :class:`geometry.user_heuristics.UserHeuristicError`). The run goes on to its
+        line: :class:`usercode.errors.UserHeuristicError`). The run goes on to its
         first wrong claim; the title names the heuristic. Raises ValueError for a scene whose
         run takes no heuristic, or an unknown name."""
         if cls.heuristic is None:
@@ -269,11 +264,11 @@ def scene_for_heuristic(spec: str) -> type[Scene]:
     """The Scene class for ``path/to/file.py:name``.
 
     If ``name`` is a Scene class defined in the file, that class; otherwise ``name`` is a
-    heuristic of one's own (see :mod:`geometry.user_heuristics`), loaded now so that a bad
+    heuristic of one's own (see :mod:`usercode.heuristic`), loaded now so that a bad
     spec fails here, and the class plays its run on the polygon it is handed (plain
     ``manim``: ``TREX_POLYGON``; default: the counterexample) with the user's source in the
     panel. Raises
-    :class:`geometry.user_heuristics.UserHeuristicError` (a ValueError, one-line message).
+    :class:`usercode.errors.UserHeuristicError` (a ValueError, one-line message).
     """
     path, name, value = load_attribute(spec)
     if isinstance(value, type) and issubclass(value, Scene):

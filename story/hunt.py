@@ -44,12 +44,8 @@ from geometry.frame import Diagonal
 from geometry.polygon import Polygon
 from geometry.predicates import Point, orient
 from geometry.samples import make_sample
-from geometry.user_heuristics import (
-    UserHeuristic,
-    UserHeuristicError,
-    UserHeuristicExit,
-    run_heuristic,
-)
+from usercode.errors import UserHeuristicError, UserHeuristicExit
+from usercode.heuristic import UserHeuristic, run_heuristic
 
 __all__ = [
     "BATCH",
@@ -130,7 +126,7 @@ class Failure:
     @property
     def way(self) -> str:
         """What a shrunk polygon must still do: ``wrong claim``, or the error's
-        :attr:`~geometry.user_heuristics.UserHeuristicError.way` (``timeout`` …)."""
+        :attr:`~usercode.errors.UserHeuristicError.way` (``timeout`` …)."""
         return "wrong claim" if self.error is None else self.error.way
 
 
@@ -157,7 +153,7 @@ def fails(points: Sequence[Point], heuristic: Heuristic, way: str | None = None,
     one a class can see fail (not a claim that only passes through a vertex).
 
     A function of one's own that tries to end the program
-    (:class:`~geometry.user_heuristics.UserHeuristicExit`) raises here, as does a built-in
+    (:class:`~usercode.errors.UserHeuristicExit`) raises here, as does a built-in
     heuristic that refuses a polygon (ValueError)."""
     if len(points) < 4:
         return None
@@ -482,7 +478,7 @@ def hunt(heuristic: Heuristic, *, budget: int = 5000, seed: int = 0, max_vertice
     ``progress(k)`` is told of every ``k`` polygons drawn. The result depends on the
     heuristic, the budget, the seed and ``max_vertices`` only (``seconds`` aside; and which
     polygons run out of time, for a function that does). A function of one's own that tries
-    to end the program raises :class:`~geometry.user_heuristics.UserHeuristicExit`.
+    to end the program raises :class:`~usercode.errors.UserHeuristicExit`.
     ``general``: only polygons in general position whose wrong claim crosses an edge count,
     and the shrinker keeps them so (:func:`fails`; the lecture shows such a one).
     """

@@ -44,6 +44,7 @@ from geometry.polygon import Polygon
 from geometry.results import Triangulation
 from geometry.triangulate import RUNNERS, triangulate
 from story.pseudocode import Step
+from usercode.heuristic import UserHeuristic, diagonal_rule
 
 __all__ = [
     "HEURISTIC",
@@ -228,10 +229,12 @@ def _traced_name(function: Callable) -> str:
 
 
 def _runner(name: str) -> Callable[..., Triangulation]:
-    """``triangulate(polygon, name, heuristic)``, the one place the registry calls it."""
+    """``triangulate(polygon, name, heuristic)``, the one place the registry calls it; a
+    heuristic of one's own goes to geometry as its traced run
+    (:func:`usercode.heuristic.diagonal_rule`)."""
 
-    def run(polygon: Polygon, heuristic: str | None = None) -> Triangulation:
-        return triangulate(polygon, name, heuristic)
+    def run(polygon: Polygon, heuristic: str | UserHeuristic | None = None) -> Triangulation:
+        return triangulate(polygon, name, diagonal_rule(heuristic))
 
     run.__name__ = run.__qualname__ = f"triangulate_{name.replace('-', '_')}"
     run.__doc__ = f"Triangulate the polygon with {name} (verified exactly)."

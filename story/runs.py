@@ -20,9 +20,11 @@ from geometry.io import Shape, read_shape
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import refuse_holes, triangulate
-from geometry.user_heuristics import UserHeuristic, is_user_spec, load_user_heuristic
 from story.pseudocode import from_docstring, to_json
 from story.registry import REGISTRY, hole_pseudocode, shown
+from story.source import shown_source
+from usercode.heuristic import UserHeuristic, diagonal_rule, load_user_heuristic
+from usercode.loading import is_user_spec
 
 
 def fit_for(algorithm: str, shape: Shape) -> Shape:
@@ -49,10 +51,9 @@ def read_for(algorithm: str, polygon: str) -> Shape:
 
 def run_logged(algorithm: str, polygon: str, heuristic: str | None = None,
                shape: Shape | None = None) -> tracing.Log:
-    """Run a heuristic (by name, or ``file.py:function`` of one's own) or a triangulation
-    algorithm on a polygon file or sample (with holes, for the algorithms that take them).
-    ``shape``, if given, is that polygon read already (:func:`read_for`): it is not read
-    again."""
+    """Run a heuristic (by name, or ``file.py:function`` of one's own) or a triangulation algorithm
+    on a polygon file or sample (with holes, for the algorithms that take them). ``shape``, if
+    given, is that polygon read already (:func:`read_for`): it is not read again."""
     own = load_user_heuristic(algorithm) if is_user_spec(algorithm) else None  # a bad spec first
     shape = read_for(algorithm, polygon) if shape is None else fit_for(algorithm, shape)
     if own is not None:
@@ -63,11 +64,10 @@ def run_logged(algorithm: str, polygon: str, heuristic: str | None = None,
 def record_run(algorithm: str, p: Polygon | PolygonWithHoles, polygon: str,
                heuristic: str | None = None) -> tracing.Log:
     """The log of a named heuristic or triangulation algorithm on the polygon ``p`` (read from
-    ``polygon``, the name the log records). ``trex log`` writes exactly this log.
-
-    Divide and conquer's ``heuristic`` may be one's own (``file.py:function``): it is loaded
-    first (a bad spec is one line, before anything runs), and the meta names its traced
-    function (``heuristic_function``), which the storyboard then treats as a heuristic."""
+    ``polygon``, the name the log records). ``trex log`` writes exactly this log. Divide and
+    conquer's ``heuristic`` may be one's own (``file.py:function``): it is loaded first (a bad
+    spec is one line, before anything runs), and the meta names its traced function
+    (``heuristic_function``), which the storyboard then treats as a heuristic."""
     meta = {"algorithm": algorithm, "polygon": polygon, "shown": shown(algorithm)}
     if p.hole_count:  # the listing with the holes' rows (a simple polygon's meta is unchanged)
         meta["pseudocode"] = to_json(hole_pseudocode(algorithm))
@@ -80,7 +80,7 @@ def record_run(algorithm: str, p: Polygon | PolygonWithHoles, polygon: str,
     known = REGISTRY.get(algorithm)
     with tracing.record(**meta) as log, tracing.alive(p):
         if known is None:  # geometry's own one-line KeyError names the algorithms it runs
-            triangulate(p, algorithm, heuristic)
+            triangulate(p, algorithm, diagonal_rule(heuristic))
         elif known.is_heuristic:
             known.function(p)
         else:
@@ -106,8 +106,9 @@ def record_user_run(heuristic: UserHeuristic, p: Polygon, polygon: str) -> traci
     source, and the pseudocode of its docstring if it has some
     (:func:`story.pseudocode.from_docstring`), so a saved log shows them too."""
     spec = heuristic.spec
+    code = [list(row) for row in shown_source(heuristic.raw)]  # the panel's rows of its source
     meta = {"algorithm": spec, "polygon": polygon, "shown": heuristic.name,
-            "user_heuristic": heuristic.name, "code": [list(row) for row in heuristic.source()]}
+            "user_heuristic": heuristic.name, "code": code}
     rows = from_docstring(inspect.getdoc(heuristic.raw))
     if rows:
         meta["pseudocode"] = to_json(rows)

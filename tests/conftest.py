@@ -18,7 +18,7 @@ settings.load_profile("trex")
 def pytest_addoption(parser):
     parser.addoption("--runslow", action="store_true", help="also run tests marked slow")
     parser.addoption("--fast", action="store_true",
-                     help="only the tracing, geometry and story tests (make test-fast)")
+                     help="only the tracing, geometry, usercode and story tests (make test-fast)")
     # Read by manim's frames_comparison (tests/test_render.py).
     parser.addoption("--set_test", action="store_true",
                      help="write manim's control frames to tests/control_data/")
@@ -41,7 +41,7 @@ def pytest_runtest_setup(item):
 
 ROOT = Path(__file__).resolve().parent.parent
 #: the packages whose doctests are fast
-LOWER = ("tracing", "geometry", "story")
+LOWER = ("tracing", "geometry", "usercode", "story")
 #: what a fast test module may not import: the layers above story, manim, or a process
 ABOVE = frozenset({"trex", "metaphors", "rendering", "scenes", "manim", "subprocess"})
 
@@ -64,9 +64,9 @@ def _imports(path: Path) -> frozenset[str]:
 
 
 def is_fast(path: Path) -> bool:
-    """Whether a test file belongs to ``make test-fast``: a module of tracing, geometry or
-    story (its doctests), or a test module importing nothing above story and starting no
-    process."""
+    """Whether a test file belongs to ``make test-fast``: a module of tracing, geometry,
+    usercode or story (its doctests), or a test module importing nothing above story and
+    starting no process."""
     try:
         parts = path.resolve().relative_to(ROOT).parts
     except ValueError:  # outside the repository

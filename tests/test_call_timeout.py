@@ -13,12 +13,9 @@ import pytest
 
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
-from geometry.user_heuristics import (
-    UserHeuristicError,
-    call_timeout,
-    load_user_heuristic,
-    set_call_timeout,
-)
+from usercode.errors import UserHeuristicError
+from usercode.heuristic import load_user_heuristic
+from usercode.limits import call_timeout, set_call_timeout
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -10,7 +10,6 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from geometry.user_heuristics import call_timeout, set_call_timeout
 from story.environment import (
     LOG,
     POLYGON,
@@ -23,6 +22,7 @@ from trex import chapter_pool, chapters, render_command
 from trex.chapter_command import chapter
 from trex.cli import main
 from trex.render_command import load_scene_class, scene_input
+from usercode.limits import call_timeout, set_call_timeout
 
 ROOT = Path(__file__).resolve().parents[1]
 #: The packages of the library, and the scene files.

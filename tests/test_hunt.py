@@ -183,7 +183,7 @@ CRASHES_ON_SIX = """
 def test_a_crash_is_shrunk_while_it_crashes_the_same_way(tmp_path):
     """Right on small polygons, an IndexError from 6 vertices on: the polygon shown is a
     6-vertex one on which it still raises that error, and dropping any vertex stops it."""
-    from geometry.user_heuristics import load_user_heuristic
+    from usercode.heuristic import load_user_heuristic
 
     heuristic = load_user_heuristic(_write(tmp_path, CRASHES_ON_SIX) + ":six")
     result = hunt(heuristic, budget=SMALL_BUDGET, seed=0)

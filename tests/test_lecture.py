@@ -506,11 +506,11 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     """Issue 13: a rule the lecture did not cover, its counterexample found at build time
     (fixed seed), re-checked here exactly, and the card says how it was found."""
     from geometry.check import is_inner_diagonal
-    from geometry.user_heuristics import load_user_heuristic, run_heuristic
     from metaphors.lecture import Hunted
     from story.hunt import hunt, in_general_position
     from trex.chapters import lecture_chapters
     from trex.snapshot import build
+    from usercode.heuristic import load_user_heuristic, run_heuristic
 
     chapter = next(c for c in lecture_chapters() if c.slug == "exercises")
     cls = _chapter_class(chapter)

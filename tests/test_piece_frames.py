@@ -19,10 +19,10 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon, vertex_label
 from geometry.samples import make_sample, sample_names
 from geometry.triangulate import triangulate
-from geometry.user_heuristics import load_user_heuristic
 from metaphors.catalog import beats as storyboard
 from story.runs import run_logged
 from trex.cli import main
+from usercode.heuristic import load_user_heuristic
 
 #: the thesis's correct translation, answered in labels read from the polygon handed
 IN_LABELS = textwrap.dedent('''
@@ -73,14 +73,14 @@ def simple_samples() -> list[str]:
 def test_a_correct_heuristic_answering_in_labels_triangulates_every_sample(name, heuristics):
     polygon = Polygon.from_points(make_sample(name))
     result = triangulate(polygon, "divide-and-conquer",
-                         load_user_heuristic(f"{heuristics}:deepest"))
+                         load_user_heuristic(f"{heuristics}:deepest").function)
     assert result.valid, (name, result.failure)
     assert len(result.triangles) == polygon.n - 2
 
 
 def test_each_piece_is_handed_in_its_own_frame(heuristics):
     own = load_user_heuristic(f"{heuristics}:recording")
-    result = triangulate(read_polygon("lecture"), "divide-and-conquer", own)
+    result = triangulate(read_polygon("lecture"), "divide-and-conquer", own.function)
     assert result.valid
     seen = own.raw.__globals__["SEEN"]
     assert len(seen) == 10  # 13 vertices: 10 diagonals, each claimed on a piece

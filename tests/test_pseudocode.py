@@ -13,7 +13,6 @@ import pytest
 from click.testing import CliRunner
 
 import tracing
-from geometry.user_heuristics import load_user_heuristic
 from metaphors.catalog import beats as storyboard
 from story.pseudocode import PANELS, Step, from_docstring, lit_row, to_json
 from story.registry import REGISTRY, entry, heuristics, names
@@ -21,6 +20,7 @@ from story.runs import run_logged
 from story.storyboard import pseudocode_of
 from trex import chapter_command, chapter_pool, chapters, player_steps, render_command
 from trex.cli import main
+from usercode.heuristic import load_user_heuristic
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = f"{ROOT / 'examples' / 'my_heuristic.py'}:biggest_angle"

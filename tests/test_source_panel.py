@@ -180,7 +180,7 @@ def _module(path, source: str) -> dict:
 
 
 def test_the_source_shown_leaves_out_the_docstring_only(tmp_path):
-    from geometry.user_heuristics import shown_source
+    from story.source import shown_source
 
     namespace = _module(tmp_path / "mine.py", (
         'import functools\n\n\n@functools.cache\ndef mine(polygon):\n'
@@ -194,7 +194,7 @@ def test_the_source_shown_leaves_out_the_docstring_only(tmp_path):
 
 
 def test_a_lambda_or_a_source_that_does_not_parse_alone_is_shown_whole(tmp_path):
-    from geometry.user_heuristics import shown_source
+    from story.source import shown_source
 
     namespace = _module(tmp_path / "odd.py", (
         'first_and_third = lambda polygon: (1, 3)\n\n\ndef outer():\n'

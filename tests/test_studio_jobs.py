@@ -9,8 +9,8 @@ import time
 import pytest
 from starlette.testclient import TestClient
 
-from geometry.user_heuristics import load_user_heuristic
 from trex.studio.app import create_app
+from usercode.heuristic import load_user_heuristic
 
 HOST = "127.0.0.1:8765"
 COUNTER = [[1, 4.5], [9, 2], [3, 6.5], [4.6, 4.1], [1.6, 8]]

@@ -15,10 +15,11 @@ from click.testing import CliRunner
 
 import tracing
 from geometry.io import read_polygon
-from geometry.user_heuristics import UserHeuristicError, load_user_heuristic
 from metaphors.catalog import beats as storyboard
 from story.runs import run_logged
 from trex.cli import main
+from usercode.errors import UserHeuristicError
+from usercode.heuristic import load_user_heuristic
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = f"{ROOT / 'examples' / 'my_heuristic.py'}:biggest_angle"
@@ -631,7 +632,7 @@ def endings(tmp_path):
 
 
 def test_its_own_exit_or_interrupt_is_an_error_of_the_function(endings):
-    from geometry.user_heuristics import UserHeuristicExit
+    from usercode.errors import UserHeuristicExit
 
     polygon = read_polygon("counterexample")
     with pytest.raises(UserHeuristicExit, match=r"^quits called sys\.exit\('done'\) "
@@ -662,7 +663,7 @@ def test_its_prints_go_to_stderr(endings, capsys):
 
 
 def test_off_the_main_thread_its_interrupt_is_its_error(endings):
-    from geometry.user_heuristics import UserHeuristicExit
+    from usercode.errors import UserHeuristicExit
 
     errors = []
 

@@ -12,11 +12,11 @@ import tracing
 from geometry.diagonals import find_diagonal
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
-from geometry.user_heuristics import load_user_heuristic, run_heuristic
 from story.registry import REGISTRY, SPOKEN, entry, spoken
 from story.runs import record_user_run
 from story.storyboard import pseudocode_of, run_vertices, spoken_pseudocode, storyboard
 from tests.reading_rules import unspoken_words
+from usercode.heuristic import load_user_heuristic, run_heuristic
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 

@@ -17,7 +17,6 @@ from pathlib import Path
 
 import click
 
-from geometry.user_heuristics import UserHeuristicError
 from story.pseudocode import PANELS
 from trex.inputs import EXIT_INVALID, call_timeout_option, error_line
 from trex.render_command import (
@@ -29,6 +28,7 @@ from trex.render_command import (
     scene_input,
 )
 from trex.signals import EXIT_SIGNAL, Interrupted, interrupts_raise
+from usercode.errors import UserHeuristicError
 
 __all__ = ["SOURCE_DIRS", "chapter", "chapter_command_line", "render_chapter",
            "render_settings", "source_fingerprint"]

@@ -17,11 +17,11 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from geometry.user_heuristics import call_timeout
 from trex.chapter_command import chapter_command_line
 from trex.chapters import Chapter, ChapterFailed, chapter_label, chapter_stem, scene_path
 from trex.inputs import EXIT_INVALID, error_line, first_line
 from trex.render_command import EXIT_FAILED
+from usercode.limits import call_timeout
 
 __all__ = ["POLL", "STOP_WAIT", "render_chapters"]
 

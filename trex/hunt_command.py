@@ -19,7 +19,6 @@ from pathlib import Path
 import click
 
 from geometry.io import polygon_to_json_points, write_polygon
-from geometry.user_heuristics import UserHeuristic, UserHeuristicError
 from story.hunt import (
     MAX_SHRINK_TIMEOUTS,
     Hunt,
@@ -33,6 +32,8 @@ from story.registry import REGISTRY, entry
 from trex.exit_status import FINDING as EXIT_FOUND
 from trex.inputs import call_timeout_option, error_line, fail, output_or_exit
 from trex.run_commands import HeuristicOrFile
+from usercode.errors import UserHeuristicError
+from usercode.heuristic import UserHeuristic
 
 
 def hunt_record(result: Hunt) -> dict:

@@ -22,8 +22,8 @@ import click
 from geometry.errors import GeometryError
 from geometry.io import Shape, check_format, read_polygon, read_shape
 from geometry.polygon import Polygon
-from geometry.user_heuristics import DEFAULT_CALL_TIMEOUT, call_timeout, set_call_timeout
 from trex.exit_status import INVALID as EXIT_INVALID
+from usercode.limits import DEFAULT_CALL_TIMEOUT, call_timeout, set_call_timeout
 
 if TYPE_CHECKING:
     from story.spec import RunSpec

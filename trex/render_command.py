@@ -27,7 +27,6 @@ import click
 
 from geometry.errors import GeometryError
 from geometry.io import Shape
-from geometry.user_heuristics import UserHeuristicError
 from story.pseudocode import PANELS
 from story.scene_kinds import (
     Handed,
@@ -47,6 +46,7 @@ from trex.inputs import (
     make_parent,
 )
 from trex.signals import Interrupted, Signals, interrupts_raise
+from usercode.errors import UserHeuristicError
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 #: The project's manim settings, which plain ``manim`` reads when run from the repository

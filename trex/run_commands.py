@@ -20,13 +20,6 @@ from geometry.errors import GeometryError
 from geometry.io import Shape, write_atomic
 from geometry.polygon import Polygon
 from geometry.triangulate import triangulate
-from geometry.user_heuristics import (
-    UserHeuristic,
-    UserHeuristicError,
-    is_user_spec,
-    load_user_heuristic,
-    run_heuristic,
-)
 from story.registry import heuristics, names, triangulations
 from trex import exit_status
 from trex.inputs import (
@@ -39,6 +32,9 @@ from trex.inputs import (
     report_error,
     try_load,
 )
+from usercode.errors import UserHeuristicError
+from usercode.heuristic import UserHeuristic, diagonal_rule, load_user_heuristic, run_heuristic
+from usercode.loading import is_user_spec
 
 
 class BadHeuristic(click.ClickException):
@@ -135,7 +131,7 @@ def triangulation_record(arg: str, polygon: Shape, algorithm: str,
     With holes, ``vertices`` are the rings' (cleaned) vertices concatenated in input
     order, outer ring first, and there are ``n + 2h - 2`` triangles.
     """
-    result = triangulate(polygon, algorithm, heuristic)
+    result = triangulate(polygon, algorithm, diagonal_rule(heuristic))
     return {
         "polygon": arg,
         "vertices": _vertices(polygon),

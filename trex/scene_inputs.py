@@ -18,10 +18,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from geometry.errors import GeometryError
-from geometry.user_heuristics import is_user_spec
 from story.registry import spoken
 from story.scene_kinds import heuristic_of, plays_several
 from trex.inputs import error_line, fail, load_or_exit, load_run
+from usercode.loading import is_user_spec
 
 
 def load_scene(scene: str, command: str = "player", several_runs: bool = False) -> type:

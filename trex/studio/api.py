@@ -26,12 +26,12 @@ from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.hole_samples import HOLE_SAMPLES
 from geometry.io import Shape, polygon_to_json_points, read_rings, shape_from_rings
 from geometry.samples import is_sample, parse_spec, sample_from_spec, sample_names
-from geometry.user_heuristics import UserHeuristic, run_heuristic
 from geometry.validate import kept_indices
 from story.registry import heuristics, triangulations
 from trex.inputs import error_line
 from trex.run_commands import triangulation_record
 from trex.studio.edges import offending_edges
+from usercode.heuristic import UserHeuristic, run_heuristic
 
 READ_SUFFIXES = (".json", ".geojson", ".wkt", ".dat")
 """The formats the command line reads (:func:`geometry.io.read_rings`)."""

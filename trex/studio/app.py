@@ -21,12 +21,12 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 from starlette.types import ASGIApp, Receive, Scope, Send
 
-from geometry.user_heuristics import UserHeuristic
 from story.registry import SPOKEN, entry, heuristics, spoken, triangulations
 from trex.inputs import first_line
 from trex.studio import api, job_routes
 from trex.studio.jobs import Jobs
 from trex.studio.own import OwnHeuristics
+from usercode.heuristic import UserHeuristic
 
 STATIC = Path(__file__).with_name("static")
 

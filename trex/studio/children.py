@@ -18,9 +18,11 @@ from pathlib import Path
 import click
 
 from geometry.io import polygon_to_json_points, write_atomic
-from geometry.user_heuristics import UserHeuristic, UserHeuristicError, is_user_spec
 from trex.inputs import call_timeout_option, error_line, fail, first_line, load_or_exit
 from trex.run_commands import HeuristicOrFile
+from usercode.errors import UserHeuristicError
+from usercode.heuristic import UserHeuristic
+from usercode.loading import is_user_spec
 
 
 class Progress:
@@ -75,8 +77,8 @@ def studio_hunt(heuristic: str | UserHeuristic, budget: int, seed: int, max_vert
 def played_scene(rule: str) -> type:
     """The Scene class that plays a rule or an algorithm (a built-in's scene in ``scenes/``,
     or that of a heuristic of one's own)."""
-    from geometry.user_heuristics import load_user_heuristic
     from trex.hunt_command import heuristic_video
+    from usercode.heuristic import load_user_heuristic
 
     try:
         return heuristic_video(load_user_heuristic(rule) if is_user_spec(rule) else rule)
@@ -199,7 +201,7 @@ def _answer(request: dict, own: dict[str, UserHeuristic]) -> dict:
 def studio_own(specs: tuple[str, ...]) -> None:
     """Answer the studio's live requests about one's own heuristics: a JSON line in, a JSON
     line out (:mod:`trex.studio.own`)."""
-    from geometry.user_heuristics import load_user_heuristic
+    from usercode.heuristic import load_user_heuristic
 
     answers = os.fdopen(os.dup(1), "w", encoding="utf-8")
     os.dup2(2, 1)  # whatever the user's code prints goes to stderr, never into the answers

@@ -15,17 +15,14 @@ from pathlib import Path
 
 import click
 
-from geometry.user_heuristics import (
-    UserHeuristic,
-    UserHeuristicError,
-    call_timeout,
-    is_user_spec,
-    load_user_heuristic,
-)
 from trex.inputs import call_timeout_option, fail, load_or_exit
 from trex.signals import EXIT_SIGNAL
 from trex.studio.api import rings_of_shape
 from trex.studio.children import COMMANDS as JOB_COMMANDS
+from usercode.errors import UserHeuristicError
+from usercode.heuristic import UserHeuristic, load_user_heuristic
+from usercode.limits import call_timeout
+from usercode.loading import is_user_spec
 
 
 def _own_heuristics(specs: tuple[str, ...]) -> dict[str, UserHeuristic]:

@@ -10,10 +10,10 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from geometry.user_heuristics import UserHeuristic
 from story.registry import heuristics, triangulations
 from trex.studio import api
 from trex.studio.jobs import Job, Jobs
+from usercode.heuristic import UserHeuristic
 
 MAX_BUDGET = 100_000
 MAX_HUNT_VERTICES = 20
