@@ -129,6 +129,10 @@ class LectureScene(TraceScene):
     """Plays one chapter: its segments in order, as one Manim section."""
 
     chapter_title = "Chapter"
+    #: notes for whoever teaches the chapter (Forišek–Steinová's experience), never played:
+    #: ``trex lecture`` writes them to ``teacher-notes.md``, the slides show them in the
+    #: speaker window, the handout prints them
+    teacher_notes: tuple[Card, ...] = ()
     polygon = "lecture"  # the lecture's polygon, unless one is handed (trex lecture --polygon)
     call_line = False  # no code in the lecture: a run's steps are its lit rows and captions
 

@@ -95,6 +95,15 @@ class ChapterScene(Protocol):
     chapter_title: str
 
 
+@runtime_checkable
+class TaughtChapter(Protocol):
+    """A lecture chapter with notes for its teacher: ``teacher_notes``, each with a
+    ``title`` and ``lines`` (never played)."""
+
+    chapter_title: str
+    teacher_notes: tuple
+
+
 def plays_several(cls: object) -> bool:
     """Whether ``cls`` plays several runs (it names their polygons: a given one is not
     played)."""

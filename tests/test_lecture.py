@@ -147,7 +147,7 @@ def test_progress_lines_and_outputs(serial):
     assert re.fullmatch(r"lecture: \d+\.\d s of video, 3 chapters, in \d+\.\d s", lines[3])
     assert lines[4] == str(out / "lecture.mp4")
     assert leftovers(out) == ["chapters", "chapters.json", "chapters.md", "lecture.mp4",
-                              "lecture.srt"]
+                              "lecture.srt", "teacher-notes.md"]
     assert [p.name for p in chapter_videos(out)] == [
         "01-polygon.mp4", "02-tiny-Cues.mp4", "03-tiny-MoreCues.mp4"]
     assert leftovers(out.parent) == ["lecture"]  # no temporary directory left beside
@@ -342,7 +342,7 @@ def test_existing_dir_gets_new_lecture_and_keeps_other_files(tmp_path, tiny):
     assert code == 0, stderr
     assert stdout.splitlines()[-1] == str(out / "lecture.mp4")
     assert leftovers(out) == ["chapters", "chapters.json", "chapters.md", "lecture.mp4",
-                              "lecture.srt", "notes.txt"]
+                              "lecture.srt", "notes.txt", "teacher-notes.md"]
     assert leftovers(out / "chapters") == ["01-tiny-Cues.mp4", "01-tiny-Cues.srt",
                                            "01-tiny-Cues.steps.json"]  # for trex slides
     assert (out / "lecture.mp4").read_bytes() == (out / "chapters/01-tiny-Cues.mp4").read_bytes()
@@ -475,6 +475,25 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert answers_over_pictures(data) == [], chapter.slug
     # issue 22 item 5: counters run 1 … n − 2 and end on the whole triangulation
     assert broken_counts(data) == [], chapter.slug
+
+
+def test_teacher_notes_leave_the_video_for_teacher_notes_md():
+    """Issue 22 item 7: Forišek–Steinová's experience is for the teacher: no chapter plays
+    it, and ``teacher-notes.md`` (beside the lecture) has it under its chapter."""
+    from metaphors.lecture import Card
+    from trex.chapters import lecture_chapters, teacher_notes, teacher_notes_markdown
+
+    chapters = lecture_chapters()
+    assert "experience" not in [c.slug for c in chapters]
+    notes = [note for c in chapters for note in teacher_notes(c)]
+    assert len(notes) == 3 and all(isinstance(n, Card) for n in notes)
+    for chapter in chapters:
+        cls = _chapter_class(chapter)
+        played = [s for s in cls.__new__(cls).chapter_segments() if isinstance(s, Card)]
+        assert not any("notes" in s.title.lower() for s in played), chapter.slug
+    text = teacher_notes_markdown(chapters)
+    assert "## 2. " in text and "### From metaphor to proof" in text
+    assert "- Then write the proof with that invariant." in text
 
 
 @pytest.mark.parametrize("slug, runs", [("ears", 3), ("faster", 1)])

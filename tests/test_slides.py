@@ -452,3 +452,24 @@ def test_the_speaker_view_keeps_next_above_the_fold_at_1366x768(tmp_path, browse
         box = page.locator(element).bounding_box()
         assert box is not None and box["y"] + box["height"] <= 768, (element, box)
     page.close()
+
+
+def test_handout_ends_on_the_teachers_notes(tmp_path):
+    """Issue 22 item 7: the chapters' notes for the teacher, which the video leaves out, are
+    the handout's last page (counted in "page k / n"); the slides carry them for the
+    speaker window."""
+    from trex.slides_page import Slide
+
+    path = tmp_path / "h.pdf"
+    sheet = handout.Handout(path, "Lecture", 3, [("2. Heuristics", ("Metaphors: ask why",)),
+                                                 ("3. Gravity", ())])
+    for k in range(3):
+        sheet.add(Image.new("RGB", (320, 180), (40 * k, 80, 120)), str(k + 1), f"step {k}")
+    sheet.close()
+    pages = page_pictures(path)
+    assert len(pages) == 2 == sheet.count
+    ink = np.asarray(pages[1].convert("L")) < 128
+    assert ink[handout.MARGIN + handout.HEADER:].sum() > 500  # the notes are written
+    blank = handout.Handout(tmp_path / "b.pdf", "Lecture", 3)
+    assert blank.count == 1
+    assert Slide("c.mp4", "x", notes=("a: b",)).to_dict()["notes"] == ["a: b"]

@@ -22,13 +22,14 @@ from typing import NoReturn
 import click
 
 from geometry.errors import GeometryError
-from story.scene_kinds import ChapterScene, plays_several
+from story.scene_kinds import ChapterScene, TaughtChapter, plays_several
 from trex.inputs import error_line, fail
 from trex.render_command import EXIT_FAILED, SCENES_DIR, dry_run, load_scene_class, resolve_scene
 
 __all__ = ["CHAPTERS_DIR", "REPO", "Chapter", "ChapterFailed", "chapter_failed",
            "chapter_label", "chapter_stem", "check_chapters", "lecture_chapters",
-           "lecture_segments", "pick_chapters", "polygon_checks", "scene_path"]
+           "lecture_segments", "pick_chapters", "polygon_checks", "scene_path", "teacher_notes",
+           "teacher_notes_markdown"]
 
 REPO = SCENES_DIR.parent
 CHAPTERS_DIR = SCENES_DIR / "chapters"
@@ -215,3 +216,33 @@ def _check_polygon(cls: type, polygon: str, label: str, done: set) -> None:
         except (GeometryError, ValueError, KeyError) as exc:
             fail(f"{polygon}: {label}: {what}: {error_line(exc)}")
         done.add(key)
+
+
+def teacher_notes(chapter: Chapter) -> tuple:
+    """The chapter's notes for its teacher (cards: ``title``, ``lines``); none for a scene
+    played as a chapter."""
+    cls = load_scene_class(REPO / chapter.scene_file, chapter.scene_class)
+    return tuple(cls.teacher_notes) if isinstance(cls, TaughtChapter) else ()
+
+
+def teacher_notes_markdown(chapters: Sequence[Chapter]) -> str:
+    """``teacher-notes.md``: per chapter that has them, its notes (Forišek–Steinová's
+    experience of teaching it), which the students' video leaves out.
+
+    >>> print(teacher_notes_markdown([c for c in lecture_chapters() if c.slug == "heuristics"])
+    ...       .splitlines()[0])
+    # Teacher notes
+    """
+    parts = []
+    for chapter in chapters:
+        notes = teacher_notes(chapter)
+        if notes:
+            parts.append(f"## {chapter.number}. {chapter.title}\n")
+            for note in notes:
+                parts.append(f"### {note.title}\n")
+                parts.extend(f"- {line}" for line in note.lines)
+                parts.append("")
+    if not parts:
+        parts = ["No chapter of this lecture has notes."]
+    return "# Teacher notes\n\nFor whoever teaches the lecture; the video leaves them out.\n\n" \
+        + "\n".join(parts).rstrip() + "\n"

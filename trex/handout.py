@@ -108,9 +108,11 @@ class Handout:
     """A handout written page by page (one page in memory at a time): :meth:`add` each
     step, then :meth:`close`. ``steps`` is how many there will be (for "page 2 / 5")."""
 
-    def __init__(self, path: Path, title: str, steps: int) -> None:
+    def __init__(self, path: Path, title: str, steps: int,
+                 notes: Sequence[tuple[str, Sequence[str]]] = ()) -> None:
         self.path, self.title = path, title
-        self.count = max(1, -(-steps // (COLUMNS * ROWS)))
+        self.notes = [(chapter, tuple(lines)) for chapter, lines in notes if lines]
+        self.count = max(1, -(-steps // (COLUMNS * ROWS))) + (1 if self.notes else 0)
         self.items: list[Item] = []
         self.written = 0
 
@@ -125,14 +127,48 @@ class Handout:
             self._flush()
 
     def close(self) -> Path:
+        """The last page of steps, then the teacher's notes (a page of their own)."""
         if self.items or not self.written:
             self._flush()
+        if self.notes:
+            self._save(notes_page(self.notes, self.title, self.written + 1, self.count))
         return self.path
 
-    def _flush(self) -> None:
-        drawn = page(self.items, self.title, self.written + 1, self.count)
+    def _save(self, drawn: Image.Image) -> None:
         options = {"append": True} if self.written else {
             "title": self.title, "creationDate": None, "modDate": None,
             "producer": "trex slides"}
         drawn.save(self.path, "PDF", resolution=DPI, quality=85, **options)
-        self.items, self.written = [], self.written + 1
+        self.written += 1
+
+    def _flush(self) -> None:
+        self._save(page(self.items, self.title, self.written + 1, self.count))
+        self.items = []
+
+
+def notes_page(notes: Sequence[tuple[str, Sequence[str]]], title: str, number: int,
+               count: int) -> Image.Image:
+    """The page of notes for the teacher: per chapter its lines (``"Topic: what to do"``),
+    wrapped; what does not fit is cut with …."""
+    head, small, body = _font(30), _font(20), _font(21)
+    drawn = Image.new("RGB", PAGE, PAPER)
+    draw = ImageDraw.Draw(drawn)
+    draw.text((MARGIN, MARGIN), wrap(f"{title}: teacher notes", head,
+                                     PAGE[0] - 2 * MARGIN - 160, 1)[0], font=head, fill=INK)
+    draw.text((PAGE[0] - MARGIN, MARGIN + 8), f"{number} / {count}", font=small, fill=IDLE,
+              anchor="ra")
+    y, width, bottom = MARGIN + HEADER, PAGE[0] - 2 * MARGIN, PAGE[1] - MARGIN
+    for chapter, lines in notes:
+        if y + 60 > bottom:
+            break
+        draw.text((MARGIN, y), chapter, font=head, fill=INK)
+        y += 50
+        for line in lines:
+            for row in wrap("• " + line, body, width):
+                if y + 27 > bottom:
+                    return drawn
+                draw.text((MARGIN, y), row, font=body, fill=INK)
+                y += 27
+            y += 6
+        y += 24
+    return drawn

@@ -2,7 +2,7 @@
 chapters joined into it (``trex lecture``).
 
 :mod:`trex.assemble` does the joining: one mp4 (packets remuxed, not encoded again), one
-.srt, ``chapters.json`` and ``chapters.md``; the chapter mp4s are kept in ``chapters/``.
+.srt, ``chapters.json`` and ``chapters.md``, and the chapters' ``teacher-notes.md``; the chapter mp4s are kept in ``chapters/``.
 Everything is written into a stage beside DIR, then moved into place
 (:func:`trex.output_dir.move_into_place`, only :data:`OUTPUTS`: other files in DIR stay).
 """
@@ -13,16 +13,16 @@ import os
 from collections.abc import Sequence
 from pathlib import Path
 
-from trex.chapters import Chapter
+from trex.chapters import Chapter, teacher_notes_markdown
 from trex.inputs import make_parent
 
-__all__ = ["CHAPTER_DIR", "DEFAULT_DIR", "LIST_JSON", "LIST_MD", "OUTPUTS", "SUBTITLES", "VIDEO",
-           "check_output_dir", "join_lecture"]
+__all__ = ["CHAPTER_DIR", "DEFAULT_DIR", "LIST_JSON", "LIST_MD", "NOTES", "OUTPUTS", "SUBTITLES",
+           "VIDEO", "check_output_dir", "join_lecture"]
 
 DEFAULT_DIR = Path("media") / "lecture"
-VIDEO, SUBTITLES, LIST_JSON, LIST_MD, CHAPTER_DIR = (
-    "lecture.mp4", "lecture.srt", "chapters.json", "chapters.md", "chapters")
-OUTPUTS = (CHAPTER_DIR, VIDEO, SUBTITLES, LIST_JSON, LIST_MD)  # what DIR receives
+VIDEO, SUBTITLES, LIST_JSON, LIST_MD, CHAPTER_DIR, NOTES = (
+    "lecture.mp4", "lecture.srt", "chapters.json", "chapters.md", "chapters", "teacher-notes.md")
+OUTPUTS = (CHAPTER_DIR, VIDEO, SUBTITLES, LIST_JSON, LIST_MD, NOTES)  # what DIR receives
 
 
 def check_output_dir(out_dir: Path) -> None:
@@ -58,4 +58,5 @@ def join_lecture(chapters: Sequence[Chapter], videos: Sequence, stage: Path) -> 
     entries = joiner.chapter_entries(chapters, videos, files)
     (stage / LIST_JSON).write_text(joiner.chapters_json(entries), encoding="utf-8")
     (stage / LIST_MD).write_text(joiner.chapters_markdown(entries, VIDEO), encoding="utf-8")
+    (stage / NOTES).write_text(teacher_notes_markdown(chapters), encoding="utf-8")
     return reason

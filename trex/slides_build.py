@@ -22,11 +22,13 @@ HANDOUT = "handout.pdf"
 
 @dataclass(frozen=True)
 class Source:
-    """A rendered video, its step marks and the chapter it is (None: not a lecture)."""
+    """A rendered video, its step marks, the chapter it is (None: not a lecture) and the
+    chapter's notes for its teacher (the speaker window and the handout show them)."""
 
     video: Path
     marks: Marks
     chapter: str | None = None
+    notes: tuple[str, ...] = ()
 
 
 def clip_names(count: int) -> list[str]:
@@ -48,7 +50,8 @@ def build_slides(folder: Path, sources: Sequence[Source], title: str, subtitle: 
     clips.mkdir(parents=True, exist_ok=True)
     total = sum(len(s.marks.steps) for s in sources)
     names = iter(clip_names(total))
-    handout = Handout(folder / HANDOUT, title, total)
+    handout = Handout(folder / HANDOUT, title, total,
+                      [(s.chapter or title, s.notes) for s in sources])
     slides: list[Slide] = []
     for source in sources:
         mine = [next(names) for _ in source.marks.steps]
@@ -58,7 +61,7 @@ def build_slides(folder: Path, sources: Sequence[Source], title: str, subtitle: 
             call = step.call if step.call is not None else call
             picture, last = last_frame(path)
             slides.append(Slide(f"{CLIPS_DIR}/{path.name}", step.caption, call, step.kind,
-                                source.chapter, last))
+                                source.chapter, last, source.notes))
             handout.add(picture, str(len(slides)), step.caption)
             if progress is not None:
                 progress(len(slides), total)

@@ -193,13 +193,16 @@ def _source(video: Path, marks, chapter):
     this project's) is one step, captioned with the chapter's title."""
     from dataclasses import replace
 
+    from trex.chapters import teacher_notes
     from trex.clips import Step
     from trex.slides_build import Source
 
     title = f"{chapter.number}. {chapter.title}"
     if not marks.steps:
         marks = replace(marks, steps=(Step(0, title, None, "chapter"),))
-    return Source(video, marks, title)
+    notes = tuple(f"{note.title}: {line}" for note in teacher_notes(chapter)
+                  for line in note.lines)
+    return Source(video, marks, title, notes)
 
 
 def _lecture_slides(chapters, target: Path, quality: str, jobs: int, polygon: str | None,

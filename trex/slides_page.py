@@ -38,10 +38,12 @@ class Slide:
     kind: str = "beat"
     chapter: str | None = None
     last: float | None = None
+    notes: tuple[str, ...] = ()  # the chapter's notes for its teacher (the speaker window's)
 
     def to_dict(self) -> dict:
         return {"clip": self.clip, "caption": self.caption, "call": self.call,
-                "kind": self.kind, "chapter": self.chapter, "last": self.last}
+                "kind": self.kind, "chapter": self.chapter, "last": self.last,
+                "notes": list(self.notes)}
 
 
 def write_slides(folder: Path, slides: Sequence[Slide], title: str, subtitle: str,
@@ -68,6 +70,7 @@ _PAGE = """{{HEAD}}
   .speaker figure { display: flex; justify-content: center; }
   .speaker video { width: auto; max-width: 100%; height: 46vh; }
   #next { color: var(--idle); font-size: 1.1rem; }
+  #teacher { color: var(--ink); margin: 8px 0 0; padding-left: 1.2em; }
 </style>
 </head>
 <body>
@@ -86,7 +89,7 @@ _PAGE = """{{HEAD}}
   </div>
   <p id="chapter"></p>
   <p id="caption"></p>
-  <section id="notes"><p>Next: <span id="next"></span></p></section>
+  <section id="notes"><p>Next: <span id="next"></span></p><ul id="teacher"></ul></section>
   <p class="keys"><kbd>→</kbd> <kbd>Space</kbd> <kbd>PageDown</kbd> play the next step ·
     <kbd>←</kbd> <kbd>PageUp</kbd> back · <kbd>Home</kbd> <kbd>End</kbd> first, last ·
     a number, <kbd>Enter</kbd>: go there · <kbd>R</kbd> again · <kbd>F</kbd> full screen ·
@@ -144,6 +147,9 @@ _PAGE = """{{HEAD}}
     $("caption").textContent = step.caption;
     $("chapter").textContent = step.chapter || "";
     $("next").textContent = at + 1 < n ? steps[at + 1].caption : "(the end)";
+    $("teacher").replaceChildren(...(step.notes || []).map(function (line) {
+      const item = document.createElement("li"); item.textContent = line; return item;
+    }));
     $("first").disabled = $("prev").disabled = at === 0;
     $("last").disabled = $("next-button").disabled = at === n - 1;
     try { history.replaceState(null, "", location.search + "#" + (at + 1)); } catch (e) { }

@@ -49,6 +49,20 @@ def family_segments(family: tuple) -> tuple:
 class Heuristics(LectureScene):
     chapter_title = "2. Inner diagonals: water, clock, sweep"
     slug = "heuristics"
+    teacher_notes = (
+        Card("The wrong heuristics first", (
+            "Let students propose a way to find D before showing any.",
+            "Almost everyone proposes the nearest or the left-most vertex.",
+            "The counterexample needs only five vertices: draw it on the board.")),
+        Card("Metaphors", (
+            "Water, a clock, a sweeping line: each wrong heuristic is a familiar motion.",
+            "Ask where the motion leaves the polygon — that is the bug.",
+            "The corrections move only inside T, up to the first candidate: inside P.")),
+        Card("From metaphor to proof", (
+            "Kinesthetic heuristics are fast to invent and easy to get wrong.",
+            "Ask for the invariant: what does the water, hand or line never cross?",
+            "Then write the proof with that invariant.")),
+    )
 
     def chapter_segments(self) -> tuple:
         frame = Card("The frame every heuristic shares", (

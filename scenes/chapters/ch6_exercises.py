@@ -1,6 +1,6 @@
-"""Lecture chapter 7: Exercises.
+"""Lecture chapter 6: Exercises.
 
-Run: ``manim -pql scenes/chapters/ch7_exercises.py``; the whole lecture: ``trex lecture``.
+Run: ``manim -pql scenes/chapters/ch6_exercises.py``; the whole lecture: ``trex lecture``.
 """
 
 from pathlib import Path
@@ -12,7 +12,7 @@ NEAREST_TO_C = f"{Path(__file__).resolve().parents[2] / 'examples' / 'nearest_to
 
 
 class Exercises(LectureScene):
-    chapter_title = "7. Exercises"
+    chapter_title = "6. Exercises"
     slug = "exercises"
 
     def chapter_segments(self) -> tuple:
