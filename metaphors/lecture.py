@@ -37,6 +37,7 @@ from metaphors import catalog
 from metaphors.analysis import Analysis, play_analysis
 from metaphors.countdown import countdown
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
+from metaphors.figures import Figure, figure_mobjects
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
@@ -54,6 +55,8 @@ from usercode.heuristic import load_user_heuristic
 
 #: the widest a card's line may be (scene units): a longer one wraps
 CARD_WIDTH = 13.2
+#: a card with a figure: its title's height, and its words in the right half
+FIGURED_TITLE_Y, FIGURED_WORDS_X, FIGURED_WIDTH = 3.2, 3.35, 6.4
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 #: an exercise's picture on the left, so its answer is written beside it, never over it
@@ -70,6 +73,7 @@ class Card:
 
     title: str
     lines: tuple[str, ...] = ()
+    figure: Figure | None = None  # its idea drawn on the left, the words on the right
 
 
 @dataclass(frozen=True)
@@ -187,17 +191,21 @@ class LectureScene(TraceScene):
         return typeset.text(text, font=self.theme.font, size=size,
                             colour=colour or self.theme.ink, width=CARD_WIDTH)
 
-    def card_line(self, line: str) -> FlatText | VGroup:
-        """A card's line after its bullet; a long one on two balanced rows (not shrunk), the
-        second indented under the words, not the bullet."""
+    def card_line(self, line: str, width: float = CARD_WIDTH) -> FlatText | VGroup:
+        """A card's line after its bullet; a long one on balanced rows (not shrunk), the
+        rows after the first indented under the words, not the bullet."""
         font, size, colour = self.theme.font, self.theme.caption_size, self.theme.idle
         one = typeset.text("• " + line, font=font, size=size, colour=colour)
-        if one.width <= CARD_WIDTH:
+        if one.width <= width:
             return one
         indent = (typeset.text("• M", font=font, size=size).width
                   - typeset.text("M", font=font, size=size).width)
-        shown = typeset.balanced(line, font=font, size=size, colour=colour, lead="• ",
-                                 width=CARD_WIDTH - indent, aligned_edge=LEFT)
+        if width < CARD_WIDTH:  # beside a figure: as many rows as it needs, none shrunk
+            shown = typeset.wrapped("• " + line, font=font, size=size, colour=colour,
+                                    width=width - indent)
+        else:
+            shown = typeset.balanced(line, font=font, size=size, colour=colour, lead="• ",
+                                     width=width - indent, aligned_edge=LEFT)
         if isinstance(shown, VGroup):
             for row in shown[1:]:
                 row.shift(RIGHT * indent)
@@ -217,13 +225,23 @@ class LectureScene(TraceScene):
         captions = captions_of(self)
         title = tag(typeset.glyphs(card.title, font=self.theme.font, size=self.theme.title_size,
                                    colour=self.theme.ink, width=CARD_WIDTH), None, "card:title")
-        lines = [tag(self.card_line(line), None, "card:line") for line in card.lines]
-        group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
-        group.move_to((0, 0.3, 0))
+        width = CARD_WIDTH if card.figure is None else FIGURED_WIDTH
+        lines = [tag(self.card_line(line, width), None, "card:line") for line in card.lines]
+        if card.figure is None:
+            group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
+            group.move_to((0, 0.3, 0))
+        else:  # the title on top, the figure on the left, the words on the right
+            title.move_to((0, FIGURED_TITLE_Y, 0))
+            words = VGroup(*lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
+            words.move_to((FIGURED_WORDS_X, -0.3, 0))
         title.set_x(0)
         cue = captions.show(card.title, 0.8)  # the caption before is read in its own step
         self.mark_card_line(None, card)
-        self.play(Write(title), run_time=0.8, **cue)
+        if card.figure is not None:
+            figure = figure_mobjects(card.figure, self.lecture_polygon(), self.theme)
+            self.play(Write(title), *[FadeIn(m) for m in figure], run_time=0.8, **cue)
+        else:
+            self.play(Write(title), run_time=0.8, **cue)
         for line, words in zip(lines, card.lines, strict=True):
             cue = captions.show(words, 0.5)
             self.mark_card_line(words, card)

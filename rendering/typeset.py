@@ -96,6 +96,22 @@ def glyphs(string: str, *, size: float, colour: str | None = None, font: str = D
     return _fit(GlyphText(string, points.copy(), ends, colour or DEFAULT_INK), width)
 
 
+_OPERATORS = frozenset("−+·×=")
+
+
+def _unbreakable(words: list[str]) -> list[str]:
+    """The words, an operator glued to its neighbours: ``["n", "−", "2"]`` → ``["n − 2"]``."""
+    out: list[str] = []
+    glue = False
+    for word in words:
+        if out and (glue or word in _OPERATORS):
+            out[-1] = f"{out[-1]} {word}"
+        else:
+            out.append(word)
+        glue = word in _OPERATORS
+    return out
+
+
 def wrapped(string: str, *, size: float, width: float, colour: str | None = None,
             font: str = DEFAULT_FONT, gap: float = 0.1) -> FlatText | VGroup:
     """``string`` in as many lines as it needs to fit ``width`` at ``size`` (broken at
@@ -106,9 +122,14 @@ def wrapped(string: str, *, size: float, width: float, colour: str | None = None
     >>> group = wrapped("nearest_to(B, [D, E]) → D", size=20, width=2.5)
     >>> [line.original_text for line in group]
     ['nearest_to(B, [D,', 'E]) → D']
+
+    A formula's short operands stay on one line (``n − 2`` is never broken):
+
+    >>> [line.original_text for line in wrapped("so n − 2 triangles", size=20, width=0.9)]
+    ['so', 'n − 2', 'triangles']
     """
     lines: list[str] = []
-    for word in string.split(" "):
+    for word in _unbreakable(string.split(" ")):
         trial = f"{lines[-1]} {word}" if lines else word
         if lines and natural_width(trial, font, size) <= width:
             lines[-1] = trial

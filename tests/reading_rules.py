@@ -308,3 +308,23 @@ def broken_counts(data: dict) -> list[str]:
     if drawn != said or drawn < sum(total for _, total, _ in runs):
         found.append(f"{drawn} triangles drawn, {said} said")
     return found
+
+
+#: issue 22 item 7: the most of a lecture's time its screen may be text alone (cards)
+MOST_TEXT_ONLY = 0.10
+
+
+def text_only_seconds(data: dict) -> tuple[float, float]:
+    """The seconds a graph shows a card (text on black: from its title's coming to its going)
+    and its whole length."""
+    total = text_only = 0.0
+    showing = False
+    for play in data["plays"]:
+        names = {(a["type"], a.get("mobject", {}).get("name")) for a in play["animations"]}
+        if any(kind in INCOMING and name == "card:title" for kind, name in names):
+            showing = True
+        if any(kind in OUTGOING and name == "card:title" for kind, name in names):
+            showing = False
+        total += play["run_time"]
+        text_only += play["run_time"] if showing else 0.0
+    return text_only, total

@@ -3,6 +3,7 @@
 Run: ``manim -pql scenes/chapters/ch1_overview.py``; the whole lecture: ``trex lecture``.
 """
 
+from metaphors.figures import Figure
 from metaphors.lecture import Card, LectureScene, Run
 from story.registry import spoken
 
@@ -17,11 +18,13 @@ class Overview(LectureScene):
                 "A simple polygon: its edges meet only where neighbours share a vertex.",
                 "A diagonal joins two vertices that are not neighbours.",
                 "An inner diagonal lies inside, touching the boundary only at its two ends.",
-                "n vertices: n − 2 triangles and n − 3 diagonals (angles: (n − 2) · 180°).")),
+                "n vertices: n − 2 triangles and n − 3 diagonals (angles: (n − 2) · 180°)."),
+                 Figure("triangulation")),
             Card("Lennes, 1911: divide and conquer", (
                 "Find an inner diagonal, split the polygon along it, repeat on both halves.",
                 "Each diagonal takes O(n) steps, and n − 3 are needed: O(n²) in all.",
-                "Everything hinges on one question: how do we find an inner diagonal?")),
+                "Everything hinges on one question: how do we find an inner diagonal?"),
+                 Figure("diagonal")),
             Run("divide-and-conquer", None,
                 f"Lennes' divide and conquer (diagonals by {spoken('gravity')})",
                 heuristic="gravity", speed=0.6),

@@ -3,6 +3,7 @@
 Run: ``manim -pql scenes/chapters/ch4_ears.py``; the whole lecture: ``trex lecture``.
 """
 
+from metaphors.figures import Figure
 from metaphors.lecture import FRUIT_BOX, Card, LectureScene, Run
 
 
@@ -15,7 +16,8 @@ class Ears(LectureScene):
             Card("Ears: slicing fruit", (
                 "An ear: a convex vertex V whose triangle V−1 V V+1 holds no other vertex,",
                 "so that V−1 V+1 is an inner diagonal.",
-                "Slice an ear off, put it on the plate, repeat until one triangle is left.")),
+                "Slice an ear off, put it on the plate, repeat until one triangle is left."),
+                 Figure("ears")),
             Run("ear-clipping-naive", None, "Ear clipping (Meisters): slice the first ear found",
                 box=FRUIT_BOX, speed=0.6),
             Card("The two-ears theorem (Meisters, 1975)", (
