@@ -18,11 +18,13 @@ The registry imports each algorithm's module; none of them imports this one
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import cast
 
 from geometry.cdt import cdt
 from geometry.check import verify_triangulation
 from geometry.ears import ear_clipping, ear_clipping_naive
 from geometry.errors import HolesNotSupportedError
+from geometry.frame import Diagonal
 from geometry.holes import PolygonWithHoles
 from geometry.lennes import divide_and_conquer
 from geometry.monotone import monotone
@@ -96,9 +98,10 @@ def triangulate(polygon: Polygon | PolygonWithHoles, algorithm: str,
     if algorithm in ALGORITHMS:
         refuse_holes(polygon, algorithm)
     if algorithm == "divide-and-conquer":
-        result = divide_and_conquer(polygon, diagonal_rule(heuristic))
+        # refuse_holes let through no holes: a hole-free PolygonWithHoles does as a Polygon
+        result = divide_and_conquer(cast(Polygon, polygon), diagonal_rule(heuristic))
     elif algorithm in RUNNERS:
-        result = RUNNERS[algorithm](polygon)
+        result = RUNNERS[algorithm](cast(Polygon, polygon))  # as above, or a hole algorithm
     else:
         raise KeyError(f"unknown algorithm {algorithm!r}; expected one of {', '.join(ALGORITHMS)}")
     if result.valid:
@@ -108,7 +111,7 @@ def triangulate(polygon: Polygon | PolygonWithHoles, algorithm: str,
     return result
 
 
-def diagonal_rule(heuristic: str | UserHeuristic | None):
+def diagonal_rule(heuristic: str | UserHeuristic | None) -> str | Callable[[Polygon], Diagonal]:
     """What divide and conquer calls on each piece: a built-in's name (gravity for None), or
     the traced run of a heuristic of one's own (loaded now if given as ``file.py:function``)."""
     if heuristic is None:

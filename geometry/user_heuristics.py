@@ -392,7 +392,7 @@ def _load_module(path: Path, shown: str, function: str | None = None):
     except OSError as exc:
         raise UserHeuristicError(f"{shown}: cannot read: {exc.strerror or exc}") from None
     try:
-        tree = compile(source, str(resolved), "exec", ast.PyCF_ONLY_AST, dont_inherit=True)
+        tree: ast.Module = compile(source, str(resolved), "exec", ast.PyCF_ONLY_AST, dont_inherit=True)  # type: ignore[assignment]  # with PyCF_ONLY_AST and "exec", compile returns an ast.Module
         rewritten = _instrument(tree, function) if function else 0
         code = compile(tree, str(resolved), "exec", dont_inherit=True)
     except SyntaxError as exc:
@@ -402,7 +402,7 @@ def _load_module(path: Path, shown: str, function: str | None = None):
     except ValueError as exc:  # e.g. null bytes
         raise UserHeuristicError(f"{shown}: cannot compile: {_first_line(str(exc))}") from None
     spec = importlib.util.spec_from_file_location(module_name, resolved)
-    module = importlib.util.module_from_spec(spec)
+    module = importlib.util.module_from_spec(spec)  # type: ignore[arg-type]  # a file path ending in .py always has a spec
     if rewritten:
         setattr(module, _HOOK, _answer)
     sys.modules[module_name] = module
@@ -546,7 +546,7 @@ def _rewrite_function(function: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
     if not isinstance(function.body[-1], ast.Return | ast.Raise):
         last = ast.Return(_handed(None, None, None))
         for node in ast.walk(last):
-            node.lineno = node.end_lineno = node.col_offset = node.end_col_offset = -1
+            node.lineno = node.end_lineno = node.col_offset = node.end_col_offset = -1  # type: ignore[attr-defined]  # the nodes of a return statement, which all have positions
         function.body.append(last)
 
 
