@@ -12,8 +12,7 @@ vertex (fan them); a vertex on the same chain cuts off triangles while the
 stack's top is strictly convex, then waits. Straight angles are not convex,
 so no triangle has zero area.
 
->>> from geometry.holes import PolygonWithHoles
-from geometry.polygon import Polygon
+>>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
 >>> [piece.ids for piece in monotone_pieces(p, [(1, 4)])]
 [(0, 1, 4), (1, 2, 3, 4)]

@@ -14,8 +14,7 @@ sorted by x and by y; a triangle looks only at those inside its bounding box
 along the narrower of the two axes (float comparisons of coordinates are
 exact, so nothing inside is missed), and decides them with exact predicates.
 
->>> from geometry.holes import PolygonWithHoles
-from geometry.polygon import Polygon
+>>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
 >>> ring = Ring(p)
 >>> [p.labels[k] for k in ring.obstacles.members()]
