@@ -124,7 +124,7 @@ class LectureScene(TraceScene):
         return self.run_spec().polygon
 
     def construct(self) -> None:
-        self.camera.background_color = self.theme.background
+        self.camera.background_color = self.theme.background  # type: ignore[assignment]  # manim's setter is typed ManimColor, and parses any colour
         self.next_section(self.chapter_title)
         for segment in self.chapter_segments():
             self.clear_screen()
@@ -228,9 +228,9 @@ class LectureScene(TraceScene):
         self.play_card(Card(hunted.title, (
             f"{hunted.rule}: a rule this lecture did not cover.",
             f"The computer tried {found.tried} small polygons, fewest vertices first.",
-            f"It shrank the first failure to {found.polygon.n} vertices.")))
+            f"It shrank the first failure to {found.polygon.n} vertices.")))  # type: ignore[union-attr]  # found: the hunt has its polygon
         self.clear_screen()
-        log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")
+        log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")  # type: ignore[arg-type]  # found: the hunt has its polygon
         self.play_run(Run(hunted.heuristic, None, f"{hunted.rule}, on the polygon found"), log)
 
     def play_analysis(self, analysis: Analysis) -> None:
@@ -299,7 +299,7 @@ class LectureScene(TraceScene):
                                    colour=theme.result, font=theme.font, width=CARD_WIDTH),
                    "result", "answer")
         text.move_to((0, -3.05, 0))
-        anims = [FadeIn(text)]
+        anims: list[FadeIn | Create] = [FadeIn(text)]
         if exercise.kind == "pick":
             label = exercise.answer.strip().split()[0]
             if label in polygon.labels:

@@ -18,7 +18,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 from types import MappingProxyType
 
-from manim import DOWN, FadeIn, FadeOut, Scene, VGroup, config
+from manim import DOWN, Camera, FadeIn, FadeOut, Scene, VGroup, config
 from manim.constants import RendererType
 
 from geometry.user_heuristics import (
@@ -102,6 +102,8 @@ class SpecScene:
 class TraceScene(SpecScene, Recorded, Scene):
     """Plays the log of one algorithm run."""
 
+    camera: Camera  # Cairo's: this project renders with Cairo only (not OpenGLCamera)
+
     algorithm = "scaling"
     heuristic: str | None = None
     polygon = "counterexample"
@@ -155,7 +157,7 @@ class TraceScene(SpecScene, Recorded, Scene):
         return self.run_spec().log()
 
     def construct(self) -> None:
-        self.camera.background_color = self.theme.background
+        self.camera.background_color = self.theme.background  # type: ignore[assignment]  # manim's setter is typed ManimColor, and parses any colour
         self.play_log(self.log(), self.title)
         self.wait(1.0)
         captions_of(self).finish()  # the last cue lasts as long as its caption is shown
@@ -237,7 +239,7 @@ class SequenceScene(TraceScene):
         return [spec.log() for spec in self.run_specs()]
 
     def construct(self) -> None:
-        self.camera.background_color = self.theme.background
+        self.camera.background_color = self.theme.background  # type: ignore[assignment]  # manim's setter is typed ManimColor, and parses any colour
         for k, (log, (_, _, title)) in enumerate(zip(self.logs(), self.runs, strict=True)):
             captions_of(self).finish()  # the caption on screen is read in its own step
             lead_in(self)  # the fade and the title card open the run's first step

@@ -35,7 +35,7 @@ class BackdropRenderer(CairoRenderer):
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         # z -> (state, camera background it was drawn on, pixels)
-        self._kept: dict[int, tuple[bytes, np.ndarray, np.ndarray]] = {}
+        self._kept: dict[int, tuple[bytes, np.ndarray | None, np.ndarray]] = {}
         self.reused = 0  # layers taken from the kept pixels instead of drawn
 
     def save_static_frame_data(self, scene, static_mobjects: Iterable[Mobject]):
