@@ -6,7 +6,6 @@ vertex towards every other vertex and just past it on both sides (±1e-7 rad);
 the nearest boundary hit of each ray, in angular order, outlines the region.
 
 >>> from geometry.polygon import Polygon
-from geometry.predicates import Point
 >>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
 >>> round(visible_region(p, p.label_of("B")).area, 6) == round(p.area, 6)
 False
