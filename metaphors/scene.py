@@ -17,6 +17,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import replace
 from types import MappingProxyType
+from typing import Self, TypeVar, cast
 
 from manim import DOWN, Camera, FadeIn, FadeOut, Scene, VGroup, config
 from manim.constants import RendererType
@@ -47,13 +48,16 @@ from story.spec import RunSpec
 from story.storyboard import Pacing
 from tracing import Log
 
+T = TypeVar("T")
 
-def _subclass(cls: type, **attributes) -> type:
+
+def _subclass(cls: type[T], **attributes) -> type[T]:
     """A subclass of ``cls`` with the same name (manim names its files after it) carrying
     ``attributes``."""
-    return type(cls.__name__, (cls,), {"__module__": cls.__module__,
+    made = type(cls.__name__, (cls,), {"__module__": cls.__module__,
                                        "__qualname__": cls.__qualname__,
                                        "__doc__": cls.__doc__, **attributes})
+    return cast("type[T]", made)  # a subclass of cls
 
 
 class SpecScene:
@@ -72,12 +76,12 @@ class SpecScene:
         return RunSpec(cls.algorithm, cls.polygon, heuristic=cls.heuristic)
 
     @classmethod
-    def with_spec(cls, spec: RunSpec) -> type:
+    def with_spec(cls, spec: RunSpec) -> type[Self]:
         """This scene, handed ``spec``: it reads no environment."""
         return _subclass(cls, spec=spec)
 
     @classmethod
-    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type:
+    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type[Self]:
         """This scene handed its default run, on ``polygon`` if given, or replaying the one
         saved log in ``saved``."""
         spec = cls.default_spec() if polygon is None else cls.default_spec().on(polygon)
@@ -88,7 +92,7 @@ class SpecScene:
         return cls.with_spec(spec)
 
     @classmethod
-    def from_environment(cls) -> type:
+    def from_environment(cls) -> type[Self]:
         """This scene handed what ``manim`` would give it: its default run with
         ``TREX_POLYGON`` and ``TREX_LOG``. Raises ValueError for a TREX_LOG it cannot play."""
         return cls.with_spec(spec_from_environment(cls.default_spec()))
@@ -124,7 +128,7 @@ class TraceScene(SpecScene, Recorded, Scene):
         super().__init__(renderer=renderer, **kwargs)
 
     @classmethod
-    def with_heuristic(cls, heuristic: str) -> type:
+    def with_heuristic(cls, heuristic: str) -> type[Self]:
         """This scene with divide and conquer's diagonals found by ``heuristic``: a built-in's
         name, or ``file.py:function`` of one's own (loaded now, so that a bad spec is one
         line: :class:`geometry.user_heuristics.UserHeuristicError`). The run goes on to its
@@ -146,7 +150,7 @@ class TraceScene(SpecScene, Recorded, Scene):
         return _subclass(cls, heuristic=heuristic, title=title)
 
     @classmethod
-    def with_panel(cls, panel: str) -> type:
+    def with_panel(cls, panel: str) -> type[Self]:
         """This scene with its panel showing ``panel`` (one of
         :data:`story.pseudocode.PANELS`). Raises ValueError for another value."""
         if panel not in PANELS:
@@ -205,14 +209,14 @@ class SequenceScene(TraceScene):
         return tuple(RunSpec(algorithm, polygon) for algorithm, polygon, _ in cls.runs)
 
     @classmethod
-    def with_specs(cls, specs: Sequence[RunSpec]) -> type:
+    def with_specs(cls, specs: Sequence[RunSpec]) -> type[Self]:
         """This scene, handed one spec per run: it reads no environment."""
         if len(specs) != len(cls.runs):
             raise ValueError(f"{len(specs)} runs handed; {cls.__name__} plays {len(cls.runs)}")
         return _subclass(cls, specs=tuple(specs))
 
     @classmethod
-    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type:
+    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type[Self]:
         """This scene handed its runs, live (``polygon`` is ignored: the runs name their
         own), or replaying ``saved``, one log per run."""
         specs = cls.default_specs()
@@ -224,7 +228,7 @@ class SequenceScene(TraceScene):
         return cls.with_specs(specs)
 
     @classmethod
-    def from_environment(cls) -> type:
+    def from_environment(cls) -> type[Self]:
         """This scene handed what ``manim`` would give it: ``TREX_LOG``'s logs, if any."""
         return cls.with_specs(specs_from_environment(cls.default_specs()))
 
