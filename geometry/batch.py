@@ -76,7 +76,8 @@ def dot_sign_many(d: Point, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
     signs = positive.astype(np.int8) - negative.astype(np.int8)
     for k in np.flatnonzero(~(positive | negative)):  # rare: decide these one by one
         signs[k] = dot_sign(d, tuple(starts[k].tolist()), tuple(ends[k].tolist()))
-    return signs
+    found: np.ndarray = signs
+    return found
 
 
 def in_closed_triangle(p: Point, a: Point, b: Point, c: Point) -> bool:
@@ -140,9 +141,10 @@ def _small_integers(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.nd
     ends = np.array([a[0], a[1], b[0], b[1]], dtype=float)
     if not (np.all(np.abs(ends) < SMALL_INTEGER) and np.all(ends == np.round(ends))):
         return np.zeros(len(xs), dtype=bool)
-    return (np.abs(xs) < SMALL_INTEGER) & (np.abs(ys) < SMALL_INTEGER) & (xs == np.round(xs)) & (
-        ys == np.round(ys)
-    )
+    small: np.ndarray = (np.abs(xs) < SMALL_INTEGER) & (np.abs(ys) < SMALL_INTEGER) & (
+        xs == np.round(xs)
+    ) & (ys == np.round(ys))
+    return small
 
 
 def in_triangle_many(

@@ -33,10 +33,12 @@ slot n + 2k and n + 2k + 1 the second copies of P and M of the k-th bridge.
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 
 import tracing
+from geometry.holes import PolygonWithHoles
 from geometry.polygon import Vertex
 from geometry.predicates import Contact, Point, on_segment, orient, segment_contact
 
@@ -44,7 +46,7 @@ from geometry.predicates import Contact, Point, on_segment, orient, segment_cont
 class BridgedRing:
     """The weakly simple ring of slots: links, the vertex in each slot, and each slot's turn."""
 
-    def __init__(self, shape) -> None:
+    def __init__(self, shape: PolygonWithHoles) -> None:
         n, holes = shape.n, shape.hole_count
         outer = shape.starts[1]
         size = n + 2 * holes
@@ -72,7 +74,7 @@ class BridgedRing:
     def trace_key(self) -> str:
         return "keyhole"
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         """The weakly simple ring as a polygon: its slots' points and labels, in ring order."""
         order = self.walk()
         return {"kind": "polygon", "points": [list(self.points[s]) for s in order],
@@ -128,18 +130,18 @@ def _primes(k: int) -> str:
 _SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
-def _rightmost(shape, hole: int) -> int:
+def _rightmost(shape: PolygonWithHoles, hole: int) -> int:
     """The hole's right-most vertex, the highest on ties."""
     return max(shape.ring(hole), key=lambda i: shape.points[i])
 
 
-def hole_order(shape) -> list[int]:
+def hole_order(shape: PolygonWithHoles) -> list[int]:
     """Holes by their right-most vertex, right-most first (then by hole number)."""
     key = {h: shape.points[_rightmost(shape, h)] for h in range(1, shape.hole_count + 1)}
     return sorted(key, key=lambda h: (-key[h][0], -key[h][1], h))
 
 
-def bridge_holes(shape) -> BridgedRing:
+def bridge_holes(shape: PolygonWithHoles) -> BridgedRing:
     """Join every hole of ``shape`` (a :class:`~geometry.holes.PolygonWithHoles`) by a bridge."""
     ring = BridgedRing(shape)
     for hole in hole_order(shape):
@@ -176,7 +178,7 @@ def _copy_seeing(ring: BridgedRing, point: Point, p: Point, slots: np.ndarray, p
     same = slots[(pts[:, 0] == point[0]) & (pts[:, 1] == point[1])]
     for s in same.tolist():
         if ring.sees_into(s, p):
-            return s
+            return int(s)
     return None
 
 
@@ -184,7 +186,7 @@ def _copy_seeing(ring: BridgedRing, point: Point, p: Point, slots: np.ndarray, p
 _ULP0 = 4 * 5e-324
 
 
-def _ray_hit(ring: BridgedRing, p: Point, slots, pts, nxt_pts) -> tuple[Fraction, int | None, int | None]:
+def _ray_hit(ring: BridgedRing, p: Point, slots: np.ndarray, pts: np.ndarray, nxt_pts: np.ndarray) -> tuple[Fraction, int | None, int | None]:
     """The first point the ray from P to the right meets: (x, vertex slot or None, edge slot or None)."""
     px, py = p
     ay, by = pts[:, 1], nxt_pts[:, 1]
@@ -223,16 +225,17 @@ def _ray_hit(ring: BridgedRing, p: Point, slots, pts, nxt_pts) -> tuple[Fraction
     return best[0], best[2], best[3]
 
 
-def _exact_x(a: tuple, b: tuple, y: float) -> Fraction:
+def _exact_x(a: tuple[float, ...], b: tuple[float, ...], y: float) -> Fraction:
     ax, ay, bx, by = (Fraction(float(v)) for v in (*a, *b))
     return ax + (Fraction(y) - ay) * (bx - ax) / (by - ay)
 
 
-def _eberly_slot(ring: BridgedRing, p: Point, slots, pts, nxt) -> int | None:
+def _eberly_slot(ring: BridgedRing, p: Point, slots: np.ndarray, pts: np.ndarray, nxt: np.ndarray) -> int | None:
     nxt_pts = ring.xy[nxt]
     _, vertex, edge = _ray_hit(ring, p, slots, pts, nxt_pts)
     if vertex is not None:
         return _copy_seeing(ring, ring.points[vertex], p, slots, pts)
+    assert edge is not None  # the ray meets a vertex or an edge (_ray_hit raises otherwise)
     u, w = ring.points[edge], ring.points[ring.next[edge]]
     m, other = (u, w) if u[0] > w[0] or (u[0] == w[0] and u > w) else (w, u)
     best = m
@@ -253,7 +256,9 @@ def _closer(p: Point, q: Point, r: Point) -> bool:
     return dq < dr
 
 
-def _blocking(ring: BridgedRing, p: Point, m: Point, other: Point, edge, slots, pts) -> list[int]:
+def _blocking(
+    ring: BridgedRing, p: Point, m: Point, other: Point, edge: tuple[Point, Point], slots: np.ndarray, pts: np.ndarray
+) -> list[int]:
     """Reflex and straight slots in the closed triangle P, I, M (M's own point left out)."""
     lo_x, hi_x = p[0], max(m[0], other[0])
     lo_y, hi_y = (p[1], m[1]) if m[1] > p[1] else (m[1], p[1])
@@ -274,7 +279,7 @@ def _blocking(ring: BridgedRing, p: Point, m: Point, other: Point, edge, slots, 
 # --- checking a bridge, and the search when a check fails ------------------------------------
 
 
-def _bridge_ok(ring: BridgedRing, p: Point, m: int, slots, pts, nxt) -> bool:
+def _bridge_ok(ring: BridgedRing, p: Point, m: int, slots: np.ndarray, pts: np.ndarray, nxt: np.ndarray) -> bool:
     """Exactly: no vertex on the open segment P–M, no edge crossing it, P in M's wedge."""
     q = ring.points[m]
     if not ring.sees_into(m, p):
@@ -284,19 +289,19 @@ def _bridge_ok(ring: BridgedRing, p: Point, m: int, slots, pts, nxt) -> bool:
     nxt_pts = ring.xy[nxt]
     box_v = np.all((pts >= lo) & (pts <= hi), axis=1)
     for k in np.flatnonzero(box_v).tolist():
-        r = tuple(map(float, pts[k]))
+        r = (float(pts[k, 0]), float(pts[k, 1]))
         if r != q and r != p and on_segment(r, p, q):
             return False
     e_lo, e_hi = np.minimum(pts, nxt_pts), np.maximum(pts, nxt_pts)
     box_e = np.all((e_hi >= lo) & (e_lo <= hi), axis=1)
     for k in np.flatnonzero(box_e).tolist():
-        a, b = tuple(map(float, pts[k])), tuple(map(float, nxt_pts[k]))
+        a, b = (float(pts[k, 0]), float(pts[k, 1])), (float(nxt_pts[k, 0]), float(nxt_pts[k, 1]))
         if segment_contact(p, q, a, b) is Contact.PROPER:
             return False
     return True
 
 
-def _nearest_visible(ring: BridgedRing, p: Point, slots, pts, nxt) -> int:
+def _nearest_visible(ring: BridgedRing, p: Point, slots: np.ndarray, pts: np.ndarray, nxt: np.ndarray) -> int:
     right = np.flatnonzero(pts[:, 0] > p[0])
     dist = (pts[right, 0] - p[0]) ** 2 + (pts[right, 1] - p[1]) ** 2
     for k in right[np.argsort(dist, kind="stable")].tolist():

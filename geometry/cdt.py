@@ -11,6 +11,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 import shapely
 
@@ -18,21 +19,23 @@ import tracing
 from geometry.errors import PolygonError
 from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
-from geometry.predicates import orient
+from geometry.predicates import Point, orient
 from geometry.results import Triangle, Triangulation, canonical, finished
 
 
-def shapely_polygon(polygon: Polygon | PolygonWithHoles, points=None) -> shapely.Polygon:
+def shapely_polygon(
+    polygon: Polygon | PolygonWithHoles, points: Sequence[Point] | None = None
+) -> shapely.Polygon:
     """The same polygon (its holes as interior rings) for shapely; ``points``: other
     coordinates for its vertices (scaled ones)."""
     points = polygon.points if points is None else points
-    if not polygon.hole_count:
+    if not isinstance(polygon, PolygonWithHoles) or not polygon.hole_count:  # a Polygon has none
         return shapely.Polygon(points)
     rings = [points[r.start:r.stop] for r in map(polygon.ring, range(polygon.hole_count + 1))]
     return shapely.Polygon(rings[0], rings[1:])
 
 
-def _scaled_near_one(points) -> list[tuple[float, float]]:
+def _scaled_near_one(points: Sequence[Point]) -> list[tuple[float, float]]:
     """The points times the power of two that brings the largest coordinate near 1, when
     they are far from it (GEOS fails on a polygon at 1e±200) and the scaled points stay
     distinct; else the points themselves. A power of two changes no sign of any predicate

@@ -24,6 +24,7 @@ from collections import Counter
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
@@ -60,7 +61,7 @@ class Verdict:
     def __bool__(self) -> bool:
         return self.ok
 
-    def to_dict(self) -> dict:
+    def to_dict(self) -> dict[str, Any]:
         """Plain JSON data."""
         return {
             "ok": self.ok,
@@ -76,7 +77,7 @@ class Verdict:
 YES = Verdict(True)
 
 
-def _name(p: Polygon, *idx: int) -> str:
+def _name(p: Polygon | PolygonWithHoles, *idx: int) -> str:
     return "–".join(p.labels[i] for i in idx)
 
 
@@ -180,23 +181,23 @@ def verify_triangulation(polygon: Polygon | PolygonWithHoles, triangles: Iterabl
     return _edge_balance(polygon, directed)
 
 
-def polygon_turn(polygon: Polygon, tri: Sequence[int]) -> int:
+def polygon_turn(polygon: Polygon | PolygonWithHoles, tri: Sequence[int]) -> int:
     """Orientation of a triangle given by vertex indices."""
     return orient(*(polygon.points[k] for k in tri))
 
 
-def _triangle_problem(polygon: Polygon, tri: tuple) -> Verdict | None:
+def _triangle_problem(polygon: Polygon | PolygonWithHoles, tri: tuple[int, ...]) -> Verdict | None:
     if len(tri) != 3 or not all(isinstance(k, int) and 0 <= k < polygon.n for k in tri):
         return Verdict(False, f"triangle {list(tri)} does not name three vertices", "bad-index")
     if len(set(tri)) < 3 or polygon_turn(polygon, tri) == 0:
         return Verdict(
             False, f"triangle {_name(polygon, *tri)} is degenerate (zero area)", "degenerate",
-            triangle=tri,
+            triangle=(tri[0], tri[1], tri[2]),
         )
     return None
 
 
-def _edge_balance(polygon: Polygon, directed: Counter) -> Verdict:
+def _edge_balance(polygon: Polygon | PolygonWithHoles, directed: Counter[tuple[int, int]]) -> Verdict:
     """Check the cancellation certificate edge by edge (each unordered edge once)."""
     boundary = set(polygon.edges())
     pairs = {(min(e), max(e)) for e in directed} | {(min(e), max(e)) for e in boundary}

@@ -48,6 +48,7 @@ from geometry.frame import (
 from geometry.gravity import gravity, gravity_at
 from geometry.polygon import Polygon, Vertex
 from geometry.predicates import (
+    Point,
     compare_angle,
     compare_distance,
     compare_line_distance,
@@ -152,7 +153,9 @@ def first_hit_sweeping(
 # --- the heuristics ------------------------------------------------------------------------------
 
 
-def _triangle_heuristic(pick: Callable[[Polygon, Triangle, list[Vertex]], Vertex]):
+def _triangle_heuristic(
+    pick: Callable[[Polygon, Triangle, list[Vertex]], Vertex],
+) -> Callable[[Polygon], Diagonal]:
     """Build a heuristic from its rule: the frame, then AC or B–pick (T lives meanwhile)."""
 
     def heuristic(polygon: Polygon) -> Diagonal:
@@ -173,7 +176,7 @@ def _check_size(polygon: Polygon) -> None:
         raise ValueError("a triangle has no diagonal")
 
 
-def _direction(p, q) -> list[float]:
+def _direction(p: Point, q: Point) -> list[float]:
     return [q[0] - p[0], q[1] - p[1]]
 
 

@@ -30,6 +30,8 @@ slice with its three corners as vertex references (ear ``b`` between ``a`` and `
 
 from __future__ import annotations
 
+from typing import cast
+
 import numpy as np
 
 import tracing
@@ -94,7 +96,7 @@ def ear_clipping_naive(polygon: Polygon) -> Triangulation:
                 break
         else:
             raise AssertionError("no ear: the polygon is not simple")  # two-ears theorem
-    triangles.append(tuple(remaining.order))
+    triangles.append(cast("tuple[int, int, int]", tuple(remaining.order)))  # the last three
     return finished(triangles, steps=len(triangles), ear_tests=tests)
 
 
@@ -125,7 +127,7 @@ def ear_clipping(polygon: Polygon | PolygonWithHoles) -> Triangulation:
     A polygon with holes is first made one weakly simple ring by bridges
     (:func:`geometry.bridges.bridge_holes`); its slots then play the vertices.
     """
-    if polygon.hole_count:
+    if isinstance(polygon, PolygonWithHoles) and polygon.hole_count:  # a Polygon has none
         return _ear_clipping_bridged(polygon)
     ring, vertex = Ring(polygon), _vertices(polygon)
     return _clip_all(ring, vertex)
@@ -162,5 +164,5 @@ def _clip_all(ring: Ring, vertex: list[Vertex]) -> Triangulation:
     return finished(triangles, steps=len(triangles), ear_tests=ring.ear_tests)
 
 
-def _vertices(polygon: Polygon) -> list[Vertex]:
+def _vertices(polygon: Polygon | PolygonWithHoles) -> list[Vertex]:
     return [polygon.vertex(i) for i in range(polygon.n)]

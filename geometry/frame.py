@@ -10,6 +10,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import tracing
 from geometry.polygon import Polygon, Vertex
@@ -35,7 +36,7 @@ class Diagonal:
     def trace_key(self) -> str:
         return f"{self.u.trace_key}{self.v.trace_key}"  # the name, as the board labels them
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         return {
             "kind": "segment",
             "points": [list(self.u.point), list(self.v.point)],
@@ -56,7 +57,7 @@ class Triangle:
     def trace_key(self) -> str:
         return f"T({self.a.trace_key}{self.b.trace_key}{self.c.trace_key})"
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         return {
             "kind": "polygon",
             "points": [list(v.point) for v in (self.a, self.b, self.c)],

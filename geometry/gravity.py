@@ -33,6 +33,7 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cmp_to_key
+from typing import Any, cast
 
 import numpy as np
 
@@ -41,6 +42,7 @@ from geometry.batch import dot_sign_many
 from geometry.frame import Diagonal, claim, leftmost_vertex, triangle_at
 from geometry.polygon import Polygon, Vertex
 from geometry.predicates import (
+    Point,
     compare_angle,
     compare_distance,
     cross_sign,
@@ -78,7 +80,7 @@ class Hit:
     def trace_key(self) -> str:
         return "hit"
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         state = {"kind": "point", "at": list(self.at)}
         if self.vertex is not None:  # it landed on a vertex: nothing to slide, no band to bend
             state["vertex"] = self.vertex.label
@@ -124,7 +126,7 @@ def gravity_direction(polygon: Polygon, v: Vertex) -> Gravity:
     return Gravity(down=down, tilt=tilt, turn_picture=(turn + 180.0) % 360.0 - 180.0)
 
 
-def _unit(p, q) -> tuple[float, float]:
+def _unit(p: Point, q: Point) -> tuple[float, float]:
     dx, dy = q[0] - p[0], q[1] - p[1]
     r = math.hypot(dx, dy)
     return (dx / r, dy / r)
@@ -134,17 +136,17 @@ def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
 
 
-def _goes_up(polygon: Polygon, v: Vertex, down: tuple) -> bool:
+def _goes_up(polygon: Polygon, v: Vertex, down: Point) -> bool:
     ends = (polygon.points[polygon.prev(v.index)], polygon.points[polygon.next(v.index)])
     return all(dot_sign(down, v.point, q) < 0 for q in ends)
 
 
-def _perpendicular_edges(polygon: Polygon, down: tuple) -> bool:
+def _perpendicular_edges(polygon: Polygon, down: Point) -> bool:
     arr = np.asarray(polygon.points, dtype=float)
     return not dot_sign_many(down, arr, np.roll(arr, -1, 0)).all()
 
 
-def _tilted(polygon: Polygon, v: Vertex, down: tuple) -> tuple[float, float]:
+def _tilted(polygon: Polygon, v: Vertex, down: Point) -> tuple[float, float]:
     if _goes_up(polygon, v, down) and not _perpendicular_edges(polygon, down):
         return down
     for k in range(10, 60):
@@ -181,11 +183,11 @@ def drop_ball(polygon: Polygon, v: Vertex, g: Gravity) -> Hit:
     return best[1]
 
 
-def _exact(q) -> Exact:
+def _exact(q: Point) -> Exact:
     return (Fraction(q[0]), Fraction(q[1]))
 
 
-def _nearer(best, t: Fraction, hit: Hit):
+def _nearer(best: tuple[Fraction, Hit] | None, t: Fraction, hit: Hit) -> tuple[Fraction, Hit]:
     return (t, hit) if best is None or t < best[0] else best
 
 
@@ -194,6 +196,7 @@ def slide_to_vertex(polygon: Polygon, hit: Hit, g: Gravity) -> Vertex:
     """The ball slides down the edge it hit to the edge's lower end X."""
     if hit.vertex is not None:
         return hit.vertex
+    assert hit.edge is not None  # a hit is on a vertex or inside an edge
     k, m = hit.edge
     lower = m if dot_sign(g.down, polygon.points[k], polygon.points[m]) > 0 else k
     return polygon.vertex(lower)
@@ -204,7 +207,7 @@ def band_snag(polygon: Polygon, v: Vertex, hit: Hit, x: Vertex) -> Vertex | None
     """The band V–ball sweeps the triangle V–hit–X; the first vertex it snags, if any."""
     if hit.vertex is not None:
         return None
-    h = hit.point
+    h = cast(Point, hit.point)  # exact Fractions: the predicates compute exactly on them too
     inside = [
         polygon.vertex(k)
         for k in _near_triangle(polygon, v.point, hit.at, x.point)
@@ -221,7 +224,7 @@ def band_snag(polygon: Polygon, v: Vertex, hit: Hit, x: Vertex) -> Vertex | None
     return min(inside, key=cmp_to_key(order))
 
 
-def _near_triangle(polygon: Polygon, a, b, c) -> list[int]:
+def _near_triangle(polygon: Polygon, a: Point, b: Point, c: Point) -> list[int]:
     """Vertices in the triangle's bounding box, widened a little (a float pre-filter)."""
     arr = np.asarray(polygon.points, dtype=float)
     corners = np.asarray([a, b, c], dtype=float)

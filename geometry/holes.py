@@ -33,6 +33,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 
@@ -233,7 +234,7 @@ class PolygonWithHoles:
         holes = self.hole_count
         return f"P({self.outer.trace_key[2:-1]}, {holes} hole{'s' if holes > 1 else ''})"
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         rings = [self.ring(k) for k in range(len(self.starts) - 1)]
         return {
             "kind": "polygon",

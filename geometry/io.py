@@ -36,6 +36,7 @@ import stat
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 import shapely
 import shapely.errors
@@ -273,8 +274,8 @@ def _json_rings(text: str) -> list[Ring]:
     if isinstance(data, dict):
         return _geojson_rings(data)
     if _is_ring_list(data):
-        return data  # type: ignore[return-value]
-    return [data]  # type: ignore[list-item]
+        return data  # type: ignore[return-value]  # JSON data: _is_ring_list saw a list of rings; their points are checked later
+    return [data]  # type: ignore[list-item]  # JSON data, one ring; its points are checked later
 
 
 def _geojson_text_rings(text: str) -> list[Ring]:
@@ -289,7 +290,7 @@ def _json_kind(value: object) -> str:
     return kinds.get(type(value), "number")
 
 
-def _geojson_rings(obj: dict) -> list[Ring]:
+def _geojson_rings(obj: dict[str, Any]) -> list[Ring]:
     """Rings of a GeoJSON Polygon, a Feature holding one, or a FeatureCollection of one."""
     kind = obj.get("type")
     if kind == "FeatureCollection":
@@ -328,7 +329,7 @@ def _single_polygon(polygons: object) -> list[Ring]:
     return _geojson_rings({"type": "Polygon", "coordinates": polygons[0]})
 
 
-def _expect_object(value: object, what: str) -> dict:
+def _expect_object(value: object, what: str) -> dict[str, Any]:
     if not isinstance(value, dict):
         raise InputFormatError(f"GeoJSON {what} is a JSON {_json_kind(value)}, not an object")
     return value
@@ -446,7 +447,8 @@ def to_geojson(shape: Polygon | Sequence[Point]) -> str:
     >>> to_geojson([(0, 0), (1, 0), (0, 1)])
     '{"type":"Polygon","coordinates":[[[0.0,0.0],[1.0,0.0],[0.0,1.0],[0.0,0.0]]]}'
     """
-    return shapely.to_geojson(shapely.Polygon(_points_of(shape)))
+    text: str = shapely.to_geojson(shapely.Polygon(_points_of(shape)))
+    return text
 
 
 def to_dat(shape: Polygon | Sequence[Point]) -> str:

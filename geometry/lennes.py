@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, replace
+from typing import Any, cast
 
 import tracing
 from geometry.check import Verdict, is_inner_diagonal
@@ -51,7 +52,7 @@ class Piece:
     def trace_key(self) -> str:
         return self.polygon.trace_key
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         return {**self.polygon.trace_state(), "ids": list(self.ids)}
 
 
@@ -64,13 +65,13 @@ class FilledTriangle:
     @property
     def corners(self) -> Triangle:
         """Its vertex indices in the whole polygon, in canonical form."""
-        return canonical(self.piece.ids)
+        return canonical(cast(Triangle, self.piece.ids))  # a piece of three vertices
 
     @property
     def trace_key(self) -> str:
         return f"△{''.join(self.piece.polygon.labels)}"
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         p = self.piece.polygon
         return {"kind": "polygon", "points": [list(q) for q in p.points], "labels": list(p.labels)}
 
@@ -96,9 +97,10 @@ def split(piece: Piece, i: int, j: int) -> tuple[Piece, Piece]:
     n = piece.polygon.n
     first = [(i + k) % n for k in range((j - i) % n + 1)]
     second = [(j + k) % n for k in range((i - j) % n + 1)]
-    return tuple(
+    halves = [
         Piece(piece.polygon.sub_polygon(c), tuple(piece.ids[k] for k in c)) for c in (first, second)
-    )
+    ]
+    return halves[0], halves[1]
 
 
 @tracing.traced(name="divide_and_conquer")
@@ -137,7 +139,7 @@ def _failure(
     ids = piece.ids
     whole = replace(
         verdict,
-        edge=tuple(ids[k] for k in verdict.edge) if verdict.edge else None,
+        edge=(ids[verdict.edge[0]], ids[verdict.edge[1]]) if verdict.edge else None,
         vertex=ids[verdict.vertex] if verdict.vertex is not None else None,
     )
     labels = [piece.polygon.labels[k] for k in pair]

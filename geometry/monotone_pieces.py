@@ -22,15 +22,18 @@ so no triangle has zero area.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cmp_to_key
 from itertools import pairwise
+from typing import Any
 
 import numpy as np
 
 import tracing
+from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
-from geometry.predicates import orient
+from geometry.predicates import Point, orient
 from geometry.results import Triangle
 
 
@@ -38,7 +41,7 @@ from geometry.results import Triangle
 class MonotonePiece:
     """A y-monotone piece: polygon vertex indices, counter-clockwise (key ``M1``, ``M2`` …)."""
 
-    polygon: Polygon
+    polygon: Polygon | PolygonWithHoles
     ids: tuple[int, ...]
     number: int
 
@@ -46,7 +49,7 @@ class MonotonePiece:
     def trace_key(self) -> str:
         return f"M{self.number}"
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         p = self.polygon
         return {
             "kind": "polygon",
@@ -56,7 +59,7 @@ class MonotonePiece:
 
 
 @tracing.traced(exclude_args=("diagonals",))
-def monotone_pieces(polygon: Polygon, diagonals: list[tuple[int, int]]) -> list[MonotonePiece]:
+def monotone_pieces(polygon: Polygon | PolygonWithHoles, diagonals: list[tuple[int, int]]) -> list[MonotonePiece]:
     """The faces of the polygon cut along the diagonals, each counter-clockwise."""
     n, nxt = polygon.n, polygon.next_array
     around = _fans(polygon, diagonals)
@@ -85,7 +88,7 @@ def monotone_pieces(polygon: Polygon, diagonals: list[tuple[int, int]]) -> list[
     return pieces
 
 
-def _fans(polygon: Polygon, diagonals: list[tuple[int, int]]) -> dict[int, list[int]]:
+def _fans(polygon: Polygon | PolygonWithHoles, diagonals: list[tuple[int, int]]) -> dict[int, list[int]]:
     """For each vertex with diagonals: its neighbours counter-clockwise, from next to prev."""
     points, nxt_of, prv_of = polygon.points, polygon.next_array, polygon.prev_array
     partners: dict[int, list[int]] = {}
@@ -97,10 +100,10 @@ def _fans(polygon: Polygon, diagonals: list[tuple[int, int]]) -> dict[int, list[
         nxt, prv = nxt_of[v], prv_of[v]
         pv, ref = points[v], points[nxt]
 
-        def half(p: int, pv=pv, ref=ref) -> int:  # 0: within π counter-clockwise of v→next
+        def half(p: int, pv: Point = pv, ref: Point = ref) -> int:  # 0: within π counter-clockwise of v→next
             return 0 if orient(pv, ref, points[p]) > 0 else 1
 
-        def compare(p: int, q: int, pv=pv, half=half) -> int:
+        def compare(p: int, q: int, pv: Point = pv, half: Callable[[int], int] = half) -> int:
             return (half(p) - half(q)) or -orient(pv, points[p], points[q])
 
         fans[v] = [nxt, *sorted(others, key=cmp_to_key(compare)), prv]
@@ -108,7 +111,7 @@ def _fans(polygon: Polygon, diagonals: list[tuple[int, int]]) -> dict[int, list[
 
 
 @tracing.traced
-def triangulate_monotone_piece(polygon: Polygon, piece: MonotonePiece) -> list[Triangle]:
+def triangulate_monotone_piece(polygon: Polygon | PolygonWithHoles, piece: MonotonePiece) -> list[Triangle]:
     """The stack triangulation of one y-monotone piece, counter-clockwise triples."""
     ids = piece.ids
     if len(ids) == 3:
@@ -131,7 +134,7 @@ def triangulate_monotone_piece(polygon: Polygon, piece: MonotonePiece) -> list[T
     return triangles
 
 
-def _merged_chains(polygon: Polygon, ids: tuple[int, ...]) -> tuple[list[int], dict[int, bool]]:
+def _merged_chains(polygon: Polygon | PolygonWithHoles, ids: tuple[int, ...]) -> tuple[list[int], dict[int, bool]]:
     """The piece's vertices from highest to lowest, and which lie on its left chain."""
     pts = np.asarray([polygon.points[i] for i in ids], dtype=float)
     by_height = np.lexsort((pts[:, 0], -pts[:, 1])).tolist()  # highest first, as in the sweep
@@ -145,19 +148,19 @@ def _merged_chains(polygon: Polygon, ids: tuple[int, ...]) -> tuple[list[int], d
     return [ids[i] for i in by_height], on_left
 
 
-def _cuts_off(points, s: int, last: int, u: int, left: bool) -> bool:
+def _cuts_off(points: Sequence[Point], s: int, last: int, u: int, left: bool) -> bool:
     """Whether u sees s past last: last is strictly convex on u's chain."""
     turn = orient(points[s], points[last], points[u])
     return turn > 0 if left else turn < 0
 
 
-def _fan(points, u: int, stack: list[int], triangles: list[Triangle]) -> None:
+def _fan(points: Sequence[Point], u: int, stack: list[int], triangles: list[Triangle]) -> None:
     """u sees every stacked vertex: one triangle per consecutive pair on the stack."""
     for s, t in pairwise(stack):
         triangles.append(_ccw(points, s, t, u))
 
 
-def _ccw(points, a: int, b: int, c: int) -> Triangle:
+def _ccw(points: Sequence[Point], a: int, b: int, c: int) -> Triangle:
     turn = orient(points[a], points[b], points[c])
     if turn == 0:
         raise AssertionError("a monotone piece produced a zero-area triangle")

@@ -28,6 +28,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 
@@ -93,7 +94,7 @@ class Vertex:
     def trace_key(self) -> str:
         return self.shown or self.label
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         return {"kind": "point", "at": list(self.point), "label": self.trace_key}
 
 
@@ -188,7 +189,7 @@ class Polygon:
             return f"P({''.join(labels)})"
         return f"P({''.join(labels[:3])}…{''.join(labels[-3:])}, n={self.n})"
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         return {
             "kind": "polygon",
             "points": [list(p) for p in self.points],

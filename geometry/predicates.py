@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 import sys
+from collections.abc import Callable
 from enum import Enum
 from fractions import Fraction
 
@@ -83,7 +84,7 @@ def _small_integer(p: Point) -> bool:
             and x == int(x) and y == int(y))
 
 
-def _exact_sign_of_difference(x: float, y: float, exact) -> int:
+def _exact_sign_of_difference(x: float, y: float, exact: Callable[[], int]) -> int:
     """Sign of x - y for float approximations x, y of sums of a few products."""
     diff = x - y
     bound = _LOOSE_BOUND * (abs(x) + abs(y)) + TINY

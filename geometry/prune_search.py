@@ -39,6 +39,8 @@ when done, shrinking (``change``) at every clip; steps ``is_ear``,
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 import tracing
@@ -97,7 +99,7 @@ class GoodSubpolygon:
         """G on its own (labels of P kept), for the diagonal finders."""
         return self.remaining.polygon.sub_polygon(self.indices().tolist())
 
-    def trace_state(self) -> dict:
+    def trace_state(self) -> dict[str, Any]:
         p = self.remaining.polygon
         ids = self.indices().tolist()
         cut = [p.labels[ids[-1]], p.labels[ids[0]]] if self.has_cut else None

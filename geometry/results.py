@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from typing import Any
 
 from geometry.check import Verdict
 from geometry.polygon import Vertex
@@ -39,7 +40,7 @@ class Triangulation:
     failure: Verdict | None = None
     claim: tuple[int, int] | None = None
     steps: int = 0
-    extra: dict = field(default_factory=dict)
+    extra: dict[str, Any] = field(default_factory=dict)
 
 
 def canonical(tri: Triangle) -> Triangle:
@@ -71,6 +72,6 @@ def indices(corners: Corners) -> Triangle:
     return (a.index, b.index, c.index)
 
 
-def finished(triangles: Iterable[Triangle], steps: int = 0, **extra) -> Triangulation:
+def finished(triangles: Iterable[Triangle], steps: int = 0, **extra: Any) -> Triangulation:
     """A complete (``valid``) triangulation from counter-clockwise triples, in canonical form."""
     return Triangulation(sorted(canonical(t) for t in triangles), True, steps=steps, extra=extra)

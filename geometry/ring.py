@@ -26,10 +26,12 @@ exact, so nothing inside is missed), and decides them with exact predicates.
 from __future__ import annotations
 
 from bisect import bisect_left, bisect_right
+from collections.abc import Sequence
 
 import numpy as np
 
 from geometry.batch import in_closed_triangle, in_triangle_many
+from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import Point, orient
 
@@ -40,7 +42,7 @@ _VECTOR_FROM = 48
 class Ring:
     """A polygon being clipped: links, current turns, obstacles and cached ear status."""
 
-    def __init__(self, polygon: Polygon) -> None:
+    def __init__(self, polygon: Polygon | PolygonWithHoles) -> None:
         n = polygon.n
         self._link(polygon.points, [n - 1, *range(n - 1)], [*range(1, n), 0],
                    [int(t) for t in polygon.turns], n)
@@ -55,7 +57,7 @@ class Ring:
         ring._link(points, list(prev), list(nxt), list(turn), len(points))
         return ring
 
-    def _link(self, points, prev: list[int], nxt: list[int], turn: list[int], size: int) -> None:
+    def _link(self, points: Sequence[Point], prev: list[int], nxt: list[int], turn: list[int], size: int) -> None:
         n = len(points)
         self.points = points
         self.prev, self.next, self.turn = prev, nxt, turn
@@ -87,7 +89,7 @@ class Ring:
 class Obstacles:
     """Reflex and straight vertices of a shrinking polygon, searchable by bounding box."""
 
-    def __init__(self, points: tuple[Point, ...] | list[Point], members: list[int]) -> None:
+    def __init__(self, points: Sequence[Point], members: list[int]) -> None:
         n = len(points)
         self.points = points
         self.alive = [False] * n
@@ -146,7 +148,8 @@ class Obstacles:
         idx = self.axes[k].order_array[lo:hi]
         vals = self.coords[1 - k][idx]
         keep = self.alive_mask[idx] & (vals >= low) & (vals <= high)
-        return idx[keep].tolist()
+        kept: list[int] = idx[keep].tolist()
+        return kept
 
 
 class _Axis:

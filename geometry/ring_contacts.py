@@ -34,6 +34,9 @@ geometry.errors.HoleError: hole 2 lies inside hole 1
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Protocol
+
 import numpy as np
 import shapely
 
@@ -42,7 +45,22 @@ from geometry.predicates import Contact, Point, intersection_point, on_segment, 
 from geometry.validate import fmt_point, orient_array
 
 
-def check_rings(shape) -> None:
+class Rings(Protocol):
+    """What the checks read of a :class:`geometry.holes.PolygonWithHoles` (which imports this)."""
+
+    @property
+    def points(self) -> Sequence[Point]: ...
+    @property
+    def starts(self) -> Sequence[int]: ...
+    @property
+    def next_array(self) -> list[int]: ...
+    @property
+    def ring_ids(self) -> np.ndarray: ...
+    @property
+    def hole_count(self) -> int: ...
+
+
+def check_rings(shape: Rings) -> None:
     """Raise :class:`HoleError` unless the rings of ``shape`` lie apart, holes inside, none nested.
 
     ``shape`` is a :class:`geometry.holes.PolygonWithHoles` whose rings are each simple.
@@ -57,7 +75,7 @@ def check_rings(shape) -> None:
     _check_containment(shape, arr, ends, rings, tree)
 
 
-def _check_repeats(points, starts) -> None:
+def _check_repeats(points: Sequence[Point], starts: Sequence[int]) -> None:
     """A ring given twice (the same vertices, in either direction) is said so, not as the
     rings touching at its first vertex.
 
@@ -67,7 +85,7 @@ def _check_repeats(points, starts) -> None:
     ...
     geometry.errors.HoleError: holes 1 and 2 are the same ring twice
     """
-    seen: dict[frozenset, int] = {}
+    seen: dict[frozenset[Point], int] = {}
     for ring in range(len(starts) - 1):
         key = frozenset(points[starts[ring]:starts[ring + 1]])
         first = seen.setdefault(key, ring)
@@ -76,7 +94,9 @@ def _check_repeats(points, starts) -> None:
                             else f"holes {first} and {ring} are the same ring twice")
 
 
-def _check_contacts(points, arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree) -> None:
+def _check_contacts(
+    points: Sequence[Point], arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree: shapely.STRtree
+) -> None:
     i, j = tree.query(tree.geometries)
     keep = rings[i] < rings[j]
     i, j = i[keep], j[keep]
@@ -114,7 +134,9 @@ def _touch_point(p: Point, q: Point, r: Point, s: Point) -> Point:
     raise AssertionError("touching segments share no end point")
 
 
-def _check_containment(shape, arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree) -> None:
+def _check_containment(
+    shape: Rings, arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree: shapely.STRtree
+) -> None:
     holes = shape.hole_count
     if holes == 0:
         return
@@ -128,7 +150,7 @@ def _check_containment(shape, arr: np.ndarray, ends: np.ndarray, rings: np.ndarr
             raise HoleError(f"hole {hole} lies inside hole {int(around[0]) + 1}")
 
 
-def _ring_parity(arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree,
+def _ring_parity(arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree: shapely.STRtree,
                  probes: np.ndarray, ring_count: int) -> np.ndarray:
     """Whether each probe vertex lies inside each ring (its own ring: False), by ray parity."""
     q = arr[probes]
@@ -147,4 +169,5 @@ def _ring_parity(arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree,
     right = orient_array(low, high, q[r]) > 0  # the probe is left of the upward edge
     counts = np.zeros((len(probes), ring_count), dtype=np.int64)
     np.add.at(counts, (r[right], rings[e[right]]), 1)
-    return counts % 2 == 1
+    odd: np.ndarray = counts % 2 == 1
+    return odd

@@ -98,7 +98,7 @@ class _Family:
     seeded: bool
 
 
-def _deterministic(func: Callable[[int], list[Point]]) -> Callable[[int, random.Random], list]:
+def _deterministic(func: Callable[[int], list[Point]]) -> Callable[[int, random.Random], list[Point]]:
     return lambda n, _rng: func(n)
 
 

@@ -37,7 +37,8 @@ True
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
+from typing import Generic, TypeVar
 
 from geometry.predicates import Contact, Point, orient, segment_contact
 
@@ -51,7 +52,10 @@ Segment = tuple[Point, Point, int]
 Position = tuple[int, int]
 
 
-class ChunkedList:
+T = TypeVar("T")
+
+
+class ChunkedList(Generic[T]):
     """A sorted sequence kept as a list of short sorted lists (chunks).
 
     The order is given by the caller: :meth:`bisect` takes a predicate that is
@@ -75,16 +79,16 @@ class ChunkedList:
 
     def __init__(self, load: int) -> None:
         self.load = load
-        self.chunks: list[list] = []
+        self.chunks: list[list[T]] = []
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[T]:
         for chunk in self.chunks:
             yield from chunk
 
     def __len__(self) -> int:
         return sum(map(len, self.chunks))
 
-    def bisect(self, is_before: Callable[[object], bool]) -> Position:
+    def bisect(self, is_before: Callable[[T], bool]) -> Position:
         """Position of the first item for which ``is_before`` is false (or the end)."""
         chunks = self.chunks
         lo, hi = 0, len(chunks)
@@ -109,19 +113,19 @@ class ChunkedList:
     def _end(self) -> Position:
         return (len(self.chunks) - 1, len(self.chunks[-1])) if self.chunks else (0, 0)
 
-    def at(self, pos: Position):
+    def at(self, pos: Position) -> T | None:
         """The item at ``pos``, or None at the end."""
         k, i = pos
         return self.chunks[k][i] if k < len(self.chunks) and i < len(self.chunks[k]) else None
 
-    def before(self, pos: Position):
+    def before(self, pos: Position) -> T | None:
         """The item just before ``pos``, or None at the start."""
         k, i = pos
         if i > 0:
             return self.chunks[k][i - 1]
         return self.chunks[k - 1][-1] if k > 0 else None
 
-    def pop(self, pos: Position):
+    def pop(self, pos: Position) -> T:
         """Remove and return the item at ``pos``; ``pos`` then names the item after it."""
         k, i = pos
         chunk = self.chunks[k]
@@ -146,7 +150,7 @@ class ChunkedList:
             return k + 1, 0
         return pos
 
-    def insert(self, pos: Position, items: list) -> None:
+    def insert(self, pos: Position, items: list[T]) -> None:
         """Insert ``items`` (already in order) at ``pos``; split the chunk if it grows long."""
         if not items:
             return
@@ -164,7 +168,8 @@ def _end_kinds(points: Sequence[Point], v: int) -> tuple[list[int], list[int]]:
     """Edges at vertex v that end there and that start there (in the sweep order)."""
     n = len(points)
     q = points[v]
-    ending, starting = [], []
+    ending: list[int] = []
+    starting: list[int] = []
     for edge, other in (((v - 1) % n, points[v - 1]), (v, points[(v + 1) % n])):
         (ending if other < q else starting).append(edge)
     return ending, starting
@@ -278,7 +283,7 @@ def first_contact(points: Sequence[Point]) -> tuple[int, int] | None:
     if n < 4:  # every pair of edges of a triangle is adjacent
         return None
     order = sorted(range(n), key=points.__getitem__)
-    status = ChunkedList(_LOAD)
+    status: ChunkedList[Segment] = ChunkedList(_LOAD)
     for k, v in enumerate(order):
         contact = _repeated_vertex(points, order, k) or _visit(points, segments, status, v)
         if contact:
@@ -287,7 +292,7 @@ def first_contact(points: Sequence[Point]) -> tuple[int, int] | None:
 
 
 def _visit(
-    points: Sequence[Point], segments: list[Segment], status: ChunkedList, v: int
+    points: Sequence[Point], segments: list[Segment], status: ChunkedList[Segment], v: int
 ) -> tuple[int, int] | None:
     """Sweep past vertex v: remove the edges ending there, insert those starting there."""
     n = len(points)

@@ -18,6 +18,7 @@ The registry imports each algorithm's module; none of them imports this one
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import cast
 
 from geometry.cdt import cdt
 from geometry.check import verify_triangulation
@@ -96,9 +97,10 @@ def triangulate(polygon: Polygon | PolygonWithHoles, algorithm: str,
     if algorithm in ALGORITHMS:
         refuse_holes(polygon, algorithm)
     if algorithm == "divide-and-conquer":
-        result = divide_and_conquer(polygon, diagonal_rule(heuristic))
+        # refuse_holes let through no holes: a hole-free PolygonWithHoles does as a Polygon
+        result = divide_and_conquer(cast(Polygon, polygon), diagonal_rule(heuristic))
     elif algorithm in RUNNERS:
-        result = RUNNERS[algorithm](polygon)
+        result = RUNNERS[algorithm](cast(Polygon, polygon))  # as above, or a hole algorithm
     else:
         raise KeyError(f"unknown algorithm {algorithm!r}; expected one of {', '.join(ALGORITHMS)}")
     if result.valid:
@@ -108,6 +110,8 @@ def triangulate(polygon: Polygon | PolygonWithHoles, algorithm: str,
     return result
 
 
-def diagonal_rule(heuristic: str | Callable[[Polygon], Diagonal] | None):
+def diagonal_rule(
+    heuristic: str | Callable[[Polygon], Diagonal] | None,
+) -> str | Callable[[Polygon], Diagonal]:
     """What divide and conquer calls on each piece: ``heuristic``, gravity for None."""
     return "gravity" if heuristic is None else heuristic

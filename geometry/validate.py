@@ -146,7 +146,7 @@ def orient_array(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
         signs = np.where(det > bound, 1, np.where(-det > bound, -1, 0))
         unsure = ~((det > bound) | (-det > bound))
     for k in np.flatnonzero(unsure):  # plain floats: numpy scalars would warn on overflow
-        signs[k] = orient(*(tuple(map(float, m[k])) for m in (a, b, c)))
+        signs[k] = orient(*((float(m[k][0]), float(m[k][1])) for m in (a, b, c)))
     return signs
 
 
@@ -228,7 +228,8 @@ def _certainly_apart(arr: np.ndarray, pairs: np.ndarray) -> np.ndarray:
     c, d = arr[pairs[:, 1]], arr[(pairs[:, 1] + 1) % n]
     same_side_cd = orient_array(a, b, c) * orient_array(a, b, d) > 0
     same_side_ab = orient_array(c, d, a) * orient_array(c, d, b) > 0
-    return same_side_cd | same_side_ab
+    apart: np.ndarray = same_side_cd | same_side_ab
+    return apart
 
 
 def _check_edge_pairs(points: list[Point], label: Callable[[int], str]) -> None:
@@ -244,7 +245,7 @@ def _check_edge_pairs(points: list[Point], label: Callable[[int], str]) -> None:
     if len(pairs) == 0:
         return
     pairs = pairs[~_certainly_apart(arr, pairs)]
-    order = np.lexsort((pairs[:, 1], pairs[:, 0])) if len(pairs) else []
+    order: np.ndarray | list[int] = np.lexsort((pairs[:, 1], pairs[:, 0])) if len(pairs) else []
     for k in order:
         i, j = int(pairs[k, 0]), int(pairs[k, 1])
         contact = _contact(points, i, j)

@@ -20,6 +20,7 @@ import math
 import shapely
 
 from geometry.polygon import Polygon
+from geometry.predicates import Point
 
 _TURN = 1e-7
 
@@ -45,11 +46,13 @@ def visible_region(polygon: Polygon, i: int) -> shapely.Polygon:
     return region.intersection(shapely.Polygon(polygon.points))
 
 
-def _angle(p, q) -> float:
+def _angle(p: Point, q: Point) -> float:
     return math.atan2(q[1] - p[1], q[0] - p[0])
 
 
-def _first_hit(boundary, origin, theta: float, reach: float):
+def _first_hit(
+    boundary: shapely.Geometry, origin: Point, theta: float, reach: float
+) -> Point | None:
     far = (origin[0] + reach * math.cos(theta), origin[1] + reach * math.sin(theta))
     crossing = boundary.intersection(shapely.LineString([origin, far]))
     points = [p for g in shapely.get_parts(crossing) for p in _coords(g)]
@@ -57,5 +60,5 @@ def _first_hit(boundary, origin, theta: float, reach: float):
     return min(points, key=lambda p: math.dist(p, origin)) if points else None
 
 
-def _coords(g) -> list[tuple[float, float]]:
-    return [tuple(c) for c in g.coords]
+def _coords(g: shapely.Geometry) -> list[tuple[float, float]]:
+    return [(c[0], c[1]) for c in g.coords]

@@ -19,10 +19,12 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TypeVar, cast
 
 import shapely
 from manim import (
     DOWN,
+    Animation,
     Arrow,
     Create,
     Dot,
@@ -37,6 +39,7 @@ from manim import (
 )
 
 from metaphors import catalog
+from metaphors.gravity import Drop, GravityTurn, Slide, Snag
 from metaphors.stage import BOX, Stage, beside, path, place_name, region
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -87,6 +90,19 @@ class Moment:
     claim: Claim
     verdict: Verdict
 
+    # what fails and holds read of a run with a motion (_check saw it has one, or a band)
+    @property
+    def moved(self) -> Motion:
+        return cast(Motion, self.motion)
+
+    @property
+    def moving_step(self) -> Beat:
+        return cast(Beat, self.step)
+
+    @property
+    def swept(self) -> Band:
+        return cast(Band, self.band)
+
     @property
     def pick(self) -> str:
         return self.motion.reached if self.motion else self.claim.labels[1]
@@ -109,13 +125,16 @@ def moment_of(heuristic: str, beats: Sequence[Beat]) -> Moment:
     t = next((b for b in beats if isinstance(b, ShowTriangle)), None)  # gravity has none
     claim, verdict = _first(beats, Claim), _first(beats, Verdict)
     step = next((b for b in beats if _target(b) is not None), None)
-    found = motion(_target(step), t.points) if step and t else None
+    found = motion(cast(Tool, _target(step)), t.points) if step and t else None  # step: a target's
     band, captions = _band(beats)
     return Moment(heuristic, shown.points, shown.labels, t.points if t else None, step, found,
                   band, captions, claim, verdict)
 
 
-def _first(beats: Sequence[Beat], kind: type[Beat]):
+B = TypeVar("B", bound=Beat)
+
+
+def _first(beats: Sequence[Beat], kind: type[B]) -> B:
     found = next((b for b in beats if isinstance(b, kind)), None)
     if found is None:
         raise ValueError(f"the run has no {kind.action} beat to analyse")
@@ -130,16 +149,27 @@ def _target(beat: Beat) -> Tool | None:
 def _band(beats: Sequence[Beat]) -> tuple[Band | None, dict[str, str]]:
     """Gravity's band from its turn, drop, slide and snag beats (None for another run)."""
     kinds = {b.action: b for b in reversed(beats)}  # the first of each
-    turn, drop, slide, snag = (kinds.get(k) for k in ("gravity-turn", "drop", "slide", "snag"))
+    turn, drop = _kind(kinds, GravityTurn), _kind(kinds, Drop)
+    slide, snag = _kind(kinds, Slide), _kind(kinds, Snag)
     if drop is None or snag is None:
         return None, {}
     where = dict(zip(_first(beats, ShowPolygon).labels, _first(beats, ShowPolygon).points,
                      strict=True))
-    hit = tuple(drop.drop.hit)
-    x = tuple(slide.slide.to) if slide is not None and slide.slide else hit
-    y = tuple(where[snag.snagged]) if snag.snagged in where else None
-    band = Band(tuple(where[drop.drop.vertex]), hit, x, y, turn.turn_picture if turn else 0.0)
+    hit = _xy(drop.drop.hit)
+    x = _xy(slide.slide.to) if slide is not None and slide.slide else hit
+    y = _xy(where[snag.snagged]) if snag.snagged in where else None
+    band = Band(_xy(where[drop.drop.vertex]), hit, x, y, turn.turn_picture if turn else 0.0)
     return band, {b.action: b.caption for b in (turn, drop, slide, snag) if b is not None}
+
+
+def _xy(p: Sequence[float]) -> tuple[float, float]:
+    """A point of the log (a list, or a tuple) as a pair."""
+    return (p[0], p[1])
+
+
+def _kind(kinds: dict[str, Beat], kind: type[B]) -> B | None:
+    """The beat of ``kind``'s action in ``kinds`` (action → beat), if any."""
+    return cast("B | None", kinds.get(kind.action))
 
 
 def tool_drawing(stage: Stage, moving: Motion, t: float, colour: str) -> VGroup:
@@ -176,17 +206,17 @@ def moving(stage: Stage, draw, seconds: float) -> tuple[list, VGroup]:
 def tool_colour(theme: Theme, heuristic: str) -> str:
     metaphor = entry(heuristic).metaphor
     return {"water": theme.water, "clock": theme.hand, "sweep": theme.sweep}.get(
-        metaphor, theme.band)
+        metaphor or "", theme.band)
 
 
 def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
     """The wrong heuristic's tool reaches its pick from outside the polygon; the claim's
     crossed edge flashes and is named. Returns what the correction clears away."""
-    theme, m = stage.theme, wrong.motion
+    theme, m = stage.theme, wrong.moved
     colour = tool_colour(theme, wrong.heuristic)
     motion_anims, drawing = moving(stage, lambda t: tool_drawing(stage, m, t, colour),
                                    analysis.slow)
-    stage.say(wrong.step.caption,
+    stage.say(wrong.moving_step.caption,
               ([*stage.appear(), *stage.key(colour, "inside P", "inside"),
                 *stage.key(theme.rejected, "outside P, in T", "astray")], 1.5),
               ([FadeIn(drawing)], 0.3), (motion_anims, analysis.slow))
@@ -210,7 +240,7 @@ def crossing(stage: Stage, wrong: Moment) -> list:
     claim = tag(Line(stage.vertex(u), stage.vertex(v), color=theme.rejected,
                      stroke_width=theme.stroke * 1.5), "rejected", "analysis:claim")
     shown = [claim.set_z_index(3)]
-    anims = [Create(claim)]
+    anims: list[Animation] = [Create(claim)]
     flashes = []
     if verdict.edge:
         a, b = (stage.vertex(k) for k in verdict.edge)
@@ -243,13 +273,13 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
         witness = right.band.swept(1.0)
         label = "swept"
     else:
-        m = right.motion
+        m = right.moved
         colour = tool_colour(theme, right.heuristic)
         if m.rising:  # what the rising water covers may lie outside P: another key
             first += [*stage.forget_legend(), *stage.key(colour, "under water", "water")]
         motion_anims, drawing = moving(stage, lambda t: tool_drawing(stage, m, t, colour),
                                        analysis.slow)
-        stage.say(right.step.caption, (first, 0.6 if first else 1.5), ([FadeIn(drawing)], 0.3),
+        stage.say(right.moving_step.caption, (first, 0.6 if first else 1.5), ([FadeIn(drawing)], 0.3),
                   (motion_anims, analysis.slow),
                   ([Indicate(stage.markers[right.pick], color=theme.result)], 0.6))
         witness = m.witness()
@@ -270,7 +300,7 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
 def _band_moves(stage: Stage, right: Moment, analysis: Analysis, first: list) -> None:
     """Gravity: the ball falls from V on its band, slides down to X; the band sweeps the
     region between the drop line and itself, snagging Y."""
-    theme, band = stage.theme, right.band
+    theme, band = stage.theme, right.swept
     said = right.captions
     arrow = _gravity_arrow(stage)
     ball = tag(Dot(stage.at(band.v), radius=0.12, color=theme.ball, stroke_color=theme.ink,
@@ -320,7 +350,7 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
     """Play the segment: the wrong heuristic fails, then its correction holds — or, for a
     correct one, why it holds."""
     known = entry(analysis.heuristic)
-    name = NAMES.get(known.metaphor, str(known.metaphor).capitalize())
+    name = NAMES.get(known.metaphor or "", str(known.metaphor).capitalize())
     first = moment(analysis.heuristic, analysis.polygon)
     _check(analysis, first)
     said = spoken(analysis.heuristic)  # the thesis's names, never the slugs (issue 22)

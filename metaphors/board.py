@@ -10,7 +10,7 @@ been read (:mod:`metaphors.captions`).
 from __future__ import annotations
 
 import numpy as np
-from manim import FadeIn, FadeOut, Scene, VGroup
+from manim import FadeIn, FadeOut, Mobject, Scene, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
@@ -56,7 +56,7 @@ class Board:
         self.title.move_to((0, TITLE_Y, 0))
         self.subtitle = tag(text(" ", font=theme.font, size=theme.caption_size), None,
                             "subtitle")
-        self.objects: dict[str, object] = {}  # persistent metaphor objects by key
+        self.objects: dict[str, Mobject] = {}  # persistent metaphor objects by key
         self.caption = ""  # the caption of this board's subtitle
         self.outgoing = None  # the subtitle a beat replaces, cut once the beat's caption shows
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)

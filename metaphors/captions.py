@@ -55,7 +55,7 @@ class CaptionTrack:
             play(*args, **kwargs)
             self.clock += float(scene.duration)
 
-        scene.play = timed_play
+        scene.play = timed_play  # type: ignore[method-assign]  # the scene's own play, wrapped to count run times
 
     def now(self) -> float:
         return self.clock

@@ -17,7 +17,7 @@ its caption only.
 from __future__ import annotations
 
 import importlib
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from types import MappingProxyType, ModuleType
 
 from metaphors import basics, generic
@@ -47,7 +47,7 @@ def _merged(tables) -> Mapping:
 
 
 READS: Mapping[str, Reading] = _merged(m.READS for m in MODULES)
-PERFORMS: Mapping[type[Beat], object] = _merged(m.PERFORMS for m in MODULES)
+PERFORMS: Mapping[type[Beat], Callable[..., None]] = _merged(m.PERFORMS for m in MODULES)
 
 
 def beats(log: Log, pacing: Pacing | None = None, shown_code: str | None = None) -> list[Beat]:

@@ -6,7 +6,7 @@ question's caption is the only one on screen while the class thinks.
 
 from __future__ import annotations
 
-from manim import TAU, Arc, Mobject, UpdateFromAlphaFunc, VGroup
+from manim import TAU, Arc, Mobject, UpdateFromAlphaFunc, VGroup, VMobject
 
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
@@ -22,7 +22,7 @@ def _ring(fraction: float, at: tuple[float, float, float], theme: Theme) -> Arc:
                color=theme.argument, stroke_width=theme.stroke * 1.5)
 
 
-def _digit(k: int, at: tuple[float, float, float], theme: Theme) -> Mobject:
+def _digit(k: int, at: tuple[float, float, float], theme: Theme) -> VMobject:
     digit = typeset.text(str(k), font=theme.font, size=theme.caption_size + 8,
                          colour=theme.argument)
     return digit.move_to(at)
@@ -38,7 +38,7 @@ def countdown(seconds: int, at: tuple[float, float, float],
     digits = [_digit(k, at, theme) for k in range(seconds, 0, -1)]
     shown = tag(VGroup(_ring(1.0, at, theme), digits[0].copy()), None, "countdown")
 
-    def update(group: VGroup, alpha: float) -> None:
+    def update(group: Mobject, alpha: float) -> None:
         left = min(int(alpha * seconds), seconds - 1)
         group.submobjects[0].become(_ring(1.0 - alpha, at, theme))
         group.submobjects[1].become(digits[left])

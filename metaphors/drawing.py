@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import copy
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 from manim import DOWN, Dot, Polygram, VGroup
@@ -70,7 +71,7 @@ def polygon_mobject(polygon: Polygon, frame: Frame, theme: Theme = THEME,
                     holes: Sequence[dict] = ()) -> MPolygon | Polygram:
     """The polygon's outline with a light fill; with ``holes`` (each ``{"points": …}``,
     clockwise) one mobject of several rings, the holes left unfilled (winding number 0)."""
-    style = {"color": theme.ink, "stroke_width": theme.stroke, "fill_color": theme.polygon_fill,
+    style: dict[str, Any] = {"color": theme.ink, "stroke_width": theme.stroke, "fill_color": theme.polygon_fill,
              "fill_opacity": theme.fill_opacity}
     if holes:
         rings = [frame.many(polygon.points), *(frame.many(h["points"]) for h in holes)]

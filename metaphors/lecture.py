@@ -18,6 +18,7 @@ from manim import (
     LEFT,
     RIGHT,
     UP,
+    Animation,
     Create,
     Dot,
     FadeIn,
@@ -150,7 +151,7 @@ class LectureScene(TraceScene):
         return self.run_spec().polygon
 
     def construct(self) -> None:
-        self.camera.background_color = self.theme.background
+        self.camera.background_color = self.theme.background  # type: ignore[assignment]  # manim's setter is typed ManimColor, and parses any colour
         self.next_section(self.chapter_title)
         for segment in self.chapter_segments():
             self.clear_screen()
@@ -232,8 +233,8 @@ class LectureScene(TraceScene):
             group.move_to((0, 0.3, 0))
         else:  # the title on top, the figure on the left, the words on the right
             title.move_to((0, FIGURED_TITLE_Y, 0))
-            words = VGroup(*lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
-            words.move_to((FIGURED_WORDS_X, -0.3, 0))
+            column = VGroup(*lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
+            column.move_to((FIGURED_WORDS_X, -0.3, 0))
         title.set_x(0)
         cue = captions.show(card.title, 0.8)  # the caption before is read in its own step
         self.mark_card_line(None, card)
@@ -268,9 +269,9 @@ class LectureScene(TraceScene):
         self.play_card(Card(hunted.title, (
             f"{hunted.rule}: a rule this lecture did not cover.",
             f"The computer tried {found.tried} small polygons, fewest vertices first.",
-            f"It shrank the first failure to {found.polygon.n} vertices.")))
+            f"It shrank the first failure to {found.polygon.n} vertices.")))  # type: ignore[union-attr]  # found: the hunt has its polygon
         self.clear_screen()
-        log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")
+        log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")  # type: ignore[arg-type]  # found: the hunt has its polygon
         self.play_run(Run(hunted.heuristic, None, f"{hunted.rule}, on the polygon found"), log)
 
     def play_analysis(self, analysis: Analysis) -> None:
@@ -338,7 +339,7 @@ class LectureScene(TraceScene):
                                    size=theme.caption_size, colour=theme.result,
                                    font=theme.font, width=ANSWER_WIDTH), "result", "answer")
         text.move_to(ANSWER_AT)
-        anims = [FadeIn(text)]
+        anims: list[Animation] = [FadeIn(text)]
         if exercise.kind == "pick":
             label = exercise.answer.strip().split()[0]
             if label in polygon.labels:
@@ -365,7 +366,7 @@ class LectureScene(TraceScene):
         name = f"edge:{polygon.labels[u]}–{polygon.labels[v]}"
         edge = tag(Line(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[v]),
                         color=theme.rejected, stroke_width=theme.stroke * 2.5), "rejected", name)
-        anims = [Create(edge)]
+        anims: list[Animation] = [Create(edge)]
         if verdict.point is not None:
             anims.append(Flash(frame.to_scene(verdict.point), color=theme.rejected,
                                flash_radius=0.45))

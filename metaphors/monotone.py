@@ -34,7 +34,7 @@ def classify(board, beat) -> None:
                     colour=theme.rejected if data.kind in ("split", "merge") else theme.called),
                None, "kind")
     kind.next_to(board.markers[data.vertex], direction=[1, 0, 0], buff=0.1)
-    anims = [FadeIn(kind), Indicate(board.markers[data.vertex])]
+    anims: list[FadeIn | Indicate | Transform | Create] = [FadeIn(kind), Indicate(board.markers[data.vertex])]
     if "sweep" in board.objects:
         anims.append(Transform(board.objects["sweep"], line))
     else:

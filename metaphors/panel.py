@@ -16,11 +16,14 @@ same vertices by the same roles.
 
 from __future__ import annotations
 
+from typing import cast
+
 from manim import (
     LEFT,
     Animation,
     FadeIn,
     FadeOut,
+    Mobject,
     Rectangle,
     VGroup,
 )
@@ -81,7 +84,7 @@ class Panel:
         self.light_height: float | None = None
         self.line_y: list[float] = []
         # (row, the light behind it, the row's copy in ink over the grey row)
-        self.lit: tuple[int, Rectangle, object] | None = None
+        self.lit: tuple[int, Rectangle, Mobject] | None = None
         self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
         self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         #: whether the call line shows each beat's real call: a programmer's render does, the
@@ -201,7 +204,7 @@ class Panel:
         for k, (row, step) in enumerate(zip(rows, self.pseudocode, strict=True)):
             row.move_to((PSEUDOCODE_INDENT * step.depth, -k * PSEUDOCODE_PITCH, 0),
                         aligned_edge=LEFT)
-            row.shift([0, offsets[k], 0])
+            row.shift((0, offsets[k], 0))
         height = len(rows) * PSEUDOCODE_PITCH
         scale = min(1.0, PANEL_CODE.height / height, PANEL_CODE.width / rows.width)
         if scale < 1.0:
@@ -265,7 +268,8 @@ class Panel:
                 self.lit is not None and self.lit[0] == index):
             return []
         row = self.code[index]
-        light = self._light(self.light_height, self.line_y[index], PANEL_CODE)
+        # rows to light: the pseudocode is shown, and with it the lights' height
+        light = self._light(cast(float, self.light_height), self.line_y[index], PANEL_CODE)
         copy = tag(row.copy().set_color(self.theme.ink), "called", row.name)
         return self._relight(index, light, copy)
 

@@ -13,6 +13,7 @@ from manim import Polygon as MPolygon
 
 from metaphors.tags import tag
 from story.beats import Beat, beat_kind
+from story.refs import state_of, target_of
 from story.storyboard import Walk
 from tracing import Event
 
@@ -29,7 +30,7 @@ class Split(Beat):
 
 def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     pieces = walk.result_refs(ret)
-    entered = {e.target: e.state for e in walk.log.events[ret.seq:]
+    entered = {target_of(e): state_of(e) for e in walk.log.events[ret.seq:]
                if e.kind == "enter" and e.target in pieces}
     yield walk.step(Split, "Split along the diagonal into two smaller polygons", call, ret,
                     pieces=pieces,
@@ -54,7 +55,7 @@ def _tint(board, points, labels, colour: str, done: bool):
     mobject = MPolygon(*[board.at(p) for p in points], stroke_width=0, fill_color=colour,
                        fill_opacity=theme.done_opacity if done else theme.piece_opacity)
     mobject.set_z_index(-1)
-    mobject.trex_colour, mobject.trex_labels = colour, list(labels)
+    mobject.trex_colour, mobject.trex_labels = colour, list(labels)  # type: ignore[attr-defined]  # the tint's own attributes, which _tint_colour reads
     return tag(mobject, role, name + "".join(labels))
 
 

@@ -11,12 +11,12 @@ lasts until the run ends).
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import Protocol
+from typing import Protocol, cast
 
 from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.layout import Box
-from metaphors.recorded import captions_of, mark_step
+from metaphors.recorded import Recorded, captions_of, mark_step
 from story.beats import Beat, ShowPolygon
 from story.pseudocode import PSEUDOCODE
 from story.storyboard import spoken_pseudocode
@@ -40,10 +40,11 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
               theme) -> Board:
     """The board a log plays on; its panel shows what the scene's ``panel`` says (the
     pseudocode, when the run has some, or the source)."""
-    first = beats[0]
+    first = cast(ShowPolygon, beats[0])  # a storyboard opens with its polygon
     holes = first.holes if isinstance(first, ShowPolygon) else ()
-    board = Board(scene, first.points, first.labels, log.meta.get("shown"), title, theme,
-                  scene.metaphor_box, holes, captions=captions_of(scene))
+    recorded = cast(Recorded, scene)  # every BoardScene is Recorded (TraceScene, the player's)
+    board = Board(recorded, first.points, first.labels, log.meta.get("shown"), title, theme,
+                  scene.metaphor_box, holes, captions=captions_of(recorded))
     board.panel.shows_calls = scene.call_line
     code = log.meta.get("code")
     rows = spoken_pseudocode(log)
@@ -63,7 +64,7 @@ def play_beats(board: Board, beats: Sequence[Beat],
     for k, beat in enumerate(beats, start=1):
         if beat.caption != board.caption:
             board.captions.hold()  # the caption before is read in its own step
-        mark_step(board.scene, beat.caption, beat.call, beat.action)
+        mark_step(cast(Recorded, board.scene), beat.caption, beat.call, beat.action)  # board_for's
         perform(board, beat)
         if after is not None:
             after(k, beat)

@@ -17,7 +17,7 @@ from story.source import shown_source
 
 def _functions() -> dict:
     """The shown function of each registry entry by its traced name, unwrapped."""
-    return {e.shown: e.source.__wrapped__ for e in REGISTRY.values() if e.source is not None}
+    return {e.shown: e.source.__wrapped__ for e in REGISTRY.values() if e.source is not None}  # type: ignore[attr-defined]  # the shown functions are tracing's wrappers
 
 
 @cache

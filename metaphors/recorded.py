@@ -23,8 +23,12 @@ from story.beats import Beat
 if TYPE_CHECKING:
     from metaphors.board import Board
 
+    _Mixin = Scene  # mixed into a Scene, which the checker is told; at run time a plain class
+else:
+    _Mixin = object
 
-class Recorded:
+
+class Recorded(_Mixin):
     """Mixed in before ``Scene``: the state a scene accumulates while it renders."""
 
     #: the steps noted so far, in order (:func:`mark_step`)

@@ -17,8 +17,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import replace
 from types import MappingProxyType
+from typing import Self, TypeVar, cast
 
-from manim import DOWN, FadeIn, FadeOut, Scene, VGroup, config
+from manim import DOWN, Camera, FadeIn, FadeOut, Scene, VGroup, config
 from manim.constants import RendererType
 
 from metaphors import catalog
@@ -42,13 +43,16 @@ from tracing import Log
 from usercode.heuristic import UserHeuristic, as_heuristic, load_user_heuristic
 from usercode.loading import is_user_spec, load_attribute
 
+T = TypeVar("T")
 
-def _subclass(cls: type, **attributes) -> type:
+
+def _subclass(cls: type[T], **attributes) -> type[T]:
     """A subclass of ``cls`` with the same name (manim names its files after it) carrying
     ``attributes``."""
-    return type(cls.__name__, (cls,), {"__module__": cls.__module__,
+    made = type(cls.__name__, (cls,), {"__module__": cls.__module__,
                                        "__qualname__": cls.__qualname__,
                                        "__doc__": cls.__doc__, **attributes})
+    return cast("type[T]", made)  # a subclass of cls
 
 
 class SpecScene:
@@ -67,12 +71,12 @@ class SpecScene:
         return RunSpec(cls.algorithm, cls.polygon, heuristic=cls.heuristic)
 
     @classmethod
-    def with_spec(cls, spec: RunSpec) -> type:
+    def with_spec(cls, spec: RunSpec) -> type[Self]:
         """This scene, handed ``spec``: it reads no environment."""
         return _subclass(cls, spec=spec)
 
     @classmethod
-    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type:
+    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type[Self]:
         """This scene handed its default run, on ``polygon`` if given, or replaying the one
         saved log in ``saved``."""
         spec = cls.default_spec() if polygon is None else cls.default_spec().on(polygon)
@@ -83,7 +87,7 @@ class SpecScene:
         return cls.with_spec(spec)
 
     @classmethod
-    def from_environment(cls) -> type:
+    def from_environment(cls) -> type[Self]:
         """This scene handed what ``manim`` would give it: its default run with
         ``TREX_POLYGON`` and ``TREX_LOG``. Raises ValueError for a TREX_LOG it cannot play."""
         return cls.with_spec(spec_from_environment(cls.default_spec()))
@@ -96,6 +100,8 @@ class SpecScene:
 
 class TraceScene(SpecScene, Recorded, Scene):
     """Plays the log of one algorithm run."""
+
+    camera: Camera  # Cairo's: this project renders with Cairo only (not OpenGLCamera)
 
     algorithm = "scaling"
     heuristic: str | None = None
@@ -117,7 +123,7 @@ class TraceScene(SpecScene, Recorded, Scene):
         super().__init__(renderer=renderer, **kwargs)
 
     @classmethod
-    def with_heuristic(cls, heuristic: str) -> type:
+    def with_heuristic(cls, heuristic: str) -> type[Self]:
         """This scene with divide and conquer's diagonals found by ``heuristic``: a built-in's
         name, or ``file.py:function`` of one's own (loaded now, so that a bad spec is one
         line: :class:`usercode.errors.UserHeuristicError`). The run goes on to its
@@ -139,7 +145,7 @@ class TraceScene(SpecScene, Recorded, Scene):
         return _subclass(cls, heuristic=heuristic, title=title)
 
     @classmethod
-    def with_panel(cls, panel: str) -> type:
+    def with_panel(cls, panel: str) -> type[Self]:
         """This scene with its panel showing ``panel`` (one of
         :data:`story.pseudocode.PANELS`). Raises ValueError for another value."""
         if panel not in PANELS:
@@ -150,7 +156,7 @@ class TraceScene(SpecScene, Recorded, Scene):
         return self.run_spec().log()
 
     def construct(self) -> None:
-        self.camera.background_color = self.theme.background
+        self.camera.background_color = self.theme.background  # type: ignore[assignment]  # manim's setter is typed ManimColor, and parses any colour
         self.play_log(self.log(), self.title)
         self.wait(1.0)
         captions_of(self).finish()  # the last cue lasts as long as its caption is shown
@@ -198,14 +204,14 @@ class SequenceScene(TraceScene):
         return tuple(RunSpec(algorithm, polygon) for algorithm, polygon, _ in cls.runs)
 
     @classmethod
-    def with_specs(cls, specs: Sequence[RunSpec]) -> type:
+    def with_specs(cls, specs: Sequence[RunSpec]) -> type[Self]:
         """This scene, handed one spec per run: it reads no environment."""
         if len(specs) != len(cls.runs):
             raise ValueError(f"{len(specs)} runs handed; {cls.__name__} plays {len(cls.runs)}")
         return _subclass(cls, specs=tuple(specs))
 
     @classmethod
-    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type:
+    def handed(cls, polygon: str | None = None, saved: Sequence[str] = ()) -> type[Self]:
         """This scene handed its runs, live (``polygon`` is ignored: the runs name their
         own), or replaying ``saved``, one log per run."""
         specs = cls.default_specs()
@@ -217,7 +223,7 @@ class SequenceScene(TraceScene):
         return cls.with_specs(specs)
 
     @classmethod
-    def from_environment(cls) -> type:
+    def from_environment(cls) -> type[Self]:
         """This scene handed what ``manim`` would give it: ``TREX_LOG``'s logs, if any."""
         return cls.with_specs(specs_from_environment(cls.default_specs()))
 
@@ -232,7 +238,7 @@ class SequenceScene(TraceScene):
         return [spec.log() for spec in self.run_specs()]
 
     def construct(self) -> None:
-        self.camera.background_color = self.theme.background
+        self.camera.background_color = self.theme.background  # type: ignore[assignment]  # manim's setter is typed ManimColor, and parses any colour
         for k, (log, (_, _, title)) in enumerate(zip(self.logs(), self.runs, strict=True)):
             captions_of(self).finish()  # the caption on screen is read in its own step
             lead_in(self)  # the fade and the title card open the run's first step

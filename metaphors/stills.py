@@ -8,7 +8,7 @@ Colours come from the theme: T and its corners in the *called* colour, candidate
 
 from __future__ import annotations
 
-from manim import DashedLine, Scene, VGroup
+from manim import Camera, DashedLine, Scene, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
@@ -64,11 +64,13 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME,
 class ExerciseStill(Scene):
     """One exercise as a single frame."""
 
+    camera: Camera  # Cairo's: this project renders with Cairo only (not OpenGLCamera)
+
     def __init__(self, exercise: Exercise, theme: Theme = THEME, **kwargs) -> None:
         self.exercise = exercise
         self.theme = theme
         super().__init__(**kwargs)
 
     def construct(self) -> None:
-        self.camera.background_color = self.theme.background
+        self.camera.background_color = self.theme.background  # type: ignore[assignment]  # manim's setter is typed ManimColor, and parses any colour
         self.add(*still_mobjects(self.exercise, self.theme))

@@ -18,6 +18,7 @@ import math
 import numpy as np
 import shapely
 from manim import (
+    Animation,
     Circle,
     Create,
     DashedLine,
@@ -164,7 +165,8 @@ def light(board, label: str, first: bool, axis, clip=None) -> tuple[list, list]:
     at = board.vertex(label)
     ring = tag(Circle(radius=0.13, color=colour, stroke_width=theme.stroke).move_to(at),
                "result" if first else "argument", f"lit:{label}")
-    kept, anims = [ring], [FadeIn(ring, scale=1.6), Indicate(board.markers[label], color=colour)]
+    kept = [ring]
+    anims: list[Animation] = [FadeIn(ring, scale=1.6), Indicate(board.markers[label], color=colour)]
     piece = _astray_at(board, axis, clip, at) if first else None
     if piece is not None:
         p, q = _3d(piece[0]), _3d(piece[1])

@@ -33,7 +33,7 @@ class PathCamera(Camera):
         fill = self.get_fill_rgbas(vmobject)
         width, behind = vmobject.get_stroke_width(), vmobject.get_stroke_width(True)
         stroke = self.get_stroke_rgbas(vmobject) if width else None
-        if (not fill[:, 3].any() and (not width or not stroke[:, 3].any())
+        if (not fill[:, 3].any() and (stroke is None or not stroke[:, 3].any())
                 and (not behind or not self.get_stroke_rgbas(vmobject, True)[:, 3].any())):
             return self  # Cairo would fill and stroke with a clear colour: nothing
         self.set_cairo_context_path(ctx, vmobject)
@@ -41,7 +41,7 @@ class PathCamera(Camera):
             self.apply_stroke(ctx, vmobject, background=True)
         self._set_source(ctx, fill, vmobject)
         ctx.fill_preserve()
-        if width:
+        if stroke is not None:  # there is a stroke width
             self._set_source(ctx, stroke, vmobject)
             ctx.set_line_width(width * self.cairo_line_width_multiple
                                * (self.frame_width / self.frame_width))  # manim's expression

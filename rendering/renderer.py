@@ -17,6 +17,7 @@ from __future__ import annotations
 import hashlib
 from collections.abc import Iterable, Sequence
 from enum import Enum
+from typing import Any
 
 import numpy as np
 from manim import Mobject
@@ -32,10 +33,10 @@ class BackdropRenderer(CairoRenderer):
     """manim's Cairo renderer, with the pixels of the bottom layers (title and code; the
     text of the beat) kept between plays."""
 
-    def __init__(self, *args, **kwargs):
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         # z -> (state, camera background it was drawn on, pixels)
-        self._kept: dict[int, tuple[bytes, np.ndarray, np.ndarray]] = {}
+        self._kept: dict[int, tuple[bytes, np.ndarray | None, np.ndarray]] = {}
         self.reused = 0  # layers taken from the kept pixels instead of drawn
 
     def save_static_frame_data(self, scene, static_mobjects: Iterable[Mobject]):

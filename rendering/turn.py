@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from typing import cast
 
 import numpy as np
 from manim import Animation, Mobject
@@ -44,7 +45,7 @@ class Turn(Animation):
     def begin(self) -> None:
         # (part, its starting points, the centre it moves with: None if it turns itself)
         self._parts = [(part, part.points.copy(), centre)
-                       for part, centre in _parts(self.mobject, self.upright, None)]
+                       for part, centre in _parts(cast(Mobject, self.mobject), self.upright, None)]  # Cairo's
         super().begin()
 
     def create_starting_mobject(self) -> Mobject:

@@ -332,7 +332,7 @@ def _cairo_path(d: str) -> np.ndarray | None:
                                for j in range(k, k + 6, 2))
                 rows.extend((pen, c1, c2, end))
                 pen, k = end, k + 6
-            elif command == "Z" and pen is not None:
+            elif command == "Z" and pen is not None and start is not None:  # (set together)
                 if np.linalg.norm(np.subtract(pen, start)) > 0.0001:  # as manim decides it
                     line(pen, start)
                     pen = start

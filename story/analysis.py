@@ -55,7 +55,8 @@ def shape(points: Sequence[Point]) -> shapely.Polygon:
 
 def _size(region: BaseGeometry) -> float:
     x0, y0, x1, y1 = region.bounds
-    return max(x1 - x0, y1 - y0, 1e-12)
+    size: float = max(x1 - x0, y1 - y0, 1e-12)
+    return size
 
 
 def outside(geometry: BaseGeometry, polygon: Sequence[Point]) -> BaseGeometry:
@@ -88,7 +89,8 @@ def lies_inside(geometry: BaseGeometry, polygon: Sequence[Point]) -> bool:
     >>> lies_inside(shapely.box(0.5, 0.5, 1, 1), [(0, 0), (2, 0), (2, 2), (0, 2)])
     True
     """
-    return outside(geometry, polygon).is_empty
+    empty: bool = outside(geometry, polygon).is_empty
+    return empty
 
 
 def split(geometry: BaseGeometry, polygon: Sequence[Point],
@@ -165,8 +167,8 @@ class Motion:
                              self._far())
                 return _within(shapely.LineString([self.origin, far]), self.t_shape)
         (px, py), (dx, dy) = self._line_at(t), self._direction()
-        norm, far = math.hypot(dx, dy), self._far()
-        ux, uy = dx / norm * far, dy / norm * far
+        norm, length = math.hypot(dx, dy), self._far()
+        ux, uy = dx / norm * length, dy / norm * length
         return _within(shapely.LineString([(px - ux, py - uy), (px + ux, py + uy)]),
                        self.t_shape)
 
@@ -230,7 +232,7 @@ def motion(reached: Tool, triangle: Sequence[Point]) -> Motion:
     >>> type(m.state).__name__, m.sign, m.reached
     ('Hand', -1, 'E')
     """
-    t = tuple(tuple(map(float, p[:2])) for p in triangle)
+    t = tuple((float(p[0]), float(p[1])) for p in triangle)
     match reached:
         case Disk():
             return Motion(reached, t)
@@ -249,7 +251,7 @@ def _pt(p: Point) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
 
-def _centroid(points) -> tuple[float, float]:
+def _centroid(points: Sequence[Point]) -> tuple[float, float]:
     return _pt(shape(points).centroid.coords[0])
 
 
@@ -258,7 +260,7 @@ def _ahead(origin: Point, heading: float, length: float) -> tuple[float, float]:
     return (origin[0] + math.cos(a) * length, origin[1] + math.sin(a) * length)
 
 
-def _turn_sign(origin: Point, heading: float, angle: float, triangle) -> int:
+def _turn_sign(origin: Point, heading: float, angle: float, triangle: Sequence[Point]) -> int:
     """The way a hand at a corner of T turns: into T (the way towards its centre)."""
     (cx, cy), (ox, oy) = _centroid(triangle), origin
     towards = math.degrees(math.atan2(cy - oy, cx - ox))
@@ -325,7 +327,7 @@ class Band:
         """The band at time ``t``: V to the ball, bent round Y once it has met it."""
         ball = self.ball(t)
         snag = self.snag_time
-        if snag is not None and t > snag:
+        if snag is not None and t > snag and self.y is not None:  # a snag time needs a Y
             return [self.v, self.y, ball]
         return [self.v, ball]
 
@@ -333,7 +335,7 @@ class Band:
         """What the band has swept by time ``t``: V, the hit point, the ball (and Y)."""
         corners = [self.v, self.hit, self.ball(t)]
         snag = self.snag_time
-        if snag is not None and t > snag:
+        if snag is not None and t > snag and self.y is not None:  # a snag time needs a Y
             corners.append(self.y)
         region = shapely.Polygon(corners)
         return region.buffer(0) if region.area > 1e-12 else shapely.GeometryCollection()

@@ -19,8 +19,9 @@ one's own); a metaphor module declares its own kinds beside the performers that 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field, fields
-from typing import Any, ClassVar
+from typing import Any, ClassVar, TypeVar, dataclass_transform
 
 #: the fields every beat has; the others are its kind's ``data``
 COMMON = ("caption", "step", "call", "line", "row", "roles", "pace")
@@ -51,10 +52,14 @@ class Beat:
                 "data": self.data, "pace": self.pace}
 
 
-def beat_kind(action: str):
+B = TypeVar("B", bound=Beat)
+
+
+@dataclass_transform(frozen_default=True, kw_only_default=True)
+def beat_kind(action: str) -> Callable[[type[B]], type[B]]:
     """Declare a kind of beat: a frozen, keyword-only dataclass named ``action``."""
 
-    def declare(cls: type) -> type:
+    def declare(cls: type[B]) -> type[B]:
         cls.action = action
         return dataclass(frozen=True, kw_only=True)(cls)
 
@@ -69,9 +74,9 @@ class ShowPolygon(Beat):
     """The polygon appears: its points and labels (the outer ring's), and its holes (each
     ``{"points": …, "labels": …}``; none for a simple polygon)."""
 
-    points: list
+    points: list[list[float]]
     labels: list[str]
-    holes: list = field(default_factory=list)
+    holes: list[dict[str, Any]] = field(default_factory=list)
 
 
 @beat_kind("pick")
@@ -85,7 +90,7 @@ class Pick(Beat):
 class ShowTriangle(Beat):
     """T = ABC, the triangle of the heuristics' frame."""
 
-    points: list
+    points: list[list[float]]
     labels: list[str]
 
 
@@ -101,7 +106,7 @@ class Claim(Beat):
     """A heuristic claims the diagonal between two labels."""
 
     labels: list[str]
-    points: list
+    points: list[list[float]]
 
 
 @beat_kind("verdict")
@@ -112,7 +117,7 @@ class Verdict(Beat):
     labels: list[str]
     why: str
     code: str
-    point: list | None = None
+    point: list[float] | None = None
     edge: list[str] | None = None
 
 
@@ -120,7 +125,7 @@ class Verdict(Beat):
 class Note(Beat):
     """A caption only; ``details`` are the note's own fields from the log, if any."""
 
-    details: dict = field(default_factory=dict)
+    details: dict[str, Any] = field(default_factory=dict)
 
 
 # --- a heuristic of one's own -------------------------------------------------------------------
@@ -137,4 +142,4 @@ class ShapeChange(Beat):
 
     key: str
     event: str
-    state: dict | None = None
+    state: dict[str, Any] | None = None

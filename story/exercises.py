@@ -32,6 +32,7 @@ from __future__ import annotations
 import itertools
 import math
 import random
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 
 from shapely.geometry import LineString
@@ -47,6 +48,7 @@ from geometry.polygon import Polygon
 from geometry.samples import sample_from_spec
 from story.hunt import in_general_position
 from story.reach import reach_of
+from story.refs import call_of, state_of, target_of
 from story.registry import heuristics, spoken, wrong
 from story.words import why_not_inner
 
@@ -96,7 +98,7 @@ class Exercise:
     triangle: tuple[int, int, int]  # indices of A, B, C
     candidates: tuple[int, ...]  # indices of the candidates in T
     options: tuple[tuple[int, int], ...] = ()  # the diagonals a question names (inner)
-    polygon: Polygon = field(compare=False, repr=False, default=None)  # type: ignore[assignment]
+    polygon: Polygon = field(compare=False, repr=False, default=None)  # type: ignore[assignment]  # always given (by _exercise); the default only lets it follow the fields that have one
 
     @property
     def title(self) -> str:
@@ -111,7 +113,7 @@ class Exercise:
 # --- the search -----------------------------------------------------------------------------------
 
 
-def _specs(rng: random.Random, used: set[str], generator: tuple[str, int, int]):
+def _specs(rng: random.Random, used: set[str], generator: tuple[str, int, int]) -> Iterator[str]:
     """An endless, seeded stream of fresh sample specs of one generator."""
     name, lo, hi = generator
     while True:
@@ -173,7 +175,10 @@ def _frame(spec: str) -> _Frame | None:
     return _Frame(spec, polygon, (t.a.index, t.b.index, t.c.index), candidates)
 
 
-def _search(rng: random.Random, used: set[str], generator: tuple[str, int, int], build):
+def _search(
+    rng: random.Random, used: set[str], generator: tuple[str, int, int],
+    build: Callable[[_Frame], Exercise | None],
+) -> Exercise:
     """The first exercise ``build(frame)`` accepts, over the seeded stream of polygons."""
     for spec in itertools.islice(_specs(rng, used, generator), MAX_TRIES):
         frame = _frame(spec)
@@ -202,10 +207,10 @@ def _reached(polygon: Polygon, heuristic: str) -> tuple[int, list[tuple[str, flo
     with tracing.record(heuristic=heuristic) as log:
         claim = find_diagonal(polygon, heuristic)
     where = dict(zip(polygon.labels, polygon.points, strict=True))
-    entered = {e.target: e.state for e in log.events if e.kind == "enter"}
+    entered = {target_of(e): state_of(e) for e in log.events if e.kind == "enter"}
     for e in log.events:
         if e.kind == "return":
-            steps = reach_of(log.events[e.call], e, where, polygon.labels, entered.__getitem__)
+            steps = reach_of(log.events[call_of(e)], e, where, polygon.labels, entered.__getitem__)
             if steps is not None:
                 return claim.v.index, steps
     return claim.v.index, []
@@ -229,7 +234,7 @@ def _pick_reason(heuristic: str, steps: list[tuple[str, float]]) -> str | None:
     return f"{lead} {first} ({unit}{v}) before {others}"
 
 
-def _pick(number: int, heuristic: str):
+def _pick(number: int, heuristic: str) -> Callable[[_Frame], Exercise | None]:
     def build(frame: _Frame) -> Exercise | None:
         d, steps = _reached(frame.polygon, heuristic)
         reason = _pick_reason(heuristic, steps)
@@ -242,7 +247,7 @@ def _pick(number: int, heuristic: str):
     return build
 
 
-def _claim(number: int, heuristics: list[str], wanted: bool):
+def _claim(number: int, heuristics: list[str], wanted: bool) -> Callable[[_Frame], Exercise | None]:
     def build(frame: _Frame) -> Exercise | None:
         p = frame.polygon
         for heuristic in heuristics:
@@ -267,7 +272,7 @@ def _inside(polygon: Polygon, i: int, j: int) -> str:
         "it runs inside the polygon"
 
 
-def _inner(number: int):
+def _inner(number: int) -> Callable[[_Frame], Exercise | None]:
     def build(frame: _Frame) -> Exercise | None:
         p = frame.polygon
         a, b, c = frame.triangle
@@ -290,8 +295,8 @@ def _inner(number: int):
     return build
 
 
-def _exercise(number, kind, frame: _Frame, heuristic, question, answer, reason,
-              options=()) -> Exercise:
+def _exercise(number: int, kind: str, frame: _Frame, heuristic: str | None, question: str,
+              answer: str, reason: str, options: Iterable[tuple[int, int]] = ()) -> Exercise:
     return Exercise(number, kind, frame.spec, heuristic, question, answer, reason,
                     frame.triangle, frame.candidates, tuple(options), frame.polygon)
 

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import random
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 
 from geometry.check import Verdict, is_inner_diagonal
@@ -170,7 +170,7 @@ def fails(points: Sequence[Point], heuristic: Heuristic, way: str | None = None,
     except UserHeuristicExit:
         raise
     except UserHeuristicError as exc:
-        found = Failure(polygon, error=exc)
+        found: Failure | None = Failure(polygon, error=exc)
     else:
         verdict = is_inner_diagonal(polygon, *claim.pair)
         seen = not general or verdict.code == "crosses"
@@ -223,7 +223,7 @@ def _frame_polygon(n: int, rng: random.Random, inside_share: float = 0.85) -> li
     return None
 
 
-def _cross(o: Point, p: Point, q: Point):
+def _cross(o: Point, p: Point, q: Point) -> float:
     return (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0])
 
 
@@ -276,7 +276,7 @@ GENERATORS: tuple[tuple[str, Callable[[int, random.Random], list[Point] | None],
 )
 
 
-def _sizes(max_vertices: int):
+def _sizes(max_vertices: int) -> Iterator[int]:
     """4; 4, 5; 4, 5, 6; … each :data:`BATCH` times, capped at ``max_vertices``: forever."""
     r = 0
     while True:
@@ -286,7 +286,9 @@ def _sizes(max_vertices: int):
         r += 1
 
 
-def candidates(budget: int, seed: int = 0, max_vertices: int = 8):
+def candidates(
+    budget: int, seed: int = 0, max_vertices: int = 8
+) -> Iterator[tuple[int, int, list[Point] | None]]:
     """The search's polygons, in order: ``(t, points)`` for ``t`` in ``range(budget)``
     (points None when a generator gave up), each from its own ``Random(f"{seed}:{t}")``."""
     names = [g for _, g, _ in GENERATORS]

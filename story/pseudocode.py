@@ -29,6 +29,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 __all__ = [
     "PANELS",
@@ -116,7 +117,7 @@ def named(pseudocode: Sequence[Step], vertices: dict[str, str],
     if not swap:
         return tuple(pseudocode)
 
-    def rename(found: re.Match) -> str:
+    def rename(found: re.Match[str]) -> str:
         word = found.group()
         return "".join(swap.get(c, c) for c in word) if set(word) <= set(vertices) else word
 
@@ -180,12 +181,12 @@ def _step(row: str) -> Step:
 # --- in a log's meta ------------------------------------------------------------------------------
 
 
-def to_json(pseudocode: Iterable[Step]) -> list[list]:
+def to_json(pseudocode: Iterable[Step]) -> list[list[Any]]:
     """Rows as a log's meta carries them: ``[[text, [calls…]], …]``."""
     return [[step.text, list(step.calls)] for step in pseudocode]
 
 
-def from_json(rows) -> tuple[Step, ...]:
+def from_json(rows: Iterable[Sequence[Any]] | None) -> tuple[Step, ...]:
     """Rows from a log's meta (:func:`to_json`).
 
     >>> from_json(to_json([Step("claim BD", ("claim",))]))

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping, Sequence
+from typing import Any
 
 from story.refs import arg, ref, ref_list, result_ref
 from tracing import Event
@@ -79,7 +80,7 @@ def _ordered(values: dict[str, float], where: Mapping[str, Point], order: Sequen
     as the heuristics break ties — nearer the origin, then counter-clockwise after it."""
     n, start = len(order), order.index(origin)
 
-    def key(label: str) -> tuple:
+    def key(label: str) -> tuple[bool, float, float, int]:
         near, ccw = distance(where[origin], where[label]), (order.index(label) - start) % n
         if pick_last:  # what stays dry longest comes last: the tie rule runs backwards
             return (label == pick, values[label], -near, -ccw)
@@ -122,7 +123,7 @@ def rising(where: Mapping[str, Point], order: Sequence[str], shore: tuple[str, s
 
 
 def reach_of(call: Event, ret: Event, where: Mapping[str, Point], order: Sequence[str],
-             state_of: Callable[[str], dict]) -> Reach | None:
+             state_of: Callable[[str], dict[str, Any]]) -> Reach | None:
     """The reach of a heuristic's step from its call and return, or None for another call.
 
     ``where`` maps labels to points (``order``: the labels counter-clockwise), and

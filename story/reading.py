@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import replace
+from typing import Any, cast
 
 from story.beats import Beat, Candidates, Pick, ShowPolygon, ShowTriangle, Verdict
 
@@ -84,7 +85,7 @@ def _summary(noun: str, first: int, last: int) -> str:
     return f"{name}s {first}–{last}: the same steps, faster"
 
 
-def frame_key(beats: Sequence[Beat]) -> tuple | None:
+def frame_key(beats: Sequence[Beat]) -> tuple[tuple[Any, ...], tuple[Any, ...], tuple[str, ...]] | None:
     """What the first frame of a run shows: the polygon (its points and labels), T and the
     candidates; None if the run shows no frame. Two runs with the same key show the viewer
     the same frame.
@@ -92,7 +93,8 @@ def frame_key(beats: Sequence[Beat]) -> tuple | None:
     >>> frame_key([Candidates(caption="c", step=1, candidates=["D", "E"])])
     ((), (), ('D', 'E'))
     """
-    polygon = triangle = ()
+    polygon: tuple[Any, ...] = ()
+    triangle: tuple[Any, ...] = ()
     for beat in beats:
         if isinstance(beat, ShowPolygon) and not polygon:
             polygon = (tuple(map(tuple, beat.points)), tuple(beat.labels))
@@ -119,7 +121,7 @@ def frame_summarised(beats: Sequence[Beat]) -> list[Beat]:
     end = next((k for k, b in enumerate(beats) if isinstance(b, Candidates)), None)
     if end is None:
         return list(beats)
-    found = beats[end].candidates
+    found = cast(Candidates, beats[end]).candidates  # the first Candidates beat, found above
     summary = ("The frame as before: candidates " + ", ".join(found) if found
                else "The frame as before: no vertex inside T")
     return [replace(b, caption=summary) if k <= end and isinstance(b, FRAME_BEATS) else b

@@ -22,6 +22,8 @@ geometry.errors.LogFormatError: the log's call of nearest_to: argument 'k' is no
 
 from __future__ import annotations
 
+from typing import Any, cast
+
 from geometry.errors import LogFormatError
 from tracing import Event
 
@@ -40,7 +42,7 @@ def ref_list(call: Event, name: str) -> list[str]:
     return [_key(v, f"{what}: an item") for v in value]
 
 
-def arg(call: Event, name: str):
+def arg(call: Event, name: str) -> Any:
     """Argument ``name`` of ``call`` as the log encodes it (a value, not an object)."""
     args = call.args or {}
     if name not in args:
@@ -61,7 +63,29 @@ def result_refs(ret: Event) -> list[str]:
     return [_key(v, f"{what}: an item") for v in ret.result]
 
 
-def _key(value, what: str) -> str:
+def _key(value: Any, what: str) -> str:
     if isinstance(value, dict) and isinstance(value.get("ref"), str):
-        return value["ref"]
+        key: str = value["ref"]
+        return key
     raise LogFormatError(f"{what} is not an object of the log")
+
+
+# --- the fields the recorder always writes -------------------------------------------------------
+# An Event's target, state and call are optional (a note has none), but the recorder writes a
+# target and a state on every enter and change event, and the seq of its call on every return:
+# these say so to the type checker, and change nothing at run time.
+
+
+def target_of(event: Event) -> str:
+    """The key of the object an enter, change or exit event is about."""
+    return cast(str, event.target)
+
+
+def state_of(event: Event) -> dict[str, Any]:
+    """The state of an enter or change event."""
+    return cast("dict[str, Any]", event.state)
+
+
+def call_of(event: Event) -> int:
+    """The seq of the call of a return event (or of the call open around another event)."""
+    return cast(int, event.call)

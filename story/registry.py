@@ -36,6 +36,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
+from typing import Any
 
 from geometry.diagonals import HEURISTICS
 from geometry.gravity import gravity_at
@@ -175,11 +176,11 @@ class Entry:
 
     name: str
     kind: str
-    function: Callable
+    function: Callable[..., Any]
     correct: bool
     metaphor: str | None
     shown: str
-    source: Callable | None
+    source: Callable[..., Any] | None
     polygon: str
     title: str
     pseudocode: tuple[Step, ...] = ()
@@ -201,7 +202,7 @@ def _title(name: str, idea: str) -> str:
 
 
 def _heuristic(name: str, *, correct: bool, metaphor: str, polygon: str, idea: str,
-               pseudocode: tuple[Step, ...], shown: Callable | None = None,
+               pseudocode: tuple[Step, ...], shown: Callable[..., Any] | None = None,
                correction: str | None = None) -> Entry:
     source = shown or HEURISTICS[name]
     return Entry(name, HEURISTIC, HEURISTICS[name], correct, metaphor, _traced_name(source),
@@ -223,9 +224,10 @@ def _frame(rule: str, *calls: str, inside: tuple[Step, ...] = ()) -> tuple[Step,
     )
 
 
-def _traced_name(function: Callable) -> str:
+def _traced_name(function: Callable[..., Any]) -> str:
     """The name a traced function's calls carry in the log."""
-    return function.__trace_spec__.name
+    name: str = function.__trace_spec__.name  # type: ignore[attr-defined]  # tracing's decorators set it on their wrappers
+    return name
 
 
 def _runner(name: str) -> Callable[..., Triangulation]:
@@ -242,7 +244,7 @@ def _runner(name: str) -> Callable[..., Triangulation]:
 
 
 def _triangulation(name: str, *, metaphor: str | None, idea: str,
-                   pseudocode: tuple[Step, ...] = (), shown: Callable | None = None,
+                   pseudocode: tuple[Step, ...] = (), shown: Callable[..., Any] | None = None,
                    polygon: str = "lecture", show_source: bool = True) -> Entry:
     source = shown or RUNNERS[name]
     return Entry(name, TRIANGULATION, _runner(name), True, metaphor, _traced_name(source),

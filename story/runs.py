@@ -1,7 +1,6 @@
 """Run an algorithm on a polygon under a recording: the computation that sits beside a scene.
 
-No manim here. A scene asks for a log (:meth:`story.spec.RunSpec.log`); it gets one from a
-live run or from a saved JSON file, and cannot tell the difference.
+No manim here. A scene's log (:meth:`story.spec.RunSpec.log`) is live or saved, alike.
 
 >>> log = run_logged("scaling", "counterexample")
 >>> log.meta["algorithm"], log.meta["shown"]
@@ -11,6 +10,7 @@ live run or from a saved JSON file, and cannot tell the difference.
 from __future__ import annotations
 
 import inspect
+from typing import Any, cast
 
 import tracing
 from geometry.check import is_inner_diagonal
@@ -57,23 +57,23 @@ def run_logged(algorithm: str, polygon: str, heuristic: str | None = None,
     own = load_user_heuristic(algorithm) if is_user_spec(algorithm) else None  # a bad spec first
     shape = read_for(algorithm, polygon) if shape is None else fit_for(algorithm, shape)
     if own is not None:
-        return record_user_run(own, shape, polygon)
+        return record_user_run(own, cast(Polygon, shape), polygon)  # fit_for refused holes
     return record_run(algorithm, shape, polygon, heuristic)
 
 
 def record_run(algorithm: str, p: Polygon | PolygonWithHoles, polygon: str,
-               heuristic: str | None = None) -> tracing.Log:
+               heuristic: str | UserHeuristic | None = None) -> tracing.Log:
     """The log of a named heuristic or triangulation algorithm on the polygon ``p`` (read from
     ``polygon``, the name the log records). ``trex log`` writes exactly this log. Divide and
     conquer's ``heuristic`` may be one's own (``file.py:function``): it is loaded first (a bad
     spec is one line, before anything runs), and the meta names its traced function
     (``heuristic_function``), which the storyboard then treats as a heuristic."""
-    meta = {"algorithm": algorithm, "polygon": polygon, "shown": shown(algorithm)}
+    meta: dict[str, Any] = {"algorithm": algorithm, "polygon": polygon, "shown": shown(algorithm)}
     if p.hole_count:  # the listing with the holes' rows (a simple polygon's meta is unchanged)
         meta["pseudocode"] = to_json(hole_pseudocode(algorithm))
     if heuristic:
         meta["heuristic"] = heuristic
-    if heuristic and is_user_spec(heuristic):
+    if isinstance(heuristic, str) and is_user_spec(heuristic):
         loaded = load_user_heuristic(heuristic)
         meta["heuristic_function"] = loaded.name
         heuristic = loaded
@@ -128,7 +128,7 @@ def working_example(heuristic: str, n: int = 9, tries: int = 500) -> str:
         spec = f"random-2opt:{n}:{seed}"
         polygon = Polygon.from_points(make_sample("random-2opt", n, seed))
         log = run_logged(heuristic, spec)
-        candidates = next((e.result for e in log.events
+        candidates: Any = next((e.result for e in log.events
                            if e.kind == "return" and e.name == "candidates_in_triangle"), [])
         if len(candidates or []) >= 2 and is_inner_diagonal(
                 polygon, *find_diagonal(polygon, heuristic).pair):

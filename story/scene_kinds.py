@@ -29,7 +29,7 @@ called. No manim here: the protocols say what is asked, the scenes say how.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Protocol, runtime_checkable
+from typing import Any, Protocol, runtime_checkable
 
 from story.spec import RunSpec
 
@@ -101,7 +101,7 @@ class TaughtChapter(Protocol):
     ``title`` and ``lines`` (never played)."""
 
     chapter_title: str
-    teacher_notes: tuple
+    teacher_notes: tuple[Any, ...]
 
 
 def plays_several(cls: object) -> bool:

@@ -10,18 +10,19 @@ from __future__ import annotations
 import ast
 import inspect
 import textwrap
+from collections.abc import Callable
 
 __all__ = ["shown_source"]
 
 
-def shown_source(function) -> tuple[tuple[int, str], ...]:
+def shown_source(function: Callable[..., object]) -> tuple[tuple[int, str], ...]:
     """(line number, text) of a function as the panel shows it: no decorators, docstring or
     blank lines, tabs as four spaces; empty when its source cannot be read. The panel shows
     built-ins the same way (:func:`metaphors.pseudocode.source_of`). A lambda, or source
     that does not parse on its own, is shown whole.
 
     >>> [text for _, text in shown_source(shown_source)][:2]
-    ['def shown_source(function) -> tuple[tuple[int, str], ...]:', '    try:']
+    ['def shown_source(function: Callable[..., object]) -> tuple[tuple[int, str], ...]:', '    try:']
     >>> mine = lambda polygon: (1, 3)
     >>> [text for _, text in shown_source(mine)]
     ['mine = lambda polygon: (1, 3)']

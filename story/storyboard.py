@@ -48,7 +48,7 @@ from story.beats import (
 from story.pseudocode import Step, from_json, lit_row, named
 from story.reach import Reach, reach_of
 from story.reading import summarised
-from story.refs import ref, result_ref, result_refs
+from story.refs import call_of, ref, result_ref, result_refs, state_of, target_of
 from story.registry import heuristics, pseudocode
 from story.roles import ROLES
 from story.words import number, said, why_not_inner
@@ -90,7 +90,7 @@ def is_frame_key(key: str | None) -> bool:
 # --- call lines ----------------------------------------------------------------------------------
 
 
-def show(value) -> str:
+def show(value: Any) -> str:
     """A value as the call line writes it: refs by key, polygons as P, lists in brackets.
 
     >>> show({"ref": "P(ABCDE)"}), show([{"ref": "D"}, {"ref": "E"}]), show(2.5), show(None)
@@ -118,7 +118,7 @@ def call_line(call: Event, ret: Event | None) -> str:
     return f"{text} → {show(ret.result)}" if ret is not None else text
 
 
-def refs(value) -> list[str]:
+def refs(value: Any) -> list[str]:
     """The keys an encoded value refers to, in order."""
     if isinstance(value, dict) and "ref" in value:
         return [value["ref"]]
@@ -154,7 +154,7 @@ class Walk:
         self.log, self.pacing, self.shown_code, self.user = log, pacing, shown_code, user
         self.rows = rows  # the pseudocode of the run
         self.lit: int | None = None  # the pseudocode row lit so far
-        self.live: dict[str, dict] = {}
+        self.live: dict[str, dict[str, Any]] = {}
         self.returns = {e.call: e for e in log.events if e.kind == "return"}
         self.claims = 0
         self.noun = "diagonal"  # what a claim is, in the summary captions of repeated ones
@@ -181,28 +181,29 @@ class Walk:
             self._memo[name] = make()
         return self._memo[name]
 
-    def entered_after(self, event: Event, key: str) -> dict:
+    def entered_after(self, event: Event, key: str) -> dict[str, Any]:
         """The state with which object `key` enters the log after `event`."""
         for later in self.log.events[event.seq:]:
             if later.kind == "enter" and later.target == key:
-                return later.state
+                return state_of(later)
         return self.live.get(key, {})
 
-    def root_polygon(self) -> tuple[list[str], list]:
+    def root_polygon(self) -> tuple[list[str], list[Any]]:
         """Labels and points of the first polygon of the log."""
         for event in self.log.events:
             if event.kind == "enter" and is_polygon_key(event.target):
-                return event.state["labels"], event.state["points"]
+                return state_of(event)["labels"], state_of(event)["points"]
         return [], []
 
-    def root_holes(self) -> list[dict]:
+    def root_holes(self) -> list[dict[str, Any]]:
         """The holes (each ``{"points", "labels"}``) of the first polygon of the log."""
         for event in self.log.events:
             if event.kind == "enter" and is_polygon_key(event.target):
-                return event.state.get("holes", [])
+                holes: list[dict[str, Any]] = state_of(event).get("holes", [])
+                return holes
         return []
 
-    def root_points(self) -> dict[str, list]:
+    def root_points(self) -> dict[str, list[Any]]:
         """Label → point of the first polygon of the log (its holes' vertices too)."""
         labels, points = self.root_polygon()
         where = dict(zip(labels, points, strict=True))
@@ -247,7 +248,7 @@ class Walk:
     def pace(self) -> float:
         return 1.0 if self.claims < self.pacing.full else self.pacing.fast
 
-    def beat(self, beat_type: type[Beat], caption: str, event: Event, /, **fields) -> Beat:
+    def beat(self, beat_type: type[Beat], caption: str, event: Event, /, **fields: Any) -> Beat:
         """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk."""
         beat = beat_type(caption=caption, step=event.seq, line=self.code_line(event),
                          row=self.pseudocode_row(event), pace=self.pace(), **fields)
@@ -255,7 +256,7 @@ class Walk:
         return beat
 
     def step(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
-             **fields) -> Beat:
+             **fields: Any) -> Beat:
         """The beat of a returned call: its call line, and the call's roles unless ``fields``
         give others."""
         fields.setdefault("roles", call_roles(call, ret))
@@ -271,9 +272,9 @@ class Walk:
         elif event.kind == "return":
             self.stack.pop()
         elif event.kind in ("enter", "change"):
-            self.live[event.target] = event.state
+            self.live[target_of(event)] = state_of(event)
         elif event.kind == "exit":
-            self.live.pop(event.target, None)
+            self.live.pop(target_of(event), None)
 
 
 def pseudocode_of(log: Log) -> tuple[Step, ...]:
@@ -326,7 +327,7 @@ def run_vertices(log: Log) -> dict[str, str]:
     claims: list[list[str]] = []
     for e in log.events:
         if e.kind == "enter" and is_frame_key(e.target) and not is_polygon_key(e.target):
-            for placeholder, label in zip("ABC", e.state["labels"], strict=False):
+            for placeholder, label in zip("ABC", state_of(e)["labels"], strict=False):
                 given.setdefault(placeholder, set()).add(label)
         elif (e.kind == "return" and e.name in _PLACEHOLDERS and isinstance(e.result, dict)
               and "ref" in e.result):
@@ -346,7 +347,7 @@ def spoken_pseudocode(log: Log) -> tuple[Step, ...]:
     """The pseudocode the panel shows for a log: :func:`pseudocode_of`, its placeholders
     naming the run's own vertices where the picture has a vertex of that name
     (:func:`story.pseudocode.named`)."""
-    labels = next((e.state["labels"] for e in log.events
+    labels = next((state_of(e)["labels"] for e in log.events
                    if e.kind == "enter" and is_polygon_key(e.target)), ())
     return named(pseudocode_of(log), run_vertices(log), labels)
 
@@ -374,11 +375,11 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
 
 
 def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[Beat]:
-    if e.kind == "enter" and e.state.get("kind") == "polygon" and is_polygon_key(e.target):
+    if e.kind == "enter" and state_of(e).get("kind") == "polygon" and is_polygon_key(e.target):
         if not walk.shown_polygon:
             walk.shown_polygon = True
-            yield walk.beat(ShowPolygon, "The polygon", e, points=e.state["points"],
-                            labels=e.state["labels"], holes=e.state.get("holes", []))
+            yield walk.beat(ShowPolygon, "The polygon", e, points=state_of(e)["points"],
+                            labels=state_of(e)["labels"], holes=state_of(e).get("holes", []))
         return
     if e.kind == "call" and "polygon" in (e.args or {}) and walk.is_heuristic(e.name):
         walk.heuristic_polygon.append(ref(e, "polygon"))
@@ -387,13 +388,13 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
         walk.heuristic_polygon.pop()
         return
     if e.kind == "enter" and is_frame_key(e.target):
-        corners = e.state["labels"]  # the run's own: a piece keeps its parent's labels
+        corners = state_of(e)["labels"]  # the run's own: a piece keeps its parent's labels
         middle = corners[1] if len(corners) == 3 else "B"
         yield walk.beat(ShowTriangle, f"T = {''.join(corners)}: {middle} and its two neighbours", e,
-                        points=e.state["points"], labels=e.state["labels"])
+                        points=state_of(e)["points"], labels=state_of(e)["labels"])
         return
     if e.kind == "return":
-        call = walk.log.events[e.call]
+        call = walk.log.events[call_of(e)]
         reading = table.get(e.name)
         if reading is not None:
             yield from reading(walk, call, e)
@@ -486,7 +487,7 @@ def _claim_polygon(walk: Walk) -> Polygon | None:
 
 
 def read_step(kind: type[Beat], caption: str,
-              fields: Callable[[Walk, Event, Event], dict]) -> Reading:
+              fields: Callable[[Walk, Event, Event], dict[str, Any]]) -> Reading:
     """The reading of a metaphor's step: one beat of ``kind``, its ``caption`` naming the
     call's result (``{result}``), its own fields from ``fields(walk, call, ret)``."""
 

@@ -96,7 +96,7 @@ def test_a_spec_is_a_frozen_value():
     spec = RunSpec("scaling", "counterexample")
     assert spec == RunSpec("scaling", "counterexample") and hash(spec) == hash(spec.on(spec.polygon))
     with pytest.raises(AttributeError):
-        spec.polygon = "star"  # type: ignore[misc]
+        spec.polygon = "star"  # type: ignore[misc]  # on purpose: it must raise
     with pytest.raises(TypeError):
         RunSpec("scaling", "counterexample", None)  # type: ignore[misc]  # keywords after two
 

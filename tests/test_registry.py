@@ -69,9 +69,9 @@ def test_the_thesis_says_which_heuristics_are_correct():
 
 def test_the_mapping_and_entries_are_read_only():
     with pytest.raises(TypeError):
-        REGISTRY["magic"] = REGISTRY["scaling"]  # type: ignore[index]
+        REGISTRY["magic"] = REGISTRY["scaling"]  # type: ignore[index]  # on purpose: it must raise
     with pytest.raises(AttributeError):
-        entry("scaling").correct = True  # type: ignore[misc]
+        entry("scaling").correct = True  # type: ignore[misc]  # on purpose: it must raise
 
 
 def test_unknown_name_is_one_line_listing_the_known_ones():

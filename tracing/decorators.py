@@ -17,7 +17,7 @@ import functools
 import inspect
 import sys
 from collections.abc import Callable, Iterable
-from typing import Any, TypeVar
+from typing import Any, TypeVar, overload
 
 from tracing.encoding import encode, trace_key_of
 from tracing.recorder import ACTIVE_RECORDER, Recorder
@@ -201,6 +201,24 @@ class Lifetimes:
                 recorder.enter(obj, line)
 
 
+@overload
+def traced(func: F, /) -> F: ...
+
+
+@overload
+def traced(
+    func: None = None,
+    /,
+    *,
+    name: str | None = None,
+    exclude_args: Iterable[str] = (),
+    result: bool = True,
+    consumes: Iterable[str] = (),
+    produces: bool = False,
+    produced_first: bool = False,
+) -> Callable[[F], F]: ...
+
+
 def traced(
     func: F | None = None,
     /,
@@ -283,6 +301,21 @@ def traced(
     return decorate if func is None else decorate(func)
 
 
+@overload
+def lifetimes(func: F, /) -> F: ...
+
+
+@overload
+def lifetimes(
+    func: None = None,
+    /,
+    *,
+    consumes: Iterable[str] = (),
+    produces: bool = False,
+    produced_first: bool = False,
+) -> Callable[[F], F]: ...
+
+
 def lifetimes(
     func: F | None = None,
     /,
@@ -347,10 +380,18 @@ def lifetimes(
             lives.record(recorder, gone, value, line)
             return value
 
-        lifetime_call.__trace_spec__ = lives  # type: ignore[attr-defined]
-        return lifetime_call  # type: ignore[return-value]
+        lifetime_call.__trace_spec__ = lives  # type: ignore[attr-defined]  # an attribute of the wrapper function, read by story.registry and the tests
+        return lifetime_call  # type: ignore[return-value]  # functools.wraps keeps the signature of F, which mypy cannot see
 
     return decorate if func is None else decorate(func)
+
+
+@overload
+def traced_class(cls: C, /) -> C: ...
+
+
+@overload
+def traced_class(cls: None = None, /, *, exclude: Iterable[str] = ()) -> Callable[[C], C]: ...
 
 
 def traced_class(cls: C | None = None, /, *, exclude: Iterable[str] = ()) -> Any:
@@ -470,9 +511,9 @@ def _wrap(
             recorder.close_call(seq, name, target, {"raised": type(error).__name__}, line)
             raise
         recorder.close_call(seq, name, target, encode(value) if keep_result else None, line)
-        if lives is not None:
+        if lives is not None and gone is not None:  # gone is None exactly when lives is
             lives.record(recorder, gone, value, line)
         return value
 
-    traced_call.__trace_spec__ = spec  # type: ignore[attr-defined]
-    return traced_call  # type: ignore[return-value]
+    traced_call.__trace_spec__ = spec  # type: ignore[attr-defined]  # an attribute of the wrapper function, read by story.registry and the tests
+    return traced_call  # type: ignore[return-value]  # functools.wraps keeps the signature of F, which mypy cannot see

@@ -40,7 +40,10 @@ class Traceable(Protocol):
     False
     """
 
-    trace_key: str
+    @property
+    def trace_key(self) -> str:
+        """The object's stable key (an attribute or a property)."""
+        ...
 
     def trace_state(self) -> dict[str, Any]:
         """Return the object's drawable state as plain JSON data."""

@@ -424,7 +424,8 @@ def _state_of(obj: Traceable) -> dict[str, Any]:
     state = obj.trace_state()
     if not isinstance(state, dict):
         raise TypeError(f"{type(obj).__name__}.trace_state() must return a dict")
-    return encode(state)
+    encoded: dict[str, Any] = encode(state)  # a dict encodes as a dict
+    return encoded
 
 
 def _kind_of(state: dict[str, Any]) -> str:

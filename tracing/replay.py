@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import bisect
 from collections.abc import Sequence
-from typing import Any, Protocol
+from typing import Any, Protocol, cast
 
 __all__ = ["CHECKPOINT_EVERY", "LiveStates", "apply_event"]
 
@@ -24,9 +24,12 @@ States = dict[str, dict[str, Any]]
 class Event(Protocol):
     """What replaying needs of a :class:`tracing.events.Event` (which imports this module)."""
 
-    kind: str
-    target: str | None
-    state: dict[str, Any] | None
+    @property
+    def kind(self) -> str: ...
+    @property
+    def target(self) -> str | None: ...
+    @property
+    def state(self) -> dict[str, Any] | None: ...
 
 
 def apply_event(live: States, event: Event) -> None:
@@ -45,13 +48,15 @@ def apply_event(live: States, event: Event) -> None:
     {'A': {'kind': 'point'}}
     """
     kind = event.kind
+    # enter and change events always have a target and a state (tracing.recorder writes them)
+    target, state = cast(str, event.target), cast("dict[str, Any]", event.state)
     if kind == "enter":
-        live[event.target] = event.state
+        live[target] = state
     elif kind == "change":
-        if event.target in live:
-            live[event.target] = event.state
+        if target in live:
+            live[target] = state
     elif kind == "exit":
-        live.pop(event.target, None)
+        live.pop(target, None)
 
 
 class LiveStates:

@@ -31,11 +31,28 @@ from dataclasses import dataclass
 from datetime import timedelta
 from fractions import Fraction
 from pathlib import Path
+from typing import Literal, TypedDict, cast
 
 import av
 import srt
 
-REENCODE = {"codec": "libx264", "options": {"crf": "23"}}  # manim's own settings
+
+class Encoding(TypedDict):
+    codec: Literal["libx264"]  # a video codec's name (av types add_stream by it)
+    options: dict[str, str]
+
+
+REENCODE: Encoding = {"codec": "libx264", "options": {"crf": "23"}}  # manim's own settings
+
+
+class ChapterEntry(TypedDict):
+    """One chapter in chapters.json and the table of chapters."""
+
+    number: int
+    title: str
+    start_seconds: float
+    duration_seconds: float
+    file: str
 
 
 @dataclass(frozen=True)
@@ -93,7 +110,7 @@ def probe(path: Path | str) -> Video:
         start = min(pts)
         return Video(
             path=path, codec=ctx.name, width=ctx.width, height=ctx.height,
-            pix_fmt=ctx.pix_fmt or "", time_base=Fraction(stream.time_base),
+            pix_fmt=ctx.pix_fmt or "", time_base=Fraction(cast(Fraction, stream.time_base)),  # a video stream's
             extradata=bytes(ctx.extradata or b""),
             rate=Fraction(stream.guessed_rate) if stream.guessed_rate else None,
             start=start, ticks=max(ends) - start, frames=len(pts),
@@ -156,7 +173,8 @@ def _remux(videos: Sequence[Video], output: Path) -> None:
                 for packet in source.demux(source.streams.video[0]):
                     if packet.dts is None:
                         continue
-                    packet.pts += offset - video.start
+                    # a packet with a dts has a pts too (it is not a flush packet)
+                    packet.pts = cast(int, packet.pts) + (offset - video.start)
                     packet.dts += offset - video.start
                     packet.stream = stream  # mux rebases from the source time base
                     out.mux(packet)
@@ -236,10 +254,10 @@ def format_clock(seconds: float | Fraction) -> str:
 
 
 def chapter_entries(chapters: Sequence, videos: Sequence[Video],
-                    files: Sequence[str]) -> list[dict[str, object]]:
+                    files: Sequence[str]) -> list[ChapterEntry]:
     """``[{number, title, start_seconds, duration_seconds, file}]``: starts are the sums of
     the durations before (seconds, rounded to microseconds)."""
-    entries = []
+    entries: list[ChapterEntry] = []
     start = Fraction(0)
     for chapter, video, file in zip(chapters, videos, files, strict=True):
         entries.append({"number": chapter.number, "title": chapter.title,
@@ -249,11 +267,11 @@ def chapter_entries(chapters: Sequence, videos: Sequence[Video],
     return entries
 
 
-def chapters_json(entries: Sequence[dict[str, object]]) -> str:
+def chapters_json(entries: Sequence[ChapterEntry]) -> str:
     return json.dumps(list(entries), indent=2, ensure_ascii=False) + "\n"
 
 
-def chapters_markdown(entries: Sequence[dict[str, object]], video: str = "lecture.mp4") -> str:
+def chapters_markdown(entries: Sequence[ChapterEntry], video: str = "lecture.mp4") -> str:
     """A table of the chapters with their starts and lengths as mm:ss.
 
     >>> print(chapters_markdown([{"number": 1, "title": "Overview", "start_seconds": 0,

@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import NoReturn
+from typing import Any, NoReturn
 
 import click
 
@@ -69,9 +69,9 @@ def lecture_chapters() -> tuple[Chapter, ...]:
     after the number). Loading them imports manim, so only when asked for."""
     found = []
     for path in CHAPTERS_DIR.glob("ch*_*.py"):
-        number, _, slug = path.stem[2:].partition("_")
-        if number.isdigit():
-            found.append((int(number), slug.replace("_", "-"), path))
+        digits, _, slug = path.stem[2:].partition("_")
+        if digits.isdigit():
+            found.append((int(digits), slug.replace("_", "-"), path))
     chapters = []
     for number, slug, path in sorted(found):
         cls = load_scene_class(path, None)
@@ -157,7 +157,7 @@ def polygon_checks(segments: Sequence,
         shape = lecture.read_polygon(polygon)
         return triangulate(shape, segment.ours), constrained_delaunay(shape)
 
-    checks = []
+    checks: list[tuple[str, tuple[Any, ...], Callable[..., object]]] = []  # (called with none)
     for segment in segments:
         if isinstance(segment, Run) and segment.polygon is None:
             what = segment.algorithm + (f" with {segment.heuristic}" if segment.heuristic

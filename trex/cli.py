@@ -14,7 +14,7 @@ import click
 
 from geometry.errors import GeometryError
 from geometry.io import Shape, to_json, write_polygon
-from geometry.polygon import Polygon  # noqa: F401  (the doctests' polygons)
+from geometry.polygon import Polygon  # (the doctests' polygons too)
 from geometry.samples import make_sample
 from trex import exit_status
 from trex.course.command import COMMANDS as COURSE_COMMANDS
@@ -44,10 +44,10 @@ class _OneLineGroup(click.Group):
 
     def main(self, *args: Any, standalone_mode: bool = True, **kwargs: Any) -> Any:
         if not standalone_mode:
-            return super().main(*args, standalone_mode=False, **kwargs)
+            return super().main(*args, standalone_mode=False, **kwargs)  # type: ignore[call-overload]  # *args: click's own positional parameters, passed on as they came
         kwargs.setdefault("prog_name", "trex")
         try:
-            code = super().main(*args, standalone_mode=False, **kwargs)
+            code = super().main(*args, standalone_mode=False, **kwargs)  # type: ignore[call-overload]  # *args: click's own positional parameters, passed on as they came
         except click.exceptions.NoArgsIsHelpError as exc:
             click.echo(exc.format_message())  # bare `trex`: the help, status 2 as click does
             sys.exit(exc.exit_code)
@@ -113,7 +113,7 @@ def display_area(polygon: Shape) -> str:
 
 def _size_text(polygon: Shape) -> str:
     holes = polygon.hole_count
-    if not holes:
+    if not holes or isinstance(polygon, Polygon):  # a Polygon has no holes
         return f"{polygon.n} vertices"
     outer = polygon.starts[1]
     return (f"{polygon.n} vertices, {holes} hole{'s' if holes > 1 else ''} "

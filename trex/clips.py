@@ -25,6 +25,7 @@ import json
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import cast
 
 import av
 from PIL import Image
@@ -168,7 +169,8 @@ def cut_clips(video: Path, marks: Marks, folder: Path, names: Sequence[str]) -> 
     with av.open(str(video)) as source:
         stream = source.streams.video[0]
         packets = [p for p in source.demux(stream) if p.dts is not None]
-        frame_of = {pts: k for k, pts in enumerate(sorted(p.pts for p in packets))}
+        # a packet with a dts has a pts too (it is not a flush packet)
+        frame_of = {pts: k for k, pts in enumerate(sorted(cast(int, p.pts) for p in packets))}
         ranges = step_ranges(marks, len(frame_of))
         if len(names) != len(ranges):
             raise ValueError(f"{len(names)} names for {len(ranges)} steps")
@@ -177,7 +179,7 @@ def cut_clips(video: Path, marks: Marks, folder: Path, names: Sequence[str]) -> 
         for (first, stop), name in zip(spans, names, strict=True):
             closing = packets[stop] if stop < len(packets) else None
             closing = _copy(closing) if closing is not None and closing.is_keyframe else None
-            zero = min(p.pts for p in packets[first:stop])
+            zero = min(cast(int, p.pts) for p in packets[first:stop])
             paths.append(_write_clip(packets[first:stop], closing, zero, stream,
                                      folder / name, source))
     return paths

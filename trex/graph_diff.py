@@ -31,7 +31,7 @@ import difflib
 import json
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 #: How many lines :func:`report` shows before it only counts the rest.
 LIMIT = 40
@@ -432,7 +432,8 @@ def _grouped(found: Iterable[Difference]) -> list[str]:
             now = f", now play {first.now}" if first.now else ""
             lines.append(f"play {first.play} ({first.label}{now}): {first.what}")
         else:
-            lines.append(f"{_plays_text([d.play for d in group])}: {first.what}")
+            plays = cast("list[int]", [d.play for d in group])  # grouped: only a play's have a group
+            lines.append(f"{_plays_text(plays)}: {first.what}")
     return lines
 
 

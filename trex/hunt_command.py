@@ -15,10 +15,12 @@ import contextlib
 import json
 import sys
 from pathlib import Path
+from typing import cast
 
 import click
 
 from geometry.io import polygon_to_json_points, write_polygon
+from geometry.polygon import Polygon
 from story.hunt import (
     MAX_SHRINK_TIMEOUTS,
     Hunt,
@@ -46,7 +48,8 @@ def hunt_record(result: Hunt) -> dict:
     return {
         "heuristic": result.heuristic,
         "found": result.found,
-        "polygon": polygon_to_json_points(list(result.polygon.points)) if found else None,
+        "polygon": (polygon_to_json_points(list(result.polygon.points))
+                    if found and result.polygon is not None else None),  # (found says so)
         "diagonal": list(result.diagonal) if claimed and result.diagonal else None,
         "inner": False if claimed else None,
         "why": reason(result) if claimed else None,
@@ -205,7 +208,7 @@ def render_counterexample(heuristic: str | UserHeuristic, result: Hunt,
     try:
         prepare_output(target)
         if output is None:
-            write_polygon(list(result.polygon.points), str(polygon))
+            write_polygon(list(cast(Polygon, result.polygon).points), str(polygon))  # a hunt found
         cls = heuristic_video(heuristic)
     except (OSError, ValueError) as exc:
         fail(f"{target}: {error_line(exc)}")

@@ -21,7 +21,6 @@ import click
 
 from geometry.errors import GeometryError
 from geometry.io import Shape, check_format, read_polygon, read_shape
-from geometry.polygon import Polygon
 from trex.exit_status import INVALID as EXIT_INVALID
 from usercode.limits import DEFAULT_CALL_TIMEOUT, call_timeout, set_call_timeout
 
@@ -59,7 +58,7 @@ def fail(message: str) -> NoReturn:
     raise click.exceptions.Exit(EXIT_INVALID)
 
 
-def try_load(arg: str, *, holes: bool = False) -> Polygon | None:
+def try_load(arg: str, *, holes: bool = False) -> Shape | None:
     """The polygon of ``arg`` with its warnings reported, or None after reporting the error.
 
     With ``holes``, a polygon with holes is returned as a
@@ -74,7 +73,7 @@ def try_load(arg: str, *, holes: bool = False) -> Polygon | None:
     return polygon
 
 
-def load_or_exit(arg: str, *, holes: bool = False) -> Polygon:
+def load_or_exit(arg: str, *, holes: bool = False) -> Shape:
     """The polygon of ``arg`` (with holes, if ``holes``); on failure report it and exit with
     status 2."""
     polygon = try_load(arg, holes=holes)

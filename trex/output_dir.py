@@ -16,6 +16,7 @@ import shutil
 import tempfile
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
+from typing import TypeVar
 
 import click
 
@@ -87,7 +88,10 @@ def built_beside(target: Path, marker: str, written_by: str) -> Iterator[Path]:
         shutil.rmtree(built, ignore_errors=True)
 
 
-def build_guarded(label: str, output: str, what: str, build: Callable[[], Path]) -> Path:
+T = TypeVar("T")
+
+
+def build_guarded(label: str, output: str, what: str, build: Callable[[], T]) -> T:
     """``build()``, with Ctrl-C and SIGTERM raising (its cleanup runs) and any failure one
     line: ``error: LABEL: WHAT failed: …`` and exit 1, or exit 128 + the signal."""
     with interrupts_raise() as signals:

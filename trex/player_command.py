@@ -23,6 +23,7 @@ and renamed into place; an existing DIR is replaced only if it is empty or an ea
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
@@ -30,6 +31,9 @@ from story.pseudocode import PANELS
 from trex.inputs import call_timeout_option, fail
 from trex.output_dir import EXIT_FAILED, build_guarded, built_beside, check_output
 from trex.scene_inputs import check_log, choose, load_scene, read_log, run_of
+
+if TYPE_CHECKING:  # manim's, imported when a scene is loaded
+    from metaphors.scene import TraceScene
 
 MARKER = ".trex-player"
 
@@ -70,7 +74,7 @@ def player(scene: str, polygon: str | None, saved: str | None, output: str,
     click.echo(str(page))
 
 
-def _build(cls: type, log, subtitle: str, target: Path) -> Path:
+def _build(cls: type[TraceScene], log, subtitle: str, target: Path) -> Path:
     from trex.player_steps import render_steps, write_player
 
     with built_beside(target, MARKER, "trex player") as built:

@@ -22,6 +22,7 @@ import sys
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -47,6 +48,11 @@ from trex.inputs import (
 )
 from trex.signals import Interrupted, Signals, interrupts_raise
 from usercode.errors import UserHeuristicError
+
+if TYPE_CHECKING:  # manim, imported when a scene is rendered
+    from manim import Scene
+
+    from story.spec import RunSpec
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 #: The project's manim settings, which plain ``manim`` reads when run from the repository
@@ -191,7 +197,7 @@ def scene_input(cls: type, polygon: str | None, panel: str | None = None,
         return cls.handed(polygon) if polygon is not None else cls.from_environment()
     if polygon is not None:
         return cls.with_spec(load_run(cls.default_spec().on(polygon), shape))
-    spec = cls.from_environment().spec
+    spec: RunSpec = cls.from_environment().spec  # type: ignore[attr-defined]  # the subclass from_environment makes carries the run it was handed
     if spec.saved or spec == cls.default_spec():
         return cls.with_spec(spec)  # a replay, or the default run: nothing handed to check
     return cls.with_spec(load_run(spec))
@@ -202,7 +208,7 @@ def scene_input(cls: type, polygon: str | None, panel: str | None = None,
 
 def _artifact(scene, fmt: str, media: Path) -> Path:
     """The file manim wrote for this scene (asked from its writer, else found in media/)."""
-    writer = getattr(scene.renderer, "file_writer", None)
+    writer: Any = getattr(scene.renderer, "file_writer", None)  # None: AttributeError, below
     with contextlib.suppress(AttributeError, TypeError):
         path = Path(writer.image_file_path if fmt == "png" else writer.movie_file_path)
         if path.is_file():
@@ -226,7 +232,7 @@ def inflight_encoders(cfg: Path = MANIM_CFG) -> int | None:
     return parser.getint("CLI", "max_inflight_encoders", fallback=None)
 
 
-def render_into(make_scene: Callable[[], object], output: Path, fmt: str, quality: str,
+def render_into(make_scene: Callable[[], Scene], output: Path, fmt: str, quality: str,
                 *, progress: bool = True, srt: bool = True,
                 signals: Signals | None = None, steps: dict | None = None) -> Path:
     """Render ``make_scene()`` with manim and move the finished file to ``output``.
@@ -276,7 +282,7 @@ def _settings(media: Path, fmt: str, quality: str, progress: bool) -> dict:
     return settings
 
 
-def _render_in(make_scene: Callable[[], object], temp: Path, output: Path, fmt: str,
+def _render_in(make_scene: Callable[[], Scene], temp: Path, output: Path, fmt: str,
                quality: str, *, progress: bool, srt: bool, signals: Signals,
                steps: dict | None) -> Path:
     """:func:`render_into`'s work, in its temporary directory ``temp``."""

@@ -43,7 +43,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeGuard, cast
 
 import numpy as np
 from manim import Animation, AnimationGroup, Mobject, Scene, VMobject, tempconfig
@@ -124,12 +124,12 @@ def mobject_graph(mobject: Mobject) -> dict[str, Any]:
         node["stroke_width"] = _number(mobject.get_stroke_width())
     else:
         colour = mobject.__dict__.get("color")
-        node["color"] = colour.to_hex() if hasattr(colour, "to_hex") else None
+        node["color"] = colour.to_hex() if colour is not None and hasattr(colour, "to_hex") else None
     text = _text_of(mobject)
     if text is not None:
         node["text"] = text
         if mobject.has_points() or mobject.submobjects:
-            low, high = mobject.get_corner([-1, -1, 0]), mobject.get_corner([1, 1, 0])
+            low, high = mobject.get_corner((-1, -1, 0)), mobject.get_corner((1, 1, 0))
             node["box"] = [_number(v) for v in (*low[:2], *high[:2])]
         else:
             node["box"] = None
@@ -140,7 +140,7 @@ def mobject_graph(mobject: Mobject) -> dict[str, Any]:
     return node
 
 
-def _has_content(mobject: Mobject | None) -> bool:
+def _has_content(mobject: Mobject | None) -> TypeGuard[Mobject]:
     return mobject is not None and (mobject.has_points() or bool(mobject.submobjects))
 
 
@@ -163,7 +163,7 @@ def animation_graph(animation: Animation) -> dict[str, Any]:
     if isinstance(animation, AnimationGroup):
         node["animations"] = [animation_graph(a) for a in animation.animations]
         return node
-    node["mobject"] = mobject_graph(animation.mobject)
+    node["mobject"] = mobject_graph(cast(Mobject, animation.mobject))  # Cairo's (not OpenGL)
     target = getattr(animation, "target_mobject", None)
     if _has_content(target) and target is not animation.mobject:
         node["target"] = mobject_graph(target)
@@ -220,7 +220,7 @@ def recording(scene: Scene) -> Iterator[list[Play]]:
         plays.append(Play(animations, run_time, subcaption, graph))
         return original(*animations, **captions, **kwargs)
 
-    scene.play = play
+    scene.play = play  # type: ignore[method-assign]  # the scene's own play, wrapped to record each play's graph
     try:
         yield plays
     finally:

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING, cast
 
 from geometry.errors import GeometryError
 from story.registry import spoken
@@ -23,8 +24,13 @@ from story.scene_kinds import heuristic_of, plays_several
 from trex.inputs import error_line, fail, load_or_exit, load_run
 from usercode.loading import is_user_spec
 
+if TYPE_CHECKING:  # manim's, imported when a scene is loaded
+    from metaphors.scene import TraceScene
+    from story.spec import RunSpec
+    from tracing import Log
 
-def load_scene(scene: str, command: str = "player", several_runs: bool = False) -> type:
+
+def load_scene(scene: str, command: str = "player", several_runs: bool = False) -> type[TraceScene]:
     """The TraceScene subclass SCENE names (imports manim); one that plays several runs
     only if ``several_runs``. Raises ValueError (one line)."""
     if ".py:" in scene:
@@ -48,7 +54,7 @@ def load_scene(scene: str, command: str = "player", several_runs: bool = False) 
     return cls
 
 
-def read_log(path: str):
+def read_log(path: str) -> Log:
     """The saved log at ``path`` (a :class:`tracing.Log` of one run). Raises ValueError (one
     line) for a file that cannot be read or is not a trex log of a run."""
     from story.runs import saved_log
@@ -74,7 +80,7 @@ def _same_algorithm(plays: str, logged: str) -> bool:
             and plays.rpartition(":")[2] == logged.rpartition(":")[2])
 
 
-def check_log(cls: type, log, scene: str | None = None) -> None:
+def check_log(cls: type[TraceScene], log: Log, scene: str | None = None) -> None:
     """A saved log must be a run of what the scene (named ``scene``) plays and give steps
     that start with the polygon. Raises ValueError (one line)."""
     from metaphors.catalog import beats as storyboard
@@ -101,12 +107,12 @@ class Chosen:
     one run, the run on that polygon with the polygon read (``spec``, see
     :func:`trex.inputs.load_run`; None: the default run)."""
 
-    cls: type
-    log: object | None
+    cls: type[TraceScene]
+    log: Log | None
     saved: str | None
     saved_as: str | None
     polygon: str | None
-    spec: object | None = None
+    spec: RunSpec | None = None
 
 
 def choose(scene: str, polygon: str | None, saved: str | None,
@@ -167,6 +173,7 @@ def run_of(chosen: Chosen):
             fail(f"{spec.polygon}: {error_line(exc)}")
         return spec, log, f"{_said(log)} on {spec.polygon}"
     log = chosen.log
-    return (spec.replaying(chosen.saved), log,
+    saved = cast(str, chosen.saved)  # the log was read from it
+    return (spec.replaying(saved), log,
             f"{_said(log)} on {log.meta.get('polygon', '?')}, "
-            f"saved in {Path(chosen.saved).name}")
+            f"saved in {Path(saved).name}")

@@ -22,14 +22,20 @@ from __future__ import annotations
 
 import shutil
 import time
+from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, cast
 
 import click
 
 from story.pseudocode import PANELS
-from story.scene_kinds import plays_several
+from story.scene_kinds import SeveralRuns, plays_several
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 from trex.output_dir import build_guarded, built_beside, check_output
+
+if TYPE_CHECKING:  # manim's, imported when a scene is loaded
+    from metaphors.scene import TraceScene
+    from trex.scene_inputs import Chosen
 
 MARKER = ".trex-slides"
 LECTURE = "lecture"
@@ -101,7 +107,7 @@ def slides(scene: str, polygon: str | None, saved: str | None, quality: str,
     click.echo(str(target / "index.html"))
 
 
-def _played(chosen, scene: str) -> tuple[type, str]:
+def _played(chosen: Chosen, scene: str) -> tuple[type[TraceScene], str]:
     """The scene class handed what it plays, and the line saying what that is: its one run
     (as the player's), or all its runs, each on its own polygon."""
     from trex.scene_inputs import run_of
@@ -109,7 +115,7 @@ def _played(chosen, scene: str) -> tuple[type, str]:
     if not plays_several(chosen.cls):
         spec, _, subtitle = run_of(chosen)
         return chosen.cls.with_spec(spec), subtitle
-    runs = chosen.cls.runs
+    runs = cast(SeveralRuns, chosen.cls).runs  # plays_several said so
     if chosen.saved is not None:
         fail(f"{chosen.saved_as}: {scene} plays {len(runs)} runs, each on its own polygon; a "
              "saved log is one run")
@@ -118,7 +124,7 @@ def _played(chosen, scene: str) -> tuple[type, str]:
     return chosen.cls.handed(), f"{len(runs)} runs, each on its own polygon"
 
 
-def _scene_slides(cls: type, quality: str, subtitle: str, target: Path) -> list:
+def _scene_slides(cls: type[TraceScene], quality: str, subtitle: str, target: Path) -> list:
     from trex.assemble import probe
     from trex.clips import read_marks
     from trex.render_command import QUALITIES, render_into
@@ -145,7 +151,7 @@ def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: 
     from trex.lecture_join import DEFAULT_DIR
 
     try:
-        chapters = ch.lecture_chapters()
+        chapters: Sequence[ch.Chapter] = ch.lecture_chapters()
     except Exception as exc:  # the chapter list itself is broken
         ch.chapter_failed(f"lecture chapters: {type(exc).__name__}: {error_line(exc)}")
     if only is not None:

@@ -222,7 +222,7 @@ def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = (),
     (:meth:`story.spec.RunSpec.read`; ``shape``: ``polygon`` read already). Raises
     :class:`SnapshotError` (one line) for input the scene cannot take."""
     logs = tuple(os.fspath(p) for p in logs)
-    if not takes_input(cls):
+    if not isinstance(cls, Handed):  # takes_input(cls), said so that the checker narrows cls
         if polygon is not None or logs:
             given = "--polygon" if polygon is not None else "--log"
             raise SnapshotError(f"{cls.__name__} is a plain manim Scene: it takes no {given}")

@@ -16,7 +16,7 @@ import inspect
 import sys
 from pathlib import Path
 from types import ModuleType
-from typing import Any
+from typing import Any, cast
 
 from usercode.errors import UserHeuristicError, UserHeuristicExit, first_line, line_in, message
 from usercode.limits import ending, users_code
@@ -83,7 +83,8 @@ def _compiled(path: Path, resolved: Path, shown: str, function: str | None):
     except OSError as exc:
         raise UserHeuristicError(f"{shown}: cannot read: {exc.strerror or exc}") from None
     try:
-        tree = compile(source, str(resolved), "exec", ast.PyCF_ONLY_AST, dont_inherit=True)
+        tree = cast(ast.Module, compile(source, str(resolved), "exec", ast.PyCF_ONLY_AST,
+                                        dont_inherit=True))  # PyCF_ONLY_AST: a Module
         rewritten = instrument(tree, function) if function else 0
         return compile(tree, str(resolved), "exec", dont_inherit=True), rewritten
     except SyntaxError as exc:
@@ -105,6 +106,8 @@ def _load_module(path: Path, shown: str, function: str | None = None) -> ModuleT
     module_name = f"_trex_user_{_identifier(path.stem)}_{digest}"
     code, rewritten = _compiled(path, resolved, shown, function)
     spec = importlib.util.spec_from_file_location(module_name, resolved)
+    if spec is None:  # never for a file's path; said plainly all the same
+        raise UserHeuristicError(f"{shown}: cannot be loaded as a module")
     module = importlib.util.module_from_spec(spec)
     if rewritten:
         setattr(module, HOOK, answer)

@@ -103,7 +103,8 @@ def instrument(tree: ast.Module, name: str) -> int:
         if isinstance(node, ast.ClassDef):
             continue
         if _is_lambda_named(node, name):
-            node.value.body = _handed(node.value.body.lineno, node.value.body, node.value.body)
+            node.value.body = _handed(  # type: ignore[attr-defined]  # an Assign of a lambda
+                node.value.body.lineno, node.value.body, node.value.body)  # type: ignore[attr-defined]
             count += 1
             continue
         todo.extend(child for child in ast.iter_child_nodes(node)
@@ -133,7 +134,8 @@ def _rewrite_function(function: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
     if not isinstance(function.body[-1], ast.Return | ast.Raise):
         last = ast.Return(_handed(None, None, None))
         for node in ast.walk(last):
-            node.lineno = node.end_lineno = node.col_offset = node.end_col_offset = -1
+            # every node of a Return statement has a position
+            node.lineno = node.end_lineno = node.col_offset = node.end_col_offset = -1  # type: ignore[attr-defined]
         function.body.append(last)
 
 

@@ -244,7 +244,7 @@ def test_find_filters_by_kind_name_and_target():
 def test_events_are_frozen():
     event = Event(0, "note", "x")
     with pytest.raises(AttributeError):
-        event.seq = 1  # type: ignore[misc]
+        event.seq = 1  # type: ignore[misc]  # on purpose: it must raise
 
 
 def test_schema_constant():

@@ -26,7 +26,7 @@ from __future__ import annotations
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, cast, overload
 
 from story.pseudocode import PANELS
 
@@ -151,11 +151,21 @@ class _Fields:
                                               f"not {_shown(value)}")
         return value
 
+    @overload
+    def text(self, key: str, default: str) -> str: ...
+    @overload
+    def text(self, key: str, default: None = None) -> str | None: ...
+
     def text(self, key: str, default: str | None = None) -> str | None:
         value = self.get(key, str, default)
         if value is not None and not value.strip():
             raise CourseError(self.item, key, "is empty")
         return value
+
+    @overload
+    def choice(self, key: str, choices: tuple[str, ...], default: str) -> str: ...
+    @overload
+    def choice(self, key: str, choices: tuple[str, ...], default: None) -> str | None: ...
 
     def choice(self, key: str, choices: tuple[str, ...], default: str | None) -> str | None:
         value = self.text(key, default)
@@ -204,16 +214,16 @@ def _lecture(number: int, table: Any, quality: str) -> Lecture:
 
 def _scene(number: int, table: Any, quality: str) -> SceneItem:
     f = _Fields(f"scene {number}", table, ("scene", "polygons", "format", "quality", "panel"))
-    f.required("scene")
+    f.required("scene")  # so f.text("scene") is a str
     polygons: tuple[str | None, ...] = f.texts("polygons") or (None,)
-    return SceneItem(number, f.text("scene"), polygons, f.choice("format", FORMATS, "mp4"),
+    return SceneItem(number, cast(str, f.text("scene")), polygons, f.choice("format", FORMATS, "mp4"),
                      f.choice("quality", QUALITY_KEYS, quality), f.choice("panel", PANELS, None))
 
 
 def _slides(number: int, table: Any, quality: str) -> Slides:
     f = _Fields(f"slides {number}", table, ("scene", "quality", "polygon", "panel", "chapters"))
-    f.required("scene")
-    slides = Slides(number, f.text("scene"), f.choice("quality", QUALITY_KEYS, quality),
+    f.required("scene")  # so f.text("scene") is a str
+    slides = Slides(number, cast(str, f.text("scene")), f.choice("quality", QUALITY_KEYS, quality),
                     f.text("polygon"), f.choice("panel", PANELS, None), f.texts("chapters"))
     if slides.chapters is not None and slides.scene != "lecture":
         raise CourseError(slides.name, "chapters", "only for the lecture's slides "

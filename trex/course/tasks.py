@@ -28,7 +28,7 @@ import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from geometry.errors import GeometryError
 from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
@@ -242,7 +242,7 @@ def _polygon_part(cls: type, given: str | None) -> str:
     own = cls.polygon if isinstance(cls, Handed) else None
     if given is None and (plays_several(cls) or not isinstance(own, str)):
         return ""
-    return f"-{slug(given if given is not None else own)}"
+    return f"-{slug(cast(str, given if given is not None else own))}"  # own is a str here
 
 
 def _slides(course: Course, item: Slides, checked: _Checked,

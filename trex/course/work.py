@@ -18,7 +18,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from trex.course.tasks import Task
 from trex.inputs import error_line
@@ -193,9 +193,8 @@ def _student_video(items: Sequence, output: Path, quality: str) -> float:
     exercise = next((e for e in items if e.heuristic), None)
     if exercise is None:
         raise TaskFailed("no exercise names a heuristic to play")
-    played = type("StudentVideo", (TraceScene,), {"algorithm": exercise.heuristic,
-                                                 "polygon": exercise.spec,
-                                                 "__module__": __name__})
+    played = cast("type[TraceScene]", type("StudentVideo", (TraceScene,), {
+        "algorithm": exercise.heuristic, "polygon": exercise.spec, "__module__": __name__}))
     render_into(played.handed(), output, "mp4", QUALITIES[quality], progress=False, srt=False)
     return _duration(output)
 

@@ -16,15 +16,17 @@ import json
 import math
 import secrets
 import time
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from geometry.check import is_inner_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.hole_samples import HOLE_SAMPLES
 from geometry.io import Shape, polygon_to_json_points, read_rings, shape_from_rings
+from geometry.polygon import Polygon
+from geometry.predicates import Point
 from geometry.samples import is_sample, parse_spec, sample_from_spec, sample_names
 from geometry.validate import kept_indices
 from story.registry import heuristics, triangulations
@@ -118,7 +120,7 @@ def _raw_index(rings: list) -> list[int]:
     its index in the request's own rings: cleaning drops repeated and closing points."""
     out, offset = [], 0
     for ring in rings:
-        out += [offset + i for i in kept_indices([tuple(map(float, p)) for p in ring])]
+        out += [offset + i for i in kept_indices(cast("list[Point]", [tuple(map(float, p)) for p in ring]))]  # pairs
         offset += len(ring)
     return out
 
@@ -128,9 +130,10 @@ def _frame(shape: Shape, raw: list[int]) -> tuple[list[int] | None, list[int]]:
     holes (the heuristics take simple polygons)."""
     if shape.hole_count:
         return None, []
-    t = triangle_at(shape, leftmost_vertex(shape))
+    simple = cast(Polygon, shape)  # no holes
+    t = triangle_at(simple, leftmost_vertex(simple))
     to_raw = [raw[shape.source[v.index]] for v in (t.a, t.b, t.c)]
-    return to_raw, [raw[shape.source[v.index]] for v in candidates_in_triangle(shape, t)]
+    return to_raw, [raw[shape.source[v.index]] for v in candidates_in_triangle(simple, t)]
 
 
 def check(body: dict) -> dict:
@@ -175,7 +178,8 @@ def check_heuristic(name: object, own: Iterable[str]) -> None:
 def _heuristic(name: object, own: dict[str, UserHeuristic]) -> str | UserHeuristic:
     """A built-in's name or one named on the command line; never code sent by the page."""
     check_heuristic(name, own)
-    return own.get(name, name)
+    known = cast(str, name)  # check_heuristic let only a name through
+    return own.get(known, known)
 
 
 def _claim(shape: Shape, raw: list[int], heuristic: str | UserHeuristic, name: str) -> dict:
@@ -183,8 +187,9 @@ def _claim(shape: Shape, raw: list[int], heuristic: str | UserHeuristic, name: s
     page draws: the edge the claim crosses (``crossed``) or the vertex it passes through
     (``through``), request indices."""
     try:
-        claim = run_heuristic(shape, heuristic)
-        verdict = is_inner_diagonal(shape, *claim.pair)
+        simple = cast(Polygon, shape)  # rings_of(body, holes=False): the outer ring only
+        claim = run_heuristic(simple, heuristic)
+        verdict = is_inner_diagonal(simple, *claim.pair)
     except (ValueError, GeometryError) as exc:
         raise BadRequest(f"{name}: {error_line(exc)}", 422) from None
     to_raw = [raw[s] for s in shape.source]
@@ -291,7 +296,7 @@ def _sample(spec: str) -> dict:
         raise BadRequest(f"{spec}: {error_line(exc)}") from None
 
 
-def _request_of(rings: list, what: str) -> dict:
+def _request_of(rings: Sequence[Sequence[Any]], what: str) -> dict:
     """Rings read from a file or made by a sample, checked as a request's."""
     try:
         body = {"polygon": [list(p) for p in rings[0]] if rings else [],

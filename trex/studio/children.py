@@ -14,6 +14,7 @@ import os
 import sys
 import tempfile
 from pathlib import Path
+from typing import cast
 
 import click
 
@@ -69,7 +70,8 @@ def studio_hunt(heuristic: str | UserHeuristic, budget: int, seed: int, max_vert
     found = result.found and result.polygon is not None
     click.echo(json.dumps({
         "heuristic": str(heuristic), "found": found,
-        "polygon": polygon_to_json_points(list(result.polygon.points)) if found else None,
+        "polygon": (polygon_to_json_points(list(result.polygon.points))
+                    if found and result.polygon is not None else None),  # (found says so)
         "why": reason(result) if found else None, "tried": result.tried,
     }, ensure_ascii=False))
 
@@ -162,7 +164,7 @@ def studio_slides(ctx: click.Context, rule: str, polygon: str, output: str) -> N
     if is_user_spec(rule):
         scene = rule
     else:
-        scene = f"{Path(sys.modules[cls.__module__].__file__).stem}:{cls.__name__}"
+        scene = f"{Path(cast(str, sys.modules[cls.__module__].__file__)).stem}:{cls.__name__}"  # a file's
     ctx.invoke(slides, scene=scene, polygon=polygon, saved=None, quality="l", panel=None,
                output=output, jobs=None, only=None, lecture_dir=None)
 

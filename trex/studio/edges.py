@@ -24,7 +24,8 @@ MAX_SHOWN = 200
 def _ring_edges(rings: list[list[list[float]]]) -> list[tuple[int, int, int, int]]:
     """(ring, position on the ring's edge list, start index, end index) of every edge of
     non-zero length, indices into the concatenated input."""
-    edges, offset = [], 0
+    edges: list[tuple[int, int, int, int]] = []
+    offset = 0
     for k, ring in enumerate(rings):
         m = len(ring)
         for i in range(m):

@@ -8,12 +8,20 @@ command line's, and a heuristic of one's own is one named on the studio's comman
 from __future__ import annotations
 
 import json
+from collections.abc import Iterator
 from pathlib import Path
+from typing import Protocol
 
 from story.registry import heuristics, triangulations
 from trex.studio import api
 from trex.studio.jobs import Job, Jobs
-from usercode.heuristic import UserHeuristic
+
+
+class Own(Protocol):
+    """The studio's own heuristics, by name: a dict of them, or the worker that runs them."""
+
+    def __contains__(self, name: object) -> bool: ...
+    def __iter__(self) -> Iterator[str]: ...
 
 MAX_BUDGET = 100_000
 MAX_HUNT_VERTICES = 20
@@ -34,7 +42,7 @@ def _last_json_line(_job: Job, stdout: str) -> dict:
     return json.loads(stdout.strip().splitlines()[-1])
 
 
-def hunt(body: dict, jobs: Jobs, own: dict[str, UserHeuristic], timeout: float | None) -> dict:
+def hunt(body: dict, jobs: Jobs, own: Own, timeout: float | None) -> dict:
     """Start ``trex hunt``'s search for the named heuristic."""
     name = body.get("heuristic")
     if not isinstance(name, str) or (name not in heuristics() and name not in own):
@@ -47,7 +55,7 @@ def hunt(body: dict, jobs: Jobs, own: dict[str, UserHeuristic], timeout: float |
     return {"job": jobs.submit("hunt", args, _last_json_line).id}
 
 
-def render(body: dict, jobs: Jobs, own: dict[str, UserHeuristic], timeout: float | None) -> dict:
+def render(body: dict, jobs: Jobs, own: Own, timeout: float | None) -> dict:
     """Queue the video (``kind: video``) or the slides (``kind: slides``) of a rule's or an
     algorithm's scene on the request's polygon."""
     scene, kind = body.get("scene"), body.get("kind", "video")

@@ -16,6 +16,7 @@ import subprocess
 import sys
 import threading
 from pathlib import Path
+from typing import IO, Any, cast
 
 from trex.studio.api import BadRequest
 
@@ -48,17 +49,18 @@ class OwnHeuristics:
                 start_new_session=True)  # a Ctrl-C reaches the server, which ends it
         return self.process
 
-    def call(self, route: str, body: dict) -> object:
+    def call(self, route: str, body: dict) -> Any:
         """The worker's answer to ``route`` (diagonal, claims, triangulate) on ``body``;
         BadRequest if it refused, or failed to answer."""
         with self.lock:  # one worker, one request at a time
             worker = self._worker()
+            stdin, stdout = cast(IO[str], worker.stdin), cast(IO[str], worker.stdout)  # PIPEs
             answer: list[str] = []
-            reader = threading.Thread(target=lambda: answer.append(worker.stdout.readline()),
+            reader = threading.Thread(target=lambda: answer.append(stdout.readline()),
                                       daemon=True)
             try:
-                worker.stdin.write(json.dumps({"route": route, "body": body}) + "\n")
-                worker.stdin.flush()
+                stdin.write(json.dumps({"route": route, "body": body}) + "\n")
+                stdin.flush()
             except OSError:
                 answer.append("")
             else:
