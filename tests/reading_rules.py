@@ -315,14 +315,16 @@ MOST_TEXT_ONLY = 0.10
 
 
 def text_only_seconds(data: dict) -> tuple[float, float]:
-    """The seconds a graph shows a card (text on black: from its title's coming to its going)
-    and its whole length."""
+    """The seconds a graph shows a card of text alone (text on black: from its title's coming
+    to its going; not a card with a figure) and its whole length."""
     total = text_only = 0.0
     showing = False
     for play in data["plays"]:
         names = {(a["type"], a.get("mobject", {}).get("name")) for a in play["animations"]}
         if any(kind in INCOMING and name == "card:title" for kind, name in names):
-            showing = True
+            # a card that draws its idea beside its words is not text alone
+            showing = not any(kind in INCOMING and (name or "").startswith("figure:")
+                              for kind, name in names)
         if any(kind in OUTGOING and name == "card:title" for kind, name in names):
             showing = False
         total += play["run_time"]
