@@ -341,6 +341,7 @@ _ENTRIES = (
                        Step("  no: find an inner diagonal V–W of G", ("diagonal_at",)),
                        Step("    (V convex: the sweep; else gravity)", ("sweep_at", "gravity_at")),
                        Step("    G = the good part beyond V–W", ("good_subpolygon",)),
+                       Step("the triangle left is the last slice", ("prune-and-search",)),
                    )),
     _triangulation("monotone", metaphor="monotone", idea="y-monotone pieces, then the stack",
                    pseudocode=(
