@@ -32,7 +32,8 @@ class Ears(LectureScene):
                 box=FRUIT_BOX, speed=0.5),
             Card("How fast", (
                 "Ear clipping, naive: O(n³). With ear status kept up to date: O(n²).",
-                "Finding one ear by prune and search: O(n); clipping them all: O(n²).")),
+                "Finding one ear by prune and search: O(n); clipping them all: O(n²)."),
+                 Figure("growth")),
             Card("Fruit with holes: a keyhole cut", (
                 "Real polygons have holes: the columns of a floor plan, a country's lakes.",
                 "Cut from each hole's right-most vertex to a vertex it sees (Eberly, 2002):",
