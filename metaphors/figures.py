@@ -16,12 +16,13 @@ from dataclasses import dataclass
 from manim import Dot, Line, Mobject, VMobject
 from manim import Polygon as MPolygon
 
+from geometry.batch import in_closed_triangle
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
-from geometry.predicates import orient
+from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.tags import tag
@@ -31,7 +32,7 @@ from story.runs import run_logged
 
 #: where a figure is drawn: the left half of the screen, below the card's title
 FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT = (-3.5, -0.1), 6.2, 4.6
-KINDS = ("triangulation", "diagonal", "ears", "growth", "frame", "claims")
+KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims")
 #: the growth plot: each algorithm's ear tests, counted in its log, on random polygons
 GROWTH_SIZES = (10, 20, 30, 40, 50, 60)
 GROWTH_RUNS = (("ear-clipping-naive", "naive"), ("ear-clipping", "ear status kept"),
@@ -61,7 +62,7 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     polygon = read_polygon(figure.polygon or polygon_spec)
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
     drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
-             "frame": _frame, "claims": _claims}[figure.kind]
+             "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
     parts = drawn(figure, polygon, frame, theme)
     # marks on a vertex go over its dot; fills go under the dots and labels
@@ -148,6 +149,33 @@ def _claims(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> lis
                                   stroke_width=theme.stroke * 2.5), "rejected",
                              f"figure:edge:{polygon.labels[u]}–{polygon.labels[v]}"))
     return drawn
+
+
+def _ear(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
+    """What an ear is, on P: its roomiest ear's triangle in green, and the first convex vertex
+    that is no ear, its triangle in red with the vertex inside it marked."""
+    n, pts = polygon.n, polygon.points
+    convex = [v for v in range(n) if orient(pts[v - 1], pts[v], pts[(v + 1) % n]) > 0]
+    ears = [v for v in convex if is_inner_diagonal(polygon, (v - 1) % n, (v + 1) % n)]
+    blocked = [(v, k) for v in convex if v not in ears
+               for k in range(n) if k not in ((v - 1) % n, v, (v + 1) % n)
+               and in_closed_triangle(pts[k], pts[v - 1], pts[v], pts[(v + 1) % n])]
+    drawn: list[Mobject] = []
+    said = []
+    if ears:  # the roomiest ear: a sliver would not be seen
+        v = max(ears, key=lambda e: abs(signed_area2([pts[e - 1], pts[e], pts[(e + 1) % n]])))
+        drawn.append(tag(triangle_mobject(polygon, ((v - 1) % n, v, (v + 1) % n), frame,
+                                          theme.result, theme), "result", "figure:ear"))
+        said.append(f"{polygon.labels[v]} is an ear")
+    if blocked:
+        v, k = blocked[0]
+        drawn.append(tag(triangle_mobject(polygon, ((v - 1) % n, v, (v + 1) % n), frame,
+                                          theme.rejected, theme), "rejected", "figure:not-ear"))
+        drawn.append(tag(Dot(frame.to_scene(pts[k]), radius=0.11, color=theme.rejected),
+                         "rejected", "figure:candidate"))
+        said.append(f"{polygon.labels[v]} is not: {polygon.labels[k]} lies in its triangle")
+    return [*drawn, tag(_label("; ".join(said) or "a triangle", theme, theme.ink), None,
+                        "figure:label")]
 
 
 def _ears(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
