@@ -13,7 +13,7 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 
-from manim import Dot, Line, Mobject, VMobject
+from manim import DOWN, LEFT, Dot, Line, Mobject, VMobject
 from manim import Polygon as MPolygon
 
 from geometry.batch import in_closed_triangle
@@ -128,6 +128,9 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
 def _claims(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
     """Each rule's claim on P: green if it is an inner diagonal, else red, the edge it
     crosses thick in red."""
+    if polygon.n < 4:
+        return [tag(_label("a triangle: no diagonal to claim", theme, theme.ink), None,
+                    "figure:label")]
     drawn: list[Mobject] = []
     seen: set[tuple[int, int]] = set()
     for name in figure.heuristics:
@@ -218,10 +221,10 @@ def _growth(theme: Theme) -> list[Mobject]:
     words: list[Mobject] = []
     for n in (GROWTH_SIZES[0], GROWTH_SIZES[-1]):
         tick = typeset.text(str(n), font=theme.font, size=theme.label_size, colour=theme.idle)
-        words.append(tag(tick.next_to(at(n, 0), direction=[0, -1, 0], buff=0.12), None,
+        words.append(tag(tick.next_to(at(n, 0), direction=DOWN, buff=0.12), None,
                          "figure:tick"))
     peak = typeset.text(str(top), font=theme.font, size=theme.label_size, colour=theme.idle)
-    words.append(tag(peak.next_to(at(0, top), direction=[-1, 0, 0], buff=0.12), None,
+    words.append(tag(peak.next_to(at(0, top), direction=LEFT, buff=0.12), None,
                      "figure:tick"))
     lines: list[Mobject] = []
     for k, (name, said) in enumerate(GROWTH_RUNS):
@@ -232,7 +235,7 @@ def _growth(theme: Theme) -> list[Mobject]:
         label = typeset.text(f"{said}: {counts[name][-1]}", font=theme.font,
                              size=theme.label_size, colour=colour)
         # the legend in the plot's top left, which the rising lines leave empty
-        label.move_to((left + 0.3, bottom + height - 0.2 - 0.42 * k, 0), aligned_edge=[-1, 0, 0])
+        label.move_to((left + 0.3, bottom + height - 0.2 - 0.42 * k, 0), aligned_edge=LEFT)
         words.append(tag(label, None, "figure:legend"))
     caption = _label("ear tests (mean of 3 polygons) by n", theme, theme.ink)
     return [*axes, *lines, *words, tag(caption, None, "figure:label")]
