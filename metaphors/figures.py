@@ -10,35 +10,45 @@ colours.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
-from manim import Line, Mobject
+from manim import DOWN, LEFT, Dot, Line, Mobject, VMobject
 from manim import Polygon as MPolygon
 
+from geometry.batch import in_closed_triangle
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
+from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
-from geometry.predicates import orient
+from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
+from story.runs import run_logged
 
 #: where a figure is drawn: the left half of the screen, below the card's title
 FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT = (-3.5, -0.1), 6.2, 4.6
-KINDS = ("triangulation", "diagonal", "ears")
+KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims")
+#: the growth plot: each algorithm's ear tests, counted in its log, on random polygons
+GROWTH_SIZES = (10, 20, 30, 40, 50, 60)
+GROWTH_RUNS = (("ear-clipping-naive", "naive"), ("ear-clipping", "ear status kept"),
+               ("prune-and-search", "prune and search"))
 
 
 @dataclass(frozen=True)
 class Figure:
     """What a card draws: ``kind`` (one of :data:`KINDS`) on ``polygon`` (None: the
-    lecture's); ``heuristic`` names the rule that finds a ``diagonal``."""
+    lecture's); ``heuristic`` names the rule that finds a ``diagonal``, ``heuristics`` the
+    rules whose ``claims`` are drawn (green when inner, red with the edge they cross)."""
 
     kind: str
     polygon: str | None = None
     heuristic: str = "gravity"
+    heuristics: tuple[str, ...] = ()  # the rules whose claims a ``claims`` figure draws
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -47,12 +57,18 @@ class Figure:
 
 def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> list[Mobject]:
     """The figure's mobjects, back to front, on ``figure.polygon`` or else ``polygon_spec``."""
+    if figure.kind == "growth":
+        return _growth(theme)
     polygon = read_polygon(figure.polygon or polygon_spec)
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
-    drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears}[figure.kind]
+    drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
+             "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
-    return [shape, *drawn(figure, polygon, frame, theme),
-            tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices")]
+    parts = drawn(figure, polygon, frame, theme)
+    # marks on a vertex go over its dot; fills go under the dots and labels
+    marks = [m for m in parts if m.name == "figure:candidate"]
+    return [shape, *[m for m in parts if m not in marks],
+            tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices"), *marks]
 
 
 def _label(words: str, theme: Theme, colour: str) -> Mobject:
@@ -93,6 +109,78 @@ def _diagonal(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> l
     return [*tints, line, tag(_label(words, theme, theme.result), None, "figure:label")]
 
 
+def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
+    """The frame every heuristic shares: B the left-most vertex, T = ABC shaded, and the
+    candidates (P's vertices inside T) marked, in the colours the runs give them."""
+    t = triangle_at(polygon, leftmost_vertex(polygon))
+    corners = (t.a.index, t.b.index, t.c.index)
+    shaded = tag(MPolygon(*frame.many([polygon.points[k] for k in corners]), color=theme.called,
+                          stroke_width=theme.thin_stroke, fill_color=theme.called,
+                          fill_opacity=0.2), "called", "figure:T")
+    inside = [v.index for v in candidates_in_triangle(polygon, t)]
+    dots = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.argument),
+                "argument", "figure:candidate") for k in inside]
+    names = ", ".join(polygon.labels[k] for k in inside) or "none"
+    words = f"T = {''.join(polygon.labels[k] for k in corners)}; candidates in T: {names}"
+    return [shaded, *dots, tag(_label(words, theme, theme.ink), None, "figure:label")]
+
+
+def _claims(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
+    """Each rule's claim on P: green if it is an inner diagonal, else red, the edge it
+    crosses thick in red."""
+    if polygon.n < 4:
+        return [tag(_label("a triangle: no diagonal to claim", theme, theme.ink), None,
+                    "figure:label")]
+    drawn: list[Mobject] = []
+    seen: set[tuple[int, int]] = set()
+    for name in figure.heuristics:
+        pair = find_diagonal(polygon, name).pair
+        if pair in seen:  # rules that claim the same diagonal draw it once
+            continue
+        seen.add(pair)
+        verdict = is_inner_diagonal(polygon, *pair)
+        colour = theme.result if verdict.ok else theme.rejected
+        i, j = pair
+        drawn.append(tag(Line(frame.to_scene(polygon.points[i]),
+                              frame.to_scene(polygon.points[j]), color=colour,
+                              stroke_width=theme.stroke * 1.6),
+                         "result" if verdict.ok else "rejected", "figure:claim"))
+        if verdict.edge is not None:
+            u, v = verdict.edge
+            drawn.append(tag(Line(frame.to_scene(polygon.points[u]),
+                                  frame.to_scene(polygon.points[v]), color=theme.rejected,
+                                  stroke_width=theme.stroke * 2.5), "rejected",
+                             f"figure:edge:{polygon.labels[u]}–{polygon.labels[v]}"))
+    return drawn
+
+
+def _ear(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
+    """What an ear is, on P: its roomiest ear's triangle in green, and the first convex vertex
+    that is no ear, its triangle in red with the vertex inside it marked."""
+    n, pts = polygon.n, polygon.points
+    convex = [v for v in range(n) if orient(pts[v - 1], pts[v], pts[(v + 1) % n]) > 0]
+    ears = [v for v in convex if is_inner_diagonal(polygon, (v - 1) % n, (v + 1) % n)]
+    blocked = [(v, k) for v in convex if v not in ears
+               for k in range(n) if k not in ((v - 1) % n, v, (v + 1) % n)
+               and in_closed_triangle(pts[k], pts[v - 1], pts[v], pts[(v + 1) % n])]
+    drawn: list[Mobject] = []
+    said = []
+    if ears:  # the roomiest ear: a sliver would not be seen
+        v = max(ears, key=lambda e: abs(signed_area2([pts[e - 1], pts[e], pts[(e + 1) % n]])))
+        drawn.append(tag(triangle_mobject(polygon, ((v - 1) % n, v, (v + 1) % n), frame,
+                                          theme.result, theme), "result", "figure:ear"))
+        said.append(f"{polygon.labels[v]} is an ear")
+    if blocked:
+        v, k = blocked[0]
+        drawn.append(tag(triangle_mobject(polygon, ((v - 1) % n, v, (v + 1) % n), frame,
+                                          theme.rejected, theme), "rejected", "figure:not-ear"))
+        drawn.append(tag(Dot(frame.to_scene(pts[k]), radius=0.11, color=theme.rejected),
+                         "rejected", "figure:candidate"))
+        said.append(f"{polygon.labels[v]} is not: {polygon.labels[k]} lies in its triangle")
+    return [*drawn, tag(_label("; ".join(said) or "a triangle", theme, theme.ink), None,
+                        "figure:label")]
+
+
 def _ears(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
     """Every ear of P: a convex vertex V whose V−1 V+1 is an inner diagonal, its triangle
     shaded."""
@@ -108,5 +196,50 @@ def _ears(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[
                          "figure:label")]
 
 
-__all__ = ["FIGURE_CENTER", "FIGURE_HEIGHT", "FIGURE_WIDTH", "KINDS", "Figure",
-           "figure_mobjects"]
+@functools.cache  # the same runs for every build of the chapter in one process
+def ear_tests(algorithm: str, n: int) -> int:
+    """How many vertices ``algorithm`` tests for an ear on random polygons of ``n``
+    vertices (``random-2opt:n:SEED``, seeds 1 to 3), counted in their logs, on average."""
+    runs = [run_logged(algorithm, f"random-2opt:{n}:{seed}") for seed in (1, 2, 3)]
+    return round(sum(len(log.find(kind="call", name="is_ear")) for log in runs) / len(runs))
+
+
+def _growth(theme: Theme) -> list[Mobject]:
+    """Ear tests against n for the three ear clippers: measured, not asymptotic."""
+    counts = {name: [ear_tests(name, n) for n in GROWTH_SIZES] for name, _ in GROWTH_RUNS}
+    top = max(max(c) for c in counts.values())
+    left, bottom = FIGURE_CENTER[0] - FIGURE_WIDTH / 2 + 0.6, FIGURE_CENTER[1] - FIGURE_HEIGHT / 2
+    width, height = FIGURE_WIDTH - 1.0, FIGURE_HEIGHT - 0.4
+
+    def at(n: int, count: int) -> tuple[float, float, float]:
+        return (left + width * n / GROWTH_SIZES[-1], bottom + height * count / top, 0.0)
+
+    axes = [tag(Line(at(0, 0), at(GROWTH_SIZES[-1], 0), color=theme.idle,
+                     stroke_width=theme.thin_stroke), None, "figure:axis"),
+            tag(Line(at(0, 0), at(0, top), color=theme.idle, stroke_width=theme.thin_stroke),
+                None, "figure:axis")]
+    words: list[Mobject] = []
+    for n in (GROWTH_SIZES[0], GROWTH_SIZES[-1]):
+        tick = typeset.text(str(n), font=theme.font, size=theme.label_size, colour=theme.idle)
+        words.append(tag(tick.next_to(at(n, 0), direction=DOWN, buff=0.12), None,
+                         "figure:tick"))
+    peak = typeset.text(str(top), font=theme.font, size=theme.label_size, colour=theme.idle)
+    words.append(tag(peak.next_to(at(0, top), direction=LEFT, buff=0.12), None,
+                     "figure:tick"))
+    lines: list[Mobject] = []
+    for k, (name, said) in enumerate(GROWTH_RUNS):
+        colour = theme.pieces[k % len(theme.pieces)]
+        points = [at(n, c) for n, c in zip(GROWTH_SIZES, counts[name], strict=True)]
+        lines.append(tag(VMobject(color=colour, stroke_width=theme.stroke).set_points_as_corners(
+            points), None, f"figure:growth:{name}"))
+        label = typeset.text(f"{said}: {counts[name][-1]}", font=theme.font,
+                             size=theme.label_size, colour=colour)
+        # the legend in the plot's top left, which the rising lines leave empty
+        label.move_to((left + 0.3, bottom + height - 0.2 - 0.42 * k, 0), aligned_edge=LEFT)
+        words.append(tag(label, None, "figure:legend"))
+    caption = _label("ear tests (mean of 3 polygons) by n", theme, theme.ink)
+    return [*axes, *lines, *words, tag(caption, None, "figure:label")]
+
+
+__all__ = ["FIGURE_CENTER", "FIGURE_HEIGHT", "FIGURE_WIDTH", "GROWTH_RUNS", "GROWTH_SIZES",
+           "KINDS", "Figure", "ear_tests", "figure_mobjects"]

@@ -3,6 +3,7 @@
 Run: ``manim -pql scenes/chapters/ch2_heuristics.py``; the whole lecture: ``trex lecture``.
 """
 
+from metaphors.figures import Figure
 from metaphors.lecture import Analysis, Card, LectureScene, Run
 from story.registry import SPOKEN, entry, spoken
 from story.runs import working_example
@@ -68,5 +69,6 @@ class Heuristics(LectureScene):
         frame = Card("The frame every heuristic shares", (
             "B: the left-most vertex (lowest on ties) — always convex: P lies to its right.",
             "A and C: its neighbours; T = triangle ABC.",
-            "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate D: is BD?"))
+            "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate D: is BD?"),
+            Figure("frame"))
         return (frame, *[s for family in FAMILIES for s in family_segments(family)])

@@ -17,13 +17,14 @@ class Ears(LectureScene):
                 "An ear: a convex vertex V whose triangle V−1 V V+1 holds no other vertex,",
                 "so that V−1 V+1 is an inner diagonal.",
                 "Slice an ear off, put it on the plate, repeat until one triangle is left."),
-                 Figure("ears")),
+                 Figure("ear")),
             Run("ear-clipping-naive", None, "Ear clipping (Meisters): slice the first ear found",
                 box=FRUIT_BOX, speed=0.6),
             Card("The two-ears theorem (Meisters, 1975)", (
                 "Every simple polygon with more than three vertices has two ears",
                 "that do not overlap — so there is always a slice to cut.",
-                "Testing every vertex: O(n²) for one ear, O(n³) for all.")),
+                "Testing every vertex: O(n²) for one ear, O(n³) for all."),
+                 Figure("ears")),
             Card("Prune and search (ElGindy, Everett, Toussaint)", (
                 "Test the middle vertex of a good sub-polygon (one cut edge).",
                 "Not an ear? Its diagonal cuts off a smaller good sub-polygon — keep that half.",
@@ -32,7 +33,8 @@ class Ears(LectureScene):
                 box=FRUIT_BOX, speed=0.5),
             Card("How fast", (
                 "Ear clipping, naive: O(n³). With ear status kept up to date: O(n²).",
-                "Finding one ear by prune and search: O(n); clipping them all: O(n²).")),
+                "Finding one ear by prune and search: O(n); clipping them all: O(n²)."),
+                 Figure("growth")),
             Card("Fruit with holes: a keyhole cut", (
                 "Real polygons have holes: the columns of a floor plan, a country's lakes.",
                 "Cut from each hole's right-most vertex to a vertex it sees (Eberly, 2002):",
