@@ -9,8 +9,11 @@ been read (:mod:`metaphors.captions`).
 
 from __future__ import annotations
 
+from typing import Any, TypeAlias
+
 import numpy as np
-from manim import FadeIn, FadeOut, Mobject, Scene, VGroup
+from manim import Animation, FadeIn, FadeOut, Mobject, Scene, VGroup
+from manim.mobject.mobject import _AnimationBuilder
 
 from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
@@ -21,6 +24,7 @@ from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering.layers import BACKDROP_Z, STILL_Z
 from rendering.typeset import balanced, glyphs, text
+from story.beats import Beat
 
 #: seconds the words of a beat take to change (at most half the beat)
 WORDS_TIME = 0.3
@@ -28,6 +32,18 @@ WORDS_TIME = 0.3
 MIN_PLAY = 0.1
 #: z-index of the words while they change: above everything
 WORDS_Z = 10
+
+#: what a play takes: an animation, a mobject's ``.animate`` (its builder, or the mobject)
+Playable: TypeAlias = Animation | Mobject | _AnimationBuilder
+
+
+def animate(mobject: Mobject, **anim_args: Any) -> _AnimationBuilder:
+    """``mobject.animate(**anim_args)`` (a builder given the play's arguments, ``rate_func``
+    …), typed: manim types ``animate`` as the builder or the mobject itself, but it is always
+    the builder."""
+    builder = mobject.animate
+    assert isinstance(builder, _AnimationBuilder)
+    return builder(**anim_args)
 
 
 class Board:
@@ -82,7 +98,7 @@ class Board:
 
     # --- playing ----------------------------------------------------------------------------------
 
-    def play(self, beat, *anims, run_time: float = 1.0) -> None:
+    def play(self, beat: Beat, *anims: Playable, run_time: float = 1.0) -> None:
         """Play a beat: first its words (subtitle, lit line, call line) change, briefly; then its
         own animations play with the roles on both sides, for the rest of the beat's time.
 
