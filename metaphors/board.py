@@ -9,6 +9,7 @@ been read (:mod:`metaphors.captions`).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any, TypeAlias
 
 import numpy as np
@@ -59,12 +60,13 @@ class Board:
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
         self.shape = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
                          "polygon")
-        self.markers = {
+        self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}")
             for label, m in [*zip(labels, vertex_markers(self.polygon, self.frame, theme),
                                   strict=True), *hole_markers(self.holes, self.frame, theme)]
         }
-        self.where = {label: p for label, p in zip(labels, self.polygon.points, strict=True)}
+        self.where: dict[str, tuple[float, ...]] = {
+            label: p for label, p in zip(labels, self.polygon.points, strict=True)}
         self.where.update({label: tuple(p) for hole in self.holes
                            for label, p in zip(hole["labels"], hole["points"], strict=True)})
         self.panel = Panel(points, labels, shown, theme, self.holes)
@@ -74,13 +76,14 @@ class Board:
                             "subtitle")
         self.objects: dict[str, Mobject] = {}  # persistent metaphor objects by key
         self.caption = ""  # the caption of this board's subtitle
-        self.outgoing = None  # the subtitle a beat replaces, cut once the beat's caption shows
+        # the subtitle a beat replaces, cut once the beat's caption shows
+        self.outgoing: Mobject | None = None
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
 
     # --- coordinates -----------------------------------------------------------------------------
 
-    def at(self, p) -> np.ndarray:
+    def at(self, p: Sequence[float]) -> np.ndarray:
         """Scene point of a polygon-coordinate point (follows the metaphor's rotation)."""
         return self.frame.to_scene(p)
 
@@ -190,10 +193,10 @@ class Board:
         if old is not None:
             self.scene.remove(old)
 
-    def keep(self, key: str, mobject) -> None:
+    def keep(self, key: str, mobject: Mobject) -> None:
         """Remember a metaphor object (it turns with the polygon and is cleared by ``drop``)."""
         self.objects[key] = mobject
 
-    def drop(self, *keys: str) -> list:
+    def drop(self, *keys: str) -> list[FadeOut]:
         """Fade-outs for remembered objects."""
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]

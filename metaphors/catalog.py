@@ -2,8 +2,9 @@
 
 A metaphor module declares ``READS`` (traced name → :data:`~story.storyboard.Reading`: the
 beats of that step) and ``PERFORMS`` (beat kind → :data:`~metaphors.performing.Performer`:
-``(board, beat)``, the animations that play it; see :mod:`metaphors.performing`). The registry names each algorithm's metaphor
-(:attr:`story.registry.Entry.metaphor`, the module's name in this package), so a new
+``(board, beat)``, the animations that play it; see :mod:`metaphors.performing`). The
+registry names each algorithm's metaphor (:attr:`story.registry.Entry.metaphor`, the
+module's name in this package), so a new
 metaphor is one module plus its registry entry; the frame every run shares (``basics``) and
 a heuristic of one's own (``generic``) are always read. A beat with no performer plays as
 its caption only.

@@ -342,9 +342,10 @@ def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                     labels=state["labels"])
 
 
-READS: Mapping[str, Reading] = {"is_ear": read_ear_test, "clip_ear": read_clip, "ear-clipping": read_clip,
-         "ear-clipping-naive": read_clip, "prune-and-search": read_clip,
-         "good_subpolygon": read_good,
-         "join_hole": read_join_hole}
-PERFORMS: Performances = performs(act(EarTest, ear_test), act(Keyhole, keyhole), act(Slice, clip),
-                                   act(LastSlice, clip), act(Good, good))
+READS: Mapping[str, Reading] = {
+    "is_ear": read_ear_test, "clip_ear": read_clip, "ear-clipping": read_clip,
+    "ear-clipping-naive": read_clip, "prune-and-search": read_clip,
+    "good_subpolygon": read_good,
+    "join_hole": read_join_hole}
+PERFORMS: Performances = performs(act(EarTest, ear_test), act(Keyhole, keyhole),
+                                  act(Slice, clip), act(LastSlice, clip), act(Good, good))

@@ -171,8 +171,10 @@ def _text(board: Board, state: dict[str, Any], colour: str) -> VMobject:
                         colour=colour).move_to(board.at(_xy(state["at"])))
 
 
-_DRAW: dict[str, Callable[[Board, dict[str, Any], str], VMobject | None]] = {"point": _point, "segment": _segment, "polygon": _polygon, "circle": _circle,
-         "line": _line, "ray": _ray, "text": _text}
+#: how each drawn kind is drawn: (board, state, colour) → its mobject, or None
+_DRAW: dict[str, Callable[[Board, dict[str, Any], str], VMobject | None]] = {
+    "point": _point, "segment": _segment, "polygon": _polygon, "circle": _circle,
+    "line": _line, "ray": _ray, "text": _text}
 
 
 def clip_to_box(a, b, both_ways: bool, box=METAPHOR):

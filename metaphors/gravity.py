@@ -112,7 +112,8 @@ def _scene_point(mobject: Mobject) -> np.ndarray:
 def slide(board: Board, beat: Slide) -> None:
     """The ball slides down the edge it hit to its lower end X; the band stretches behind it."""
     ball, band = board.objects.get("ball"), board.objects.get("band")
-    if ball is None or band is None or beat.slide is None:  # it landed on a vertex: nothing to slide
+    # it landed on a vertex: nothing to slide (the ball and band come together, from `drop`)
+    if ball is None or band is None or beat.slide is None:
         board.play(beat, run_time=0.8)
         return
     x = board.at(beat.slide.to)
@@ -242,4 +243,4 @@ READS: Mapping[str, Reading] = {
     "band_snag": read_snag,
 }
 PERFORMS: Performances = performs(act(GravityTurn, gravity_turn), act(Drop, drop),
-                                   act(Slide, slide), act(Snag, snag))
+                                  act(Slide, slide), act(Snag, snag))

@@ -185,5 +185,5 @@ def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 READS: Mapping[str, Reading] = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,
          "monotone_pieces": read_pieces, "triangulate_monotone_piece": read_stack}
 PERFORMS: Performances = performs(act(Classify, classify),
-                                   act(MonotoneDiagonal, monotone_diagonal),
-                                   act(Pieces, pieces), act(Stack, stack))
+                                  act(MonotoneDiagonal, monotone_diagonal),
+                                  act(Pieces, pieces), act(Stack, stack))

@@ -170,4 +170,4 @@ READS: Mapping[str, Reading] = {
         Flood, "Water rises from the shore AC; the last dry candidate is {result}", _rise),
 }
 PERFORMS: Performances = performs(act(Water, water), act(WalledWater, walled_water),
-                                   act(Flood, flood))
+                                  act(Flood, flood))
