@@ -4,6 +4,8 @@ candidates, the claim, the verdict (✓, or a red flash where the claim crosses 
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 from manim import (
     Create,
     DashedLine,
@@ -18,13 +20,25 @@ from manim import (
     Polygon as MPolygon,
 )
 
+from metaphors.board import Board, Playable
+from metaphors.performing import Performances, act, performs
 from metaphors.picture import upright
 from metaphors.tags import tag
 from rendering.typeset import text
-from story.beats import Candidates, Claim, Note, Pick, ShowPolygon, ShowTriangle, Verdict
+from story.beats import (
+    Beat,
+    Candidates,
+    Claim,
+    Note,
+    Pick,
+    ShowPolygon,
+    ShowTriangle,
+    Verdict,
+)
+from story.storyboard import Reading
 
 
-def polygon(board, beat) -> None:
+def polygon(board: Board, beat: ShowPolygon) -> None:
     board.scene.add(*board.panel.mobjects())
     # one FadeIn per marker: FadeIn(*markers) would put them on screen as one group, and manim
     # redraws a whole group in every frame when any member of it changes colour
@@ -32,12 +46,12 @@ def polygon(board, beat) -> None:
                *[FadeIn(m) for m in board.markers.values()], run_time=1.5)
 
 
-def pick(board, beat) -> None:
+def pick(board: Board, beat: Pick) -> None:
     marker = board.markers[beat.vertex]
     board.play(beat, Indicate(marker, color=board.theme.result), run_time=1.0)
 
 
-def triangle(board, beat) -> None:
+def triangle(board: Board, beat: ShowTriangle) -> None:
     t = tag(MPolygon(*[board.at(p) for p in beat.points], color=board.theme.called,
                      stroke_width=board.theme.thin_stroke, fill_color=board.theme.called,
                      fill_opacity=0.15), "called", "T")
@@ -45,12 +59,12 @@ def triangle(board, beat) -> None:
     board.play(beat, Create(t), run_time=1.0)
 
 
-def candidates(board, beat) -> None:
+def candidates(board: Board, beat: Candidates) -> None:
     board.play(beat, *[Indicate(board.markers[c], color=board.theme.argument, scale_factor=1.4)
                        for c in beat.candidates], run_time=1.0)
 
 
-def claim(board, beat) -> None:
+def claim(board: Board, beat: Claim) -> None:
     u, v = beat.points
     line = tag(Line(board.at(u), board.at(v), color=board.theme.result,
                     stroke_width=board.theme.stroke * 1.5), "result", "claim")
@@ -58,14 +72,14 @@ def claim(board, beat) -> None:
     board.play(beat, Create(line), run_time=1.0)
 
 
-def verdict(board, beat) -> None:
+def verdict(board: Board, beat: Verdict) -> None:
     """The claim judged: a tick, or the claim red, the crossed edge and a flash at the crossing;
     then a turned picture turns back upright (:func:`metaphors.picture.upright`)."""
     _judged(board, beat)
     upright(board, beat)
 
 
-def _judged(board, beat) -> None:
+def _judged(board: Board, beat: Verdict) -> None:
     line = board.objects.get("claim")
     theme = board.theme
     if "T" in board.objects:
@@ -77,7 +91,7 @@ def _judged(board, beat) -> None:
         board.keep("verdict", mark)
         board.play(beat, FadeIn(mark, scale=1.5), run_time=1.0)
         return
-    anims = []
+    anims: list[Playable] = []
     if line is not None:
         anims.append(line.animate.set_color(theme.rejected))
     edge = beat.edge
@@ -98,16 +112,18 @@ def _judged(board, beat) -> None:
     board.play(beat, *anims, FadeIn(mark, scale=1.5), run_time=1.5)
 
 
-def note(board, beat) -> None:
+def note(board: Board, beat: Beat) -> None:
+    """Any beat as its caption only (the performer of a beat kind with none of its own)."""
     board.play(beat, run_time=1.5)
 
 
-def dashed(board, a, b, role: str, name: str):
+def dashed(board: Board, a, b, role: str, name: str) -> DashedLine:
     """A dashed segment between polygon points (used for lines outside the polygon)."""
     return tag(DashedLine(board.at(a), board.at(b), color=board.theme.role_colour(role),
                           stroke_width=board.theme.thin_stroke), role, name)
 
 
-READS: dict = {}  # the frame's steps are read by the storyboard itself
-PERFORMS = {ShowPolygon: polygon, Pick: pick, ShowTriangle: triangle, Candidates: candidates,
-            Claim: claim, Verdict: verdict, Note: note}
+READS: Mapping[str, Reading] = {}  # the frame's steps are read by the storyboard itself
+PERFORMS: Performances = performs(
+    act(ShowPolygon, polygon), act(Pick, pick), act(ShowTriangle, triangle),
+    act(Candidates, candidates), act(Claim, claim), act(Verdict, verdict), act(Note, note))

@@ -9,8 +9,12 @@ been read (:mod:`metaphors.captions`).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any, TypeAlias
+
 import numpy as np
-from manim import FadeIn, FadeOut, Mobject, Scene, VGroup
+from manim import Animation, FadeIn, FadeOut, Mobject, Scene, VGroup
+from manim.mobject.mobject import _AnimationBuilder
 
 from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
@@ -21,6 +25,7 @@ from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering.layers import BACKDROP_Z, STILL_Z
 from rendering.typeset import balanced, glyphs, text
+from story.beats import Beat
 
 #: seconds the words of a beat take to change (at most half the beat)
 WORDS_TIME = 0.3
@@ -28,6 +33,18 @@ WORDS_TIME = 0.3
 MIN_PLAY = 0.1
 #: z-index of the words while they change: above everything
 WORDS_Z = 10
+
+#: what a play takes: an animation, a mobject's ``.animate`` (its builder, or the mobject)
+Playable: TypeAlias = Animation | Mobject | _AnimationBuilder
+
+
+def animate(mobject: Mobject, **anim_args: Any) -> _AnimationBuilder:
+    """``mobject.animate(**anim_args)`` (a builder given the play's arguments, ``rate_func``
+    …), typed: manim types ``animate`` as the builder or the mobject itself, but it is always
+    the builder."""
+    builder = mobject.animate
+    assert isinstance(builder, _AnimationBuilder)
+    return builder(**anim_args)
 
 
 class Board:
@@ -43,12 +60,13 @@ class Board:
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
         self.shape = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
                          "polygon")
-        self.markers = {
+        self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}")
             for label, m in [*zip(labels, vertex_markers(self.polygon, self.frame, theme),
                                   strict=True), *hole_markers(self.holes, self.frame, theme)]
         }
-        self.where = {label: p for label, p in zip(labels, self.polygon.points, strict=True)}
+        self.where: dict[str, tuple[float, ...]] = {
+            label: p for label, p in zip(labels, self.polygon.points, strict=True)}
         self.where.update({label: tuple(p) for hole in self.holes
                            for label, p in zip(hole["labels"], hole["points"], strict=True)})
         self.panel = Panel(points, labels, shown, theme, self.holes)
@@ -58,13 +76,14 @@ class Board:
                             "subtitle")
         self.objects: dict[str, Mobject] = {}  # persistent metaphor objects by key
         self.caption = ""  # the caption of this board's subtitle
-        self.outgoing = None  # the subtitle a beat replaces, cut once the beat's caption shows
+        # the subtitle a beat replaces, cut once the beat's caption shows
+        self.outgoing: Mobject | None = None
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
 
     # --- coordinates -----------------------------------------------------------------------------
 
-    def at(self, p) -> np.ndarray:
+    def at(self, p: Sequence[float]) -> np.ndarray:
         """Scene point of a polygon-coordinate point (follows the metaphor's rotation)."""
         return self.frame.to_scene(p)
 
@@ -82,7 +101,7 @@ class Board:
 
     # --- playing ----------------------------------------------------------------------------------
 
-    def play(self, beat, *anims, run_time: float = 1.0) -> None:
+    def play(self, beat: Beat, *anims: Playable, run_time: float = 1.0) -> None:
         """Play a beat: first its words (subtitle, lit line, call line) change, briefly; then its
         own animations play with the roles on both sides, for the rest of the beat's time.
 
@@ -174,10 +193,10 @@ class Board:
         if old is not None:
             self.scene.remove(old)
 
-    def keep(self, key: str, mobject) -> None:
+    def keep(self, key: str, mobject: Mobject) -> None:
         """Remember a metaphor object (it turns with the polygon and is cleared by ``drop``)."""
         self.objects[key] = mobject
 
-    def drop(self, *keys: str) -> list:
+    def drop(self, *keys: str) -> list[FadeOut]:
         """Fade-outs for remembered objects."""
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]

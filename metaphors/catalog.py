@@ -1,9 +1,10 @@
 """Every metaphor module, and what it reads and performs.
 
-A metaphor module declares ``READS`` (traced name → reading: the beats of that step, see
-:mod:`story.storyboard`) and ``PERFORMS`` (beat kind → performer: ``(board, beat)``, the
-animations that play it). The registry names each algorithm's metaphor
-(:attr:`story.registry.Entry.metaphor`, the module's name in this package), so a new
+A metaphor module declares ``READS`` (traced name → :data:`~story.storyboard.Reading`: the
+beats of that step) and ``PERFORMS`` (beat kind → :data:`~metaphors.performing.Performer`:
+``(board, beat)``, the animations that play it; see :mod:`metaphors.performing`). The
+registry names each algorithm's metaphor (:attr:`story.registry.Entry.metaphor`, the
+module's name in this package), so a new
 metaphor is one module plus its registry entry; the frame every run shares (``basics``) and
 a heuristic of one's own (``generic``) are always read. A beat with no performer plays as
 its caption only.
@@ -17,10 +18,13 @@ its caption only.
 from __future__ import annotations
 
 import importlib
-from collections.abc import Callable, Mapping
+from collections.abc import Iterable, Mapping
 from types import MappingProxyType, ModuleType
+from typing import TypeVar
 
 from metaphors import basics, generic
+from metaphors.board import Board
+from metaphors.performing import Performances
 from story.beats import Beat
 from story.registry import REGISTRY
 from story.storyboard import Pacing, Reading, storyboard
@@ -37,17 +41,31 @@ def _registered() -> tuple[ModuleType, ...]:
 MODULES = (basics, *_registered(), generic)
 
 
-def _merged(tables) -> Mapping:
-    merged: dict = {}
+K = TypeVar("K")
+V = TypeVar("V")
+
+
+def _merged(tables: Iterable[Mapping[K, V]]) -> Mapping[K, V]:
+    """One table of many; a key declared twice is an error (named by ``str``: a beat kind is
+    a class, which does not sort).
+
+    >>> _merged([{"a": 1}, {"b": 2}])
+    mappingproxy({'a': 1, 'b': 2})
+    >>> from story.beats import Note
+    >>> _merged([{Note: 1}, {Note: 2}])
+    Traceback (most recent call last):
+    ValueError: declared twice: ["<class 'story.beats.Note'>"]
+    """
+    merged: dict[K, V] = {}
     for table in tables:
-        if merged.keys() & table.keys():
-            raise ValueError(f"declared twice: {sorted(merged.keys() & table.keys())}")
+        if twice := merged.keys() & table.keys():
+            raise ValueError(f"declared twice: {sorted(map(str, twice))}")
         merged.update(table)
     return MappingProxyType(merged)
 
 
 READS: Mapping[str, Reading] = _merged(m.READS for m in MODULES)
-PERFORMS: Mapping[type[Beat], Callable[..., None]] = _merged(m.PERFORMS for m in MODULES)
+PERFORMS: Performances = _merged(m.PERFORMS for m in MODULES)
 
 
 def beats(log: Log, pacing: Pacing | None = None, shown_code: str | None = None) -> list[Beat]:
@@ -55,6 +73,6 @@ def beats(log: Log, pacing: Pacing | None = None, shown_code: str | None = None)
     return storyboard(log, pacing, shown_code, readings=READS)
 
 
-def perform(board, beat: Beat) -> None:
+def perform(board: Board, beat: Beat) -> None:
     """Play one beat on the board."""
     PERFORMS.get(type(beat), basics.note)(board, beat)

@@ -12,16 +12,20 @@ candidates.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 from manim import DEGREES, Circle, Dot, FadeIn, FadeOut, Line, Rotate, VGroup
 
+from metaphors.board import Board
+from metaphors.performing import Performances, act, performs
 from metaphors.sweep import follower, light
 from metaphors.tags import tag
 from story.beats import beat_kind
 from story.reach import heading
-from story.states import Hand, Moving, point
-from story.storyboard import Walk, read_step
+from story.states import Hand, Moving, Point, hits, point
+from story.storyboard import Reading, Walk, read_step
 from tracing import Event
 
 
@@ -37,7 +41,7 @@ FACE_RADIUS = 0.55
 HAND_MARGIN = 0.35
 
 
-def turn_sign(origin, heading: float, point) -> int:
+def turn_sign(origin: Sequence[float], heading: float, point: Sequence[float]) -> int:
     """+1 if the hand turns counter-clockwise from `heading` (degrees) to reach `point`, else −1.
 
     >>> turn_sign([1.0, 4.5], 80.27, [3.0, 6.5])  # from A towards D: clockwise
@@ -50,7 +54,7 @@ def turn_sign(origin, heading: float, point) -> int:
     return 1 if delta > 0 else -1
 
 
-def clock(board, beat) -> None:
+def clock(board: Board, beat: Clock) -> None:
     """The face appears at the centre with a mark towards each candidate, the hand towards the
     start vertex; it turns through the log's angles, and each mark lights as the hand passes it
     (the first green, the others amber)."""
@@ -58,11 +62,11 @@ def clock(board, beat) -> None:
     states = beat.states
     first = states[0]
     origin, heading = first.origin, first.heading
-    hits = [s for s in states[1:] if s.reached is not None]
-    if not hits:
+    reached = hits(states[1:])
+    if not reached:
         board.play(beat, run_time=1.0)
         return
-    labels = [s.reached for s in hits]
+    labels = [label for _, label in reached]
     sign = turn_sign(origin, heading, _point(board, labels[0]))
     centre = board.at(origin)
     reach = max(float(np.linalg.norm(board.vertex(label) - centre)) for label in labels)
@@ -81,14 +85,14 @@ def clock(board, beat) -> None:
     board.play(beat, FadeIn(dial), FadeIn(hand), FadeIn(hub), run_time=0.8)
 
     lit, turned = [], 0.0
-    for k, state in enumerate(hits):
+    for k, (state, label) in enumerate(reached):
         step = state.angle - turned
         turned = state.angle
         board.play(beat, Rotate(axis, angle=sign * step * DEGREES, about_point=centre),
                    run_time=0.6 + abs(step) / 60)
-        kept, anims = light(board, state.reached, k == 0, axis)
+        kept, anims = light(board, label, k == 0, axis)
         lit += kept
-        mark = marks[state.reached]
+        mark = marks[label]
         colour = theme.result if k == 0 else theme.argument
         anims.append(tag(mark, "result" if k == 0 else "argument").animate.set_color(colour))
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
@@ -97,7 +101,8 @@ def clock(board, beat) -> None:
     board.play(beat, *[FadeOut(m) for m in (dial, hand, hub, *lit)], run_time=0.5)
 
 
-def _mark(board, centre, towards, colour, name: str, long: bool = False):
+def _mark(board: Board, centre: np.ndarray, towards: np.ndarray, colour: str, name: str,
+          long: bool = False) -> Line:
     """An hour mark: a short tick on the rim of the face, in the direction of `towards`."""
     direction = _unit(towards - centre)
     inner = FACE_RADIUS * (0.45 if long else 0.65)
@@ -105,20 +110,20 @@ def _mark(board, centre, towards, colour, name: str, long: bool = False):
                     color=colour, stroke_width=board.theme.stroke * 1.3), "idle", name)
 
 
-def _point(board, label: str):
+def _point(board: Board, label: str) -> Point:
     return board.polygon.points[board.polygon.labels.index(label)]
 
 
-def _ahead(origin, heading: float):
+def _ahead(origin: Point, heading: float) -> Point:
     return (origin[0] + math.cos(math.radians(heading)),
             origin[1] + math.sin(math.radians(heading)))
 
 
-def _unit(v) -> np.ndarray:
+def _unit(v: np.ndarray) -> np.ndarray:
     return v / np.linalg.norm(v)
 
 
-def _turn(walk: Walk, call: Event, ret: Event) -> dict:
+def _turn(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     """The hand set to the start, then at each candidate it passes (:func:`story.reach.turning`)."""
     where = walk.root_points()
     centre = point(where[walk.ref(call, "centre")])
@@ -128,6 +133,6 @@ def _turn(walk: Walk, call: Event, ret: Event) -> dict:
                          for v, a in walk.reach(call, ret)))}
 
 
-READS = {"first_hit_rotating": read_step(
+READS: Mapping[str, Reading] = {"first_hit_rotating": read_step(
     Clock, "The clock hand turns; the first candidate it passes is {result}", _turn)}
-PERFORMS = {Clock: clock}
+PERFORMS: Performances = performs(act(Clock, clock))

@@ -6,7 +6,8 @@ Every slice, and what is left of the fruit after it, comes from the log (the bea
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping, Sequence
+from typing import Any
 
 from manim import (
     Create,
@@ -15,6 +16,7 @@ from manim import (
     FadeOut,
     Indicate,
     Line,
+    Mobject,
     Polygram,
     Transform,
     VGroup,
@@ -25,10 +27,12 @@ from manim import (
 
 from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
+from metaphors.board import Board
+from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk, show
+from story.storyboard import Reading, Walk, show
 from tracing import Event
 
 _DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
@@ -36,17 +40,18 @@ PLATE_Y = -2.55
 PLATE_WIDTH = 5.6
 
 
-def _fruit(board, points, holes=()):
+def _fruit(board: Board, points: Sequence[Sequence[float]],
+           holes: Sequence[dict[str, Any]] = ()) -> MPolygon | Polygram:
     theme = board.theme
-    style = {"color": theme.rind, "stroke_width": theme.stroke * 2.2, "fill_color": theme.fruit,
-             "fill_opacity": 0.75}
+    style: dict[str, Any] = {"color": theme.rind, "stroke_width": theme.stroke * 2.2,
+                             "fill_color": theme.fruit, "fill_opacity": 0.75}
     if holes:  # the whole fruit, its holes cut out (rings of one mobject; holes unfilled)
         rings = [[board.at(p) for p in ring] for ring in (points, *(h["points"] for h in holes))]
         return tag(Polygram(*[[*ring, ring[0]] for ring in rings], **style), "idle", "fruit")
     return tag(MPolygon(*[board.at(p) for p in points], **style), "idle", "fruit")
 
 
-def _setup(board, beat) -> None:
+def _setup(board: Board, beat: Beat) -> None:
     """The first time: the polygon turns into a fruit, a plate and a counter appear."""
     if "fruit" in board.objects:
         return
@@ -66,18 +71,18 @@ def _setup(board, beat) -> None:
     board.objects["fruit"] = board.shape
 
 
-def _counter(board, k: int, total: int):
+def _counter(board: Board, k: int, total: int) -> Mobject:
     return _counter_text(board, f"{k} / {total} slices", board.theme.ink)
 
 
-def _counter_text(board, words: str, colour: str):
+def _counter_text(board: Board, words: str, colour: str) -> Mobject:
     theme = board.theme
     text = tag(typeset.text(words, font=theme.font, size=theme.label_size, colour=colour),
                None, "counter")
     return text.move_to((board.frame.center[0], PLATE_Y + 0.68, 0))
 
 
-def ear_test(board, beat) -> None:
+def ear_test(board: Board, beat: EarTest) -> None:
     """The vertex tested pulses; a vertex that is no ear shows why: its triangle, outlined in
     red, with the vertex inside it pulsing too (or, not convex, the triangle alone)."""
     _setup(board, beat)
@@ -97,7 +102,7 @@ def ear_test(board, beat) -> None:
     board.play(beat, *anims, run_time=0.6 if beat.ear else 0.9)
 
 
-def keyhole(board, beat) -> None:
+def keyhole(board: Board, beat: Keyhole) -> None:
     """A hole opens to the rind: the knife cuts from the hole's vertex P to M, and the cut
     stays, a dark slit, for the slicing to go round."""
     _setup(board, beat)
@@ -112,7 +117,7 @@ def keyhole(board, beat) -> None:
     board.keep(f"keyhole:{beat.hole}", cut)
 
 
-def clip(board, beat) -> None:
+def clip(board: Board, beat: Slice) -> None:
     """The knife cuts along the ear's diagonal; the slice goes to its place on the plate."""
     _setup(board, beat)
     theme, data = board.theme, beat
@@ -145,7 +150,7 @@ def clip(board, beat) -> None:
         _whole(board, beat)
 
 
-def _whole(board, beat) -> None:
+def _whole(board: Board, beat: Slice) -> None:
     """After the last slice: every slice back in its place in P, the whole triangulation, and
     the count it had to reach (n − 2, with two more per hole)."""
     theme = board.theme
@@ -169,7 +174,7 @@ def _whole(board, beat) -> None:
 
 
 
-def good(board, beat) -> None:
+def good(board: Board, beat: Good) -> None:
     """Prune and search: the good sub-polygon kept, tinted; the previous one fades."""
     theme = board.theme
     region = tag(MPolygon(*[board.at(p) for p in beat.points], color=theme.called,
@@ -313,7 +318,8 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         walk.count_claim("slice")  # after its beat: the beat belongs to the slice it cuts
 
 
-def _slice(corners, labels, points, clipped) -> dict:
+def _slice(corners: list[str], labels: list[str], points: list,
+           clipped: list[list[str]]) -> dict[str, Any]:
     where = dict(zip(labels, points, strict=True))
     gone = {c[1] for c in clipped[:-1]}
     return {
@@ -336,8 +342,10 @@ def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                     labels=state["labels"])
 
 
-READS = {"is_ear": read_ear_test, "clip_ear": read_clip, "ear-clipping": read_clip,
-         "ear-clipping-naive": read_clip, "prune-and-search": read_clip,
-         "good_subpolygon": read_good,
-         "join_hole": read_join_hole}
-PERFORMS = {EarTest: ear_test, Keyhole: keyhole, Slice: clip, LastSlice: clip, Good: good}
+READS: Mapping[str, Reading] = {
+    "is_ear": read_ear_test, "clip_ear": read_clip, "ear-clipping": read_clip,
+    "ear-clipping-naive": read_clip, "prune-and-search": read_clip,
+    "good_subpolygon": read_good,
+    "join_hole": read_join_hole}
+PERFORMS: Performances = performs(act(EarTest, ear_test), act(Keyhole, keyhole),
+                                  act(Slice, clip), act(LastSlice, clip), act(Good, good))

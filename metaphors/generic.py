@@ -16,16 +16,21 @@ triangle, candidates, claim, verdict):
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping
+from typing import Any
 
 import numpy as np
-from manim import Circle, Create, Dot, FadeIn, Line, Transform, VGroup
+from manim import Circle, Create, Dot, FadeIn, Line, Transform, VGroup, VMobject
 from manim import Polygon as MPolygon
 
+from metaphors.board import Board, Playable
 from metaphors.layout import METAPHOR
-from metaphors.tags import tag
+from metaphors.performing import Performances, act, performs
+from metaphors.tags import role_of, tag
 from rendering import typeset
 from story.beats import Call, ShapeChange
 from story.roles import ROLES
+from story.storyboard import Reading
 
 #: Kinds the generic performer draws.
 DRAWN_KINDS = ("point", "segment", "polygon", "circle", "line", "ray", "text")
@@ -35,12 +40,12 @@ _PREFIX = "shape:"
 # --- performers --------------------------------------------------------------------------------
 
 
-def call(board, beat) -> None:
+def call(board: Board, beat: Call) -> None:
     """A user's traced function returned: call line, roles (vertices and drawn shapes)."""
     board.play(beat, *_recolour_shapes(board, beat.roles), run_time=0.8)
 
 
-def shape(board, beat) -> None:
+def shape(board: Board, beat: ShapeChange) -> None:
     """A shape appears (drawn), changes (morphs) or goes (fades)."""
     key, event, state = beat.key, beat.event, beat.state
     name = _PREFIX + key
@@ -59,19 +64,19 @@ def shape(board, beat) -> None:
         anims.append(Create(new) if _is_stroke(state) else FadeIn(new))
     else:
         anims.append(Transform(old, new))
-        tag(old, new.trex_role)
+        tag(old, role_of(new))
     board.play(beat, *anims, run_time=0.8 if old is None else 1.0)
 
 
-def _is_stroke(state: dict) -> bool:
+def _is_stroke(state: dict[str, Any]) -> bool:
     return state.get("kind") in ("segment", "line", "ray", "polygon", "circle")
 
 
-def _recolour_shapes(board, roles: dict[str, str]) -> list:
+def _recolour_shapes(board: Board, roles: dict[str, str]) -> list[Playable]:
     anims = []
     for key, role in roles.items():
         mobject = board.objects.get(_PREFIX + key)
-        if mobject is None or role not in ROLES or getattr(mobject, "trex_role", None) == role:
+        if mobject is None or role not in ROLES or role_of(mobject) == role:
             continue
         anims.append(tag(mobject, role).animate.set_color(board.theme.role_colour(role)))
     return anims
@@ -80,7 +85,7 @@ def _recolour_shapes(board, roles: dict[str, str]) -> list:
 # --- drawing a state ---------------------------------------------------------------------------
 
 
-def mobject_for(board, state: dict, role: str, key: str = ""):
+def mobject_for(board: Board, state: dict[str, Any], role: str, key: str = "") -> VMobject | None:
     """The mobject of a shape's state in the board's coordinates, or None if it has none."""
     kind = state.get("kind")
     if kind not in DRAWN_KINDS:
@@ -94,14 +99,14 @@ def mobject_for(board, state: dict, role: str, key: str = ""):
     return tag(mobject, role, f"{_PREFIX}{key}")
 
 
-def _xy(p) -> tuple[float, float]:
+def _xy(p: Any) -> tuple[float, float]:
     x, y = float(p[0]), float(p[1])
     if not (math.isfinite(x) and math.isfinite(y)):
         raise ValueError("not a finite point")
     return x, y
 
 
-def _point(board, state, colour):
+def _point(board: Board, state: dict[str, Any], colour: str) -> Dot | VGroup:
     at = board.at(_xy(state["at"]))
     dot = Dot(at, radius=board.theme.dot_radius * 1.6, color=colour)
     label = state.get("label")
@@ -112,7 +117,7 @@ def _point(board, state, colour):
     return VGroup(dot, text.next_to(dot, direction=np.array([1.0, 1.0, 0.0]), buff=0.08))
 
 
-def _segment(board, state, colour):
+def _segment(board: Board, state: dict[str, Any], colour: str) -> Dot | Line:
     a, b = state["points"] if "points" in state else state["ends"]
     start, end = board.at(_xy(a)), board.at(_xy(b))
     if np.allclose(start, end):
@@ -120,7 +125,7 @@ def _segment(board, state, colour):
     return Line(start, end, color=colour, stroke_width=board.theme.stroke * 1.3)
 
 
-def _polygon(board, state, colour):
+def _polygon(board: Board, state: dict[str, Any], colour: str) -> MPolygon | None:
     corners = [board.at(_xy(p)) for p in state["points"]]
     if len(corners) < 3:
         return None
@@ -128,7 +133,7 @@ def _polygon(board, state, colour):
                     fill_color=colour, fill_opacity=0.18)
 
 
-def _circle(board, state, colour):
+def _circle(board: Board, state: dict[str, Any], colour: str) -> Circle | None:
     radius = float(state["radius"])
     if not math.isfinite(radius) or radius < 0:
         return None
@@ -137,7 +142,7 @@ def _circle(board, state, colour):
                   fill_opacity=0.15).move_to(board.at(_xy(state["center"])))
 
 
-def _line(board, state, colour):
+def _line(board: Board, state: dict[str, Any], colour: str) -> Line | None:
     if "points" in state:
         a, b = (_xy(p) for p in state["points"])
     else:
@@ -149,7 +154,7 @@ def _line(board, state, colour):
                                           stroke_width=board.theme.stroke * 1.3)
 
 
-def _ray(board, state, colour):
+def _ray(board: Board, state: dict[str, Any], colour: str) -> Line | None:
     origin = _xy(state["origin"])
     if "through" in state:
         towards = _xy(state["through"])
@@ -161,13 +166,15 @@ def _ray(board, state, colour):
                                           stroke_width=board.theme.stroke * 1.3)
 
 
-def _text(board, state, colour):
+def _text(board: Board, state: dict[str, Any], colour: str) -> VMobject:
     return typeset.text(str(state["text"]), font=board.theme.font, size=board.theme.label_size,
                         colour=colour).move_to(board.at(_xy(state["at"])))
 
 
-_DRAW = {"point": _point, "segment": _segment, "polygon": _polygon, "circle": _circle,
-         "line": _line, "ray": _ray, "text": _text}
+#: how each drawn kind is drawn: (board, state, colour) → its mobject, or None
+_DRAW: dict[str, Callable[[Board, dict[str, Any], str], VMobject | None]] = {
+    "point": _point, "segment": _segment, "polygon": _polygon, "circle": _circle,
+    "line": _line, "ray": _ray, "text": _text}
 
 
 def clip_to_box(a, b, both_ways: bool, box=METAPHOR):
@@ -194,5 +201,5 @@ def clip_to_box(a, b, both_ways: bool, box=METAPHOR):
     return a + low * d, a + high * d
 
 
-READS: dict = {}  # the storyboard reads a user's calls and shapes itself
-PERFORMS = {Call: call, ShapeChange: shape}
+READS: Mapping[str, Reading] = {}  # the storyboard reads a user's calls and shapes itself
+PERFORMS: Performances = performs(act(Call, call), act(ShapeChange, shape))

@@ -9,7 +9,8 @@ as :mod:`metaphors.picture` turns it, and turns back after the verdict.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping, Sequence
+from typing import Any
 
 import numpy as np
 from manim import (
@@ -21,6 +22,7 @@ from manim import (
     FadeOut,
     Flash,
     Indicate,
+    Mobject,
     Transform,
     VGroup,
     VMobject,
@@ -28,30 +30,32 @@ from manim import (
 )
 from manim import Polygon as MPolygon
 
+from metaphors.board import Board, animate
 from metaphors.layout import METAPHOR
+from metaphors.performing import Performances, act, performs
 from metaphors.picture import again, turn_to
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
 from story.states import BallDrop, BallSlide, RubberBand, point
-from story.storyboard import Walk, read_pick, read_step
+from story.storyboard import Reading, Walk, read_pick, read_step
 from tracing import Event
 
 
-def _ball(board, at):
+def _ball(board: Board, at: np.ndarray) -> Dot:
     theme = board.theme
     return tag(Dot(at, radius=0.12, color=theme.ball, stroke_color=theme.ink, stroke_width=1.5),
                "argument", "ball")
 
 
-def _band(board, corners):
+def _band(board: Board, corners: Sequence[np.ndarray]) -> VMobject:
     """The rubber band through scene points (a polyline)."""
     band = VMobject(stroke_color=board.theme.band, stroke_width=board.theme.stroke)
     band.set_points_as_corners([np.asarray(c, dtype=float) for c in corners])
     return tag(band, "argument", "band")
 
 
-def _gravity_arrow(board):
+def _gravity_arrow(board: Board) -> VGroup:
     theme = board.theme
     left = METAPHOR.x - METAPHOR.width / 2 - 0.5
     top = METAPHOR.y + METAPHOR.height / 2 - 0.1
@@ -65,7 +69,7 @@ def _gravity_arrow(board):
 # --- the gravity heuristic -----------------------------------------------------------------------
 
 
-def gravity_turn(board, beat) -> None:
+def gravity_turn(board: Board, beat: GravityTurn) -> None:
     """The polygon turns by ``turn_picture`` degrees so that gravity points down on screen."""
     theme = board.theme
     arrow = _gravity_arrow(board)
@@ -81,7 +85,7 @@ def gravity_turn(board, beat) -> None:
         again(board, beat, *turn, run_time=2.0)
 
 
-def drop(board, beat) -> None:
+def drop(board: Board, beat: Drop) -> None:
     """A ball hangs from V on its band, falls straight down and hits the boundary."""
     v = board.vertex(beat.drop.vertex)
     hit = board.at(beat.drop.hit)
@@ -91,7 +95,7 @@ def drop(board, beat) -> None:
     board.play(beat, FadeIn(ball, scale=0.5), run_time=0.6)
     board.scene.add(band)
     board.scene.bring_to_front(ball)
-    again(board, beat, ball.animate(rate_func=rush_into).move_to(hit),
+    again(board, beat, animate(ball, rate_func=rush_into).move_to(hit),
            Transform(band, _band(board, [v, hit]), rate_func=rush_into), run_time=1.0)
     mark = tag(Circle(radius=0.2, color=board.theme.argument, stroke_width=board.theme.stroke)
                .move_to(hit), "result", "hit")
@@ -101,23 +105,24 @@ def drop(board, beat) -> None:
            run_time=0.5)
 
 
-def _scene_point(mobject) -> np.ndarray:
+def _scene_point(mobject: Mobject) -> np.ndarray:
     return mobject.get_center()
 
 
-def slide(board, beat) -> None:
+def slide(board: Board, beat: Slide) -> None:
     """The ball slides down the edge it hit to its lower end X; the band stretches behind it."""
     ball, band = board.objects.get("ball"), board.objects.get("band")
-    if ball is None or beat.slide is None:  # it landed on a vertex: nothing to slide
+    # it landed on a vertex: nothing to slide (the ball and band come together, from `drop`)
+    if ball is None or band is None or beat.slide is None:
         board.play(beat, run_time=0.8)
         return
     x = board.at(beat.slide.to)
     v = band.get_start()
-    board.play(beat, ball.animate(rate_func=rush_into).move_to(x),
+    board.play(beat, animate(ball, rate_func=rush_into).move_to(x),
                Transform(band, _band(board, [v, x]), rate_func=rush_into), run_time=1.2)
 
 
-def snag(board, beat) -> None:
+def snag(board: Board, beat: Snag) -> None:
     """The band swept the triangle V–hit–X: it snags the first vertex Y there, or stays
     straight."""
     theme = board.theme
@@ -199,17 +204,17 @@ def read_turn(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                     polygon=walk.ref(call, "polygon"))
 
 
-def _hit(walk: Walk, call: Event) -> dict:
+def _hit(walk: Walk, call: Event) -> dict[str, Any]:
     """Where the ball hit (``at``; ``vertex`` when it landed on one)."""
     return walk.live.get("hit") or walk.entered_after(call, "hit")
 
 
-def _drop(walk: Walk, call: Event, ret: Event) -> dict:
+def _drop(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     return {"drop": BallDrop(vertex=walk.ref(call, "v"),
                              hit=point(walk.entered_after(ret, "hit")["at"]))}
 
 
-def _slide(walk: Walk, call: Event, ret: Event) -> dict:
+def _slide(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     """Where the ball slides to: nowhere when it landed on a vertex."""
     slid = "vertex" not in _hit(walk, call)
     return {"slide": BallSlide(to=point(walk.root_points()[walk.result_ref(ret)]))
@@ -228,7 +233,7 @@ def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     yield walk.step(Snag, caption, call, ret, band=band, snagged=snagged)
 
 
-READS = {
+READS: Mapping[str, Reading] = {
     "reflex_vertex": read_pick("{result} is a reflex vertex: the ball will hang there",
                                "No reflex vertex: the polygon is convex"),
     "straight_vertex": read_pick("{result} is a straight vertex: the ball hangs there instead"),
@@ -237,4 +242,5 @@ READS = {
     "slide_to_vertex": read_step(Slide, "It slides down the edge to {result}", _slide),
     "band_snag": read_snag,
 }
-PERFORMS = {GravityTurn: gravity_turn, Drop: drop, Slide: slide, Snag: snag}
+PERFORMS: Performances = performs(act(GravityTurn, gravity_turn), act(Drop, drop),
+                                  act(Slide, slide), act(Snag, snag))

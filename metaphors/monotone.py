@@ -6,19 +6,21 @@ Positions, kinds, diagonals, pieces and triangles come from the log (the beats' 
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 
 from manim import Create, DashedLine, FadeIn, FadeOut, Indicate, Line, Transform, VGroup
 from manim import Polygon as MPolygon
 
+from metaphors.board import Board
+from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
-from story.storyboard import Walk
+from story.storyboard import Reading, Walk
 from tracing import Event
 
 
-def _sweep_line(board, y: float):
+def _sweep_line(board: Board, y: float) -> DashedLine:
     theme = board.theme
     x0 = board.frame.center[0] - 2.9
     at = board.at((0.0, y))[1]
@@ -26,7 +28,7 @@ def _sweep_line(board, y: float):
                           stroke_width=theme.thin_stroke), "called", "sweep")
 
 
-def classify(board, beat) -> None:
+def classify(board: Board, beat: Classify) -> None:
     """The sweep line reaches a vertex; the vertex shows its kind."""
     theme, data = board.theme, beat
     line = _sweep_line(board, data.at[1])
@@ -44,7 +46,7 @@ def classify(board, beat) -> None:
     board.scene.play(FadeOut(kind), run_time=0.2 * beat.pace)
 
 
-def monotone_diagonal(board, beat) -> None:
+def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
     u, w = beat.points
     line = tag(Line(board.at(u), board.at(w), color=board.theme.argument,
                     stroke_width=board.theme.stroke * 1.3), "argument",
@@ -53,7 +55,7 @@ def monotone_diagonal(board, beat) -> None:
     board.play(beat, Create(line), run_time=1.0)
 
 
-def pieces(board, beat) -> None:
+def pieces(board: Board, beat: Pieces) -> None:
     theme = board.theme
     tints = []
     for k, points in enumerate(beat.pieces):
@@ -66,7 +68,7 @@ def pieces(board, beat) -> None:
     board.play(beat, *board.drop("sweep"), *tints, run_time=1.2)
 
 
-def stack(board, beat) -> None:
+def stack(board: Board, beat: Stack) -> None:
     theme = board.theme
     drawn = []
     for k, triangle in enumerate(beat.triangles):
@@ -79,7 +81,7 @@ def stack(board, beat) -> None:
         _whole(board, beat)
 
 
-def _whole(board, beat) -> None:
+def _whole(board: Board, beat: Stack) -> None:
     """After the last piece: the pieces' tints give way to the whole triangulation, each
     triangle its own colour, and the count it had to reach, n − 2."""
     theme = board.theme
@@ -180,7 +182,8 @@ def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                     triangulation=list(done) if len(done) == len(labels) - 2 else [])
 
 
-READS = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,
+READS: Mapping[str, Reading] = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,
          "monotone_pieces": read_pieces, "triangulate_monotone_piece": read_stack}
-PERFORMS = {Classify: classify, MonotoneDiagonal: monotone_diagonal, Pieces: pieces,
-            Stack: stack}
+PERFORMS: Performances = performs(act(Classify, classify),
+                                  act(MonotoneDiagonal, monotone_diagonal),
+                                  act(Pieces, pieces), act(Stack, stack))

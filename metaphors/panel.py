@@ -37,6 +37,7 @@ from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from rendering.layers import BACKDROP_Z
+from story.beats import Beat
 from story.pseudocode import PSEUDOCODE, SOURCE, Step
 
 #: the distance between the pseudocode's rows (scene units; less when more rows than fit are
@@ -214,12 +215,12 @@ class Panel:
         self.line_y = [row.get_y() - scale * d for row, d in zip(rows, offsets, strict=True)]
         return rows
 
-    def follow_roles(self, beat) -> list[Animation]:
+    def follow_roles(self, beat: Beat) -> list[Animation]:
         """Animations recolouring the panel's vertices to this beat's roles (none shown with
         the source)."""
         return self._recolour(beat.roles) if self.shows_polygon else []
 
-    def follow_text(self, beat) -> list[Animation]:
+    def follow_text(self, beat: Beat) -> list[Animation]:
         """Animations moving the light to this beat's line and showing its call line (none if
         neither changes)."""
         if self.mode == PSEUDOCODE:

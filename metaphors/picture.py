@@ -10,11 +10,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from manim import UP, Circle
+from manim import UP, Circle, Mobject
 
+from metaphors.board import Board, Playable
 from metaphors.layout import METAPHOR
 from rendering.turn import Turn
 from rendering.typeset import FlatText
+from story.beats import Beat
 
 #: board objects that stay put on screen when the polygon turns (keys of ``board.objects``)
 FIXED = ("gravity", "plate", "counter")  # and every slice on the plate (fruit)
@@ -22,12 +24,12 @@ FIXED = ("gravity", "plate", "counter")  # and every slice on the plate (fruit)
 _UPRIGHT = (FlatText, Circle)
 
 
-def again(board, beat, *anims, run_time: float = 1.0) -> None:
+def again(board: Board, beat: Beat, *anims: Playable, run_time: float = 1.0) -> None:
     """A further play within a beat (the panel, roles and subtitle are already up to date)."""
     board.scene.play(*anims, run_time=max(0.1, run_time * beat.pace))
 
 
-def _fit_zoom(board, angle: float) -> float:
+def _fit_zoom(board: Board, angle: float) -> float:
     """Largest zoom ≤ 1 that keeps the polygon turned by ``angle`` inside the metaphor's box."""
     turned = board.frame.turned(angle, METAPHOR.center, 1.0)
     pts = np.array(turned.many(board.polygon.points))[:, :2] - np.array(METAPHOR.center)
@@ -36,14 +38,14 @@ def _fit_zoom(board, angle: float) -> float:
                      METAPHOR.height / 2 / max(reach[1], 1e-9)))
 
 
-def _movers(board) -> list:
+def _movers(board: Board) -> list[Mobject]:
     """What turns with the polygon: outline, vertices, metaphor objects (not the fixed ones)."""
     fixed = [board.objects.get(k) for k in FIXED]
     fixed += [m for k, m in board.objects.items() if k.startswith("slice:")]
     return [m for m in board.left_group().submobjects if not any(m is f for f in fixed)]
 
 
-def turn_to(board, angle: float) -> list:
+def turn_to(board: Board, angle: float) -> list[Turn]:
     """Animations turning the picture to ``angle`` degrees (absolute; 0 is upright), and the
     board's frame with it. Labels, dots and the ball keep their size and stay upright."""
     old = board.frame
@@ -66,7 +68,7 @@ def turn_to(board, angle: float) -> list:
 TRANSIENT = ("ball", "band", "hit", "gravity")
 
 
-def upright(board, beat) -> None:
+def upright(board: Board, beat: Beat) -> None:
     """After a verdict: the turn's objects go and the picture turns back upright."""
     gone = board.drop(*TRANSIENT)
     if gone:

@@ -6,15 +6,17 @@ enters).
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping, Sequence
 
-from manim import FadeIn
+from manim import FadeIn, Mobject
 from manim import Polygon as MPolygon
 
+from metaphors.board import Board
+from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from story.beats import Beat, beat_kind
 from story.refs import state_of, target_of
-from story.storyboard import Walk
+from story.storyboard import Reading, Walk
 from tracing import Event
 
 
@@ -39,27 +41,40 @@ def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                     labels=[entered[k]["labels"] for k in pieces if k in entered])
 
 
-def _tint_colour(board, labels: list[str], avoid: set[str]) -> str:
+def _tint_colour(board: Board, labels: list[str], avoid: set[str]) -> str:
     """A palette colour for a new piece: unlike its neighbours (tints sharing an edge), then the
     least used; ties by palette order."""
     palette = board.theme.pieces
     tints = [m for k, m in board.objects.items() if k.startswith(("piece:", "triangle:"))]
-    near = {m.trex_colour for m in tints if len(set(m.trex_labels) & set(labels)) >= 2}
-    used = [m.trex_colour for m in tints]
+    near = {_colour(m) for m in tints if len(set(_labels(m)) & set(labels)) >= 2}
+    used = [_colour(m) for m in tints]
     return min(palette, key=lambda c: (c in avoid, c in near, used.count(c), palette.index(c)))
 
 
-def _tint(board, points, labels, colour: str, done: bool):
+def _colour(tint: Mobject) -> str:
+    """The palette colour of a tint (an attribute of its own, set by :func:`_tint`)."""
+    colour: str = vars(tint)["trex_colour"]
+    return colour
+
+
+def _labels(tint: Mobject) -> list[str]:
+    """The labels of a tint's corners (an attribute of its own, set by :func:`_tint`)."""
+    labels: list[str] = vars(tint)["trex_labels"]
+    return labels
+
+
+def _tint(board: Board, points: Sequence[Sequence[float]], labels: Sequence[str], colour: str,
+          done: bool) -> MPolygon:
     theme = board.theme
     role, name = ("result", "triangle:") if done else ("idle", "piece:")
     mobject = MPolygon(*[board.at(p) for p in points], stroke_width=0, fill_color=colour,
                        fill_opacity=theme.done_opacity if done else theme.piece_opacity)
     mobject.set_z_index(-1)
-    mobject.trex_colour, mobject.trex_labels = colour, list(labels)  # type: ignore[attr-defined]  # the tint's own attributes, which _tint_colour reads
+    vars(mobject).update(trex_colour=colour, trex_labels=list(labels))  # see _colour, _labels
     return tag(mobject, role, name + "".join(labels))
 
 
-def split(board, beat) -> None:
+def split(board: Board, beat: Split) -> None:
     """The verified diagonal becomes an edge; the two halves get their own tints, and a half
     that is a triangle is finished: it fills in."""
     theme = board.theme
@@ -84,5 +99,5 @@ def split(board, beat) -> None:
     board.play(beat, *anims, run_time=1.2)
 
 
-READS = {"split": read_split}
-PERFORMS = {Split: split}
+READS: Mapping[str, Reading] = {"split": read_split}
+PERFORMS: Performances = performs(act(Split, split))

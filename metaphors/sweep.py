@@ -14,6 +14,8 @@ shapely on the scene's own outlines.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 import shapely
@@ -27,19 +29,22 @@ from manim import (
     Flash,
     Indicate,
     Line,
+    Mobject,
     VGroup,
     config,
 )
 
+from metaphors.board import Board
 from metaphors.layout import METAPHOR
+from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import beat_kind
 from story.reach import side_normal
 from story.refs import arg
 from story.states import Line as Sweeping
-from story.states import Moving, point
-from story.storyboard import Walk, read_step
+from story.states import Moving, Point, hits, point
+from story.storyboard import Reading, Walk, read_step
 from tracing import Event
 
 
@@ -120,7 +125,8 @@ def outline(mobject):
     return shape if shape.is_valid and shape.area > 0 else shapely.make_valid(shape)
 
 
-def drawn_segment(board, start, end, colour, name: str, clip=None) -> VGroup:
+def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str, name: str,
+                  clip: shapely.Polygon | None = None) -> VGroup:
     """The segment start–end (scene points): solid in the polygon, dashed outside it, dashed red
     where it is outside the polygon but inside T. ``clip``: a shapely box to cut it to first."""
     theme = board.theme
@@ -143,9 +149,10 @@ def drawn_segment(board, start, end, colour, name: str, clip=None) -> VGroup:
     return group
 
 
-def follower(board, axis, colour, name: str, clip=None) -> VGroup:
+def follower(board: Board, axis: Line, colour: str, name: str,
+             clip: shapely.Polygon | None = None) -> VGroup:
     """The visible drawing of an (invisible) axis line: redrawn whenever the axis moves."""
-    def draw():
+    def draw() -> VGroup:
         return drawn_segment(board, axis.get_start(), axis.get_end(), colour, name, clip)
 
     drawing = draw()
@@ -153,7 +160,8 @@ def follower(board, axis, colour, name: str, clip=None) -> VGroup:
     return drawing
 
 
-def light(board, label: str, first: bool, axis, clip=None) -> tuple[list, list]:
+def light(board: Board, label: str, first: bool, axis: Line,
+          clip: shapely.Polygon | None = None) -> tuple[list[Mobject], list[Animation]]:
     """A ring round a candidate the tool has just reached: green for the first, amber after.
 
     If the first one is reached by a part of the tool outside the polygon but inside T, that
@@ -180,7 +188,7 @@ def light(board, label: str, first: bool, axis, clip=None) -> tuple[list, list]:
     return kept, anims
 
 
-def _place(board, note, near, tool) -> None:
+def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineString) -> None:
     """Put a note beside a point: on screen, off the polygon, T and the tool if it can, and
     clear of the vertex labels."""
     spots = [(np.array(d, dtype=float), buff) for buff in (0.12, 0.45) for d in
@@ -204,7 +212,7 @@ def _place(board, note, near, tool) -> None:
     note.next_to(near, direction=best[0], buff=best[1])
 
 
-def _tool(axis, clip=None):
+def _tool(axis: Line, clip: shapely.Polygon | None = None) -> shapely.LineString:
     """The tool's segment as shapely (scene coordinates)."""
     start, end = axis.get_start(), axis.get_end()
     if clip is not None:
@@ -212,7 +220,8 @@ def _tool(axis, clip=None):
     return shapely.LineString([tuple(start[:2]), tuple(end[:2])])
 
 
-def _astray_at(board, axis, clip, at):
+def _astray_at(board: Board, axis: Line, clip: shapely.Polygon | None,
+               at: np.ndarray) -> tuple[tuple, tuple] | None:
     """The piece of the tool outside the polygon but inside T that passes through `at`."""
     (x0, y0), (x1, y1) = _tool(axis, clip).coords
     start, end = np.array([x0, y0, 0.0]), np.array([x1, y1, 0.0])
@@ -231,18 +240,18 @@ def _3d(p) -> np.ndarray:
 # --- the performer -------------------------------------------------------------------------------
 
 
-def sweep(board, beat) -> None:
+def sweep(board: Board, beat: Sweep) -> None:
     """The line starts through B and moves across T by the log's offsets; each candidate lights
     when the line reaches it (the first green, the others amber)."""
     states = beat.states
     first = states[0]
     through, direction = first.through, first.direction
-    hits = [s for s in states[1:] if s.reached is not None]
-    if not hits:
+    reached = hits(states[1:])
+    if not reached:
         board.play(beat, run_time=1.0)
         return
     normal = side_normal(direction, through, board.polygon.points[
-        board.polygon.labels.index(hits[0].reached)])
+        board.polygon.labels.index(reached[0][1])])
     start, end, box = _long_line(board, through, direction)
     axis = tag(Line(start, end, stroke_opacity=0), "argument", "sweep")
     drawing = follower(board, axis, board.theme.sweep, "sweep", clip=box).set_z_index(1)
@@ -251,12 +260,12 @@ def sweep(board, beat) -> None:
     board.scene.add(axis)
     board.play(beat, FadeIn(drawing), run_time=0.6)
     lit, offset = [], 0.0
-    for k, state in enumerate(hits):
+    for k, (state, label) in enumerate(reached):
         travel = state.offset - offset
         offset = state.offset
         board.play(beat, axis.animate.shift(step * travel),
                    run_time=0.6 + board.length(abs(travel)) / 2.5)
-        kept, anims = light(board, state.reached, k == 0, axis, box)
+        kept, anims = light(board, label, k == 0, axis, box)
         lit += kept
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
     drawing.clear_updaters()
@@ -264,7 +273,8 @@ def sweep(board, beat) -> None:
     board.play(beat, FadeOut(drawing), *[FadeOut(r) for r in lit], run_time=0.5)
 
 
-def _long_line(board, through, direction):
+def _long_line(board: Board, through: Point, direction: Point,
+               ) -> tuple[np.ndarray, np.ndarray, shapely.Polygon]:
     """A line through `through` along `direction`, far longer than the polygon (scene points),
     and the box the drawing is cut to: the polygon's bounding box grown by a margin, so the line
     never leaves the metaphor's half of the screen."""
@@ -286,7 +296,7 @@ def _cut(start, end, box):
     return _3d(cut.coords[0]), _3d(cut.coords[-1])
 
 
-def _move(walk: Walk, call: Event, ret: Event) -> dict:
+def _move(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     """The line through B, then at each candidate it touches (:func:`story.reach.sweeping`)."""
     through = point(walk.root_points()[walk.ref(call, "b")])
     direction = point(arg(call, "direction"))
@@ -295,6 +305,6 @@ def _move(walk: Walk, call: Event, ret: Event) -> dict:
                          for v, d in walk.reach(call, ret)))}
 
 
-READS = {"first_hit_sweeping": read_step(
+READS: Mapping[str, Reading] = {"first_hit_sweeping": read_step(
     Sweep, "The line sweeps across T; the first candidate it touches is {result}", _move)}
-PERFORMS = {Sweep: sweep}
+PERFORMS: Performances = performs(act(Sweep, sweep))

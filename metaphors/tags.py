@@ -15,3 +15,13 @@ def tag(mobject, role: str | None = None, name: str | None = None):
     if name:
         mobject.name = name
     return mobject
+
+
+def role_of(mobject: object) -> str | None:
+    """The role :func:`tag` gave a mobject (None: none, or never tagged).
+
+    >>> role_of(tag(type("Thing", (), {})(), "result")), role_of(object())
+    ('result', None)
+    """
+    role: str | None = getattr(mobject, "trex_role", None)
+    return role

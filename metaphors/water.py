@@ -7,17 +7,21 @@ Radii, levels and the order in which vertices get wet are read from the log's sh
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from typing import Any
 
 import shapely
 from manim import Circle, FadeIn, FadeOut, Indicate, Transform
 from manim import Polygon as MPolygon
 
 from geometry.visibility import visible_region
+from metaphors.board import Board
+from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from story.beats import beat_kind
 from story.reach import distance
-from story.states import Disk, Moving, Tide, point
-from story.storyboard import Walk, read_step
+from story.states import Disk, Moving, Point, Tide, hits, point
+from story.storyboard import Reading, Walk, read_step
 from tracing import Event
 
 
@@ -44,7 +48,7 @@ class Flood(Moving):
     states: tuple[Tide, ...]
 
 
-def _spread(walk: Walk, call: Event, ret: Event) -> dict:
+def _spread(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     """The disk through each candidate in the order it wets them (:func:`story.reach.spreading`)."""
     centre = point(walk.root_points()[walk.ref(call, "b")])
     return {"states": (Disk(center=centre, radius=0.0),
@@ -52,7 +56,7 @@ def _spread(walk: Walk, call: Event, ret: Event) -> dict:
                          for v, r in walk.reach(call, ret)))}
 
 
-def _walled(walk: Walk, call: Event, ret: Event) -> dict:
+def _walled(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     """The disk through each vertex B was tested to see, nearest first, until one was seen."""
     where = walk.root_points()
     labels = walk.entered_after(call, walk.ref(call, "t"))["labels"]
@@ -66,7 +70,7 @@ def _walled(walk: Walk, call: Event, ret: Event) -> dict:
                              zip(reached, sees, strict=True))}
 
 
-def _rise(walk: Walk, call: Event, ret: Event) -> dict:
+def _rise(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     """The tide rising from AC through each candidate, the last one dry (:func:`story.reach.rising`)."""
     t = walk.entered_after(call, walk.ref(call, "t"))
     a, b, c = (point(p) for p in t["points"])
@@ -75,26 +79,26 @@ def _rise(walk: Walk, call: Event, ret: Event) -> dict:
                          for v, h in walk.reach(call, ret)))}
 
 
-def _disk(board, center, radius: float):
+def _disk(board: Board, center: Point, radius: float) -> Circle:
     return tag(Circle(radius=max(board.length(radius), 1e-3), color=board.theme.water,
                       stroke_width=board.theme.thin_stroke, fill_color=board.theme.water,
                       fill_opacity=0.3).move_to(board.at(center)), "argument", "water")
 
 
-def water(board, beat) -> None:
+def water(board: Board, beat: Water) -> None:
     """The disk grows through each radius in turn; the first vertex it wets is the pick."""
     states = beat.states
     disk = _disk(board, states[0].center, 0.0)
     board.play(beat, FadeIn(disk), run_time=0.5)
-    for k, state in enumerate(states[1:]):
+    for k, (state, reached) in enumerate(hits(states[1:])):
         grown = _disk(board, state.center, state.radius)
         colour = board.theme.result if k == 0 else board.theme.argument
         board.play(beat, Transform(disk, grown),
-                   Indicate(board.markers[state.reached], color=colour), run_time=1.2)
+                   Indicate(board.markers[reached], color=colour), run_time=1.2)
     board.play(beat, FadeOut(disk), run_time=0.5)
 
 
-def walled_water(board, beat) -> None:
+def walled_water(board: Board, beat: WalledWater) -> None:
     """The disk clipped to what B sees: water that cannot flow through walls."""
     states = beat.states
     centre = states[0].center
@@ -102,17 +106,17 @@ def walled_water(board, beat) -> None:
     disk = tag(MPolygon(board.at(centre), board.at(centre)), "argument", "water")
     board.play(beat, FadeIn(disk), run_time=0.3)
     visible = dict(beat.visible)
-    for state in states[1:]:
+    for state, reached in hits(states[1:]):
         clipped = region.intersection(shapely.Point(centre).buffer(state.radius, 64))
         grown = _region_mobject(board, clipped)
-        seen = visible.get(state.reached, False)
+        seen = visible.get(reached, False)
         colour = board.theme.result if seen else board.theme.rejected
         board.play(beat, Transform(disk, grown),
-                   Indicate(board.markers[state.reached], color=colour), run_time=1.2)
+                   Indicate(board.markers[reached], color=colour), run_time=1.2)
     board.play(beat, FadeOut(disk), run_time=0.5)
 
 
-def _region_mobject(board, geometry):
+def _region_mobject(board: Board, geometry: shapely.Geometry) -> MPolygon:
     parts = list(shapely.get_parts(geometry))
     largest = max(parts, key=lambda g: g.area) if parts else None
     if largest is None or largest.is_empty or largest.geom_type != "Polygon":
@@ -122,7 +126,7 @@ def _region_mobject(board, geometry):
                         fill_color=board.theme.water, fill_opacity=0.3), "argument", "water")
 
 
-def flood(board, beat) -> None:
+def flood(board: Board, beat: Flood) -> None:
     """A band of water rises from AC towards B; each candidate goes under in turn, the last
     one still dry is the pick."""
     states = beat.states
@@ -131,9 +135,9 @@ def flood(board, beat) -> None:
     triangle = shapely.Polygon([a, c, towards])
     band = tag(MPolygon(board.at(a), board.at(c)), "argument", "flood")
     board.play(beat, FadeIn(band), run_time=0.3)
-    for state in states[1:]:
+    for state, reached in hits(states[1:]):
         wet = triangle.intersection(_strip(a, c, towards, state.level))
-        drowned = board.markers[state.reached]
+        drowned = board.markers[reached]
         is_last = state is states[-1]
         colour = board.theme.result if is_last else board.theme.rejected
         board.play(beat, Transform(band, _region_mobject(board, wet)),
@@ -141,7 +145,7 @@ def flood(board, beat) -> None:
     board.play(beat, FadeOut(band), run_time=0.5)
 
 
-def _strip(a, c, towards, level: float):
+def _strip(a: Point, c: Point, towards: Point, level: float) -> shapely.Polygon:
     """Points of the plane within `level` of line AC on B's side."""
     dx, dy = c[0] - a[0], c[1] - a[1]
     length = math.hypot(dx, dy)
@@ -157,7 +161,7 @@ def _strip(a, c, towards, level: float):
     ])
 
 
-READS = {
+READS: Mapping[str, Reading] = {
     "nearest_to": read_step(
         Water, "Water spilled at B spreads; the first candidate it wets is {result}", _spread),
     "nearest_visible": read_step(
@@ -165,4 +169,5 @@ READS = {
     "last_dry": read_step(
         Flood, "Water rises from the shore AC; the last dry candidate is {result}", _rise),
 }
-PERFORMS = {Water: water, WalledWater: walled_water, Flood: flood}
+PERFORMS: Performances = performs(act(Water, water), act(WalledWater, walled_water),
+                                  act(Flood, flood))

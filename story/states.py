@@ -26,8 +26,9 @@ True
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import TypeVar
 
 from story.beats import Beat
 
@@ -87,6 +88,18 @@ class Tide:
 
 #: what a moving tool's state may be
 Tool = Disk | Hand | Line | Tide
+T = TypeVar("T", bound=Tool)
+
+
+def hits(states: Iterable[T]) -> list[tuple[T, str]]:
+    """Each state that reached a candidate, with that candidate, in order (the start, which
+    reached none, is left out).
+
+    >>> hits([Hand(origin=(0.0, 0.0), heading=90.0, angle=0.0),
+    ...       Hand(origin=(0.0, 0.0), heading=90.0, angle=35.0, reached="D")])
+    [(Hand(origin=(0.0, 0.0), heading=90.0, angle=35.0, reached='D'), 'D')]
+    """
+    return [(s, s.reached) for s in states if s.reached is not None]
 
 
 @dataclass(frozen=True, kw_only=True)
