@@ -11,6 +11,7 @@ from manim import DOWN, Dot, Polygram, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
+from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 
@@ -124,3 +125,16 @@ def triangle_mobject(
         fill_color=colour,
         fill_opacity=theme.fill_opacity,
     )
+
+
+def triangulation_pieces(triangles: Sequence[Sequence[Sequence[float]]], at: Any,
+                         theme: Theme = THEME) -> list[MPolygon]:
+    """A whole triangulation, each triangle (its corners' points, placed on screen by ``at``)
+    filled in the next of the pieces' colours: how a run's result is drawn at its end."""
+    shown = []
+    for k, corners in enumerate(triangles):
+        colour = theme.pieces[k % len(theme.pieces)]
+        shown.append(tag(MPolygon(*[at(p) for p in corners], color=colour,
+                                  stroke_width=theme.thin_stroke, fill_color=colour,
+                                  fill_opacity=theme.fill_opacity), "result", "triangulation"))
+    return shown

@@ -28,6 +28,7 @@ from manim import (
 from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
 from metaphors.board import Board
+from metaphors.drawing import triangulation_pieces
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
@@ -154,12 +155,7 @@ def _whole(board: Board, beat: Slice) -> None:
     """After the last slice: every slice back in its place in P, the whole triangulation, and
     the count it had to reach (n − 2, with two more per hole)."""
     theme = board.theme
-    pieces = [tag(MPolygon(*[board.at(p) for p in corners],
-                           color=theme.pieces[k % len(theme.pieces)],
-                           stroke_width=theme.thin_stroke,
-                           fill_color=theme.pieces[k % len(theme.pieces)],
-                           fill_opacity=theme.fill_opacity), "result", "triangulation")
-              for k, corners in enumerate(beat.triangulation)]
+    pieces = triangulation_pieces(beat.triangulation, board.at, theme)
     holes = len(board.holes)
     n = board.polygon.n + sum(len(h["points"]) for h in board.holes)
     count = (f"n − 2 = {n} − 2 = {beat.total} triangles" if not holes else

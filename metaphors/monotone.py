@@ -12,6 +12,7 @@ from manim import Create, DashedLine, FadeIn, FadeOut, Indicate, Line, Transform
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board
+from metaphors.drawing import triangulation_pieces
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -86,12 +87,7 @@ def _whole(board: Board, beat: Stack) -> None:
     triangle its own colour, and the count it had to reach, n − 2."""
     theme = board.theme
     tints = [k for k in board.objects if k.startswith("piece:")]
-    whole = [tag(MPolygon(*[board.at(p) for p in corners],
-                          color=theme.pieces[k % len(theme.pieces)],
-                          stroke_width=theme.thin_stroke,
-                          fill_color=theme.pieces[k % len(theme.pieces)],
-                          fill_opacity=theme.fill_opacity), "result", "triangulation")
-             for k, corners in enumerate(beat.triangulation)]
+    whole = triangulation_pieces(beat.triangulation, board.at, theme)
     n = board.polygon.n
     count = tag(text(f"n − 2 = {n} − 2 = {len(whole)} triangles", font=theme.font,
                      size=theme.label_size + 2, colour=theme.result), None, "counter")
