@@ -39,6 +39,7 @@ from manim import (
 )
 
 from metaphors import catalog
+from metaphors.drawing import crossed_edge
 from metaphors.gravity import Drop, GravityTurn, Slide, Snag
 from metaphors.stage import BOX, Stage, beside, path, place_name, region
 from metaphors.tags import tag
@@ -244,8 +245,8 @@ def crossing(stage: Stage, wrong: Moment) -> list:
     flashes = []
     if verdict.edge:
         a, b = (stage.vertex(k) for k in verdict.edge)
-        edge = tag(Line(a, b, color=theme.rejected, stroke_width=theme.stroke * 2.5),
-                   "rejected", f"analysis:edge:{'–'.join(verdict.edge)}").set_z_index(3)
+        edge = crossed_edge(a, b, f"analysis:edge:{'–'.join(verdict.edge)}",
+                            theme).set_z_index(3)
         name = tag(typeset.text(f"edge {'–'.join(verdict.edge)}", font=theme.font,
                                 size=theme.label_size + 2, colour=theme.rejected),
                    "rejected", "analysis:edge-name").set_z_index(4)

@@ -21,6 +21,7 @@ from manim import (
 )
 
 from metaphors.board import Board, Playable
+from metaphors.drawing import crossed_edge
 from metaphors.performing import Performances, act, performs
 from metaphors.picture import upright
 from metaphors.tags import tag
@@ -96,8 +97,8 @@ def _judged(board: Board, beat: Verdict) -> None:
         anims.append(line.animate.set_color(theme.rejected))
     edge = beat.edge
     if edge:
-        crossed = tag(Line(board.vertex(edge[0]), board.vertex(edge[1]), color=theme.rejected,
-                           stroke_width=theme.stroke * 2.5), "rejected", f"edge:{'–'.join(edge)}")
+        crossed = crossed_edge(board.vertex(edge[0]), board.vertex(edge[1]),
+                               f"edge:{'–'.join(edge)}", theme)
         board.keep("crossed", crossed)
         anims.append(Create(crossed))
     if beat.point:

@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
-from manim import DOWN, Dot, Polygram, VGroup
+from manim import DOWN, Dot, Line, Polygram, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
@@ -138,3 +138,10 @@ def triangulation_pieces(triangles: Sequence[Sequence[Sequence[float]]], at: Any
                                   stroke_width=theme.thin_stroke, fill_color=colour,
                                   fill_opacity=theme.fill_opacity), "result", "triangulation"))
     return shown
+
+
+def crossed_edge(start: Any, end: Any, name: str, theme: Theme = THEME) -> Line:
+    """The edge a wrong claim crosses, from ``start`` to ``end`` on screen: thick, in the red
+    of what fails (runs, analyses, exercises and figures draw it alike)."""
+    return tag(Line(start, end, color=theme.rejected, stroke_width=theme.stroke * 2.5),
+               "rejected", name)

@@ -24,7 +24,7 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
-from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
+from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
@@ -147,19 +147,31 @@ def _claims(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> lis
                          "result" if verdict.ok else "rejected", "figure:claim"))
         if verdict.edge is not None:
             u, v = verdict.edge
-            drawn.append(tag(Line(frame.to_scene(polygon.points[u]),
-                                  frame.to_scene(polygon.points[v]), color=theme.rejected,
-                                  stroke_width=theme.stroke * 2.5), "rejected",
-                             f"figure:edge:{polygon.labels[u]}–{polygon.labels[v]}"))
+            drawn.append(crossed_edge(frame.to_scene(polygon.points[u]),
+                                      frame.to_scene(polygon.points[v]),
+                                      f"figure:edge:{polygon.labels[u]}–{polygon.labels[v]}",
+                                      theme))
     return drawn
+
+
+def _convex(polygon: Polygon) -> list[int]:
+    """P's strictly convex vertices (decided exactly)."""
+    n, pts = polygon.n, polygon.points
+    return [v for v in range(n) if orient(pts[v - 1], pts[v], pts[(v + 1) % n]) > 0]
+
+
+def _ears_of(polygon: Polygon) -> list[int]:
+    """P's ears: the convex vertices V whose V−1 V+1 is an inner diagonal."""
+    n = polygon.n
+    return [v for v in _convex(polygon) if is_inner_diagonal(polygon, (v - 1) % n, (v + 1) % n)]
 
 
 def _ear(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
     """What an ear is, on P: its roomiest ear's triangle in green, and the first convex vertex
     that is no ear, its triangle in red with the vertex inside it marked."""
     n, pts = polygon.n, polygon.points
-    convex = [v for v in range(n) if orient(pts[v - 1], pts[v], pts[(v + 1) % n]) > 0]
-    ears = [v for v in convex if is_inner_diagonal(polygon, (v - 1) % n, (v + 1) % n)]
+    convex = _convex(polygon)
+    ears = _ears_of(polygon)
     blocked = [(v, k) for v in convex if v not in ears
                for k in range(n) if k not in ((v - 1) % n, v, (v + 1) % n)
                and in_closed_triangle(pts[k], pts[v - 1], pts[v], pts[(v + 1) % n])]
@@ -184,10 +196,7 @@ def _ear(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[M
 def _ears(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
     """Every ear of P: a convex vertex V whose V−1 V+1 is an inner diagonal, its triangle
     shaded."""
-    n, pts = polygon.n, polygon.points
-    ears = [v for v in range(n)
-            if orient(pts[v - 1], pts[v], pts[(v + 1) % n]) > 0
-            and is_inner_diagonal(polygon, (v - 1) % n, (v + 1) % n)]
+    n, ears = polygon.n, _ears_of(polygon)
     shaded = [tag(triangle_mobject(polygon, ((v - 1) % n, v, (v + 1) % n), frame,
                                    theme.result, theme), "result", "figure:ear")
               for v in ears]

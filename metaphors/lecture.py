@@ -37,7 +37,7 @@ from geometry.triangulate import triangulate
 from metaphors import catalog
 from metaphors.analysis import Analysis, play_analysis
 from metaphors.countdown import countdown
-from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
+from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
 from metaphors.figures import Figure, figure_mobjects
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
@@ -364,8 +364,8 @@ class LectureScene(TraceScene):
         theme = self.theme
         u, v = verdict.edge
         name = f"edge:{polygon.labels[u]}–{polygon.labels[v]}"
-        edge = tag(Line(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[v]),
-                        color=theme.rejected, stroke_width=theme.stroke * 2.5), "rejected", name)
+        edge = crossed_edge(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[v]),
+                            name, theme)
         anims: list[Animation] = [Create(edge)]
         if verdict.point is not None:
             anims.append(Flash(frame.to_scene(verdict.point), color=theme.rejected,
