@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
+from itertools import pairwise
 
 import numpy as np
 from manim import Dot, Line, Mobject, VMobject
@@ -249,8 +250,7 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
                 _label("no hole: nothing to cut", box, theme, theme.ink)]
     starts, pts, labels = shape.starts, shape.points, shape.labels
     outer = Polygon.from_points(pts[:starts[1]])  # ring 0: labelled as in the shape
-    holes = [{"points": pts[a:b], "labels": labels[a:b]} for a, b in zip(starts[1:], starts[2:],
-                                                                          strict=False)]
+    holes = [{"points": pts[a:b], "labels": labels[a:b]} for a, b in pairwise(starts[1:])]
     frame = Frame(outer.points, *box)
     drawn: list[Mobject] = [tag(polygon_mobject(outer, frame, theme, holes), "idle",
                                 "figure:polygon")]

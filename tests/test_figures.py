@@ -9,9 +9,11 @@ import pytest
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
+from geometry.polygon import Polygon
 from geometry.predicates import orient
 from metaphors.drawing import Frame
 from metaphors.figures import BOX, KINDS, Figure, ear_tests, figure_mobjects
+from usercode.heuristic import run_heuristic
 
 
 def named(mobjects, prefix: str) -> list:
@@ -141,6 +143,9 @@ def test_every_bridge_joins_a_holes_rightmost_vertex_to_a_vertex_it_sees():
     shape = read_shape("keyhole")
     rings = [shape.points[a:b] for a, b in zip(shape.starts, shape.starts[1:], strict=False)]
     region = Region(rings[0], rings[1:])
+    # the outer ring drawn on its own keeps the shape's labels, which the bridges name
+    outer = Polygon.from_points(rings[0])
+    assert outer.labels == shape.labels[:shape.starts[1]]
     drawn = figure_mobjects(Figure("keyhole", "keyhole"), "lecture")
     bridges = named(drawn, "figure:bridge:")
     assert len(bridges) == shape.hole_count
@@ -157,8 +162,6 @@ def test_the_rule_is_drawn_with_its_claim_green_when_inner_red_when_not():
     rule = f"{path}:nearest_to_c"
     lecture = figure_mobjects(Figure("rule", heuristic=rule), "lecture")
     p = read_polygon("lecture")
-    from usercode.heuristic import run_heuristic
-
     i, j = run_heuristic(p, rule).pair
     assert named(lecture, "figure:claim")[0].trex_role == (
         "result" if is_inner_diagonal(p, i, j).ok else "rejected")
