@@ -552,8 +552,6 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     assert any(c.startswith(f"✗ {found.claim_name} is not an inner diagonal") for c in cues)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 22 item 7 is open: 18 % of the lecture is still "
-                   "cards of text alone (chapters 3, 5 and 7 keep most of them)")
 def test_text_on_black_is_at_most_a_tenth_of_the_lecture():
     """Issue 22 items 7 and 10: cards of text alone take at most 10 % of the lecture."""
     from tests.reading_rules import MOST_TEXT_ONLY, text_only_seconds
