@@ -87,18 +87,28 @@ def makespan(durations: list[float], workers: int, after: float = 0.0) -> float:
     return max(free) + after
 
 
+def load() -> str:
+    """The machine's load average over 1, 5 and 15 minutes, and its cores: whether the
+    timings were taken on an idle machine."""
+    one, five, fifteen = os.getloadavg()
+    return f"{one:.2f} {five:.2f} {fifteen:.2f} (1, 5, 15 min) on {os.cpu_count()} cores"
+
+
 def main() -> None:
+    print(f"load at start: {load()}", flush=True)
     with tempfile.TemporaryDirectory(prefix="bench-course-") as temp:
         folder = Path(temp)
         (folder / "tiny.py").write_text(TINY)
         (folder / "course.toml").write_text(COURSE)
         walls = {n: run(folder / "course.toml", folder / f"out-{n}", n) for n in (1, 2)}
         tasks = json.loads((folder / "out-1" / "course.json").read_text())["tasks"]
+    print(f"load at end:   {load()}")
     by_kind: dict[str, list[dict]] = {}
     for task in tasks:
         by_kind.setdefault(task["kind"], []).append(task)
-    print(f"course: {len(tasks)} tasks; 1 worker {walls[1]:.1f} s, 2 workers {walls[2]:.1f} s "
-          f"({walls[1] / walls[2]:.2f}x)")
+    print(f"course: {len(tasks)} tasks; 1 worker {walls[1]:.1f} s (baseline), 2 workers "
+          f"{walls[2]:.1f} s; speed-up {walls[1] / walls[2]:.2f}x (ideal 2.00x on 2 idle "
+          "cores)")
     for kind, done in by_kind.items():
         wall = sum(t["wall_seconds"] for t in done)
         video = sum(t["video_seconds"] for t in done)
