@@ -177,6 +177,8 @@ def test_the_lecture_is_joined_from_its_chapters(first, manifest):
     assert frames(lecture / "lecture.mp4") == sum(
         frames(lecture / e["file"]) for e in entries)
     assert "a circle" in (lecture / "lecture.srt").read_text()
+    assert manifest["lecture-1"]["files"] == [f"lecture-1/{name}" for name in (
+        "lecture.mp4", "lecture.srt", "chapters.json", "chapters.md", "teacher-notes.md")]
     assert manifest["lecture-1"]["video_seconds"] == pytest.approx(
         sum(manifest[f"lecture-1/{e['file'][:-4]}"]["video_seconds"] for e in entries))
     # the chapter's step marks say how it was made, as trex lecture's: trex slides reuses it
@@ -600,3 +602,46 @@ def _frame_sums(path: Path) -> list[str]:
     with av.open(str(path)) as container:
         return [hashlib.sha1(f.to_ndarray(format="rgb24").tobytes()).hexdigest()
                 for f in container.decode(video=0)]
+
+
+# --- the course's lecture is trex lecture's -----------------------------------------------------------
+
+
+def _assert_same_lecture(ours: Path, theirs: Path) -> None:
+    """The same lecture: decoded frames of the lecture and of each chapter (x264's bytes may
+    differ), the same subtitles, chapter list, chapter page and teacher notes."""
+    entries = json.loads((theirs / "chapters.json").read_text())
+    assert json.loads((ours / "chapters.json").read_text()) == entries
+    for name in ("lecture.srt", "chapters.md", "teacher-notes.md"):
+        assert (ours / name).read_text() == (theirs / name).read_text(), name
+    assert _frame_sums(ours / "lecture.mp4") == _frame_sums(theirs / "lecture.mp4")
+    for entry in entries:
+        assert _frame_sums(ours / entry["file"]) == _frame_sums(theirs / entry["file"])
+
+
+def test_the_courses_lecture_is_trex_lectures(first, folder, tmp_path):
+    out, _ = first
+    lecture = tmp_path / "lecture"
+    chapters = ",".join(f"{folder / 'tiny.py'}:{c}" for c in ("Cues", "MoreCues"))
+    made = trex("lecture", "-q", "l", "--chapters", chapters, "-o", str(lecture))
+    assert made.returncode == 0, made.stderr
+    assert _frame_sums(lecture / "lecture.mp4")  # (frames there to compare)
+    _assert_same_lecture(out / "lecture-1", lecture)
+
+
+@pytest.mark.slow
+def test_a_project_chapter_on_a_course_is_trex_lectures(tmp_path):
+    """A chapter of the project's own lecture (the one with teacher notes),
+    through the course on 2 workers and through trex lecture."""
+    (tmp_path / "course.toml").write_text(
+        "[[lecture]]\nquality = 'l'\nchapters = ['heuristics']\n")
+    out = tmp_path / "out"
+    result = trex("course", str(tmp_path / "course.toml"), "-o", str(out), "--workers", "2",
+                  timeout=1800)
+    assert result.returncode == 0, result.stderr
+    lecture = tmp_path / "lecture"
+    made = trex("lecture", "-q", "l", "--chapters", "heuristics", "-o", str(lecture),
+                timeout=1800)
+    assert made.returncode == 0, made.stderr
+    assert "## 2. Inner diagonals" in (lecture / "teacher-notes.md").read_text()
+    _assert_same_lecture(out / "lecture-1", lecture)
