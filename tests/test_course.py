@@ -507,56 +507,82 @@ def _stop(process: subprocess.Popen) -> None:
     process.wait(timeout=10)
 
 
-@pytest.fixture
-def cluster(tmp_path):
-    """``dask scheduler`` on 127.0.0.1 and ``dask worker --nworkers 2 --nthreads 1``, each a
-    process group of its own, seeing this checkout's code; stopped afterwards, and checked
-    gone, group and all."""
-    if not DASK.exists():
-        pytest.skip(f"no dask command beside {sys.executable} (distributed's CLI)")
-    if not Path("/proc/self/stat").exists():
-        pytest.skip("needs /proc to check that no process of the cluster is left")
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
-        p for p in (str(REPO), os.environ.get("PYTHONPATH", "")) if p)}
-    info = tmp_path / "scheduler.json"
-    logs = tmp_path / "logs"
-    logs.mkdir()
-    started: list[subprocess.Popen] = []
+class _Dask:
+    """Dask's own commands started as a user starts them, each a process group of its own,
+    seeing this checkout's code (their output in ``logs/``)."""
 
-    def start(name, *args):
-        with open(logs / f"{name}.log", "w") as log:
-            started.append(subprocess.Popen([str(DASK), *args], stdout=log,
-                                            stderr=subprocess.STDOUT, env=env, cwd=tmp_path,
-                                            start_new_session=True))
+    def __init__(self, folder: Path) -> None:
+        self.folder, self.logs = folder, folder / "logs"
+        self.logs.mkdir()
+        self.env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+            p for p in (str(REPO), os.environ.get("PYTHONPATH", "")) if p)}
+        self.started: list[subprocess.Popen] = []
 
-    try:
-        start("scheduler", "scheduler", "--host", "127.0.0.1", "--port", "0",
-              "--dashboard-address", "127.0.0.1:0", "--scheduler-file", str(info),
-              "--idle-timeout", "600s")  # (a scheduler left behind stops by itself)
+    def start(self, name: str, *args: str) -> subprocess.Popen:
+        with open(self.logs / f"{name}.log", "w") as log:
+            self.started.append(subprocess.Popen(
+                [str(DASK), *args], stdout=log, stderr=subprocess.STDOUT, env=self.env,
+                cwd=self.folder, start_new_session=True))
+        return self.started[-1]
+
+    def scheduler(self) -> str:
+        """``dask scheduler`` on 127.0.0.1, on a port of its choosing: its address."""
+        info = self.folder / "scheduler.json"
+        process = self.start("scheduler", "scheduler", "--host", "127.0.0.1", "--port", "0",
+                             "--dashboard-address", "127.0.0.1:0", "--scheduler-file",
+                             str(info), "--idle-timeout", "600s")  # (if left, it stops)
         deadline = time.monotonic() + 120
         while not info.exists() or not info.read_text().strip():
-            assert started[0].poll() is None, (logs / "scheduler.log").read_text()
+            assert process.poll() is None, (self.logs / "scheduler.log").read_text()
             assert time.monotonic() < deadline, "the scheduler never wrote its address"
             time.sleep(0.2)
         time.sleep(0.2)  # (the file is written whole, but give it its closing brace)
         address = json.loads(info.read_text())["address"]
         assert address.startswith("tcp://127.0.0.1:")
-        start("workers", "worker", address, "--nworkers", "2", "--nthreads", "1",
-              "--name", "ext", "--host", "127.0.0.1", "--no-dashboard",
-              "--local-directory", str(tmp_path / "dask-worker-space"),
-              "--death-timeout", "60s")
+        return address
+
+    def workers(self, address: str, n: int) -> subprocess.Popen:
+        """``dask worker ADDRESS --nworkers N --nthreads 1``, named ext-0 …, joined."""
         from distributed import Client
 
+        process = self.start("workers", "worker", address, "--nworkers", str(n),
+                             "--nthreads", "1", "--name", "ext", "--host", "127.0.0.1",
+                             "--no-dashboard", "--local-directory",
+                             str(self.folder / "dask-worker-space"), "--death-timeout", "60s")
         with Client(address, timeout="30s") as client:
-            client.wait_for_workers(2, timeout=180)
+            client.wait_for_workers(n, timeout=180)
         # what the check at the end looks for: the worker command and a process per worker
-        assert len(_group_alive(started[1].pid)) >= 3
-        yield address, started
-    finally:
-        for process in reversed(started):
+        assert len(_group_alive(process.pid)) >= n + 1
+        return process
+
+    def stop(self) -> None:
+        """Stop everything started, and check that no process of it is left."""
+        for process in reversed(self.started):
             _stop(process)
-    left = {p.pid: _group_alive(p.pid) for p in started}
-    assert not any(left.values()), f"processes of the cluster left running: {left}"
+        left = {p.pid: _group_alive(p.pid) for p in self.started}
+        assert not any(left.values()), f"processes of the cluster left running: {left}"
+
+
+@pytest.fixture
+def dask_commands(tmp_path):
+    """A :class:`_Dask`; what it started is stopped afterwards and checked gone."""
+    if not DASK.exists():
+        pytest.skip(f"no dask command beside {sys.executable} (distributed's CLI)")
+    if not Path("/proc/self/stat").exists():
+        pytest.skip("needs /proc to check that no process of the cluster is left")
+    dask = _Dask(tmp_path)
+    try:
+        yield dask
+    finally:
+        dask.stop()
+
+
+@pytest.fixture
+def cluster(dask_commands):
+    """A scheduler on 127.0.0.1 and 2 single-threaded workers, as separate processes."""
+    address = dask_commands.scheduler()
+    dask_commands.workers(address, 2)
+    return address, dask_commands.started
 
 
 def test_a_course_runs_on_a_cluster_started_apart(cluster, tmp_path):
@@ -593,6 +619,38 @@ def test_a_course_runs_on_a_cluster_started_apart(cluster, tmp_path):
                  address, timeout=600)
     assert again.returncode == 0, again.stderr
     assert again.stdout.startswith("course: 0 done, 2 reused, 0 failed; ")
+
+
+def test_a_cluster_with_no_worker_yet_is_said_and_its_course_waits(dask_commands, tmp_path):
+    """The course reaches a scheduler that has no worker: it says so and waits; a worker
+    that joins then does the course."""
+    address = dask_commands.scheduler()
+    (tmp_path / "tiny.py").write_text(TINY)
+    (tmp_path / "course.toml").write_text(EXTERNAL)
+    out, said = tmp_path / "out", tmp_path / "stderr"
+    with open(said, "w") as stderr:
+        course = subprocess.Popen(
+            [sys.executable, "-m", "trex", "course", str(tmp_path / "course.toml"), "-o",
+             str(out), "--scheduler", address], stdout=subprocess.PIPE, stderr=stderr,
+            text=True, env=dask_commands.env, cwd=REPO)
+    try:
+        waiting = f"course: no worker at {address} yet; the tasks wait for one"
+        deadline = time.monotonic() + 300
+        while waiting not in said.read_text():
+            assert course.poll() is None, said.read_text()
+            assert time.monotonic() < deadline, said.read_text()
+            time.sleep(0.2)
+        assert not list(out.rglob("*.mp4"))  # nothing done without a worker
+        dask_commands.workers(address, 1)
+        stdout, _ = course.communicate(timeout=600)
+    finally:
+        course.kill()
+        course.wait()
+    assert course.returncode == 0, said.read_text()
+    assert stdout.startswith("course: 2 done, 0 reused, 0 failed; ")
+    tasks = json.loads((out / "course.json").read_text())["tasks"]
+    assert {(t["status"], t["worker"]) for t in tasks} == {("done", "ext")}
+    assert "warning" not in said.read_text()
 
 
 def _frame_sums(path: Path) -> list[str]:

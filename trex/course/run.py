@@ -174,6 +174,8 @@ def run_tasks(tasks: Sequence[Task], out_dir: Path, title: str, *, workers: int,
     try:
         with client_for(workers, scheduler) as client:
             echo(f"dashboard: {client.dashboard_link}")
+            if scheduler is not None:
+                _say_of_workers(client.nthreads(), scheduler, echo)
             _submit_and_wait(client, pending, records, out_dir, title, tasks, retries,
                              progress)
             finished_cleanly = True
@@ -183,6 +185,27 @@ def run_tasks(tasks: Sequence[Task], out_dir: Path, title: str, *, workers: int,
         if records:  # (none: the cluster could not even be reached)
             _write(out_dir, title, tasks, records)
     return _ordered(tasks, records)
+
+
+def _say_of_workers(threads: dict[str, int], address: str,
+                    echo: Callable[[str], None]) -> None:
+    """A line if the cluster at ``address`` has no worker yet (its tasks wait for one) or
+    has workers of more than one thread (manim is not thread-safe); ``threads``: each
+    worker's, by address.
+
+    >>> _say_of_workers({}, "tcp://h:8786", print)
+    course: no worker at tcp://h:8786 yet; the tasks wait for one (dask worker tcp://h:8786 --nthreads 1)
+    >>> _say_of_workers({"tcp://a:1": 1, "tcp://b:2": 4}, "tcp://h:8786", print)
+    warning: 1 of the 2 workers at tcp://h:8786 run several threads (4): manim is not thread-safe; start them with --nthreads 1
+    """
+    if not threads:
+        echo(f"course: no worker at {address} yet; the tasks wait for one "
+             f"(dask worker {address} --nthreads 1)")
+    several = [n for n in threads.values() if n > 1]
+    if several:
+        echo(f"warning: {len(several)} of the {len(threads)} workers at {address} run several "
+             f"threads ({max(several)}): manim is not thread-safe; start them with "
+             "--nthreads 1")
 
 
 def _submit_and_wait(client, pending: Sequence[Task], records: dict, out_dir: Path,
