@@ -36,6 +36,11 @@ from story.storyboard import Reading, Walk
 from tracing import Event
 
 
+#: where the stack's column stands (its centre's x, its top): in the frame's left margin under
+#: the title, beside the metaphor's box (x from -6.25), where no polygon is drawn
+STACK_COLUMN = (-6.6, 2.9)
+
+
 def _sweep_line(board: Board, y: float) -> DashedLine:
     theme = board.theme
     x0 = board.frame.center[0] - 2.9
@@ -128,9 +133,8 @@ def _column(board: Board, chain: list[str]) -> VGroup:
              *[text(label, font=theme.font, size=theme.label_size + 2, colour=theme.stack)
                for label in reversed(chain)]]
     column = VGroup(*words).arrange(DOWN, buff=0.12)
-    left = board.shape.get_left()[0] - 0.35
-    column.move_to((left - column.width / 2, board.shape.get_center()[1], 0))
-    return column
+    x, top = STACK_COLUMN
+    return column.move_to((x, top - column.height / 2, 0))
 
 
 def stack(board: Board, beat: Stack) -> None:
