@@ -35,7 +35,6 @@ from story.beats import Beat, beat_kind
 from story.storyboard import Reading, Walk
 from tracing import Event
 
-
 #: where the stack's column stands (its centre's x, its top): in the frame's left margin under
 #: the title, beside the metaphor's box (x from -6.25), where no polygon is drawn
 STACK_COLUMN = (-6.6, 2.9)

@@ -148,3 +148,57 @@ def test_generated_polygons(p):
 @given(collinear_polygons())
 def test_collinear_runs(p):
     assert_valid(p, monotone(p))
+
+
+# --- one colour, one meaning (issue 22 item 4) ---------------------------------------------------
+
+
+def test_vertex_kinds_have_colours_of_their_own():
+    """Split and merge are kinds of vertex, not verdicts: never the red of "fails" nor the
+    green of a result, and not one another's."""
+    from metaphors.theme import THEME
+
+    kinds = [THEME.role_colour("split"), THEME.role_colour("merge")]
+    verdicts = {THEME.rejected.lower(), THEME.result.lower()}
+    assert len({c.lower() for c in kinds}) == 2
+    assert not {c.lower() for c in kinds} & verdicts
+    assert THEME.stack.lower() not in verdicts
+
+
+def _monotone_graphs():
+    from scenes.holes import HolesSweep
+    from trex.chapters import lecture_chapters
+
+    faster = next(c for c in lecture_chapters() if c.slug == "faster")
+    return [pytest.param(HolesSweep, id="holes-sweep"),
+            pytest.param(faster, id="lecture-faster")]
+
+
+def _vertex_nodes(data):
+    """Every node of a vertex: its marker (on the board, in the panel) and the kind written
+    beside it, with their parts."""
+    from tests.reading_rules import graph_nodes, mobject_nodes
+
+    for top in graph_nodes(data):
+        name = top.get("name") or ""
+        if (name.startswith(("vertex:", "panel:")) and name != "panel:call") or name == "kind":
+            yield from mobject_nodes(top)
+
+
+@pytest.mark.parametrize("scene", _monotone_graphs())
+def test_the_monotone_sweep_never_gives_a_vertex_the_red_of_fails(scene):
+    from metaphors.theme import THEME
+    from tests.test_lecture import _chapter_class
+    from trex.snapshot import build
+
+    cls = scene if isinstance(scene, type) else _chapter_class(scene).handed()
+    data = build(cls).data
+    nodes = list(_vertex_nodes(data))
+    red = THEME.rejected.upper()
+    assert [n.get("name") for n in nodes
+            if n.get("role") == "rejected" or red in (n.get("stroke"), n.get("fill"))] == []
+    # not vacuous: the split and merge vertices are there, in their own colours
+    colours = {c for n in nodes for c in (n.get("stroke"), n.get("fill"))}
+    assert {THEME.split.upper(), THEME.merge.upper()} <= colours
+    roles = {n.get("role") for n in nodes}
+    assert {"split", "merge"} <= roles
