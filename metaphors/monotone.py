@@ -232,7 +232,7 @@ def _kind_role(kind: str) -> str:
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, kind = walk.ref(call, "v"), ret.result
     yield walk.step(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
-                    key=kind in ("split", "merge"), roles={v: _kind_role(kind)},
+                    key_step=kind in ("split", "merge"), roles={v: _kind_role(kind)},
                     vertex=v, kind=kind, at=walk.root_points()[v])
     walk.count_claim("vertex")  # after its beat: the beat belongs to the vertex it classifies
 
@@ -244,7 +244,7 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     handler = walk.stack[-2].name if len(walk.stack) > 1 else ""
     why = (f"the split vertex {u} joins its helper {w}" if handler == "handle_split"
            else f"{u} takes over from the merge vertex {w}")
-    yield walk.step(MonotoneDiagonal, f"Diagonal {u}{w}: {why}", call, ret, key=True,
+    yield walk.step(MonotoneDiagonal, f"Diagonal {u}{w}: {why}", call, ret, key_step=True,
                     roles={u: "split" if handler == "handle_split" else "called", w: (
                         "argument" if handler == "handle_split" else "merge")},
                     labels=[u, w], points=[where[u], where[w]])
@@ -264,7 +264,8 @@ def _stacked(walk: Walk, indices: list[int]) -> list[str]:
 def read_push(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     """A vertex waits: the chain is the call's stack with it on top."""
     where = walk.root_points()
-    chain = _stacked(walk, [*call.args["stack"], call.args["u"]])
+    args = call.args or {}
+    chain = _stacked(walk, [*args["stack"], args["u"]])
     yield walk.step(StackStep, f"{chain[-1]} waits on the stack", call, ret, roles={},
                     chain=chain, points=[where[v] for v in chain], cut=[], triangle=[])
 
@@ -272,7 +273,7 @@ def read_push(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     """A triangle is cut off: the stack's top leaves it."""
     where = walk.root_points()
-    before = _stacked(walk, call.args["stack"])
+    before = _stacked(walk, (call.args or {})["stack"])
     cut = _stacked(walk, ret.result)
     walk.memo("monotone.cut", list).append(cut)
     yield walk.step(StackStep, f"Triangle {''.join(cut)} cut off: {before[-1]} leaves",

@@ -249,25 +249,26 @@ class Walk:
     def pace(self) -> float:
         return 1.0 if self.claims < self.pacing.full else self.pacing.fast
 
-    def beat(self, beat_type: type[Beat], caption: str, event: Event, /, key: bool = False,
-             **fields: Any) -> Beat:
+    def beat(self, beat_type: type[Beat], caption: str, event: Event, /,
+             key_step: bool = False, **fields: Any) -> Beat:
         """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk.
-        A ``key`` step (a split or merge vertex and its diagonal) plays at full pace under its
+        A key step (``key_step``: a split or merge vertex and its diagonal) plays at full pace under its
         own caption however many claims came before: fast-forwarding never hides it."""
         beat = beat_type(caption=caption, step=event.seq, line=self.code_line(event),
-                         row=self.pseudocode_row(event), pace=1.0 if key else self.pace(),
+                         row=self.pseudocode_row(event), pace=1.0 if key_step else self.pace(),
                          **fields)
         self.counted[id(beat)] = self.claims
-        if key:
+        if key_step:
             self.kept.add(id(beat))
         return beat
 
     def step(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
-             key: bool = False, **fields: Any) -> Beat:
+             key_step: bool = False, **fields: Any) -> Beat:
         """The beat of a returned call: its call line, and the call's roles unless ``fields``
-        give others (``key``: as :meth:`beat`)."""
+        give others (``key_step``: as :meth:`beat`)."""
         fields.setdefault("roles", call_roles(call, ret))
-        return self.beat(beat_type, caption, call, key=key, call=call_line(call, ret), **fields)
+        return self.beat(beat_type, caption, call, key_step=key_step, call=call_line(call, ret),
+                         **fields)
 
     def is_heuristic(self, name: str) -> bool:
         return name in self._heuristics or name == self.user
