@@ -128,9 +128,9 @@ def _chain(board: Board, points: list) -> VMobject:
 def _column(board: Board, chain: list[str]) -> VGroup:
     """The stack as a column beside P: "stack" over its labels, the top first."""
     theme = board.theme
-    words = [text("stack", font=theme.font, size=theme.label_size, colour=theme.stack),
-             *[text(label, font=theme.font, size=theme.label_size + 2, colour=theme.stack)
-               for label in reversed(chain)]]
+    size = theme.label_size + 4  # "stack" has no capital: a line of it still ≥ 2.5 % high
+    words = [text(word, font=theme.font, size=size, colour=theme.stack)
+             for word in ("stack", *reversed(chain))]
     column = VGroup(*words).arrange(DOWN, buff=0.12)
     x, top = STACK_COLUMN
     return column.move_to((x, top - column.height / 2, 0))
