@@ -37,7 +37,7 @@ from tracing import Event
 
 #: where the stack's column stands (its centre's x, its top): in the frame's left margin under
 #: the title, beside the metaphor's box (x from -6.25), where no polygon is drawn
-STACK_COLUMN = (-6.6, 2.9)
+STACK_COLUMN = (-6.5, 2.9)
 
 
 def _sweep_line(board: Board, y: float) -> DashedLine:
