@@ -159,6 +159,7 @@ class Walk:
         self.claims = 0
         self.noun = "diagonal"  # what a claim is, in the summary captions of repeated ones
         self.counted: dict[int, int] = {}  # id of each beat made → claims counted by then
+        self.kept: set[int] = set()  # ids of the key steps: never fast, never summarised
         self.heuristic_polygon: list[str] = []
         self.shown_polygon = False
         self.stack: list[Event] = []  # open calls, outermost first
@@ -248,19 +249,26 @@ class Walk:
     def pace(self) -> float:
         return 1.0 if self.claims < self.pacing.full else self.pacing.fast
 
-    def beat(self, beat_type: type[Beat], caption: str, event: Event, /, **fields: Any) -> Beat:
-        """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk."""
+    def beat(self, beat_type: type[Beat], caption: str, event: Event, /,
+             key_step: bool = False, **fields: Any) -> Beat:
+        """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk.
+        A key step (``key_step``: a split or merge vertex and its diagonal) plays at full pace under its
+        own caption however many claims came before: fast-forwarding never hides it."""
         beat = beat_type(caption=caption, step=event.seq, line=self.code_line(event),
-                         row=self.pseudocode_row(event), pace=self.pace(), **fields)
+                         row=self.pseudocode_row(event), pace=1.0 if key_step else self.pace(),
+                         **fields)
         self.counted[id(beat)] = self.claims
+        if key_step:
+            self.kept.add(id(beat))
         return beat
 
     def step(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
-             **fields: Any) -> Beat:
+             key_step: bool = False, **fields: Any) -> Beat:
         """The beat of a returned call: its call line, and the call's roles unless ``fields``
-        give others."""
+        give others (``key_step``: as :meth:`beat`)."""
         fields.setdefault("roles", call_roles(call, ret))
-        return self.beat(beat_type, caption, call, call=call_line(call, ret), **fields)
+        return self.beat(beat_type, caption, call, key_step=key_step, call=call_line(call, ret),
+                         **fields)
 
     def is_heuristic(self, name: str) -> bool:
         return name in self._heuristics or name == self.user
@@ -371,7 +379,7 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
         beats.extend(_beats_for(walk, event, table))
         walk.track(event)
     return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
-                      walk.noun)
+                      walk.noun, kept=[id(b) in walk.kept for b in beats])
 
 
 def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[Beat]:
