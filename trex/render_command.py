@@ -37,6 +37,7 @@ from story.scene_kinds import (
     heuristic_of,
     plays_several,
 )
+from story.spec import RunSpec
 from trex import encoders, exit_status
 from trex.inputs import (
     call_timeout_option,
@@ -51,8 +52,6 @@ from usercode.errors import UserHeuristicError
 
 if TYPE_CHECKING:  # manim, imported when a scene is rendered
     from manim import Scene
-
-    from story.spec import RunSpec
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 #: The project's manim settings, which plain ``manim`` reads when run from the repository
@@ -156,25 +155,26 @@ def load_scene_class(path: Path, class_name: str | None) -> type:
     raise ValueError(f"{path.name} has no scene class '{class_name}'; it has: {names}")
 
 
-def dry_run(cls: type, polygon: str) -> None:
-    """Run the scene's algorithm on the polygon once, without drawing: an input the algorithm
-    rejects (a triangle has no diagonal …) is then reported before rendering starts."""
+#: What running a scene's algorithm once may raise for its input: the polygon's (or the
+#: heuristic's) fault, said in one line with exit status 2 by the command that asked.
+RUN_ERRORS = (GeometryError, ValueError, KeyError)
+
+
+def scene_run(cls: type, polygon: str, shape: Shape | None = None) -> RunSpec | None:
+    """The run the scene class ``cls`` plays on ``polygon`` (``shape``: that polygon read
+    already, so the run reads no file; None: the run reads it); None for a scene that plays
+    no algorithm, or several runs on polygons of its own."""
     algorithm = algorithm_of(cls)
     if algorithm is None or plays_several(cls):
-        return
-    from story.spec import RunSpec
-
-    RunSpec(algorithm, polygon, heuristic=heuristic_of(cls)).log()
+        return None
+    return RunSpec(algorithm, polygon, heuristic=heuristic_of(cls), shape=shape)
 
 
-def run_once(spec) -> None:
-    """Run the :class:`story.spec.RunSpec` a scene was handed once, without drawing: an input
-    the algorithm rejects (a triangle has no diagonal …) is one line naming the polygon and
-    exit 2, before rendering starts."""
-    try:
-        spec.log()
-    except (GeometryError, ValueError, KeyError) as exc:
-        fail(f"{spec.polygon}: {error_line(exc)}")
+def run_once(spec: RunSpec) -> None:
+    """Run ``spec`` once, without drawing, so that an input the algorithm rejects (a triangle
+    has no diagonal …) is found before rendering starts. Raises one of :data:`RUN_ERRORS`;
+    the caller says it in one line, naming the polygon."""
+    spec.log()
 
 
 def scene_input(cls: type, polygon: str | None, panel: str | None = None,
@@ -438,7 +438,10 @@ def _render(scene: str, path: Path, class_name: str | None,
         fail(f"{scene}: {error_line(exc)}")
     spec = handed.spec if isinstance(handed, Handed) else None
     if spec is not None and spec.shape is not None:  # a polygon handed: run it once, now
-        run_once(spec)
+        try:
+            run_once(spec)
+        except RUN_ERRORS as exc:
+            fail(f"{spec.polygon}: {error_line(exc)}")
     try:
         render_into(handed, target, fmt, QUALITIES[quality], signals=signals)
     except (KeyboardInterrupt, click.exceptions.Exit):

@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, cast
 
 import click
 
+from geometry.io import Shape
 from story.pseudocode import PANELS
 from story.scene_kinds import SeveralRuns, plays_several
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
@@ -82,10 +83,9 @@ def slides(scene: str, polygon: str | None, saved: str | None, quality: str,
     if scene == LECTURE:
         if saved is not None:
             fail("--log: the lecture plays many runs; give --polygon for its chapters")
-        if polygon is not None:
-            load_or_exit(polygon)
+        shape = load_or_exit(polygon) if polygon is not None else None  # read once
         _lecture(Path(output), quality, jobs or 1, polygon, panel, only,
-                 Path(lecture_dir) if lecture_dir else None)
+                 Path(lecture_dir) if lecture_dir else None, shape=shape)
         return
     for name, given in (("-j", jobs), ("--chapters", only), ("--lecture", lecture_dir)):
         if given is not None:
@@ -146,7 +146,8 @@ def _scene_slides(cls: type[TraceScene], quality: str, subtitle: str, target: Pa
 
 
 def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: str | None,
-             only: str | None, lecture_dir: Path | None) -> None:
+             only: str | None, lecture_dir: Path | None, *, shape: Shape | None = None,
+             ) -> None:
     from trex import chapters as ch
     from trex.lecture_join import DEFAULT_DIR
 
@@ -166,7 +167,7 @@ def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: 
     except ValueError as exc:
         fail(f"{target}: {exc}")
     try:
-        ch.check_chapters(chapters, polygon)
+        ch.check_chapters(chapters, polygon, shape)
     except ch.ChapterFailed as exc:
         ch.chapter_failed(str(exc))
     began = time.monotonic()

@@ -39,7 +39,7 @@ def _where(exc: BaseException, scene: str) -> str:
 
 def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: Shape | None = None):
     """The scene's graph, or exit 2 with one line (``shape``: ``polygon`` read already)."""
-    from trex.render_command import run_once
+    from trex.render_command import RUN_ERRORS, run_once
     from trex.snapshot import SnapshotError, build, hand, load_scene, plays_own_polygons
 
     try:
@@ -56,7 +56,10 @@ def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: Shape 
         fail(str(exc) if named else f"{scene}: {exc}")
     spec = getattr(handed, "spec", None)
     if spec is not None and spec.shape is not None:
-        run_once(spec)  # an input the algorithm rejects: said as the polygon's fault
+        try:
+            run_once(spec)
+        except RUN_ERRORS as exc:  # an input the algorithm rejects: said as the polygon's fault
+            fail(f"{spec.polygon}: {error_line(exc)}")
     try:
         return build(handed)
     except (KeyboardInterrupt, click.exceptions.Exit):
