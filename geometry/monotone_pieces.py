@@ -34,7 +34,7 @@ import tracing
 from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import Point, orient
-from geometry.results import Triangle
+from geometry.results import TriangleIndices
 
 
 @dataclass(frozen=True)
@@ -111,14 +111,14 @@ def _fans(polygon: Polygon | PolygonWithHoles, diagonals: list[tuple[int, int]])
 
 
 @tracing.traced
-def triangulate_monotone_piece(polygon: Polygon | PolygonWithHoles, piece: MonotonePiece) -> list[Triangle]:
+def triangulate_monotone_piece(polygon: Polygon | PolygonWithHoles, piece: MonotonePiece) -> list[TriangleIndices]:
     """The stack triangulation of one y-monotone piece, counter-clockwise triples."""
     ids = piece.ids
     if len(ids) == 3:
         return [ids]
     points = polygon.points
     order, on_left = _merged_chains(polygon, ids)
-    triangles: list[Triangle] = []
+    triangles: list[TriangleIndices] = []
     stack = [order[0], order[1]]
     for u in order[2:-1]:
         if on_left[u] != on_left[stack[-1]]:
@@ -154,13 +154,13 @@ def _cuts_off(points: Sequence[Point], s: int, last: int, u: int, left: bool) ->
     return turn > 0 if left else turn < 0
 
 
-def _fan(points: Sequence[Point], u: int, stack: list[int], triangles: list[Triangle]) -> None:
+def _fan(points: Sequence[Point], u: int, stack: list[int], triangles: list[TriangleIndices]) -> None:
     """u sees every stacked vertex: one triangle per consecutive pair on the stack."""
     for s, t in pairwise(stack):
         triangles.append(_ccw(points, s, t, u))
 
 
-def _ccw(points: Sequence[Point], a: int, b: int, c: int) -> Triangle:
+def _ccw(points: Sequence[Point], a: int, b: int, c: int) -> TriangleIndices:
     turn = orient(points[a], points[b], points[c])
     if turn == 0:
         raise AssertionError("a monotone piece produced a zero-area triangle")

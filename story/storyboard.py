@@ -45,7 +45,7 @@ from story.beats import (
     ShowTriangle,
     Verdict,
 )
-from story.pseudocode import Step, from_json, lit_row, named
+from story.pseudocode import PseudocodeRow, from_json, lit_row, named
 from story.reach import Reach, reach_of
 from story.reading import summarised
 from story.refs import call_of, ref, result_ref, result_refs, state_of, target_of
@@ -150,7 +150,7 @@ class Walk:
     """
 
     def __init__(self, log: Log, pacing: Pacing, shown_code: str | None, user: str | None,
-                 rows: tuple[Step, ...] = (), heuristic_function: str | None = None):
+                 rows: tuple[PseudocodeRow, ...] = (), heuristic_function: str | None = None):
         self.log, self.pacing, self.shown_code, self.user = log, pacing, shown_code, user
         self.rows = rows  # the pseudocode of the run
         self.lit: int | None = None  # the pseudocode row lit so far
@@ -277,7 +277,7 @@ class Walk:
             self.live.pop(target_of(event), None)
 
 
-def pseudocode_of(log: Log) -> tuple[Step, ...]:
+def pseudocode_of(log: Log) -> tuple[PseudocodeRow, ...]:
     """The pseudocode of a log's run: its own (meta ``pseudocode``: a heuristic of one's own
     whose docstring has some), else its algorithm's in the registry; none for any other.
 
@@ -288,7 +288,7 @@ def pseudocode_of(log: Log) -> tuple[Step, ...]:
     ('reflex_vertex', 'straight_vertex')
     >>> log.meta["pseudocode"] = [["claim BD", ["claim"]]]
     >>> pseudocode_of(log)
-    (Step(text='claim BD', calls=('claim',)),)
+    (PseudocodeRow(text='claim BD', calls=('claim',)),)
     """
     if "pseudocode" in log.meta:
         return from_json(log.meta["pseudocode"])
@@ -343,7 +343,7 @@ def run_vertices(log: Log) -> dict[str, str]:
     return {k: next(iter(v)) for k, v in sorted(given.items()) if len(v) == 1}
 
 
-def spoken_pseudocode(log: Log) -> tuple[Step, ...]:
+def spoken_pseudocode(log: Log) -> tuple[PseudocodeRow, ...]:
     """The pseudocode the panel shows for a log: :func:`pseudocode_of`, its placeholders
     naming the run's own vertices where the picture has a vertex of that name
     (:func:`story.pseudocode.named`)."""

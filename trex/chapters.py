@@ -1,8 +1,9 @@
 """The lecture's chapters: found, picked, named, and checked before anything renders
 (``trex lecture``, ``trex slides lecture``).
 
-The chapters are the scene files ``scenes/chapters/ch<k>_<slug>.py`` (``--chapters`` picks
-some of them by slug, or names scenes to play as chapters instead).
+The chapters are the scene files ``scenes/chapters/ch<k>_<slug>.py``, each named by its
+class's ``slug`` (``--chapters`` picks some of them by slug, or names scenes to play as
+chapters instead).
 
 With ``--polygon``, a lecture chapter is checked by what it plays: each of its segments that
 runs on the lecture's polygon (a ``Run`` or ``Compare`` whose polygon is None) is computed
@@ -22,7 +23,7 @@ from typing import Any, NoReturn
 
 import click
 
-from geometry.io import Shape
+from geometry.io import AnyPolygon
 from story.scene_kinds import ChapterScene, TaughtChapter
 from trex.inputs import error_line, fail
 from trex.render_command import (
@@ -74,19 +75,27 @@ def chapter_failed(message: str, status: int = EXIT_FAILED) -> NoReturn:
 
 def lecture_chapters() -> tuple[Chapter, ...]:
     """The lecture's chapters: the scene files ``scenes/chapters/ch<k>_<slug>.py``, in the
-    order of ``k``, each titled by its class's ``chapter_title`` (``"3. Gravity"``: the part
-    after the number). Loading them imports manim, so only when asked for."""
+    order of ``k``, each named by its class's ``slug`` and titled by its ``chapter_title``
+    (``"3. Gravity"``: the part after the number). Loading them imports manim, so only when
+    asked for. Raises ValueError for a chapter's class that is no chapter, or whose slug is
+    not the one its file's name says (the class is the source; the name follows it)."""
     found = []
     for path in CHAPTERS_DIR.glob("ch*_*.py"):
-        digits, _, slug = path.stem[2:].partition("_")
+        digits, _, named = path.stem[2:].partition("_")
         if digits.isdigit():
-            found.append((int(digits), slug.replace("_", "-"), path))
+            found.append((int(digits), named.replace("_", "-"), path))
     chapters = []
-    for number, slug, path in sorted(found):
+    for number, named, path in sorted(found):
         cls = load_scene_class(path, None)
-        title = str(cls.chapter_title if isinstance(cls, ChapterScene) else slug).partition(". ")
-        chapters.append(Chapter(number, slug, title[2] or title[0], str(path.relative_to(REPO)),
-                                cls.__name__))
+        if not (isinstance(cls, ChapterScene) and cls.slug):
+            raise ValueError(f"{path.name}: {cls.__name__} is no chapter: it needs a "
+                             "chapter_title and a slug")
+        if cls.slug != named:
+            raise ValueError(f"{path.name}: {cls.__name__}'s slug is '{cls.slug}'; name the "
+                             f"file ch{number}_{cls.slug.replace('-', '_')}.py")
+        title = cls.chapter_title.partition(". ")
+        chapters.append(Chapter(number, cls.slug, title[2] or title[0],
+                                str(path.relative_to(REPO)), cls.__name__))
     return tuple(chapters)
 
 
@@ -148,7 +157,7 @@ def lecture_segments(cls: type) -> tuple | None:
     return tuple(cls.__new__(cls).chapter_segments())
 
 
-def polygon_checks(segments: Sequence, polygon: str, shape: Shape | None = None,
+def polygon_checks(segments: Sequence, polygon: str, shape: AnyPolygon | None = None,
                    ) -> list[tuple[str, tuple, Callable[[], object]]]:
     """``(what, key, check)`` for each segment that plays the lecture's polygon: ``check()``
     computes what the chapter would show — a Run's log, a Compare's two triangulations — by
@@ -181,7 +190,7 @@ def polygon_checks(segments: Sequence, polygon: str, shape: Shape | None = None,
 
 
 def check_chapters(chapters: Sequence[Chapter], polygon: str | None,
-                   shape: Shape | None = None) -> None:
+                   shape: AnyPolygon | None = None) -> None:
     """Load every chapter's scene class and, with a polygon (``shape``: it read already by
     the command), compute on it what the chapter plays on it (:func:`polygon_checks`; a
     scene that is not a lecture chapter: its ``algorithm``, once), drawing nothing.
@@ -206,7 +215,7 @@ def check_chapters(chapters: Sequence[Chapter], polygon: str | None,
                            done)
 
 
-def _check_polygon(cls: type, given: tuple[str, Shape | None], label: str, done: set) -> None:
+def _check_polygon(cls: type, given: tuple[str, AnyPolygon | None], label: str, done: set) -> None:
     """One chapter's part of :func:`check_chapters` (``given``: the polygon, and it read);
     ``done`` holds the keys already run."""
     polygon, shape = given

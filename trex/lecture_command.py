@@ -32,7 +32,7 @@ from pathlib import Path
 
 import click
 
-from geometry.io import Shape
+from geometry.io import AnyPolygon
 from story.pseudocode import PANELS
 from trex.chapter_command import chapter
 from trex.chapter_pool import render_chapters
@@ -152,7 +152,7 @@ def _chapters(chapters: Sequence[Chapter] | None, only: str | None) -> Sequence[
 
 def run_lecture(chapters: Sequence[Chapter] | None, out_dir: Path, quality: str = "l",
                 jobs: int = 1, polygon: str | None = None, only: str | None = None,
-                panel: str | None = None, *, shape: Shape | None = None) -> Path:
+                panel: str | None = None, *, shape: AnyPolygon | None = None) -> Path:
     """The command after its polygon check: ``chapters`` None = the lecture's own;
     ``shape``: ``polygon`` read already (None: the checks read it)."""
     chapters = _chapters(chapters, only)

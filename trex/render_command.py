@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from geometry.errors import GeometryError
-from geometry.io import Shape
+from geometry.io import AnyPolygon
 from story.pseudocode import PANELS
 from story.scene_kinds import (
     Handed,
@@ -160,7 +160,7 @@ def load_scene_class(path: Path, class_name: str | None) -> type:
 RUN_ERRORS = (GeometryError, ValueError, KeyError)
 
 
-def scene_run(cls: type, polygon: str, shape: Shape | None = None) -> RunSpec | None:
+def scene_run(cls: type, polygon: str, shape: AnyPolygon | None = None) -> RunSpec | None:
     """The run the scene class ``cls`` plays on ``polygon`` (``shape``: that polygon read
     already, so the run reads no file; None: the run reads it); None for a scene that plays
     no algorithm, or several runs on polygons of its own."""
@@ -178,7 +178,7 @@ def run_once(spec: RunSpec) -> None:
 
 
 def scene_input(cls: type, polygon: str | None, panel: str | None = None,
-                shape: Shape | None = None) -> type:
+                shape: AnyPolygon | None = None) -> type:
     """The scene class handed its run as data (a subclass carrying a
     :class:`story.spec.RunSpec`, see :class:`metaphors.scene.SpecScene`): on ``polygon`` if
     given, else as ``manim`` would give it (its default run, with ``TREX_POLYGON`` and
@@ -316,10 +316,10 @@ def _render_in(make_scene: Callable[[], Scene], temp: Path, output: Path, fmt: s
 def _write_marks(scene, video: Path, made_by: dict) -> Path:
     """The scene's step marks, beside the video it rendered."""
     from metaphors.recorded import recorded_steps, steps_end
-    from trex.clips import Marks, Step, write_marks
+    from trex.clips import Marks, write_marks
 
-    steps = tuple(Step(m.frame, m.caption, m.call, m.kind) for m in recorded_steps(scene))
-    return write_marks(Marks(steps, steps_end(scene), made_by), video)
+    marks = Marks(tuple(recorded_steps(scene)), steps_end(scene), made_by)
+    return write_marks(marks, video)
 
 
 def format_of(fmt: str | None, output: str | None) -> str:
@@ -417,7 +417,7 @@ def with_heuristic(cls: type, heuristic: str | None) -> type:
 
 
 def _render(scene: str, path: Path, class_name: str | None,
-            given: tuple[str | None, Shape | None], target: Path, fmt: str, quality: str,
+            given: tuple[str | None, AnyPolygon | None], target: Path, fmt: str, quality: str,
             signals: Signals, panel: str | None = None, heuristic: str | None = None) -> None:
     polygon, shape = given  # --polygon, and that polygon read already
     try:

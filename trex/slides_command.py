@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, cast
 
 import click
 
-from geometry.io import Shape
+from geometry.io import AnyPolygon
 from story.pseudocode import PANELS
 from story.scene_kinds import SeveralRuns, plays_several
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
@@ -146,7 +146,7 @@ def _scene_slides(cls: type[TraceScene], quality: str, subtitle: str, target: Pa
 
 
 def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: str | None,
-             only: str | None, lecture_dir: Path | None, *, shape: Shape | None = None,
+             only: str | None, lecture_dir: Path | None, *, shape: AnyPolygon | None = None,
              ) -> None:
     from trex import chapters as ch
     from trex.lecture_join import DEFAULT_DIR
@@ -200,13 +200,13 @@ def _source(video: Path, marks, chapter):
     this project's) is one step, captioned with the chapter's title."""
     from dataclasses import replace
 
+    from story.step_marks import StepMark
     from trex.chapters import teacher_notes
-    from trex.clips import Step
     from trex.slides_build import Source
 
     title = f"{chapter.number}. {chapter.title}"
     if not marks.steps:
-        marks = replace(marks, steps=(Step(0, title, None, "chapter"),))
+        marks = replace(marks, steps=(StepMark(0, title, None, "chapter"),))
     notes = tuple(f"{note.title}: {line}" for note in teacher_notes(chapter)
                   for line in note.lines)
     return Source(video, marks, title, notes)

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import click
 
-from geometry.io import Shape
+from geometry.io import AnyPolygon
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 
 EXIT_DIFFERS = 1
@@ -37,7 +37,7 @@ def _where(exc: BaseException, scene: str) -> str:
     return f" ({Path(file_part).name}:{frames[-1].lineno})" if frames else ""
 
 
-def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: Shape | None = None):
+def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: AnyPolygon | None = None):
     """The scene's graph, or exit 2 with one line (``shape``: ``polygon`` read already)."""
     from trex.render_command import RUN_ERRORS, run_once
     from trex.snapshot import SnapshotError, build, hand, load_scene, plays_own_polygons

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, cast
 
-from geometry.io import Shape
+from geometry.io import AnyPolygon
 from story.scene_kinds import Handed, WithPanel, algorithm_of, plays_several
 from trex.course.schema import Course, CourseError, Exercises, Lecture, SceneItem, Slides
 from trex.course.schema import polygon_path as _polygon_path
@@ -88,7 +88,7 @@ class _Checked:
             self.done.add(key)
 
 
-def _read(item: str, name: str, polygon: str, holes: bool) -> Shape:
+def _read(item: str, name: str, polygon: str, holes: bool) -> AnyPolygon:
     """The polygon ``polygon`` read (with holes, if ``holes``), once: the checks run on it."""
     from geometry.io import read_polygon, read_shape
 
