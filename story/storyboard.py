@@ -48,7 +48,7 @@ from story.beats import (
 from story.pseudocode import PseudocodeRow, from_json, lit_row, named
 from story.reach import Reach, reach_of
 from story.reading import summarised
-from story.refs import call_of, ref, result_ref, result_refs, state_of, target_of
+from story.refs import call_of, meta, ref, result_ref, result_refs, state_of, target_of
 from story.registry import heuristics, pseudocode
 from story.roles import ROLES
 from story.words import number, said, why_not_inner
@@ -292,10 +292,10 @@ def pseudocode_of(log: Log) -> tuple[PseudocodeRow, ...]:
     """
     if "pseudocode" in log.meta:
         return from_json(log.meta["pseudocode"])
-    algorithm = log.meta.get("algorithm")
-    rows = pseudocode(algorithm) if isinstance(algorithm, str) else ()
-    own = log.meta.get("heuristic_function")
-    if isinstance(own, str):  # divide and conquer with one's own: its row covers that too
+    algorithm = meta(log, "algorithm")
+    rows = pseudocode(algorithm) if algorithm is not None else ()
+    own = meta(log, "heuristic_function")
+    if own is not None:  # divide and conquer with one's own: its row covers that too
         rows = tuple(replace(r, calls=(*r.calls, own)) if set(r.calls) & set(heuristics())
                      else r for r in rows)
     return rows
@@ -362,9 +362,9 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
     source line lit in it, and its ``row`` the row of the run's pseudocode
     (:func:`pseudocode_of`) lit in it.
     """
-    shown = shown_code or log.meta.get("shown") or log.meta.get("algorithm")
-    walk = Walk(log, pacing or Pacing(), shown, log.meta.get("user_heuristic"),
-                pseudocode_of(log), log.meta.get("heuristic_function"))
+    shown = shown_code or meta(log, "shown") or meta(log, "algorithm")
+    walk = Walk(log, pacing or Pacing(), shown, meta(log, "user_heuristic"),
+                pseudocode_of(log), meta(log, "heuristic_function"))
     table = {**FRAME_READS, **readings}
     beats: list[Beat] = []
     for event in log.events:

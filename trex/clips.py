@@ -25,7 +25,7 @@ import json
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import cast
+from typing import Any, cast
 
 import av
 from PIL import Image
@@ -43,7 +43,7 @@ class Marks:
 
     steps: tuple[StepMark, ...]
     end: int | None = None
-    made_by: dict | None = None
+    made_by: dict[str, Any] | None = None
 
     def to_json(self) -> str:
         """The marks as ``NAME.steps.json`` holds them.
