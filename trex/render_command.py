@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+import tracing
 from geometry.errors import GeometryError
 from geometry.io import AnyPolygon
 from story.pseudocode import PANELS
@@ -170,11 +171,12 @@ def scene_run(cls: type, polygon: str, shape: AnyPolygon | None = None) -> RunSp
     return RunSpec(algorithm, polygon, heuristic=heuristic_of(cls), shape=shape)
 
 
-def run_once(spec: RunSpec) -> None:
+def run_once(spec: RunSpec) -> tracing.Log:
     """Run ``spec`` once, without drawing, so that an input the algorithm rejects (a triangle
-    has no diagonal …) is found before rendering starts. Raises one of :data:`RUN_ERRORS`;
-    the caller says it in one line, naming the polygon."""
-    spec.log()
+    has no diagonal …) is found before rendering starts; its log, for a command that shows it
+    (the player, the slides' page). Raises one of :data:`RUN_ERRORS`; the caller says it in
+    one line, naming the polygon."""
+    return spec.log()
 
 
 def scene_input(cls: type, polygon: str | None, panel: str | None = None,
