@@ -236,7 +236,8 @@ def inflight_encoders(cfg: Path = MANIM_CFG) -> int | None:
 
 def render_into(make_scene: Callable[[], Scene], output: Path, fmt: str, quality: str,
                 *, progress: bool = True, srt: bool = True,
-                signals: Signals | None = None, steps: dict | None = None) -> Path:
+                signals: Signals | None = None, marks_made_by: dict | None = None,
+                ) -> Path:
     """Render ``make_scene()`` with manim and move the finished file to ``output``.
 
     With ``progress``, manim's progress bars are shown when stderr is a terminal.
@@ -244,11 +245,11 @@ def render_into(make_scene: Callable[[], Scene], output: Path, fmt: str, quality
     ``os.replace`` is atomic) and removes it whatever happens. With ``srt``, the subtitle
     file manim writes beside a video is moved to ``output`` with suffix ``.srt``.
     With ``signals`` (from :func:`interrupts_raise`), a signal whose exception got lost
-    still cancels the move, and one arriving after the move no longer counts. With ``steps``
-    (what made the render: its settings), the step marks the scene noted while rendering
-    (:mod:`metaphors.steps`) are written beside the video as ``NAME.steps.json``
-    (:mod:`trex.clips`), ``steps`` as their ``made_by``. Without ``signals``, SIGINT and
-    SIGTERM raise :class:`Interrupted` while it renders (:func:`interrupts_raise`): either
+    still cancels the move, and one arriving after the move no longer counts. With
+    ``marks_made_by`` (what made the render: its settings), the step marks the scene noted
+    while rendering (:mod:`metaphors.steps`) are written beside the video as
+    ``NAME.steps.json`` (:mod:`trex.clips`), ``marks_made_by`` as their ``made_by``. Without
+    ``signals``, SIGINT and SIGTERM raise :class:`Interrupted` while it renders (:func:`interrupts_raise`): either
     way, manim's encoder threads are closed however the render ends (:mod:`trex.encoders`).
     """
     with contextlib.ExitStack() as own:
@@ -258,7 +259,7 @@ def render_into(make_scene: Callable[[], Scene], output: Path, fmt: str, quality
                                      dir=output.parent))
         try:
             return _render_in(make_scene, temp, output, fmt, quality, progress=progress,
-                              srt=srt, signals=signals, steps=steps)
+                              srt=srt, signals=signals, marks_made_by=marks_made_by)
         finally:  # still under the handler: a second signal does not stop the removal
             shutil.rmtree(temp, ignore_errors=True)
 
@@ -286,7 +287,7 @@ def _settings(media: Path, fmt: str, quality: str, progress: bool) -> dict:
 
 def _render_in(make_scene: Callable[[], Scene], temp: Path, output: Path, fmt: str,
                quality: str, *, progress: bool, srt: bool, signals: Signals,
-               steps: dict | None) -> Path:
+               marks_made_by: dict | None) -> Path:
     """:func:`render_into`'s work, in its temporary directory ``temp``."""
     from manim import tempconfig
 
@@ -300,7 +301,8 @@ def _render_in(make_scene: Callable[[], Scene], temp: Path, output: Path, fmt: s
             guard.stop()  # no encoder thread left waiting for frames: the process can exit
             raise
         produced = _artifact(scene, fmt, media)
-    marks = _write_marks(scene, produced, steps) if steps is not None else None
+    marks = (_write_marks(scene, produced, marks_made_by) if marks_made_by is not None
+             else None)
     with signals.deferred():  # the moves happen together, or not at all
         signals.check()
         subtitles = produced.with_suffix(".srt")

@@ -134,7 +134,7 @@ def _scene_slides(cls: type[TraceScene], quality: str, subtitle: str, target: Pa
         video = built / "render" / "scene.mp4"
         video.parent.mkdir()
         render_into(cls, video, "mp4", QUALITIES[quality], progress=False, srt=False,
-                    steps={"scene": cls.__name__, "quality": quality})
+                    marks_made_by={"scene": cls.__name__, "quality": quality})
         found = probe(video)
         shown = build_slides(built, [Source(video, read_marks(video))], cls.title, subtitle,
                              (found.width, found.height))
