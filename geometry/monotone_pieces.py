@@ -33,7 +33,7 @@ import tracing
 from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import Point, orient
-from geometry.results import Triangle
+from geometry.results import TriangleIndices
 
 
 @dataclass(frozen=True)
@@ -110,7 +110,7 @@ def _fans(polygon: Polygon | PolygonWithHoles, diagonals: list[tuple[int, int]])
 
 
 @tracing.traced
-def triangulate_monotone_piece(polygon: Polygon | PolygonWithHoles, piece: MonotonePiece) -> list[Triangle]:
+def triangulate_monotone_piece(polygon: Polygon | PolygonWithHoles, piece: MonotonePiece) -> list[TriangleIndices]:
     """The stack triangulation of one y-monotone piece, counter-clockwise triples.
 
     The stack holds the chain of vertices that wait to be triangulated; every change to it
@@ -122,7 +122,7 @@ def triangulate_monotone_piece(polygon: Polygon | PolygonWithHoles, piece: Monot
         return [ids]
     points = polygon.points
     order, on_left = _merged_chains(polygon, ids)
-    triangles: list[Triangle] = []
+    triangles: list[TriangleIndices] = []
     stack: list[int] = []
     push(stack, order[0])
     push(stack, order[1])
@@ -148,7 +148,7 @@ def push(stack: list[int], u: int) -> None:
 
 
 @tracing.traced(exclude_args=("points",))
-def cut_off(points: Sequence[Point], stack: list[int], u: int) -> Triangle:
+def cut_off(points: Sequence[Point], stack: list[int], u: int) -> TriangleIndices:
     """u sees the vertex below the stack's top: the triangle (below, top, u) is cut off and
     the top leaves the stack (the call's ``stack`` is the chain before)."""
     top = stack.pop()
@@ -175,7 +175,7 @@ def _cuts_off(points: Sequence[Point], s: int, last: int, u: int, left: bool) ->
     return turn > 0 if left else turn < 0
 
 
-def _ccw(points: Sequence[Point], a: int, b: int, c: int) -> Triangle:
+def _ccw(points: Sequence[Point], a: int, b: int, c: int) -> TriangleIndices:
     turn = orient(points[a], points[b], points[c])
     if turn == 0:
         raise AssertionError("a monotone piece produced a zero-area triangle")
