@@ -33,7 +33,7 @@ from geometry.io import read_polygon
 from geometry.monotone import Sweep, classify_vertex, make_monotone
 from geometry.monotone_pieces import monotone_pieces
 from geometry.polygon import Polygon
-from geometry.results import Triangle
+from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.figure_plots import Area, Series, line_plot
@@ -187,7 +187,7 @@ class Circumcircle:
     """A triangle's circumcircle: its centre and squared radius, exactly, and the polygon's
     vertices strictly inside it."""
 
-    triangle: Triangle
+    triangle: TriangleIndices
     centre: tuple[Fraction, Fraction]
     radius2: Fraction
     inside: list[int]
@@ -197,7 +197,7 @@ class Circumcircle:
         return math.sqrt(self.radius2)
 
 
-def circumcircle(polygon: Polygon, triangle: Triangle) -> Circumcircle:
+def circumcircle(polygon: Polygon, triangle: TriangleIndices) -> Circumcircle:
     """The circle through the triangle's corners, and the vertices strictly inside it
     (exact: rationals)."""
     (ax, ay), (bx, by), (cx, cy) = ([Fraction(c) for c in polygon.points[k]] for k in triangle)
@@ -260,7 +260,7 @@ def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
 # --- the recap: three triangulations -------------------------------------------------------------
 
 
-def recap_triangulations(polygon: Polygon) -> list[tuple[str, str, list[Triangle]]]:
+def recap_triangulations(polygon: Polygon) -> list[tuple[str, str, list[TriangleIndices]]]:
     """(algorithm, bound, triangles) for each of :data:`RECAPPED` (divide and conquer with
     Gravity, as the lecture ran it)."""
     return [(name, bound, triangulate(polygon, name).triangles) for name, bound in RECAPPED]
