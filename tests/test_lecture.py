@@ -578,3 +578,27 @@ def test_a_card_with_a_figure_is_not_text_alone():
     gravity = next(c for c in lecture_chapters() if c.slug == "gravity")
     text_only, total = text_only_seconds(build(_chapter_class(gravity).handed()).data)
     assert 0 < text_only < total  # its card has no figure yet
+
+
+def test_the_overview_poses_the_problem_with_a_black_box():
+    """Issue 22 item 2: the overview's divide and conquer asks a black box for each inner
+    diagonal (gravity is taught in chapter 3): each piece lights up, the box is asked, the
+    diagonal comes out and is split along, down to n − 2 triangles; no ball, band or
+    gravity arrow, and no word of gravity. The chapter stays at least 75 s."""
+    from tests.reading_rules import graph_nodes
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    overview = next(c for c in lecture_chapters() if c.slug == "overview")
+    data = build(_chapter_class(overview).handed()).data
+    names = {n.get("name") for n in graph_nodes(data)}
+    assert "finder" in names and not names & {"ball", "band", "gravity", "hit"}
+    words = [c["text"] for c in data["cues"]] + [n["text"] for n in graph_nodes(data)
+                                                 if n.get("text")]
+    assert not [w for w in words if "gravity" in w.lower() or "ball" in w.lower()]
+    cues = [c["text"] for c in data["cues"]]
+    asked = cues.count("Find an inner diagonal of this polygon")
+    assert asked >= 4 and sum(c.startswith("Out comes ") for c in cues) == asked
+    counters = [n["text"] for n in graph_nodes(data) if n.get("name") == "counter"]
+    assert counters and counters[-1] == "n − 2 = 13 − 2 = 11 triangles"
+    assert sum(p["run_time"] for p in data["plays"]) >= 75
