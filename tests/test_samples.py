@@ -7,6 +7,7 @@ import math
 import random
 import subprocess
 import sys
+from itertools import pairwise
 from pathlib import Path
 
 import pytest
@@ -263,7 +264,7 @@ def test_the_lecture_polygon_keeps_what_the_lecture_needs():
     t = triangle_at(p, leftmost_vertex(p))
     assert len(candidates_in_triangle(p, t)) >= 2
     found = ears(points)
-    assert any((b - a) % len(points) > 1 for a, b in zip(found, found[1:], strict=False))
+    assert any((b - a) % len(points) > 1 for a, b in pairwise(found))
     with tracing.record() as log:
         monotone(p)
     kinds = [e.result for e in log.events if e.kind == "return" and e.name == "classify_vertex"]
