@@ -11,6 +11,7 @@ colours.
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass
 
 from manim import (
@@ -37,7 +38,7 @@ from geometry.diagonals import find_diagonal
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
-from geometry.predicates import orient, signed_area2, squared_distance
+from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
 from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.tags import tag
@@ -94,8 +95,9 @@ def _label(words: str, theme: Theme, colour: str) -> Mobject:
 
 def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
                    theme: Theme) -> list[Mobject]:
-    """P cut into its n − 2 triangles (ear clipping's), the count, and the longest of its
-    inner diagonals drawn in green: the card names that idea first (issue 22 item 2)."""
+    """P cut into its n − 2 triangles (ear clipping's), the count, and one of its inner
+    diagonals drawn in green, the one seen best to be inside (long, and far from the other
+    vertices: their product the most): the card names that idea first (issue 22 item 2)."""
     triangles = triangulate(polygon, "ear-clipping").triangles
     pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
                                    theme), "result", "figure:triangle")
@@ -104,9 +106,9 @@ def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
     cuts = sorted({tuple(sorted((t[k], t[k - 1]))) for t in triangles for k in range(3)}
                   - {tuple(sorted((v, (v + 1) % n))) for v in range(n)})
     marked: list[Mobject] = []
-    if cuts:  # a triangle has none
-        i, j = max(cuts, key=lambda c: float(squared_distance(polygon.points[c[0]],
-                                                              polygon.points[c[1]])))
+    if cuts:  # a triangle has none; a long one passing far from the other vertices
+        i, j = max(cuts, key=lambda c: _clearance(polygon, *c) * math.dist(
+            polygon.points[c[0]], polygon.points[c[1]]))
         marked.append(tag(Line(frame.to_scene(polygon.points[i]),
                                frame.to_scene(polygon.points[j]), color=theme.result,
                                stroke_width=theme.stroke * 1.6), "result",
@@ -134,6 +136,19 @@ def _diagonal(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> l
     sizes = " and ".join(str(len(h)) for h in halves)
     words = f"{name} splits {polygon.n} vertices into {sizes}"
     return [*tints, line, tag(_label(words, theme, theme.result), None, "figure:label")]
+
+
+def _clearance(polygon: Polygon, i: int, j: int) -> float:
+    """How near the segment from vertex ``i`` to vertex ``j`` passes to P's other vertices
+    (in P's units)."""
+    (ax, ay), (bx, by) = polygon.points[i], polygon.points[j]
+    dx, dy = bx - ax, by - ay
+    near = math.inf
+    for k, (px, py) in enumerate(polygon.points):
+        if k not in (i, j):
+            t = max(0.0, min(1.0, ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy)))
+            near = min(near, math.hypot(px - ax - t * dx, py - ay - t * dy))
+    return near
 
 
 def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
@@ -169,7 +184,10 @@ def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
     ``figure:<word>``); none if no side of ``v`` has room for the word."""
     at = frame.to_scene(polygon.points[v])
     # in ink: amber marks the candidates, green and red what holds and what fails
-    shown = typeset.text(word, font=theme.font, size=theme.label_size, colour=theme.ink)
+    # capitalised, as the vertices' labels: a word of short letters ("convex") then still
+    # stands 2.5 % of the frame's height at the labels' size
+    shown = typeset.text(word.capitalize(), font=theme.font, size=theme.label_size,
+                         colour=theme.ink)
     outline = [frame.to_scene(p)[:2] for p in polygon.points]
     labels = [_box(marker[1]) for marker in vertex_markers(polygon, frame, theme)]
     for side in (DOWN, UP, LEFT, RIGHT, DL, DR, UL, UR):

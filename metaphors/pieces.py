@@ -128,7 +128,9 @@ def _whole(board: Board, last: Sequence[Sequence[str]]) -> list[Playable]:
     if board.panel.mode == PSEUDOCODE:
         count = tag(text(f"n − 2 = {n} − 2\n= {len(whole)} triangles", font=theme.font,
                          size=theme.label_size, colour=theme.result), None, "counter")
-        board.keep("counter", count.move_to(BESIDE))
+        # from the black box's left edge: the picture's right-most labels stay clear
+        count.move_to((BESIDE[0] - FINDER_WIDTH / 2 + count.width / 2, BESIDE[1] - 0.4, 0))
+        board.keep("counter", count)
         shown.append(FadeIn(count))
     board.keep("triangulation", VGroup(*whole))
     return shown
@@ -138,12 +140,14 @@ def _whole(board: Board, last: Sequence[Sequence[str]]) -> list[Playable]:
 #: black box stands and, after the last split, the count
 BESIDE = ((METAPHOR.x + METAPHOR.width / 2 + PANEL_POLYGON.x - PANEL_POLYGON.width / 2) / 2
           + 0.15, PANEL_POLYGON.y - 0.4, 0.0)
+FINDER_WIDTH = 1.2  # the black box's
 
 
 def _finder(board: Board) -> VGroup:
     """The black box: a closed box with a question mark, and what it is asked."""
     theme = board.theme
-    box = RoundedRectangle(corner_radius=0.12, width=1.2, height=0.9, stroke_color=theme.called,
+    box = RoundedRectangle(corner_radius=0.12, width=FINDER_WIDTH, height=0.9,
+                           stroke_color=theme.called,
                            stroke_width=theme.stroke, fill_color=theme.background,
                            fill_opacity=1.0)
     mark = text("?", font=theme.font, size=48, colour=theme.called).move_to(box)

@@ -109,7 +109,7 @@ def test_the_frame_marks_a_convex_and_a_reflex_vertex_outside_p():
         v = min(range(p.n), key=lambda k: float(
             ((frame.to_scene(p.points[k]) - ring.get_center()) ** 2).sum()))
         assert orient(p.points[v - 1], p.points[v], p.points[(v + 1) % p.n]) == sign, word
-        assert text.original_text == word
+        assert text.original_text == word.capitalize()
         (x0, y0), (x1, y1) = text.get_corner([-1, -1, 0])[:2], text.get_corner([1, 1, 0])[:2]
         assert not shapely.box(x0, y0, x1, y1).intersects(outline), word
     b = min(range(p.n), key=lambda k: p.points[k])
@@ -117,9 +117,9 @@ def test_the_frame_marks_a_convex_and_a_reflex_vertex_outside_p():
     assert abs(ring.get_center() - frame.to_scene(p.points[b])).max() < 1e-9  # B, the left-most
 
 
-_FIRST_MARKS = {"convex": r"\bconvex\b", "reflex": r"\breflex\b", "ear": r"\bears?\b",
-                "inner-diagonal": r"\binner diagonals?\b", "candidate": r"\bcandidates?\b",
-                "T": r"\bT\b"}
+_FIRST_MARKS = {"convex": r"(?i)\bconvex\b", "reflex": r"(?i)\breflex\b",
+                "ear": r"(?i)\bears?\b", "inner-diagonal": r"(?i)\binner diagonals?\b",
+                "candidate": r"(?i)\bcandidates?\b", "T": r"\bT\b"}
 
 
 def test_each_taught_word_is_first_said_with_its_mark_on_the_picture():

@@ -600,5 +600,5 @@ def test_the_overview_poses_the_problem_with_a_black_box():
     asked = cues.count("Find an inner diagonal of this polygon")
     assert asked >= 4 and sum(c.startswith("Out comes ") for c in cues) == asked
     counters = [n["text"] for n in graph_nodes(data) if n.get("name") == "counter"]
-    assert counters and counters[-1] == "n − 2 = 13 − 2 = 11 triangles"
+    assert counters and counters[-1] == "n − 2 = 13 − 2\n= 11 triangles"
     assert sum(p["run_time"] for p in data["plays"]) >= 75
