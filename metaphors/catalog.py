@@ -68,9 +68,11 @@ READS: Mapping[str, Reading] = _merged(m.READS for m in MODULES)
 PERFORMS: Performances = _merged(m.PERFORMS for m in MODULES)
 
 
-def beats(log: Log, pacing: Pacing | None = None, shown_code: str | None = None) -> list[Beat]:
-    """The beats of a log, every metaphor's steps read."""
-    return storyboard(log, pacing, shown_code, readings=READS)
+def beats(log: Log, pacing: Pacing | None = None, shown_code: str | None = None, *,
+          black_box: bool = False) -> list[Beat]:
+    """The beats of a log, every metaphor's steps read (``black_box``: divide and
+    conquer's heuristic unseen, :func:`story.storyboard.storyboard`)."""
+    return storyboard(log, pacing, shown_code, readings=READS, black_box=black_box)
 
 
 def perform(board: Board, beat: Beat) -> None:

@@ -11,9 +11,24 @@ colours.
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass
 
-from manim import LEFT, Dot, Line, Mobject
+from manim import (
+    DL,
+    DOWN,
+    DR,
+    LEFT,
+    RIGHT,
+    UL,
+    UP,
+    UR,
+    Circle,
+    Dot,
+    Line,
+    Mobject,
+    VGroup,
+)
 from manim import Polygon as MPolygon
 
 from geometry.batch import in_closed_triangle
@@ -89,13 +104,26 @@ def _label(words: str, theme: Theme, colour: str) -> Mobject:
 
 def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
                    theme: Theme) -> list[Mobject]:
-    """P cut into its n − 2 triangles (ear clipping's), and the count."""
+    """P cut into its n − 2 triangles (ear clipping's), the count, and one of its inner
+    diagonals drawn in green, the one seen best to be inside (long, and far from the other
+    vertices: their product the most): the card names that idea first (issue 22 item 2)."""
     triangles = triangulate(polygon, "ear-clipping").triangles
     pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
                                    theme), "result", "figure:triangle")
               for k, t in enumerate(triangles)]
-    count = f"n = {polygon.n}: {len(triangles)} triangles, {len(triangles) - 1} diagonals"
-    return [*pieces, tag(_label(count, theme, theme.result), None, "figure:label")]
+    n = polygon.n
+    cuts = sorted({tuple(sorted((t[k], t[k - 1]))) for t in triangles for k in range(3)}
+                  - {tuple(sorted((v, (v + 1) % n))) for v in range(n)})
+    marked: list[Mobject] = []
+    if cuts:  # a triangle has none; a long one passing far from the other vertices
+        i, j = max(cuts, key=lambda c: _clearance(polygon, *c) * math.dist(
+            polygon.points[c[0]], polygon.points[c[1]]))
+        marked.append(tag(Line(frame.to_scene(polygon.points[i]),
+                               frame.to_scene(polygon.points[j]), color=theme.result,
+                               stroke_width=theme.stroke * 1.6), "result",
+                          "figure:inner-diagonal"))
+    count = f"n = {n}: {len(triangles)} triangles, {len(cuts)} inner diagonals"
+    return [*pieces, *marked, tag(_label(count, theme, theme.result), None, "figure:label")]
 
 
 def _diagonal(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
@@ -119,6 +147,19 @@ def _diagonal(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> l
     return [*tints, line, tag(_label(words, theme, theme.result), None, "figure:label")]
 
 
+def _clearance(polygon: Polygon, i: int, j: int) -> float:
+    """How near the segment from vertex ``i`` to vertex ``j`` passes to P's other vertices
+    (in P's units)."""
+    (ax, ay), (bx, by) = polygon.points[i], polygon.points[j]
+    dx, dy = bx - ax, by - ay
+    near = math.inf
+    for k, (px, py) in enumerate(polygon.points):
+        if k not in (i, j):
+            t = max(0.0, min(1.0, ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy)))
+            near = min(near, math.hypot(px - ax - t * dx, py - ay - t * dy))
+    return near
+
+
 def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
     """The frame every heuristic shares: B the left-most vertex, T = ABC shaded, and the
     candidates (P's vertices inside T) marked, in the colours the runs give them."""
@@ -132,7 +173,90 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
                 "argument", "figure:candidate") for k in inside]
     names = ", ".join(polygon.labels[k] for k in inside) or "none"
     words = f"T = {''.join(polygon.labels[k] for k in corners)}; candidates in T: {names}"
-    return [shaded, *dots, tag(_label(words, theme, theme.ink), None, "figure:label")]
+    # the words the card says first, on the picture: B convex, and a reflex vertex
+    kinds = [*_vertex_word(polygon, frame, theme, t.b.index, "convex"),
+             *next((w for v in _reflex(polygon)
+                    if (w := _vertex_word(polygon, frame, theme, v, "reflex"))), [])]
+    return [shaded, *dots, *kinds, tag(_label(words, theme, theme.ink), None, "figure:label")]
+
+
+def _reflex(polygon: Polygon) -> list[int]:
+    """P's reflex vertices (decided exactly)."""
+    n, pts = polygon.n, polygon.points
+    return [v for v in range(n) if orient(pts[v - 1], pts[v], pts[(v + 1) % n]) < 0]
+
+
+def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
+                 word: str) -> list[Mobject]:
+    """A ring round vertex ``v`` and ``word`` beside it: outside P, clear of its edges and
+    of the vertices' labels, inside the figure's half of the screen (tagged
+    ``figure:<word>``); none if no side of ``v`` has room for the word."""
+    at = frame.to_scene(polygon.points[v])
+    # in ink: amber marks the candidates, green and red what holds and what fails
+    # capitalised, as the vertices' labels: a word of short letters ("convex") then still
+    # stands 2.5 % of the frame's height at the labels' size
+    shown = typeset.text(word.capitalize(), font=theme.font, size=theme.label_size,
+                         colour=theme.ink)
+    outline = [frame.to_scene(p)[:2] for p in polygon.points]
+    labels = [_box(marker[1]) for marker in vertex_markers(polygon, frame, theme)]
+    for side in (DOWN, UP, LEFT, RIGHT, DL, DR, UL, UR):
+        for gap in (0.3, 0.55, 0.8):  # beyond the ring, then further out
+            shown.move_to(at + side * (gap + (shown.width if side[0] else shown.height) / 2))
+            box = _box(shown)
+            if _in_figure(box) and _clear(box, outline) and not any(
+                    _overlap(box, other) for other in labels):
+                ring = Circle(radius=0.17, color=theme.ink,
+                              stroke_width=theme.thin_stroke).move_to(at)
+                return [tag(VGroup(ring, shown), None, f"figure:{word}")]
+    return []
+
+
+Box = tuple[float, float, float, float]  # x0, y0, x1, y1 on screen
+
+
+def _box(mobject: Mobject, pad: float = 0.06) -> Box:
+    """A mobject's box on screen, ``pad`` wider on every side."""
+    (x0, y0), (x1, y1) = mobject.get_corner(DL)[:2], mobject.get_corner(UR)[:2]
+    return (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
+
+
+def _overlap(a: Box, b: Box) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _in_figure(box: Box) -> bool:
+    """Whether ``box`` lies in the figure's half of the screen, below the card's title."""
+    x, y = FIGURE_CENTER
+    return (max(-7.0, x - FIGURE_WIDTH / 2 - 0.4) <= box[0] and box[2] <= x + FIGURE_WIDTH / 2
+            and y - FIGURE_HEIGHT / 2 - 0.4 <= box[1] and box[3] <= y + FIGURE_HEIGHT / 2 + 0.4)
+
+
+def _clear(box: Box, outline: list) -> bool:
+    """Whether ``box`` lies outside the polygon ``outline`` (scene points) and no edge of it
+    passes through the box."""
+    x0, y0, x1, y1 = box
+    corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+    if any(_inside(c, outline) for c in corners):
+        return False
+    return not any(_meets_box(a, b, x0, y0, x1, y1)
+                   for a, b in zip(outline, [*outline[1:], outline[0]], strict=True))
+
+
+def _inside(point: tuple[float, float], outline: list) -> bool:
+    """Even-odd test: whether ``point`` is inside the closed ``outline``."""
+    x, y = point
+    inside = False
+    for (ax, ay), (bx, by) in zip(outline, [*outline[1:], outline[0]], strict=True):
+        if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
+            inside = not inside
+    return inside
+
+
+def _meets_box(a, b, x0: float, y0: float, x1: float, y1: float) -> bool:
+    """Whether the segment ``a``–``b`` passes through the box (sampled finely enough for a
+    word beside a vertex: every 1/64 of the segment)."""
+    return any(x0 <= a[0] + (b[0] - a[0]) * k / 64 <= x1
+               and y0 <= a[1] + (b[1] - a[1]) * k / 64 <= y1 for k in range(65))
 
 
 def _claims(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:

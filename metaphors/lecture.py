@@ -82,6 +82,8 @@ class Run:
     """An algorithm run on a polygon, played by the metaphor scenes.
 
     ``polygon`` None: the lecture's polygon (:meth:`LectureScene.lecture_polygon`).
+    ``black_box``: divide and conquer's heuristic is not shown, only each diagonal asked for
+    and the one that comes out (:attr:`metaphors.scene.TraceScene.black_box`).
     """
 
     algorithm: str
@@ -91,6 +93,7 @@ class Run:
     box: Box = METAPHOR
     pacing: Pacing = DEFAULT_PACING
     speed: float = 0.8  # × every beat's run time
+    black_box: bool = False
 
     def spec(self, lecture_polygon: str) -> RunSpec:
         """The run this segment plays: on its own polygon, else on the lecture's."""
@@ -260,6 +263,7 @@ class LectureScene(TraceScene):
         self.metaphor_box = run.box
         self.pacing = run.pacing
         self.speed = run.speed
+        self.black_box = run.black_box
         self.play_log(log, run.title)
         self.wait(0.8)
 
@@ -282,7 +286,8 @@ class LectureScene(TraceScene):
         play_analysis(self, analysis, self.theme)
 
     def beats(self, log):
-        return [replace(b, pace=b.pace * self.speed) for b in catalog.beats(log, self.pacing)]
+        return [replace(b, pace=b.pace * self.speed)
+                for b in catalog.beats(log, self.pacing, black_box=self.black_box)]
 
     def play_compare(self, compare: Compare) -> None:
         polygon = read_polygon(compare.polygon or self.lecture_polygon())

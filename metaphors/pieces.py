@@ -1,20 +1,28 @@
 """Divide and conquer (Lennes): the verified diagonal becomes an edge and the polygon falls into
 two pieces, each tinted unlike its neighbours; a piece that is a triangle is finished and fills
-in. The pieces, their points and labels come from the log (the ``split`` call and the pieces it
-enters).
+in; after the last split the whole triangulation shows with its count, n − 2. The pieces, their
+points and labels come from the log (the ``split`` call and the pieces it enters).
+
+With its heuristic a black box (:class:`story.beats.FindDiagonal`), the piece worked on lights
+up and a box beside the picture asks for its inner diagonal; the claim that comes out is drawn
+by the frame every run shares (:mod:`metaphors.basics`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
 
-from manim import FadeIn, Mobject
+from manim import DOWN, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
-from metaphors.board import Board
+from metaphors.board import Board, Playable
+from metaphors.drawing import triangulation_pieces
+from metaphors.layout import METAPHOR, PANEL_POLYGON
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
-from story.beats import Beat, beat_kind
+from rendering.typeset import text
+from story.beats import Beat, FindDiagonal, beat_kind
+from story.pseudocode import PSEUDOCODE
 from story.refs import state_of, target_of
 from story.storyboard import Reading, Walk
 from tracing import Event
@@ -87,6 +95,10 @@ def split(board: Board, beat: Split) -> None:
     anims += board.drop("verdict", f"piece:{beat.parent}")
     if board.shape.get_fill_opacity() > 0:
         anims.append(board.shape.animate.set_fill(opacity=0))
+    if all(len(p) == 3 for p in beat.points) and not any(
+            key.startswith("piece:") for key in board.objects):
+        board.play(beat, *anims, *_whole(board, beat.labels), run_time=1.2)
+        return
     chosen: set[str] = set()
     for piece, points, labels in zip(beat.pieces, beat.points,
                                      beat.labels, strict=False):
@@ -99,5 +111,67 @@ def split(board: Board, beat: Split) -> None:
     board.play(beat, *anims, run_time=1.2)
 
 
+def _whole(board: Board, last: Sequence[Sequence[str]]) -> list[Playable]:
+    """The last split, into the triangles ``last`` (their labels): the finished triangles
+    give way to the whole triangulation, each triangle its own colour, and the count it had
+    to reach, n − 2."""
+    theme = board.theme
+    done = [k for k in board.objects if k.startswith("triangle:")]
+    corners = [[board.where[label] for label in labels]
+               for labels in [*(_labels(board.objects[k]) for k in done), *last]]
+    whole = triangulation_pieces(corners, board.at, theme)
+    n = board.polygon.n
+    shown: list[Playable] = [*board.drop(*done, "finder"), *[FadeIn(t) for t in whole]]
+    # the count where the black box stood, beside the picture, when the panel's rows leave
+    # room there; a panel of source takes the whole right half, and under the picture the
+    # count would meet the subtitle: the triangles alone then
+    if board.panel.mode == PSEUDOCODE:
+        count = tag(text(f"n − 2 = {n} − 2\n= {len(whole)} triangles", font=theme.font,
+                         size=theme.label_size, colour=theme.result), None, "counter")
+        # from the black box's left edge: the picture's right-most labels stay clear
+        count.move_to((BESIDE[0] - FINDER_WIDTH / 2 + count.width / 2, BESIDE[1] - 0.4, 0))
+        board.keep("counter", count)
+        shown.append(FadeIn(count))
+    board.keep("triangulation", VGroup(*whole))
+    return shown
+
+
+#: beside the picture, between it and the panel's polygon, above the panel's rows: where the
+#: black box stands and, after the last split, the count
+BESIDE = ((METAPHOR.x + METAPHOR.width / 2 + PANEL_POLYGON.x - PANEL_POLYGON.width / 2) / 2
+          + 0.15, PANEL_POLYGON.y - 0.4, 0.0)
+FINDER_WIDTH = 1.2  # the black box's
+
+
+def _finder(board: Board) -> VGroup:
+    """The black box: a closed box with a question mark, and what it is asked."""
+    theme = board.theme
+    box = RoundedRectangle(corner_radius=0.12, width=FINDER_WIDTH, height=0.9,
+                           stroke_color=theme.called,
+                           stroke_width=theme.stroke, fill_color=theme.background,
+                           fill_opacity=1.0)
+    mark = text("?", font=theme.font, size=48, colour=theme.called).move_to(box)
+    words = VGroup(*[text(row, font=theme.font, size=theme.label_size, colour=theme.ink)
+                     for row in ("an inner", "diagonal?")]).arrange(DOWN, buff=0.08)
+    finder = VGroup(box, mark, words.next_to(box, DOWN, buff=0.15))
+    return tag(finder.move_to(BESIDE), "called", "finder")
+
+
+def find(board: Board, beat: FindDiagonal) -> None:
+    """The piece worked on lights up, and the black box is asked for its inner diagonal."""
+    theme = board.theme
+    finder = board.objects.get("finder")
+    anims: list[Playable]
+    if finder is None:
+        finder = _finder(board)
+        board.keep("finder", finder)
+        anims = [FadeIn(finder, shift=0.2 * DOWN)]
+    else:
+        anims = [Indicate(finder[1], color=theme.argument, scale_factor=1.3)]
+    piece = board.objects.get(f"piece:{beat.piece}", board.shape)
+    anims.append(piece.animate.set_fill(theme.called, opacity=theme.active_opacity))
+    board.play(beat, *anims, run_time=1.2)
+
+
 READS: Mapping[str, Reading] = {"split": read_split}
-PERFORMS: Performances = performs(act(Split, split))
+PERFORMS: Performances = performs(act(Split, split), act(FindDiagonal, find))

@@ -115,6 +115,9 @@ class TraceScene(SpecScene, Recorded, Scene):
     #: whether the panel's call line shows each step's real call (``nearest_to(B, [D, E]) →
     #: D``): a programmer wants it; the lecture, which shows no code, turns it off
     call_line = True
+    #: whether divide and conquer's heuristic is a black box: each diagonal is asked for and
+    #: comes out, none of the heuristic's steps shown (the overview, before any is taught)
+    black_box = False
 
     def __init__(self, renderer=None, **kwargs):
         if renderer is None and config.renderer == RendererType.CAIRO:
@@ -162,7 +165,7 @@ class TraceScene(SpecScene, Recorded, Scene):
         captions_of(self).finish()  # the last cue lasts as long as its caption is shown
 
     def beats(self, log) -> list[Beat]:
-        return catalog.beats(log, self.pacing)
+        return catalog.beats(log, self.pacing, black_box=self.black_box)
 
     def play_log(self, log, title: str) -> Board:
         """Turn one log into beats and play them on a fresh board (both kept, as

@@ -121,6 +121,15 @@ class Verdict(Beat):
     edge: list[str] | None = None
 
 
+@beat_kind("find")
+class FindDiagonal(Beat):
+    """Divide and conquer asks for an inner diagonal of the polygon ``piece`` (a key of
+    the log), the heuristic that answers a black box: the overview poses the problem
+    before any heuristic is taught, so none of its own steps is shown."""
+
+    piece: str
+
+
 @beat_kind("note")
 class Note(Beat):
     """A caption only; ``details`` are the note's own fields from the log, if any."""

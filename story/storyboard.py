@@ -38,6 +38,7 @@ from story.beats import (
     Call,
     Candidates,
     Claim,
+    FindDiagonal,
     Note,
     Pick,
     ShapeChange,
@@ -150,8 +151,10 @@ class Walk:
     """
 
     def __init__(self, log: Log, pacing: Pacing, shown_code: str | None, user: str | None,
-                 rows: tuple[PseudocodeRow, ...] = (), heuristic_function: str | None = None):
+                 rows: tuple[PseudocodeRow, ...] = (), heuristic_function: str | None = None,
+                 black_box: bool = False):
         self.log, self.pacing, self.shown_code, self.user = log, pacing, shown_code, user
+        self.black_box = black_box  # the heuristic's steps unseen: see :func:`storyboard`
         self.rows = rows  # the pseudocode of the run
         self.lit: int | None = None  # the pseudocode row lit so far
         self.live: dict[str, dict[str, Any]] = {}
@@ -361,25 +364,48 @@ def spoken_pseudocode(log: Log) -> tuple[PseudocodeRow, ...]:
 
 
 def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = None,
-               readings: Mapping[str, Reading] = MappingProxyType({})) -> list[Beat]:
+               readings: Mapping[str, Reading] = MappingProxyType({}), *,
+               black_box: bool = False) -> list[Beat]:
     """The beats of a log, in order.
 
     ``readings`` map traced names to the readings of the metaphors' steps (the frame's are
     always read). ``shown_code`` names the traced function whose source the panel shows
     (default: the log's ``shown``, else ``algorithm`` meta); each beat's ``line`` is the
     source line lit in it, and its ``row`` the row of the run's pseudocode
-    (:func:`pseudocode_of`) lit in it.
+    (:func:`pseudocode_of`) lit in it. ``black_box``: divide and conquer's heuristic is
+    a black box — each call of it is one question (a :class:`~story.beats.FindDiagonal`)
+    and the diagonal that comes out (its claim and verdict), none of its own steps.
+
+    >>> from story.runs import run_logged
+    >>> log = run_logged("divide-and-conquer", "counterexample", "gravity")
+    >>> [b.action for b in storyboard(log, black_box=True)][:6]
+    ['polygon', 'find', 'claim', 'verdict', 'find', 'claim']
     """
     shown = shown_code or meta(log, "shown") or meta(log, "algorithm")
     walk = Walk(log, pacing or Pacing(), shown, meta(log, "user_heuristic"),
-                pseudocode_of(log), meta(log, "heuristic_function"))
+                pseudocode_of(log), meta(log, "heuristic_function"), black_box)
     table = {**FRAME_READS, **readings}
     beats: list[Beat] = []
     for event in log.events:
-        beats.extend(_beats_for(walk, event, table))
+        made = list(_beats_for(walk, event, table))
+        beats.extend(_boxed(walk, made) if walk.black_box and walk.heuristic_polygon else made)
         walk.track(event)
     return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
                       walk.noun, kept=[id(b) in walk.kept for b in beats])
+
+
+def _boxed(walk: Walk, beats: list[Beat]) -> list[Beat]:
+    """The beats made inside a black-boxed heuristic that the viewer sees: the question,
+    and the diagonal that comes out (the claim, said as the box's answer, and its verdict)."""
+    seen: list[Beat] = []
+    for beat in beats:
+        if isinstance(beat, Claim):
+            answer = replace(beat, caption=f"Out comes {''.join(beat.labels)}")
+            walk.counted[id(answer)] = walk.counted[id(beat)]  # counted as the claim it says
+            seen.append(answer)
+        elif isinstance(beat, (FindDiagonal, Verdict)):
+            seen.append(beat)
+    return seen
 
 
 def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[Beat]:
@@ -390,6 +416,9 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
                             labels=state_of(e)["labels"], holes=state_of(e).get("holes", []))
         return
     if e.kind == "call" and "polygon" in (e.args or {}) and walk.is_heuristic(e.name):
+        if walk.black_box and not walk.heuristic_polygon:  # asked once, not again inside
+            yield walk.beat(FindDiagonal, "Find an inner diagonal of this polygon", e,
+                            piece=ref(e, "polygon"))
         walk.heuristic_polygon.append(ref(e, "polygon"))
         return
     if e.kind == "return" and walk.is_heuristic(e.name) and walk.heuristic_polygon:

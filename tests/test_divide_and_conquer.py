@@ -119,3 +119,23 @@ def test_every_heuristic_name_is_usable():
         called = [e.name for e in log.events if e.kind == "call" and e.name in HEURISTICS]
         assert called == [heuristic] * (p.n - 3), heuristic
         assert result.valid and verify_triangulation(p, result.triangles), heuristic
+
+
+def test_a_black_box_shows_only_the_question_and_the_diagonal_out():
+    """Divide and conquer with its heuristic a black box: per piece, the question, the claim
+    that comes out and its verdict, then the split; none of the heuristic's own steps, and
+    the same diagonals in the same order as the run shown in full."""
+    from story.registry import pseudocode
+    from story.runs import run_logged
+    from story.storyboard import storyboard
+
+    log = run_logged("divide-and-conquer", "lecture", "gravity")
+    boxed = storyboard(log, black_box=True)
+    actions = [b.action for b in boxed]
+    assert set(actions) == {"polygon", "find", "claim", "verdict"}  # split: pieces' reading
+    assert actions.count("find") == actions.count("claim") == 10
+    full = [b.labels for b in storyboard(log) if b.action == "claim"]
+    assert [b.labels for b in boxed if b.action == "claim"] == full
+    asked = boxed[1].row  # the question lights divide and conquer's own row
+    assert asked is not None
+    assert "find an inner diagonal" in pseudocode("divide-and-conquer")[asked].text

@@ -36,7 +36,7 @@ def test_the_triangulation_has_n_minus_2_triangles():
     p = read_polygon("lecture")
     drawn = figure_mobjects(Figure("triangulation"), "lecture")
     assert len(named(drawn, "figure:triangle")) == p.n - 2
-    assert label(drawn) == f"n = {p.n}: {p.n - 2} triangles, {p.n - 3} diagonals"
+    assert label(drawn) == f"n = {p.n}: {p.n - 2} triangles, {p.n - 3} inner diagonals"
 
 
 def test_the_ears_are_the_convex_vertices_whose_neighbours_see_each_other():
@@ -494,3 +494,86 @@ def test_a_faster_figure_stays_in_its_half_and_its_words_do_not_overlap(kind, po
         for b in boxes[i + 1:]:
             apart = a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1]
             assert apart, (a[4], b[4])
+
+
+def test_the_triangulation_marks_one_inner_diagonal():
+    """Issue 22 item 2: the card that first says "inner diagonal" draws one: the longest
+    diagonal of the triangulation shown, in green, and an inner diagonal of P."""
+    from manim import Line
+
+    p = read_polygon("lecture")
+    drawn = figure_mobjects(Figure("triangulation"), "lecture")
+    [line] = named(drawn, "figure:inner-diagonal")
+    assert isinstance(line, Line) and line.trex_role == "result"
+    ends = {tuple(round(c, 6) for c in line.get_start()[:2]),
+            tuple(round(c, 6) for c in line.get_end()[:2])}
+    shown = named(drawn, "figure:vertices")[0]
+    at = {tuple(round(c, 6) for c in marker[0].get_center()[:2]): k
+          for k, marker in enumerate(shown)}
+    i, j = (at[e] for e in ends)
+    assert is_inner_diagonal(p, i, j)
+
+
+def test_the_frame_marks_a_convex_and_a_reflex_vertex_outside_p():
+    """Issue 22 item 2: the frame's card marks B convex and a reflex vertex, each a ring on
+    the vertex and its word beside it, outside P."""
+    import shapely
+
+    from metaphors.drawing import Frame
+    from metaphors.figures import FIGURE_CENTER, FIGURE_HEIGHT, FIGURE_WIDTH
+
+    p = read_polygon("lecture")
+    drawn = figure_mobjects(Figure("frame"), "lecture")
+    frame = Frame(p.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
+    outline = shapely.Polygon([frame.to_scene(q)[:2] for q in p.points])
+    for word, sign in (("convex", 1), ("reflex", -1)):
+        [mark] = named(drawn, f"figure:{word}")
+        ring, text = mark
+        v = min(range(p.n), key=lambda k: float(
+            ((frame.to_scene(p.points[k]) - ring.get_center()) ** 2).sum()))
+        assert orient(p.points[v - 1], p.points[v], p.points[(v + 1) % p.n]) == sign, word
+        assert text.original_text == word.capitalize()
+        (x0, y0), (x1, y1) = text.get_corner([-1, -1, 0])[:2], text.get_corner([1, 1, 0])[:2]
+        assert not shapely.box(x0, y0, x1, y1).intersects(outline), word
+    b = min(range(p.n), key=lambda k: p.points[k])
+    ring = named(drawn, "figure:convex")[0][0]
+    assert abs(ring.get_center() - frame.to_scene(p.points[b])).max() < 1e-9  # B, the left-most
+
+
+_FIRST_MARKS = {"convex": r"(?i)\bconvex\b", "reflex": r"(?i)\breflex\b",
+                "ear": r"(?i)\bears?\b", "inner-diagonal": r"(?i)\binner diagonals?\b",
+                "candidate": r"(?i)\bcandidates?\b", "T": r"\bT\b"}
+
+
+def test_each_taught_word_is_first_said_with_its_mark_on_the_picture():
+    """Issue 22 item 2: where the lecture (chapters in order, their dry-run graphs) first
+    says convex, reflex, ear, inner diagonal, candidate or T — in a caption or any text on
+    screen — a figure's mark of that name (``figure:reflex`` …) is on screen."""
+    import re
+
+    from tests.reading_rules import INCOMING, OUTGOING, animation_nodes
+    from tests.test_lecture import _chapter_class
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    left, missing = dict(_FIRST_MARKS), []
+    for chapter in lecture_chapters():
+        on_screen: set[str] = set()
+        for k, play in enumerate(build(_chapter_class(chapter).handed()).data["plays"]):
+            for anim in play["animations"]:
+                name = anim.get("mobject", {}).get("name")
+                if anim["type"] in INCOMING:
+                    on_screen.add(name)
+                elif anim["type"] in OUTGOING:
+                    on_screen.discard(name)
+            texts = [play["subcaption"] or "", *(n["text"] for a in play["animations"]
+                                                 for n in animation_nodes(a) if n.get("text"))]
+            for word, pattern in list(left.items()):
+                if any(re.search(pattern, t) for t in texts):
+                    del left[word]
+                    if f"figure:{word}" not in on_screen:
+                        missing.append(f"{word}: {chapter.slug} play {k}")
+        if not left:
+            break
+    assert not left, f"never said: {sorted(left)}"
+    assert missing == []

@@ -586,3 +586,27 @@ def test_a_card_with_a_figure_is_not_text_alone():
     alone, total = text_only_seconds(build(TwoCards.handed()).data)
     # the first card counts, from its title's coming to its going; the second does not
     assert 1.3 <= alone < total / 2
+
+
+def test_the_overview_poses_the_problem_with_a_black_box():
+    """Issue 22 item 2: the overview's divide and conquer asks a black box for each inner
+    diagonal (gravity is taught in chapter 3): each piece lights up, the box is asked, the
+    diagonal comes out and is split along, down to n − 2 triangles; no ball, band or
+    gravity arrow, and no word of gravity. The chapter stays at least 75 s."""
+    from tests.reading_rules import graph_nodes
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    overview = next(c for c in lecture_chapters() if c.slug == "overview")
+    data = build(_chapter_class(overview).handed()).data
+    names = {n.get("name") for n in graph_nodes(data)}
+    assert "finder" in names and not names & {"ball", "band", "gravity", "hit"}
+    words = [c["text"] for c in data["cues"]] + [n["text"] for n in graph_nodes(data)
+                                                 if n.get("text")]
+    assert not [w for w in words if "gravity" in w.lower() or "ball" in w.lower()]
+    cues = [c["text"] for c in data["cues"]]
+    asked = cues.count("Find an inner diagonal of this polygon")
+    assert asked >= 4 and sum(c.startswith("Out comes ") for c in cues) == asked
+    counters = [n["text"] for n in graph_nodes(data) if n.get("name") == "counter"]
+    assert counters and counters[-1] == "n − 2 = 13 − 2\n= 11 triangles"
+    assert sum(p["run_time"] for p in data["plays"]) >= 75

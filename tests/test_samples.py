@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import json
+import math
 import random
 import subprocess
 import sys
+from itertools import pairwise
 from pathlib import Path
 
 import pytest
@@ -213,3 +215,57 @@ def test_specs():
         parse_spec("star:1:2:3")
     with pytest.raises(UnknownSampleError):
         minimum_n("nope")
+
+
+def _angle(p, q, r) -> float:
+    """The interior angle at q of a counter-clockwise polygon, in degrees (0 to 360)."""
+    u, v = (p[0] - q[0], p[1] - q[1]), (r[0] - q[0], r[1] - q[1])
+    return math.degrees(math.atan2(v[0] * u[1] - v[1] * u[0], v[0] * u[0] + v[1] * u[1])) % 360
+
+
+def _distance_to_segment(p, a, b) -> float:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    t = max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy)))
+    return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
+
+
+def test_the_lecture_polygon_has_room():
+    """Issue 22 item 5: the lecture's polygon has no angle under 15° (nor a notch over 345°),
+    and no vertex nearer than 3 % of the frame's height to an edge it is not on, on screen at
+    the scale the runs draw it (its box, :data:`metaphors.layout.METAPHOR`)."""
+    from metaphors.drawing import Frame
+    from metaphors.layout import METAPHOR
+
+    p = Polygon.from_points(make_sample("lecture"))
+    pts, n = p.points, p.n
+    angles = {p.labels[v]: _angle(pts[v - 1], pts[v], pts[(v + 1) % n]) for v in range(n)}
+    assert all(15 <= a <= 345 for a in angles.values()), angles
+    scale = Frame(pts, METAPHOR.center, METAPHOR.width, METAPHOR.height).scale
+    frame_height = 8.0  # manim's frame, in scene units
+    for v in range(n):
+        near = min(_distance_to_segment(pts[v], pts[e], pts[(e + 1) % n]) for e in range(n)
+                   if v not in (e, (e + 1) % n))
+        assert near * scale >= 0.03 * frame_height, (p.labels[v], near * scale / frame_height)
+
+
+def test_the_lecture_polygon_keeps_what_the_lecture_needs():
+    """What the chapters show on it: 13 vertices, reflex ones, at least two candidates in
+    T at B, ears that are not all side by side, a split and a merge vertex for the sweep."""
+    import tracing
+    from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
+    from geometry.monotone import monotone
+
+    points = make_sample("lecture")
+    p = Polygon.from_points(points)
+    assert p.n == 13
+    reflex = [v for v in range(p.n) if orient(p.points[v - 1], p.points[v],
+                                               p.points[(v + 1) % p.n]) < 0]
+    assert len(reflex) == 5
+    t = triangle_at(p, leftmost_vertex(p))
+    assert len(candidates_in_triangle(p, t)) >= 2
+    found = ears(points)
+    assert any((b - a) % len(points) > 1 for a, b in pairwise(found))
+    with tracing.record() as log:
+        monotone(p)
+    kinds = [e.result for e in log.events if e.kind == "return" and e.name == "classify_vertex"]
+    assert "split" in kinds and "merge" in kinds

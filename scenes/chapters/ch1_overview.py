@@ -5,7 +5,7 @@ Run: ``manim -pql scenes/chapters/ch1_overview.py``; the whole lecture: ``trex l
 
 from metaphors.figures import Figure
 from metaphors.lecture import Card, LectureScene, Run
-from story.registry import spoken
+from story.storyboard import Pacing
 
 
 class Overview(LectureScene):
@@ -25,7 +25,10 @@ class Overview(LectureScene):
                 "Each diagonal takes O(n) steps, and n − 3 are needed: O(n²) in all.",
                 "Everything hinges on one question: how do we find an inner diagonal?"),
                  Figure("diagonal")),
+            # the diagonal finder a black box: no heuristic is taught yet (issue 22 item 2);
+            # gravity answers it, unseen, as it is correct on every polygon
             Run("divide-and-conquer", None,
-                f"Lennes' divide and conquer (diagonals by {spoken('gravity')})",
-                heuristic="gravity", speed=0.6),
+                "Lennes' divide and conquer: ask for an inner diagonal, split, repeat",
+                heuristic="gravity", black_box=True, pacing=Pacing(full=4, fast=0.35),
+                speed=1.0),
         )
