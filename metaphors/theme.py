@@ -39,6 +39,9 @@ class Theme:
     active_opacity: float = 0.5  # the piece divide and conquer works on
     hand: str = "#c792ea"  # the clock hand (drawn solid inside the polygon, dashed outside)
     sweep: str = "#c792ea"  # the sweep line (likewise)
+    #: what a heuristic's tool (water, clock hand, sweep line) has swept on its way to its
+    #: pick: one colour for all three, so that the same region means the same colour
+    swept: str = "#8fc1ff"
     dial: str = "#8a93a3"  # the clock face and its hour marks before the hand passes them
     fruit: str = "#f4a259"  # the fruit's flesh (ear clipping)
     rind: str = "#7a9e3d"  # its rind

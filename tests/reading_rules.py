@@ -174,6 +174,10 @@ LEAST_OUTSIDE = 0.32
 LEAST_CLEARANCE = 0.24
 #: the colour of what is rejected (metaphors.theme.THEME.rejected), as the graph writes it
 _REJECTED = "#EF4B4B"
+#: the names of the claims drawn (a run's, an analysis's, an exercise's answer) and of the
+#: polygons they are drawn on
+_CLAIMS = ("claim", "analysis:claim", "answer:diagonal")
+_POLYGONS = ("polygon", "analysis:polygon")
 
 
 def _corners(node: dict) -> list[tuple[float, float]]:
@@ -198,10 +202,10 @@ def hidden_failures(data: dict) -> list[str]:
 
     nodes = list(graph_nodes(data))
     polygons = [_corners(n) for n in nodes if n.get("points") and (
-        n.get("name") == "polygon" or (n.get("name"), n["type"]) == ("exercise", "Polygon"))]
+        n.get("name") in _POLYGONS or (n.get("name"), n["type"]) == ("exercise", "Polygon"))]
     found = {}
     for node in nodes:
-        if node.get("name") not in ("claim", "answer:diagonal") \
+        if node.get("name") not in _CLAIMS \
                 or (node.get("stroke") or "").upper() != _REJECTED:
             continue
         a, b = (tuple(node["points"][k][:2]) for k in (0, -1))
