@@ -40,16 +40,19 @@ def metaphor_parts(heuristic: str, polygon_spec: str, frame: Frame,
     """``heuristic``'s tool stopped at its pick on ``polygon_spec`` (the run's own, read from
     its beats): T and what the tool swept (drawn under the vertices), the pick marked (over
     them), and the words to say below it."""
+    metaphor = entry(heuristic).metaphor or ""
+    if metaphor not in SAID:
+        raise ValueError(f"{heuristic}: no water, clock hand or sweep line to draw")
     seen = moment(heuristic, polygon_spec)
-    if seen.motion is None or seen.triangle is None:
-        raise ValueError(f"{heuristic} on {polygon_spec}: no candidate in T, no metaphor to draw")
-    sheet = Sheet(frame, theme)
+    if seen.triangle is None:
+        raise ValueError(f"{heuristic} on {polygon_spec}: the run shows no triangle T")
     t = tag(MPolygon(*frame.many(seen.triangle), color=theme.called,
                      stroke_width=theme.thin_stroke, fill_opacity=0), "called", "figure:T")
-    tool = tag(tool_drawing(sheet, seen.motion, 1.0, tool_colour(theme, heuristic)),
+    if seen.motion is None:  # a polygon handed to the lecture may leave T empty
+        return [t], [], "no candidate in T: AC is the diagonal"
+    tool = tag(tool_drawing(Sheet(frame, theme), seen.motion, 1.0, tool_colour(theme, heuristic)),
                "argument", "figure:tool")
     where = dict(zip(seen.labels, seen.points, strict=True))
     pick = tag(Dot(frame.to_scene(where[seen.pick]), radius=0.11, color=theme.argument),
                "argument", "figure:candidate")
-    said = SAID.get(entry(heuristic).metaphor or "", "it picks {pick}")
-    return [t, tool], [pick], said.format(pick=seen.pick)
+    return [t, tool], [pick], SAID[metaphor].format(pick=seen.pick)

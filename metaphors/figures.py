@@ -67,7 +67,8 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     vertices = tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
     if figure.kind == "metaphor":  # its run is read from the polygon's spec, not the polygon
         under, over, said = metaphor_parts(figure.heuristic, figure.polygon or polygon_spec,
-                                           frame, theme)
+                                           frame, theme) if polygon.n >= 4 else (
+            [], [], "a triangle: no diagonal to find")
         label = tag(_label(said, theme, theme.ink), None, "figure:label")
         return [shape, *under, label, vertices, *over]
     drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,

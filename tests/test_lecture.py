@@ -31,6 +31,8 @@ from tests.reading_rules import (
     broken_counts,
     crossfaded_subtitles,
     hidden_failures,
+    repeated_verdicts,
+    replayed_beats,
     rushed_questions,
     small_texts,
     unreadable_cues,
@@ -578,3 +580,30 @@ def test_a_card_with_a_figure_is_not_text_alone():
     gravity = next(c for c in lecture_chapters() if c.slug == "gravity")
     text_only, total = text_only_seconds(build(_chapter_class(gravity).handed()).data)
     assert 0 < text_only < total  # its card has no figure yet
+
+
+def test_the_heuristics_chapter_shows_each_wrong_heuristic_once():
+    """Issue 22 item 4: each wrong heuristic in one continuous pass on the counterexample, its
+    correction after it on the same polygon; no run's beat shown twice, its ✗ said once, and
+    "this one polygon defeats all three" said once, not per heuristic. (Divide and conquer
+    says one step's caption over each of its pieces, so the rule is this chapter's.)"""
+    from geometry.check import is_inner_diagonal
+    from geometry.diagonals import find_diagonal
+    from geometry.io import read_polygon
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    chapter = next(c for c in lecture_chapters() if c.slug == "heuristics")
+    data = build(_chapter_class(chapter).handed()).data
+    assert replayed_beats(data) == [] and repeated_verdicts(data) == []
+    cues = [c["text"] for c in data["cues"]]
+    crosses = [c for c in cues if c.startswith("✗")]
+    assert len(crosses) == 3  # one per wrong heuristic, in its pass
+    said = [c for c in cues if "defeats all three" in c]
+    counterexample = read_polygon("counterexample")
+    assert said == ["This one polygon of 5 vertices defeats all three heuristics. Candidates "
+                    "in T: D, E."] and counterexample.n == 5
+    for wrong in ("scaling", "rotation", "translation"):  # and it is so
+        assert not is_inner_diagonal(counterexample, *find_diagonal(counterexample, wrong).pair)
+    # the chapter's length: the pass breathes instead of repeating (issue 22: 12-18 minutes)
+    assert sum(float(p["run_time"]) for p in data["plays"]) >= 200
