@@ -227,7 +227,7 @@ def frame(stage: Stage, seen: Moment, analysis: Analysis) -> None:
     lit = [Indicate(stage.markers[c], color=theme.argument) for c in seen.candidates]
     stage.say(seen.words(analysis.intro),
               ([*stage.appear(), *stage.key(theme.swept, "swept", "swept")], 1.5),
-              (lit, 0.8))
+              (lit, 0.8), ([], analysis.freeze / 2))  # a moment to look at the polygon
 
 
 def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
@@ -252,7 +252,7 @@ def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
     at = stage.vertex(wrong.pick)
     stage.say(wrong.words(analysis.fails),
               ([Create(outside_tool), FadeIn(outside_area),
-                *stage.key(theme.rejected, "swept outside P, in T", "astray"),
+                *stage.key(theme.rejected, "outside P, in T", "astray"),
                 Flash(at, color=theme.rejected, flash_radius=0.45),
                 Indicate(stage.markers[wrong.pick], color=theme.rejected)], 1.6),
               ([], analysis.freeze))

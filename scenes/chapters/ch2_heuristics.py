@@ -18,12 +18,11 @@ from story.runs import working_example
 COUNTEREXAMPLE = "counterexample"
 #: the pass opens on the frame: the first time with what this polygon is (said once, not per
 #: heuristic), then as the same polygon
-INTRO_FIRST = ("This one polygon of {n} vertices defeats all three heuristics. Candidates in "
-               "T: {candidates}.")
+INTRO_FIRST = "This polygon of {n} vertices defeats all three heuristics. Candidates: {candidates}."
 INTRO_AGAIN = "The same polygon of {n} vertices. Candidates in T: {candidates}."
 #: seconds each tool takes to its pick, and the picture holds at the decisive moments: the
 #: pass is shown once, so it is shown slowly
-SLOW, FREEZE = 8.5, 3.0
+SLOW, FREEZE = 8.5, 3.5
 
 #: The wrong heuristic of each metaphor: the card of its metaphor, and what its analysis says
 #: on the counterexample — as the part outside P turns red, and why its correction (the
