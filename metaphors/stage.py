@@ -147,8 +147,11 @@ class Canvas(Protocol):
     """Where shapes are drawn: a frame (polygon to scene coordinates) and a theme — a
     :class:`Stage`, or a card's figure (:mod:`metaphors.figure_metaphors`)."""
 
-    frame: Frame
-    theme: Theme
+    @property
+    def frame(self) -> Frame: ...
+
+    @property
+    def theme(self) -> Theme: ...
 
 
 def region(stage: Canvas, geometry, colour: str, opacity: float, name: str,
