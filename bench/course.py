@@ -14,6 +14,8 @@ video in 800 s with ``-j 2`` on 2 cores, so 2.1 CPU seconds per second of video 
 times 4, the ratio of pixels (2160p over 1080p, both 60 fps), spread over the 7 chapters by
 length (taken equal). The join, a remux, is timed here at ``-q l`` and scaled by the same
 pixel ratio from ``-q l`` (an upper bound: bytes grow slower than pixels).
+The load average at start and end says whether the machine was idle meanwhile; a
+``--dry-run`` is timed too, the check every run pays before its first task.
 Run from the repository root: ``python -m bench.course``.
 """
 
@@ -66,15 +68,16 @@ PIXEL_RATE = (3840 * 2160 * 60) / (854 * 480 * 15)  # -q k over -q l, pixels per
 STUDENTS = 200
 
 
-def run(course: Path, out: Path, workers: int) -> float:
+def run(course: Path, out: Path, *options: str) -> float:
+    """Wall seconds of ``trex course COURSE -o OUT OPTIONS…``, from start to exit."""
     env = {**os.environ, "PYTHONPATH": str(REPO)}
     began = time.perf_counter()
     result = subprocess.run([sys.executable, "-m", "trex", "course", str(course), "-o",
-                             str(out), "--workers", str(workers)], capture_output=True,
-                            text=True, env=env, cwd=REPO)
+                             str(out), *options], capture_output=True, text=True, env=env,
+                            cwd=REPO)
     seconds = time.perf_counter() - began
     if result.returncode != 0:
-        sys.exit(f"bench: trex course --workers {workers} failed: {result.stderr.strip()}")
+        sys.exit(f"bench: trex course {' '.join(options)} failed: {result.stderr.strip()}")
     return seconds
 
 
@@ -87,18 +90,35 @@ def makespan(durations: list[float], workers: int, after: float = 0.0) -> float:
     return max(free) + after
 
 
+def load() -> str:
+    """The machine's load average over 1, 5 and 15 minutes, and its cores: whether the
+    timings were taken on an idle machine."""
+    one, five, fifteen = os.getloadavg()
+    return f"{one:.2f} {five:.2f} {fifteen:.2f} (1, 5, 15 min) on {os.cpu_count()} cores"
+
+
 def main() -> None:
+    print(f"load at start: {load()}", flush=True)
     with tempfile.TemporaryDirectory(prefix="bench-course-") as temp:
         folder = Path(temp)
         (folder / "tiny.py").write_text(TINY)
         (folder / "course.toml").write_text(COURSE)
-        walls = {n: run(folder / "course.toml", folder / f"out-{n}", n) for n in (1, 2)}
+        # what every run pays before a task starts: the course checked, every polygon run
+        check = run(folder / "course.toml", folder / "none", "--dry-run")
+        walls = {n: run(folder / "course.toml", folder / f"out-{n}", "--workers", str(n))
+                 for n in (1, 2)}
         tasks = json.loads((folder / "out-1" / "course.json").read_text())["tasks"]
+    print(f"load at end:   {load()}")
     by_kind: dict[str, list[dict]] = {}
     for task in tasks:
         by_kind.setdefault(task["kind"], []).append(task)
-    print(f"course: {len(tasks)} tasks; 1 worker {walls[1]:.1f} s, 2 workers {walls[2]:.1f} s "
-          f"({walls[1] / walls[2]:.2f}x)")
+    print(f"course: {len(tasks)} tasks; 1 worker {walls[1]:.1f} s (baseline), 2 workers "
+          f"{walls[2]:.1f} s; speed-up {walls[1] / walls[2]:.2f}x (ideal 2.00x on 2 idle "
+          "cores)")
+    after = {n: walls[n] - check for n in walls}
+    print(f"  without the check ({check:.1f} s, --dry-run): 1 worker {after[1]:.1f} s, "
+          f"2 workers {after[2]:.1f} s; speed-up {after[1] / after[2]:.2f}x (the cluster's "
+          "start and the tasks)")
     for kind, done in by_kind.items():
         wall = sum(t["wall_seconds"] for t in done)
         video = sum(t["video_seconds"] for t in done)

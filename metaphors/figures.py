@@ -24,6 +24,7 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
+from metaphors import method_figures
 from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.figure_metaphors import metaphor_parts
 from metaphors.tags import tag
@@ -33,7 +34,9 @@ from story.runs import run_logged
 
 #: where a figure is drawn: the left half of the screen, below the card's title
 FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT = (-3.5, -0.1), 6.2, 4.6
-KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims", "metaphor")
+BOX = (FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
+KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims", "metaphor",
+         *method_figures.KINDS)
 #: the growth plot: each algorithm's ear tests, counted in its log, on random polygons
 GROWTH_SIZES = (10, 20, 30, 40, 50, 60)
 GROWTH_RUNS = (("ear-clipping-naive", "naive"), ("ear-clipping", "ear status kept"),
@@ -61,6 +64,9 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     """The figure's mobjects, back to front, on ``figure.polygon`` or else ``polygon_spec``."""
     if figure.kind == "growth":
         return _growth(theme)
+    if figure.kind in method_figures.KINDS:  # gravity, prune and search, keyhole, a rule
+        return method_figures.method_figure(figure.kind, figure.polygon or polygon_spec,
+                                            figure.heuristic, BOX, theme)
     polygon = read_polygon(figure.polygon or polygon_spec)
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")

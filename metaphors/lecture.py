@@ -119,6 +119,7 @@ class Hunted:
     seed: int = 0
     budget: int = 2000
     general: bool = True
+    figure: Figure | None = None  # the card's figure (e.g. the rule drawn on a polygon)
 
 
 @dataclass(frozen=True)
@@ -269,7 +270,7 @@ class LectureScene(TraceScene):
         self.play_card(Card(hunted.title, (
             f"{hunted.rule}: a rule this lecture did not cover.",
             f"The computer tried {found.tried} small polygons, fewest vertices first.",
-            f"It shrank the first failure to {found.polygon.n} vertices.")))  # type: ignore[union-attr]  # found: the hunt has its polygon
+            f"It shrank the first failure to {found.polygon.n} vertices."), hunted.figure))  # type: ignore[union-attr]  # found: the hunt has its polygon
         self.clear_screen()
         log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")  # type: ignore[arg-type]  # found: the hunt has its polygon
         self.play_run(Run(hunted.heuristic, None, f"{hunted.rule}, on the polygon found"), log)

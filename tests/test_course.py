@@ -177,6 +177,8 @@ def test_the_lecture_is_joined_from_its_chapters(first, manifest):
     assert frames(lecture / "lecture.mp4") == sum(
         frames(lecture / e["file"]) for e in entries)
     assert "a circle" in (lecture / "lecture.srt").read_text()
+    assert manifest["lecture-1"]["files"] == [f"lecture-1/{name}" for name in (
+        "lecture.mp4", "lecture.srt", "chapters.json", "chapters.md", "teacher-notes.md")]
     assert manifest["lecture-1"]["video_seconds"] == pytest.approx(
         sum(manifest[f"lecture-1/{e['file'][:-4]}"]["video_seconds"] for e in entries))
     # the chapter's step marks say how it was made, as trex lecture's: trex slides reuses it
@@ -393,9 +395,311 @@ def test_a_worker_killed_mid_task_has_its_task_run_again(tmp_path):
 
 def test_a_scheduler_that_cannot_be_reached_is_one_line_and_leaves_nothing(folder, tmp_path):
     out = tmp_path / "out"
+    # in a process of its own, bounded: Dask tries for 10 s (trex.course.run.CONNECT_TIMEOUT)
+    result = trex("course", str(folder / "course.toml"), "-o", str(out), "--scheduler",
+                  "tcp://127.0.0.1:1", timeout=120)
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr.startswith("error: tcp://127.0.0.1:1: Timed out trying to connect")
+    assert len(result.stderr.splitlines()) == 1
+    assert not out.exists()
+
+
+@pytest.mark.parametrize(("address", "said"), [
+    ("nonsense://127.0.0.1:8786", "unknown scheme 'nonsense'; known: tcp, tls, ws, wss, ucx "
+     "(tcp://HOST:8786)"),
+    ("inproc://x", "unknown scheme 'inproc'; known: "),  # this process's own: no use here
+    ("127.0.0.1", "needs a host and a port from 1 to 65535 (tcp://HOST:8786)"),
+    ("tcp://127.0.0.1:port", "needs a host and a port from 1 to 65535"),
+    ("tcp://127.0.0.1:99999", "needs a host and a port from 1 to 65535"),
+    ("tcp://:8786", "needs a host and a port from 1 to 65535"),
+])
+def test_a_bad_scheduler_address_is_one_line_before_anything(folder, tmp_path, address, said):
+    out = tmp_path / "out"
     code, stdout, stderr = in_process("course", str(folder / "course.toml"), "-o", str(out),
-                                      "--scheduler", "tcp://127.0.0.1:1")
-    assert code == 2 and stdout == ""
-    assert stderr.startswith("error: tcp://127.0.0.1:1: Timed out trying to connect")
+                                      "--scheduler", address)
+    assert (code, stdout) == (2, "")
+    assert stderr.startswith(f"error: --scheduler {address}: {said}"), stderr
     assert len(stderr.splitlines()) == 1
     assert not out.exists()
+
+
+@pytest.mark.parametrize("answer", [b"HTTP/1.0 200 OK\r\n\r\nhello", b""])
+def test_a_port_that_is_no_scheduler_is_one_line_and_leaves_nothing(folder, tmp_path, answer):
+    """Something listens there (a web server; or a service that says nothing): one line,
+    exit 2, within a bounded time, nothing written."""
+    import socket
+    import threading
+
+    server = socket.create_server(("127.0.0.1", 0))
+    port = server.getsockname()[1]
+    accepted = []
+
+    def serve():
+        while True:
+            try:
+                conn, _ = server.accept()
+            except OSError:  # closed: the test is over
+                return
+            accepted.append(conn)
+            if answer:
+                conn.sendall(answer)
+
+    threading.Thread(target=serve, daemon=True).start()
+    out = tmp_path / "out"
+    try:
+        result = trex("course", str(folder / "course.toml"), "-o", str(out), "--scheduler",
+                      f"tcp://127.0.0.1:{port}", timeout=120)
+    finally:
+        server.close()
+        for conn in accepted:
+            conn.close()
+    assert accepted  # it did connect
+    assert (result.returncode, result.stdout) == (2, ""), result.stderr
+    assert result.stderr.startswith(f"error: tcp://127.0.0.1:{port}: "), result.stderr
+    assert len(result.stderr.splitlines()) == 1, result.stderr
+    assert not out.exists()
+
+
+# --- a cluster of its own: a dask scheduler and workers started as a user starts them ----------------
+
+DASK = Path(sys.executable).with_name("dask")
+EXTERNAL = textwrap.dedent("""
+    [course]
+    title = "On a cluster"
+    quality = "l"
+
+    [[scene]]
+    scene = "tiny.py:Cues"
+
+    [[exercises]]
+    students = 1
+    n = 1
+    seed = 7
+""")
+
+
+def _group_alive(pgid: int) -> list[int]:
+    """The processes of process group ``pgid`` still running (zombies are dead)."""
+    alive = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rpartition(")")[2].split()
+        except OSError:  # gone meanwhile
+            continue
+        if int(fields[2]) == pgid and fields[0] != "Z":
+            alive.append(int(stat.parent.name))
+    return alive
+
+
+def _stop(process: subprocess.Popen) -> None:
+    """SIGTERM to the process's whole group (a worker's nanny spawns its worker), then
+    SIGKILL to what is left after 30 s."""
+    for sig, wait in ((signal.SIGTERM, 30), (signal.SIGKILL, 10)):
+        try:
+            os.killpg(process.pid, sig)
+        except ProcessLookupError:
+            break
+        deadline = time.monotonic() + wait
+        while _group_alive(process.pid) and time.monotonic() < deadline:
+            time.sleep(0.2)
+        if not _group_alive(process.pid):
+            break
+    process.wait(timeout=10)
+
+
+class _Dask:
+    """Dask's own commands started as a user starts them, each a process group of its own,
+    seeing this checkout's code (their output in ``logs/``)."""
+
+    def __init__(self, folder: Path) -> None:
+        self.folder, self.logs = folder, folder / "logs"
+        self.logs.mkdir()
+        self.env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+            p for p in (str(REPO), os.environ.get("PYTHONPATH", "")) if p)}
+        self.started: list[subprocess.Popen] = []
+
+    def start(self, name: str, *args: str) -> subprocess.Popen:
+        with open(self.logs / f"{name}.log", "w") as log:
+            self.started.append(subprocess.Popen(
+                [str(DASK), *args], stdout=log, stderr=subprocess.STDOUT, env=self.env,
+                cwd=self.folder, start_new_session=True))
+        return self.started[-1]
+
+    def scheduler(self) -> str:
+        """``dask scheduler`` on 127.0.0.1, on a port of its choosing: its address."""
+        info = self.folder / "scheduler.json"
+        process = self.start("scheduler", "scheduler", "--host", "127.0.0.1", "--port", "0",
+                             "--dashboard-address", "127.0.0.1:0", "--scheduler-file",
+                             str(info), "--idle-timeout", "600s")  # (if left, it stops)
+        deadline = time.monotonic() + 120
+        while not info.exists() or not info.read_text().strip():
+            assert process.poll() is None, (self.logs / "scheduler.log").read_text()
+            assert time.monotonic() < deadline, "the scheduler never wrote its address"
+            time.sleep(0.2)
+        time.sleep(0.2)  # (the file is written whole, but give it its closing brace)
+        address = json.loads(info.read_text())["address"]
+        assert address.startswith("tcp://127.0.0.1:")
+        return address
+
+    def workers(self, address: str, n: int) -> subprocess.Popen:
+        """``dask worker ADDRESS --nworkers N --nthreads 1``, named ext-0 …, joined."""
+        from distributed import Client
+
+        process = self.start("workers", "worker", address, "--nworkers", str(n),
+                             "--nthreads", "1", "--name", "ext", "--host", "127.0.0.1",
+                             "--no-dashboard", "--local-directory",
+                             str(self.folder / "dask-worker-space"), "--death-timeout", "60s")
+        with Client(address, timeout="30s") as client:
+            client.wait_for_workers(n, timeout=180)
+        # what the check at the end looks for: the worker command and a process per worker
+        assert len(_group_alive(process.pid)) >= n + 1
+        return process
+
+    def stop(self) -> None:
+        """Stop everything started, and check that no process of it is left."""
+        for process in reversed(self.started):
+            _stop(process)
+        left = {p.pid: _group_alive(p.pid) for p in self.started}
+        assert not any(left.values()), f"processes of the cluster left running: {left}"
+
+
+@pytest.fixture
+def dask_commands(tmp_path):
+    """A :class:`_Dask`; what it started is stopped afterwards and checked gone."""
+    if not DASK.exists():
+        pytest.skip(f"no dask command beside {sys.executable} (distributed's CLI)")
+    if not Path("/proc/self/stat").exists():
+        pytest.skip("needs /proc to check that no process of the cluster is left")
+    dask = _Dask(tmp_path)
+    try:
+        yield dask
+    finally:
+        dask.stop()
+
+
+@pytest.fixture
+def cluster(dask_commands):
+    """A scheduler on 127.0.0.1 and 2 single-threaded workers, as separate processes."""
+    address = dask_commands.scheduler()
+    dask_commands.workers(address, 2)
+    return address, dask_commands.started
+
+
+def test_a_course_runs_on_a_cluster_started_apart(cluster, tmp_path):
+    address, _ = cluster
+    (tmp_path / "tiny.py").write_text(TINY)
+    (tmp_path / "course.toml").write_text(EXTERNAL)
+    out = tmp_path / "out"
+    result = trex("course", str(tmp_path / "course.toml"), "-o", str(out), "--scheduler",
+                  address, timeout=600)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("course: 2 done, 0 reused, 0 failed; ")
+    assert "dashboard: http://127.0.0.1:" in result.stderr
+    tasks = {t["id"]: t for t in json.loads((out / "course.json").read_text())["tasks"]}
+    assert sorted(tasks) == ["exercises/student-1", "scene-tiny-Cues"]
+    assert {t["status"] for t in tasks.values()} == {"done"}
+    assert {t["worker"] for t in tasks.values()} <= {"ext-0", "ext-1"}  # the cluster's own
+    assert tasks["scene-tiny-Cues"]["files"] == ["scene-tiny-Cues.mp4", "scene-tiny-Cues.srt"]
+    assert sorted(p.relative_to(out).as_posix() for p in out.rglob("*")) == [
+        "course.json", "exercises", "exercises/student-1", "exercises/student-1/answers.md",
+        "exercises/student-1/exercise-01.png", "scene-tiny-Cues.mp4", "scene-tiny-Cues.srt"]
+    # the same files as the commands make on this machine
+    sheet = tmp_path / "sheet"
+    made = trex("exercises", "--n", "1", "--seed", "7", "-o", str(sheet))
+    assert made.returncode == 0, made.stderr
+    for name in ("answers.md", "exercise-01.png"):
+        assert (out / "exercises/student-1" / name).read_bytes() == (sheet / name).read_bytes()
+    here = tmp_path / "here.mp4"
+    made = trex("render", str(tmp_path / "tiny.py:Cues"), "-q", "l", "-o", str(here))
+    assert made.returncode == 0, made.stderr
+    assert _frame_sums(out / "scene-tiny-Cues.mp4") == _frame_sums(here)
+    assert (out / "scene-tiny-Cues.srt").read_text() == here.with_suffix(".srt").read_text()
+    # and again on the same cluster: nothing to render
+    again = trex("course", str(tmp_path / "course.toml"), "-o", str(out), "--scheduler",
+                 address, timeout=600)
+    assert again.returncode == 0, again.stderr
+    assert again.stdout.startswith("course: 0 done, 2 reused, 0 failed; ")
+
+
+def test_a_cluster_with_no_worker_yet_is_said_and_its_course_waits(dask_commands, tmp_path):
+    """The course reaches a scheduler that has no worker: it says so and waits; a worker
+    that joins then does the course."""
+    address = dask_commands.scheduler()
+    (tmp_path / "tiny.py").write_text(TINY)
+    (tmp_path / "course.toml").write_text(EXTERNAL)
+    out, said = tmp_path / "out", tmp_path / "stderr"
+    with open(said, "w") as stderr:
+        course = subprocess.Popen(
+            [sys.executable, "-m", "trex", "course", str(tmp_path / "course.toml"), "-o",
+             str(out), "--scheduler", address], stdout=subprocess.PIPE, stderr=stderr,
+            text=True, env=dask_commands.env, cwd=REPO)
+    try:
+        waiting = f"course: no worker at {address} yet; the tasks wait for one"
+        deadline = time.monotonic() + 300
+        while waiting not in said.read_text():
+            assert course.poll() is None, said.read_text()
+            assert time.monotonic() < deadline, said.read_text()
+            time.sleep(0.2)
+        assert not list(out.rglob("*.mp4"))  # nothing done without a worker
+        dask_commands.workers(address, 1)
+        stdout, _ = course.communicate(timeout=600)
+    finally:
+        course.kill()
+        course.wait()
+    assert course.returncode == 0, said.read_text()
+    assert stdout.startswith("course: 2 done, 0 reused, 0 failed; ")
+    tasks = json.loads((out / "course.json").read_text())["tasks"]
+    assert {(t["status"], t["worker"]) for t in tasks} == {("done", "ext")}
+    assert "warning" not in said.read_text()
+
+
+def _frame_sums(path: Path) -> list[str]:
+    """SHA-1 of every decoded frame (x264's bytes may differ between runs, not the frames)."""
+    import hashlib
+
+    with av.open(str(path)) as container:
+        return [hashlib.sha1(f.to_ndarray(format="rgb24").tobytes()).hexdigest()
+                for f in container.decode(video=0)]
+
+
+# --- the course's lecture is trex lecture's -----------------------------------------------------------
+
+
+def _assert_same_lecture(ours: Path, theirs: Path) -> None:
+    """The same lecture: decoded frames of the lecture and of each chapter (x264's bytes may
+    differ), the same subtitles, chapter list, chapter page and teacher notes."""
+    entries = json.loads((theirs / "chapters.json").read_text())
+    assert json.loads((ours / "chapters.json").read_text()) == entries
+    for name in ("lecture.srt", "chapters.md", "teacher-notes.md"):
+        assert (ours / name).read_text() == (theirs / name).read_text(), name
+    assert _frame_sums(ours / "lecture.mp4") == _frame_sums(theirs / "lecture.mp4")
+    for entry in entries:
+        assert _frame_sums(ours / entry["file"]) == _frame_sums(theirs / entry["file"])
+
+
+def test_the_courses_lecture_is_trex_lectures(first, folder, tmp_path):
+    out, _ = first
+    lecture = tmp_path / "lecture"
+    chapters = ",".join(f"{folder / 'tiny.py'}:{c}" for c in ("Cues", "MoreCues"))
+    made = trex("lecture", "-q", "l", "--chapters", chapters, "-o", str(lecture))
+    assert made.returncode == 0, made.stderr
+    assert _frame_sums(lecture / "lecture.mp4")  # (frames there to compare)
+    _assert_same_lecture(out / "lecture-1", lecture)
+
+
+@pytest.mark.slow
+def test_a_project_chapter_on_a_course_is_trex_lectures(tmp_path):
+    """A chapter of the project's own lecture (the one with teacher notes),
+    through the course on 2 workers and through trex lecture."""
+    (tmp_path / "course.toml").write_text(
+        "[[lecture]]\nquality = 'l'\nchapters = ['heuristics']\n")
+    out = tmp_path / "out"
+    result = trex("course", str(tmp_path / "course.toml"), "-o", str(out), "--workers", "2",
+                  timeout=1800)
+    assert result.returncode == 0, result.stderr
+    lecture = tmp_path / "lecture"
+    made = trex("lecture", "-q", "l", "--chapters", "heuristics", "-o", str(lecture),
+                timeout=1800)
+    assert made.returncode == 0, made.stderr
+    assert "## 2. Inner diagonals" in (lecture / "teacher-notes.md").read_text()
+    _assert_same_lecture(out / "lecture-1", lecture)

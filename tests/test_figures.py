@@ -2,13 +2,18 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
+from geometry.polygon import Polygon
 from geometry.predicates import orient
-from metaphors.figures import KINDS, Figure, ear_tests, figure_mobjects
+from metaphors.drawing import Frame
+from metaphors.figures import BOX, KINDS, Figure, ear_tests, figure_mobjects
+from usercode.heuristic import run_heuristic
 
 
 def named(mobjects, prefix: str) -> list:
@@ -114,3 +119,97 @@ def figure_frame(p):
 def test_a_metaphor_needs_a_tool():
     with pytest.raises(ValueError, match="gravity: no water, clock hand or sweep line"):
         figure_mobjects(Figure("metaphor", "counterexample", heuristic="gravity"), "x")
+
+
+# --- the methods' figures (metaphors/method_figures.py) ---------------------------------------
+
+
+def said(mobject) -> str:
+    """A label's words, on one row or wrapped on several."""
+    rows = [mobject] if hasattr(mobject, "original_text") else list(mobject)
+    return " ".join(row.original_text for row in rows)
+
+
+def ends(line) -> tuple[tuple[float, float], tuple[float, float]]:
+    start, end = line.get_start(), line.get_end()
+    return (round(start[0], 6), round(start[1], 6)), (round(end[0], 6), round(end[1], 6))
+
+
+def on_screen(frame, point) -> tuple[float, float]:
+    x, y, _ = frame.to_scene(point)
+    return round(x, 6), round(y, 6)
+
+
+def test_gravity_draws_its_run_turned_so_that_the_ball_falls_down():
+    from geometry import gravity as g
+    from metaphors.method_figures import TurnedFrame
+
+    p = read_polygon("gravity-snag")
+    v = g.reflex_vertex(p)
+    frame = TurnedFrame(p.points, g.gravity_direction(p, v).turn_picture, *BOX)
+    drawn = figure_mobjects(Figure("gravity", "gravity-snag"), "lecture")
+    diagonal = g.gravity(p)
+    i, j = diagonal.pair
+    assert ends(named(drawn, "figure:claim")[0]) == (on_screen(frame, p.points[i]),
+                                                     on_screen(frame, p.points[j]))
+    assert is_inner_diagonal(p, i, j).ok and named(drawn, "figure:claim")[0].trex_role == "result"
+    (x0, y0), (x1, y1) = ends(named(drawn, "figure:fall")[0])
+    assert abs(x1 - x0) < 1e-6 and y1 < y0  # the turn makes gravity point down on screen
+    assert said(named(drawn, "figure:label")[0]).endswith(f"claim {diagonal.name}")
+    assert "Y = " in said(named(drawn, "figure:label")[0])  # gravity-snag: the band snags
+
+
+def test_prune_draws_an_inner_diagonal_that_keeps_at_most_half_and_one():
+    from metaphors.method_figures import prune_rounds
+
+    p = read_polygon("lecture")
+    drawn = figure_mobjects(Figure("prune"), "lecture")
+    scene = {on_screen(Frame(p.points, *BOX), q): k for k, q in enumerate(p.points)}
+    a, b = (scene[q] for q in ends(named(drawn, "figure:diagonal")[0]))
+    assert is_inner_diagonal(p, a, b).ok
+    good, smaller = (len(named(drawn, n)[0].get_vertices()) for n in ("figure:good",
+                                                                       "figure:smaller"))
+    assert smaller <= good // 2 + 1
+    g, v, _ = prune_rounds(p)[0]
+    marked = named(drawn, "figure:candidate")[0].get_center()
+    assert on_screen(Frame(p.points, *BOX), p.points[v]) == (round(marked[0], 6),
+                                                            round(marked[1], 6))
+    assert g.vertex_at(g.middle()).index == v
+
+
+def test_every_bridge_joins_a_holes_rightmost_vertex_to_a_vertex_it_sees():
+    from shapely.geometry import LineString
+    from shapely.geometry import Polygon as Region
+
+    from geometry.io import read_shape
+
+    shape = read_shape("keyhole")
+    rings = [shape.points[a:b] for a, b in zip(shape.starts, shape.starts[1:], strict=False)]
+    region = Region(rings[0], rings[1:])
+    # the outer ring drawn on its own keeps the shape's labels, which the bridges name
+    outer = Polygon.from_points(rings[0])
+    assert outer.labels == shape.labels[:shape.starts[1]]
+    drawn = figure_mobjects(Figure("keyhole", "keyhole"), "lecture")
+    bridges = named(drawn, "figure:bridge:")
+    assert len(bridges) == shape.hole_count
+    points = {shape.labels[k]: shape.points[k] for k in range(shape.n)}
+    rightmost = {max(ring)[0] for ring in rings[1:]}
+    for bridge in bridges:
+        p, m = bridge.name.removeprefix("figure:bridge:").split("–")
+        assert points[p][0] in rightmost and shape.ring_of(shape.labels.index(p)) > 0
+        assert region.contains(LineString([points[p], points[m]]))  # P sees M, inside P
+
+
+def test_the_rule_is_drawn_with_its_claim_green_when_inner_red_when_not():
+    path = Path(__file__).resolve().parents[1] / "examples" / "nearest_to_c.py"
+    rule = f"{path}:nearest_to_c"
+    lecture = figure_mobjects(Figure("rule", heuristic=rule), "lecture")
+    p = read_polygon("lecture")
+    i, j = run_heuristic(p, rule).pair
+    assert named(lecture, "figure:claim")[0].trex_role == (
+        "result" if is_inner_diagonal(p, i, j).ok else "rejected")
+    assert said(named(lecture, "figure:label")[0]).startswith(
+        f"On this P the rule claims {p.labels[i]}{p.labels[j]}")
+    wrong = figure_mobjects(Figure("rule", "counterexample", heuristic="scaling"), "x")
+    assert named(wrong, "figure:claim")[0].trex_role == "rejected"
+    assert len(named(wrong, "figure:edge:")) == 1

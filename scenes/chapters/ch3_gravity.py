@@ -3,6 +3,7 @@
 Run: ``manim -pql scenes/chapters/ch3_gravity.py``; the whole lecture: ``trex lecture``.
 """
 
+from metaphors.figures import Figure
 from metaphors.lecture import Analysis, Card, LectureScene, Run
 
 
@@ -16,7 +17,8 @@ class Gravity(LectureScene):
                 "Hang a ball on a rubber band at a reflex vertex V.",
                 "Turn P so that both edges at V point up and no edge is level; drop the ball.",
                 "It hits an edge and slides down to a vertex X; the band may snag a vertex Y.",
-                "Claim VY where the band snags, else VX: an inner diagonal either way.")),
+                "Claim VY where the band snags, else VX: an inner diagonal either way."),
+                 Figure("gravity", "gravity-snag")),
             Run("gravity", "gravity-snag", "Gravity: the band snags a vertex"),
             Analysis("gravity", "gravity-snag", title="Gravity: why the band is always right",
                      holds="The band sweeps only the inside of P: it touches {pick} from "

@@ -28,7 +28,8 @@ class Ears(LectureScene):
             Card("Prune and search (ElGindy, Everett, Toussaint)", (
                 "Test the middle vertex of a good sub-polygon (one cut edge).",
                 "Not an ear? Its diagonal cuts off a smaller good sub-polygon — keep that half.",
-                "About half the vertices go each time: one ear in O(n).")),
+                "About half the vertices go each time: one ear in O(n)."),
+                 Figure("prune")),
             Run("prune-and-search", None, "Prune and search: the good sub-polygons shrink",
                 box=FRUIT_BOX, speed=0.5),
             Card("How fast", (
@@ -38,7 +39,8 @@ class Ears(LectureScene):
             Card("Fruit with holes: a keyhole cut", (
                 "Real polygons have holes: the columns of a floor plan, a country's lakes.",
                 "Cut from each hole's right-most vertex to a vertex it sees (Eberly, 2002):",
-                "one ring again, with two vertices more per hole. Then slice as before.")),
+                "one ring again, with two vertices more per hole. Then slice as before."),
+                 Figure("keyhole", "keyhole")),
             Run("ear-clipping", "keyhole", "Ear clipping with holes: keyholes, then slices",
                 box=FRUIT_BOX, speed=0.5),
         )

@@ -5,6 +5,7 @@ Run: ``manim -pql scenes/chapters/ch6_exercises.py``; the whole lecture: ``trex 
 
 from pathlib import Path
 
+from metaphors.figures import Figure
 from metaphors.lecture import Card, Hunted, LectureScene, Quiz
 
 #: a rule the lecture does not cover, from the examples (a heuristic of one's own)
@@ -19,7 +20,9 @@ class Exercises(LectureScene):
         return (
             Card("Exercises", (
                 "Each question shows a polygon and its triangle T.",
-                "Answer before the countdown ends; the answer is checked by the geometry code.")),
+                "Answer before the countdown ends; the answer is checked by the geometry code."),
+                 Figure("frame", "counterexample")),
             Quiz(count=3, seed=2022),
-            Hunted(NEAREST_TO_C, "Found by the computer", "From B, claim the candidate nearest to C"),
+            Hunted(NEAREST_TO_C, "Found by the computer", "From B, claim the candidate nearest to C",
+                   figure=Figure("rule", heuristic=NEAREST_TO_C)),
         )

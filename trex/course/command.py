@@ -43,6 +43,28 @@ def _check_output(out_dir: Path, tasks: list[Task]) -> None:
                 fail(f"{task.item}: {folder}: {exc}")
 
 
+SCHEMES = ("tcp", "tls", "ws", "wss", "ucx")  # how a cluster of other processes is reached
+
+
+def check_scheduler(address: str) -> str:
+    """``address`` as Dask reaches it (``HOST:PORT`` gets ``tcp://``); a message naming
+    what is wrong with it (a scheme, a port) raises ValueError, before anything is checked
+    or written."""
+    from distributed.comm.addressing import parse_address, parse_host_port
+
+    scheme, location = parse_address(address)
+    if scheme not in SCHEMES:
+        raise ValueError(f"unknown scheme {scheme!r}; known: {', '.join(SCHEMES)} "
+                         "(tcp://HOST:8786)")
+    try:
+        host, port = parse_host_port(location)  # no port, not a number, IPv6 unbracketed
+    except ValueError:
+        host, port = "", 0
+    if not host or not 0 < port < 65536:
+        raise ValueError("needs a host and a port from 1 to 65535 (tcp://HOST:8786)")
+    return f"{scheme}://{location}"
+
+
 def code_fingerprint() -> str:
     """What every task's output depends on besides its own settings: the code that renders
     (the project's sources, manim's version) and the ``TREX_*`` environment a scene reads
@@ -98,6 +120,11 @@ def course(course_file: str, out_dir: str, workers: int | None, scheduler: str |
     """
     if workers is not None and scheduler is not None:
         fail("--workers: the cluster at --scheduler has its own workers")
+    if scheduler is not None:
+        try:
+            scheduler = check_scheduler(scheduler)
+        except ValueError as exc:
+            fail(f"--scheduler {scheduler}: {error_line(exc)}")
     with interrupts_raise():  # checking loads every scene and runs every polygon: a while
         try:
             course_, tasks = _planned(course_file)

@@ -24,8 +24,30 @@ from typing import Any
 from trex.course.manifest import read_manifest, record, reusable, write_manifest
 from trex.course.tasks import Task
 from trex.course.work import TEMP_SUFFIXES, Done, run_task
+from trex.inputs import error_line
 
 REPO = Path(__file__).resolve().parent.parent.parent
+CONNECT_TIMEOUT = 10.0  # seconds an unreachable --scheduler is tried
+
+
+def probe(address: str, seconds: float) -> None:
+    """Connect to ``address`` and exchange Dask's handshake, within ``seconds`` and as many
+    again for the handshake: an OSError if nothing answers. (Dask's own connect tries
+    for ``seconds``, then waits for ever for a handshake from a port that accepts and says
+    nothing.)"""
+    import asyncio
+
+    from distributed.comm import connect
+
+    async def shake_hands() -> None:
+        comm = await connect(address, timeout=seconds)
+        await comm.close()
+
+    try:
+        asyncio.run(asyncio.wait_for(shake_hands(), 2 * seconds))
+    except TimeoutError:  # (asyncio's own, here; connect says "Timed out trying …" itself)
+        raise ConnectionError(f"connected, but no Dask handshake came in {2 * seconds:.0f} s "
+                              "(not a Dask scheduler?)") from None
 
 
 @contextmanager
@@ -39,7 +61,15 @@ def client_for(workers: int, scheduler: str | None) -> Iterator[Any]:
     # manim's rich handler on the root logger would print every scheduler event
     logging.getLogger("distributed").setLevel(logging.ERROR)
     if scheduler is not None:
-        with Client(scheduler, timeout="10s") as client:
+        try:  # no answer, a refused or unknown address: an OSError already
+            probe(scheduler, CONNECT_TIMEOUT)
+            client = Client(scheduler, timeout=f"{CONNECT_TIMEOUT}s")
+        except OSError:
+            raise
+        except Exception as exc:  # something else answered (Dask reads its bytes as a frame)
+            raise ConnectionError(f"did not answer as a Dask scheduler ({type(exc).__name__}: "
+                                  f"{error_line(exc)})") from None
+        with client:
             yield client
         return
     path = os.pathsep.join(p for p in (str(REPO), inherited().get("PYTHONPATH", "")) if p)
@@ -144,6 +174,8 @@ def run_tasks(tasks: Sequence[Task], out_dir: Path, title: str, *, workers: int,
     try:
         with client_for(workers, scheduler) as client:
             echo(f"dashboard: {client.dashboard_link}")
+            if scheduler is not None:
+                _say_of_workers(client.nthreads(), scheduler, echo)
             _submit_and_wait(client, pending, records, out_dir, title, tasks, retries,
                              progress)
             finished_cleanly = True
@@ -153,6 +185,27 @@ def run_tasks(tasks: Sequence[Task], out_dir: Path, title: str, *, workers: int,
         if records:  # (none: the cluster could not even be reached)
             _write(out_dir, title, tasks, records)
     return _ordered(tasks, records)
+
+
+def _say_of_workers(threads: dict[str, int], address: str,
+                    echo: Callable[[str], None]) -> None:
+    """A line if the cluster at ``address`` has no worker yet (its tasks wait for one) or
+    has workers of more than one thread (manim is not thread-safe); ``threads``: each
+    worker's, by address.
+
+    >>> _say_of_workers({}, "tcp://h:8786", print)
+    course: no worker at tcp://h:8786 yet; the tasks wait for one (dask worker tcp://h:8786 --nthreads 1)
+    >>> _say_of_workers({"tcp://a:1": 1, "tcp://b:2": 4}, "tcp://h:8786", print)
+    warning: 1 of the 2 workers at tcp://h:8786 run several threads (4): manim is not thread-safe; start them with --nthreads 1
+    """
+    if not threads:
+        echo(f"course: no worker at {address} yet; the tasks wait for one "
+             f"(dask worker {address} --nthreads 1)")
+    several = [n for n in threads.values() if n > 1]
+    if several:
+        echo(f"warning: {len(several)} of the {len(threads)} workers at {address} run several "
+             f"threads ({max(several)}): manim is not thread-safe; start them with "
+             "--nthreads 1")
 
 
 def _submit_and_wait(client, pending: Sequence[Task], records: dict, out_dir: Path,

@@ -208,7 +208,7 @@ def _lecture(course: Course, item: Lecture, checked: _Checked) -> list[Task]:
     folder = f"lecture-{item.number}"
     parts = _chapter_tasks(folder, item.name, chapters, item.quality, polygon, item.panel)
     files = tuple(f"{folder}/{name}" for name in (lj.VIDEO, lj.SUBTITLES, lj.LIST_JSON,
-                                                   lj.LIST_MD))
+                                                   lj.LIST_MD, lj.NOTES))
     join = Task(folder, "join", item.name, files,
                 {"folder": folder, "chapters": [t.settings["chapter"] for t in parts]},
                 deps=tuple(t.id for t in parts))

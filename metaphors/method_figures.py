@@ -1,0 +1,271 @@
+"""The methods' card figures: gravity's ball and band, a prune-and-search round, the keyhole
+cut of a hole, and a rule of one's own on P (issue 22 item 7).
+
+Each is computed by the geometry the runs use (:mod:`geometry.gravity`,
+:mod:`geometry.prune_search`, :mod:`geometry.bridges`, :mod:`usercode.heuristic`), nothing
+placed by hand, and drawn into the box :mod:`metaphors.figures` hands over. Colours keep
+their one meaning: the vertex a step works on amber (*argument*), a good sub-polygon in the
+pieces' tints, an inner diagonal or a bridge green (*result*), a wrong claim red with the
+edge it crosses.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from itertools import pairwise
+
+import numpy as np
+from manim import Dot, Line, Mobject, VMobject
+from manim import Polygon as MPolygon
+
+from geometry import gravity as gravity_steps
+from geometry.bridges import bridge_holes
+from geometry.check import is_inner_diagonal
+from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
+from geometry.holes import PolygonWithHoles
+from geometry.io import read_polygon, read_shape
+from geometry.polygon import Polygon
+from geometry.prune_search import (
+    GoodSubpolygon,
+    ShrinkingPolygon,
+    diagonal_at,
+    good_subpolygon,
+    is_middle_ear,
+)
+from metaphors.drawing import (
+    Frame,
+    crossed_edge,
+    hole_markers,
+    polygon_mobject,
+    vertex_markers,
+)
+from metaphors.tags import tag
+from metaphors.theme import Theme
+from rendering import typeset
+from usercode.heuristic import load_user_heuristic, run_heuristic
+
+#: the kinds drawn here, by the name a card's :class:`metaphors.figures.Figure` gives
+KINDS = ("gravity", "prune", "keyhole", "rule")
+Box = tuple[tuple[float, float], float, float]  # centre, width, height on screen
+
+
+class TurnedFrame(Frame):
+    """A frame that turns P by ``angle`` degrees (counter-clockwise) before fitting it to the
+    box: the turned polygon fills the box, as the gravity run turns it."""
+
+    def __init__(self, points: Sequence[tuple[float, float]], angle: float, center,
+                 width: float, height: float) -> None:
+        t = math.radians(angle)
+        self.turn = np.array([[math.cos(t), -math.sin(t)], [math.sin(t), math.cos(t)]])
+        super().__init__([tuple(self.turn @ np.asarray(p, float)) for p in points], center,
+                         width, height)
+
+    def to_scene(self, p: Sequence[float]) -> np.ndarray:
+        return super().to_scene(self.turn @ np.asarray(p[:2], dtype=float))
+
+
+def method_figure(kind: str, polygon_spec: str, heuristic: str, box: Box,
+                  theme: Theme) -> list[Mobject]:
+    """The mobjects of figure ``kind`` (one of :data:`KINDS`) on ``polygon_spec``, back to
+    front; ``heuristic``: the rule a ``rule`` figure draws (``FILE.py:FUNCTION`` or a name)."""
+    if kind == "keyhole":
+        return _keyhole(polygon_spec, box, theme)
+    polygon = read_polygon(polygon_spec)
+    drawn: dict[str, Callable[..., tuple[Frame, list[Mobject], list[Mobject]]]] = {
+        "gravity": _gravity, "prune": _prune, "rule": _rule}
+    frame, under, over = drawn[kind](polygon, heuristic, box, theme)
+    shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
+    dots = tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
+    return [shape, *under, dots, *over]
+
+
+def _label(words: str, box: Box, theme: Theme, colour: str) -> Mobject:
+    """The figure's words below it (wrapped to its width, never shrunk)."""
+    (x, y), width, height = box
+    shown = typeset.wrapped(words, font=theme.font, size=theme.label_size + 2, colour=colour,
+                            width=width)
+    # its top below the labels of the picture's lowest vertices (0.32 out, about 0.25 high)
+    shown.move_to((x, y - height / 2 - 0.6 - shown.height / 2, 0))
+    return tag(shown, None, "figure:label")
+
+
+def _line(frame: Frame, p, q, colour: str, width: float, role: str | None,
+          name: str) -> Mobject:
+    return tag(Line(frame.to_scene(p), frame.to_scene(q), color=colour, stroke_width=width),
+               role, name)
+
+
+def _dot(frame: Frame, p, colour: str, role: str, name: str) -> Mobject:
+    return tag(Dot(frame.to_scene(p), radius=0.11, color=colour), role, name)
+
+
+# --- gravity ---------------------------------------------------------------------------------
+
+
+def _gravity(polygon: Polygon, heuristic: str, box: Box,
+             theme: Theme) -> tuple[Frame, list[Mobject], list[Mobject]]:
+    """P turned so that gravity points down; V, the ball's fall to an edge and its slide to X,
+    the band from V snagging Y, and the claim in green."""
+    v = gravity_steps.reflex_vertex(polygon) if polygon.n > 3 else None
+    if v is None:  # convex: the ball has no reflex vertex to hang from
+        frame = Frame(polygon.points, *box)
+        return frame, [], [_label("no reflex vertex: no ball to drop", box, theme, theme.ink)]
+    g = gravity_steps.gravity_direction(polygon, v)
+    hit = gravity_steps.drop_ball(polygon, v, g)
+    x = gravity_steps.slide_to_vertex(polygon, hit, g)
+    y = gravity_steps.band_snag(polygon, v, hit, x)
+    frame = TurnedFrame(polygon.points, g.turn_picture, *box)
+    end = y if y is not None else x
+    fall = _line(frame, v.point, hit.at, theme.gravity, theme.thin_stroke, None, "figure:fall")
+    slide = _line(frame, hit.at, x.point, theme.ball, theme.stroke, None, "figure:slide")
+    band = VMobject(stroke_color=theme.band, stroke_width=theme.stroke)
+    band.set_points_as_corners(frame.many([v.point, *([y.point] if y else []), x.point]))
+    claim = _line(frame, v.point, end.point, theme.result, theme.stroke * 1.6, "result",
+                  "figure:claim")
+    ball = tag(Dot(frame.to_scene(x.point), radius=0.12, color=theme.ball,
+                   stroke_color=theme.ink, stroke_width=1.5), "argument", "figure:ball")
+    snag = f"Y = {y.label}" if y else "the band straight"
+    words = f"V = {v.label}, X = {x.label}, {snag}: claim {v.label}{end.label}"
+    return frame, [fall, slide, tag(band, "argument", "figure:band"), claim], [
+        _dot(frame, v.point, theme.argument, "argument", "figure:candidate"), ball,
+        _label(words, box, theme, theme.result)]
+
+
+# --- prune and search ------------------------------------------------------------------------
+
+
+Round = tuple[GoodSubpolygon, int, tuple[int, int] | None]
+
+
+def prune_rounds(polygon: Polygon) -> list[Round]:
+    """FindAnEar's rounds on P: each good sub-polygon, its middle vertex and, when that is no
+    ear, the diagonal (P's indices) that cuts the next good sub-polygon off; the last round's
+    middle vertex is an ear."""
+    rounds: list[Round] = []
+    g = GoodSubpolygon.whole(ShrinkingPolygon(polygon))
+    while True:
+        v = g.vertex_at(g.middle())
+        if is_middle_ear(g, v):
+            return [*rounds, (g, v.index, None)]
+        diagonal = diagonal_at(g, v)
+        ids = g.indices()
+        rounds.append((g, v.index, (int(ids[diagonal.pair[0]]), int(ids[diagonal.pair[1]]))))
+        g = good_subpolygon(g, diagonal)
+
+
+def _prune(polygon: Polygon, heuristic: str, box: Box,
+           theme: Theme) -> tuple[Frame, list[Mobject], list[Mobject]]:
+    """A round of prune and search: the good sub-polygon G shaded (its cut edge drawn), its
+    middle vertex V tested, V's inner diagonal and the smaller good sub-polygon it cuts off;
+    when the next round's middle vertex is an ear, its triangle in green."""
+    frame = Frame(polygon.points, *box)
+    if polygon.n < 4:
+        return frame, [], [_label("a triangle: it is its own ear", box, theme, theme.ink)]
+    rounds = prune_rounds(polygon)
+    # the first round on a sub-polygon with a cut edge that cuts again, else the first round
+    r = next((k for k, (g, _, d) in enumerate(rounds) if g.has_cut and d is not None), 0)
+    g, v, diagonal = rounds[r]
+    ids, pts, labels = [int(k) for k in g.indices()], polygon.points, polygon.labels
+    under: list[Mobject] = [_tint(frame, [pts[k] for k in ids], theme.pieces[0], theme,
+                                  "figure:good")]
+    if g.has_cut:
+        under.append(_line(frame, pts[ids[-1]], pts[ids[0]], theme.pieces[0], theme.stroke,
+                           None, "figure:cut"))
+    name = "P" if not g.has_cut else f"G (cut {labels[ids[-1]]}{labels[ids[0]]})"
+    if diagonal is None:
+        words = f"{name}: its middle vertex {labels[v]} is an ear"
+    else:
+        a, b = sorted((ids.index(diagonal[0]), ids.index(diagonal[1])))
+        under.append(_tint(frame, [pts[k] for k in ids[a:b + 1]], theme.pieces[1], theme,
+                           "figure:smaller"))
+        under.append(_line(frame, pts[diagonal[0]], pts[diagonal[1]], theme.result,
+                           theme.stroke * 1.6, "result", "figure:diagonal"))
+        w = diagonal[1] if diagonal[0] == v else diagonal[0]
+        words = (f"{name}: middle {labels[v]} is no ear; {labels[v]}{labels[w]} keeps "
+                 f"{b - a + 1} of {len(ids)}")
+        nxt, e, last = rounds[r + 1]
+        if last is None:  # the smaller one's middle vertex is an ear: the search ends
+            m = nxt.middle()
+            ear = [pts[nxt.vertex_at(k).index] for k in (m - 1, m, m + 1)]
+            under.append(tag(MPolygon(*frame.many(ear), color=theme.result,
+                                      stroke_width=theme.thin_stroke, fill_color=theme.result,
+                                      fill_opacity=theme.fill_opacity), "result", "figure:ear"))
+            words += f"; there the middle {labels[e]} is an ear"
+    over = [_dot(frame, pts[v], theme.argument, "argument", "figure:candidate"),
+            _label(words, box, theme, theme.ink)]
+    return frame, under, over
+
+
+def _tint(frame: Frame, points: Sequence[tuple[float, float]], colour: str, theme: Theme,
+          name: str) -> Mobject:
+    return tag(MPolygon(*frame.many(points), color=colour, stroke_width=0, fill_color=colour,
+                        fill_opacity=theme.done_opacity), None, name)
+
+
+# --- a rule of one's own ---------------------------------------------------------------------
+
+
+def _rule(polygon: Polygon, heuristic: str, box: Box,
+          theme: Theme) -> tuple[Frame, list[Mobject], list[Mobject]]:
+    """The rule's frame on P (T shaded, its candidates marked) and its claim: green if inner,
+    else red with the edge it crosses."""
+    frame = Frame(polygon.points, *box)
+    if polygon.n < 4:
+        return frame, [], [_label("a triangle: no diagonal to claim", box, theme, theme.ink)]
+    t = triangle_at(polygon, leftmost_vertex(polygon))
+    corners = [polygon.points[k.index] for k in (t.a, t.b, t.c)]
+    shaded = tag(MPolygon(*frame.many(corners), color=theme.called,
+                          stroke_width=theme.thin_stroke, fill_color=theme.called,
+                          fill_opacity=0.2), "called", "figure:T")
+    rule = load_user_heuristic(heuristic) if ":" in heuristic else heuristic
+    i, j = run_heuristic(polygon, rule).pair
+    verdict = is_inner_diagonal(polygon, i, j)
+    colour, role = (theme.result, "result") if verdict.ok else (theme.rejected, "rejected")
+    under = [shaded, _line(frame, polygon.points[i], polygon.points[j], colour,
+                           theme.stroke * 1.6, role, "figure:claim")]
+    if verdict.edge is not None:
+        u, w = verdict.edge
+        under.append(crossed_edge(frame.to_scene(polygon.points[u]),
+                                  frame.to_scene(polygon.points[w]),
+                                  f"figure:edge:{polygon.labels[u]}–{polygon.labels[w]}", theme))
+    said = "an inner diagonal" if verdict.ok else "not inner"
+    words = f"On this P the rule claims {polygon.labels[i]}{polygon.labels[j]}: {said}"
+    over = [_dot(frame, polygon.points[d.index], theme.argument, "argument", "figure:candidate")
+            for d in candidates_in_triangle(polygon, t)]
+    return frame, under, [*over, _label(words, box, theme, colour)]
+
+
+# --- the keyhole cut -------------------------------------------------------------------------
+
+
+def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
+    """P with its holes, each hole's right-most vertex marked and its bridge drawn green to
+    the vertex it sees (Eberly's, as the run computes it)."""
+    shape = read_shape(polygon_spec)
+    if not isinstance(shape, PolygonWithHoles):
+        frame = Frame(shape.points, *box)
+        return [tag(polygon_mobject(shape, frame, theme), "idle", "figure:polygon"),
+                tag(vertex_markers(shape, frame, theme), "idle", "figure:vertices"),
+                _label("no hole: nothing to cut", box, theme, theme.ink)]
+    starts, pts, labels = shape.starts, shape.points, shape.labels
+    outer = Polygon.from_points(pts[:starts[1]])  # ring 0: labelled as in the shape
+    holes = [{"points": pts[a:b], "labels": labels[a:b]} for a, b in pairwise(starts[1:])]
+    frame = Frame(outer.points, *box)
+    drawn: list[Mobject] = [tag(polygon_mobject(outer, frame, theme, holes), "idle",
+                                "figure:polygon")]
+    ring = bridge_holes(shape)
+    drawn += [_line(frame, pts[p], pts[m], theme.result, theme.stroke * 1.6, "result",
+                    f"figure:bridge:{labels[p]}–{labels[m]}") for p, m in ring.bridges]
+    drawn.append(tag(vertex_markers(outer, frame, theme), "idle", "figure:vertices"))
+    drawn += [tag(marker, "idle", "figure:hole-vertex") for _, marker in
+              hole_markers(holes, frame, theme)]
+    drawn += [_dot(frame, pts[p], theme.argument, "argument", "figure:candidate")
+              for p, _ in ring.bridges]
+    cuts = ", ".join(f"{labels[p]}{labels[m]}" for p, m in ring.bridges)
+    size = len(ring.walk())
+    words = f"bridges {cuts}: one ring of {size} vertices ({shape.n} + 2 per hole)"
+    return [*drawn, _label(words, box, theme, theme.result)]
+
+
+__all__ = ["KINDS", "TurnedFrame", "method_figure"]
