@@ -44,7 +44,7 @@ except ModuleNotFoundError:  # run as ``python bench/trace_overhead.py``: add th
     import tracing
 
 Point = tuple[float, float]
-Triangle = tuple[int, int, int]
+TriangleIndices = tuple[int, int, int]
 
 
 # --- the workload: incremental ear clipping -------------------------------------------
@@ -83,13 +83,13 @@ def is_ear(prev: int, vertex: int, nxt: int, points: list[Point], reflex: set[in
     return not any(in_triangle(points[r], a, b, c) for r in reflex if r not in (prev, vertex, nxt))
 
 
-def clip_ears(points: list[Point]) -> list[Triangle]:
+def clip_ears(points: list[Point]) -> list[TriangleIndices]:
     """Triangulate a simple counter-clockwise polygon by clipping ears (O(n²) on stars)."""
     n = len(points)
     prev = [(i - 1) % n for i in range(n)]
     nxt = [(i + 1) % n for i in range(n)]
     reflex = {i for i in range(n) if turn(points[prev[i]], points[i], points[nxt[i]]) <= 0}
-    triangles: list[Triangle] = []
+    triangles: list[TriangleIndices] = []
     vertex, remaining, misses = 0, n, 0
     while remaining > 3:
         a, c = prev[vertex], nxt[vertex]
@@ -284,7 +284,7 @@ def real_workload(n: int, seed: int, heuristic: str):
 
     polygon = Polygon.from_points(make_sample("random-star", n, seed))
 
-    def workload(p: Polygon) -> list[Triangle]:
+    def workload(p: Polygon) -> list[TriangleIndices]:
         return lennes.divide_and_conquer(p, heuristic).triangles
 
     spaces = [vars(m) for m in (diagonals, frame, gravity, lennes)] + [diagonals.HEURISTICS]

@@ -20,7 +20,7 @@ from geometry.errors import PolygonError
 from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import Point, orient
-from geometry.results import Triangle, Triangulation, canonical, finished
+from geometry.results import TriangleIndices, Triangulation, canonical, finished
 
 
 def shapely_polygon(
@@ -56,7 +56,7 @@ def _scaled_near_one(points: Sequence[Point]) -> list[tuple[float, float]]:
     return scaled if len(set(scaled)) == len(scaled) else list(points)
 
 
-def constrained_delaunay(polygon: Polygon | PolygonWithHoles) -> list[Triangle]:
+def constrained_delaunay(polygon: Polygon | PolygonWithHoles) -> list[TriangleIndices]:
     """Triangles as counter-clockwise index triples, sorted, in this polygon's indexing.
 
     GEOS keeps every input vertex (collinear ones too) and adds none, so each

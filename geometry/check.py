@@ -1,6 +1,6 @@
 """Exact checks: is a segment an inner diagonal, is a set of triangles a triangulation.
 
-Each check returns a :class:`Verdict` that is truthy when the answer is yes
+Each check returns a :class:`CheckResult` that is truthy when the answer is yes
 and otherwise says why not, in words and as data (``code``, the edge crossed,
 the point of crossing, the vertex hit), so a scene can draw the reason.
 
@@ -41,7 +41,7 @@ from geometry.validate import fmt_point
 
 
 @dataclass(frozen=True)
-class Verdict:
+class CheckResult:
     """The answer of a check: ``ok``, and when not ok, why.
 
     ``code`` is one of: ``adjacent``, ``same-vertex``, ``crosses``,
@@ -74,7 +74,7 @@ class Verdict:
         }
 
 
-YES = Verdict(True)
+YES = CheckResult(True)
 
 
 def _name(p: Polygon | PolygonWithHoles, *idx: int) -> str:
@@ -90,7 +90,7 @@ def _strictly_inside_cone(p: Polygon, v: int, target: Point) -> bool:
     return orient(pv, w, target) > 0 or orient(pv, u, target) < 0
 
 
-def is_inner_diagonal(polygon: Polygon, i: int, j: int) -> Verdict:
+def is_inner_diagonal(polygon: Polygon, i: int, j: int) -> CheckResult:
     """Whether the segment between vertices i and j lies inside the polygon.
 
     Reasons, checked in this order: same vertex, adjacent vertices, passes
@@ -99,16 +99,16 @@ def is_inner_diagonal(polygon: Polygon, i: int, j: int) -> Verdict:
     """
     n = polygon.n
     if i == j:
-        return Verdict(False, f"{_name(polygon, i)} is one vertex", "same-vertex", vertex=i)
+        return CheckResult(False, f"{_name(polygon, i)} is one vertex", "same-vertex", vertex=i)
     if j in (polygon.next(i), polygon.prev(i)):
-        return Verdict(False, f"{_name(polygon, i, j)} is an edge (adjacent vertices)", "adjacent")
+        return CheckResult(False, f"{_name(polygon, i, j)} is an edge (adjacent vertices)", "adjacent")
     a, b = polygon.points[i], polygon.points[j]
     seg = _name(polygon, i, j)
     hits = [k for k in range(n) if k not in (i, j) and on_segment(polygon.points[k], a, b)]
     if hits:
         k = min(hits, key=lambda k: squared_distance(a, polygon.points[k]))
         where = fmt_point(polygon.points[k])
-        return Verdict(
+        return CheckResult(
             False, f"{seg} passes through vertex {polygon.labels[k]} {where}",
             "through-vertex", vertex=k, point=polygon.points[k],
         )
@@ -117,14 +117,14 @@ def is_inner_diagonal(polygon: Polygon, i: int, j: int) -> Verdict:
         return crossing
     for v, t in ((i, b), (j, a)):
         if not _strictly_inside_cone(polygon, v, t):
-            return Verdict(
+            return CheckResult(
                 False, f"{seg} runs outside the polygon near vertex {polygon.labels[v]}",
                 "outside", vertex=v,
             )
     return YES
 
 
-def _first_crossing(polygon: Polygon, i: int, j: int) -> Verdict | None:
+def _first_crossing(polygon: Polygon, i: int, j: int) -> CheckResult | None:
     a, b = polygon.points[i], polygon.points[j]
     best: tuple[Fraction, int, Point] | None = None
     for k, m in polygon.edges():
@@ -141,13 +141,13 @@ def _first_crossing(polygon: Polygon, i: int, j: int) -> Verdict | None:
         return None
     _, k, x = best
     m = polygon.next(k)
-    return Verdict(
+    return CheckResult(
         False, f"{_name(polygon, i, j)} crosses edge {_name(polygon, k, m)} at {fmt_point(x)}",
         "crosses", edge=(k, m), point=x,
     )
 
 
-def verify_triangulation(polygon: Polygon | PolygonWithHoles, triangles: Iterable[Sequence[int]]) -> Verdict:
+def verify_triangulation(polygon: Polygon | PolygonWithHoles, triangles: Iterable[Sequence[int]]) -> CheckResult:
     """Whether the triangles (vertex-index triples) triangulate the polygon, exactly.
 
     Certificate: every triangle is non-degenerate and counter-clockwise once
@@ -166,7 +166,7 @@ def verify_triangulation(polygon: Polygon | PolygonWithHoles, triangles: Iterabl
     expected = n + 2 * holes - 2
     if len(tris) != expected:
         rings = f" and {holes} hole{'s' if holes > 1 else ''}" if holes else ""
-        return Verdict(
+        return CheckResult(
             False,
             f"wrong number of triangles: {len(tris)} for {n} vertices{rings} (expected {expected})",
             "count",
@@ -186,18 +186,18 @@ def polygon_turn(polygon: Polygon | PolygonWithHoles, tri: Sequence[int]) -> int
     return orient(*(polygon.points[k] for k in tri))
 
 
-def _triangle_problem(polygon: Polygon | PolygonWithHoles, tri: tuple[int, ...]) -> Verdict | None:
+def _triangle_problem(polygon: Polygon | PolygonWithHoles, tri: tuple[int, ...]) -> CheckResult | None:
     if len(tri) != 3 or not all(isinstance(k, int) and 0 <= k < polygon.n for k in tri):
-        return Verdict(False, f"triangle {list(tri)} does not name three vertices", "bad-index")
+        return CheckResult(False, f"triangle {list(tri)} does not name three vertices", "bad-index")
     if len(set(tri)) < 3 or polygon_turn(polygon, tri) == 0:
-        return Verdict(
+        return CheckResult(
             False, f"triangle {_name(polygon, *tri)} is degenerate (zero area)", "degenerate",
             triangle=(tri[0], tri[1], tri[2]),
         )
     return None
 
 
-def _edge_balance(polygon: Polygon | PolygonWithHoles, directed: Counter[tuple[int, int]]) -> Verdict:
+def _edge_balance(polygon: Polygon | PolygonWithHoles, directed: Counter[tuple[int, int]]) -> CheckResult:
     """Check the cancellation certificate edge by edge (each unordered edge once)."""
     boundary = set(polygon.edges())
     pairs = {(min(e), max(e)) for e in directed} | {(min(e), max(e)) for e in boundary}
@@ -208,7 +208,7 @@ def _edge_balance(polygon: Polygon | PolygonWithHoles, directed: Counter[tuple[i
         name = _name(polygon, u, v)
         if (u, v) in boundary:
             if back:
-                return Verdict(
+                return CheckResult(
                     False, f"a triangle lies outside the polygon beyond edge {name}",
                     "outside", edge=(u, v),
                 )
@@ -219,10 +219,10 @@ def _edge_balance(polygon: Polygon | PolygonWithHoles, directed: Counter[tuple[i
     return YES
 
 
-def _cover_verdict(count: int, name: str, edge: tuple[int, int], kind: str = "") -> Verdict:
+def _cover_verdict(count: int, name: str, edge: tuple[int, int], kind: str = "") -> CheckResult:
     if count > 1:
-        return Verdict(False, f"triangles overlap along {kind}{name}", "overlap", edge=edge)
-    return Verdict(
+        return CheckResult(False, f"triangles overlap along {kind}{name}", "overlap", edge=edge)
+    return CheckResult(
         False, f"area not covered beside {kind}{name}: it has a triangle on one side only"
         if not kind else f"area not covered: {kind}{name} has no triangle",
         "uncovered", edge=edge,

@@ -50,7 +50,7 @@ from geometry.predicates import Point
 from geometry.samples import is_sample, sample_from_spec
 
 __all__ = [
-    "Shape",
+    "AnyPolygon",
     "check_format",
     "polygon_from_rings",
     "polygon_to_json_points",
@@ -72,7 +72,8 @@ MAX_FILE_BYTES = 16 * 1024 * 1024
 #: The most vertices (all rings together) a polygon file may hold; refused before validation.
 MAX_VERTICES = 500_000
 Ring = Sequence[object]
-Shape = Polygon | PolygonWithHoles
+#: A polygon as read, with or without holes (a file may hold either)
+AnyPolygon = Polygon | PolygonWithHoles
 
 # --- reading -----------------------------------------------------------------
 
@@ -113,7 +114,7 @@ def read_polygon(arg: str | os.PathLike[str], *, ignore_holes: bool = False) -> 
     return polygon_from_rings(read_rings(path), ignore_holes=ignore_holes)
 
 
-def read_shape(arg: str | os.PathLike[str]) -> Shape:
+def read_shape(arg: str | os.PathLike[str]) -> AnyPolygon:
     """Like :func:`read_polygon`, but a polygon with holes is returned as one (also the
     samples of :data:`geometry.hole_samples.HOLE_SAMPLES`).
 
@@ -141,7 +142,7 @@ def _argument_path(arg: str | os.PathLike[str]) -> Path:
     return Path(arg)
 
 
-def shape_from_rings(rings: Sequence[Ring]) -> Shape:
+def shape_from_rings(rings: Sequence[Ring]) -> AnyPolygon:
     """A :class:`Polygon` for one ring, a validated :class:`PolygonWithHoles` for more.
 
     >>> shape_from_rings([[[0, 0], [4, 0], [0, 4]], [[1, 1], [1, 2], [2, 1]]]).hole_count

@@ -28,11 +28,11 @@ from dataclasses import dataclass, replace
 from typing import Any, cast
 
 import tracing
-from geometry.check import Verdict, is_inner_diagonal
+from geometry.check import CheckResult, is_inner_diagonal
 from geometry.diagonals import HEURISTICS
 from geometry.frame import Diagonal
 from geometry.polygon import Polygon
-from geometry.results import Triangle, Triangulation, canonical
+from geometry.results import TriangleIndices, Triangulation, canonical
 
 
 @dataclass(frozen=True)
@@ -63,9 +63,9 @@ class FilledTriangle:
     piece: Piece
 
     @property
-    def corners(self) -> Triangle:
+    def corners(self) -> TriangleIndices:
         """Its vertex indices in the whole polygon, in canonical form."""
-        return canonical(cast(Triangle, self.piece.ids))  # a piece of three vertices
+        return canonical(cast(TriangleIndices, self.piece.ids))  # a piece of three vertices
 
     @property
     def trace_key(self) -> str:
@@ -83,7 +83,7 @@ def done(piece: Piece) -> FilledTriangle:
 
 
 @tracing.lifetimes(consumes=("claim",))
-def check_claim(piece: Piece, claim: Diagonal) -> Verdict:
+def check_claim(piece: Piece, claim: Diagonal) -> CheckResult:
     """Whether the heuristic's claim is an inner diagonal of the piece, exactly; the claim goes."""
     return is_inner_diagonal(piece.polygon, *claim.pair)
 
@@ -130,7 +130,7 @@ def divide_and_conquer(polygon: Polygon,
 
 
 def _failure(
-    piece: Piece, verdict: Verdict, pair: tuple[int, int], triangles: list[Triangle], steps: int
+    piece: Piece, verdict: CheckResult, pair: tuple[int, int], triangles: list[TriangleIndices], steps: int
 ) -> Triangulation:
     """A piece's failed claim, restated in the whole polygon's indices.
 

@@ -8,8 +8,8 @@ a half-edge a→b, the edge out of b that comes next clockwise from b→a.
 :func:`triangulate_monotone_piece` is the greedy stack triangulation of a
 y-monotone polygon (de Berg et al., ch. 3.3): merge its two chains top to
 bottom; a vertex on the other chain than the stack's top sees every stacked
-vertex (fan them); a vertex on the same chain cuts off triangles while the
-stack's top is strictly convex, then waits. Straight angles are not convex,
+vertex (cut them all off, top first); a vertex on the same chain cuts off
+triangles while the stack's top is strictly convex, then waits. Straight angles are not convex,
 so no triangle has zero area.
 
 >>> from geometry.polygon import Polygon
@@ -17,7 +17,7 @@ so no triangle has zero area.
 >>> [piece.ids for piece in monotone_pieces(p, [(1, 4)])]
 [(0, 1, 4), (1, 2, 3, 4)]
 >>> triangulate_monotone_piece(p, monotone_pieces(p, [(1, 4)])[1])
-[(3, 4, 2), (4, 1, 2)]
+[(4, 1, 2), (3, 4, 2)]
 """
 
 from __future__ import annotations
@@ -25,7 +25,6 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cmp_to_key
-from itertools import pairwise
 from typing import Any
 
 import numpy as np
@@ -34,7 +33,7 @@ import tracing
 from geometry.holes import PolygonWithHoles
 from geometry.polygon import Polygon
 from geometry.predicates import Point, orient
-from geometry.results import Triangle
+from geometry.results import TriangleIndices
 
 
 @dataclass(frozen=True)
@@ -111,27 +110,49 @@ def _fans(polygon: Polygon | PolygonWithHoles, diagonals: list[tuple[int, int]])
 
 
 @tracing.traced
-def triangulate_monotone_piece(polygon: Polygon | PolygonWithHoles, piece: MonotonePiece) -> list[Triangle]:
-    """The stack triangulation of one y-monotone piece, counter-clockwise triples."""
+def triangulate_monotone_piece(polygon: Polygon | PolygonWithHoles, piece: MonotonePiece) -> list[TriangleIndices]:
+    """The stack triangulation of one y-monotone piece, counter-clockwise triples.
+
+    The stack holds the chain of vertices that wait to be triangulated; every change to it
+    is a traced step (:func:`push`, :func:`cut_off`), so the log shows the chain grow and
+    shrink, each triangle as it is cut off.
+    """
     ids = piece.ids
     if len(ids) == 3:
         return [ids]
     points = polygon.points
     order, on_left = _merged_chains(polygon, ids)
-    triangles: list[Triangle] = []
-    stack = [order[0], order[1]]
+    triangles: list[TriangleIndices] = []
+    stack: list[int] = []
+    push(stack, order[0])
+    push(stack, order[1])
     for u in order[2:-1]:
-        if on_left[u] != on_left[stack[-1]]:
-            _fan(points, u, stack, triangles)
-            stack = [stack[-1], u]
-        else:
-            last = stack.pop()
-            while stack and _cuts_off(points, stack[-1], last, u, on_left[u]):
-                triangles.append(_ccw(points, stack[-1], last, u))
-                last = stack.pop()
-            stack += [last, u]
-    _fan(points, order[-1], stack, triangles)
+        if on_left[u] != on_left[stack[-1]]:  # the other chain: u sees every waiting vertex
+            top = stack[-1]
+            while len(stack) > 1:
+                triangles.append(cut_off(points, stack, u))
+            stack = [top]  # the last one popped (the bottom) needs no triangle
+        else:  # the same chain: cut off while the top is strictly convex, then wait
+            while len(stack) > 1 and _cuts_off(points, stack[-2], stack[-1], u, on_left[u]):
+                triangles.append(cut_off(points, stack, u))
+        push(stack, u)
+    while len(stack) > 1:  # the lowest vertex sees every waiting one
+        triangles.append(cut_off(points, stack, order[-1]))
     return triangles
+
+
+@tracing.traced
+def push(stack: list[int], u: int) -> None:
+    """u waits on the stack (the call's ``stack`` is the chain before it)."""
+    stack.append(u)
+
+
+@tracing.traced(exclude_args=("points",))
+def cut_off(points: Sequence[Point], stack: list[int], u: int) -> TriangleIndices:
+    """u sees the vertex below the stack's top: the triangle (below, top, u) is cut off and
+    the top leaves the stack (the call's ``stack`` is the chain before)."""
+    top = stack.pop()
+    return _ccw(points, stack[-1], top, u)
 
 
 def _merged_chains(polygon: Polygon | PolygonWithHoles, ids: tuple[int, ...]) -> tuple[list[int], dict[int, bool]]:
@@ -154,13 +175,7 @@ def _cuts_off(points: Sequence[Point], s: int, last: int, u: int, left: bool) ->
     return turn > 0 if left else turn < 0
 
 
-def _fan(points: Sequence[Point], u: int, stack: list[int], triangles: list[Triangle]) -> None:
-    """u sees every stacked vertex: one triangle per consecutive pair on the stack."""
-    for s, t in pairwise(stack):
-        triangles.append(_ccw(points, s, t, u))
-
-
-def _ccw(points: Sequence[Point], a: int, b: int, c: int) -> Triangle:
+def _ccw(points: Sequence[Point], a: int, b: int, c: int) -> TriangleIndices:
     turn = orient(points[a], points[b], points[c])
     if turn == 0:
         raise AssertionError("a monotone piece produced a zero-area triangle")

@@ -48,7 +48,7 @@ from geometry.batch import PointTable
 from geometry.diagonals import Diagonal, gravity_at, sweep_at
 from geometry.polygon import Polygon, Vertex
 from geometry.predicates import orient
-from geometry.results import Corners, Triangle, Triangulation, finished, indices
+from geometry.results import Corners, TriangleIndices, Triangulation, finished, indices
 
 
 class ShrinkingPolygon:
@@ -177,14 +177,14 @@ def _search(g: GoodSubpolygon) -> Vertex:
 def prune_and_search(polygon: Polygon) -> Triangulation:
     """Clip the ears FindAnEar finds, searching on in the good sub-polygon of the last one."""
     remaining = ShrinkingPolygon(polygon)
-    triangles: list[Triangle] = []
+    triangles: list[TriangleIndices] = []
     _clip_ears_in(GoodSubpolygon.whole(remaining), triangles)
     a, b, c = (int(k) for k in remaining.order)
     triangles.append((a, b, c))
     return finished(triangles, steps=len(triangles))
 
 
-def _clip_ears_in(g: GoodSubpolygon, triangles: list[Triangle]) -> None:
+def _clip_ears_in(g: GoodSubpolygon, triangles: list[TriangleIndices]) -> None:
     """FindAnEar in G and clip, until G is down to its cutting edge (P: to a triangle)."""
     floor = 2 if g.has_cut else 3
     with tracing.alive(g):

@@ -16,10 +16,10 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
-from geometry.check import Verdict
+from geometry.check import CheckResult
 from geometry.polygon import Vertex
 
-Triangle = tuple[int, int, int]
+TriangleIndices = tuple[int, int, int]
 """Vertex indices of one triangle, counter-clockwise."""
 
 Corners = tuple[Vertex, Vertex, Vertex]
@@ -35,15 +35,15 @@ class Triangulation:
     ``steps`` counts the algorithm's main steps; ``extra`` holds its own counters.
     """
 
-    triangles: list[Triangle]
+    triangles: list[TriangleIndices]
     valid: bool
-    failure: Verdict | None = None
+    failure: CheckResult | None = None
     claim: tuple[int, int] | None = None
     steps: int = 0
     extra: dict[str, Any] = field(default_factory=dict)
 
 
-def canonical(tri: Triangle) -> Triangle:
+def canonical(tri: TriangleIndices) -> TriangleIndices:
     """The same counter-clockwise triple, rotated to start at its smallest index.
 
     The one canonical form of a triangle in this package: results list only these.
@@ -61,7 +61,7 @@ def canonical(tri: Triangle) -> Triangle:
     return (c, a, b)
 
 
-def indices(corners: Corners) -> Triangle:
+def indices(corners: Corners) -> TriangleIndices:
     """The index triple of a triangle given by its corner vertices.
 
     >>> a, b, c = Vertex(2, "C", (1.0, 0.0)), Vertex(0, "A", (0.0, 1.0)), Vertex(1, "B", (0.0, 0.0))
@@ -72,6 +72,6 @@ def indices(corners: Corners) -> Triangle:
     return (a.index, b.index, c.index)
 
 
-def finished(triangles: Iterable[Triangle], steps: int = 0, **extra: Any) -> Triangulation:
+def finished(triangles: Iterable[TriangleIndices], steps: int = 0, **extra: Any) -> Triangulation:
     """A complete (``valid``) triangulation from counter-clockwise triples, in canonical form."""
     return Triangulation(sorted(canonical(t) for t in triangles), True, steps=steps, extra=extra)

@@ -190,7 +190,7 @@ class Keyhole(Beat):
 
     hole: int
     corners: list[str]
-    points: list
+    points: list[list[float]]
 
 
 @beat_kind("ear-test")
@@ -200,7 +200,7 @@ class EarTest(Beat):
 
     vertex: str
     ear: bool
-    triangle: list
+    triangle: list[list[float]]
     inside: str | None
 
 
@@ -209,11 +209,11 @@ class Slice(Beat):
     """Slice ``k`` of ``total`` cut off at ``corners``; ``rest`` is what is left of the fruit."""
 
     corners: list[str]
-    points: list
+    points: list[list[float]]
     k: int
     total: int
-    rest: list
-    triangulation: list  # after the last slice, every slice's corners' points; else empty
+    rest: list[list[float]]
+    triangulation: list[list[list[float]]]  # after the last slice, every slice's corners' points; else empty
 
 
 @beat_kind("last-slice")
@@ -225,7 +225,7 @@ class LastSlice(Slice):
 class Good(Beat):
     """Prune and search keeps a good sub-polygon (its points and labels)."""
 
-    points: list
+    points: list[list[float]]
     labels: list[str]
 
 

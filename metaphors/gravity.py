@@ -165,7 +165,7 @@ def snag(board: Board, beat: Snag) -> None:
 class GravityTurn(Beat):
     """Gravity's direction for the piece ``polygon``; the picture turns by ``turn_picture``."""
 
-    down: list
+    down: list[float]  # gravity's direction, a vector
     tilt: float
     turn_picture: float
     polygon: str

@@ -135,6 +135,9 @@ class LectureScene(TraceScene):
     """Plays one chapter: its segments in order, as one Manim section."""
 
     chapter_title = "Chapter"
+    #: the chapter's name (``--chapters gravity``, ``03-gravity.mp4``); a lecture chapter's
+    #: file is ``scenes/chapters/ch<k>_<slug>.py`` (:func:`trex.chapters.lecture_chapters`)
+    slug = ""
     #: notes for whoever teaches the chapter (Forišek–Steinová's experience), never played:
     #: ``trex lecture`` writes them to ``teacher-notes.md``, the slides show them in the
     #: speaker window, the handout prints them

@@ -1,14 +1,29 @@
 """Monotone partition (Garey et al.): a horizontal line sweeps down, vertices are classified,
 split and merge vertices get diagonals, the pieces are y-monotone, a stack triangulates each.
 
-Positions, kinds, diagonals, pieces and triangles come from the log (the beats' data).
+Positions, kinds, diagonals, pieces, the stack's chain at every step and the triangles come
+from the log (the beats' data). Each split and merge vertex, and each diagonal, is a key
+step: never fast-forwarded. Split and merge vertices have colours of their own
+(:mod:`metaphors.theme`), never the red of "fails".
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
 
-from manim import Create, DashedLine, FadeIn, FadeOut, Indicate, Line, Transform, VGroup
+from manim import (
+    DOWN,
+    Create,
+    DashedLine,
+    Dot,
+    FadeIn,
+    FadeOut,
+    Indicate,
+    Line,
+    Transform,
+    VGroup,
+    VMobject,
+)
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board
@@ -19,6 +34,10 @@ from rendering.typeset import text
 from story.beats import Beat, beat_kind
 from story.storyboard import Reading, Walk
 from tracing import Event
+
+#: where the stack's column stands (its centre's x, its top): in the frame's left margin under
+#: the title, beside the metaphor's box (x from -6.25), where no polygon is drawn
+STACK_COLUMN = (-6.5, 2.9)
 
 
 def _sweep_line(board: Board, y: float) -> DashedLine:
@@ -34,8 +53,7 @@ def classify(board: Board, beat: Classify) -> None:
     theme, data = board.theme, beat
     line = _sweep_line(board, data.at[1])
     kind = tag(text(data.kind, font=theme.font, size=theme.label_size + 2,
-                    colour=theme.rejected if data.kind in ("split", "merge") else theme.called),
-               None, "kind")
+                    colour=theme.role_colour(_kind_role(data.kind))), None, "kind")
     kind.next_to(board.markers[data.vertex], direction=[1, 0, 0], buff=0.1)
     anims: list[FadeIn | Indicate | Transform | Create] = [FadeIn(kind), Indicate(board.markers[data.vertex])]
     if "sweep" in board.objects:
@@ -69,7 +87,57 @@ def pieces(board: Board, beat: Pieces) -> None:
     board.play(beat, *board.drop("sweep"), *tints, run_time=1.2)
 
 
+def stack_step(board: Board, beat: StackStep) -> None:
+    """The stack changes: its waiting chain is redrawn thick along P and its column of labels
+    (top at the top) rewritten; a triangle cut off is drawn as it leaves."""
+    theme = board.theme
+    chain = tag(_chain(board, beat.points), None, "stack:chain")
+    column = tag(_column(board, beat.chain), None, "stack:column")
+    anims: list = [_replace(board, "stack:chain", chain), _replace(board, "stack:column", column)]
+    if beat.triangle:
+        cut = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.ink,
+                           stroke_width=theme.thin_stroke, fill_color=theme.stack,
+                           fill_opacity=0.25), None, "triangle")
+        board.keep(f"triangle:{beat.step}", cut)
+        anims.append(Create(cut))
+    else:  # a push: the vertex that now waits
+        anims.append(Indicate(board.markers[beat.chain[-1]], color=theme.stack))
+    board.play(beat, *anims, run_time=0.9)
+
+
+def _replace(board: Board, key: str, new: VMobject) -> Transform | FadeIn:
+    """``new`` takes the place of the object kept as ``key`` (or comes in, the first time)."""
+    if key in board.objects:
+        old = board.objects[key]
+        return Transform(old, new)
+    board.keep(key, new)
+    return FadeIn(new)
+
+
+def _chain(board: Board, points: list) -> VMobject:
+    """The waiting chain: a thick line through its vertices, a large dot when one waits."""
+    theme = board.theme
+    corners = [board.at(p) for p in points]
+    if len(corners) == 1:
+        return Dot(corners[0], radius=theme.dot_radius * 2.2, color=theme.stack)
+    line = VMobject(stroke_color=theme.stack, stroke_width=theme.stroke * 2.6)
+    line.set_points_as_corners(corners)
+    return line
+
+
+def _column(board: Board, chain: list[str]) -> VGroup:
+    """The stack as a column beside P: "stack" over its labels, the top first."""
+    theme = board.theme
+    size = theme.label_size + 4  # "stack" has no capital: a line of it still ≥ 2.5 % high
+    words = [text(word, font=theme.font, size=size, colour=theme.stack)
+             for word in ("stack", *reversed(chain))]
+    column = VGroup(*words).arrange(DOWN, buff=0.12)
+    x, top = STACK_COLUMN
+    return column.move_to((x, top - column.height / 2, 0))
+
+
 def stack(board: Board, beat: Stack) -> None:
+    """A piece is done: its chain and column go; a piece that is a triangle is drawn."""
     theme = board.theme
     drawn = []
     for k, triangle in enumerate(beat.triangles):
@@ -77,7 +145,7 @@ def stack(board: Board, beat: Stack) -> None:
                          stroke_width=theme.thin_stroke, fill_opacity=0), None, "triangle")
         board.keep(f"triangle:{beat.step}:{k}", t)
         drawn.append(Create(t))
-    board.play(beat, *drawn, run_time=1.0)
+    board.play(beat, *drawn, *board.drop("stack:chain", "stack:column"), run_time=1.0)
     if beat.triangulation:
         _whole(board, beat)
 
@@ -134,30 +202,52 @@ class Pieces(Beat):
     pieces: list
 
 
+@beat_kind("stack-step")
+class StackStep(Beat):
+    """The stack of a monotone piece changes: the ``chain`` waiting after it (labels, the
+    bottom first, and their ``points``), and the ``triangle`` cut off (its points and
+    ``cut``, its labels; both empty when a vertex is pushed)."""
+
+    chain: list[str]
+    points: list
+    cut: list[str]
+    triangle: list
+
+
 @beat_kind("stack")
 class Stack(Beat):
-    """The triangles the stack cuts from one monotone piece; after the last piece, every
-    triangle of the run (``triangulation``; else empty)."""
+    """A monotone piece is done. ``triangles``: those not cut off step by step (a piece
+    that is a triangle already); after the last piece, every triangle of the run
+    (``triangulation``; else empty)."""
 
     triangles: list
     triangulation: list
 
 
+def _kind_role(kind: str) -> str:
+    """The role a vertex of this kind plays: split and merge have their own colours."""
+    return kind if kind in ("split", "merge") else "called"
+
+
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, kind = walk.ref(call, "v"), ret.result
     yield walk.step(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
-                    roles={v: "rejected" if kind in ("split", "merge") else "called"},
+                    key_step=kind in ("split", "merge"), roles={v: _kind_role(kind)},
                     vertex=v, kind=kind, at=walk.root_points()[v])
+    walk.count_claim("vertex")  # after its beat: the beat belongs to the vertex it classifies
 
 
 def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     where = walk.root_points()
     labels = list(where)
     u, w = (labels[k] for k in ret.result)
-    yield walk.step(MonotoneDiagonal, f"Diagonal {u}{w} removes a split or merge vertex", call, ret,
-                    labels=[u, w],
-                    points=[where[u], where[w]])
-    walk.count_claim()  # after its beat: the beat belongs to the diagonal it draws
+    handler = walk.stack[-2].name if len(walk.stack) > 1 else ""
+    why = (f"the split vertex {u} joins its helper {w}" if handler == "handle_split"
+           else f"{u} takes over from the merge vertex {w}")
+    yield walk.step(MonotoneDiagonal, f"Diagonal {u}{w}: {why}", call, ret, key_step=True,
+                    roles={u: "split" if handler == "handle_split" else "called", w: (
+                        "argument" if handler == "handle_split" else "merge")},
+                    labels=[u, w], points=[where[u], where[w]])
 
 
 def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -166,20 +256,51 @@ def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                     "pieces", call, ret, pieces=[p.get("points", []) for p in pieces])
 
 
+def _stacked(walk: Walk, indices: list[int]) -> list[str]:
+    labels = list(walk.root_points())
+    return [labels[k] for k in indices]
+
+
+def read_push(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """A vertex waits: the chain is the call's stack with it on top."""
+    where = walk.root_points()
+    args = call.args or {}
+    chain = _stacked(walk, [*args["stack"], args["u"]])
+    yield walk.step(StackStep, f"{chain[-1]} waits on the stack", call, ret, roles={},
+                    chain=chain, points=[where[v] for v in chain], cut=[], triangle=[])
+
+
+def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """A triangle is cut off: the stack's top leaves it."""
+    where = walk.root_points()
+    before = _stacked(walk, (call.args or {})["stack"])
+    cut = _stacked(walk, ret.result)
+    walk.memo("monotone.cut", list).append(cut)
+    yield walk.step(StackStep, f"Triangle {''.join(cut)} cut off: {before[-1]} leaves",
+                    call, ret, roles={}, chain=before[:-1],
+                    points=[where[v] for v in before[:-1]], cut=cut,
+                    triangle=[where[v] for v in cut])
+
+
 def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     where = walk.root_points()
     labels = list(where)
     triangles = [[where[labels[k]] for k in t] for t in ret.result]
     done = walk.memo("monotone.triangles", list)  # the triangles of the pieces so far
     done.extend(triangles)
-    yield walk.step(Stack, f"The stack triangulates a monotone piece: "
-                    f"{len(triangles)} triangle{'s' if len(triangles) != 1 else ''}", call, ret,
-                    triangles=triangles,
+    cut = walk.memo("monotone.cut", list)  # cut off step by step in this piece
+    n = len(triangles)
+    caption = (f"This piece is done: {n} triangle{'s' if n != 1 else ''}" if cut
+               else "This piece is a triangle already")
+    yield walk.step(Stack, caption, call, ret, triangles=[] if cut else triangles,
                     triangulation=list(done) if len(done) == len(labels) - 2 else [])
+    cut.clear()
 
 
 READS: Mapping[str, Reading] = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,
-         "monotone_pieces": read_pieces, "triangulate_monotone_piece": read_stack}
+         "monotone_pieces": read_pieces, "triangulate_monotone_piece": read_stack,
+         "push": read_push, "cut_off": read_cut}
 PERFORMS: Performances = performs(act(Classify, classify),
                                   act(MonotoneDiagonal, monotone_diagonal),
-                                  act(Pieces, pieces), act(Stack, stack))
+                                  act(Pieces, pieces), act(StackStep, stack_step),
+                                  act(Stack, stack))

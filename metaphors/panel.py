@@ -38,7 +38,7 @@ from metaphors.theme import THEME, Theme
 from rendering import typeset
 from rendering.layers import BACKDROP_Z
 from story.beats import Beat
-from story.pseudocode import PSEUDOCODE, SOURCE, Step
+from story.pseudocode import PSEUDOCODE, SOURCE, PseudocodeRow
 
 #: the distance between the pseudocode's rows (scene units; less when more rows than fit are
 #: shown): 4.25 % of the frame's height, for rows of the theme's ``pseudocode_size``
@@ -73,7 +73,7 @@ class Panel:
         }
         self.mode = SOURCE
         self.code_lines = source_of(shown) if shown else ()
-        self.pseudocode: tuple[Step, ...] = ()
+        self.pseudocode: tuple[PseudocodeRow, ...] = ()
         # the source: its rows, the window of lines shown (None: all of them), and each
         # shown line's row mobjects and the middle of their slots
         self.rows: tuple[Row, ...] = ()
@@ -100,7 +100,7 @@ class Panel:
         self.code = self._code_block()
 
     def show_pseudocode(self, rows) -> None:
-        """Show these pseudocode rows (:class:`story.pseudocode.Step`) instead of the source
+        """Show these pseudocode rows (:class:`story.pseudocode.PseudocodeRow`) instead of the source
         (before the panel is on screen); each beat's ``row`` then lights one of them."""
         self.mode = PSEUDOCODE
         self.pseudocode = tuple(rows)

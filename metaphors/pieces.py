@@ -26,8 +26,8 @@ class Split(Beat):
 
     pieces: list[str]
     parent: str
-    points: list
-    labels: list
+    points: list[list[list[float]]]  # one ring of points per piece
+    labels: list[list[str]]
 
 
 def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:

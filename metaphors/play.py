@@ -19,6 +19,7 @@ from metaphors.layout import Box
 from metaphors.recorded import Recorded, captions_of, mark_step
 from story.beats import Beat, ShowPolygon
 from story.pseudocode import PSEUDOCODE
+from story.refs import meta
 from story.storyboard import spoken_pseudocode
 from tracing import Log
 
@@ -43,7 +44,7 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     first = cast(ShowPolygon, beats[0])  # a storyboard opens with its polygon
     holes = first.holes if isinstance(first, ShowPolygon) else ()
     recorded = cast(Recorded, scene)  # every BoardScene is Recorded (TraceScene, the player's)
-    board = Board(recorded, first.points, first.labels, log.meta.get("shown"), title, theme,
+    board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded))
     board.panel.shows_calls = scene.call_line
     code = log.meta.get("code")

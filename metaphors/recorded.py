@@ -17,8 +17,9 @@ from typing import TYPE_CHECKING, Any
 from manim import Scene
 
 from metaphors.captions import CaptionTrack
-from metaphors.steps import StepMark, frame_now
+from metaphors.steps import frame_now
 from story.beats import Beat
+from story.step_marks import StepMark
 
 if TYPE_CHECKING:
     from metaphors.board import Board

@@ -1,4 +1,4 @@
-"""Step marks: where each step of a scene starts in its video, noted while it renders.
+"""Step marks (:class:`story.step_marks.StepMark`): where each step of a scene starts in its video, noted while it renders.
 
 A *step* is what a presenter plays with one key press (``trex slides``): one beat of a run
 (a call, a metaphor action, a verdict), a card's title or one of its lines, a question or its
@@ -20,24 +20,9 @@ between two plays) always falls on the first frame of one of them: a key frame o
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from manim import Scene
 
-
-@dataclass(frozen=True)
-class StepMark:
-    """A step: the video frame it starts at, its caption, the call line shown (if any) and
-    what kind of step it is (a beat's action, ``card``, ``card-line``, ``question`` …)."""
-
-    frame: int
-    caption: str
-    call: str | None = None
-    kind: str = "beat"
-
-    def to_dict(self) -> dict:
-        return {"frame": self.frame, "caption": self.caption, "call": self.call,
-                "kind": self.kind}
+__all__ = ["frame_now"]
 
 
 def frame_now(scene: Scene) -> int:

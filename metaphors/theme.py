@@ -4,8 +4,37 @@ Roles follow the seed's viewer: the object a call runs on is blue, its
 arguments amber while the call runs, the result green, a rejected object red,
 everything idle grey.
 
+The legend: each colour has one meaning for the whole lecture and every scene.
+
+============  ==========  ===========================================================
+field         colour      meaning
+============  ==========  ===========================================================
+called        blue        the object a call runs on (a vertex being looked at)
+argument      amber       a call's other inputs while it runs; a diagonal being drawn
+result        green       what a call gives; a correct claim; a triangulation's count
+rejected      red         fails: a wrong claim, its part outside P, the crossed edge,
+                          a vertex inside a triangle that is not an ear — never a kind
+idle          grey        everything not in the current call
+split         cyan        a split vertex of the monotone sweep (a kind, not a verdict)
+merge         magenta     a merge vertex of the monotone sweep (a kind, not a verdict)
+stack         yellow      the monotone stack: the chain waiting to be triangulated
+polygon_fill  navy        inside P
+water         light blue  spilled or rising water (Scaling)
+ball, band    orange,     gravity's ball and its rubber band (Gravity)
+              rose
+hand, sweep   purple      the clock hand (Rotation) and the sweeping line
+                          (Translation, the monotone sweep)
+dial          grey        the clock face
+fruit, rind   orange,     the fruit sliced (ear clipping), on its plate
+              olive
+pieces        tints       the sub-polygons of divide and conquer and the monotone
+                          pieces; the triangles of a finished triangulation
+============  ==========  ===========================================================
+
 >>> THEME.role_colour("result") == THEME.result
 True
+>>> THEME.role_colour("merge") in (THEME.rejected, THEME.result)
+False
 """
 
 from __future__ import annotations
@@ -26,6 +55,9 @@ class Theme:
     result: str = "#4cc46b"
     rejected: str = "#ef4b4b"
     idle: str = "#8a93a3"
+    split: str = "#3ad6e0"  # a split vertex: a kind of vertex, never a verdict's red or green
+    merge: str = "#f06fe0"  # a merge vertex: likewise
+    stack: str = "#ffe45c"  # the monotone stack's waiting chain
     ink: str = DEFAULT_INK
     polygon_fill: str = "#2a3a55"
     water: str = "#3aa0ff"

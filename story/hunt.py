@@ -38,7 +38,7 @@ import time
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 
-from geometry.check import Verdict, is_inner_diagonal
+from geometry.check import CheckResult, is_inner_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import Diagonal
 from geometry.polygon import Polygon
@@ -94,7 +94,7 @@ class Hunt:
     seconds: float
     polygon: Polygon | None = None
     diagonal: tuple[int, int] | None = None
-    verdict: Verdict | None = None
+    verdict: CheckResult | None = None
     first: int | None = None
     checks: int = 0
     sizes: dict[int, int] = field(default_factory=dict)
@@ -120,7 +120,7 @@ class Failure:
 
     polygon: Polygon
     claim: Diagonal | None = None
-    verdict: Verdict | None = None
+    verdict: CheckResult | None = None
     error: UserHeuristicError | None = None
 
     @property

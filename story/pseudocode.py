@@ -1,7 +1,7 @@
-"""Pseudocode: the steps of an algorithm in the thesis's words, each tied to the traced calls
+"""Pseudocode: the rows of an algorithm in the thesis's words, each tied to the traced calls
 it covers, and which of them is lit as a log runs.
 
-A :class:`Step` is one row of the panel: a short text (two leading spaces per level of
+A :class:`PseudocodeRow` is one row of the panel: a short text (two leading spaces per level of
 indentation) and the traced names it covers (``calls``). The registry writes the pseudocode
 of every built-in algorithm (:attr:`story.registry.Entry.pseudocode`); a heuristic of one's
 own may carry its own in its docstring (:func:`from_docstring`). The storyboard lights, for
@@ -12,10 +12,10 @@ The panel shows the pseudocode or the real source: :data:`PANELS`, :data:`PSEUDO
 
 No manim here.
 
->>> rows = (Step("B = the left-most vertex", ("leftmost_vertex",)),
-...         Step("none: AC is an inner diagonal", ("claim",)),
-...         Step("else: D = the candidate closest to B", ("pick", "nearest_to")),
-...         Step("  BD is an inner diagonal", ("claim",)))
+>>> rows = (PseudocodeRow("B = the left-most vertex", ("leftmost_vertex",)),
+...         PseudocodeRow("none: AC is an inner diagonal", ("claim",)),
+...         PseudocodeRow("else: D = the candidate closest to B", ("pick", "nearest_to")),
+...         PseudocodeRow("  BD is an inner diagonal", ("claim",)))
 >>> lit_row(rows, ["scaling", "pick", "nearest_to"], lit=0)
 2
 >>> lit_row(rows, ["scaling", "claim"], lit=2), lit_row(rows, ["scaling", "claim"], lit=0)
@@ -35,7 +35,7 @@ __all__ = [
     "PANELS",
     "PSEUDOCODE",
     "SOURCE",
-    "Step",
+    "PseudocodeRow",
     "from_docstring",
     "from_json",
     "lit_row",
@@ -49,7 +49,7 @@ PANELS = (PSEUDOCODE, SOURCE)
 
 
 @dataclass(frozen=True)
-class Step:
+class PseudocodeRow:
     """One row of pseudocode.
 
     Attributes
@@ -67,13 +67,13 @@ class Step:
     def depth(self) -> int:
         """Its level of indentation (two spaces each).
 
-        >>> Step("    G = the good part").depth
+        >>> PseudocodeRow("    G = the good part").depth
         2
         """
         return (len(self.text) - len(self.text.lstrip(" "))) // 2
 
 
-def lit_row(pseudocode: Sequence[Step], running: Sequence[str], lit: int | None) -> int | None:
+def lit_row(pseudocode: Sequence[PseudocodeRow], running: Sequence[str], lit: int | None) -> int | None:
     """The row lit while the calls ``running`` (outermost first) run: the row covering the
     innermost of them that a row covers; None if none is covered.
 
@@ -82,7 +82,7 @@ def lit_row(pseudocode: Sequence[Step], running: Sequence[str], lit: int | None)
     first of them (it went round a loop).
     """
     for name in reversed(running):
-        rows = [k for k, step in enumerate(pseudocode) if name in step.calls]
+        rows = [k for k, row in enumerate(pseudocode) if name in row.calls]
         if rows:
             later = [k for k in rows if lit is not None and k >= lit]
             return later[0] if later else rows[0]
@@ -95,16 +95,16 @@ def lit_row(pseudocode: Sequence[Step], running: Sequence[str], lit: int | None)
 _NAME = re.compile(r"\b[A-Z]+\b")
 
 
-def named(pseudocode: Sequence[Step], vertices: dict[str, str],
-          labels: Iterable[str]) -> tuple[Step, ...]:
+def named(pseudocode: Sequence[PseudocodeRow], vertices: dict[str, str],
+          labels: Iterable[str]) -> tuple[PseudocodeRow, ...]:
     """The rows speaking of the picture's own vertices (issue 22): where a placeholder
     (``D``) is also a label on screen (``labels``) and the run gave it another vertex
     (``vertices``: placeholder → label, ``{"D": "E"}``), the rows name that vertex instead
     — the screen's D is not the rule's D. Every name made only of placeholders is rewritten
     letter by letter, all at once (``BD`` → ``BE``); other capitals (``P``, ``T``) stay.
 
-    >>> rows = (Step("else: D = the candidate closest to B", ("pick",)),
-    ...         Step("  BD is an inner diagonal", ("claim",)))
+    >>> rows = (PseudocodeRow("else: D = the candidate closest to B", ("pick",)),
+    ...         PseudocodeRow("  BD is an inner diagonal", ("claim",)))
     >>> [s.text for s in named(rows, {"B": "B", "D": "E"}, "ABCDE")]
     ['else: E = the candidate closest to B', '  BE is an inner diagonal']
     >>> [s.text for s in named(rows, {"B": "D", "D": "B"}, "ABCDE")]
@@ -121,7 +121,7 @@ def named(pseudocode: Sequence[Step], vertices: dict[str, str],
         word = found.group()
         return "".join(swap.get(c, c) for c in word) if set(word) <= set(vertices) else word
 
-    return tuple(Step(_NAME.sub(rename, step.text), step.calls) for step in pseudocode)
+    return tuple(PseudocodeRow(_NAME.sub(rename, row.text), row.calls) for row in pseudocode)
 
 
 # --- a heuristic of one's own: pseudocode in its docstring ------------------------------------
@@ -131,7 +131,7 @@ HEADING = "Pseudocode:"
 _CALLS = re.compile(r"^(?P<text>.*?)\s*\[(?P<calls>[^\[\]]*)\]\s*$")
 
 
-def from_docstring(doc: str | None) -> tuple[Step, ...]:
+def from_docstring(doc: str | None) -> tuple[PseudocodeRow, ...]:
     """The pseudocode rows of a docstring: the lines after a line ``Pseudocode:``, up to the
     first blank line (or the end). A row may end in the traced names it covers, in brackets:
     ``text  [name, other_name]`` (``[]``: none; a row ending in no brackets covers none).
@@ -146,8 +146,8 @@ def from_docstring(doc: str | None) -> tuple[Step, ...]:
     ...     claim BD for the widest        [claim]
     ...
     ... More text.'''
-    >>> for step in from_docstring(doc):
-    ...     print(repr(step.text), step.calls)
+    >>> for row in from_docstring(doc):
+    ...     print(repr(row.text), row.calls)
     'B = the left-most vertex' ('leftmost_vertex',)
     'for each candidate D:' ()
     '  the angle ABD' ('angle_at_b',)
@@ -167,29 +167,29 @@ def from_docstring(doc: str | None) -> tuple[Step, ...]:
             continue
         rows.append(line.rstrip())
     margin = min((len(r) - len(r.lstrip(" ")) for r in rows), default=0)
-    return tuple(_step(row[margin:]) for row in rows)
+    return tuple(_parse_row(row[margin:]) for row in rows)
 
 
-def _step(row: str) -> Step:
+def _parse_row(row: str) -> PseudocodeRow:
     found = _CALLS.match(row)
     if found is None:
-        return Step(row)
+        return PseudocodeRow(row)
     calls = tuple(name.strip() for name in found["calls"].split(",") if name.strip())
-    return Step(found["text"], calls)
+    return PseudocodeRow(found["text"], calls)
 
 
 # --- in a log's meta ------------------------------------------------------------------------------
 
 
-def to_json(pseudocode: Iterable[Step]) -> list[list[Any]]:
+def to_json(pseudocode: Iterable[PseudocodeRow]) -> list[list[Any]]:
     """Rows as a log's meta carries them: ``[[text, [calls…]], …]``."""
-    return [[step.text, list(step.calls)] for step in pseudocode]
+    return [[row.text, list(row.calls)] for row in pseudocode]
 
 
-def from_json(rows: Iterable[Sequence[Any]] | None) -> tuple[Step, ...]:
+def from_json(rows: Iterable[Sequence[Any]] | None) -> tuple[PseudocodeRow, ...]:
     """Rows from a log's meta (:func:`to_json`).
 
-    >>> from_json(to_json([Step("claim BD", ("claim",))]))
-    (Step(text='claim BD', calls=('claim',)),)
+    >>> from_json(to_json([PseudocodeRow("claim BD", ("claim",))]))
+    (PseudocodeRow(text='claim BD', calls=('claim',)),)
     """
-    return tuple(Step(str(text), tuple(str(c) for c in calls)) for text, calls in rows or ())
+    return tuple(PseudocodeRow(str(text), tuple(str(c) for c in calls)) for text, calls in rows or ())

@@ -48,28 +48,34 @@ def readable(caption: str, seconds: float) -> bool:
     return seconds >= LEAST_CUE and len(caption) <= READING_SPEED * seconds
 
 
-def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: str) -> list[Beat]:
+def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: str,
+               kept: Sequence[bool] = ()) -> list[Beat]:
     """The beats with the captions of repeated claims replaced by summaries.
 
     ``claims[k]`` is how many claims were counted when beat ``k`` was made: beats made
     after ``full`` claims repeat what was shown, so each group of up to
     :data:`SUMMARY_CLAIMS` claims shares one caption (``"Diagonals 3–7: the same steps,
-    faster"``). Kept as they are: the beats of the last count (the run's end) and a failing
-    verdict with all after it (the crossed edge is named on screen).
+    faster"``). Kept as they are: the beats of the last count (the run's end), a failing
+    verdict with all after it (the crossed edge is named on screen), and the key steps
+    (``kept[k]`` true: a split or merge vertex and its diagonal, each its own step).
 
     >>> from story.beats import Note
     >>> beats = [Note(caption=f"step {k}", step=k) for k in range(6)]
     >>> [b.caption for b in summarised(beats, [0, 1, 1, 2, 2, 3], 1, "diagonal")]
     ['step 0', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'step 5']
+    >>> [b.caption for b in summarised(beats, [0, 1, 1, 2, 2, 3], 1, "vertex",
+    ...                                [False, False, True, False, False, False])][1:4]
+    ['Vertices 2–3: the same steps, faster', 'step 2', 'Vertices 2–3: the same steps, faster']
     """
     if not beats:
         return []
     last = claims[-1]
     out = []
     failed = False
-    for beat, counted in zip(beats, claims, strict=True):
+    keep = list(kept) or [False] * len(beats)
+    for beat, counted, key in zip(beats, claims, keep, strict=True):
         failed = failed or (isinstance(beat, Verdict) and not beat.ok)
-        if failed or counted < full or counted >= last:
+        if failed or key or counted < full or counted >= last:
             out.append(beat)
             continue
         first = full + 1 + (counted - full) // SUMMARY_CLAIMS * SUMMARY_CLAIMS
@@ -78,11 +84,14 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
     return out
 
 
+#: the plural of a noun whose plural is not its name and an s
+_PLURALS = {"vertex": "vertices"}
+
+
 def _summary(noun: str, first: int, last: int) -> str:
-    name = noun.capitalize()
     if first == last:
-        return f"{name} {first}: the same steps, faster"
-    return f"{name}s {first}–{last}: the same steps, faster"
+        return f"{noun.capitalize()} {first}: the same steps, faster"
+    return f"{_PLURALS.get(noun, noun + 's').capitalize()} {first}–{last}: the same steps, faster"
 
 
 def frame_key(beats: Sequence[Beat]) -> tuple[tuple[Any, ...], tuple[Any, ...], tuple[str, ...]] | None:

@@ -1,4 +1,5 @@
-"""The keys a log's calls refer to: one lookup for every reading of an argument or a result.
+"""The keys a log's calls refer to: one lookup for every reading of an argument, a result or
+the log's meta.
 
 A traced argument that is an object of the log is encoded as ``{"ref": key}``
 (:mod:`tracing.encoding`); the readings of the metaphors ask for it by the parameter's name.
@@ -18,6 +19,16 @@ geometry.errors.LogFormatError: the log's call of nearest_to has no argument 'c'
 Traceback (most recent call last):
 ...
 geometry.errors.LogFormatError: the log's call of nearest_to: argument 'k' is not an object of the log
+
+The log's meta (what ran, on what: ``algorithm``, ``shown`` …) is read by :func:`meta`:
+
+>>> from tracing import Log
+>>> meta(Log(meta={"algorithm": "gravity"}), "algorithm"), meta(Log(), "shown")
+('gravity', None)
+>>> meta(Log(meta={"shown": 3}), "shown")
+Traceback (most recent call last):
+...
+geometry.errors.LogFormatError: the log's meta 'shown' is not a string
 """
 
 from __future__ import annotations
@@ -25,7 +36,7 @@ from __future__ import annotations
 from typing import Any, cast
 
 from geometry.errors import LogFormatError
-from tracing import Event
+from tracing import Event, Log
 
 
 def ref(call: Event, name: str) -> str:
@@ -48,6 +59,14 @@ def arg(call: Event, name: str) -> Any:
     if name not in args:
         raise LogFormatError(f"the log's call of {call.name} has no argument {name!r}")
     return args[name]
+
+
+def meta(log: Log, key: str) -> str | None:
+    """The log's meta ``key``, a string (None: the log has none)."""
+    value = log.meta.get(key)
+    if value is None or isinstance(value, str):
+        return value
+    raise LogFormatError(f"the log's meta {key!r} is not a string")
 
 
 def result_ref(ret: Event) -> str:

@@ -44,7 +44,7 @@ from geometry.lennes import divide_and_conquer
 from geometry.polygon import Polygon
 from geometry.results import Triangulation
 from geometry.triangulate import RUNNERS, triangulate
-from story.pseudocode import Step
+from story.pseudocode import PseudocodeRow
 from usercode.heuristic import UserHeuristic, diagonal_rule
 
 __all__ = [
@@ -165,9 +165,9 @@ class Entry:
         which it fails.
     title : str
         One line naming it and its idea, for titles.
-    pseudocode : tuple of Step
+    pseudocode : tuple of PseudocodeRow
         Its pseudocode in the thesis's words (ch. 2), at most about ten short rows, each a
-        :class:`story.pseudocode.Step`: its text (two leading spaces a level) and the traced
+        :class:`story.pseudocode.PseudocodeRow`: its text (two leading spaces a level) and the traced
         names of the calls it covers, which light it as the log runs. Empty for the
         reference triangulation (the panel shows nothing).
     correction : str or None
@@ -183,7 +183,7 @@ class Entry:
     source: Callable[..., Any] | None
     polygon: str
     title: str
-    pseudocode: tuple[Step, ...] = ()
+    pseudocode: tuple[PseudocodeRow, ...] = ()
     correction: str | None = None
 
     @property
@@ -202,25 +202,25 @@ def _title(name: str, idea: str) -> str:
 
 
 def _heuristic(name: str, *, correct: bool, metaphor: str, polygon: str, idea: str,
-               pseudocode: tuple[Step, ...], shown: Callable[..., Any] | None = None,
+               pseudocode: tuple[PseudocodeRow, ...], shown: Callable[..., Any] | None = None,
                correction: str | None = None) -> Entry:
     source = shown or HEURISTICS[name]
     return Entry(name, HEURISTIC, HEURISTICS[name], correct, metaphor, _traced_name(source),
                  source, polygon, _title(name, idea), pseudocode, correction)
 
 
-def _frame(rule: str, *calls: str, inside: tuple[Step, ...] = ()) -> tuple[Step, ...]:
+def _frame(rule: str, *calls: str, inside: tuple[PseudocodeRow, ...] = ()) -> tuple[PseudocodeRow, ...]:
     """The pseudocode every triangle heuristic shares (thesis ch. 2.1), around its rule for D:
     ``else: D = <rule>``, covering the traced ``pick`` and the rule's own ``calls`` (with the
     rows ``inside`` the rule, if any)."""
     return (
-        Step("B = the left-most vertex (lowest on ties)", ("leftmost_vertex",)),
-        Step("A, C = its neighbours; T = triangle ABC", ("triangle_at",)),
-        Step("candidates = the other vertices inside T", ("candidates_in_triangle",)),
-        Step("none: AC is an inner diagonal", ("claim",)),
-        Step(f"else: D = {rule}", ("pick", *calls)),
+        PseudocodeRow("B = the left-most vertex (lowest on ties)", ("leftmost_vertex",)),
+        PseudocodeRow("A, C = its neighbours; T = triangle ABC", ("triangle_at",)),
+        PseudocodeRow("candidates = the other vertices inside T", ("candidates_in_triangle",)),
+        PseudocodeRow("none: AC is an inner diagonal", ("claim",)),
+        PseudocodeRow(f"else: D = {rule}", ("pick", *calls)),
         *inside,
-        Step("  BD is an inner diagonal", ("claim",)),
+        PseudocodeRow("  BD is an inner diagonal", ("claim",)),
     )
 
 
@@ -244,7 +244,7 @@ def _runner(name: str) -> Callable[..., Triangulation]:
 
 
 def _triangulation(name: str, *, metaphor: str | None, idea: str,
-                   pseudocode: tuple[Step, ...] = (), shown: Callable[..., Any] | None = None,
+                   pseudocode: tuple[PseudocodeRow, ...] = (), shown: Callable[..., Any] | None = None,
                    polygon: str = "lecture", show_source: bool = True) -> Entry:
     source = shown or RUNNERS[name]
     return Entry(name, TRIANGULATION, _runner(name), True, metaphor, _traced_name(source),
@@ -256,14 +256,14 @@ _HEURISTICS_TRACED = tuple(_traced_name(f) for f in HEURISTICS.values())
 
 #: The rows of gravity (thesis ch. 2.1.2, after Forišek and Steinová), also inside the others.
 _GRAVITY = (
-    Step("B = the left-most vertex"),
-    Step("V = the first reflex vertex after B", ("reflex_vertex", "straight_vertex")),
-    Step("turn P: V's sides point up, no edge level", ("gravity_direction",)),
-    Step("drop a ball on a band at V: it hits a side", ("drop_ball",)),
-    Step("it slides down the side to a vertex X", ("slide_to_vertex",)),
-    Step("Y = the first vertex the band snags", ("band_snag",)),
-    Step("claim VY, or VX if the band stays straight", ("claim",)),
-    Step("no reflex or straight vertex: claim AC", ("leftmost_vertex", "triangle_at", "claim")),
+    PseudocodeRow("B = the left-most vertex"),
+    PseudocodeRow("V = the first reflex vertex after B", ("reflex_vertex", "straight_vertex")),
+    PseudocodeRow("turn P: V's sides point up, no edge level", ("gravity_direction",)),
+    PseudocodeRow("drop a ball on a band at V: it hits a side", ("drop_ball",)),
+    PseudocodeRow("it slides down the side to a vertex X", ("slide_to_vertex",)),
+    PseudocodeRow("Y = the first vertex the band snags", ("band_snag",)),
+    PseudocodeRow("claim VY, or VX if the band stays straight", ("claim",)),
+    PseudocodeRow("no reflex or straight vertex: claim AC", ("leftmost_vertex", "triangle_at", "claim")),
 )
 
 
@@ -297,7 +297,7 @@ _ENTRIES = (
     _heuristic("scaling-walled", correct=True, metaphor="water", polygon="counterexample",
                idea="water that cannot pass the edges",
                pseudocode=_frame("the nearest vertex that B sees", "nearest_visible",
-                                 inside=(Step("  B sees V if BV runs inside P", ("sees",)),))),
+                                 inside=(PseudocodeRow("  B sees V if BV runs inside P", ("sees",)),))),
     _heuristic("gravity", correct=True, metaphor="gravity", polygon="gravity-snag",
                idea="a ball on a rubber band finds a diagonal", shown=gravity_at,
                pseudocode=_GRAVITY),
@@ -305,59 +305,60 @@ _ENTRIES = (
     _triangulation("divide-and-conquer", metaphor="pieces", shown=divide_and_conquer,
                    idea="Lennes splits along inner diagonals",
                    pseudocode=(
-                       Step("if P is a triangle, we are done"),
-                       Step("else find an inner diagonal d of P", _HEURISTICS_TRACED),
-                       Step("divide P along d into P1 and P2", ("split",)),
-                       Step("triangulate P1 and P2 the same way"),
-                       Step("their union is the triangulation of P"),
+                       PseudocodeRow("if P is a triangle, we are done"),
+                       PseudocodeRow("else find an inner diagonal d of P", _HEURISTICS_TRACED),
+                       PseudocodeRow("divide P along d into P1 and P2", ("split",)),
+                       PseudocodeRow("triangulate P1 and P2 the same way"),
+                       PseudocodeRow("their union is the triangulation of P"),
                    )),
     _triangulation("ear-clipping-naive", metaphor="fruit",
                    idea="Meisters slices the first ear found",
                    pseudocode=(
-                       Step("while P has more than 3 vertices:"),
-                       Step("  for each vertex V, from the first:"),
-                       Step("    is V an ear? (convex, V−1 V V+1 empty)", ("is_ear",)),
-                       Step("    yes: slice V−1 V V+1 off, start again", ("clip_ear",)),
-                       Step("the triangle left is the last slice", ("ear-clipping-naive",)),
+                       PseudocodeRow("while P has more than 3 vertices:"),
+                       PseudocodeRow("  for each vertex V, from the first:"),
+                       PseudocodeRow("    is V an ear? (convex, V−1 V V+1 empty)", ("is_ear",)),
+                       PseudocodeRow("    yes: slice V−1 V V+1 off, start again", ("clip_ear",)),
+                       PseudocodeRow("the triangle left is the last slice", ("ear-clipping-naive",)),
                    )),
     _triangulation("ear-clipping", metaphor="fruit",
                    idea="only the neighbours of a slice change",
                    pseudocode=(
-                       Step("ear status of every vertex: unknown"),
-                       Step("walk round P while it has > 3 vertices:"),
-                       Step("  V's status unknown: is V an ear?", ("is_ear",)),
-                       Step("  V is an ear: slice V−1 V V+1 off", ("clip_ear",)),
-                       Step("    only V−1 and V+1 change: test again"),
-                       Step("  else go on to the next vertex"),
-                       Step("the triangle left is the last slice", ("ear-clipping",)),
+                       PseudocodeRow("ear status of every vertex: unknown"),
+                       PseudocodeRow("walk round P while it has > 3 vertices:"),
+                       PseudocodeRow("  V's status unknown: is V an ear?", ("is_ear",)),
+                       PseudocodeRow("  V is an ear: slice V−1 V V+1 off", ("clip_ear",)),
+                       PseudocodeRow("    only V−1 and V+1 change: test again"),
+                       PseudocodeRow("  else go on to the next vertex"),
+                       PseudocodeRow("the triangle left is the last slice", ("ear-clipping",)),
                    )),
     _triangulation("prune-and-search", metaphor="fruit",
                    idea="the good sub-polygons shrink",
                    pseudocode=(
-                       Step("G = P, good: it has no cutting edge"),
-                       Step("while P is more than a triangle:"),
-                       Step("  V = the middle vertex of G: an ear?", ("is_ear",)),
-                       Step("  yes: slice the ear V off, go on in G", ("clip_ear",)),
-                       Step("  no: find an inner diagonal V–W of G", ("diagonal_at",)),
-                       Step("    (V convex: the sweep; else gravity)", ("sweep_at", "gravity_at")),
-                       Step("    G = the good part beyond V–W", ("good_subpolygon",)),
-                       Step("the triangle left is the last slice", ("prune-and-search",)),
+                       PseudocodeRow("G = P, good: it has no cutting edge"),
+                       PseudocodeRow("while P is more than a triangle:"),
+                       PseudocodeRow("  V = the middle vertex of G: an ear?", ("is_ear",)),
+                       PseudocodeRow("  yes: slice the ear V off, go on in G", ("clip_ear",)),
+                       PseudocodeRow("  no: find an inner diagonal V–W of G", ("diagonal_at",)),
+                       PseudocodeRow("    (V convex: the sweep; else gravity)", ("sweep_at", "gravity_at")),
+                       PseudocodeRow("    G = the good part beyond V–W", ("good_subpolygon",)),
+                       PseudocodeRow("the triangle left is the last slice", ("prune-and-search",)),
                    )),
     _triangulation("monotone", metaphor="monotone", idea="y-monotone pieces, then the stack",
                    pseudocode=(
-                       Step("sweep a line down P, vertex by vertex:", ("make_monotone",)),
-                       Step("  v is start, end, split, merge or regular", ("classify_vertex",)),
-                       Step("  start or end: an edge begins or ends at v",
-                            ("handle_start", "handle_end")),
-                       Step("  regular: v helps its edge or the left one",
-                            ("handle_regular",)),
-                       Step("  split: v helps the edge on its left", ("handle_split",)),
-                       Step("  merge: v ends an edge, helps the left one", ("handle_merge",)),
-                       Step("  split, or v replaces a merge helper:"),
-                       Step("    add the diagonal v–helper", ("add_diagonal",)),
-                       Step("cut P along them into y-monotone pieces", ("monotone_pieces",)),
-                       Step("triangulate each piece with a stack",
+                       PseudocodeRow("sweep a line down P, vertex by vertex:", ("make_monotone",)),
+                       PseudocodeRow("  v is start, end, split, merge or regular", ("classify_vertex",)),
+                       PseudocodeRow("  start, end, regular: v updates its edges",
+                            ("handle_start", "handle_end", "handle_regular")),
+                       PseudocodeRow("  split, merge: v helps the edge on its left",
+                            ("handle_split", "handle_merge")),
+                       # end, regular and merge vertices add one too (geometry.monotone)
+                       PseudocodeRow("  split, or v ends or replaces a merge helper:"),
+                       PseudocodeRow("    add the diagonal v–helper", ("add_diagonal",)),
+                       PseudocodeRow("cut P along them into y-monotone pieces", ("monotone_pieces",)),
+                       PseudocodeRow("each piece, top down, with a stack:",
                             ("triangulate_monotone_piece",)),
+                       PseudocodeRow("  push v: it waits on the stack", ("push",)),
+                       PseudocodeRow("  v sees past the top: cut off, pop", ("cut_off",)),
                    )),
     _triangulation("cdt", metaphor=None, idea="the reference, by shapely",
                    show_source=False),
@@ -447,11 +448,11 @@ def shown(name: str) -> str:
 #: Rows put before an algorithm's own when it runs on a polygon with holes (the log's meta
 #: carries the whole listing, so a simple polygon's run shows what it always showed).
 _HOLE_ROWS = {
-    "ear-clipping": (Step("cut a keyhole from each hole to the rind", ("join_hole",)),),
+    "ear-clipping": (PseudocodeRow("cut a keyhole from each hole to the rind", ("join_hole",)),),
 }
 
 
-def hole_pseudocode(name: str) -> tuple[Step, ...]:
+def hole_pseudocode(name: str) -> tuple[PseudocodeRow, ...]:
     """The pseudocode of ``name`` on a polygon with holes: the bridges first, for ear clipping.
 
     >>> [step.text for step in hole_pseudocode("ear-clipping")[:2]]
@@ -462,7 +463,7 @@ def hole_pseudocode(name: str) -> tuple[Step, ...]:
     return (*_HOLE_ROWS.get(name, ()), *pseudocode(name))
 
 
-def pseudocode(name: str) -> tuple[Step, ...]:
+def pseudocode(name: str) -> tuple[PseudocodeRow, ...]:
     """The pseudocode of ``name``; none for any other name (a heuristic of one's own carries
     its own in its log, if its docstring has it).
 

@@ -16,7 +16,7 @@ import tracing
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.holes import PolygonWithHoles
-from geometry.io import Shape, read_shape
+from geometry.io import AnyPolygon, read_shape
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import refuse_holes, triangulate
@@ -27,7 +27,7 @@ from usercode.heuristic import UserHeuristic, diagonal_rule, load_user_heuristic
 from usercode.loading import is_user_spec
 
 
-def fit_for(algorithm: str, shape: Shape) -> Shape:
+def fit_for(algorithm: str, shape: AnyPolygon) -> AnyPolygon:
     """``shape`` if ``algorithm`` can run on it: the one rule for a polygon handed to a run.
     Only :data:`geometry.triangulate.HOLE_ALGORITHMS` take holes; the heuristics, the other
     triangulations and a heuristic of one's own refuse them in one line.
@@ -43,14 +43,14 @@ def fit_for(algorithm: str, shape: Shape) -> Shape:
     return shape
 
 
-def read_for(algorithm: str, polygon: str) -> Shape:
+def read_for(algorithm: str, polygon: str) -> AnyPolygon:
     """The polygon file or sample ``polygon``, read as a run of ``algorithm`` takes it
     (:func:`fit_for`). Raises :class:`geometry.errors.GeometryError` (one line)."""
     return fit_for(algorithm, read_shape(polygon))
 
 
 def run_logged(algorithm: str, polygon: str, heuristic: str | None = None,
-               shape: Shape | None = None) -> tracing.Log:
+               shape: AnyPolygon | None = None) -> tracing.Log:
     """Run a heuristic (by name, or ``file.py:function`` of one's own) or a triangulation algorithm
     on a polygon file or sample (with holes, for the algorithms that take them). ``shape``, if
     given, is that polygon read already (:func:`read_for`): it is not read again."""

@@ -90,9 +90,12 @@ class WithHeuristic(Protocol):
 
 @runtime_checkable
 class ChapterScene(Protocol):
-    """A chapter of the lecture: its ``chapter_title`` (``"3. Gravity"``)."""
+    """A chapter of the lecture: its ``chapter_title`` (``"3. Gravity"``) and its ``slug``
+    (``"gravity"``: what ``--chapters`` names it by, and its files' names, ``03-gravity.mp4``;
+    ``""``: none, a scene played as a chapter is named by its file)."""
 
     chapter_title: str
+    slug: str
 
 
 @runtime_checkable

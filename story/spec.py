@@ -34,7 +34,7 @@ from __future__ import annotations
 from dataclasses import KW_ONLY, dataclass, field, replace
 
 import tracing
-from geometry.io import Shape, read_shape
+from geometry.io import AnyPolygon, read_shape
 from story.runs import fit_for, run_logged, saved_log
 
 __all__ = ["RunSpec"]
@@ -66,7 +66,7 @@ class RunSpec:
     _: KW_ONLY
     heuristic: str | None = None
     saved: str | None = None
-    shape: Shape | None = field(default=None, repr=False, compare=False)
+    shape: AnyPolygon | None = field(default=None, repr=False, compare=False)
 
     def log(self) -> tracing.Log:
         """The log of this run: the saved one if given, else a live run (on ``shape`` when the
@@ -75,7 +75,7 @@ class RunSpec:
             return saved_log(self.saved)
         return run_logged(self.algorithm, self.polygon, self.heuristic, self.shape)
 
-    def read(self, shape: Shape | None = None) -> RunSpec:
+    def read(self, shape: AnyPolygon | None = None) -> RunSpec:
         """This run with its polygon read: ``shape`` (``polygon`` read already, as ``trex``
         reads every polygon argument) or read now, and checked by the one rule
         (:func:`story.runs.fit_for`). A replay reads nothing: it comes back as it is.

@@ -45,10 +45,10 @@ from story.beats import (
     ShowTriangle,
     Verdict,
 )
-from story.pseudocode import Step, from_json, lit_row, named
+from story.pseudocode import PseudocodeRow, from_json, lit_row, named
 from story.reach import Reach, reach_of
 from story.reading import summarised
-from story.refs import call_of, ref, result_ref, result_refs, state_of, target_of
+from story.refs import call_of, meta, ref, result_ref, result_refs, state_of, target_of
 from story.registry import heuristics, pseudocode
 from story.roles import ROLES
 from story.words import number, said, why_not_inner
@@ -150,7 +150,7 @@ class Walk:
     """
 
     def __init__(self, log: Log, pacing: Pacing, shown_code: str | None, user: str | None,
-                 rows: tuple[Step, ...] = (), heuristic_function: str | None = None):
+                 rows: tuple[PseudocodeRow, ...] = (), heuristic_function: str | None = None):
         self.log, self.pacing, self.shown_code, self.user = log, pacing, shown_code, user
         self.rows = rows  # the pseudocode of the run
         self.lit: int | None = None  # the pseudocode row lit so far
@@ -159,6 +159,7 @@ class Walk:
         self.claims = 0
         self.noun = "diagonal"  # what a claim is, in the summary captions of repeated ones
         self.counted: dict[int, int] = {}  # id of each beat made → claims counted by then
+        self.kept: set[int] = set()  # ids of the key steps: never fast, never summarised
         self.heuristic_polygon: list[str] = []
         self.shown_polygon = False
         self.stack: list[Event] = []  # open calls, outermost first
@@ -248,19 +249,26 @@ class Walk:
     def pace(self) -> float:
         return 1.0 if self.claims < self.pacing.full else self.pacing.fast
 
-    def beat(self, beat_type: type[Beat], caption: str, event: Event, /, **fields: Any) -> Beat:
-        """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk."""
+    def beat(self, beat_type: type[Beat], caption: str, event: Event, /,
+             key_step: bool = False, **fields: Any) -> Beat:
+        """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk.
+        A key step (``key_step``: a split or merge vertex and its diagonal) plays at full pace under its
+        own caption however many claims came before: fast-forwarding never hides it."""
         beat = beat_type(caption=caption, step=event.seq, line=self.code_line(event),
-                         row=self.pseudocode_row(event), pace=self.pace(), **fields)
+                         row=self.pseudocode_row(event), pace=1.0 if key_step else self.pace(),
+                         **fields)
         self.counted[id(beat)] = self.claims
+        if key_step:
+            self.kept.add(id(beat))
         return beat
 
     def step(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
-             **fields: Any) -> Beat:
+             key_step: bool = False, **fields: Any) -> Beat:
         """The beat of a returned call: its call line, and the call's roles unless ``fields``
-        give others."""
+        give others (``key_step``: as :meth:`beat`)."""
         fields.setdefault("roles", call_roles(call, ret))
-        return self.beat(beat_type, caption, call, call=call_line(call, ret), **fields)
+        return self.beat(beat_type, caption, call, key_step=key_step, call=call_line(call, ret),
+                         **fields)
 
     def is_heuristic(self, name: str) -> bool:
         return name in self._heuristics or name == self.user
@@ -277,7 +285,7 @@ class Walk:
             self.live.pop(target_of(event), None)
 
 
-def pseudocode_of(log: Log) -> tuple[Step, ...]:
+def pseudocode_of(log: Log) -> tuple[PseudocodeRow, ...]:
     """The pseudocode of a log's run: its own (meta ``pseudocode``: a heuristic of one's own
     whose docstring has some), else its algorithm's in the registry; none for any other.
 
@@ -288,14 +296,14 @@ def pseudocode_of(log: Log) -> tuple[Step, ...]:
     ('reflex_vertex', 'straight_vertex')
     >>> log.meta["pseudocode"] = [["claim BD", ["claim"]]]
     >>> pseudocode_of(log)
-    (Step(text='claim BD', calls=('claim',)),)
+    (PseudocodeRow(text='claim BD', calls=('claim',)),)
     """
     if "pseudocode" in log.meta:
         return from_json(log.meta["pseudocode"])
-    algorithm = log.meta.get("algorithm")
-    rows = pseudocode(algorithm) if isinstance(algorithm, str) else ()
-    own = log.meta.get("heuristic_function")
-    if isinstance(own, str):  # divide and conquer with one's own: its row covers that too
+    algorithm = meta(log, "algorithm")
+    rows = pseudocode(algorithm) if algorithm is not None else ()
+    own = meta(log, "heuristic_function")
+    if own is not None:  # divide and conquer with one's own: its row covers that too
         rows = tuple(replace(r, calls=(*r.calls, own)) if set(r.calls) & set(heuristics())
                      else r for r in rows)
     return rows
@@ -343,7 +351,7 @@ def run_vertices(log: Log) -> dict[str, str]:
     return {k: next(iter(v)) for k, v in sorted(given.items()) if len(v) == 1}
 
 
-def spoken_pseudocode(log: Log) -> tuple[Step, ...]:
+def spoken_pseudocode(log: Log) -> tuple[PseudocodeRow, ...]:
     """The pseudocode the panel shows for a log: :func:`pseudocode_of`, its placeholders
     naming the run's own vertices where the picture has a vertex of that name
     (:func:`story.pseudocode.named`)."""
@@ -362,16 +370,16 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
     source line lit in it, and its ``row`` the row of the run's pseudocode
     (:func:`pseudocode_of`) lit in it.
     """
-    shown = shown_code or log.meta.get("shown") or log.meta.get("algorithm")
-    walk = Walk(log, pacing or Pacing(), shown, log.meta.get("user_heuristic"),
-                pseudocode_of(log), log.meta.get("heuristic_function"))
+    shown = shown_code or meta(log, "shown") or meta(log, "algorithm")
+    walk = Walk(log, pacing or Pacing(), shown, meta(log, "user_heuristic"),
+                pseudocode_of(log), meta(log, "heuristic_function"))
     table = {**FRAME_READS, **readings}
     beats: list[Beat] = []
     for event in log.events:
         beats.extend(_beats_for(walk, event, table))
         walk.track(event)
     return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
-                      walk.noun)
+                      walk.noun, kept=[id(b) in walk.kept for b in beats])
 
 
 def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[Beat]:

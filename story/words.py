@@ -19,7 +19,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from geometry.check import Verdict
+from geometry.check import CheckResult
 
 __all__ = ["number", "said", "why_not_inner"]
 
@@ -42,18 +42,18 @@ def _edge(labels: Sequence[str], edge: tuple[int, int]) -> str:
     return "–".join(labels[k] for k in edge)
 
 
-def why_not_inner(verdict: Verdict, labels: Sequence[str], claim: str) -> str:
+def why_not_inner(verdict: CheckResult, labels: Sequence[str], claim: str) -> str:
     """Why the claim ``claim`` (``BD``) is not an inner diagonal, in the picture's words:
     the edge it crosses, the vertex it passes through, the vertex near which it leaves the
     polygon — no coordinates. ``labels``: the polygon's, by vertex index.
 
-    >>> why_not_inner(Verdict(False, "…", "crosses", edge=(4, 0)), "ABCDE", "BD")
+    >>> why_not_inner(CheckResult(False, "…", "crosses", edge=(4, 0)), "ABCDE", "BD")
     'BD crosses edge E–A'
-    >>> why_not_inner(Verdict(False, "…", "through-vertex", vertex=3), "ABCDE", "BE")
+    >>> why_not_inner(CheckResult(False, "…", "through-vertex", vertex=3), "ABCDE", "BE")
     'BE passes through vertex D'
-    >>> why_not_inner(Verdict(False, "…", "outside", vertex=1), "ABCDE", "BD")
+    >>> why_not_inner(CheckResult(False, "…", "outside", vertex=1), "ABCDE", "BD")
     'BD runs outside the polygon near B'
-    >>> why_not_inner(Verdict(False, "BC is an edge (adjacent vertices)", "adjacent"), "ABC", "BC")
+    >>> why_not_inner(CheckResult(False, "BC is an edge (adjacent vertices)", "adjacent"), "ABC", "BC")
     'BC is an edge (adjacent vertices)'
     """
     if verdict.code == "crosses" and verdict.edge is not None:

@@ -148,3 +148,120 @@ def test_generated_polygons(p):
 @given(collinear_polygons())
 def test_collinear_runs(p):
     assert_valid(p, monotone(p))
+
+
+# --- one colour, one meaning (issue 22 item 4) ---------------------------------------------------
+
+
+def test_vertex_kinds_have_colours_of_their_own():
+    """Split and merge are kinds of vertex, not verdicts: never the red of "fails" nor the
+    green of a result, and not one another's."""
+    from metaphors.theme import THEME
+
+    kinds = [THEME.role_colour("split"), THEME.role_colour("merge")]
+    verdicts = {THEME.rejected.lower(), THEME.result.lower()}
+    assert len({c.lower() for c in kinds}) == 2
+    assert not {c.lower() for c in kinds} & verdicts
+    assert THEME.stack.lower() not in verdicts
+
+
+def _monotone_graphs():
+    from scenes.holes import HolesSweep
+    from trex.chapters import lecture_chapters
+
+    faster = next(c for c in lecture_chapters() if c.slug == "faster")
+    return [pytest.param(HolesSweep, id="holes-sweep"),
+            pytest.param(faster, id="lecture-faster")]
+
+
+def _vertex_nodes(data):
+    """Every node of a vertex: its marker (on the board, in the panel) and the kind written
+    beside it, with their parts."""
+    from tests.reading_rules import graph_nodes, mobject_nodes
+
+    for top in graph_nodes(data):
+        name = top.get("name") or ""
+        if (name.startswith(("vertex:", "panel:")) and name != "panel:call") or name == "kind":
+            yield from mobject_nodes(top)
+
+
+@pytest.mark.parametrize("scene", _monotone_graphs())
+def test_the_monotone_sweep_never_gives_a_vertex_the_red_of_fails(scene):
+    from metaphors.theme import THEME
+    from tests.test_lecture import _chapter_class
+    from trex.snapshot import build
+
+    cls = scene if isinstance(scene, type) else _chapter_class(scene).handed()
+    data = build(cls).data
+    nodes = list(_vertex_nodes(data))
+    red = THEME.rejected.upper()
+    assert [n.get("name") for n in nodes
+            if n.get("role") == "rejected" or red in (n.get("stroke"), n.get("fill"))] == []
+    # not vacuous: the split and merge vertices are there, in their own colours
+    colours = {c for n in nodes for c in (n.get("stroke"), n.get("fill"))}
+    assert {THEME.split.upper(), THEME.merge.upper()} <= colours
+    roles = {n.get("role") for n in nodes}
+    assert {"split", "merge"} <= roles
+
+
+# --- the lecture's steps (issue 22 item 5) ----------------------------------------------------------
+
+
+def _lecture_beats():
+    from metaphors import catalog
+    from story.runs import run_logged
+    from story.storyboard import Pacing
+
+    return catalog.beats(run_logged("monotone", "lecture"), Pacing(full=2, fast=0.35))
+
+
+def test_every_split_and_merge_vertex_and_diagonal_is_a_step_of_its_own():
+    """Never fast-forwarded: full pace, a caption naming the vertex (and the diagonal), and
+    the lit row the one running (a diagonal added at a regular or end vertex lights the row
+    of the diagonal, not the merge vertex's)."""
+    from metaphors.monotone import Classify, MonotoneDiagonal
+    from story.registry import pseudocode
+
+    rows = pseudocode("monotone")
+    beats = _lecture_beats()
+    key = [b for b in beats if isinstance(b, Classify) and b.kind in ("split", "merge")]
+    diagonals = [b for b in beats if isinstance(b, MonotoneDiagonal)]
+    assert {b.kind for b in key} == {"split", "merge"} and len(diagonals) >= 3
+    for b in key:
+        assert b.pace == 1.0 and b.caption.startswith(f"{b.vertex}: ") and b.kind in b.caption
+        assert "add_diagonal" not in rows[b.row].calls and "classify_vertex" in rows[b.row].calls
+    for b in diagonals:
+        assert b.pace == 1.0 and b.caption.startswith(f"Diagonal {''.join(b.labels)}: ")
+        assert ("split vertex" in b.caption) != ("merge vertex" in b.caption), b.caption
+        assert rows[b.row].calls == ("add_diagonal",)
+    # what is fast-forwarded holds no split or merge vertex
+    fast = [b for b in beats if "the same steps, faster" in b.caption]
+    assert fast and all(not isinstance(b, MonotoneDiagonal) and b.kind not in ("split", "merge")
+                        for b in fast)
+
+
+def test_the_stack_drawn_is_the_stack_of_the_log():
+    """Each step's chain follows from the one before by one push or one cut off (the triangle
+    cut holds the top and the vertex it was cut for), and the triangles cut, with the pieces
+    that are triangles already, are the run's triangulation."""
+    from metaphors.monotone import Stack, StackStep
+
+    beats = _lecture_beats()
+    steps = [b for b in beats if isinstance(b, StackStep)]
+    assert max(len(b.chain) for b in steps) >= 3
+    before: list[str] = []
+    cut = []
+    for b in steps:
+        if b.cut:
+            assert b.chain == before[:-1] and before[-1] in b.cut, b.caption
+            assert set(b.cut) - set(before) and len(set(b.cut)) == 3
+            cut.append(frozenset(b.cut))
+        else:  # a push: on the chain so far, or a new chain of two (the other chain)
+            assert b.chain[:-1] in (before, before[-1:], []) or len(b.chain) == 2, b.caption
+        before = b.chain
+    last = next(b for b in reversed(beats) if isinstance(b, Stack))
+    p = Polygon.from_points(make_sample("lecture"))
+    whole = {frozenset(p.labels[i] for i in t) for t in monotone(p).triangles}
+    assert len(last.triangulation) == p.n - 2
+    assert set(cut) <= whole and len(cut) + sum(len(b.triangles) for b in beats
+                                                if isinstance(b, Stack)) == p.n - 2

@@ -114,7 +114,7 @@ def fake_steps(monkeypatch):
         seen["cls"], seen["log"] = cls, log
         (folder / "steps").mkdir()
         (folder / "steps" / "001.png").write_bytes(b"png")
-        return [player_module.Step("steps/001.png", "The polygon", None, "polygon")]
+        return [player_module.Still("steps/001.png", "The polygon", None, "polygon")]
 
     monkeypatch.setattr(player_module, "render_steps", fake)
     return seen

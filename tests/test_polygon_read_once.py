@@ -146,3 +146,41 @@ def test_log_takes_a_polygon_with_holes(holed, tmp_path):
     code, _, stderr = run("log", "gravity", holed, "-o", tmp_path / "never.json")
     assert code == 2 and "gravity needs a simple polygon and this one has 2 holes" in stderr
     assert not (tmp_path / "never.json").exists()
+
+
+# --- the checks before rendering: one run_once, on the polygon read (issue 23) ---------------------
+
+
+def test_scene_run_is_the_scenes_run_on_the_polygon_read(tmp_path):
+    from geometry.io import read_shape
+    from scenes.divide_and_conquer import DivideAndConquer
+    from scenes.scaling import Scaling
+    from trex.render_command import run_once, scene_run
+
+    path = tmp_path / "star.json"
+    path.write_text("[[0, 0], [4, 1], [8, 0], [7, 4], [8, 8], [4, 7], [0, 8], [1, 4]]")
+    spec = scene_run(Scaling, str(path), read_shape(path))
+    path.unlink()  # the run reads no file: it plays the shape handed
+    assert (spec.algorithm, spec.heuristic) == ("scaling", None)
+    assert run_once(spec).meta["polygon"] == str(path)
+    assert scene_run(DivideAndConquer, "star").heuristic == DivideAndConquer.heuristic
+    assert scene_run(type("Plain", (), {}), "star") is None  # a scene that runs nothing
+
+
+def test_a_chapter_is_checked_on_the_polygon_the_command_read(tmp_path, capsys):
+    """``check_chapters`` with the shape read: a scene played as a chapter runs on it, and a
+    polygon it rejects is one line and exit 2, naming the polygon."""
+    import click
+
+    from geometry.io import read_shape
+    from trex.chapters import check_chapters, pick_chapters
+
+    path = tmp_path / "triangle.json"
+    path.write_text("[[0, 0], [4, 0], [0, 4]]")
+    shape = read_shape(path)
+    path.unlink()
+    with pytest.raises(click.exceptions.Exit) as stopped:
+        check_chapters(pick_chapters("scaling", None), str(path), shape)
+    assert stopped.value.exit_code == 2
+    assert capsys.readouterr().err == f"error: {path}: a triangle has no diagonal\n"
+    check_chapters(pick_chapters("scaling", None), "counterexample", read_shape("counterexample"))

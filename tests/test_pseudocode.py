@@ -14,7 +14,7 @@ from click.testing import CliRunner
 
 import tracing
 from metaphors.catalog import beats as storyboard
-from story.pseudocode import PANELS, Step, from_docstring, lit_row, to_json
+from story.pseudocode import PANELS, PseudocodeRow, from_docstring, lit_row, to_json
 from story.registry import REGISTRY, entry, heuristics, names
 from story.runs import run_logged
 from story.storyboard import pseudocode_of
@@ -31,7 +31,7 @@ POLYGONS = ("counterexample", "counterexample-twin", "gravity-snag", "lecture", 
             "two-ears", "comb", "spiral", "random-2opt:12:3", "random-orthogonal:12:1")
 
 
-def assert_rows_follow_calls(log: tracing.Log, beats, rows: tuple[Step, ...] | None = None):
+def assert_rows_follow_calls(log: tracing.Log, beats, rows: tuple[PseudocodeRow, ...] | None = None):
     """Each beat's lit row covers the innermost running call that a row covers (the beat's own
     event first, when it is a note); when no running call is covered, the row is one covering a
     call begun before the beat (None if none was). Worked out from the log alone."""
@@ -165,7 +165,7 @@ def test_the_claim_lights_its_branch():
 
 
 def test_lit_row_goes_on_from_the_row_lit_and_round_loops():
-    rows = (Step("test", ("is_ear",)), Step("clip", ("clip_ear",)), Step("last", ("run",)))
+    rows = (PseudocodeRow("test", ("is_ear",)), PseudocodeRow("clip", ("clip_ear",)), PseudocodeRow("last", ("run",)))
     assert lit_row(rows, ["run", "is_ear"], 1) == 0  # round the loop
     assert lit_row(rows, ["run", "clip_ear", "helper"], 0) == 1  # innermost covered
     assert lit_row(rows, ["run"], 1) == 2
@@ -213,11 +213,11 @@ def widest(polygon):
         return b, max(candidates, key=lambda d: angle_at_b(b, t.a, d))
 '''
 WIDEST_ROWS = (
-    Step("B = the left-most vertex; T = ABC", ("leftmost_vertex", "triangle_at")),
-    Step("candidates: the vertices inside T", ("candidates_in_triangle",)),
-    Step("for each candidate D:"),
-    Step("  how wide is the angle ABD?", ("angle_at_b",)),
-    Step("claim BD for the widest", ("claim",)),
+    PseudocodeRow("B = the left-most vertex; T = ABC", ("leftmost_vertex", "triangle_at")),
+    PseudocodeRow("candidates: the vertices inside T", ("candidates_in_triangle",)),
+    PseudocodeRow("for each candidate D:"),
+    PseudocodeRow("  how wide is the angle ABD?", ("angle_at_b",)),
+    PseudocodeRow("claim BD for the widest", ("claim",)),
 )
 
 
@@ -278,8 +278,8 @@ def test_docstring_rows_keep_indentation_and_may_cover_nothing():
           plain text, [] kept as text? no: the brackets at the end are the calls []
         """)
     assert from_docstring(doc) == (
-        Step("first", ("a",)), Step("  inside", ("b", "c")),
-        Step("plain text, [] kept as text? no: the brackets at the end are the calls"))
+        PseudocodeRow("first", ("a",)), PseudocodeRow("  inside", ("b", "c")),
+        PseudocodeRow("plain text, [] kept as text? no: the brackets at the end are the calls"))
     assert from_docstring("Pseudocode:\n\n\n") == () and from_docstring("Pseudocode") == ()
 
 
@@ -314,7 +314,7 @@ def test_trex_player_hands_the_panel_to_the_scene(tmp_path, monkeypatch):
         seen["panel"] = cls.panel
         (folder / "steps").mkdir()
         (folder / "steps" / "001.png").write_bytes(b"png")
-        return [player_steps.Step("steps/001.png", "The polygon", None, "polygon")]
+        return [player_steps.Still("steps/001.png", "The polygon", None, "polygon")]
 
     monkeypatch.setattr(player_steps, "render_steps", fake)
     code, _, stderr = run("player", "gravity", "--panel", "source", "-o", str(tmp_path / "p"))

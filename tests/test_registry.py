@@ -16,7 +16,7 @@ from geometry.io import read_polygon
 from geometry.lennes import divide_and_conquer
 from geometry.triangulate import ALGORITHMS
 from story import registry
-from story.pseudocode import Step
+from story.pseudocode import PseudocodeRow
 from story.registry import (
     REGISTRY,
     TRIANGULATION,
@@ -91,7 +91,7 @@ def test_every_entry_is_complete(name):
         module = importlib.import_module(f"metaphors.{e.metaphor}")
         assert module.READS and module.PERFORMS
     assert e.title and "\n" not in e.title
-    assert isinstance(e.pseudocode, tuple) and all(isinstance(s, Step) for s in e.pseudocode)
+    assert isinstance(e.pseudocode, tuple) and all(isinstance(s, PseudocodeRow) for s in e.pseudocode)
     assert shown(name) == e.shown
     read_polygon(e.polygon)  # a sample every command reads
 

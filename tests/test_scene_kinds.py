@@ -88,6 +88,27 @@ def test_a_chapter_is_a_chapter_scene():
     assert isinstance(LectureScene, ChapterScene) and not isinstance(Scaling, ChapterScene)
 
 
+def test_a_lecture_chapter_is_named_by_its_class_slug(tmp_path, monkeypatch):
+    """The class's ``slug`` names the chapter; a file named otherwise, or a class that is no
+    chapter, is said in one line."""
+    from trex import chapters
+
+    monkeypatch.setattr(chapters, "CHAPTERS_DIR", tmp_path)
+    monkeypatch.setattr(chapters, "REPO", tmp_path)
+    chapter = ("from metaphors.lecture import LectureScene\n\n"
+               "class Gravity(LectureScene):\n"
+               "    chapter_title = '3. Gravity'\n    slug = '{slug}'\n")
+    (tmp_path / "ch3_gravity.py").write_text(chapter.format(slug="gravity"))
+    assert [(c.number, c.slug, c.title) for c in chapters.lecture_chapters()] == [
+        (3, "gravity", "Gravity")]
+    (tmp_path / "ch3_gravity.py").write_text(chapter.format(slug="falling"))
+    with pytest.raises(ValueError, match=r"slug is 'falling'; name the file ch3_falling\.py"):
+        chapters.lecture_chapters()
+    (tmp_path / "ch3_gravity.py").write_text(chapter.format(slug=""))
+    with pytest.raises(ValueError, match="Gravity is no chapter"):
+        chapters.lecture_chapters()
+
+
 # --- the state a scene records ------------------------------------------------------------------
 
 

@@ -20,9 +20,10 @@ from PIL import Image
 
 from metaphors.catalog import beats as storyboard
 from story.runs import run_logged
+from story.step_marks import StepMark
 from trex import handout
 from trex.cli import main
-from trex.clips import Marks, Step, cut_clips, step_ranges
+from trex.clips import Marks, cut_clips, step_ranges
 
 CHROMIUM = Path("/usr/bin/chromium")
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
@@ -154,12 +155,12 @@ def test_the_handout_is_the_same_bytes_for_the_same_frames(tmp_path):
 def test_a_step_must_start_on_a_key_frame(gravity, tmp_path):
     clip = clips_of(gravity)[2]
     n = len(frames(clip))
-    assert step_ranges(Marks((Step(0, "a"), Step(n // 2, "b"))), n) == [(0, n // 2),
+    assert step_ranges(Marks((StepMark(0, "a"), StepMark(n // 2, "b"))), n) == [(0, n // 2),
                                                                          (n // 2, n)]
     with pytest.raises(ValueError, match=r"step 2 of 003\.mp4 does not start on a key frame"):
-        cut_clips(clip, Marks((Step(0, "a"), Step(n // 2, "b"))), tmp_path, ["1.mp4", "2.mp4"])
+        cut_clips(clip, Marks((StepMark(0, "a"), StepMark(n // 2, "b"))), tmp_path, ["1.mp4", "2.mp4"])
     with pytest.raises(ValueError, match="after the video's"):
-        cut_clips(clip, Marks((Step(0, "a"),), n + 5), tmp_path, ["1.mp4"])
+        cut_clips(clip, Marks((StepMark(0, "a"),), n + 5), tmp_path, ["1.mp4"])
 
 
 # --- the page in headless Chromium ---------------------------------------------------------------

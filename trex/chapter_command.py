@@ -78,7 +78,7 @@ def render_chapter(scene_file: str, class_name: str | None, output: str, quality
                 settings = render_settings(scene_file, class_name, quality, polygon, panel)
                 render_into(scene_input(cls, polygon or None, panel or None), Path(output),
                             "mp4", QUALITIES[quality], progress=False, signals=signals,
-                            steps=settings)
+                            marks_made_by=settings)
             except UserHeuristicError as exc:  # a function of one's own failed: status 2
                 signals.check()
                 print(f"error: {exc}", file=sys.stderr)

@@ -1,13 +1,15 @@
 """The lecture's chapters: found, picked, named, and checked before anything renders
 (``trex lecture``, ``trex slides lecture``).
 
-The chapters are the scene files ``scenes/chapters/ch<k>_<slug>.py`` (``--chapters`` picks
-some of them by slug, or names scenes to play as chapters instead).
+The chapters are the scene files ``scenes/chapters/ch<k>_<slug>.py``, each named by its
+class's ``slug`` (``--chapters`` picks some of them by slug, or names scenes to play as
+chapters instead).
 
 With ``--polygon``, a lecture chapter is checked by what it plays: each of its segments that
 runs on the lecture's polygon (a ``Run`` or ``Compare`` whose polygon is None) is computed
 once on it, as :class:`metaphors.lecture.LectureScene` would, without drawing
-(:func:`polygon_checks`); a scene played as a chapter dry-runs its ``algorithm``. A polygon a
+(:func:`polygon_checks`); a scene played as a chapter runs its ``algorithm`` once
+(:func:`trex.render_command.run_once`). The polygon is read once, by the command. A polygon a
 chapter rejects is bad input (one line, status 2); a chapter that does not load is
 :class:`ChapterFailed` (status 1, :func:`chapter_failed`).
 """
@@ -15,16 +17,24 @@ chapter rejects is bad input (one line, status 2); a chapter that does not load 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any, NoReturn
 
 import click
 
-from geometry.errors import GeometryError
-from story.scene_kinds import ChapterScene, TaughtChapter, plays_several
+from geometry.io import AnyPolygon
+from story.scene_kinds import ChapterScene, TaughtChapter
 from trex.inputs import error_line, fail
-from trex.render_command import EXIT_FAILED, SCENES_DIR, dry_run, load_scene_class, resolve_scene
+from trex.render_command import (
+    EXIT_FAILED,
+    RUN_ERRORS,
+    SCENES_DIR,
+    load_scene_class,
+    resolve_scene,
+    run_once,
+    scene_run,
+)
 
 __all__ = ["CHAPTERS_DIR", "REPO", "Chapter", "ChapterFailed", "chapter_failed",
            "chapter_label", "chapter_stem", "check_chapters", "lecture_chapters",
@@ -65,19 +75,27 @@ def chapter_failed(message: str, status: int = EXIT_FAILED) -> NoReturn:
 
 def lecture_chapters() -> tuple[Chapter, ...]:
     """The lecture's chapters: the scene files ``scenes/chapters/ch<k>_<slug>.py``, in the
-    order of ``k``, each titled by its class's ``chapter_title`` (``"3. Gravity"``: the part
-    after the number). Loading them imports manim, so only when asked for."""
+    order of ``k``, each named by its class's ``slug`` and titled by its ``chapter_title``
+    (``"3. Gravity"``: the part after the number). Loading them imports manim, so only when
+    asked for. Raises ValueError for a chapter's class that is no chapter, or whose slug is
+    not the one its file's name says (the class is the source; the name follows it)."""
     found = []
     for path in CHAPTERS_DIR.glob("ch*_*.py"):
-        digits, _, slug = path.stem[2:].partition("_")
+        digits, _, named = path.stem[2:].partition("_")
         if digits.isdigit():
-            found.append((int(digits), slug.replace("_", "-"), path))
+            found.append((int(digits), named.replace("_", "-"), path))
     chapters = []
-    for number, slug, path in sorted(found):
+    for number, named, path in sorted(found):
         cls = load_scene_class(path, None)
-        title = str(cls.chapter_title if isinstance(cls, ChapterScene) else slug).partition(". ")
-        chapters.append(Chapter(number, slug, title[2] or title[0], str(path.relative_to(REPO)),
-                                cls.__name__))
+        if not (isinstance(cls, ChapterScene) and cls.slug):
+            raise ValueError(f"{path.name}: {cls.__name__} is no chapter: it needs a "
+                             "chapter_title and a slug")
+        if cls.slug != named:
+            raise ValueError(f"{path.name}: {cls.__name__}'s slug is '{cls.slug}'; name the "
+                             f"file ch{number}_{cls.slug.replace('-', '_')}.py")
+        title = cls.chapter_title.partition(". ")
+        chapters.append(Chapter(number, cls.slug, title[2] or title[0],
+                                str(path.relative_to(REPO)), cls.__name__))
     return tuple(chapters)
 
 
@@ -139,19 +157,20 @@ def lecture_segments(cls: type) -> tuple | None:
     return tuple(cls.__new__(cls).chapter_segments())
 
 
-def polygon_checks(segments: Sequence,
-                   polygon: str) -> list[tuple[str, tuple, Callable[[], object]]]:
+def polygon_checks(segments: Sequence, polygon: str, shape: AnyPolygon | None = None,
+                   ) -> list[tuple[str, tuple, Callable[[], object]]]:
     """``(what, key, check)`` for each segment that plays the lecture's polygon: ``check()``
     computes what the chapter would show — a Run's log, a Compare's two triangulations — by
-    the chapter's own calls, on ``polygon`` (the one the chapter is handed). Equal keys are
-    the same computation."""
+    the chapter's own calls, on ``polygon`` (the one the chapter is handed; ``shape``: it
+    read already, which a Run then does not read again). Equal keys are the same
+    computation."""
     from geometry.cdt import constrained_delaunay
     from geometry.triangulate import triangulate
     from metaphors import lecture
     from metaphors.lecture import Compare, Run
 
     def run(segment: Run):
-        return segment.spec(polygon).log()
+        return replace(segment.spec(polygon), shape=shape).log()
 
     def compare(segment: Compare):
         shape = lecture.read_polygon(polygon)
@@ -170,10 +189,11 @@ def polygon_checks(segments: Sequence,
     return checks
 
 
-def check_chapters(chapters: Sequence[Chapter], polygon: str | None) -> None:
-    """Load every chapter's scene class and, with a polygon, compute on it what the chapter
-    plays on it (:func:`polygon_checks`; a scene that is not a lecture chapter: its
-    ``algorithm``, once), drawing nothing.
+def check_chapters(chapters: Sequence[Chapter], polygon: str | None,
+                   shape: AnyPolygon | None = None) -> None:
+    """Load every chapter's scene class and, with a polygon (``shape``: it read already by
+    the command), compute on it what the chapter plays on it (:func:`polygon_checks`; a
+    scene that is not a lecture chapter: its ``algorithm``, once), drawing nothing.
 
     A scene that does not load raises :class:`ChapterFailed`; a polygon a chapter's run
     rejects exits with status 2 (bad input).
@@ -191,29 +211,33 @@ def check_chapters(chapters: Sequence[Chapter], polygon: str | None) -> None:
         except ValueError as exc:
             raise ChapterFailed(f"{chapter_label(k, len(chapters), chapter)}: {exc}") from None
         if polygon is not None:
-            _check_polygon(cls, polygon, chapter_label(k, len(chapters), chapter), done)
+            _check_polygon(cls, (polygon, shape), chapter_label(k, len(chapters), chapter),
+                           done)
 
 
-def _check_polygon(cls: type, polygon: str, label: str, done: set) -> None:
-    """One chapter's part of :func:`check_chapters`; ``done`` holds the keys already run."""
+def _check_polygon(cls: type, given: tuple[str, AnyPolygon | None], label: str, done: set) -> None:
+    """One chapter's part of :func:`check_chapters` (``given``: the polygon, and it read);
+    ``done`` holds the keys already run."""
+    polygon, shape = given
     try:
         segments = lecture_segments(cls)
     except Exception as exc:  # the chapter's own list is broken: it would not render either
         raise ChapterFailed(f"{label}: cannot list its segments: {type(exc).__name__}: "
                             f"{error_line(exc)}") from None
-    if segments is None:
-        if not plays_several(cls):
-            try:
-                dry_run(cls, polygon)
-            except (GeometryError, ValueError, KeyError) as exc:
-                fail(f"{polygon}: {error_line(exc)}")
+    if segments is None:  # a scene played as a chapter (none, if it plays its own polygons)
+        spec = scene_run(cls, polygon, shape)
+        try:
+            if spec is not None:
+                run_once(spec)
+        except RUN_ERRORS as exc:
+            fail(f"{polygon}: {error_line(exc)}")
         return
-    for what, key, check in polygon_checks(segments, polygon):
+    for what, key, check in polygon_checks(segments, polygon, shape):
         if key in done:
             continue
         try:
             check()
-        except (GeometryError, ValueError, KeyError) as exc:
+        except RUN_ERRORS as exc:
             fail(f"{polygon}: {label}: {what}: {error_line(exc)}")
         done.add(key)
 

@@ -13,7 +13,7 @@ from typing import Any, NoReturn
 import click
 
 from geometry.errors import GeometryError
-from geometry.io import Shape, to_json, write_polygon
+from geometry.io import AnyPolygon, to_json, write_polygon
 from geometry.polygon import Polygon  # (the doctests' polygons too)
 from geometry.samples import make_sample
 from trex import exit_status
@@ -81,7 +81,7 @@ def main() -> None:
     """
 
 
-def _reflex_text(polygon: Shape) -> str:
+def _reflex_text(polygon: AnyPolygon) -> str:
     reflex = polygon.reflex_vertices()
     if not reflex:
         return "0 reflex vertices (convex)"
@@ -92,7 +92,7 @@ def _reflex_text(polygon: Shape) -> str:
     return f"{len(reflex)} reflex {noun} ({', '.join(labels)})"
 
 
-def display_area(polygon: Shape) -> str:
+def display_area(polygon: AnyPolygon) -> str:
     """The area to six significant digits, rounded from the exact value, so that an
     area beyond a float's range (coordinates near 1.7e308) is still a number.
 
@@ -111,7 +111,7 @@ def display_area(polygon: Shape) -> str:
     return f"{value.normalize():g}".replace("E", "e")
 
 
-def _size_text(polygon: Shape) -> str:
+def _size_text(polygon: AnyPolygon) -> str:
     holes = polygon.hole_count
     if not holes or isinstance(polygon, Polygon):  # a Polygon has no holes
         return f"{polygon.n} vertices"
@@ -120,7 +120,7 @@ def _size_text(polygon: Shape) -> str:
             f"({outer} on the outer ring, {polygon.n - outer} on holes)")
 
 
-def summary(polygon: Shape) -> str:
+def summary(polygon: AnyPolygon) -> str:
     """One line about a valid polygon, orientation (of the outer ring) as given in the input.
 
     The number of holes is said when there are any; hole vertices are reflex

@@ -25,23 +25,15 @@ import json
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import cast
+from typing import Any, cast
 
 import av
 from PIL import Image
 
+from story.step_marks import StepMark
+
 SCHEMA = "trex-steps/1"
 SUFFIX = ".steps.json"
-
-
-@dataclass(frozen=True)
-class Step:
-    """One step of a video: the frame it starts at, its caption, call line and kind."""
-
-    frame: int
-    caption: str
-    call: str | None = None
-    kind: str = "beat"
 
 
 @dataclass(frozen=True)
@@ -49,20 +41,19 @@ class Marks:
     """The steps of one video (``end``: the frame after the last step; None: the video's
     end) and what made it (``made_by``: the render's settings, to tell a reusable render)."""
 
-    steps: tuple[Step, ...]
+    steps: tuple[StepMark, ...]
     end: int | None = None
-    made_by: dict | None = None
+    made_by: dict[str, Any] | None = None
 
     def to_json(self) -> str:
         """The marks as ``NAME.steps.json`` holds them.
 
-        >>> marks = Marks((Step(0, "The polygon", None, "polygon"), Step(23, "B")), 40)
+        >>> marks = Marks((StepMark(0, "The polygon", None, "polygon"), StepMark(23, "B")), 40)
         >>> Marks.from_json(marks.to_json()) == marks
         True
         """
         return json.dumps({"schema": SCHEMA, "made_by": self.made_by, "end": self.end,
-                           "steps": [{"frame": s.frame, "caption": s.caption, "call": s.call,
-                                      "kind": s.kind} for s in self.steps]},
+                           "steps": [s.to_dict() for s in self.steps]},
                           indent=1, ensure_ascii=False, sort_keys=True) + "\n"
 
     @classmethod
@@ -78,8 +69,8 @@ class Marks:
         if not isinstance(data, dict) or data.get("schema") != SCHEMA:
             schema = data.get("schema") if isinstance(data, dict) else None
             raise ValueError(f"not step marks (schema {schema!r})")
-        steps = tuple(Step(int(s["frame"]), str(s["caption"]), s.get("call"),
-                           str(s.get("kind", "beat"))) for s in data["steps"])
+        steps = tuple(StepMark(int(s["frame"]), str(s["caption"]), s.get("call"),
+                               str(s.get("kind", "beat"))) for s in data["steps"])
         end = data.get("end")
         return cls(steps, None if end is None else int(end), data.get("made_by"))
 
@@ -108,9 +99,9 @@ def step_ranges(marks: Marks, frames: int) -> list[tuple[int, int]]:
     """``[start, stop)`` frames of each step of a video of ``frames`` frames. ValueError for
     marks that do not fit it (out of order, empty, past the end).
 
-    >>> step_ranges(Marks((Step(2, "a"), Step(23, "b"))), 40)
+    >>> step_ranges(Marks((StepMark(2, "a"), StepMark(23, "b"))), 40)
     [(0, 23), (23, 40)]
-    >>> step_ranges(Marks((Step(0, "a"), Step(0, "b"))), 40)
+    >>> step_ranges(Marks((StepMark(0, "a"), StepMark(0, "b"))), 40)
     Traceback (most recent call last):
     ...
     ValueError: step 1 has no frames (it starts at frame 0, where step 2 does)

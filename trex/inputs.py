@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, NoReturn
 import click
 
 from geometry.errors import GeometryError
-from geometry.io import Shape, check_format, read_polygon, read_shape
+from geometry.io import AnyPolygon, check_format, read_polygon, read_shape
 from trex.exit_status import INVALID as EXIT_INVALID
 from usercode.limits import DEFAULT_CALL_TIMEOUT, call_timeout, set_call_timeout
 
@@ -47,7 +47,7 @@ def report_error(arg: str, exc: BaseException) -> None:
     click.echo(f"error: {arg}: {error_line(exc)}", err=True)
 
 
-def report_warnings(arg: str, polygon: Shape) -> None:
+def report_warnings(arg: str, polygon: AnyPolygon) -> None:
     for message in polygon.warnings:
         click.echo(f"warning: {arg}: {message}", err=True)
 
@@ -58,7 +58,7 @@ def fail(message: str) -> NoReturn:
     raise click.exceptions.Exit(EXIT_INVALID)
 
 
-def try_load(arg: str, *, holes: bool = False) -> Shape | None:
+def try_load(arg: str, *, holes: bool = False) -> AnyPolygon | None:
     """The polygon of ``arg`` with its warnings reported, or None after reporting the error.
 
     With ``holes``, a polygon with holes is returned as a
@@ -73,7 +73,7 @@ def try_load(arg: str, *, holes: bool = False) -> Shape | None:
     return polygon
 
 
-def load_or_exit(arg: str, *, holes: bool = False) -> Shape:
+def load_or_exit(arg: str, *, holes: bool = False) -> AnyPolygon:
     """The polygon of ``arg`` (with holes, if ``holes``); on failure report it and exit with
     status 2."""
     polygon = try_load(arg, holes=holes)
@@ -82,7 +82,7 @@ def load_or_exit(arg: str, *, holes: bool = False) -> Shape:
     return polygon
 
 
-def load_run(spec: RunSpec, shape: Shape | None = None) -> RunSpec:
+def load_run(spec: RunSpec, shape: AnyPolygon | None = None) -> RunSpec:
     """The :class:`story.spec.RunSpec` ``spec`` with its polygon read once and checked by the
     one rule a run's polygon obeys (:meth:`story.spec.RunSpec.read`: holes only for the
     algorithms that take them); a scene handed it reads no file. ``shape`` is the polygon

@@ -32,6 +32,7 @@ from pathlib import Path
 
 import click
 
+from geometry.io import AnyPolygon
 from story.pseudocode import PANELS
 from trex.chapter_command import chapter
 from trex.chapter_pool import render_chapters
@@ -123,9 +124,9 @@ def lecture(quality: str, jobs: int, polygon: str | None, out_dir: str,
     Prints one line per chapter as it finishes, then the lecture's path. An interrupted or
     failed run leaves DIR as it was.
     """
-    if polygon is not None:
-        load_or_exit(polygon)  # bad input: one line, exit 2, before anything else
-    run_lecture(None, Path(out_dir), quality, jobs, polygon, only, panel)
+    # bad input: one line, exit 2, before anything else; read once, the checks' polygon
+    shape = load_or_exit(polygon) if polygon is not None else None
+    run_lecture(None, Path(out_dir), quality, jobs, polygon, only, panel, shape=shape)
 
 
 def _chapters(chapters: Sequence[Chapter] | None, only: str | None) -> Sequence[Chapter]:
@@ -151,8 +152,9 @@ def _chapters(chapters: Sequence[Chapter] | None, only: str | None) -> Sequence[
 
 def run_lecture(chapters: Sequence[Chapter] | None, out_dir: Path, quality: str = "l",
                 jobs: int = 1, polygon: str | None = None, only: str | None = None,
-                panel: str | None = None) -> Path:
-    """The command after its polygon check: ``chapters`` None = the lecture's own."""
+                panel: str | None = None, *, shape: AnyPolygon | None = None) -> Path:
+    """The command after its polygon check: ``chapters`` None = the lecture's own;
+    ``shape``: ``polygon`` read already (None: the checks read it)."""
     chapters = _chapters(chapters, only)
     try:
         check_output_dir(out_dir)
@@ -161,7 +163,7 @@ def run_lecture(chapters: Sequence[Chapter] | None, out_dir: Path, quality: str 
     began = time.monotonic()
     with interrupts_raise() as signals:
         try:
-            check_chapters(chapters, polygon)
+            check_chapters(chapters, polygon, shape)
             video, seconds = build_lecture(chapters, out_dir, quality, jobs, polygon, signals,
                                            panel=panel)
         except Interrupted as exc:

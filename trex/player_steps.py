@@ -25,8 +25,9 @@ STEPS_DIR = "steps"
 
 
 @dataclass(frozen=True)
-class Step:
-    """One step of the player: its picture (relative path), caption, call line and action."""
+class Still:
+    """The player's picture of one step (a beat): its path (relative), caption, call line and
+    action."""
 
     image: str
     caption: str
@@ -39,7 +40,7 @@ class Step:
 
 
 def render_steps(scene_class: type, log, folder: Path, pixels: tuple[int, int] = PIXELS,
-                 progress=None) -> list[Step]:
+                 progress=None) -> list[Still]:
     """Play ``log`` on a board of ``scene_class`` (a TraceScene subclass: its beats, theme,
     title and metaphor box) and write ``folder/steps/NNN.png`` after each beat.
 
@@ -66,13 +67,13 @@ def render_steps(scene_class: type, log, folder: Path, pixels: tuple[int, int] =
             beats: list[Beat] = scene.beats(log)
             board = board_for(scene, log, beats, scene.title, scene.theme)
             digits = max(3, len(str(len(beats))))
-            steps: list[Step] = []
+            steps: list[Still] = []
 
             def picture(k: int, beat: Beat) -> None:
                 name = f"{k:0{digits}d}.png"
                 _snapshot(scene).save(out / name)
                 call = beat.call if beat.call is not None else (steps[-1].call if steps else None)
-                steps.append(Step(f"{STEPS_DIR}/{name}", beat.caption, call, beat.action))
+                steps.append(Still(f"{STEPS_DIR}/{name}", beat.caption, call, beat.action))
                 if progress is not None:
                     progress(k, len(beats))
 
@@ -88,7 +89,7 @@ def _snapshot(scene):
     return renderer.camera.get_image().convert("RGB")
 
 
-def write_player(folder: Path, steps: list[Step], title: str, subtitle: str = "") -> Path:
+def write_player(folder: Path, steps: list[Still], title: str, subtitle: str = "") -> Path:
     """Write ``folder/index.html`` for the steps; returns its path."""
     return write_page(folder, _PAGE, title, [s.to_dict() for s in steps], SUBTITLE=subtitle,
                       FIRST=steps[0].image if steps else "", WIDTH=PIXELS[0], HEIGHT=PIXELS[1])

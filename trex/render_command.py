@@ -26,8 +26,9 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+import tracing
 from geometry.errors import GeometryError
-from geometry.io import Shape
+from geometry.io import AnyPolygon
 from story.pseudocode import PANELS
 from story.scene_kinds import (
     Handed,
@@ -37,6 +38,7 @@ from story.scene_kinds import (
     heuristic_of,
     plays_several,
 )
+from story.spec import RunSpec
 from trex import encoders, exit_status
 from trex.inputs import (
     call_timeout_option,
@@ -51,8 +53,6 @@ from usercode.errors import UserHeuristicError
 
 if TYPE_CHECKING:  # manim, imported when a scene is rendered
     from manim import Scene
-
-    from story.spec import RunSpec
 
 SCENES_DIR = Path(__file__).resolve().parent.parent / "scenes"
 #: The project's manim settings, which plain ``manim`` reads when run from the repository
@@ -156,29 +156,31 @@ def load_scene_class(path: Path, class_name: str | None) -> type:
     raise ValueError(f"{path.name} has no scene class '{class_name}'; it has: {names}")
 
 
-def dry_run(cls: type, polygon: str) -> None:
-    """Run the scene's algorithm on the polygon once, without drawing: an input the algorithm
-    rejects (a triangle has no diagonal …) is then reported before rendering starts."""
+#: What running a scene's algorithm once may raise for its input: the polygon's (or the
+#: heuristic's) fault, said in one line with exit status 2 by the command that asked.
+RUN_ERRORS = (GeometryError, ValueError, KeyError)
+
+
+def scene_run(cls: type, polygon: str, shape: AnyPolygon | None = None) -> RunSpec | None:
+    """The run the scene class ``cls`` plays on ``polygon`` (``shape``: that polygon read
+    already, so the run reads no file; None: the run reads it); None for a scene that plays
+    no algorithm, or several runs on polygons of its own."""
     algorithm = algorithm_of(cls)
     if algorithm is None or plays_several(cls):
-        return
-    from story.spec import RunSpec
-
-    RunSpec(algorithm, polygon, heuristic=heuristic_of(cls)).log()
+        return None
+    return RunSpec(algorithm, polygon, heuristic=heuristic_of(cls), shape=shape)
 
 
-def run_once(spec) -> None:
-    """Run the :class:`story.spec.RunSpec` a scene was handed once, without drawing: an input
-    the algorithm rejects (a triangle has no diagonal …) is one line naming the polygon and
-    exit 2, before rendering starts."""
-    try:
-        spec.log()
-    except (GeometryError, ValueError, KeyError) as exc:
-        fail(f"{spec.polygon}: {error_line(exc)}")
+def run_once(spec: RunSpec) -> tracing.Log:
+    """Run ``spec`` once, without drawing, so that an input the algorithm rejects (a triangle
+    has no diagonal …) is found before rendering starts; its log, for a command that shows it
+    (the player, the slides' page). Raises one of :data:`RUN_ERRORS`; the caller says it in
+    one line, naming the polygon."""
+    return spec.log()
 
 
 def scene_input(cls: type, polygon: str | None, panel: str | None = None,
-                shape: Shape | None = None) -> type:
+                shape: AnyPolygon | None = None) -> type:
     """The scene class handed its run as data (a subclass carrying a
     :class:`story.spec.RunSpec`, see :class:`metaphors.scene.SpecScene`): on ``polygon`` if
     given, else as ``manim`` would give it (its default run, with ``TREX_POLYGON`` and
@@ -234,7 +236,8 @@ def inflight_encoders(cfg: Path = MANIM_CFG) -> int | None:
 
 def render_into(make_scene: Callable[[], Scene], output: Path, fmt: str, quality: str,
                 *, progress: bool = True, srt: bool = True,
-                signals: Signals | None = None, steps: dict | None = None) -> Path:
+                signals: Signals | None = None, marks_made_by: dict | None = None,
+                ) -> Path:
     """Render ``make_scene()`` with manim and move the finished file to ``output``.
 
     With ``progress``, manim's progress bars are shown when stderr is a terminal.
@@ -242,11 +245,11 @@ def render_into(make_scene: Callable[[], Scene], output: Path, fmt: str, quality
     ``os.replace`` is atomic) and removes it whatever happens. With ``srt``, the subtitle
     file manim writes beside a video is moved to ``output`` with suffix ``.srt``.
     With ``signals`` (from :func:`interrupts_raise`), a signal whose exception got lost
-    still cancels the move, and one arriving after the move no longer counts. With ``steps``
-    (what made the render: its settings), the step marks the scene noted while rendering
-    (:mod:`metaphors.steps`) are written beside the video as ``NAME.steps.json``
-    (:mod:`trex.clips`), ``steps`` as their ``made_by``. Without ``signals``, SIGINT and
-    SIGTERM raise :class:`Interrupted` while it renders (:func:`interrupts_raise`): either
+    still cancels the move, and one arriving after the move no longer counts. With
+    ``marks_made_by`` (what made the render: its settings), the step marks the scene noted
+    while rendering (:mod:`metaphors.steps`) are written beside the video as
+    ``NAME.steps.json`` (:mod:`trex.clips`), ``marks_made_by`` as their ``made_by``. Without
+    ``signals``, SIGINT and SIGTERM raise :class:`Interrupted` while it renders (:func:`interrupts_raise`): either
     way, manim's encoder threads are closed however the render ends (:mod:`trex.encoders`).
     """
     with contextlib.ExitStack() as own:
@@ -256,7 +259,7 @@ def render_into(make_scene: Callable[[], Scene], output: Path, fmt: str, quality
                                      dir=output.parent))
         try:
             return _render_in(make_scene, temp, output, fmt, quality, progress=progress,
-                              srt=srt, signals=signals, steps=steps)
+                              srt=srt, signals=signals, marks_made_by=marks_made_by)
         finally:  # still under the handler: a second signal does not stop the removal
             shutil.rmtree(temp, ignore_errors=True)
 
@@ -284,7 +287,7 @@ def _settings(media: Path, fmt: str, quality: str, progress: bool) -> dict:
 
 def _render_in(make_scene: Callable[[], Scene], temp: Path, output: Path, fmt: str,
                quality: str, *, progress: bool, srt: bool, signals: Signals,
-               steps: dict | None) -> Path:
+               marks_made_by: dict | None) -> Path:
     """:func:`render_into`'s work, in its temporary directory ``temp``."""
     from manim import tempconfig
 
@@ -298,7 +301,8 @@ def _render_in(make_scene: Callable[[], Scene], temp: Path, output: Path, fmt: s
             guard.stop()  # no encoder thread left waiting for frames: the process can exit
             raise
         produced = _artifact(scene, fmt, media)
-    marks = _write_marks(scene, produced, steps) if steps is not None else None
+    marks = (_write_marks(scene, produced, marks_made_by) if marks_made_by is not None
+             else None)
     with signals.deferred():  # the moves happen together, or not at all
         signals.check()
         subtitles = produced.with_suffix(".srt")
@@ -316,10 +320,10 @@ def _render_in(make_scene: Callable[[], Scene], temp: Path, output: Path, fmt: s
 def _write_marks(scene, video: Path, made_by: dict) -> Path:
     """The scene's step marks, beside the video it rendered."""
     from metaphors.recorded import recorded_steps, steps_end
-    from trex.clips import Marks, Step, write_marks
+    from trex.clips import Marks, write_marks
 
-    steps = tuple(Step(m.frame, m.caption, m.call, m.kind) for m in recorded_steps(scene))
-    return write_marks(Marks(steps, steps_end(scene), made_by), video)
+    marks = Marks(tuple(recorded_steps(scene)), steps_end(scene), made_by)
+    return write_marks(marks, video)
 
 
 def format_of(fmt: str | None, output: str | None) -> str:
@@ -417,7 +421,7 @@ def with_heuristic(cls: type, heuristic: str | None) -> type:
 
 
 def _render(scene: str, path: Path, class_name: str | None,
-            given: tuple[str | None, Shape | None], target: Path, fmt: str, quality: str,
+            given: tuple[str | None, AnyPolygon | None], target: Path, fmt: str, quality: str,
             signals: Signals, panel: str | None = None, heuristic: str | None = None) -> None:
     polygon, shape = given  # --polygon, and that polygon read already
     try:
@@ -438,7 +442,10 @@ def _render(scene: str, path: Path, class_name: str | None,
         fail(f"{scene}: {error_line(exc)}")
     spec = handed.spec if isinstance(handed, Handed) else None
     if spec is not None and spec.shape is not None:  # a polygon handed: run it once, now
-        run_once(spec)
+        try:
+            run_once(spec)
+        except RUN_ERRORS as exc:
+            fail(f"{spec.polygon}: {error_line(exc)}")
     try:
         render_into(handed, target, fmt, QUALITIES[quality], signals=signals)
     except (KeyboardInterrupt, click.exceptions.Exit):

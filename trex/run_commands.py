@@ -17,7 +17,7 @@ import click
 
 from geometry.check import is_inner_diagonal
 from geometry.errors import GeometryError
-from geometry.io import Shape, write_atomic
+from geometry.io import AnyPolygon, write_atomic
 from geometry.polygon import Polygon
 from geometry.triangulate import triangulate
 from story.registry import heuristics, names, triangulations
@@ -102,11 +102,11 @@ TAKES_HEURISTIC = "divide-and-conquer"
 ALGORITHM = ShortChoice(list(triangulations()), "algorithm")
 
 
-def _vertices(polygon: Shape) -> list[list[float]]:
+def _vertices(polygon: AnyPolygon) -> list[list[float]]:
     return [list(p) for p in polygon.input_points()]
 
 
-def _to_input(polygon: Shape, indices) -> list[int]:
+def _to_input(polygon: AnyPolygon, indices) -> list[int]:
     return [polygon.source[i] for i in indices]
 
 
@@ -124,7 +124,7 @@ def diagonal_record(arg: str, polygon: Polygon, heuristic: str | UserHeuristic) 
     }
 
 
-def triangulation_record(arg: str, polygon: Shape, algorithm: str,
+def triangulation_record(arg: str, polygon: AnyPolygon, algorithm: str,
                          heuristic: str | UserHeuristic) -> dict:
     """The triangles of an algorithm and the exact verdict on them, in input indices.
 

@@ -18,10 +18,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, cast
 
-from geometry.errors import GeometryError
 from story.registry import spoken
 from story.scene_kinds import heuristic_of, plays_several
 from trex.inputs import error_line, fail, load_or_exit, load_run
+from trex.render_command import RUN_ERRORS, run_once
 from usercode.loading import is_user_spec
 
 if TYPE_CHECKING:  # manim's, imported when a scene is loaded
@@ -168,8 +168,8 @@ def run_of(chosen: Chosen):
     if chosen.log is None:
         spec = chosen.spec if chosen.spec is not None else spec  # the polygon, read once
         try:
-            log = spec.log()
-        except (GeometryError, ValueError, KeyError) as exc:
+            log = run_once(spec)
+        except RUN_ERRORS as exc:
             fail(f"{spec.polygon}: {error_line(exc)}")
         return spec, log, f"{_said(log)} on {spec.polygon}"
     log = chosen.log

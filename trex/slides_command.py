@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, cast
 
 import click
 
+from geometry.io import AnyPolygon
 from story.pseudocode import PANELS
 from story.scene_kinds import SeveralRuns, plays_several
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
@@ -82,10 +83,9 @@ def slides(scene: str, polygon: str | None, saved: str | None, quality: str,
     if scene == LECTURE:
         if saved is not None:
             fail("--log: the lecture plays many runs; give --polygon for its chapters")
-        if polygon is not None:
-            load_or_exit(polygon)
+        shape = load_or_exit(polygon) if polygon is not None else None  # read once
         _lecture(Path(output), quality, jobs or 1, polygon, panel, only,
-                 Path(lecture_dir) if lecture_dir else None)
+                 Path(lecture_dir) if lecture_dir else None, shape=shape)
         return
     for name, given in (("-j", jobs), ("--chapters", only), ("--lecture", lecture_dir)):
         if given is not None:
@@ -134,7 +134,7 @@ def _scene_slides(cls: type[TraceScene], quality: str, subtitle: str, target: Pa
         video = built / "render" / "scene.mp4"
         video.parent.mkdir()
         render_into(cls, video, "mp4", QUALITIES[quality], progress=False, srt=False,
-                    steps={"scene": cls.__name__, "quality": quality})
+                    marks_made_by={"scene": cls.__name__, "quality": quality})
         found = probe(video)
         shown = build_slides(built, [Source(video, read_marks(video))], cls.title, subtitle,
                              (found.width, found.height))
@@ -146,7 +146,8 @@ def _scene_slides(cls: type[TraceScene], quality: str, subtitle: str, target: Pa
 
 
 def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: str | None,
-             only: str | None, lecture_dir: Path | None) -> None:
+             only: str | None, lecture_dir: Path | None, *, shape: AnyPolygon | None = None,
+             ) -> None:
     from trex import chapters as ch
     from trex.lecture_join import DEFAULT_DIR
 
@@ -166,7 +167,7 @@ def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: 
     except ValueError as exc:
         fail(f"{target}: {exc}")
     try:
-        ch.check_chapters(chapters, polygon)
+        ch.check_chapters(chapters, polygon, shape)
     except ch.ChapterFailed as exc:
         ch.chapter_failed(str(exc))
     began = time.monotonic()
@@ -199,13 +200,13 @@ def _source(video: Path, marks, chapter):
     this project's) is one step, captioned with the chapter's title."""
     from dataclasses import replace
 
+    from story.step_marks import StepMark
     from trex.chapters import teacher_notes
-    from trex.clips import Step
     from trex.slides_build import Source
 
     title = f"{chapter.number}. {chapter.title}"
     if not marks.steps:
-        marks = replace(marks, steps=(Step(0, title, None, "chapter"),))
+        marks = replace(marks, steps=(StepMark(0, title, None, "chapter"),))
     notes = tuple(f"{note.title}: {line}" for note in teacher_notes(chapter)
                   for line in note.lines)
     return Source(video, marks, title, notes)

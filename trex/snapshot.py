@@ -37,7 +37,7 @@ from trex.graph_diff import report
 from trex.graph_format import SCHEMA, read_graph, to_json
 
 if TYPE_CHECKING:
-    from geometry.io import Shape
+    from geometry.io import AnyPolygon
 
 
 class SnapshotError(ValueError):
@@ -215,7 +215,7 @@ def plays_own_polygons(cls: type) -> bool:
 
 
 def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = (),
-         shape: Shape | None = None) -> type:
+         shape: AnyPolygon | None = None) -> type:
     """The scene class handed its input: its default run, on ``polygon``, or replaying saved
     ``logs`` (one per run). No environment variable counts: a graph is its arguments' alone.
     A scene of one run is handed the polygon read once and checked by its run's rule
@@ -243,7 +243,7 @@ def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = (),
         raise SnapshotError(str(exc)) from None
 
 
-def _read(polygon: str, shape: Shape | None, default=None):
+def _read(polygon: str, shape: AnyPolygon | None, default=None):
     """``polygon`` read (``shape``: read already) and, for a scene of one run, its
     ``default`` run on it, checked by that run's rule (None for a scene of several runs,
     which plays its own polygons: the polygon is only read). A polygon that cannot be read,

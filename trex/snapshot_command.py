@@ -20,7 +20,7 @@ from pathlib import Path
 
 import click
 
-from geometry.io import Shape
+from geometry.io import AnyPolygon
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 
 EXIT_DIFFERS = 1
@@ -37,9 +37,9 @@ def _where(exc: BaseException, scene: str) -> str:
     return f" ({Path(file_part).name}:{frames[-1].lineno})" if frames else ""
 
 
-def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: Shape | None = None):
+def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: AnyPolygon | None = None):
     """The scene's graph, or exit 2 with one line (``shape``: ``polygon`` read already)."""
-    from trex.render_command import run_once
+    from trex.render_command import RUN_ERRORS, run_once
     from trex.snapshot import SnapshotError, build, hand, load_scene, plays_own_polygons
 
     try:
@@ -56,7 +56,10 @@ def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: Shape 
         fail(str(exc) if named else f"{scene}: {exc}")
     spec = getattr(handed, "spec", None)
     if spec is not None and spec.shape is not None:
-        run_once(spec)  # an input the algorithm rejects: said as the polygon's fault
+        try:
+            run_once(spec)
+        except RUN_ERRORS as exc:  # an input the algorithm rejects: said as the polygon's fault
+            fail(f"{spec.polygon}: {error_line(exc)}")
     try:
         return build(handed)
     except (KeyboardInterrupt, click.exceptions.Exit):

@@ -30,8 +30,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, cast
 
-from geometry.errors import GeometryError
-from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
+from geometry.io import AnyPolygon
+from story.scene_kinds import Handed, WithPanel, algorithm_of, plays_several
 from trex.course.schema import Course, CourseError, Exercises, Lecture, SceneItem, Slides
 from trex.course.schema import polygon_path as _polygon_path
 from trex.inputs import READ_ERRORS, error_line
@@ -88,11 +88,12 @@ class _Checked:
             self.done.add(key)
 
 
-def _read(item: str, name: str, polygon: str, holes: bool) -> None:
+def _read(item: str, name: str, polygon: str, holes: bool) -> AnyPolygon:
+    """The polygon ``polygon`` read (with holes, if ``holes``), once: the checks run on it."""
     from geometry.io import read_polygon, read_shape
 
     try:
-        (read_shape if holes else read_polygon)(polygon)
+        return (read_shape if holes else read_polygon)(polygon)
     except READ_ERRORS as exc:
         raise CourseError(item, name, f"{polygon}: {error_line(exc)}") from None
 
@@ -118,16 +119,20 @@ def _scene_class(item: str, scene: str) -> type:
         raise CourseError(item, "scene", error_line(exc)) from None
 
 
-def _dry_run(item: str, name: str, cls: type, polygon: str, checked: _Checked) -> None:
+def _run_once(item: str, name: str, cls: type, polygon: str, checked: _Checked) -> None:
+    """The scene's run on ``polygon`` computed once, as ``trex render`` runs it before
+    rendering (:func:`trex.render_command.run_once`); what it rejects is the item's field
+    ``name``'s fault."""
     from geometry.triangulate import HOLE_ALGORITHMS
-    from trex.render_command import dry_run
+    from trex.render_command import RUN_ERRORS, run_once, scene_run
 
     algorithm = algorithm_of(cls)
-    _read(item, name, polygon, algorithm in HOLE_ALGORITHMS)
+    spec = scene_run(cls, polygon, _read(item, name, polygon, algorithm in HOLE_ALGORITHMS))
+    if spec is None:
+        return
     try:
-        checked.once(("run", algorithm, heuristic_of(cls), polygon),
-                     lambda: dry_run(cls, polygon))
-    except (GeometryError, ValueError, KeyError) as exc:
+        checked.once(("run", algorithm, spec.heuristic, polygon), lambda: run_once(spec))
+    except RUN_ERRORS as exc:
         raise CourseError(item, name, f"{polygon}: {error_line(exc)}") from None
 
 
@@ -164,13 +169,13 @@ def _check_chapters(item: str, chapters: list, polygon: str | None, checked: _Ch
         segments = ch.lecture_segments(cls)
         if segments is None:
             if not plays_several(cls):
-                _dry_run(item, "polygon", cls, polygon, checked)
+                _run_once(item, "polygon", cls, polygon, checked)
             continue
-        _read(item, "polygon", polygon, False)
-        for what, key, check in ch.polygon_checks(segments, polygon):
+        shape = _read(item, "polygon", polygon, False)
+        for what, key, check in ch.polygon_checks(segments, polygon, shape):
             try:
                 checked.once((key, polygon), check)
-            except (GeometryError, ValueError, KeyError) as exc:
+            except rc.RUN_ERRORS as exc:
                 raise CourseError(item, "polygon",
                                   f"{polygon}: {label}: {what}: {error_line(exc)}") from None
 
@@ -227,7 +232,7 @@ def _scene(course: Course, item: SceneItem, checked: _Checked) -> list[Task]:
     for k, given in enumerate(item.polygons):
         polygon = _polygon(course, given)
         if polygon is not None:
-            _dry_run(item.name, f"polygons[{k}]", cls, polygon, checked)
+            _run_once(item.name, f"polygons[{k}]", cls, polygon, checked)
         name = f"scene-{scene_slug(item.scene)}{_polygon_part(cls, given)}"
         settings = {"scene": scene, "polygon": polygon, "format": item.format,
                     "quality": item.quality, "panel": item.panel}
@@ -270,7 +275,7 @@ def _slides(course: Course, item: Slides, checked: _Checked,
     except ValueError as exc:
         raise CourseError(item.name, "scene", error_line(exc)) from None
     if polygon is not None and not plays_several(cls):
-        _dry_run(item.name, "polygon", cls, polygon, checked)
+        _run_once(item.name, "polygon", cls, polygon, checked)
     return [Task(name, "slides", item.name, (f"{name}/index.html",), settings,
                  _inputs(polygon, scene))]
 

@@ -96,7 +96,7 @@ def _chapter(task: Task, root: Path, _deps) -> tuple[list[str], float]:
     made_by = cc.render_settings(chapter["scene_file"], chapter["scene_class"], s["quality"],
                                  s["polygon"], s["panel"])
     render_into(_handed(cls, s["polygon"], s["panel"]), output, "mp4", QUALITIES[s["quality"]],
-                progress=False, steps=made_by)
+                progress=False, marks_made_by=made_by)
     files = [task.files[0]] + [str(Path(task.files[0]).with_suffix(x)) for x in (".srt",)
                                if output.with_suffix(x).is_file()]
     return files, _duration(output)

@@ -24,7 +24,7 @@ from geometry.check import is_inner_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.hole_samples import HOLE_SAMPLES
-from geometry.io import Shape, polygon_to_json_points, read_rings, shape_from_rings
+from geometry.io import AnyPolygon, polygon_to_json_points, read_rings, shape_from_rings
 from geometry.polygon import Polygon
 from geometry.predicates import Point
 from geometry.samples import is_sample, parse_spec, sample_from_spec, sample_names
@@ -103,12 +103,12 @@ def rings_of(body: dict, *, holes: bool = True) -> list[list[list[float]]]:
     return rings
 
 
-def check_shape(rings: list) -> Shape:
+def check_shape(rings: list) -> AnyPolygon:
     """The valid shape of the rings, or a 422 saying why not."""
     return _shape(rings)
 
 
-def _shape(rings: list) -> Shape:
+def _shape(rings: list) -> AnyPolygon:
     try:
         return shape_from_rings(rings)
     except GeometryError as exc:
@@ -125,7 +125,7 @@ def _raw_index(rings: list) -> list[int]:
     return out
 
 
-def _frame(shape: Shape, raw: list[int]) -> tuple[list[int] | None, list[int]]:
+def _frame(shape: AnyPolygon, raw: list[int]) -> tuple[list[int] | None, list[int]]:
     """T = ABC at the left-most vertex B and the candidates in it, input indices; none with
     holes (the heuristics take simple polygons)."""
     if shape.hole_count:
@@ -156,7 +156,7 @@ def check(body: dict) -> dict:
             "edges": [], "triangle": triangle, "candidates": candidates}
 
 
-def rings_of_shape(shape: Shape) -> dict:
+def rings_of_shape(shape: AnyPolygon) -> dict:
     """A valid shape as a request's ``polygon`` and ``holes``, in its (cleaned) input order."""
     points = polygon_to_json_points(shape.input_points())
     starts = getattr(shape, "starts", (0, shape.n))
@@ -182,7 +182,7 @@ def _heuristic(name: object, own: dict[str, UserHeuristic]) -> str | UserHeurist
     return own.get(known, known)
 
 
-def _claim(shape: Shape, raw: list[int], heuristic: str | UserHeuristic, name: str) -> dict:
+def _claim(shape: AnyPolygon, raw: list[int], heuristic: str | UserHeuristic, name: str) -> dict:
     """The claim and its exact verdict as ``trex diagonal --json`` gives them, plus what the
     page draws: the edge the claim crosses (``crossed``) or the vertex it passes through
     (``through``), request indices."""

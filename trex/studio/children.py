@@ -126,16 +126,25 @@ def studio_video(rule: str, polygon: str, output: str, progress_file: str) -> No
     out of the total."""
     from geometry.triangulate import HOLE_ALGORITHMS
     from story.scene_kinds import algorithm_of
-    from trex.render_command import QUALITIES, dry_run, render_into, scene_input
+    from trex.render_command import (
+        QUALITIES,
+        RUN_ERRORS,
+        render_into,
+        run_once,
+        scene_input,
+        scene_run,
+    )
     from trex.signals import EXIT_SIGNAL, Interrupted, interrupts_raise
 
     cls = played_scene(rule)
-    load_or_exit(polygon, holes=algorithm_of(cls) in HOLE_ALGORITHMS)
+    spec = scene_run(cls, polygon, load_or_exit(polygon,
+                                                holes=algorithm_of(cls) in HOLE_ALGORITHMS))
     try:
-        dry_run(cls, polygon)
+        if spec is not None:
+            run_once(spec)
         played = scene_input(cls, polygon)
         total = _total_frames(played, QUALITIES["l"], Path(output).parent)
-    except (ValueError, KeyError) as exc:
+    except RUN_ERRORS as exc:
         fail(f"{rule}: {error_line(exc)}")
     progress = Progress(Path(progress_file), total, every=15)
     with interrupts_raise() as signals:
