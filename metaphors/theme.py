@@ -24,6 +24,8 @@ ball, band    orange,     gravity's ball and its rubber band (Gravity)
               rose
 hand, sweep   purple      the clock hand (Rotation) and the sweeping line
                           (Translation, the monotone sweep)
+swept         pale blue   what water, clock hand or sweep line swept on its way to its
+                          pick (one colour for all three; red where it is outside P)
 dial          grey        the clock face
 fruit, rind   orange,     the fruit sliced (ear clipping), on its plate
               olive
