@@ -13,7 +13,7 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 
-from manim import DOWN, LEFT, Dot, Line, Mobject, VMobject
+from manim import LEFT, Dot, Line, Mobject
 from manim import Polygon as MPolygon
 
 from geometry.batch import in_closed_triangle
@@ -24,9 +24,10 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
-from metaphors import method_figures
+from metaphors import figure_faster, method_figures
 from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.figure_metaphors import metaphor_parts
+from metaphors.figure_plots import Area, Series, line_plot
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
@@ -36,7 +37,7 @@ from story.runs import run_logged
 FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT = (-3.5, -0.1), 6.2, 4.6
 BOX = (FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
 KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims", "metaphor",
-         *method_figures.KINDS)
+         *method_figures.KINDS, *figure_faster.KINDS)
 #: the growth plot: each algorithm's ear tests, counted in its log, on random polygons
 GROWTH_SIZES = (10, 20, 30, 40, 50, 60)
 GROWTH_RUNS = (("ear-clipping-naive", "naive"), ("ear-clipping", "ear status kept"),
@@ -67,6 +68,9 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     if figure.kind in method_figures.KINDS:  # gravity, prune and search, keyhole, a rule
         return method_figures.method_figure(figure.kind, figure.polygon or polygon_spec,
                                             figure.heuristic, BOX, theme)
+    if figure.kind in figure_faster.KINDS:  # the faster algorithms' and the recap's
+        return figure_faster.figure_mobjects(figure.kind, figure.polygon or polygon_spec, theme,
+                                             BOX)
     polygon = read_polygon(figure.polygon or polygon_spec)
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
@@ -229,39 +233,19 @@ def ear_tests(algorithm: str, n: int) -> int:
 
 def _growth(theme: Theme) -> list[Mobject]:
     """Ear tests against n for the three ear clippers: measured, not asymptotic."""
-    counts = {name: [ear_tests(name, n) for n in GROWTH_SIZES] for name, _ in GROWTH_RUNS}
-    top = max(max(c) for c in counts.values())
     left, bottom = FIGURE_CENTER[0] - FIGURE_WIDTH / 2 + 0.6, FIGURE_CENTER[1] - FIGURE_HEIGHT / 2
-    width, height = FIGURE_WIDTH - 1.0, FIGURE_HEIGHT - 0.4
-
-    def at(n: int, count: int) -> tuple[float, float, float]:
-        return (left + width * n / GROWTH_SIZES[-1], bottom + height * count / top, 0.0)
-
-    axes = [tag(Line(at(0, 0), at(GROWTH_SIZES[-1], 0), color=theme.idle,
-                     stroke_width=theme.thin_stroke), None, "figure:axis"),
-            tag(Line(at(0, 0), at(0, top), color=theme.idle, stroke_width=theme.thin_stroke),
-                None, "figure:axis")]
-    words: list[Mobject] = []
-    for n in (GROWTH_SIZES[0], GROWTH_SIZES[-1]):
-        tick = typeset.text(str(n), font=theme.font, size=theme.label_size, colour=theme.idle)
-        words.append(tag(tick.next_to(at(n, 0), direction=DOWN, buff=0.12), None,
-                         "figure:tick"))
-    peak = typeset.text(str(top), font=theme.font, size=theme.label_size, colour=theme.idle)
-    words.append(tag(peak.next_to(at(0, top), direction=LEFT, buff=0.12), None,
-                     "figure:tick"))
-    lines: list[Mobject] = []
-    for k, (name, said) in enumerate(GROWTH_RUNS):
-        colour = theme.pieces[k % len(theme.pieces)]
-        points = [at(n, c) for n, c in zip(GROWTH_SIZES, counts[name], strict=True)]
-        lines.append(tag(VMobject(color=colour, stroke_width=theme.stroke).set_points_as_corners(
-            points), None, f"figure:growth:{name}"))
-        label = typeset.text(f"{said}: {counts[name][-1]}", font=theme.font,
-                             size=theme.label_size, colour=colour)
+    area = Area(left, bottom, FIGURE_WIDTH - 1.0, FIGURE_HEIGHT - 0.4)
+    series = [Series(f"figure:growth:{name}", tuple(ear_tests(name, n) for n in GROWTH_SIZES),
+                     theme.pieces[k % len(theme.pieces)]) for k, (name, _) in enumerate(GROWTH_RUNS)]
+    drawn, _ = line_plot(GROWTH_SIZES, series, area, theme)
+    for k, ((_, said), line) in enumerate(zip(GROWTH_RUNS, series, strict=True)):
+        label = typeset.text(f"{said}: {line.counts[-1]}", font=theme.font,
+                             size=theme.label_size, colour=line.colour)
         # the legend in the plot's top left, which the rising lines leave empty
-        label.move_to((left + 0.3, bottom + height - 0.2 - 0.42 * k, 0), aligned_edge=LEFT)
-        words.append(tag(label, None, "figure:legend"))
+        label.move_to((left + 0.3, bottom + area.height - 0.2 - 0.42 * k, 0), aligned_edge=LEFT)
+        drawn.append(tag(label, None, "figure:legend"))
     caption = _label("ear tests (mean of 3 polygons) by n", theme, theme.ink)
-    return [*axes, *lines, *words, tag(caption, None, "figure:label")]
+    return [*drawn, tag(caption, None, "figure:label")]
 
 
 __all__ = ["FIGURE_CENTER", "FIGURE_HEIGHT", "FIGURE_WIDTH", "GROWTH_RUNS", "GROWTH_SIZES",

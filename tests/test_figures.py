@@ -213,3 +213,327 @@ def test_the_rule_is_drawn_with_its_claim_green_when_inner_red_when_not():
     wrong = figure_mobjects(Figure("rule", "counterexample", heuristic="scaling"), "x")
     assert named(wrong, "figure:claim")[0].trex_role == "rejected"
     assert len(named(wrong, "figure:edge:")) == 1
+
+
+# --- the faster algorithms' cards and the recap (metaphors/figure_faster.py) -------------------
+
+
+def _higher(p, i):
+    """The monotone sweep's order: larger y, then smaller x."""
+    x, y = p.points[i]
+    return (y, -x)
+
+
+def _y_monotone(p, ids) -> bool:
+    """Whether the closed chain ``ids`` goes down once and up once in the sweep's order: one
+    local top and one local bottom."""
+    keys = [_higher(p, i) for i in ids]
+    k = len(keys)
+    tops = sum(1 for j in range(k) if keys[j] > keys[j - 1] and keys[j] > keys[(j + 1) % k])
+    bottoms = sum(1 for j in range(k) if keys[j] < keys[j - 1] and keys[j] < keys[(j + 1) % k])
+    return tops == bottoms == 1
+
+
+def _vertices(mobject):
+    import numpy as np
+
+    return np.round(np.asarray(mobject.get_vertices())[:, :2], 6).tolist()
+
+
+def _scene(frame, points):
+    import numpy as np
+
+    return np.round(np.asarray(frame.many(points))[:, :2], 6).tolist()
+
+
+@pytest.mark.parametrize("polygon", ["lecture", "counterexample", "random-2opt:30:4"])
+def test_the_monotone_pieces_are_y_monotone_and_cover_p(polygon):
+    from geometry.check import is_inner_diagonal
+    from geometry.predicates import signed_area2
+    from metaphors.drawing import Frame
+    from metaphors.figure_faster import monotone_partition
+    from metaphors.figures import FIGURE_CENTER, FIGURE_HEIGHT, FIGURE_WIDTH
+    from metaphors.theme import THEME
+
+    p = read_polygon(polygon)
+    cut = monotone_partition(p)
+    assert all(_y_monotone(p, piece) for piece in cut.pieces)
+    assert all(is_inner_diagonal(p, u, w) for u, w in cut.diagonals)
+    # the pieces tile P: their areas add up to P's, exactly, and there is one more piece
+    # than there are diagonals
+    assert sum(signed_area2([p.points[k] for k in piece]) for piece in cut.pieces) \
+        == signed_area2(list(p.points))
+    assert len(cut.pieces) == len(cut.diagonals) + 1
+    # the split and merge vertices, found again from the definition (both neighbours lower,
+    # or both higher, and reflex)
+    n = p.n
+    reflex = [v for v in range(n) if orient(p.points[v - 1], p.points[v], p.points[(v + 1) % n]) < 0]
+    lower = [v for v in reflex if _higher(p, v) > max(_higher(p, v - 1), _higher(p, (v + 1) % n))]
+    upper = [v for v in reflex if _higher(p, v) < min(_higher(p, v - 1), _higher(p, (v + 1) % n))]
+    assert sorted(cut.split) == lower and sorted(cut.merge) == upper
+    drawn = figure_mobjects(Figure("monotone-pieces"), polygon)
+    frame = Frame(p.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
+    pieces = named(drawn, "figure:piece")
+    assert [_vertices(m) for m in pieces] == [_scene(frame, [p.points[k] for k in piece])
+                                              for piece in cut.pieces]
+    assert len(named(drawn, "figure:diagonal")) == len(cut.diagonals)
+    kinks = named(drawn, "figure:kink")
+    assert len(kinks) == len(lower) + len(upper)
+    # amber, never the red of what fails: nothing on this card fails
+    assert {m.trex_role for m in kinks} <= {"argument"}
+    assert all(m.get_color().to_hex().lower() == THEME.argument for m in kinks)
+    assert not [m for m in drawn if getattr(m, "trex_role", None) == "rejected"]
+
+
+def test_the_lecture_polygon_needs_diagonals_at_its_split_and_merge_vertices():
+    drawn = figure_mobjects(Figure("monotone-pieces"), "lecture")
+    caption = named(drawn, "figure:label")[0]
+    assert [line.original_text for line in caption] == [
+        "split D, merge K and M", "3 diagonals: 4 y-monotone pieces"]
+
+
+def _profiled_sign_tests(run) -> int:
+    """The sign tests counted another way: every call watched (sys.setprofile), the tests
+    known by their code, the monotone sweep's bisection replayed from its result."""
+    import sys
+
+    from geometry import batch, predicates, validate
+    from geometry.sweep_status import SweepStatus
+    from story.sign_tests import _bisection_steps
+
+    one = {f.__code__ for f in (predicates.orient, predicates.dot_sign,
+                                predicates.compare_distance, predicates.compare_line_distance,
+                                predicates.compare_angle)}
+    many = {batch.orient_many.__code__: "xs", batch.dot_sign_many.__code__: "starts",
+            validate.orient_array.__code__: "c"}
+    total, depth = 0, 0
+
+    def watch(frame, event, arg):
+        nonlocal total, depth
+        code = frame.f_code
+        if event == "call" and (code in one or code in many):
+            total += (1 if code in one else len(frame.f_locals[many[code]])) if not depth else 0
+            depth += 1
+        elif event == "return" and (code in one or code in many):
+            depth -= 1
+        elif event == "return" and code is SweepStatus.find.__code__ and not depth:
+            total += _bisection_steps(frame.f_locals["self"], frame.f_locals["own"], arg)
+
+    sys.setprofile(watch)
+    try:
+        run()
+    finally:
+        sys.setprofile(None)
+    return total
+
+
+@pytest.mark.parametrize("algorithm", ["divide-and-conquer", "ear-clipping", "monotone",
+                                       "ear-clipping-naive", "prune-and-search"])
+@pytest.mark.parametrize("polygon", ["lecture", "random-2opt:40:2", "comb"])
+def test_sign_tests_are_counted_alike_by_watching_every_call(algorithm, polygon):
+    """The counting copies miss no test: every call watched finds as many."""
+    from story.sign_tests import ALGORITHMS, count_sign_tests
+
+    p = read_polygon(polygon)
+    run = ALGORITHMS[algorithm]
+    counted = count_sign_tests(lambda: run(p.sub_polygon(range(p.n))))
+    assert counted == _profiled_sign_tests(lambda: run(p.sub_polygon(range(p.n)))) > 0
+
+
+def test_a_sign_test_is_one_orientation_or_one_point_of_a_batch():
+    import numpy as np
+
+    import geometry.ears
+    from geometry import batch, predicates
+    from story.sign_tests import count_sign_tests
+
+    a, b, c = (0.0, 0.0), (4.0, 0.0), (0.0, 4.0)
+    assert count_sign_tests(lambda: predicates.orient(a, b, c)) == 1
+    # a test made of tests: its own four orientations (the triangle's turn, then three)
+    assert count_sign_tests(lambda: predicates.in_triangle((1.0, 1.0), a, b, c)) == 4
+    xs, ys = np.array([0.1, 2.0, 0.3, 2.0]), np.array([0.1, 0.0, 0.3, 1e-300])
+    # four points, one on the edge and one decided exactly: four tests, none counted twice
+    assert count_sign_tests(lambda: batch.orient_many(a, b, xs, ys)) == 4
+    assert count_sign_tests(lambda: batch.in_triangle_many(a, b, c, xs, ys)) >= 4
+    # every name is given back
+    assert geometry.ears.orient is predicates.orient and batch.orient is predicates.orient
+
+
+def _corners(line):
+    """The points a line through corners (``set_points_as_corners``) was drawn through."""
+    import numpy as np
+
+    return np.vstack([line.get_start_anchors(), line.get_end_anchors()[-1:]])
+
+
+def _plotted_counts(drawn, prefix):
+    """The counts a log-log plot draws, read back from its lines and its axes: the corner
+    is (first size, the decade below the least count), the y axis ends at the top count."""
+    import math
+
+    import numpy as np
+
+    from metaphors.figure_faster import measured_series
+    from metaphors.theme import THEME
+
+    series = measured_series(THEME)
+    top = max(max(s.counts) for s in series)
+    low = 10.0 ** math.floor(math.log10(min(min(s.counts) for s in series)))
+    _, y_axis = named(drawn, "figure:axis")
+    y0, y1 = np.asarray(y_axis.get_start())[1], np.asarray(y_axis.get_end())[1]
+    read = {}
+    for line in named(drawn, prefix):
+        ys = _corners(line)[:, 1]
+        read[line.name[len(prefix):]] = [round(low * (top / low) ** ((y - y0) / (y1 - y0)))
+                                         for y in ys]
+    return read
+
+
+def test_the_measured_plot_draws_the_sign_tests_counted_in_real_runs():
+    from geometry.lennes import divide_and_conquer
+    from metaphors.figure_faster import BOUNDS, MEASURED_RUNS, MEASURED_SIZES
+    from story.sign_tests import SEEDS, count_sign_tests, measured
+
+    drawn = figure_mobjects(Figure("measured"), "lecture")
+    plotted = _plotted_counts(drawn, "figure:measured:")
+    assert plotted == {name: [measured(name, n) for n in MEASURED_SIZES]
+                       for name in MEASURED_RUNS}
+    # a count is a mean over runs on random polygons: one counted again here
+    polygons = [read_polygon(f"random-2opt:20:{seed}") for seed in SEEDS]
+    runs = [count_sign_tests(lambda p=p: divide_and_conquer(p, "gravity")) for p in polygons]
+    assert measured("divide-and-conquer", 20) == round(sum(runs) / len(runs))
+    # the bounds: dashed, each named on the legend as a bound, never as a measurement
+    bounds = named(drawn, "figure:bound:")
+    assert [m.name for m in bounds] == [f"figure:bound:{key}" for key, _, _ in BOUNDS]
+    assert all(type(m).__name__ == "DashedVMobject" for m in bounds)
+    assert all(type(m).__name__ != "DashedVMobject" for m in named(drawn, "figure:measured:"))
+    legend = [m.original_text for m in named(drawn, "figure:legend")]
+    assert "bounds, not measured" in legend and "counted in our runs" in legend
+    assert all(said in legend for _, said, _ in BOUNDS)
+    # divide and conquer does the most work at every size, and grows fastest
+    dc, mono = plotted["divide-and-conquer"], plotted["monotone"]
+    assert all(d > m for d, m in zip(dc, mono, strict=True)) and dc[-1] / dc[0] > mono[-1] / mono[0]
+
+
+def test_the_growth_plot_still_counts_ear_tests_after_sharing_its_plot():
+    from metaphors.figures import GROWTH_RUNS, GROWTH_SIZES
+
+    drawn = figure_mobjects(Figure("growth"), "lecture")
+    top = max(ear_tests(name, n) for name, _ in GROWTH_RUNS for n in GROWTH_SIZES)
+    _, y_axis = named(drawn, "figure:axis")
+    y0, y1 = y_axis.get_start()[1], y_axis.get_end()[1]
+    for name, _ in GROWTH_RUNS:
+        (line,) = [m for m in drawn if m.name == f"figure:growth:{name}"]
+        drawn_counts = [round(top * (y - y0) / (y1 - y0)) for y in _corners(line)[:, 1]]
+        assert drawn_counts == [ear_tests(name, n) for n in GROWTH_SIZES]
+
+
+@pytest.mark.parametrize("polygon", ["lecture", "counterexample", "comb", "random-2opt:25:7"])
+def test_every_constrained_delaunay_circle_holds_no_vertex_seen_from_its_triangle(polygon):
+    """The card's words, checked on every triangle: a vertex inside a triangle's circle
+    is hidden from the whole triangle by P's edges."""
+    from fractions import Fraction
+
+    import shapely
+
+    from geometry.cdt import constrained_delaunay
+    from geometry.visibility import visible_region
+    from metaphors.figure_faster import circumcircle
+
+    p = read_polygon(polygon)
+    for t in constrained_delaunay(p):
+        circle = circumcircle(p, t)
+        cx, cy = circle.centre
+        assert all((Fraction(x) - cx) ** 2 + (Fraction(y) - cy) ** 2 == circle.radius2
+                   for x, y in (p.points[k] for k in t))
+        triangle = shapely.Polygon([p.points[k] for k in t])
+        for k in circle.inside:
+            assert visible_region(p, k).intersection(triangle).area < 1e-9 * triangle.area, \
+                (polygon, t, k)
+
+
+def test_the_delaunay_figure_draws_the_circle_of_one_triangle_and_what_it_holds():
+    import numpy as np
+
+    from geometry.cdt import constrained_delaunay
+    from metaphors.figure_faster import shown_circle
+
+    p = read_polygon("lecture")
+    circle = shown_circle(p)
+    assert circle.triangle in constrained_delaunay(p)
+    # the lecture's polygon shows the point of "seen from inside": vertices in the circle
+    assert circle.inside
+    drawn = figure_mobjects(Figure("delaunay-circle"), "lecture")
+    (ring,) = named(drawn, "figure:circumcircle")
+    (chosen,) = named(drawn, "figure:delaunay")
+    corners = chosen.get_vertices()
+    centre = ring.get_center()
+    radii = [np.linalg.norm(corner - centre) for corner in corners]
+    assert max(radii) - min(radii) < 1e-6 and abs(radii[0] - ring.width / 2) < 1e-3
+    hidden = named(drawn, "figure:hidden")
+    assert len(hidden) == len(circle.inside)
+    assert all(np.linalg.norm(m.get_center() - centre) < radii[0] for m in hidden)
+    assert len(named(drawn, "figure:triangle")) == p.n - 2
+    name = "".join(p.labels[k] for k in circle.triangle)
+    caption = " ".join(line.original_text for line in named(drawn, "figure:label")[0])
+    assert name in caption and all(p.labels[k] in caption for k in circle.inside)
+
+
+def test_the_recap_draws_each_algorithm_s_own_triangulation_with_the_bound_its_card_says():
+    from pathlib import Path
+
+    from geometry.check import verify_triangulation
+    from metaphors.figure_faster import RECAPPED, recap_triangulations
+    from metaphors.lecture import Card
+    from story.registry import spoken
+    from trex.chapters import lecture_chapters
+    from trex.render_command import load_scene_class
+
+    p = read_polygon("lecture")
+    results = recap_triangulations(p)
+    assert [(name, bound) for name, bound, _ in results] == list(RECAPPED)
+    assert all(len(t) == p.n - 2 and verify_triangulation(p, t) for _, _, t in results)
+    # three different pictures: no triangulation is shown twice
+    assert len({tuple(sorted(t)) for _, _, t in results}) == len(results)
+    drawn = figure_mobjects(Figure("three-triangulations"), "lecture")
+    for name, _, triangles in results:
+        assert len(named(drawn, f"figure:triangle:{name}")) == len(triangles)
+    legend = [m.original_text for m in named(drawn, "figure:legend")]
+    assert [spoken(name, start=True) for name, _ in RECAPPED] == legend[::2]
+    assert legend[1::2] == [f"{bound}, {p.n - 2} triangles" for _, bound in RECAPPED]
+    # each bound is the one the card's words give
+    chapter = next(c for c in lecture_chapters() if c.slug == "recap")
+    cls = load_scene_class(Path(__file__).resolve().parents[1] / chapter.scene_file,
+                           chapter.scene_class)
+    card = next(s for s in cls.__new__(cls).chapter_segments()
+                if isinstance(s, Card) and s.figure == Figure("three-triangulations"))
+    for line, (_, bound) in zip(card.lines, RECAPPED, strict=True):
+        assert line.rstrip(".").endswith(bound) or f"{bound}." in line
+
+
+@pytest.mark.parametrize("kind", ["monotone-pieces", "measured", "delaunay-circle",
+                                  "three-triangulations"])
+@pytest.mark.parametrize("polygon", ["lecture", "counterexample", "triangle"])
+def test_a_faster_figure_stays_in_its_half_and_its_words_do_not_overlap(kind, polygon):
+    """Left of the card's words, below its title, above the frame's bottom; no two of its
+    texts overlapping; every text at least 2.5 % of the frame's height."""
+    from metaphors.lecture import FIGURED_WIDTH, FIGURED_WORDS_X
+    from tests.reading_rules import LEAST_LINE
+
+    drawn = figure_mobjects(Figure(kind), polygon)
+    words_left = FIGURED_WORDS_X - FIGURED_WIDTH / 2
+    for m in drawn:
+        (left, bottom, _), (right, top, _) = m.get_corner([-1, -1, 0]), m.get_corner([1, 1, 0])
+        assert left >= -7.1 and right <= words_left and bottom >= -4.0 and top <= 2.9, m.name
+    texts = [t for m in drawn for t in ([*m] if m.name == "figure:label" else [m])
+             if hasattr(t, "original_text")]
+    texts += [t for m in named(drawn, "figure:vertices") for group in m for t in group
+              if hasattr(t, "original_text")]
+    assert all(t.height >= LEAST_LINE for t in texts), [
+        (t.original_text, t.height) for t in texts if t.height < LEAST_LINE]
+    boxes = [(t.get_left()[0], t.get_bottom()[1], t.get_right()[0], t.get_top()[1], t.original_text)
+             for t in texts]
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            apart = a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1]
+            assert apart, (a[4], b[4])

@@ -53,5 +53,6 @@ class Recap(LectureScene):
             Card("Recap: the algorithms", (
                 "Divide and conquer: O(n) per diagonal, n − 3 diagonals: O(n²).",
                 "Ear clipping with ear status kept: O(n²).",
-                "Monotone pieces and a stack: O(n log n). Chazelle: O(n), not practical.")),
+                "Monotone pieces and a stack: O(n log n). Chazelle: O(n), not practical."),
+                Figure("three-triangulations")),
         )

@@ -1,0 +1,295 @@
+"""The figures of the faster algorithms' cards and of the recap (issue 22 item 7).
+
+Each is computed from the geometry, as the runs are, in a card's figure box (``box``: its
+centre, width and height), the card's words on the right:
+
+* ``monotone-pieces``: P cut into its y-monotone pieces by the sweep's diagonals (in the
+  green of inner diagonals), each piece tinted, the split and merge vertices marked in the
+  amber of what a step works with (never red: nothing here fails);
+* ``measured``: the sign tests the lecture's algorithms decide, counted in real runs on
+  random polygons (:func:`story.sign_tests.measured`), against n on logarithmic axes, and
+  dashed, the shapes of the bounds no run here measures (Tarjan and van Wyk's
+  n log log n, Chazelle's n), from the plot's corner (a bound has no constant); the
+  legend says which lines were counted and which are bounds, not measured;
+* ``delaunay-circle``: P's constrained Delaunay triangulation with one triangle's
+  circumcircle, the vertices inside it (none of them seen from inside the triangle) marked;
+* ``three-triangulations``: P as divide and conquer, faster ear clipping and monotone
+  partition triangulate it, each with its bound: three different triangulations side by
+  side (each alone is the end of a run, or the overview's figure; together they are new).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+
+from manim import LEFT, Circle, Dot, Line, Mobject, VGroup
+from manim import Polygon as MPolygon
+
+from geometry.cdt import constrained_delaunay
+from geometry.io import read_polygon
+from geometry.monotone import Sweep, classify_vertex, make_monotone
+from geometry.monotone_pieces import monotone_pieces
+from geometry.polygon import Polygon
+from geometry.results import TriangleIndices
+from geometry.triangulate import triangulate
+from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
+from metaphors.figure_plots import Area, Series, line_plot
+from metaphors.tags import tag
+from metaphors.theme import Theme
+from rendering import typeset
+from story.registry import spoken
+from story.sign_tests import SEEDS, measured
+
+Box = tuple[tuple[float, float], float, float]  # a figure's centre, width and height
+
+KINDS = ("monotone-pieces", "measured", "delaunay-circle", "three-triangulations")
+#: the measured plot: the lecture's algorithms, counted on random polygons of these sizes
+MEASURED_SIZES = (10, 20, 40, 80, 160)
+MEASURED_RUNS = ("divide-and-conquer", "ear-clipping", "monotone")
+#: the bounds drawn for comparison, never run: (their key, their name on screen, their shape)
+BOUNDS = (("tarjan-van-wyk", "O(n log log n)", lambda n: n * math.log2(math.log2(n))),
+          ("chazelle", "O(n)", float))
+#: the recap's triangulations and the time bound each card says
+RECAPPED = (("divide-and-conquer", "O(n²)"), ("ear-clipping", "O(n²)"),
+            ("monotone", "O(n log n)"))
+
+
+def figure_mobjects(kind: str, polygon_spec: str, theme: Theme, box: Box) -> list[Mobject]:
+    """The mobjects of the figure ``kind`` (one of :data:`KINDS`), back to front."""
+    if kind == "measured":
+        return _measured(theme, box)
+    polygon = read_polygon(polygon_spec)
+    drawn = {"monotone-pieces": _pieces, "delaunay-circle": _circle,
+             "three-triangulations": _three}[kind]
+    return drawn(polygon, theme, box)
+
+
+def _caption(lines: Sequence[tuple[str, str]], theme: Theme, box: Box) -> Mobject:
+    """The figure's words below its box, a line per (words, colour), as every figure's."""
+    (x, y), width, height = box
+    shown = VGroup(*[typeset.text(words, font=theme.font, size=theme.label_size + 2,
+                                  colour=colour, width=width) for words, colour in lines])
+    shown.arrange(direction=(0, -1, 0), buff=0.15)
+    shown.move_to((x, y - height / 2 - 0.8, 0), aligned_edge=(0, 1, 0))
+    shown.shift((0, shown[0].height / 2, 0))  # the first line where a one-line caption sits
+    return tag(shown, None, "figure:label")
+
+
+def _names(labels: Sequence[str]) -> str:
+    """``D``, ``D and K``, ``D, K and M``."""
+    return labels[0] if len(labels) == 1 else ", ".join(labels[:-1]) + " and " + labels[-1]
+
+
+# --- monotone pieces -----------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Partition:
+    """P cut by the monotone sweep: its diagonals, its pieces (vertex indices, counter-
+    clockwise) and the split and merge vertices the diagonals remove."""
+
+    diagonals: list[tuple[int, int]]
+    pieces: list[tuple[int, ...]]
+    split: list[int]
+    merge: list[int]
+
+
+def monotone_partition(polygon: Polygon) -> Partition:
+    """The partition the monotone run makes (:func:`geometry.monotone.make_monotone`)."""
+    diagonals = make_monotone(polygon)
+    sweep = Sweep(polygon)
+    kinds = {i: classify_vertex(sweep, polygon.vertex(i)) for i in sweep.order}
+    return Partition(diagonals, [p.ids for p in monotone_pieces(polygon, diagonals)],
+                     [i for i in sweep.order if kinds[i] == "split"],
+                     [i for i in sweep.order if kinds[i] == "merge"])
+
+
+def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
+    frame = Frame(polygon.points, *box)
+    cut = monotone_partition(polygon)
+    tints = [tag(MPolygon(*frame.many([polygon.points[k] for k in piece]),
+                          color=theme.pieces[n % len(theme.pieces)], stroke_width=0,
+                          fill_color=theme.pieces[n % len(theme.pieces)],
+                          fill_opacity=theme.done_opacity), None, "figure:piece")
+             for n, piece in enumerate(cut.pieces)]
+    lines = [tag(Line(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[w]),
+                      color=theme.result, stroke_width=theme.stroke * 1.5), "result",
+                 "figure:diagonal") for u, w in cut.diagonals]
+    kinked = [*cut.split, *cut.merge]
+    marks = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.argument),
+                 "argument", "figure:kink") for k in kinked]
+    if kinked:
+        said = [f"{kind} {_names([polygon.labels[k] for k in ks])}"
+                for kind, ks in (("split", cut.split), ("merge", cut.merge)) if ks]
+        many = len(cut.diagonals) != 1
+        words = [(", ".join(said), theme.argument),
+                 (f"{len(cut.diagonals)} diagonal{'s' * many}: "
+                  f"{len(cut.pieces)} y-monotone pieces", theme.ink)]
+    else:
+        words = [("P is y-monotone already: one piece", theme.ink)]
+    return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *tints,
+            *lines, tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices"),
+            *marks, _caption(words, theme, box)]
+
+
+# --- measured work -------------------------------------------------------------------------------
+
+
+def measured_series(theme: Theme) -> list[Series]:
+    """The plot's lines: each algorithm's counts at :data:`MEASURED_SIZES`, then the
+    bounds (dashed), their shapes only: a bound has no constant, so each starts in the
+    plot's corner, at the first size and the decade below the least count."""
+    lines = [Series(f"figure:measured:{name}", tuple(measured(name, n) for n in MEASURED_SIZES),
+                    theme.pieces[k % len(theme.pieces)]) for k, name in enumerate(MEASURED_RUNS)]
+    first = MEASURED_SIZES[0]
+    corner = 10.0 ** math.floor(math.log10(min(min(line.counts) for line in lines)))
+    for k, (key, _, shape) in enumerate(BOUNDS, start=len(lines)):
+        counts = tuple(corner * shape(n) / shape(first) for n in MEASURED_SIZES)
+        lines.append(Series(f"figure:bound:{key}", counts, theme.pieces[k % len(theme.pieces)],
+                            dashed=True))
+    return lines
+
+
+def _measured(theme: Theme, box: Box) -> list[Mobject]:
+    """The plot, its legend below it in two columns (what was counted, and the bounds), and
+    what a count is."""
+    (x, y), width, height = box
+    row, rows = 0.36, max(len(MEASURED_RUNS), len(BOUNDS)) + 1  # a header, then the lines
+    bottom = y - height / 2 + row * rows + 0.5  # the x axis, its ticks and the legend below
+    area = Area(x - width / 2 + 1.0, bottom, width - 1.15, y + height / 2 - 0.1 - bottom)
+    series = measured_series(theme)
+    drawn, _ = line_plot(MEASURED_SIZES, series, area, theme, log=True)
+    counted, bounds = series[:len(MEASURED_RUNS)], series[len(MEASURED_RUNS):]
+    columns = ((("counted in our runs", theme.ink),
+                *[(spoken(name), s.colour) for name, s in zip(MEASURED_RUNS, counted, strict=True)]),
+               (("bounds, not measured", theme.ink),
+                *[(said, s.colour) for (_, said, _), s in zip(BOUNDS, bounds, strict=True)]))
+    for column, rows_shown in enumerate(columns):
+        for k, (said, colour) in enumerate(rows_shown):
+            # a size smaller than the ticks': two columns in the box
+            text = typeset.text(said, font=theme.font, size=theme.label_size - 2,
+                                colour=colour)
+            text.move_to((x - width / 2 + column * 3.05, bottom - 0.62 - row * k, 0),
+                         aligned_edge=LEFT)
+            drawn.append(tag(text, None, "figure:legend"))
+    words = [(f"sign tests, mean of {len(SEEDS)} random polygons", theme.ink)]
+    return [*drawn, _caption(words, theme, box)]
+
+
+# --- the constrained Delaunay circle -------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Circumcircle:
+    """A triangle's circumcircle: its centre and squared radius, exactly, and the polygon's
+    vertices strictly inside it."""
+
+    triangle: TriangleIndices
+    centre: tuple[Fraction, Fraction]
+    radius2: Fraction
+    inside: list[int]
+
+    @property
+    def radius(self) -> float:
+        return math.sqrt(self.radius2)
+
+
+def circumcircle(polygon: Polygon, triangle: TriangleIndices) -> Circumcircle:
+    """The circle through the triangle's corners, and the vertices strictly inside it
+    (exact: rationals)."""
+    (ax, ay), (bx, by), (cx, cy) = ([Fraction(c) for c in polygon.points[k]] for k in triangle)
+    d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    a2, b2, c2 = ax * ax + ay * ay, bx * bx + by * by, cx * cx + cy * cy
+    centre = ((a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / d,
+              (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / d)
+    r2 = (ax - centre[0]) ** 2 + (ay - centre[1]) ** 2
+    inside = [k for k, (px, py) in enumerate(polygon.points) if k not in triangle
+              and (Fraction(px) - centre[0]) ** 2 + (Fraction(py) - centre[1]) ** 2 < r2]
+    return Circumcircle(triangle, centre, r2, inside)
+
+
+def shown_circle(polygon: Polygon) -> Circumcircle:
+    """The circle the figure draws: of the triangles whose circle stays near P (within a
+    quarter of P's size of its box), the one with the most vertices inside it — the
+    constrained triangulation's point: they are hidden from the triangle — then the
+    smallest; if no circle stays near P, the smallest."""
+    circles = [circumcircle(polygon, t) for t in constrained_delaunay(polygon)]
+    xs, ys = [p[0] for p in polygon.points], [p[1] for p in polygon.points]
+    room = max(max(xs) - min(xs), max(ys) - min(ys)) / 4
+
+    def near(c: Circumcircle) -> bool:
+        (x, y), r = (float(v) for v in c.centre), c.radius
+        return (x - r >= min(xs) - room and x + r <= max(xs) + room
+                and y - r >= min(ys) - room and y + r <= max(ys) + room)
+
+    fitting = [c for c in circles if near(c)]
+    if not fitting:
+        return min(circles, key=lambda c: c.radius2)
+    return max(fitting, key=lambda c: (len(c.inside), -c.radius2))
+
+
+def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
+    circle = shown_circle(polygon)
+    (cx, cy), r = (float(v) for v in circle.centre), circle.radius
+    frame = Frame([*polygon.points, (cx - r, cy - r), (cx + r, cy + r)], *box)
+    edges = [tag(triangle_mobject(polygon, t, frame, theme.idle, theme).set_fill(opacity=0),
+                 None, "figure:triangle") for t in constrained_delaunay(polygon)]
+    chosen = tag(triangle_mobject(polygon, circle.triangle, frame, theme.result, theme),
+                 "result", "figure:delaunay")
+    ring = tag(Circle(radius=r * frame.scale, color=theme.result, stroke_width=theme.stroke)
+               .move_to(frame.to_scene((cx, cy))), "result", "figure:circumcircle")
+    marks = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.argument),
+                 "argument", "figure:hidden") for k in circle.inside]
+    name = "".join(polygon.labels[k] for k in circle.triangle)
+    if circle.inside:
+        inside = _names([polygon.labels[k] for k in circle.inside])
+        verb = "lies" if len(circle.inside) == 1 else "lie"
+        words = [(f"{inside} {verb} in the circle of {name},", theme.argument),
+                 (f"but P's edges hide {'it' if verb == 'lies' else 'them'} from {name}",
+                  theme.ink)]
+    else:
+        words = [(f"the circle of {name} holds no other vertex", theme.ink)]
+    return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *edges,
+            chosen, ring, tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices"),
+            *marks, _caption(words, theme, box)]
+
+
+# --- the recap: three triangulations -------------------------------------------------------------
+
+
+def recap_triangulations(polygon: Polygon) -> list[tuple[str, str, list[TriangleIndices]]]:
+    """(algorithm, bound, triangles) for each of :data:`RECAPPED` (divide and conquer with
+    Gravity, as the lecture ran it)."""
+    return [(name, bound, triangulate(polygon, name).triangles) for name, bound in RECAPPED]
+
+
+def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
+    """A row per algorithm: its triangulation of P, its name and its bound beside it; the
+    rows take the box and the room of its caption (there is none: the words are beside)."""
+    (x, y), width, height = box
+    top, bottom = y + height / 2 + 0.1, y - height / 2 - 0.45
+    row = (top - bottom) / len(RECAPPED)
+    drawn: list[Mobject] = []
+    for k, (name, bound, triangles) in enumerate(recap_triangulations(polygon)):
+        at_y = top - row * (k + 0.5)
+        frame = Frame(polygon.points, (x - width / 2 + 1.1, at_y), 2.2, row - 0.15)
+        drawn.append(tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"))
+        drawn += [tag(triangle_mobject(polygon, t, frame, theme.pieces[j % len(theme.pieces)],
+                                       theme), "result", f"figure:triangle:{name}")
+                  for j, t in enumerate(triangles)]
+        count = f"{len(triangles)} triangle{'s' * (len(triangles) > 1)}"
+        for j, (words, colour, size) in enumerate((
+                (spoken(name, start=True), theme.ink, theme.label_size + 2),
+                (f"{bound}, {count}", theme.idle, theme.label_size))):
+            text = typeset.text(words, font=theme.font, size=size, colour=colour)
+            text.move_to((x - width / 2 + 2.5, at_y + 0.22 - 0.44 * j, 0), aligned_edge=LEFT)
+            drawn.append(tag(text, None, "figure:legend"))
+    return drawn
+
+
+__all__ = ["BOUNDS", "KINDS", "MEASURED_RUNS", "MEASURED_SIZES", "RECAPPED", "Circumcircle",
+           "Partition", "circumcircle", "figure_mobjects", "measured_series",
+           "monotone_partition", "recap_triangulations", "shown_circle"]

@@ -1,0 +1,103 @@
+"""A line plot of counts against n, drawn in a card's figure box: one for every plot.
+
+The cards plot what runs measured (:mod:`metaphors.figures`' ear tests, the sign tests of
+:mod:`metaphors.figure_faster`), never a bound passed off as a measurement: a series
+``dashed`` is a bound, and its legend says so. Axes are linear from 0, or logarithmic
+(``log``) from the first size and the decade below the least count; the plot gives its
+mobjects and the point on screen of any ``(n, count)``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from manim import DOWN, LEFT, DashedVMobject, Line, ManimColor, Mobject, VMobject
+
+from metaphors.tags import tag
+from metaphors.theme import Theme
+from rendering import typeset
+
+Point3 = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Series:
+    """One line of a plot: its ``counts`` at the plot's sizes, its mobject's ``name``, its
+    colour; ``dashed``: a bound drawn for comparison, not a measurement."""
+
+    name: str
+    counts: tuple[float, ...]
+    colour: str
+    dashed: bool = False
+
+
+@dataclass(frozen=True)
+class Area:
+    """Where the axes go: their corner (``left``, ``bottom``) and their lengths."""
+
+    left: float
+    bottom: float
+    width: float
+    height: float
+
+
+def _tick(words: str, theme: Theme) -> Mobject:
+    return typeset.text(words, font=theme.font, size=theme.label_size, colour=theme.idle)
+
+
+def spoken_count(count: float) -> str:
+    """A count as a tick says it: thousands apart by a space (``10 000``).
+
+    >>> spoken_count(100), spoken_count(10000)
+    ('100', '10 000')
+    """
+    return f"{round(count):,}".replace(",", " ")
+
+
+def line_plot(sizes: Sequence[int], series: Sequence[Series], area: Area, theme: Theme, *,
+              log: bool = False) -> tuple[list[Mobject], Callable[[float, float], Point3]]:
+    """The axes, their ticks and one line per series (back to front), and ``at(n, count)``,
+    the point on screen of a count. Linear: the first and last size ticked, and the top
+    count. Logarithmic: every size ticked, and every power of ten above the least count's
+    decade up to the top count."""
+    top = max(max(s.counts) for s in series)
+    a = area
+    if log:
+        low = 10.0 ** math.floor(math.log10(min(min(s.counts) for s in series)))
+        first, span_n, span_c = sizes[0], math.log(sizes[-1] / sizes[0]), math.log(top / low)
+
+        def at(n: float, count: float) -> Point3:
+            return (a.left + a.width * math.log(n / first) / span_n,
+                    a.bottom + a.height * math.log(count / low) / span_c, 0.0)
+
+        corner, ticked = (first, low), list(sizes)
+        # the powers of ten above the corner (the corner's would sit on the first size's tick)
+        marks = [10.0 ** k for k in range(round(math.log10(low)) + 1,
+                                          math.floor(math.log10(top)) + 1)]
+    else:
+        def at(n: float, count: float) -> Point3:
+            return (a.left + a.width * n / sizes[-1], a.bottom + a.height * count / top, 0.0)
+
+        corner, ticked, marks = (0, 0), [sizes[0], sizes[-1]], [top]
+    axes = [tag(Line(at(*corner), at(sizes[-1], corner[1]), color=theme.idle,
+                     stroke_width=theme.thin_stroke), None, "figure:axis"),
+            tag(Line(at(*corner), at(corner[0], top), color=theme.idle,
+                     stroke_width=theme.thin_stroke), None, "figure:axis")]
+    words = [tag(_tick(str(n), theme).next_to(at(n, corner[1]), direction=DOWN, buff=0.12),
+                 None, "figure:tick") for n in ticked]
+    words += [tag(_tick(spoken_count(c), theme).next_to(at(corner[0], c), direction=LEFT,
+                                                        buff=0.12), None, "figure:tick")
+              for c in marks]
+    lines: list[Mobject] = []
+    for s in series:
+        line = VMobject(color=s.colour, stroke_width=theme.stroke).set_points_as_corners(
+            [at(n, c) for n, c in zip(sizes, s.counts, strict=True)])
+        if s.dashed:
+            line = DashedVMobject(line, num_dashes=24, color=ManimColor(s.colour))
+        lines.append(tag(line, None, s.name))
+    return [*axes, *lines, *words], at
+
+
+__all__ = ["Area", "Series", "line_plot", "spoken_count"]
