@@ -1,13 +1,14 @@
-"""The lecture's analysis: a heuristic's decisive moment replayed slowly on one polygon.
+"""The lecture's analysis: a heuristic's decisive moment, in one continuous pass on one polygon.
 
-A wrong heuristic (water, clock, sweep): its tool moves slowly to the vertex it picks — the
-circle grows, the hand turns, the line sweeps — in its colour inside the polygon and red where
-it is outside the polygon but inside T; as it reaches the wrong vertex the red part lights,
-then the claim's crossed edge flashes and is named. Then its correction (the registry's) on
-the same polygon: its tool moves to its own pick and the region its argument is about
-(:meth:`story.analysis.Motion.witness`) is shaded, inside the polygon, under one caption that
-says why. A correct heuristic is shown the second way only; gravity's band sweeps a region
-that is always inside the polygon.
+A wrong heuristic (water, clock, sweep), once, nothing replayed: the polygon, T and its
+candidates; its tool moves slowly to the vertex it picks — the circle grows, the hand turns,
+the line sweeps — what it sweeps in the one swept colour whatever the metaphor; it freezes at
+the pick, the decisive moment; the swept part outside the polygon (but inside T) turns red,
+then the claim's crossed edge flashes and is named (the ✗, said once). Then its correction
+(the registry's) on the same polygon: its tool moves to its own pick and the region its
+argument is about (:meth:`story.analysis.Motion.witness`) is shaded, inside the polygon,
+under one caption that says why. A correct heuristic is shown the second way only; gravity's
+band sweeps a region that is always inside the polygon.
 
 Everything is read from the runs' beats (:func:`metaphors.catalog.beats`: the metaphors' shape
 states and the exactly judged verdict); the shapes are clipped in :mod:`story.analysis` and
@@ -41,18 +42,20 @@ from manim import (
 from metaphors import catalog
 from metaphors.drawing import crossed_edge
 from metaphors.gravity import Drop, GravityTurn, Slide, Snag
-from metaphors.stage import BOX, Stage, beside, path, place_name, region
+from metaphors.stage import BOX, Canvas, Stage, beside, path, place_name, region
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
-from story.analysis import Band, Motion, motion, split
-from story.beats import Beat, Claim, ShowPolygon, ShowTriangle, Verdict
+from story.analysis import Band, Motion, inside, motion, outside, split
+from story.beats import Beat, Candidates, Claim, ShowPolygon, ShowTriangle, Verdict
 from story.registry import entry, spoken
 from story.spec import RunSpec
 from story.states import Moving, Tool
 
 #: seconds the tool takes to reach its pick: slowly, the moment the argument is about
 SLOW = 5.0
+#: seconds the picture holds still at the decisive moment (the pick, the red, the witness)
+FREEZE = 1.5
 #: the metaphor's name on screen, by the registry's metaphor module
 NAMES = {"water": "Water", "clock": "Clock", "sweep": "Sweep", "gravity": "Gravity"}
 
@@ -60,11 +63,15 @@ NAMES = {"water": "Water", "clock": "Clock", "sweep": "Sweep", "gravity": "Gravi
 @dataclass(frozen=True)
 class Analysis:
     """A lecture segment: ``heuristic``'s decisive moment on ``polygon``, then (for a wrong
-    one) its correction's on the same polygon.
+    one) its correction's on the same polygon, in one pass.
 
-    ``fails`` is said as the tool reaches the wrong vertex, ``holds`` as the correction's
-    region is shaded (the cue says why); both may name ``{pick}`` (the vertex the tool reached), ``{claim}``
-    (the claimed diagonal) and ``fails`` ``{edge}`` (the edge the claim crosses).
+    ``intro`` (if any) is said as the polygon and T appear and the candidates light,
+    ``fails`` as the swept part outside the polygon turns red, ``holds`` as the correction's
+    region is shaded (the cue says why); they may name ``{n}`` (the polygon's vertices),
+    ``{candidates}`` (T's), ``{pick}``
+    (the vertex the tool reached), ``{claim}`` (the claimed diagonal) and ``{edge}`` (the
+    edge the claim crosses). ``slow``: the seconds each tool takes to its pick; ``freeze``:
+    the seconds the picture holds at the decisive moments.
     """
 
     heuristic: str
@@ -73,6 +80,8 @@ class Analysis:
     holds: str = ""
     title: str | None = None  # default: "Water: why Scaling fails" and the like
     slow: float = SLOW
+    intro: str = ""
+    freeze: float = FREEZE
 
 
 @dataclass(frozen=True)
@@ -90,6 +99,7 @@ class Moment:
     captions: dict[str, str]  # gravity's steps' captions by action (turn, drop, slide, snag)
     claim: Claim
     verdict: Verdict
+    candidates: tuple[str, ...] = ()  # the vertices in T, as the run names them
 
     # what fails and holds read of a run with a motion (_check saw it has one, or a band)
     @property
@@ -111,7 +121,8 @@ class Moment:
     def words(self, template: str) -> str:
         """``template`` with its names filled in (see :class:`Analysis`)."""
         edge = "–".join(self.verdict.edge) if self.verdict.edge else ""
-        return template.format(pick=self.pick, claim="".join(self.claim.labels), edge=edge)
+        return template.format(pick=self.pick, claim="".join(self.claim.labels), edge=edge,
+                               candidates=", ".join(self.candidates), n=len(self.points))
 
 
 def moment(heuristic: str, polygon: str) -> Moment:
@@ -128,8 +139,9 @@ def moment_of(heuristic: str, beats: Sequence[Beat]) -> Moment:
     step = next((b for b in beats if _target(b) is not None), None)
     found = motion(cast(Tool, _target(step)), t.points) if step and t else None  # step: a target's
     band, captions = _band(beats)
+    lit = next((b for b in beats if isinstance(b, Candidates)), None)
     return Moment(heuristic, shown.points, shown.labels, t.points if t else None, step, found,
-                  band, captions, claim, verdict)
+                  band, captions, claim, verdict, tuple(lit.candidates) if lit else ())
 
 
 B = TypeVar("B", bound=Beat)
@@ -173,23 +185,22 @@ def _kind(kinds: dict[str, Beat], kind: type[B]) -> B | None:
     return cast("B | None", kinds.get(kind.action))
 
 
-def tool_drawing(stage: Stage, moving: Motion, t: float, colour: str) -> VGroup:
-    """The tool at time ``t`` and what it swept: in its colour inside the polygon, red
-    outside it but inside T (the rising water: in its colour, all of it — what it covers is
-    not what the argument is about)."""
-    theme, points, corners = stage.theme, stage.polygon.points, moving.triangle
+def tool_drawing(stage: Canvas, moving: Motion, t: float, colour: str) -> VGroup:
+    """The tool at time ``t`` and what it has swept inside T: the region in the one swept
+    colour whatever the metaphor, the tool in its own (thick inside T, faint beyond). No red
+    yet: the part outside the polygon turns red when the tool has stopped (:func:`fails`).
+    The rising water: all of it in the water's colour — what it covers is not what the
+    argument is about, what is still dry is."""
+    theme, corners = stage.theme, moving.triangle
     swept, tool = moving.swept(t), moving.tool(t)
     if moving.rising:
         return VGroup(region(stage, swept, colour, 0.35, "swept"),
                       path(stage, tool, colour, theme.stroke * 1.3, "tool"))
-    area, line = split(swept, points, corners), split(tool, points, corners)
     return VGroup(
-        region(stage, area["inside"], colour, 0.3, "swept:inside", "argument"),
-        region(stage, area["astray"], theme.rejected, 0.45, "swept:astray", "rejected"),
-        path(stage, line["beyond"], colour, theme.thin_stroke, "tool:beyond", None, 0.45),
-        path(stage, line["inside"], colour, theme.stroke * 1.3, "tool:inside", "argument"),
-        path(stage, line["astray"], theme.rejected, theme.stroke * 1.6, "tool:astray",
-             "rejected"),
+        region(stage, swept, theme.swept, 0.3, "swept", "argument"),
+        path(stage, outside(tool, corners), colour, theme.thin_stroke, "tool:beyond", None,
+             0.45),
+        path(stage, inside(tool, corners), colour, theme.stroke * 1.3, "tool", "argument"),
     )
 
 
@@ -210,32 +221,47 @@ def tool_colour(theme: Theme, heuristic: str) -> str:
         metaphor or "", theme.band)
 
 
+def frame(stage: Stage, seen: Moment, analysis: Analysis) -> None:
+    """The pass opens on the frame: the polygon, T and its candidates lit, said once."""
+    theme = stage.theme
+    lit = [Indicate(stage.markers[c], color=theme.argument) for c in seen.candidates]
+    stage.say(seen.words(analysis.intro),
+              ([*stage.appear(), *stage.key(theme.swept, "swept", "swept")], 1.5),
+              (lit, 0.8), ([], analysis.freeze / 2))  # a moment to look at the polygon
+
+
 def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
-    """The wrong heuristic's tool reaches its pick from outside the polygon; the claim's
-    crossed edge flashes and is named. Returns what the correction clears away."""
+    """The wrong heuristic's tool runs to its pick and freezes there; the part it swept outside
+    the polygon turns red; the claim's crossed edge flashes and is named. Returns what the
+    correction clears away."""
     theme, m = stage.theme, wrong.moved
     colour = tool_colour(theme, wrong.heuristic)
     motion_anims, drawing = moving(stage, lambda t: tool_drawing(stage, m, t, colour),
                                    analysis.slow)
-    stage.say(wrong.moving_step.caption,
-              ([*stage.appear(), *stage.key(colour, "inside P", "inside"),
-                *stage.key(theme.rejected, "outside P, in T", "astray")], 1.5),
-              ([FadeIn(drawing)], 0.3), (motion_anims, analysis.slow))
+    opening = [] if analysis.intro else [*stage.appear(),
+                                         *stage.key(theme.swept, "swept", "swept")]
+    stage.say(wrong.moving_step.caption, ([*opening, FadeIn(drawing)], 1.5 if opening else 0.3),
+              (motion_anims, analysis.slow),
+              ([Indicate(stage.markers[wrong.pick], color=theme.argument)], 0.8),
+              ([], analysis.freeze))  # frozen at the pick: the moment the argument is about
     stray = split(m.tool(1.0), stage.polygon.points, m.triangle)["astray"]
     outside_tool = path(stage, stray, theme.rejected, theme.stroke * 2.4, "analysis:astray",
                         "rejected").set_z_index(2)
-    outside_area = region(stage, m.astray(stage.polygon.points), theme.rejected, 0.55,
+    outside_area = region(stage, m.astray(stage.polygon.points), theme.rejected, 0.6,
                           "analysis:outside", "rejected").set_z_index(2)
     at = stage.vertex(wrong.pick)
     stage.say(wrong.words(analysis.fails),
               ([Create(outside_tool), FadeIn(outside_area),
+                *stage.key(theme.rejected, "outside P, in T", "astray"),
                 Flash(at, color=theme.rejected, flash_radius=0.45),
-                Indicate(stage.markers[wrong.pick], color=theme.rejected)], 1.6))
-    return [drawing, outside_tool, outside_area, *crossing(stage, wrong)]
+                Indicate(stage.markers[wrong.pick], color=theme.rejected)], 1.6),
+              ([], analysis.freeze))
+    return [drawing, outside_tool, outside_area, *crossing(stage, wrong, analysis.freeze)]
 
 
-def crossing(stage: Stage, wrong: Moment) -> list:
-    """The claim in red, the edge it crosses flashing and named, a flash where it crosses."""
+def crossing(stage: Stage, wrong: Moment, hold: float = 0.0) -> list:
+    """The claim in red, the edge it crosses flashing and named, a flash where it crosses;
+    then ``hold`` seconds still."""
     theme, verdict = stage.theme, wrong.verdict
     u, v = wrong.claim.labels
     claim = tag(Line(stage.vertex(u), stage.vertex(v), color=theme.rejected,
@@ -260,7 +286,7 @@ def crossing(stage: Stage, wrong: Moment) -> list:
         spot = tag(Dot(at, radius=0.09, color=theme.rejected), "rejected", "analysis:crossing")
         shown.append(spot.set_z_index(4))
         anims += [FadeIn(spot), Flash(at, color=theme.rejected, flash_radius=0.5)]
-    stage.say(verdict.caption, (anims, 1.2), *flashes)
+    stage.say(verdict.caption, (anims, 1.2), *flashes, ([], hold))
     return shown
 
 
@@ -295,7 +321,8 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
     beside(stage, tick, claim, witness)
     stage.say(right.words(analysis.holds),
               ([FadeIn(shaded), Create(claim), FadeIn(tick),
-                *stage.key(theme.result, f"{label}: in P", "witness")], 1.5))
+                *stage.key(theme.result, f"{label}: in P", "witness")], 1.5),
+              ([], analysis.freeze))
 
 
 def _band_moves(stage: Stage, right: Moment, analysis: Analysis, first: list) -> None:
@@ -362,11 +389,14 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
     if known.correction is None:
         raise ValueError(f"{analysis.heuristic} is wrong and has no correction to analyse")
     stage = _stage(scene, first, analysis.title or f"{name}: why {said} fails", theme)
+    if analysis.intro:
+        frame(stage, first, analysis)
     cleared = fails(stage, first, analysis)
     right = moment(known.correction, analysis.polygon)
+    # the correction's first appearance in the chapter: named with its picture
     holds(stage, right, analysis, [
-        *[FadeOut(m) for m in cleared],
-        *stage.retitle(f"{name}: the correction, {spoken(known.correction)}")])
+        *[FadeOut(m) for m in cleared], *stage.forget_key("astray"),
+        *stage.retitle(f"{name}: the correction, {spoken(known.correction, first=True)}")])
 
 
 def _stage(scene, seen: Moment, title: str, theme: Theme) -> Stage:

@@ -41,6 +41,7 @@ from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
 from metaphors import figure_faster, method_figures
 from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject, vertex_markers
+from metaphors.figure_metaphors import metaphor_parts
 from metaphors.figure_plots import Area, Series, line_plot
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
@@ -50,7 +51,7 @@ from story.runs import run_logged
 #: where a figure is drawn: the left half of the screen, below the card's title
 FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT = (-3.5, -0.1), 6.2, 4.6
 BOX = (FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
-KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims",
+KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims", "metaphor",
          *method_figures.KINDS, *figure_faster.KINDS)
 #: the growth plot: each algorithm's ear tests, counted in its log, on random polygons
 GROWTH_SIZES = (10, 20, 30, 40, 50, 60)
@@ -62,7 +63,8 @@ GROWTH_RUNS = (("ear-clipping-naive", "naive"), ("ear-clipping", "ear status kep
 class Figure:
     """What a card draws: ``kind`` (one of :data:`KINDS`) on ``polygon`` (None: the
     lecture's); ``heuristic`` names the rule that finds a ``diagonal``, ``heuristics`` the
-    rules whose ``claims`` are drawn (green when inner, red with the edge they cross)."""
+    rules whose ``claims`` are drawn (green when inner, red with the edge they cross), and a
+    ``metaphor`` figure the wrong heuristic whose tool is drawn at its pick."""
 
     kind: str
     polygon: str | None = None
@@ -86,14 +88,20 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
                                              BOX)
     polygon = read_polygon(figure.polygon or polygon_spec)
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
+    shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
+    vertices = tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
+    if figure.kind == "metaphor":  # its run is read from the polygon's spec, not the polygon
+        under, over, said = metaphor_parts(figure.heuristic, figure.polygon or polygon_spec,
+                                           frame, theme) if polygon.n >= 4 else (
+            [], [], "a triangle: no diagonal to find")
+        label = tag(_label(said, theme, theme.ink), None, "figure:label")
+        return [shape, *under, label, vertices, *over]
     drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
              "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
-    shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
     parts = drawn(figure, polygon, frame, theme)
     # marks on a vertex go over its dot; fills go under the dots and labels
     marks = [m for m in parts if m.name == "figure:candidate"]
-    return [shape, *[m for m in parts if m not in marks],
-            tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices"), *marks]
+    return [shape, *[m for m in parts if m not in marks], vertices, *marks]
 
 
 def _label(words: str, theme: Theme, colour: str) -> Mobject:

@@ -11,6 +11,7 @@ reads.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Protocol
 
 import numpy as np
 import shapely
@@ -116,6 +117,13 @@ class Stage:
         self.legend.append(key)
         return [FadeIn(key)]
 
+    def forget_key(self, name: str) -> list:
+        """Take the legend entry ``name`` off (the entries below it do not move up: it is
+        the last one shown when it is taken off)."""
+        gone = [k for k in self.legend if k.name == f"legend:{name}"]
+        self.legend = [k for k in self.legend if k not in gone]
+        return [FadeOut(m) for m in gone]
+
     def forget_legend(self) -> list:
         gone, self.legend = self.legend, []
         return [FadeOut(m) for m in gone]
@@ -135,7 +143,18 @@ def _fitted(points, angle: float) -> Frame:
 # --- shapes as mobjects ---------------------------------------------------------------------------
 
 
-def region(stage: Stage, geometry, colour: str, opacity: float, name: str,
+class Canvas(Protocol):
+    """Where shapes are drawn: a frame (polygon to scene coordinates) and a theme — a
+    :class:`Stage`, or a card's figure (:mod:`metaphors.figure_metaphors`)."""
+
+    @property
+    def frame(self) -> Frame: ...
+
+    @property
+    def theme(self) -> Theme: ...
+
+
+def region(stage: Canvas, geometry, colour: str, opacity: float, name: str,
            role: str | None = None) -> VGroup:
     """The polygons of a shapely geometry (polygon coordinates), filled."""
     group = VGroup(*[
@@ -146,7 +165,7 @@ def region(stage: Stage, geometry, colour: str, opacity: float, name: str,
     return tag(_never_empty(stage, group), role, name)
 
 
-def path(stage: Stage, geometry, colour: str, width: float, name: str,
+def path(stage: Canvas, geometry, colour: str, width: float, name: str,
          role: str | None = None, opacity: float = 1.0) -> VGroup:
     """The lines of a shapely geometry (polygon coordinates), stroked."""
     group = VGroup()
@@ -158,7 +177,7 @@ def path(stage: Stage, geometry, colour: str, width: float, name: str,
     return tag(_never_empty(stage, group), role, name)
 
 
-def _never_empty(stage: Stage, group: VGroup) -> VGroup:
+def _never_empty(stage: Canvas, group: VGroup) -> VGroup:
     """At least one (invisible) piece: ``become`` needs something to become."""
     if not group.submobjects:
         at = stage.frame.center

@@ -24,6 +24,8 @@ ball, band    orange,     gravity's ball and its rubber band (Gravity)
               rose
 hand, sweep   purple      the clock hand (Rotation) and the sweeping line
                           (Translation, the monotone sweep)
+swept         pale blue   what water, clock hand or sweep line swept on its way to its
+                          pick (one colour for all three; red where it is outside P)
 dial          grey        the clock face
 fruit, rind   orange,     the fruit sliced (ear clipping), on its plate
               olive
@@ -71,6 +73,9 @@ class Theme:
     active_opacity: float = 0.5  # the piece divide and conquer works on
     hand: str = "#c792ea"  # the clock hand (drawn solid inside the polygon, dashed outside)
     sweep: str = "#c792ea"  # the sweep line (likewise)
+    #: what a heuristic's tool (water, clock hand, sweep line) has swept on its way to its
+    #: pick: one colour for all three, so that the same region means the same colour
+    swept: str = "#8fc1ff"
     dial: str = "#8a93a3"  # the clock face and its hour marks before the hand passes them
     fruit: str = "#f4a259"  # the fruit's flesh (ear clipping)
     rind: str = "#7a9e3d"  # its rind

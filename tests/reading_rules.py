@@ -174,6 +174,10 @@ LEAST_OUTSIDE = 0.32
 LEAST_CLEARANCE = 0.24
 #: the colour of what is rejected (metaphors.theme.THEME.rejected), as the graph writes it
 _REJECTED = "#EF4B4B"
+#: the names of the claims drawn (a run's, an analysis's, an exercise's answer) and of the
+#: polygons they are drawn on
+_CLAIMS = ("claim", "analysis:claim", "answer:diagonal")
+_POLYGONS = ("polygon", "analysis:polygon")
 
 
 def _corners(node: dict) -> list[tuple[float, float]]:
@@ -198,10 +202,10 @@ def hidden_failures(data: dict) -> list[str]:
 
     nodes = list(graph_nodes(data))
     polygons = [_corners(n) for n in nodes if n.get("points") and (
-        n.get("name") == "polygon" or (n.get("name"), n["type"]) == ("exercise", "Polygon"))]
+        n.get("name") in _POLYGONS or (n.get("name"), n["type"]) == ("exercise", "Polygon"))]
     found = {}
     for node in nodes:
-        if node.get("name") not in ("claim", "answer:diagonal") \
+        if node.get("name") not in _CLAIMS \
                 or (node.get("stroke") or "").upper() != _REJECTED:
             continue
         a, b = (tuple(node["points"][k][:2]) for k in (0, -1))
@@ -330,3 +334,66 @@ def text_only_seconds(data: dict) -> tuple[float, float]:
         total += play["run_time"]
         text_only += play["run_time"] if showing else 0.0
     return text_only, total
+
+
+# --- issue 22 item 4: one picture per idea ----------------------------------------------------
+
+#: the polygons a run or an analysis draws its steps on (a card's figure is no run)
+_RUN_POLYGONS = ("polygon", "analysis:polygon")
+
+
+def _shape(node: dict) -> tuple[tuple[float, float], ...]:
+    """A drawn polygon's shape wherever and however large it is drawn: its corners over the
+    size of its box, rounded (a run and an analysis draw one polygon in different boxes)."""
+    corners = _corners(node)
+    x0, y0 = min(x for x, _ in corners), min(y for _, y in corners)
+    size = max(max(x for x, _ in corners) - x0, max(y for _, y in corners) - y0, 1e-9)
+    return tuple((round((x - x0) / size, 2), round((y - y0) / size, 2)) for x, y in corners)
+
+
+def shown_steps(data: dict) -> list[tuple[str, tuple | None, str]]:
+    """Each caption of a graph as ``(section, shape, caption)``: the card whose title opened
+    the section it is said in (a chapter's heuristic is its card and what follows, up to the
+    next card), and the shape of the run's polygon it is said over — the last one drawn by
+    the end of its step (a step's polygon may be drawn just after its caption)."""
+    steps: list[tuple[str, tuple | None, str]] = []
+    section, shape, open_step = "", None, None
+    for play in data["plays"]:
+        tops = [(a["type"], a.get("mobject", {})) for a in play["animations"]]
+        if play.get("subcaption") and open_step is not None:  # the step before ends
+            steps.append((open_step[0], shape, open_step[1]))
+        if any(kind in INCOMING and node.get("name") == "card:title" for kind, node in tops):
+            section, shape = play.get("subcaption") or "", None
+        if play.get("subcaption"):
+            open_step = (section, play["subcaption"])
+        for kind, node in tops:
+            if kind in INCOMING and node.get("name") in _RUN_POLYGONS and node.get("points"):
+                shape = _shape(node)
+    if open_step is not None:
+        steps.append((open_step[0], shape, open_step[1]))
+    return steps
+
+
+def replayed_beats(data: dict) -> list[str]:
+    """Issue 22 item 4: the runs' beats shown twice, as ``"'caption' (section)"``. A run is a
+    polygon drawn in a card's section; its beats are the captions said over it
+    (:func:`shown_steps`): the same caption over a polygon of the same shape in one section
+    is its beat replayed — the run, or an analysis that plays it again."""
+    seen: set[tuple[str, tuple | None, str]] = set()
+    found = []
+    for step in shown_steps(data):
+        if step[1] is not None and step in seen:
+            found.append(f"{step[2]!r} ({step[0]})")
+        seen.add(step)
+    return found
+
+
+def repeated_verdicts(data: dict) -> list[str]:
+    """Issue 22 item 4: the ✗ captions said more than once in a section (a heuristic's card
+    and what follows), as ``"2 × '✗ BD …' (section)"``."""
+    counts: dict[tuple[str, str], int] = {}
+    for section, _, caption in shown_steps(data):
+        if caption.startswith("✗"):
+            counts[(section, caption)] = counts.get((section, caption), 0) + 1
+    return [f"{n} × {caption!r} ({section})" for (section, caption), n in counts.items()
+            if n > 1]

@@ -26,7 +26,7 @@ from story.analysis import lies_inside, outside, shape
 from story.reading import reading_time
 from story.registry import entry, spoken
 from story.runs import working_example
-from tests.reading_rules import animation_nodes
+from tests.reading_rules import animation_nodes, mobject_nodes
 from tests.strategies import generated_polygons
 from trex.render_command import load_scene_class
 from trex.scene_graph import build
@@ -259,3 +259,60 @@ def test_every_analysis_caption_is_on_screen_long_enough_to_read(chapter, reques
         assert len(held) >= 3
         for caption, seconds in held:  # as the .srt writes it: whole milliseconds
             assert int(seconds * 1000) / 1000 >= reading_time(caption), (caption, seconds)
+
+
+# --- issue 22 item 4: one pass, the red at the freeze, one swept colour -----------------------
+
+
+def _fills(node) -> set[str]:
+    return {n["fill"].upper() for n in mobject_nodes(node)
+            if n.get("fill") and (n.get("fill_opacity") or 0) > 0}
+
+
+def test_the_swept_region_is_one_colour_in_every_metaphor():
+    """Issue 22 item 4: what water, hand and line sweep is one colour (the theme's ``swept``),
+    red nowhere while the tool moves (the red comes when it has stopped)."""
+    from metaphors.analysis import tool_colour, tool_drawing
+    from metaphors.drawing import Frame
+    from metaphors.figure_metaphors import Sheet
+    from metaphors.theme import THEME
+    from trex.scene_graph import mobject_graph
+
+    for wrong in WRONG:
+        seen = moment(wrong, "counterexample")
+        sheet = Sheet(Frame(seen.points, (0, 0), 8, 6), THEME)
+        for t in (0.5, 1.0):
+            drawn = mobject_graph(tool_drawing(sheet, seen.motion, t, tool_colour(THEME, wrong)))
+            assert _fills(drawn) == {THEME.swept.upper()}, (wrong, t)
+            strokes = {n["stroke"].upper() for n in mobject_nodes(drawn)
+                       if (n.get("stroke_opacity") or 0) > 0}
+            assert THEME.rejected.upper() not in strokes, (wrong, t)
+
+
+def _played(segment, kind: str, name: str) -> int:
+    return next(k for k, p in enumerate(segment) for a in p.graph["animations"]
+                if a["type"] == kind and a["mobject"].get("name") == name)
+
+
+@pytest.mark.parametrize("k", range(3), ids=WRONG)
+def test_the_tool_freezes_at_its_pick_before_the_red(heuristics, k):
+    """The tool runs once, stops at its pick and the picture holds still; only then does the
+    part outside P turn red. Its legend keeps one colour for what is swept in all three."""
+    from metaphors.theme import THEME
+
+    cls, plays = heuristics
+    analysis = _families(cls)[k]
+    segment = _segments(plays, TITLES["heuristics"])[k]
+    ran = _played(segment, "UpdateFromAlphaFunc", "analysis:tool")
+    red = _played(segment, "FadeIn", "analysis:outside")
+    assert segment[ran].run_time == analysis.slow and ran < red
+    held = [p for p in segment[ran + 1:red] if p.graph["animations"][0]["type"] == "Wait"]
+    assert sum(p.run_time for p in held) >= analysis.freeze
+    assert all(p.subcaption is None for p in segment[ran:red])  # frozen under its caption
+    key = _named(segment, "legend:swept")[0]  # as it comes in (the rising water takes it off)
+    swatches = [n for n in mobject_nodes(key) if n["type"] == "Square"]
+    assert [n["fill"].upper() for n in swatches] == [THEME.swept.upper()]
+    # the tool runs once: the wrong one, then its correction, each a single motion
+    motions = [p for p in segment for a in p.graph["animations"]
+               if a["type"] == "UpdateFromAlphaFunc"]
+    assert len(motions) == 2

@@ -28,7 +28,8 @@ def label(mobjects) -> str:
 @pytest.mark.parametrize("polygon", ["lecture", "counterexample", "triangle"])
 def test_every_kind_draws_on_any_polygon(kind, polygon):
     """A polygon handed to the lecture may be anything valid, a triangle too."""
-    drawn = figure_mobjects(Figure(kind, heuristics=("scaling",)), polygon)
+    heuristic = "rotation" if kind == "metaphor" else "gravity"  # a metaphor needs a tool
+    drawn = figure_mobjects(Figure(kind, heuristic=heuristic, heuristics=("scaling",)), polygon)
     assert drawn and all(m.name.startswith("figure:") for m in drawn)
 
 
@@ -76,6 +77,48 @@ def test_the_growth_plot_counts_ear_tests_in_the_logs():
 def test_an_unknown_kind_is_refused():
     with pytest.raises(ValueError, match="a figure is one of"):
         Figure("pie")
+
+
+@pytest.mark.parametrize(("heuristic", "colour", "said"), [
+    ("scaling", "water", "the water from B wets D first"),
+    ("rotation", "hand", "the hand at B passes D first"),
+    ("translation", "sweep", "the line from B touches D first"),
+])
+def test_a_metaphor_is_drawn_stopped_at_its_pick_without_the_red(heuristic, colour, said):
+    """Issue 22 item 4: the card of a wrong heuristic draws its tool at B on the counterexample,
+    stopped at the vertex it picks, what it swept in the one swept colour; that it leaves P
+    (the red) is for the pass that follows, not the card."""
+    from manim import ManimColor
+
+    from metaphors.theme import THEME
+
+    p = read_polygon("counterexample")
+    drawn = figure_mobjects(Figure("metaphor", "counterexample", heuristic=heuristic), "x")
+    assert label(drawn) == said
+    (tool,) = named(drawn, "figure:tool")
+    parts = {m.name: m for m in tool.submobjects}
+    assert parts["swept"].submobjects  # a region, not the empty placeholder
+    assert parts["swept"][0].get_fill_color() == ManimColor(THEME.swept)
+    assert parts["tool"][0].get_stroke_color() == ManimColor(getattr(THEME, colour))
+    colours = {m.get_fill_color().to_hex().lower() for m in tool.family_members_with_points()}
+    assert THEME.rejected not in colours
+    # the pick is marked over its vertex, where the run says the tool stops
+    (pick,) = named(drawn, "figure:candidate")
+    d = figure_frame(p).to_scene(p.points[p.labels.index("D")])
+    assert abs(pick.get_center() - d).max() < 1e-6
+    assert drawn[-1] is pick  # over the vertices' dots
+
+
+def figure_frame(p):
+    from metaphors.drawing import Frame
+    from metaphors.figures import FIGURE_CENTER, FIGURE_HEIGHT, FIGURE_WIDTH
+
+    return Frame(p.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
+
+
+def test_a_metaphor_needs_a_tool():
+    with pytest.raises(ValueError, match="gravity: no water, clock hand or sweep line"):
+        figure_mobjects(Figure("metaphor", "counterexample", heuristic="gravity"), "x")
 
 
 # --- the methods' figures (metaphors/method_figures.py) ---------------------------------------

@@ -31,6 +31,8 @@ from tests.reading_rules import (
     broken_counts,
     crossfaded_subtitles,
     hidden_failures,
+    repeated_verdicts,
+    replayed_beats,
     rushed_questions,
     small_texts,
     unreadable_cues,
@@ -610,3 +612,30 @@ def test_the_overview_poses_the_problem_with_a_black_box():
     counters = [n["text"] for n in graph_nodes(data) if n.get("name") == "counter"]
     assert counters and counters[-1] == "n − 2 = 13 − 2\n= 11 triangles"
     assert sum(p["run_time"] for p in data["plays"]) >= 75
+
+
+def test_the_heuristics_chapter_shows_each_wrong_heuristic_once():
+    """Issue 22 item 4: each wrong heuristic in one continuous pass on the counterexample, its
+    correction after it on the same polygon; no run's beat shown twice, its ✗ said once, and
+    "this one polygon defeats all three" said once, not per heuristic. (Divide and conquer
+    says one step's caption over each of its pieces, so the rule is this chapter's.)"""
+    from geometry.check import is_inner_diagonal
+    from geometry.diagonals import find_diagonal
+    from geometry.io import read_polygon
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    chapter = next(c for c in lecture_chapters() if c.slug == "heuristics")
+    data = build(_chapter_class(chapter).handed()).data
+    assert replayed_beats(data) == [] and repeated_verdicts(data) == []
+    cues = [c["text"] for c in data["cues"]]
+    crosses = [c for c in cues if c.startswith("✗")]
+    assert len(crosses) == 3  # one per wrong heuristic, in its pass
+    said = [c for c in cues if "defeats all three" in c]
+    counterexample = read_polygon("counterexample")
+    assert said == ["This polygon of 5 vertices defeats all three heuristics. "
+                    "Candidates: D, E."] and counterexample.n == 5
+    for wrong in ("scaling", "rotation", "translation"):  # and it is so
+        assert not is_inner_diagonal(counterexample, *find_diagonal(counterexample, wrong).pair)
+    # the chapter's length: the pass breathes instead of repeating (issue 22: 12-18 minutes)
+    assert sum(float(p["run_time"]) for p in data["plays"]) >= 200

@@ -1,5 +1,11 @@
 """Lecture chapter 2: Inner diagonals: water, clock, sweep.
 
+Each wrong heuristic is shown once (issue 22 item 4): its card with its metaphor drawn, a run
+on a polygon where it happens to work, then one continuous pass on the counterexample — the
+metaphor runs and freezes at the decisive moment, the part outside P turns red, the crossed
+edge flashes and is named, and its correction runs on the same polygon, inside P
+(:mod:`metaphors.analysis`). Nothing is replayed.
+
 Run: ``manim -pql scenes/chapters/ch2_heuristics.py``; the whole lecture: ``trex lecture``.
 """
 
@@ -8,8 +14,18 @@ from metaphors.lecture import Analysis, Card, LectureScene, Run
 from story.registry import SPOKEN, entry, spoken
 from story.runs import working_example
 
+#: the polygon that defeats all three wrong heuristics
+COUNTEREXAMPLE = "counterexample"
+#: the pass opens on the frame: the first time with what this polygon is (said once, not per
+#: heuristic), then as the same polygon
+INTRO_FIRST = "This polygon of {n} vertices defeats all three heuristics. Candidates: {candidates}."
+INTRO_AGAIN = "The same polygon of {n} vertices. Candidates in T: {candidates}."
+#: seconds each tool takes to its pick, and the picture holds at the decisive moments: the
+#: pass is shown once, so it is shown slowly
+SLOW, FREEZE = 8.5, 3.5
+
 #: The wrong heuristic of each metaphor: the card of its metaphor, and what its analysis says
-#: on the counterexample — as its tool reaches the wrong vertex, and why its correction (the
+#: on the counterexample — as the part outside P turns red, and why its correction (the
 #: registry's) holds. The family is named after the metaphor.
 FAMILIES = (
     ("scaling",
@@ -30,20 +46,21 @@ FAMILIES = (
 )
 
 
-def family_segments(family: tuple) -> tuple:
+def family_segments(family: tuple, intro: str = INTRO_AGAIN) -> tuple:
+    """A wrong heuristic's segments: its card (its metaphor drawn at B), a run where it
+    happens to work, and the one pass on the counterexample that ends on its correction."""
     wrong, metaphor, fails, holds = family
     known = entry(wrong)
     if known.correct or known.correction is None:
         raise ValueError(f"{wrong} is no wrong heuristic with a correction")
-    # each name said with its picture the first time (its card; the correction's run)
-    right, said = known.correction, SPOKEN[wrong]
+    said = SPOKEN[wrong]  # each name said with its picture the first time: its card
     return (
-        Card(f"{said.name}: {said.picture}", metaphor),
+        Card(f"{said.name}: {said.picture}", metaphor,
+             Figure("metaphor", COUNTEREXAMPLE, heuristic=wrong)),
         Run(wrong, working_example(wrong), f"{spoken(wrong)} on a polygon where it happens to "
             "work"),
-        Run(wrong, "counterexample", f"{spoken(wrong)} on the counterexample"),
-        Analysis(wrong, "counterexample", fails=fails, holds=holds),
-        Run(right, "counterexample", f"{spoken(right, first=True)}: the correction"),
+        Analysis(wrong, COUNTEREXAMPLE, fails=fails, holds=holds, intro=intro, slow=SLOW,
+                 freeze=FREEZE),
     )
 
 
@@ -71,4 +88,6 @@ class Heuristics(LectureScene):
             "A and C: its neighbours; T = triangle ABC.",
             "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate D: is BD?"),
             Figure("frame"))
-        return (frame, *[s for family in FAMILIES for s in family_segments(family)])
+        families = [family_segments(f, INTRO_FIRST if k == 0 else INTRO_AGAIN)
+                    for k, f in enumerate(FAMILIES)]
+        return (frame, *[s for segments in families for s in segments])

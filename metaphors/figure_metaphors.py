@@ -1,0 +1,58 @@
+"""A wrong heuristic's metaphor drawn still, for its card: the tool at B on the polygon.
+
+The card "Scaling: spilled water" (and the clock hand's, the sweeping line's) draws its
+metaphor as a :class:`metaphors.figures.Figure` of kind ``metaphor``: the polygon, T, and the
+tool stopped at the vertex it picks — the circle of water grown from B, the hand turned from
+A, the line swept from B — with what it swept, in the colours of the lecture's analysis
+(:func:`metaphors.analysis.tool_drawing`: the one swept colour, the tool in its own). No red:
+that the swept part leaves P is what the pass on the counterexample shows, after the card.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from manim import Dot, Mobject
+from manim import Polygon as MPolygon
+
+from metaphors.analysis import moment, tool_colour, tool_drawing
+from metaphors.drawing import Frame
+from metaphors.tags import tag
+from metaphors.theme import Theme
+from story.registry import entry
+
+#: what the card's figure says below it, by the heuristic's metaphor
+SAID = {"water": "the water from B wets {pick} first",
+        "clock": "the hand at B passes {pick} first",
+        "sweep": "the line from B touches {pick} first"}
+
+
+@dataclass(frozen=True)
+class Sheet:
+    """The card's figure as a :class:`metaphors.stage.Canvas`: its frame and theme."""
+
+    frame: Frame
+    theme: Theme
+
+
+def metaphor_parts(heuristic: str, polygon_spec: str, frame: Frame,
+                   theme: Theme) -> tuple[list[Mobject], list[Mobject], str]:
+    """``heuristic``'s tool stopped at its pick on ``polygon_spec`` (the run's own, read from
+    its beats): T and what the tool swept (drawn under the vertices), the pick marked (over
+    them), and the words to say below it."""
+    metaphor = entry(heuristic).metaphor or ""
+    if metaphor not in SAID:
+        raise ValueError(f"{heuristic}: no water, clock hand or sweep line to draw")
+    seen = moment(heuristic, polygon_spec)
+    if seen.triangle is None:
+        raise ValueError(f"{heuristic} on {polygon_spec}: the run shows no triangle T")
+    t = tag(MPolygon(*frame.many(seen.triangle), color=theme.called,
+                     stroke_width=theme.thin_stroke, fill_opacity=0), "called", "figure:T")
+    if seen.motion is None:  # a polygon handed to the lecture may leave T empty
+        return [t], [], "no candidate in T: AC is the diagonal"
+    tool = tag(tool_drawing(Sheet(frame, theme), seen.motion, 1.0, tool_colour(theme, heuristic)),
+               "argument", "figure:tool")
+    where = dict(zip(seen.labels, seen.points, strict=True))
+    pick = tag(Dot(frame.to_scene(where[seen.pick]), radius=0.11, color=theme.argument),
+               "argument", "figure:candidate")
+    return [t, tool], [pick], SAID[metaphor].format(pick=seen.pick)
