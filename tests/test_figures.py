@@ -289,7 +289,7 @@ def test_the_lecture_polygon_needs_diagonals_at_its_split_and_merge_vertices():
     drawn = figure_mobjects(Figure("monotone-pieces"), "lecture")
     caption = named(drawn, "figure:label")[0]
     assert [line.original_text for line in caption] == [
-        "split D, merge K and M", "3 diagonals: 4 y-monotone pieces"]
+        "split D, merge M and K", "3 diagonals: 4 y-monotone pieces"]
 
 
 def _profiled_sign_tests(run) -> int:
