@@ -258,8 +258,9 @@ def render_into(make_scene: Callable[[], Scene], output: Path, fmt: str, quality
         temp = Path(tempfile.mkdtemp(prefix=f".{output.name}.", suffix=".render",
                                      dir=output.parent))
         try:
-            return _render_in(make_scene, temp, output, fmt, quality, progress=progress,
-                              srt=srt, signals=signals, marks_made_by=marks_made_by)
+            with signals.stuck_cleanup(lambda: shutil.rmtree(temp, ignore_errors=True)):
+                return _render_in(make_scene, temp, output, fmt, quality, progress=progress,
+                                  srt=srt, signals=signals, marks_made_by=marks_made_by)
         finally:  # still under the handler: a second signal does not stop the removal
             shutil.rmtree(temp, ignore_errors=True)
 
@@ -400,12 +401,13 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
         prepare_output(target)
     except ValueError as exc:
         fail(f"{target}: {exc}")
-    with interrupts_raise() as signals:
+    interrupted = f"error: {scene}: render interrupted; nothing written"
+    with interrupts_raise(interrupted) as signals:
         try:
             _render(scene, path, class_name, (polygon, shape), target, fmt, quality, signals,
                     panel, heuristic)
         except Interrupted as exc:
-            click.echo(f"error: {scene}: render interrupted; nothing written", err=True)
+            click.echo(interrupted, err=True)
             raise click.exceptions.Exit(exit_status.interrupted(exc.signum)) from None
     click.echo(str(target))
 
