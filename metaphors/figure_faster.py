@@ -119,13 +119,15 @@ def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
                       color=theme.result, stroke_width=theme.stroke * 1.5), "result",
                  "figure:diagonal") for u, w in cut.diagonals]
     kinked = [*cut.split, *cut.merge]
-    marks = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.argument),
-                 "argument", "figure:kink") for k in kinked]
+    # each kind in its colour, as the monotone run draws it (metaphors/theme.py's legend)
+    marks = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.role_colour(kind)),
+                 kind, "figure:kink")
+             for kind, ks in (("split", cut.split), ("merge", cut.merge)) for k in ks]
     if kinked:
         said = [f"{kind} {_names([polygon.labels[k] for k in ks])}"
                 for kind, ks in (("split", cut.split), ("merge", cut.merge)) if ks]
         many = len(cut.diagonals) != 1
-        words = [(", ".join(said), theme.argument),
+        words = [(", ".join(said), theme.ink),
                  (f"{len(cut.diagonals)} diagonal{'s' * many}: "
                   f"{len(cut.pieces)} y-monotone pieces", theme.ink)]
     else:

@@ -279,9 +279,10 @@ def test_the_monotone_pieces_are_y_monotone_and_cover_p(polygon):
     assert len(named(drawn, "figure:diagonal")) == len(cut.diagonals)
     kinks = named(drawn, "figure:kink")
     assert len(kinks) == len(lower) + len(upper)
-    # amber, never the red of what fails: nothing on this card fails
-    assert {m.trex_role for m in kinks} <= {"argument"}
-    assert all(m.get_color().to_hex().lower() == THEME.argument for m in kinks)
+    # each kind in its own colour, as the monotone run draws it; never the red of what fails
+    assert [m.trex_role for m in kinks] == ["split"] * len(lower) + ["merge"] * len(upper)
+    assert all(m.get_color().to_hex().lower() == THEME.role_colour(m.trex_role).lower()
+               for m in kinks)
     assert not [m for m in drawn if getattr(m, "trex_role", None) == "rejected"]
 
 
