@@ -71,3 +71,23 @@ def test_a_command_that_ends_in_time_is_not_stopped(tmp_path):
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
                           cwd=Path(__file__).resolve().parents[1], timeout=60)
     assert (done.returncode, done.stderr) == (5, "")  # not the watchdog's 143
+
+
+def test_the_watchdog_leaves_a_command_that_got_out_alone(monkeypatch):
+    """Once :func:`interrupts_raise` has ended, the watchdog does nothing: here, in pytest's
+    own process, it would otherwise end the test run (it did, once: both xdist workers)."""
+    import threading
+
+    import trex.signals as signals
+
+    monkeypatch.setattr(signals, "STUCK_SECONDS", 0.05)
+    cleaned = []
+    with (signals.interrupts_raise("never said") as seen,
+          seen.stuck_cleanup(lambda: cleaned.append(True)),
+          pytest.raises(signals.Interrupted)):
+        signal.raise_signal(signal.SIGTERM)
+    assert seen.watchdog is not None
+    seen.watchdog.join(5)  # cancelled: it ends at once, without running
+    # and were it to run late, it would find the command over
+    signals._stop_if_stuck(seen, signal.SIGTERM)
+    assert cleaned == [] and threading.main_thread().is_alive()

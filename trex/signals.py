@@ -45,6 +45,8 @@ class Signals:
         self.deferring = 0  # inside :meth:`deferred`: a signal is noted, raised at its end
         self.said = ""  # the line an interrupted command says (:func:`interrupts_raise`)
         self.cleanups: list[Callable[[], None]] = []  # what :meth:`stuck_cleanup` registered
+        self.watchdog: threading.Timer | None = None  # armed by the first signal
+        self.over = False  # :func:`interrupts_raise` has ended: the watchdog has nothing to do
 
     @contextlib.contextmanager
     def stuck_cleanup(self, cleanup: Callable[[], None]) -> Iterator[None]:
@@ -79,7 +81,7 @@ class Signals:
 
 def _stop_if_stuck(seen: Signals, signum: int) -> None:
     """The watchdog's end: the command is still alive long after its signal."""
-    if seen.done:
+    if seen.done or seen.over:  # the command got out (a test in pytest's process, too)
         return
     stuck_inside = bool(seen.cleanups)  # else it ended its work and said so, then hung
     for cleanup in list(seen.cleanups):
@@ -95,6 +97,7 @@ def _watch(seen: Signals, signum: int) -> None:
     if seen.cleanups and not seen.done:
         timer = threading.Timer(STUCK_SECONDS, _stop_if_stuck, (seen, signum))
         timer.daemon = True  # a command that ends in time ends it too
+        seen.watchdog = timer
         timer.start()
 
 
@@ -121,6 +124,9 @@ def interrupts_raise(said: str = "") -> Iterator[Signals]:
     try:
         yield seen
     finally:
+        seen.over = True
+        if seen.watchdog is not None:
+            seen.watchdog.cancel()
         for s, h in previous.items():
             signal.signal(s, h)
 
