@@ -23,6 +23,7 @@ from collections.abc import Collection, Sequence
 
 import numpy as np
 
+from geometry import predicates
 from geometry.predicates import (  # the float filters' bounds
     DOT_BOUND,
     ORIENT_BOUND,
@@ -36,6 +37,8 @@ from geometry.predicates import (  # the float filters' bounds
 
 def orient_many(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
     """``orient(a, b, p)`` for every point p = (xs[k], ys[k]), exactly, as int8 signs."""
+    if predicates.counts_open:
+        predicates.count_sign_tests(len(xs))  # one per point
     with np.errstate(all="ignore"):
         left = (a[0] - xs) * (b[1] - ys)
         right = (a[1] - ys) * (b[0] - xs)
@@ -56,8 +59,9 @@ def orient_many(a: Point, b: Point, xs: np.ndarray, ys: np.ndarray) -> np.ndarra
         return signs
     exact = _small_integers(a, b, xs[unsure], ys[unsure])
     signs[unsure[exact]] = np.sign(det[unsure[exact]])
-    for k in unsure[~exact]:  # rare: decide these one by one in rationals
-        signs[k] = orient(a, b, (float(xs[k]), float(ys[k])))
+    with predicates.inside_a_test():  # each one of the points counted above
+        for k in unsure[~exact]:  # rare: decide these one by one in rationals
+            signs[k] = orient(a, b, (float(xs[k]), float(ys[k])))
     return signs
 
 
@@ -68,14 +72,19 @@ def dot_sign_many(d: Point, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
     >>> dot_sign_many((0, 1), starts, ends)
     array([0, 1], dtype=int8)
     """
+    if predicates.counts_open:
+        predicates.count_sign_tests(len(starts))  # one per point
     with np.errstate(all="ignore"):
         dx, dy = ends[:, 0] - starts[:, 0], ends[:, 1] - starts[:, 1]
         value = dx * d[0] + dy * d[1]
         bound = DOT_BOUND * (np.abs(dx * d[0]) + np.abs(dy * d[1])) + TINY
         positive, negative = value > bound, value < -bound
     signs = positive.astype(np.int8) - negative.astype(np.int8)
-    for k in np.flatnonzero(~(positive | negative)):  # rare: decide these one by one
-        signs[k] = dot_sign(d, tuple(starts[k].tolist()), tuple(ends[k].tolist()))
+    rare = np.flatnonzero(~(positive | negative))
+    if len(rare):
+        with predicates.inside_a_test():  # each one of the points counted above
+            for k in rare:  # decide these one by one
+                signs[k] = dot_sign(d, tuple(starts[k].tolist()), tuple(ends[k].tolist()))
     found: np.ndarray = signs
     return found
 

@@ -19,9 +19,12 @@ False
 
 from __future__ import annotations
 
+import contextlib
 import math
 import sys
-from collections.abc import Callable
+import threading
+from collections.abc import Callable, Iterator
+from contextvars import ContextVar
 from enum import Enum
 from fractions import Fraction
 
@@ -38,6 +41,82 @@ SMALL_INTEGER = 2.0**25
 _LOOSE_BOUND = 1e-12
 # Bound for d·(q − p) in floats, relative to |dx·gx| + |dy·gy|: three roundings, with room.
 DOT_BOUND = 4.0 * EPS
+
+
+class SignTests:
+    """The sign tests decided in one context while :func:`counting_sign_tests` is open.
+
+    A sign test is one exact orientation or comparison: :func:`orient`, :func:`dot_sign`
+    (and :func:`cross_sign`, which is one), :func:`compare_distance`,
+    :func:`compare_line_distance` and :func:`compare_angle`; a test asked of many points
+    (:mod:`geometry.batch`, :func:`geometry.validate.orient_array`) is one per point, and the
+    monotone sweep's bisection (:meth:`geometry.sweep_status.SweepStatus.find`) one per step.
+    A test inside a test already counted (a batch's exact fall-back) is not counted again.
+    """
+
+    __slots__ = ("depth", "total")
+
+    def __init__(self) -> None:
+        self.total = 0
+        self.depth = 0  # > 0 inside a test already counted
+
+
+#: the count of the context a test runs in (None: not counting). Per context, so a thread
+#: (or task) counts only its own tests, whatever runs beside it.
+_COUNTED: ContextVar[SignTests | None] = ContextVar("sign_tests", default=None)
+#: How many counts are open, in any thread: read before the context variable, so that when
+#: nothing counts (every run but a measurement) a predicate pays one global lookup.
+#: Read only outside this module.
+counts_open = 0
+_opening = threading.Lock()  # counts_open += 1 is not atomic between threads
+
+
+@contextlib.contextmanager
+def counting_sign_tests() -> Iterator[SignTests]:
+    """Count the sign tests decided in this context (thread or task) while it is open.
+
+    >>> with counting_sign_tests() as tests:
+    ...     _ = orient((0, 0), (1, 0), (0, 1)), cross_sign((1, 0), (0, 0), (0, 1))
+    >>> tests.total
+    2
+
+    Counts do not nest into each other: an inner count has the tests made while it is open,
+    its outer count the others.
+    """
+    global counts_open
+    tests = SignTests()
+    token = _COUNTED.set(tests)
+    with _opening:
+        counts_open += 1
+    try:
+        yield tests
+    finally:
+        with _opening:
+            counts_open -= 1
+        _COUNTED.reset(token)
+
+
+def count_sign_tests(tests: int) -> None:
+    """Count ``tests`` sign tests decided here, if this context is counting (and is not
+    inside a test already counted). Callers outside check :data:`counts_open` first."""
+    counted = _COUNTED.get()
+    if counted is not None and not counted.depth:
+        counted.total += tests
+
+
+@contextlib.contextmanager
+def inside_a_test() -> Iterator[None]:
+    """The tests made inside it are part of one already counted (a batch's exact fall-back
+    for one of its points): not counted again."""
+    counted = _COUNTED.get()
+    if counted is None:
+        yield
+        return
+    counted.depth += 1
+    try:
+        yield
+    finally:
+        counted.depth -= 1
 
 
 def _sign(x: float | Fraction) -> int:
@@ -65,6 +144,8 @@ def orient(a: Point, b: Point, c: Point) -> int:
     >>> orient((0, 0), (1, 1e-17), (2, 0))
     -1
     """
+    if counts_open:
+        count_sign_tests(1)
     left = (a[0] - c[0]) * (b[1] - c[1])
     right = (a[1] - c[1]) * (b[0] - c[0])
     det = left - right
@@ -108,6 +189,8 @@ def dot_sign(d: Point, p: Point, q: Point) -> int:
     >>> dot_sign((1.0, 1e-300), (0.5, 0.0), (0.5, -1e-20))  # below float range: exact
     -1
     """
+    if counts_open:
+        count_sign_tests(1)
     dx, dy = q[0] - p[0], q[1] - p[1]
     value = dx * d[0] + dy * d[1]
     bound = DOT_BOUND * (abs(dx * d[0]) + abs(dy * d[1])) + TINY
@@ -176,6 +259,8 @@ def compare_distance(origin: Point, p: Point, q: Point) -> int:
     >>> compare_distance((0, 0), (1, 0), (0, 2))
     -1
     """
+    if counts_open:
+        count_sign_tests(1)
     px, py, qx, qy = p[0] - origin[0], p[1] - origin[1], q[0] - origin[0], q[1] - origin[1]
     dp, dq = px * px + py * py, qx * qx + qy * qy  # inf on overflow, then exact
     return _exact_sign_of_difference(
@@ -191,6 +276,8 @@ def compare_line_distance(a: Point, b: Point, p: Point, q: Point) -> int:
     >>> compare_line_distance((0, 0), (1, 0), (5, 1), (0, 3))
     -1
     """
+    if counts_open:
+        count_sign_tests(1)
     dp = abs(orient_det(a, b, p))
     dq = abs(orient_det(a, b, q))
     return _sign(dp - dq)
@@ -214,6 +301,8 @@ def compare_angle(apex: Point, ref: Point, p: Point, q: Point) -> int:
     >>> compare_angle((0, 0), (1, 0), (2, 2), (1, 1))
     0
     """
+    if counts_open:
+        count_sign_tests(1)
     if p == apex or q == apex:
         raise ValueError("angle at apex is undefined for a point equal to the apex")
     # Larger cosine means smaller angle.

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from geometry import predicates
 from geometry.predicates import ORIENT_BOUND, TINY, Point, orient  # the float filters' bounds
 
 
@@ -65,11 +66,27 @@ class SweepStatus:
                 lo = mid + 1
             else:
                 hi = mid
+        if predicates.counts_open:  # counted after, so the inner loop pays nothing
+            predicates.count_sign_tests(self.tests_made(own, lo))
         return lo
+
+    def tests_made(self, own: int, found: int) -> int:
+        """The sign tests :meth:`find` made to return ``found``: its bisection replayed
+        (each test went right exactly when its middle lay left of the place found)."""
+        edges, lo, hi, steps = self.edges, 0, len(self.edges), 0
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if edges[mid] == own:  # its own edge: passed without a test
+                hi = mid
+                continue
+            steps += 1
+            lo, hi = (mid + 1, hi) if mid < found else (lo, mid)
+        return steps
 
     def _exactly_left(self, k: int, after: int, v: int) -> bool:
         points = self.points
-        return orient(points[k], points[after], points[v]) > 0
+        with predicates.inside_a_test():  # one of find's steps, counted with them
+            return orient(points[k], points[after], points[v]) > 0
 
     def insert(self, at: int, k: int, helper: int) -> None:
         """Edge k starts at the vertex the line has reached, found at ``at``."""

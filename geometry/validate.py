@@ -40,6 +40,7 @@ from numbers import Real
 import numpy as np
 import shapely
 
+from geometry import predicates
 from geometry.errors import (
     CoordinateError,
     DegenerateError,
@@ -138,6 +139,8 @@ def orient_array(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
     >>> orient_array(np.array([[0., 0.]]), np.array([[1., 0.]]), np.array([[0., 1.]]))
     array([1])
     """
+    if predicates.counts_open:
+        predicates.count_sign_tests(len(c))  # one per row
     with np.errstate(all="ignore"):
         left = (a[:, 0] - c[:, 0]) * (b[:, 1] - c[:, 1])
         right = (a[:, 1] - c[:, 1]) * (b[:, 0] - c[:, 0])
@@ -145,8 +148,11 @@ def orient_array(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
         bound = ORIENT_BOUND * (np.abs(left) + np.abs(right)) + TINY
         signs = np.where(det > bound, 1, np.where(-det > bound, -1, 0))
         unsure = ~((det > bound) | (-det > bound))
-    for k in np.flatnonzero(unsure):  # plain floats: numpy scalars would warn on overflow
-        signs[k] = orient(*((float(m[k][0]), float(m[k][1])) for m in (a, b, c)))
+    rare = np.flatnonzero(unsure)
+    if len(rare):
+        with predicates.inside_a_test():  # each one of the rows counted above
+            for k in rare:  # plain floats: numpy scalars would warn on overflow
+                signs[k] = orient(*((float(m[k][0]), float(m[k][1])) for m in (a, b, c)))
     return signs
 
 

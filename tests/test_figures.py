@@ -300,7 +300,6 @@ def _profiled_sign_tests(run) -> int:
 
     from geometry import batch, predicates, validate
     from geometry.sweep_status import SweepStatus
-    from story.sign_tests import _bisection_steps
 
     one = {f.__code__ for f in (predicates.orient, predicates.dot_sign,
                                 predicates.compare_distance, predicates.compare_line_distance,
@@ -318,7 +317,7 @@ def _profiled_sign_tests(run) -> int:
         elif event == "return" and (code in one or code in many):
             depth -= 1
         elif event == "return" and code is SweepStatus.find.__code__ and not depth:
-            total += _bisection_steps(frame.f_locals["self"], frame.f_locals["own"], arg)
+            total += frame.f_locals["self"].tests_made(frame.f_locals["own"], arg)
 
     sys.setprofile(watch)
     try:
@@ -332,7 +331,7 @@ def _profiled_sign_tests(run) -> int:
                                        "ear-clipping-naive", "prune-and-search"])
 @pytest.mark.parametrize("polygon", ["lecture", "random-2opt:40:2", "comb"])
 def test_sign_tests_are_counted_alike_by_watching_every_call(algorithm, polygon):
-    """The counting copies miss no test: every call watched finds as many."""
+    """The predicates' own count misses no test: every call watched finds as many."""
     from story.sign_tests import ALGORITHMS, count_sign_tests
 
     p = read_polygon(polygon)
@@ -356,8 +355,45 @@ def test_a_sign_test_is_one_orientation_or_one_point_of_a_batch():
     # four points, one on the edge and one decided exactly: four tests, none counted twice
     assert count_sign_tests(lambda: batch.orient_many(a, b, xs, ys)) == 4
     assert count_sign_tests(lambda: batch.in_triangle_many(a, b, c, xs, ys)) >= 4
-    # every name is given back
+    # nothing is rebound: the geometry calls the predicates themselves, counting or not
     assert geometry.ears.orient is predicates.orient and batch.orient is predicates.orient
+    # closed, nothing counts any more
+    with predicates.counting_sign_tests() as tests:
+        pass
+    predicates.orient(a, b, c)
+    assert tests.total == 0 and predicates.counts_open == 0
+
+
+def test_a_count_of_sign_tests_is_of_its_own_thread_only():
+    """A run counted beside another thread's predicates counts its own tests only, as it
+    does alone; and the other thread, counting too, gets its own count."""
+    import threading
+
+    from geometry import predicates
+    from story.sign_tests import ALGORITHMS, count_sign_tests
+
+    p = read_polygon("random-2opt:40:2")
+    alone = count_sign_tests(lambda: ALGORITHMS["monotone"](p.sub_polygon(range(p.n))))
+    started, stop = threading.Event(), threading.Event()
+    beside: list[int] = []
+
+    def noise() -> None:  # another thread deciding tests all the while, counted apart
+        with predicates.counting_sign_tests() as tests:
+            started.set()
+            while not stop.is_set():
+                predicates.orient((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))
+        beside.append(tests.total)
+
+    other = threading.Thread(target=noise)
+    other.start()
+    started.wait()
+    try:
+        counted = [count_sign_tests(lambda: ALGORITHMS["monotone"](p.sub_polygon(range(p.n))))
+                   for _ in range(3)]
+    finally:
+        stop.set()
+        other.join()
+    assert counted == [alone] * 3 and beside[0] > 0
 
 
 def _corners(line):
