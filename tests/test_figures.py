@@ -365,8 +365,9 @@ def test_a_sign_test_is_one_orientation_or_one_point_of_a_batch():
 
 
 def test_a_count_of_sign_tests_is_of_its_own_thread_only():
-    """A run counted beside another thread's predicates counts its own tests only, as it
-    does alone; and the other thread, counting too, gets its own count."""
+    """A count open in one thread takes none of another thread's tests, counted or not,
+    and a run counted while another thread counts counts as it does alone. The threads take
+    turns by events, so the tests of both fall inside the other's count every time."""
     import threading
 
     from geometry import predicates
@@ -374,26 +375,28 @@ def test_a_count_of_sign_tests_is_of_its_own_thread_only():
 
     p = read_polygon("random-2opt:40:2")
     alone = count_sign_tests(lambda: ALGORITHMS["monotone"](p.sub_polygon(range(p.n))))
-    started, stop = threading.Event(), threading.Event()
-    beside: list[int] = []
+    a, b, c = (0.0, 0.0), (4.0, 0.0), (0.0, 4.0)
+    opened, done = threading.Event(), threading.Event()
+    other: list[int] = []
 
-    def noise() -> None:  # another thread deciding tests all the while, counted apart
+    def counting_beside() -> None:  # one test, then the main thread's turn, then one more
         with predicates.counting_sign_tests() as tests:
-            started.set()
-            while not stop.is_set():
-                predicates.orient((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))
-        beside.append(tests.total)
+            predicates.orient(a, b, c)
+            opened.set()
+            done.wait(timeout=60)
+            predicates.orient(a, b, c)
+        other.append(tests.total)
 
-    other = threading.Thread(target=noise)
-    other.start()
-    started.wait()
+    beside = threading.Thread(target=counting_beside)
+    beside.start()
     try:
-        counted = [count_sign_tests(lambda: ALGORITHMS["monotone"](p.sub_polygon(range(p.n))))
-                   for _ in range(3)]
+        opened.wait(timeout=60)
+        ALGORITHMS["monotone"](p.sub_polygon(range(p.n)))  # not counted: in no count
+        counted = count_sign_tests(lambda: ALGORITHMS["monotone"](p.sub_polygon(range(p.n))))
     finally:
-        stop.set()
-        other.join()
-    assert counted == [alone] * 3 and beside[0] > 0
+        done.set()
+        beside.join()
+    assert (counted, other) == (alone, [2])
 
 
 def _corners(line):
