@@ -25,7 +25,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
-from manim import LEFT, Circle, Dot, Line, Mobject, VGroup
+from manim import LEFT, Circle, Dot, Line, Mobject
 from manim import Polygon as MPolygon
 
 from geometry.cdt import constrained_delaunay
@@ -36,6 +36,7 @@ from geometry.polygon import Polygon
 from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
+from metaphors.figure_caption import figure_caption
 from metaphors.figure_plots import Area, Series, line_plot
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -65,17 +66,6 @@ def figure_mobjects(kind: str, polygon_spec: str, theme: Theme, box: Box) -> lis
     drawn = {"monotone-pieces": _pieces, "delaunay-circle": _circle,
              "three-triangulations": _three}[kind]
     return drawn(polygon, theme, box)
-
-
-def _caption(lines: Sequence[tuple[str, str]], theme: Theme, box: Box) -> Mobject:
-    """The figure's words below its box, a line per (words, colour), as every figure's."""
-    (x, y), width, height = box
-    shown = VGroup(*[typeset.text(words, font=theme.font, size=theme.label_size + 2,
-                                  colour=colour, width=width) for words, colour in lines])
-    shown.arrange(direction=(0, -1, 0), buff=0.15)
-    shown.move_to((x, y - height / 2 - 0.8, 0), aligned_edge=(0, 1, 0))
-    shown.shift((0, shown[0].height / 2, 0))  # the first line where a one-line caption sits
-    return tag(shown, None, "figure:label")
 
 
 def _names(labels: Sequence[str]) -> str:
@@ -134,7 +124,7 @@ def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
         words = [("P is y-monotone already: one piece", theme.ink)]
     return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *tints,
             *lines, tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices"),
-            *marks, _caption(words, theme, box)]
+            *marks, figure_caption(box, theme, *words)]
 
 
 # --- measured work -------------------------------------------------------------------------------
@@ -178,7 +168,7 @@ def _measured(theme: Theme, box: Box) -> list[Mobject]:
                          aligned_edge=LEFT)
             drawn.append(tag(text, None, "figure:legend"))
     words = [(f"sign tests, mean of {len(SEEDS)} random polygons", theme.ink)]
-    return [*drawn, _caption(words, theme, box)]
+    return [*drawn, figure_caption(box, theme, *words)]
 
 
 # --- the constrained Delaunay circle -------------------------------------------------------------
@@ -256,7 +246,7 @@ def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
         words = [(f"the circle of {name} holds no other vertex", theme.ink)]
     return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *edges,
             chosen, ring, tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices"),
-            *marks, _caption(words, theme, box)]
+            *marks, figure_caption(box, theme, *words)]
 
 
 # --- the recap: three triangulations -------------------------------------------------------------

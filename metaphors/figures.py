@@ -41,6 +41,7 @@ from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
 from metaphors import figure_faster, method_figures
 from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject, vertex_markers
+from metaphors.figure_caption import figure_caption
 from metaphors.figure_metaphors import metaphor_parts
 from metaphors.figure_plots import Area, Series, line_plot
 from metaphors.tags import tag
@@ -94,7 +95,7 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
         under, over, said = metaphor_parts(figure.heuristic, figure.polygon or polygon_spec,
                                            frame, theme) if polygon.n >= 4 else (
             [], [], "a triangle: no diagonal to find")
-        label = tag(_label(said, theme, theme.ink), None, "figure:label")
+        label = figure_caption(BOX, theme, (said, theme.ink))
         return [shape, *under, label, vertices, *over]
     drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
              "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
@@ -102,12 +103,6 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     # marks on a vertex go over its dot; fills go under the dots and labels
     marks = [m for m in parts if m.name == "figure:candidate"]
     return [shape, *[m for m in parts if m not in marks], vertices, *marks]
-
-
-def _label(words: str, theme: Theme, colour: str) -> Mobject:
-    shown = typeset.text(words, font=theme.font, size=theme.label_size + 2, colour=colour)
-    # below the picture and the labels of its lowest vertices
-    return shown.move_to((FIGURE_CENTER[0], FIGURE_CENTER[1] - FIGURE_HEIGHT / 2 - 0.8, 0))
 
 
 def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
@@ -131,14 +126,13 @@ def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
                                stroke_width=theme.stroke * 1.6), "result",
                           "figure:inner-diagonal"))
     count = f"n = {n}: {len(triangles)} triangles, {len(cuts)} inner diagonals"
-    return [*pieces, *marked, tag(_label(count, theme, theme.result), None, "figure:label")]
+    return [*pieces, *marked, figure_caption(BOX, theme, (count, theme.result))]
 
 
 def _diagonal(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
     """One inner diagonal (the heuristic's claim) splitting P into two smaller polygons."""
     if polygon.n < 4:  # a polygon handed to the lecture may be a triangle
-        return [tag(_label("a triangle: nothing to split", theme, theme.ink), None,
-                    "figure:label")]
+        return [figure_caption(BOX, theme, ("a triangle: nothing to split", theme.ink))]
     i, j = find_diagonal(polygon, figure.heuristic).pair
     lo, hi = sorted((i, j))
     halves = [list(range(lo, hi + 1)), [*range(hi, polygon.n), *range(0, lo + 1)]]
@@ -152,7 +146,7 @@ def _diagonal(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> l
     name = f"{polygon.labels[i]}{polygon.labels[j]}"
     sizes = " and ".join(str(len(h)) for h in halves)
     words = f"{name} splits {polygon.n} vertices into {sizes}"
-    return [*tints, line, tag(_label(words, theme, theme.result), None, "figure:label")]
+    return [*tints, line, figure_caption(BOX, theme, (words, theme.result))]
 
 
 def _clearance(polygon: Polygon, i: int, j: int) -> float:
@@ -185,7 +179,7 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
     kinds = [*_vertex_word(polygon, frame, theme, t.b.index, "convex"),
              *next((w for v in _reflex(polygon)
                     if (w := _vertex_word(polygon, frame, theme, v, "reflex"))), [])]
-    return [shaded, *dots, *kinds, tag(_label(words, theme, theme.ink), None, "figure:label")]
+    return [shaded, *dots, *kinds, figure_caption(BOX, theme, (words, theme.ink))]
 
 
 def _reflex(polygon: Polygon) -> list[int]:
@@ -271,8 +265,7 @@ def _claims(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> lis
     """Each rule's claim on P: green if it is an inner diagonal, else red, the edge it
     crosses thick in red."""
     if polygon.n < 4:
-        return [tag(_label("a triangle: no diagonal to claim", theme, theme.ink), None,
-                    "figure:label")]
+        return [figure_caption(BOX, theme, ("a triangle: no diagonal to claim", theme.ink))]
     drawn: list[Mobject] = []
     seen: set[tuple[int, int]] = set()
     for name in figure.heuristics:
@@ -331,8 +324,7 @@ def _ear(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[M
         drawn.append(tag(Dot(frame.to_scene(pts[k]), radius=0.11, color=theme.rejected),
                          "rejected", "figure:candidate"))
         said.append(f"{polygon.labels[v]} is not: {polygon.labels[k]} lies in its triangle")
-    return [*drawn, tag(_label("; ".join(said) or "a triangle", theme, theme.ink), None,
-                        "figure:label")]
+    return [*drawn, figure_caption(BOX, theme, ("; ".join(said) or "a triangle", theme.ink))]
 
 
 def _ears(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
@@ -343,8 +335,7 @@ def _ears(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[
                                    theme.result, theme), "result", "figure:ear")
               for v in ears]
     names = ", ".join(polygon.labels[v] for v in ears) or "none (a triangle)"
-    return [*shaded, tag(_label(f"the ears of P: {names}", theme, theme.result), None,
-                         "figure:label")]
+    return [*shaded, figure_caption(BOX, theme, (f"the ears of P: {names}", theme.result))]
 
 
 @functools.cache  # the same runs for every build of the chapter in one process
@@ -368,8 +359,8 @@ def _growth(theme: Theme) -> list[Mobject]:
         # the legend in the plot's top left, which the rising lines leave empty
         label.move_to((left + 0.3, bottom + area.height - 0.2 - 0.42 * k, 0), aligned_edge=LEFT)
         drawn.append(tag(label, None, "figure:legend"))
-    caption = _label("ear tests (mean of 3 polygons) by n", theme, theme.ink)
-    return [*drawn, tag(caption, None, "figure:label")]
+    words = "ear tests (mean of 3 polygons) by n"
+    return [*drawn, figure_caption(BOX, theme, (words, theme.ink))]
 
 
 __all__ = ["FIGURE_CENTER", "FIGURE_HEIGHT", "FIGURE_WIDTH", "GROWTH_RUNS", "GROWTH_SIZES",

@@ -40,9 +40,9 @@ from metaphors.drawing import (
     polygon_mobject,
     vertex_markers,
 )
+from metaphors.figure_caption import figure_caption
 from metaphors.tags import tag
 from metaphors.theme import Theme
-from rendering import typeset
 from usercode.heuristic import load_user_heuristic, run_heuristic
 
 #: the kinds drawn here, by the name a card's :class:`metaphors.figures.Figure` gives
@@ -80,16 +80,6 @@ def method_figure(kind: str, polygon_spec: str, heuristic: str, box: Box,
     return [shape, *under, dots, *over]
 
 
-def _label(words: str, box: Box, theme: Theme, colour: str) -> Mobject:
-    """The figure's words below it (wrapped to its width, never shrunk)."""
-    (x, y), width, height = box
-    shown = typeset.wrapped(words, font=theme.font, size=theme.label_size + 2, colour=colour,
-                            width=width)
-    # its top below the labels of the picture's lowest vertices (0.32 out, about 0.25 high)
-    shown.move_to((x, y - height / 2 - 0.6 - shown.height / 2, 0))
-    return tag(shown, None, "figure:label")
-
-
 def _line(frame: Frame, p, q, colour: str, width: float, role: str | None,
           name: str) -> Mobject:
     return tag(Line(frame.to_scene(p), frame.to_scene(q), color=colour, stroke_width=width),
@@ -110,7 +100,8 @@ def _gravity(polygon: Polygon, heuristic: str, box: Box,
     v = gravity_steps.reflex_vertex(polygon) if polygon.n > 3 else None
     if v is None:  # convex: the ball has no reflex vertex to hang from
         frame = Frame(polygon.points, *box)
-        return frame, [], [_label("no reflex vertex: no ball to drop", box, theme, theme.ink)]
+        said = "no reflex vertex: no ball to drop"
+        return frame, [], [figure_caption(box, theme, (said, theme.ink))]
     g = gravity_steps.gravity_direction(polygon, v)
     hit = gravity_steps.drop_ball(polygon, v, g)
     x = gravity_steps.slide_to_vertex(polygon, hit, g)
@@ -129,7 +120,7 @@ def _gravity(polygon: Polygon, heuristic: str, box: Box,
     words = f"V = {v.label}, X = {x.label}, {snag}: claim {v.label}{end.label}"
     return frame, [fall, slide, tag(band, "argument", "figure:band"), claim], [
         _dot(frame, v.point, theme.argument, "argument", "figure:candidate"), ball,
-        _label(words, box, theme, theme.result)]
+        figure_caption(box, theme, (words, theme.result))]
 
 
 # --- prune and search ------------------------------------------------------------------------
@@ -161,7 +152,7 @@ def _prune(polygon: Polygon, heuristic: str, box: Box,
     when the next round's middle vertex is an ear, its triangle in green."""
     frame = Frame(polygon.points, *box)
     if polygon.n < 4:
-        return frame, [], [_label("a triangle: it is its own ear", box, theme, theme.ink)]
+        return frame, [], [figure_caption(box, theme, ("a triangle: it is its own ear", theme.ink))]
     rounds = prune_rounds(polygon)
     # the first round on a sub-polygon with a cut edge that cuts again, else the first round
     r = next((k for k, (g, _, d) in enumerate(rounds) if g.has_cut and d is not None), 0)
@@ -193,7 +184,7 @@ def _prune(polygon: Polygon, heuristic: str, box: Box,
                                       fill_opacity=theme.fill_opacity), "result", "figure:ear"))
             words += f"; there the middle {labels[e]} is an ear"
     over = [_dot(frame, pts[v], theme.argument, "argument", "figure:candidate"),
-            _label(words, box, theme, theme.ink)]
+            figure_caption(box, theme, (words, theme.ink))]
     return frame, under, over
 
 
@@ -212,7 +203,8 @@ def _rule(polygon: Polygon, heuristic: str, box: Box,
     else red with the edge it crosses."""
     frame = Frame(polygon.points, *box)
     if polygon.n < 4:
-        return frame, [], [_label("a triangle: no diagonal to claim", box, theme, theme.ink)]
+        said = "a triangle: no diagonal to claim"
+        return frame, [], [figure_caption(box, theme, (said, theme.ink))]
     t = triangle_at(polygon, leftmost_vertex(polygon))
     corners = [polygon.points[k.index] for k in (t.a, t.b, t.c)]
     shaded = tag(MPolygon(*frame.many(corners), color=theme.called,
@@ -233,7 +225,7 @@ def _rule(polygon: Polygon, heuristic: str, box: Box,
     words = f"On this P the rule claims {polygon.labels[i]}{polygon.labels[j]}: {said}"
     over = [_dot(frame, polygon.points[d.index], theme.argument, "argument", "figure:candidate")
             for d in candidates_in_triangle(polygon, t)]
-    return frame, under, [*over, _label(words, box, theme, colour)]
+    return frame, under, [*over, figure_caption(box, theme, (words, colour))]
 
 
 # --- the keyhole cut -------------------------------------------------------------------------
@@ -247,7 +239,7 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
         frame = Frame(shape.points, *box)
         return [tag(polygon_mobject(shape, frame, theme), "idle", "figure:polygon"),
                 tag(vertex_markers(shape, frame, theme), "idle", "figure:vertices"),
-                _label("no hole: nothing to cut", box, theme, theme.ink)]
+                figure_caption(box, theme, ("no hole: nothing to cut", theme.ink))]
     starts, pts, labels = shape.starts, shape.points, shape.labels
     outer = Polygon.from_points(pts[:starts[1]])  # ring 0: labelled as in the shape
     holes = [{"points": pts[a:b], "labels": labels[a:b]} for a, b in pairwise(starts[1:])]
@@ -265,7 +257,7 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
     cuts = ", ".join(f"{labels[p]}{labels[m]}" for p, m in ring.bridges)
     size = len(ring.walk())
     words = f"bridges {cuts}: one ring of {size} vertices ({shape.n} + 2 per hole)"
-    return [*drawn, _label(words, box, theme, theme.result)]
+    return [*drawn, figure_caption(box, theme, (words, theme.result))]
 
 
 __all__ = ["KINDS", "TurnedFrame", "method_figure"]

@@ -21,7 +21,8 @@ def named(mobjects, prefix: str) -> list:
 
 
 def label(mobjects) -> str:
-    return named(mobjects, "figure:label")[0].original_text
+    """The words of a figure's caption, its rows joined (a caption is a group of rows)."""
+    return " ".join(row.original_text for row in named(mobjects, "figure:label")[0])
 
 
 @pytest.mark.parametrize("kind", KINDS)
@@ -125,9 +126,8 @@ def test_a_metaphor_needs_a_tool():
 
 
 def said(mobject) -> str:
-    """A label's words, on one row or wrapped on several."""
-    rows = [mobject] if hasattr(mobject, "original_text") else list(mobject)
-    return " ".join(row.original_text for row in rows)
+    """A caption's words, its rows joined."""
+    return " ".join(row.original_text for row in mobject)
 
 
 def ends(line) -> tuple[tuple[float, float], tuple[float, float]]:

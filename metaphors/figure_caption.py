@@ -1,0 +1,53 @@
+"""A card figure's words, below its box: one place, one size and one way of breaking lines
+for every figure (:mod:`metaphors.figures`, :mod:`metaphors.method_figures`,
+:mod:`metaphors.figure_faster`), so that no figure's words sit lower, smaller or over it.
+
+A caption is one or more lines, each in its own colour (what it says: green what holds,
+ink the rest). A line too wide for the box wraps onto more rows at the same size, never
+shrunk (each row at least 2.5 % of the frame's height), and the rows are centred under the
+figure, the first one's top always :data:`GAP` below the box.
+
+>>> from metaphors.theme import THEME
+>>> caption = figure_caption(((-3.5, -0.1), 6.2, 4.6), THEME, ("one short line", THEME.ink))
+>>> [row.original_text for row in caption], round(caption.get_top()[1], 6)
+(['one short line'], -2.95)
+"""
+
+from __future__ import annotations
+
+from manim import DOWN, UP, Mobject, VGroup
+
+from metaphors.tags import tag
+from metaphors.theme import Theme
+from rendering import typeset
+
+Box = tuple[tuple[float, float], float, float]  # a figure's centre, width and height
+Line = tuple[str, str]  # a caption line's words and their colour
+
+#: the first row's top, this far below the figure's box: clear of the labels of its lowest
+#: vertices (0.32 out, about 0.25 high), and of a word set beside a vertex
+GAP = 0.55
+#: between two rows
+ROW_GAP = 0.12
+
+
+def caption_size(theme: Theme) -> float:
+    """The size every figure caption is set in: a step above the vertices' labels."""
+    return theme.label_size + 2
+
+
+def figure_caption(box: Box, theme: Theme, *lines: Line) -> Mobject:
+    """The figure's words below ``box``: each of ``lines`` (words, colour) on as many rows
+    as it needs, centred, tagged ``figure:label`` (a group of its rows, each a text)."""
+    (x, y), width, height = box
+    rows: list[Mobject] = []
+    for words, colour in lines:
+        shown = typeset.wrapped(words, font=theme.font, size=caption_size(theme),
+                                colour=colour, width=width)
+        rows += list(shown) if isinstance(shown, VGroup) else [shown]
+    caption = VGroup(*rows).arrange(DOWN, buff=ROW_GAP)
+    caption.move_to((x, y - height / 2 - GAP, 0), aligned_edge=UP)
+    return tag(caption, None, "figure:label")
+
+
+__all__ = ["GAP", "ROW_GAP", "Box", "Line", "caption_size", "figure_caption"]
