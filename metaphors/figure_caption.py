@@ -15,7 +15,7 @@ figure, the first one's top always :data:`GAP` below the box.
 
 from __future__ import annotations
 
-from manim import DOWN, UP, Mobject, VGroup
+from manim import DOWN, UP, Mobject, VGroup, VMobject
 
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -40,7 +40,7 @@ def figure_caption(box: Box, theme: Theme, *lines: Line) -> Mobject:
     """The figure's words below ``box``: each of ``lines`` (words, colour) on as many rows
     as it needs, centred, tagged ``figure:label`` (a group of its rows, each a text)."""
     (x, y), width, height = box
-    rows: list[Mobject] = []
+    rows: list[VMobject] = []
     for words, colour in lines:
         shown = typeset.wrapped(words, font=theme.font, size=caption_size(theme),
                                 colour=colour, width=width)
