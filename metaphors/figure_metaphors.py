@@ -12,7 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from manim import Dot, Mobject
+import shapely
+from manim import Dot, Mobject, VGroup, VMobject
 from manim import Polygon as MPolygon
 
 from metaphors.analysis import moment, tool_colour, tool_drawing
@@ -35,11 +36,16 @@ class Sheet:
     theme: Theme
 
 
-def metaphor_parts(heuristic: str, polygon_spec: str, frame: Frame,
-                   theme: Theme) -> tuple[list[Mobject], list[Mobject], str]:
+#: a figure's box on screen: x0, y0, x1, y1
+Bounds = tuple[float, float, float, float]
+
+
+def metaphor_parts(heuristic: str, polygon_spec: str, frame: Frame, theme: Theme,
+                   within: Bounds | None = None) -> tuple[list[Mobject], list[Mobject], str]:
     """``heuristic``'s tool stopped at its pick on ``polygon_spec`` (the run's own, read from
     its beats): T and what the tool swept (drawn under the vertices), the pick marked (over
-    them), and the words to say below it."""
+    them), and the words to say below it; the tool's faint part beyond T kept ``within``
+    the figure's box."""
     metaphor = entry(heuristic).metaphor or ""
     if metaphor not in SAID:
         raise ValueError(f"{heuristic}: no water, clock hand or sweep line to draw")
@@ -52,7 +58,27 @@ def metaphor_parts(heuristic: str, polygon_spec: str, frame: Frame,
         return [t], [], "no candidate in T: AC is the diagonal"
     tool = tag(tool_drawing(Sheet(frame, theme), seen.motion, 1.0, tool_colour(theme, heuristic)),
                "argument", "figure:tool")
+    if within is not None:
+        _clip_beyond(tool, within)
     where = dict(zip(seen.labels, seen.points, strict=True))
     pick = tag(Dot(frame.to_scene(where[seen.pick]), radius=0.11, color=theme.argument),
                "argument", "figure:candidate")
     return [t, tool], [pick], SAID[metaphor].format(pick=seen.pick)
+
+
+def _clip_beyond(tool: VGroup, within: Bounds) -> None:
+    """The tool's faint lines beyond T cut to ``within``: the water's whole circle would run
+    off the frame's edge and through the caption below the figure."""
+    room = shapely.box(*within)
+    for part in tool.submobjects:
+        if part.name != "tool:beyond":
+            continue
+        kept: list[VMobject] = []
+        for line in part.submobjects:
+            corners = shapely.LineString([p[:2] for p in line.get_anchors()])
+            for piece in shapely.get_parts(corners.intersection(room)):
+                if piece.geom_type == "LineString" and piece.length > 0:
+                    cut = line.copy()
+                    cut.set_points_as_corners([(x, y, 0.0) for x, y in piece.coords])
+                    kept.append(cut)
+        part.submobjects = kept

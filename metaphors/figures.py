@@ -93,7 +93,7 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     vertices = tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
     if figure.kind == "metaphor":  # its run is read from the polygon's spec, not the polygon
         under, over, said = metaphor_parts(figure.heuristic, figure.polygon or polygon_spec,
-                                           frame, theme) if polygon.n >= 4 else (
+                                           frame, theme, _bounds()) if polygon.n >= 4 else (
             [], [], "a triangle: no diagonal to find")
         label = figure_caption(BOX, theme, (said, theme.ink))
         return [shape, *under, label, vertices, *over]
@@ -214,6 +214,12 @@ def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
 
 
 Box = tuple[float, float, float, float]  # x0, y0, x1, y1 on screen
+
+
+def _bounds() -> Box:
+    """The figure's box on screen."""
+    (x, y), w, h = FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT
+    return (x - w / 2, y - h / 2, x + w / 2, y + h / 2)
 
 
 def _box(mobject: Mobject, pad: float = 0.06) -> Box:

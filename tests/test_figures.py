@@ -660,3 +660,95 @@ def test_each_taught_word_is_first_said_with_its_mark_on_the_picture():
             break
     assert not left, f"never said: {sorted(left)}"
     assert missing == []
+
+
+def _extent(node: dict, into: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """Every point a graph node (and its parts) draws: its outline's points, its text's box."""
+    into += [(p[0], p[1]) for p in node.get("points") or ()]
+    if node.get("box"):
+        x0, y0, x1, y1 = node["box"]
+        into += [(x0, y0), (x1, y1)]
+    for child in node.get("submobjects", ()):
+        _extent(child, into)
+    return into
+
+
+def caption_problems(play: dict) -> list[str]:
+    """What is wrong with the figure captions a play brings on (dry-run graph): a caption
+    not wholly below everything else of its figure, out of the frame, or a row of it under
+    2.5 % of the frame's height."""
+    from tests.reading_rules import INCOMING, LEAST_LINE, mobject_nodes
+
+    half_width, half_height = 8 * 16 / 9 / 2, 4.0  # manim's frame, 16:9
+    parts = [a["mobject"] for a in play["animations"] if a["type"] in INCOMING
+             and a.get("mobject", {}).get("name", "").startswith("figure:")]
+    problems = []
+    for caption in (m for m in parts if m["name"] == "figure:label"):
+        rows = [n for n in mobject_nodes(caption) if n.get("text") and n.get("box")]
+        said = " / ".join(r["text"] for r in rows)
+        x0, y0 = min(r["box"][0] for r in rows), min(r["box"][1] for r in rows)
+        x1, y1 = max(r["box"][2] for r in rows), max(r["box"][3] for r in rows)
+        drawn = [p for m in parts if m is not caption for p in _extent(m, [])]
+        lowest = min(y for _, y in drawn)
+        if y1 >= lowest:
+            problems.append(f"{said!r}: its top {y1:.2f} not below the figure ({lowest:.2f})")
+        if x0 < -half_width or x1 > half_width or y0 < -half_height or y1 > half_height:
+            problems.append(f"{said!r}: out of the frame ({x0:.2f}, {y0:.2f}, {x1:.2f}, {y1:.2f})")
+        problems += [f"{r['text']!r}: {r['box'][3] - r['box'][1]:.3f} high" for r in rows
+                     if r["box"][3] - r["box"][1] < LEAST_LINE]
+    return problems
+
+
+def _captioned_cards(cls) -> int:
+    """How many of a chapter's cards have a figure that draws a caption."""
+    from metaphors.lecture import Card, Hunted
+
+    figures = [s.figure for s in cls.__new__(cls).chapter_segments()
+               if isinstance(s, Card | Hunted) and s.figure is not None]
+    return sum(1 for f in figures if named(figure_mobjects(f, "lecture"), "figure:label"))
+
+
+def _lecture_chapters():
+    from trex.chapters import lecture_chapters
+
+    return [pytest.param(c, id=c.slug) for c in lecture_chapters()]
+
+
+@pytest.mark.parametrize("chapter", _lecture_chapters())
+def test_every_figure_caption_lies_below_its_figure_inside_the_frame(chapter):
+    """On the chapter's dry-run graph, every card figure's caption is below all of its figure
+    (its polygon, the vertices' labels, its marks and legends: nothing of it over the
+    picture), inside the frame, and every row of it readable (2.5 % of the frame's height);
+    and every card whose figure has a caption was seen."""
+    from tests.reading_rules import INCOMING
+    from tests.test_lecture import _chapter_class
+    from trex.snapshot import build
+
+    cls = _chapter_class(chapter)
+    plays = build(cls.handed()).data["plays"]
+    captioned = [k for k, play in enumerate(plays) if any(
+        a["type"] in INCOMING and a.get("mobject", {}).get("name") == "figure:label"
+        for a in play["animations"])]
+    assert len(captioned) == _captioned_cards(cls)
+    assert [p for k in captioned for p in caption_problems(plays[k])] == []
+
+
+def test_a_caption_over_its_figure_is_caught():
+    """The check above can fail: a caption moved up onto its figure, or down out of the
+    frame, is reported."""
+    from metaphors.figure_caption import GAP
+
+    drawn = figure_mobjects(Figure("monotone-pieces"), "lecture")
+
+    def play(shift: float) -> dict:
+        from trex.scene_graph import mobject_graph
+
+        caption = named(drawn, "figure:label")[0].copy().shift((0, shift, 0))
+        caption.name = "figure:label"
+        others = [m for m in drawn if m.name != "figure:label"]
+        return {"animations": [{"type": "FadeIn", "mobject": mobject_graph(m)}
+                               for m in [*others, caption]]}
+
+    assert caption_problems(play(0.0)) == []
+    assert any("not below the figure" in p for p in caption_problems(play(GAP + 0.3)))
+    assert any("out of the frame" in p for p in caption_problems(play(-1.5)))
