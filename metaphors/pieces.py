@@ -11,12 +11,13 @@ by the frame every run shares (:mod:`metaphors.basics`).
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import replace
 
 from manim import DOWN, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board, Playable
-from metaphors.drawing import triangulation_pieces
+from metaphors.drawing import triangulation_pieces, whole_caption
 from metaphors.layout import METAPHOR, PANEL_POLYGON
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
@@ -95,10 +96,8 @@ def split(board: Board, beat: Split) -> None:
     anims += board.drop("verdict", f"piece:{beat.parent}")
     if board.shape.get_fill_opacity() > 0:
         anims.append(board.shape.animate.set_fill(opacity=0))
-    if all(len(p) == 3 for p in beat.points) and not any(
-            key.startswith("piece:") for key in board.objects):
-        board.play(beat, *anims, *_whole(board, beat.labels), run_time=1.2)
-        return
+    last = all(len(p) == 3 for p in beat.points) and not any(
+        key.startswith("piece:") for key in board.objects)
     chosen: set[str] = set()
     for piece, points, labels in zip(beat.pieces, beat.points,
                                      beat.labels, strict=False):
@@ -109,16 +108,18 @@ def split(board: Board, beat: Split) -> None:
         board.keep(f"triangle:{''.join(labels)}" if done else f"piece:{piece}", tint)
         anims.append(FadeIn(tint))
     board.play(beat, *anims, run_time=1.2)
+    if last:  # the whole triangulation under its own caption: the split's is over
+        triangles = sum(1 for key in board.objects if key.startswith("triangle:"))
+        board.play(replace(beat, caption=whole_caption(triangles), pace=1.0), *_whole(board),
+                   run_time=1.2)
 
 
-def _whole(board: Board, last: Sequence[Sequence[str]]) -> list[Playable]:
-    """The last split, into the triangles ``last`` (their labels): the finished triangles
-    give way to the whole triangulation, each triangle its own colour, and the count it had
-    to reach, n − 2."""
+def _whole(board: Board) -> list[Playable]:
+    """After the last split: the finished triangles give way to the whole triangulation,
+    each triangle its own colour, and the count it had to reach, n − 2."""
     theme = board.theme
     done = [k for k in board.objects if k.startswith("triangle:")]
-    corners = [[board.where[label] for label in labels]
-               for labels in [*(_labels(board.objects[k]) for k in done), *last]]
+    corners = [[board.where[label] for label in _labels(board.objects[k])] for k in done]
     whole = triangulation_pieces(corners, board.at, theme)
     n = board.polygon.n
     shown: list[Playable] = [*board.drop(*done, "finder"), *[FadeIn(t) for t in whole]]

@@ -397,3 +397,45 @@ def repeated_verdicts(data: dict) -> list[str]:
             counts[(section, caption)] = counts.get((section, caption), 0) + 1
     return [f"{n} × {caption!r} ({section})" for (section, caption), n in counts.items()
             if n > 1]
+
+
+# --- issue 22: the caption says what is on screen -----------------------------------------------
+
+#: what a beat's words play animates besides the picture: the subtitle, the panel's text
+_WORDS = ("subtitle", "title", "panel:", "code:")
+
+
+def _draws_picture(play: dict) -> bool:
+    """Whether a play changes more than words (subtitle, panel text) or waits."""
+    def picture(anim: dict) -> bool:
+        if anim.get("animations"):
+            return any(picture(a) for a in anim["animations"])
+        name = (anim.get("mobject") or {}).get("name") or ""
+        return anim["type"] != "Wait" and not name.startswith(_WORDS)
+    return any(picture(a) for a in play["animations"])
+
+
+def stale_endings(data: dict) -> list[str]:
+    """The plays that draw a run's whole triangulation while the caption on screen is a step
+    caption of an earlier beat, as ``"play 40: 'Split along …'"``: a caption said before in
+    the run (since its polygon was drawn), or one that was up while an earlier beat's picture
+    changed (from its own play to the triangulation's)."""
+    found = []
+    plays = data["plays"]
+    run_start, said_at = 0, -1
+    for k, play in enumerate(plays):
+        tops = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        if any(kind in INCOMING and name == "polygon" for kind, name in tops):
+            run_start = k
+        if play.get("subcaption"):
+            said_at = k
+        if not any(kind in INCOMING and name == "triangulation" for kind, name in tops):
+            continue
+        if said_at < 0:
+            continue
+        caption = plays[said_at]["subcaption"]
+        earlier = any(p.get("subcaption") == caption for p in plays[run_start:said_at])
+        over = any(_draws_picture(p) for p in plays[said_at:k])
+        if earlier or over:
+            found.append(f"play {k}: {caption!r}")
+    return found

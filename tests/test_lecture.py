@@ -35,6 +35,7 @@ from tests.reading_rules import (
     replayed_beats,
     rushed_questions,
     small_texts,
+    stale_endings,
     unreadable_cues,
     unspoken_words,
 )
@@ -477,6 +478,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert answers_over_pictures(data) == [], chapter.slug
     # issue 22 item 5: counters run 1 … n − 2 and end on the whole triangulation
     assert broken_counts(data) == [], chapter.slug
+    # issue 22: the whole triangulation comes under its own caption, not the last step's
+    assert stale_endings(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
