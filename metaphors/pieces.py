@@ -13,12 +13,22 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
 
-from manim import DOWN, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
+import numpy as np
+from manim import DL, DOWN, LEFT, RIGHT, UR, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board, Playable
 from metaphors.drawing import triangulation_pieces, whole_caption
-from metaphors.layout import METAPHOR, PANEL_POLYGON
+from metaphors.layout import (
+    METAPHOR,
+    PANEL_CALL_Y,
+    PANEL_CODE,
+    PANEL_POLYGON,
+    PANEL_SOURCE,
+    SUBTITLE_WIDTH,
+    Box,
+    subtitle_centre,
+)
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -122,15 +132,19 @@ def _whole(board: Board) -> list[Playable]:
     corners = [[board.where[label] for label in _labels(board.objects[k])] for k in done]
     whole = triangulation_pieces(corners, board.at, theme)
     n = board.polygon.n
+    finder = board.objects.get("finder")
     shown: list[Playable] = [*board.drop(*done, "finder"), *[FadeIn(t) for t in whole]]
-    # the count where the black box stood, beside the picture, when the panel's rows leave
-    # room there; a panel of source takes the whole right half, and under the picture the
+    # the count where the black box stood, clear of the picture, the panel and the subtitle
+    # (:func:`_place`); with no black box, beside the picture when the panel's rows leave
+    # room there: a panel of source takes the whole right half, and under the picture the
     # count would meet the subtitle: the triangles alone then
-    if board.panel.mode == PSEUDOCODE:
+    if finder is not None or board.panel.mode == PSEUDOCODE:
         count = tag(text(f"n − 2 = {n} − 2\n= {len(whole)} triangles", font=theme.font,
                          size=theme.label_size, colour=theme.result), None, "counter")
-        # from the black box's left edge: the picture's right-most labels stay clear
-        count.move_to((BESIDE[0] - FINDER_WIDTH / 2 + count.width / 2, BESIDE[1] - 0.4, 0))
+        if finder is not None:  # from its left edge, as far from the panel
+            count.move_to(finder.get_left(), aligned_edge=LEFT)
+        else:  # from the black box's left edge: the picture's right-most labels stay clear
+            count.move_to((BESIDE[0] - FINDER_WIDTH / 2 + count.width / 2, BESIDE[1] - 0.4, 0))
         board.keep("counter", count)
         shown.append(FadeIn(count))
     board.keep("triangulation", VGroup(*whole))
@@ -138,24 +152,94 @@ def _whole(board: Board) -> list[Playable]:
 
 
 #: beside the picture, between it and the panel's polygon, above the panel's rows: where the
-#: black box stands and, after the last split, the count
+#: black box would rather stand (:func:`_place`), and, after the last split, the count
 BESIDE = ((METAPHOR.x + METAPHOR.width / 2 + PANEL_POLYGON.x - PANEL_POLYGON.width / 2) / 2
           + 0.15, PANEL_POLYGON.y - 0.4, 0.0)
 FINDER_WIDTH = 1.2  # the black box's
+#: the least gap between the black box and the picture, the panel, the title or a subtitle
+FINDER_GAP = 0.1
+#: the step of the places tried for the black box (scene units)
+FINDER_STEP = 0.05
+#: the frame's half width and half height (scene units)
+HALF_FRAME = (7.11, 4.0)
+
+Area = tuple[float, float, float, float]  # left, bottom, right, top
 
 
 def _finder(board: Board) -> VGroup:
-    """The black box: a closed box with a question mark, and what it is asked."""
+    """The black box: a closed box with a question mark, and what it is asked; the words
+    under the box where there is room for both beside the picture, else to its right, and
+    the box smaller (a panel of source leaves room only under its rows)."""
+    for compact in (False, True):
+        finder = _finder_shape(board, compact)
+        place = _place(finder, _taken(board))
+        if place is not None:
+            break
+    else:  # nowhere clear (a frame laid out otherwise): where it would rather stand
+        finder, place = _finder_shape(board, compact=False), BESIDE[:2]
+    return tag(finder.move_to((*place, 0)), "called", "finder")
+
+
+def _finder_shape(board: Board, compact: bool) -> VGroup:
     theme = board.theme
-    box = RoundedRectangle(corner_radius=0.12, width=FINDER_WIDTH, height=0.9,
-                           stroke_color=theme.called,
+    box = RoundedRectangle(corner_radius=0.12, width=1.0 if compact else FINDER_WIDTH,
+                           height=0.56 if compact else 0.9, stroke_color=theme.called,
                            stroke_width=theme.stroke, fill_color=theme.background,
                            fill_opacity=1.0)
-    mark = text("?", font=theme.font, size=48, colour=theme.called).move_to(box)
+    mark = text("?", font=theme.font, size=36 if compact else 48,
+                colour=theme.called).move_to(box)
+    rows = ("an inner diagonal?",) if compact else ("an inner", "diagonal?")
     words = VGroup(*[text(row, font=theme.font, size=theme.label_size, colour=theme.ink)
-                     for row in ("an inner", "diagonal?")]).arrange(DOWN, buff=0.08)
-    finder = VGroup(box, mark, words.next_to(box, DOWN, buff=0.15))
-    return tag(finder.move_to(BESIDE), "called", "finder")
+                     for row in rows]).arrange(DOWN, buff=0.08)
+    words.next_to(box, RIGHT if compact else DOWN, buff=0.15)
+    return VGroup(box, mark, words)
+
+
+def _area(mobject: Mobject) -> Area:
+    (left, bottom, _), (right, top, _) = mobject.get_corner(DL), mobject.get_corner(UR)
+    return (float(left), float(bottom), float(right), float(top))
+
+
+def _taken(board: Board) -> list[Area]:
+    """What the black box must keep clear of: the picture (outline, vertices and labels), the
+    panel (a source's whole box, as its window of lines moves; else its polygon, labels and
+    rows, and the call line if it shows), the title, and the highest a two-line subtitle
+    reaches."""
+    panel, theme = board.panel, board.theme
+    taken = [_area(m) for m in (board.shape, *board.markers.values(), board.title)]
+    if panel.shows_polygon:
+        taken += [_area(m) for m in (panel.outline, *panel.markers.values(), panel.code)]
+    else:
+        taken.append(_box_area(PANEL_SOURCE))
+    if panel.shows_calls:
+        taken.append(_box_area(Box(PANEL_CODE.x, PANEL_CALL_Y, PANEL_CODE.width, 0.4)))
+    # two lines of the tallest glyphs a caption has, a line's gap apart (rendering.typeset.balanced)
+    two_lines = 2 * text("(Ag)", font=theme.font, size=theme.caption_size).height + 0.1
+    top = subtitle_centre(two_lines)[1] + two_lines / 2
+    taken.append((-SUBTITLE_WIDTH / 2, -HALF_FRAME[1], SUBTITLE_WIDTH / 2, top))
+    return taken
+
+
+def _box_area(box: Box) -> Area:
+    return (box.x - box.width / 2, box.y - box.height / 2, box.x + box.width / 2,
+            box.y + box.height / 2)
+
+
+def _place(finder: Mobject, taken: Sequence[Area]) -> tuple[float, float] | None:
+    """The centre nearest :data:`BESIDE` (on a grid of :data:`FINDER_STEP`) where ``finder``
+    stays in the frame and :data:`FINDER_GAP` clear of every area ``taken``; None if none."""
+    w, h = finder.width / 2 + FINDER_GAP, finder.height / 2 + FINDER_GAP
+    xs = np.arange(-HALF_FRAME[0] + w, HALF_FRAME[0] - w, FINDER_STEP)
+    ys = np.arange(-HALF_FRAME[1] + h, HALF_FRAME[1] - h, FINDER_STEP)
+    x, y = np.meshgrid(xs, ys)
+    free = np.ones_like(x, dtype=bool)
+    for left, bottom, right, top in taken:
+        free &= (x + w <= left) | (x - w >= right) | (y + h <= bottom) | (y - h >= top)
+    if not free.any():
+        return None
+    far = np.where(free, (x - BESIDE[0]) ** 2 + (y - BESIDE[1]) ** 2, np.inf)
+    k = np.unravel_index(np.argmin(far), far.shape)  # the first of equals: deterministic
+    return (round(float(x[k]), 6), round(float(y[k]), 6))
 
 
 def find(board: Board, beat: FindDiagonal) -> None:
