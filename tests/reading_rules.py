@@ -465,20 +465,22 @@ def _label_boxes(marker: dict) -> Iterator[tuple[float, ...]]:
             yield tuple(node["box"])
 
 
-def _state_then(plays: list[dict], last: dict[str, tuple[int, str, dict]], k: int,
+def _state_then(data: dict, last: dict[str, tuple[int, str, dict]], k: int,
                 name: str) -> dict | None:
     """The node ``name`` as play ``k`` shows it: its last record, or, when that record is a
-    turn's start (a turn records where it starts), the start of the turn back after ``k``."""
+    turn's start (a turn records where it starts), the start of the turn back after ``k``,
+    or, never recorded again, as the graph's end has it."""
     if name not in last:
         return None
     _, kind, node = last[name]
     if kind != "Turn":
         return node
-    for play in plays[k + 1:]:
+    for play in data["plays"][k + 1:]:
         for later, then in (r for a in play["animations"] for r in _recorded(a)):
             if then.get("name") == name:
                 return then if later == "Turn" else None
-    return None
+    ends = [n for top in data.get("final", ()) for n in mobject_nodes(top) if n.get("name") == name]
+    return ends[0] if ends else None
 
 
 def crowded_verdicts(data: dict) -> list[str]:
@@ -503,7 +505,7 @@ def crowded_verdicts(data: dict) -> list[str]:
                 last[name] = (k, kind, node)
         for mark in marks:
             home = "analysis:polygon" if mark["name"].startswith("analysis:") else "polygon"
-            polygon = _state_then(plays, last, k, home)
+            polygon = _state_then(data, last, k, home)
             box = _box_of(mark)
             if polygon is None or box is None:
                 found.append(f"play {k} {mark['name']}: no polygon drawn")
@@ -513,7 +515,7 @@ def crowded_verdicts(data: dict) -> list[str]:
                     shape.distance(LineString([a, b]))
                     for a, b in zip(corners, corners[1:] + corners[:1], strict=True)}
             for name in [n for n in last if n.startswith("vertex:")]:
-                marker = _state_then(plays, last, k, name)
+                marker = _state_then(data, last, k, name)
                 dots = [n for n in mobject_nodes(marker or {}) if n.get("points")]
                 if not dots:
                     continue

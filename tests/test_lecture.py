@@ -30,6 +30,7 @@ from tests.reading_rules import (
     answers_over_pictures,
     broken_counts,
     crossfaded_subtitles,
+    crowded_verdicts,
     hidden_failures,
     repeated_verdicts,
     replayed_beats,
@@ -480,6 +481,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert broken_counts(data) == [], chapter.slug
     # issue 22: the whole triangulation comes under its own caption, not the last step's
     assert stale_endings(data) == [], chapter.slug
+    # issue 22: a verdict's ✓ or ✗ stands clear of every edge and label
+    assert crowded_verdicts(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():

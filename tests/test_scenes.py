@@ -46,6 +46,7 @@ from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
     crossfaded_subtitles,
+    crowded_verdicts,
     graph_nodes,
     hidden_failures,
     small_texts,
@@ -227,6 +228,13 @@ def test_the_whole_triangulation_comes_under_its_own_caption(case):
     it is not the last step's (a split, a slice, a stack), which no longer says what is on
     screen."""
     assert stale_endings(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_verdicts_mark_stands_clear_of_edges_and_labels(case):
+    """Issue 22: a ✓ or ✗ keeps 2 % of the frame's height from every edge of its polygon
+    and every vertex label (a ✓ on edge BC reads as judging BC)."""
+    assert crowded_verdicts(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
