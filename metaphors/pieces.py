@@ -14,7 +14,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
 
 import numpy as np
-from manim import DL, DOWN, LEFT, RIGHT, UR, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
+from manim import DL, DOWN, RIGHT, UR, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board, Playable
@@ -141,9 +141,12 @@ def _whole(board: Board) -> list[Playable]:
     if finder is not None or board.panel.mode == PSEUDOCODE:
         count = tag(text(f"n − 2 = {n} − 2\n= {len(whole)} triangles", font=theme.font,
                          size=theme.label_size, colour=theme.result), None, "counter")
-        if finder is not None:  # from its left edge, as far from the panel
-            count.move_to(finder.get_left(), aligned_edge=LEFT)
-        else:  # from the black box's left edge: the picture's right-most labels stay clear
+        # nearest the black box's left edge, as clear as it was
+        spot = None if finder is None else _place(
+            count, _taken(board), near=finder.get_left() + np.array([count.width / 2, 0, 0]))
+        if spot is not None:
+            count.move_to((*spot, 0))
+        else:  # from where the black box would stand: the picture's right-most labels stay clear
             count.move_to((BESIDE[0] - FINDER_WIDTH / 2 + count.width / 2, BESIDE[1] - 0.4, 0))
         board.keep("counter", count)
         shown.append(FadeIn(count))
@@ -158,6 +161,9 @@ BESIDE = ((METAPHOR.x + METAPHOR.width / 2 + PANEL_POLYGON.x - PANEL_POLYGON.wid
 FINDER_WIDTH = 1.2  # the black box's
 #: the least gap between the black box and the picture, the panel, the title or a subtitle
 FINDER_GAP = 0.1
+#: how much further the black box keeps from the pictures' outlines and labels (the
+#: metaphor's, the panel's)
+PICTURE_GAP = 0.25
 #: the step of the places tried for the black box (scene units)
 FINDER_STEP = 0.05
 #: the frame's half width and half height (scene units)
@@ -206,9 +212,12 @@ def _taken(board: Board) -> list[Area]:
     rows, and the call line if it shows), the title, and the highest a two-line subtitle
     reaches."""
     panel, theme = board.panel, board.theme
-    taken = [_area(m) for m in (board.shape, *board.markers.values(), board.title)]
+    # the pictures from further off: a box beside a label reads as part of its name
+    taken = [_grown(_area(m), PICTURE_GAP) for m in (board.shape, *board.markers.values())]
+    taken.append(_area(board.title))
     if panel.shows_polygon:
-        taken += [_area(m) for m in (panel.outline, *panel.markers.values(), panel.code)]
+        taken += [_grown(_area(m), PICTURE_GAP) for m in (panel.outline, *panel.markers.values())]
+        taken.append(_area(panel.code))
     else:
         taken.append(_box_area(PANEL_SOURCE))
     if panel.shows_calls:
@@ -220,14 +229,19 @@ def _taken(board: Board) -> list[Area]:
     return taken
 
 
+def _grown(area: Area, by: float) -> Area:
+    return (area[0] - by, area[1] - by, area[2] + by, area[3] + by)
+
+
 def _box_area(box: Box) -> Area:
     return (box.x - box.width / 2, box.y - box.height / 2, box.x + box.width / 2,
             box.y + box.height / 2)
 
 
-def _place(finder: Mobject, taken: Sequence[Area]) -> tuple[float, float] | None:
-    """The centre nearest :data:`BESIDE` (on a grid of :data:`FINDER_STEP`) where ``finder``
-    stays in the frame and :data:`FINDER_GAP` clear of every area ``taken``; None if none."""
+def _place(finder: Mobject, taken: Sequence[Area],
+           near: Sequence[float] = BESIDE) -> tuple[float, float] | None:
+    """The centre nearest ``near`` (on a grid of :data:`FINDER_STEP`) where ``finder`` stays
+    in the frame and :data:`FINDER_GAP` clear of every area ``taken``; None if none."""
     w, h = finder.width / 2 + FINDER_GAP, finder.height / 2 + FINDER_GAP
     xs = np.arange(-HALF_FRAME[0] + w, HALF_FRAME[0] - w, FINDER_STEP)
     ys = np.arange(-HALF_FRAME[1] + h, HALF_FRAME[1] - h, FINDER_STEP)
@@ -237,7 +251,7 @@ def _place(finder: Mobject, taken: Sequence[Area]) -> tuple[float, float] | None
         free &= (x + w <= left) | (x - w >= right) | (y + h <= bottom) | (y - h >= top)
     if not free.any():
         return None
-    far = np.where(free, (x - BESIDE[0]) ** 2 + (y - BESIDE[1]) ** 2, np.inf)
+    far = np.where(free, (x - near[0]) ** 2 + (y - near[1]) ** 2, np.inf)
     k = np.unravel_index(np.argmin(far), far.shape)  # the first of equals: deterministic
     return (round(float(x[k]), 6), round(float(y[k]), 6))
 
