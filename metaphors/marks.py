@@ -2,8 +2,8 @@
 
 A mark over an edge or a label reads as part of the picture (a ✓ on edge BC seems to judge
 BC). It goes beside the middle of the claim it judges, inside the polygon if there is room
-there, else outside it, and always at least :data:`MARK_GAP` from every edge drawn (the
-polygon's, the diagonals', the claim itself) and from every label; the first such place in a
+there, else outside it, farther off, and always at least :data:`MARK_GAP` from every edge
+drawn (the polygon's, the diagonals', the claim itself) and from every label; the first such place in a
 fixed order, so a run places it the same way every time.
 """
 
@@ -36,8 +36,8 @@ def mark_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment
     """The centre for a mark ``size`` (width, height) judging ``claim``: the first place, in
     the order inside ``inside`` before outside it, nearest the claim, nearest its middle, on
     its left before its right, that stays in ``within``, :data:`MARK_GAP` from the claim,
-    every edge and every label, and off ``avoid`` (a shaded region); if there is none, the
-    place of those that keeps the most gap."""
+    every edge and every label (twice that outside ``inside``), and off ``avoid`` (a shaded
+    region); if there is none, the place of those that keeps the most gap."""
     a, b = np.asarray(claim[0], dtype=float)[:2], np.asarray(claim[1], dtype=float)[:2]
     along = b - a
     normal = np.array([-along[1], along[0]]) / max(float(np.linalg.norm(along)), 1e-9)
@@ -61,12 +61,13 @@ def mark_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment
     framed = ((centres[:, 0] - half[0] >= left) & (centres[:, 0] + half[0] <= left + within.width)
               & (centres[:, 1] - half[1] >= bottom)
               & (centres[:, 1] + half[1] <= bottom + within.height))
-    free = framed & (gap >= MARK_GAP)
+    held = shapely.contains(inside, boxes)
+    # outside P, twice as far: a mark just past an edge seems to judge that edge
+    free = framed & (gap >= np.where(held, MARK_GAP, 2 * MARK_GAP))
     if avoid is not None and not avoid.is_empty:
         free &= ~shapely.intersects(boxes, avoid)
     if not free.any():
         return np.array([*centres[int(np.argmax(np.where(framed, gap, -1.0)))], 0.0])
-    held = shapely.contains(inside, boxes)
     best = min((k for k in range(len(places)) if free[k]),
                key=lambda k: (not held[k], *order[k]))
     return np.array([*centres[best], 0.0])
