@@ -90,13 +90,17 @@ def ring_edges(ring: Sequence[Point]) -> list[Segment]:
 def board_spot(board: Board, mark: Mobject, line: Mobject,
                moved: Callable[[np.ndarray], np.ndarray] | None = None) -> np.ndarray:
     """Where a run's verdict ``mark`` on the claim ``line`` goes on its board (:func:`mark_spot`):
-    clear of the polygon's edges and holes, the diagonals drawn and the vertex labels.
+    clear of the outline's edges (its holes' too: the largest ring is the outer one), the
+    diagonals drawn and the vertex labels.
     ``moved``: where each point of the picture ends (a turn under way), None: as it is."""
     def end(p: np.ndarray) -> np.ndarray:
         return moved(p) if moved is not None else p
 
-    rings = [[end(board.vertex(label)) for label in board.polygon.labels],
-             *[[end(board.at(p)) for p in hole["points"]] for hole in board.holes]]
+    # the outline as drawn, not P: ear clipping's fruit shrinks as its slices go
+    paths = [path for part in board.shape.family_members_with_points()
+             for path in part.get_subpaths() if len(path) >= 12]  # a triangle's, at least
+    rings = sorted(([end(p) for p in path[:-1:4]] for path in paths),
+                   key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
     edges = [edge for ring in rings for edge in ring_edges(ring)]
     edges += [(end(m.get_start()), end(m.get_end())) for key, m in board.objects.items()
               if key.startswith("diagonal:") and isinstance(m, Line)]
