@@ -141,9 +141,9 @@ def _whole(board: Board) -> list[Playable]:
     if finder is not None or board.panel.mode == PSEUDOCODE:
         count = tag(text(f"n − 2 = {n} − 2\n= {len(whole)} triangles", font=theme.font,
                          size=theme.label_size, colour=theme.result), None, "counter")
-        # nearest the black box's left edge, as clear as it was
-        spot = None if finder is None else _place(
-            count, _taken(board), near=finder.get_left() + np.array([count.width / 2, 0, 0]))
+        # nearest where the black box stood, as clear as it was
+        spot = None if finder is None else _place(count, _taken(board),
+                                                  near=tuple(finder.get_center()[:2]))
         if spot is not None:
             count.move_to((*spot, 0))
         else:  # from where the black box would stand: the picture's right-most labels stay clear
