@@ -22,6 +22,7 @@ from manim import (
 
 from metaphors.board import Board, Playable
 from metaphors.drawing import crossed_edge
+from metaphors.marks import board_spot
 from metaphors.performing import Performances, act, performs
 from metaphors.picture import upright
 from metaphors.tags import tag
@@ -87,8 +88,8 @@ def _judged(board: Board, beat: Verdict) -> None:
         board.scene.play(*board.drop("T"), run_time=0.3 * beat.pace)
     if beat.ok:
         mark = tag(text("✓", font=theme.font, size=48, colour=theme.result), "result", "tick")
-        if line is not None:
-            mark.next_to(line.get_center(), direction=[0, 1, 0], buff=0.15)
+        if line is not None:  # beside the claim, clear of every edge and label
+            mark.move_to(board_spot(board, mark, line))
         board.keep("verdict", mark)
         board.play(beat, FadeIn(mark, scale=1.5), run_time=1.0)
         return
@@ -107,8 +108,8 @@ def _judged(board: Board, beat: Verdict) -> None:
         board.keep("crossing", spot)
         anims += [FadeIn(spot), Flash(at, color=theme.rejected, flash_radius=0.5)]
     mark = tag(text("✗", font=theme.font, size=48, colour=theme.rejected), "rejected", "cross")
-    if line is not None:
-        mark.next_to(line.get_center(), direction=[0, 1, 0], buff=0.15)
+    if line is not None:  # beside the claim, clear of every edge and label
+        mark.move_to(board_spot(board, mark, line))
     board.keep("verdict", mark)
     board.play(beat, *anims, FadeIn(mark, scale=1.5), run_time=1.5)
 

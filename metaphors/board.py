@@ -58,6 +58,7 @@ class Board:
                                tuple(range(len(labels))))
         self.holes = list(holes)  # each {"points", "labels"}: drawn unfilled, their vertices marked
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
+        self.box = box  # the picture's place on the frame
         self.shape = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
                          "polygon")
         self.markers: dict[str, Mobject] = {

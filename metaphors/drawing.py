@@ -140,6 +140,13 @@ def triangulation_pieces(triangles: Sequence[Sequence[Sequence[float]]], at: Any
     return shown
 
 
+def whole_caption(triangles: int) -> str:
+    """The caption over a run's ending, the whole triangulation drawn: the step before it
+    (a split, a slice, a stack) is over, and its caption would no longer say what is on
+    screen."""
+    return f"The whole triangulation: {triangles} triangles"
+
+
 def crossed_edge(start: Any, end: Any, name: str, theme: Theme = THEME) -> Line:
     """The edge a wrong claim crosses, from ``start`` to ``end`` on screen: thick, in the red
     of what fails (runs, analyses, exercises and figures draw it alike)."""

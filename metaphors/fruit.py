@@ -7,6 +7,7 @@ Every slice, and what is left of the fruit after it, comes from the log (the bea
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import replace
 from typing import Any
 
 from manim import (
@@ -28,7 +29,7 @@ from manim import (
 from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
 from metaphors.board import Board
-from metaphors.drawing import triangulation_pieces
+from metaphors.drawing import triangulation_pieces, whole_caption
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
@@ -164,7 +165,9 @@ def _whole(board: Board, beat: Slice) -> None:
     board.scene.remove(board.objects["counter"])
     board.keep("counter", result)
     board.keep("triangulation", VGroup(*pieces))
-    board.scene.play(*[FadeIn(p) for p in pieces], FadeIn(result), run_time=1.2)
+    # under its own caption, at full pace: the last slice's words are over
+    board.play(replace(beat, caption=whole_caption(beat.total), pace=1.0),
+               *[FadeIn(p) for p in pieces], FadeIn(result), run_time=1.2)
     board.scene.wait(1.0)
 
 

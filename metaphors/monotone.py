@@ -10,6 +10,7 @@ step: never fast-forwarded. Split and merge vertices have colours of their own
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
+from dataclasses import replace
 
 from manim import (
     DOWN,
@@ -27,7 +28,7 @@ from manim import (
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board
-from metaphors.drawing import triangulation_pieces
+from metaphors.drawing import triangulation_pieces, whole_caption
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -162,8 +163,9 @@ def _whole(board: Board, beat: Stack) -> None:
     count.next_to(board.shape, direction=[0, -1, 0], buff=0.3)
     board.keep("triangulation", VGroup(*whole))
     board.keep("counter", count)
-    board.scene.play(*board.drop(*tints), *[FadeIn(t) for t in whole], FadeIn(count),
-                     run_time=1.2)
+    # under its own caption, at full pace: the last piece's words are over
+    board.play(replace(beat, caption=whole_caption(len(whole)), pace=1.0),
+               *board.drop(*tints), *[FadeIn(t) for t in whole], FadeIn(count), run_time=1.2)
     board.scene.wait(1.0)
 
 

@@ -10,10 +10,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from manim import UP, Circle, Mobject
+from manim import Circle, Mobject
 
 from metaphors.board import Board, Playable
 from metaphors.layout import METAPHOR
+from metaphors.marks import board_spot
 from rendering.turn import Turn
 from rendering.typeset import FlatText
 from story.beats import Beat
@@ -57,11 +58,19 @@ def turn_to(board: Board, angle: float) -> list[Turn]:
     turns = {id(m): Turn(m, math.radians(delta), METAPHOR.center, k, upright=_UPRIGHT)
              for m in _movers(board)}
     line, mark = board.objects.get("claim"), board.objects.get("verdict")
-    if line is not None and mark is not None and id(mark) in turns:  # the ✓ stays above
-        above = turns[id(line)].end_centre(line) + (0.15 + mark.height / 2) * UP
-        turns[id(mark)].shift = above - turns[id(mark)].end_centre(mark)
+    if line is not None and mark is not None and id(mark) in turns:
+        # the mark placed again for the turned picture: its labels keep upright, so a place
+        # clear of them before the turn need not be after it
+        turn = turns[id(mark)]
+        spot = board_spot(board, mark, line, moved=lambda p: _turned(turn, p))
+        turn.shift = spot - turn.end_centre(mark)
     board.frame = new
     return list(turns.values())
+
+
+def _turned(turn: Turn, point: np.ndarray) -> np.ndarray:
+    """Where a point of the picture ends when ``turn`` is over (``shift`` left out)."""
+    return np.array([*((point[:2] - turn.pivot) @ turn.matrix(1.0).T + turn.pivot), point[2]])
 
 
 #: what a turned picture holds for one claim: the verdict takes it away (in this order)

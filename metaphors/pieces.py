@@ -11,13 +11,24 @@ by the frame every run shares (:mod:`metaphors.basics`).
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import replace
 
-from manim import DOWN, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
+import numpy as np
+from manim import DL, DOWN, RIGHT, UR, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board, Playable
-from metaphors.drawing import triangulation_pieces
-from metaphors.layout import METAPHOR, PANEL_POLYGON
+from metaphors.drawing import triangulation_pieces, whole_caption
+from metaphors.layout import (
+    METAPHOR,
+    PANEL_CALL_Y,
+    PANEL_CODE,
+    PANEL_POLYGON,
+    PANEL_SOURCE,
+    SUBTITLE_WIDTH,
+    Box,
+    subtitle_centre,
+)
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -95,10 +106,8 @@ def split(board: Board, beat: Split) -> None:
     anims += board.drop("verdict", f"piece:{beat.parent}")
     if board.shape.get_fill_opacity() > 0:
         anims.append(board.shape.animate.set_fill(opacity=0))
-    if all(len(p) == 3 for p in beat.points) and not any(
-            key.startswith("piece:") for key in board.objects):
-        board.play(beat, *anims, *_whole(board, beat.labels), run_time=1.2)
-        return
+    last = all(len(p) == 3 for p in beat.points) and not any(
+        key.startswith("piece:") for key in board.objects)
     chosen: set[str] = set()
     for piece, points, labels in zip(beat.pieces, beat.points,
                                      beat.labels, strict=False):
@@ -109,27 +118,36 @@ def split(board: Board, beat: Split) -> None:
         board.keep(f"triangle:{''.join(labels)}" if done else f"piece:{piece}", tint)
         anims.append(FadeIn(tint))
     board.play(beat, *anims, run_time=1.2)
+    if last:  # the whole triangulation under its own caption: the split's is over
+        triangles = sum(1 for key in board.objects if key.startswith("triangle:"))
+        board.play(replace(beat, caption=whole_caption(triangles), pace=1.0), *_whole(board),
+                   run_time=1.2)
 
 
-def _whole(board: Board, last: Sequence[Sequence[str]]) -> list[Playable]:
-    """The last split, into the triangles ``last`` (their labels): the finished triangles
-    give way to the whole triangulation, each triangle its own colour, and the count it had
-    to reach, n − 2."""
+def _whole(board: Board) -> list[Playable]:
+    """After the last split: the finished triangles give way to the whole triangulation,
+    each triangle its own colour, and the count it had to reach, n − 2."""
     theme = board.theme
     done = [k for k in board.objects if k.startswith("triangle:")]
-    corners = [[board.where[label] for label in labels]
-               for labels in [*(_labels(board.objects[k]) for k in done), *last]]
+    corners = [[board.where[label] for label in _labels(board.objects[k])] for k in done]
     whole = triangulation_pieces(corners, board.at, theme)
     n = board.polygon.n
+    finder = board.objects.get("finder")
     shown: list[Playable] = [*board.drop(*done, "finder"), *[FadeIn(t) for t in whole]]
-    # the count where the black box stood, beside the picture, when the panel's rows leave
-    # room there; a panel of source takes the whole right half, and under the picture the
+    # the count where the black box stood, clear of the picture, the panel and the subtitle
+    # (:func:`_place`); with no black box, beside the picture when the panel's rows leave
+    # room there: a panel of source takes the whole right half, and under the picture the
     # count would meet the subtitle: the triangles alone then
-    if board.panel.mode == PSEUDOCODE:
+    if finder is not None or board.panel.mode == PSEUDOCODE:
         count = tag(text(f"n − 2 = {n} − 2\n= {len(whole)} triangles", font=theme.font,
                          size=theme.label_size, colour=theme.result), None, "counter")
-        # from the black box's left edge: the picture's right-most labels stay clear
-        count.move_to((BESIDE[0] - FINDER_WIDTH / 2 + count.width / 2, BESIDE[1] - 0.4, 0))
+        # nearest where the black box stood, as clear as it was
+        spot = None if finder is None else _place(count, _taken(board),
+                                                  near=tuple(finder.get_center()[:2]))
+        if spot is not None:
+            count.move_to((*spot, 0))
+        else:  # from where the black box would stand: the picture's right-most labels stay clear
+            count.move_to((BESIDE[0] - FINDER_WIDTH / 2 + count.width / 2, BESIDE[1] - 0.4, 0))
         board.keep("counter", count)
         shown.append(FadeIn(count))
     board.keep("triangulation", VGroup(*whole))
@@ -137,24 +155,105 @@ def _whole(board: Board, last: Sequence[Sequence[str]]) -> list[Playable]:
 
 
 #: beside the picture, between it and the panel's polygon, above the panel's rows: where the
-#: black box stands and, after the last split, the count
+#: black box would rather stand (:func:`_place`), and, after the last split, the count
 BESIDE = ((METAPHOR.x + METAPHOR.width / 2 + PANEL_POLYGON.x - PANEL_POLYGON.width / 2) / 2
           + 0.15, PANEL_POLYGON.y - 0.4, 0.0)
 FINDER_WIDTH = 1.2  # the black box's
+#: the least gap between the black box and the picture, the panel, the title or a subtitle
+FINDER_GAP = 0.1
+#: how much further the black box keeps from the pictures' outlines and labels (the
+#: metaphor's, the panel's)
+PICTURE_GAP = 0.25
+#: the step of the places tried for the black box (scene units)
+FINDER_STEP = 0.05
+#: the frame's half width and half height (scene units)
+HALF_FRAME = (7.11, 4.0)
+
+Area = tuple[float, float, float, float]  # left, bottom, right, top
 
 
 def _finder(board: Board) -> VGroup:
-    """The black box: a closed box with a question mark, and what it is asked."""
+    """The black box: a closed box with a question mark, and what it is asked; the words
+    under the box where there is room for both beside the picture, else to its right, and
+    the box smaller (a panel of source leaves room only under its rows)."""
+    for compact in (False, True):
+        finder = _finder_shape(board, compact)
+        place = _place(finder, _taken(board))
+        if place is not None:
+            break
+    else:  # nowhere clear (a frame laid out otherwise): where it would rather stand
+        finder, place = _finder_shape(board, compact=False), BESIDE[:2]
+    return tag(finder.move_to((*place, 0)), "called", "finder")
+
+
+def _finder_shape(board: Board, compact: bool) -> VGroup:
     theme = board.theme
-    box = RoundedRectangle(corner_radius=0.12, width=FINDER_WIDTH, height=0.9,
-                           stroke_color=theme.called,
+    box = RoundedRectangle(corner_radius=0.12, width=1.0 if compact else FINDER_WIDTH,
+                           height=0.56 if compact else 0.9, stroke_color=theme.called,
                            stroke_width=theme.stroke, fill_color=theme.background,
                            fill_opacity=1.0)
-    mark = text("?", font=theme.font, size=48, colour=theme.called).move_to(box)
+    mark = text("?", font=theme.font, size=36 if compact else 48,
+                colour=theme.called).move_to(box)
+    rows = ("an inner diagonal?",) if compact else ("an inner", "diagonal?")
     words = VGroup(*[text(row, font=theme.font, size=theme.label_size, colour=theme.ink)
-                     for row in ("an inner", "diagonal?")]).arrange(DOWN, buff=0.08)
-    finder = VGroup(box, mark, words.next_to(box, DOWN, buff=0.15))
-    return tag(finder.move_to(BESIDE), "called", "finder")
+                     for row in rows]).arrange(DOWN, buff=0.08)
+    words.next_to(box, RIGHT if compact else DOWN, buff=0.15)
+    return VGroup(box, mark, words)
+
+
+def _area(mobject: Mobject) -> Area:
+    (left, bottom, _), (right, top, _) = mobject.get_corner(DL), mobject.get_corner(UR)
+    return (float(left), float(bottom), float(right), float(top))
+
+
+def _taken(board: Board) -> list[Area]:
+    """What the black box must keep clear of: the picture (outline, vertices and labels), the
+    panel (a source's whole box, as its window of lines moves; else its polygon, labels and
+    rows, and the call line if it shows), the title, and the highest a two-line subtitle
+    reaches."""
+    panel, theme = board.panel, board.theme
+    # the pictures from further off: a box beside a label reads as part of its name
+    taken = [_grown(_area(m), PICTURE_GAP) for m in (board.shape, *board.markers.values())]
+    taken.append(_area(board.title))
+    if panel.shows_polygon:
+        taken += [_grown(_area(m), PICTURE_GAP) for m in (panel.outline, *panel.markers.values())]
+        taken.append(_area(panel.code))
+    else:
+        taken.append(_box_area(PANEL_SOURCE))
+    if panel.shows_calls:
+        taken.append(_box_area(Box(PANEL_CODE.x, PANEL_CALL_Y, PANEL_CODE.width, 0.4)))
+    # two lines of the tallest glyphs a caption has, a line's gap apart (rendering.typeset.balanced)
+    two_lines = 2 * text("(Ag)", font=theme.font, size=theme.caption_size).height + 0.1
+    top = subtitle_centre(two_lines)[1] + two_lines / 2
+    taken.append((-SUBTITLE_WIDTH / 2, -HALF_FRAME[1], SUBTITLE_WIDTH / 2, top))
+    return taken
+
+
+def _grown(area: Area, by: float) -> Area:
+    return (area[0] - by, area[1] - by, area[2] + by, area[3] + by)
+
+
+def _box_area(box: Box) -> Area:
+    return (box.x - box.width / 2, box.y - box.height / 2, box.x + box.width / 2,
+            box.y + box.height / 2)
+
+
+def _place(finder: Mobject, taken: Sequence[Area],
+           near: Sequence[float] = BESIDE) -> tuple[float, float] | None:
+    """The centre nearest ``near`` (on a grid of :data:`FINDER_STEP`) where ``finder`` stays
+    in the frame and :data:`FINDER_GAP` clear of every area ``taken``; None if none."""
+    w, h = finder.width / 2 + FINDER_GAP, finder.height / 2 + FINDER_GAP
+    xs = np.arange(-HALF_FRAME[0] + w, HALF_FRAME[0] - w, FINDER_STEP)
+    ys = np.arange(-HALF_FRAME[1] + h, HALF_FRAME[1] - h, FINDER_STEP)
+    x, y = np.meshgrid(xs, ys)
+    free = np.ones_like(x, dtype=bool)
+    for left, bottom, right, top in taken:
+        free &= (x + w <= left) | (x - w >= right) | (y + h <= bottom) | (y - h >= top)
+    if not free.any():
+        return None
+    far = np.where(free, (x - near[0]) ** 2 + (y - near[1]) ** 2, np.inf)
+    k = np.unravel_index(np.argmin(far), far.shape)  # the first of equals: deterministic
+    return (round(float(x[k]), 6), round(float(y[k]), 6))
 
 
 def find(board: Board, beat: FindDiagonal) -> None:

@@ -22,6 +22,7 @@ from geometry.polygon import Polygon
 from metaphors.captions import whole_frames
 from metaphors.drawing import Frame, polygon_mobject, vertex_markers
 from metaphors.layout import SUBTITLE_WIDTH, TITLE_Y, Box, subtitle_centre
+from metaphors.marks import area_of, mark_spot, ring_edges
 from metaphors.recorded import captions_of, mark_step
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -215,13 +216,14 @@ def place_name(stage: Stage, name, a, b, avoid: Sequence = ()) -> None:
 
 
 def beside(stage: Stage, mark, line, region_) -> None:
-    """Put a mark beside a line's middle, on the side away from a shaded region."""
-    start, end = line.get_start(), line.get_end()
-    normal = np.array([start[1] - end[1], end[0] - start[0], 0.0])
-    normal /= max(float(np.linalg.norm(normal)), 1e-9)
-    middle = (start + end) / 2
-    inner = shapely.Point(*stage.at(region_.centroid.coords[0])[:2]) if not region_.is_empty \
-        else None
-    if inner is not None and np.dot(np.array([inner.x, inner.y, 0.0]) - middle, normal) > 0:
-        normal = -normal
-    mark.move_to(middle + normal * (0.15 + max(mark.width, mark.height) / 2))
+    """Put a mark beside a line, off a shaded region (given in the polygon's coordinates)
+    and clear of every edge (the polygon's, T's) and label (:func:`metaphors.marks.mark_spot`)."""
+    ring = [stage.vertex(label) for label in stage.polygon.labels]
+    edges = ring_edges(ring)
+    if stage.triangle is not None:
+        edges += ring_edges(list(stage.triangle.get_vertices()))
+    labels = [area_of(part) for marker in stage.markers.values() for part in marker]
+    shaded = shapely.transform(region_, lambda xy: np.array([stage.at(p)[:2] for p in xy]))
+    mark.move_to(mark_spot((mark.width, mark.height), (line.get_start(), line.get_end()),
+                           edges, labels, shapely.Polygon([p[:2] for p in ring]), BOX,
+                           avoid=shaded))

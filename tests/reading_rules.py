@@ -185,8 +185,8 @@ def _corners(node: dict) -> list[tuple[float, float]]:
     return [(x, y) for x, y, _ in node["points"][::4]]
 
 
-def _near(p: tuple[float, float], corners: list[tuple[float, float]]) -> bool:
-    return any(abs(p[0] - x) < 1e-3 and abs(p[1] - y) < 1e-3 for x, y in corners)
+def _near(p: tuple[float, float], corners: list[tuple[float, float]], within: float = 1e-3) -> bool:
+    return any(abs(p[0] - x) < within and abs(p[1] - y) < within for x, y in corners)
 
 
 def hidden_failures(data: dict) -> list[str]:
@@ -397,3 +397,133 @@ def repeated_verdicts(data: dict) -> list[str]:
             counts[(section, caption)] = counts.get((section, caption), 0) + 1
     return [f"{n} × {caption!r} ({section})" for (section, caption), n in counts.items()
             if n > 1]
+
+
+# --- issue 22: the caption says what is on screen -----------------------------------------------
+
+#: what a beat's words play animates besides the picture: the subtitle, the panel's text
+_WORDS = ("subtitle", "title", "panel:", "code:")
+
+
+def _draws_picture(play: dict) -> bool:
+    """Whether a play changes more than words (subtitle, panel text) or waits."""
+    def picture(anim: dict) -> bool:
+        if anim.get("animations"):
+            return any(picture(a) for a in anim["animations"])
+        name = (anim.get("mobject") or {}).get("name") or ""
+        return anim["type"] != "Wait" and not name.startswith(_WORDS)
+    return any(picture(a) for a in play["animations"])
+
+
+def stale_endings(data: dict) -> list[str]:
+    """The plays that draw a run's whole triangulation while the caption on screen is a step
+    caption of an earlier beat, as ``"play 40: 'Split along …'"``: a caption said before in
+    the run (since its polygon was drawn), or one that was up while an earlier beat's picture
+    changed (from its own play to the triangulation's)."""
+    found = []
+    plays = data["plays"]
+    run_start, said_at = 0, -1
+    for k, play in enumerate(plays):
+        tops = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        if any(kind in INCOMING and name == "polygon" for kind, name in tops):
+            run_start = k
+        if play.get("subcaption"):
+            said_at = k
+        if not any(kind in INCOMING and name == "triangulation" for kind, name in tops):
+            continue
+        if said_at < 0:
+            continue
+        caption = plays[said_at]["subcaption"]
+        earlier = any(p.get("subcaption") == caption for p in plays[run_start:said_at])
+        over = any(_draws_picture(p) for p in plays[said_at:k])
+        if earlier or over:
+            found.append(f"play {k}: {caption!r}")
+    return found
+
+
+# --- issue 22: a verdict's mark reads -------------------------------------------------------------
+
+#: 2 % of the frame's height: the least gap between a verdict's ✓ or ✗ and an edge or label
+LEAST_MARK_GAP = 0.16
+#: the names of the verdicts' marks (a run's, an analysis's)
+_MARKS = ("tick", "cross", "analysis:tick", "analysis:cross")
+
+
+def _recorded(anim: dict) -> Iterator[tuple[str, dict]]:
+    """(the animation's type, node) of every top mobject an animation (or its members) has:
+    its mobject and its target, the state it ends in."""
+    for key in ("mobject", "target"):
+        if key in anim:
+            yield anim["type"], anim[key]
+    for child in anim.get("animations", ()):
+        yield from _recorded(child)
+
+
+def _label_boxes(marker: dict) -> Iterator[tuple[float, ...]]:
+    for node in mobject_nodes(marker):
+        if node.get("box") and (node.get("text") or "").strip():
+            yield tuple(node["box"])
+
+
+def _state_then(data: dict, last: dict[str, tuple[int, str, dict]], k: int,
+                name: str) -> dict | None:
+    """The node ``name`` as play ``k`` shows it: its last record, or, when that record is a
+    turn's start (a turn records where it starts), the start of the turn back after ``k``,
+    or, never recorded again, as the graph's end has it."""
+    if name not in last:
+        return None
+    _, kind, node = last[name]
+    if kind != "Turn":
+        return node
+    for play in data["plays"][k + 1:]:
+        for later, then in (r for a in play["animations"] for r in _recorded(a)):
+            if then.get("name") == name:
+                return then if later == "Turn" else None
+    ends = [n for top in data.get("final", ()) for n in mobject_nodes(top) if n.get("name") == name]
+    return ends[0] if ends else None
+
+
+def crowded_verdicts(data: dict) -> list[str]:
+    """The verdicts' marks (✓, ✗) that come nearer than :data:`LEAST_MARK_GAP` to an edge of
+    their polygon or to one of its vertex labels, as ``"play 38 tick: 0.05 from edge …"``;
+    a mark whose polygon cannot be found is reported too. The polygon and the labels are the
+    last drawn before the mark (a turned picture's: as the turn back starts from it)."""
+    import numpy as np
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    plays = data["plays"]
+    last: dict[str, tuple[int, str, dict]] = {}  # name: (play, animation type, node)
+    found = []
+    for k, play in enumerate(plays):
+        marks = []
+        for kind, node in (r for a in play["animations"] for r in _recorded(a)):
+            name = node.get("name") or ""
+            if name in _MARKS and kind in INCOMING:
+                marks.append(node)
+            elif name in _POLYGONS or name.startswith("vertex:"):
+                last[name] = (k, kind, node)
+        for mark in marks:
+            home = "analysis:polygon" if mark["name"].startswith("analysis:") else "polygon"
+            polygon = _state_then(data, last, k, home)
+            box = _box_of(mark)
+            if polygon is None or box is None:
+                found.append(f"play {k} {mark['name']}: no polygon drawn")
+                continue
+            shape, corners = area(*box), _corners(polygon)
+            gaps = {f"edge ({a[0]:g}, {a[1]:g})–({b[0]:g}, {b[1]:g})":
+                    shape.distance(LineString([a, b]))
+                    for a, b in zip(corners, corners[1:] + corners[:1], strict=True)}
+            for name in [n for n in last if n.startswith("vertex:")]:
+                marker = _state_then(data, last, k, name)
+                dots = [n for n in mobject_nodes(marker or {}) if n.get("points")]
+                if not dots:
+                    continue
+                centre = tuple(np.mean([q[:2] for q in dots[0]["points"]], axis=0))
+                if _near(centre, corners, 0.05):  # a vertex of this polygon
+                    for label in _label_boxes(marker or {}):
+                        gaps[name] = min(gaps.get(name, np.inf), shape.distance(area(*label)))
+            where, gap = min(gaps.items(), key=lambda item: item[1])
+            if gap < LEAST_MARK_GAP:
+                found.append(f"play {k} {mark['name']}: {gap:.2f} from {where}")
+    return found

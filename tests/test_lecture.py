@@ -30,11 +30,13 @@ from tests.reading_rules import (
     answers_over_pictures,
     broken_counts,
     crossfaded_subtitles,
+    crowded_verdicts,
     hidden_failures,
     repeated_verdicts,
     replayed_beats,
     rushed_questions,
     small_texts,
+    stale_endings,
     unreadable_cues,
     unspoken_words,
 )
@@ -477,6 +479,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert answers_over_pictures(data) == [], chapter.slug
     # issue 22 item 5: counters run 1 … n − 2 and end on the whole triangulation
     assert broken_counts(data) == [], chapter.slug
+    # issue 22: the whole triangulation comes under its own caption, not the last step's
+    assert stale_endings(data) == [], chapter.slug
+    # issue 22: a verdict's ✓ or ✗ stands clear of every edge and label
+    assert crowded_verdicts(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
@@ -612,6 +618,38 @@ def test_the_overview_poses_the_problem_with_a_black_box():
     counters = [n["text"] for n in graph_nodes(data) if n.get("name") == "counter"]
     assert counters and counters[-1] == "n − 2 = 13 − 2\n= 11 triangles"
     assert sum(p["run_time"] for p in data["plays"]) >= 75
+
+
+@pytest.mark.parametrize("panel", [None, "source"])
+def test_the_black_box_stands_clear_of_the_picture_the_panel_and_the_subtitles(panel):
+    """Issue 22 item 2: the overview's black box, and the count that takes its place after
+    the last split, overlap neither the picture (outline, vertices, labels), nor the panel
+    (its polygon and its pseudocode, or its source), nor any subtitle: its place is worked
+    out from what is on screen, not fixed (it stood over a panel of source)."""
+    from tests.reading_rules import _box_of, _overlap, animation_nodes
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    overview = next(c for c in lecture_chapters() if c.slug == "overview")
+    cls = _chapter_class(overview)
+    data = build((cls.with_panel(panel) if panel else cls).handed()).data
+    boxes: dict[str, list[tuple[float, ...]]] = {}
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                name = node.get("name") or ""
+                shown = name in ("finder", "counter", "polygon", "subtitle") or name.startswith(
+                    ("vertex:", "panel:", "code:"))
+                if shown and (box := _box_of(node)) is not None and box[0] < box[2]:
+                    boxes.setdefault(name, []).append(box)
+    assert boxes.get("code:1") and boxes.get("polygon"), sorted(boxes)
+    for mine in ("finder", "counter"):
+        assert boxes.get(mine), (mine, sorted(boxes))
+        for name, others in boxes.items():
+            if name in ("finder", "counter"):
+                continue
+            hit = [b for b in others for m in boxes[mine] if _overlap(m, b)]
+            assert not hit, (mine, name, hit[:1], boxes[mine][:1])
 
 
 def test_the_heuristics_chapter_shows_each_wrong_heuristic_once():

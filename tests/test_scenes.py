@@ -46,9 +46,11 @@ from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
     crossfaded_subtitles,
+    crowded_verdicts,
     graph_nodes,
     hidden_failures,
     small_texts,
+    stale_endings,
     unreadable_cues,
     unspoken_words,
 )
@@ -218,6 +220,21 @@ def test_slices_are_counted_one_by_one_up_to_the_whole_triangulation(case):
     """Issue 22 item 5: a slice counter runs 0, 1 … n − 2 and never jumps; the run ends on
     the whole triangulation drawn in P with its count."""
     assert broken_counts(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_whole_triangulation_comes_under_its_own_caption(case):
+    """Issue 22: while a run's whole triangulation is drawn, the caption on screen says so;
+    it is not the last step's (a split, a slice, a stack), which no longer says what is on
+    screen."""
+    assert stale_endings(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_verdicts_mark_stands_clear_of_edges_and_labels(case):
+    """Issue 22: a ✓ or ✗ keeps 2 % of the frame's height from every edge of its polygon
+    and every vertex label (a ✓ on edge BC reads as judging BC)."""
+    assert crowded_verdicts(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))

@@ -1,0 +1,111 @@
+"""Where a verdict's mark (✓ or ✗) goes: beside its claim, clear of every edge and label.
+
+A mark over an edge or a label reads as part of the picture (a ✓ on edge BC seems to judge
+BC). It goes beside the middle of the claim it judges, inside the polygon if there is room
+there, else outside it, farther off, and always at least :data:`MARK_GAP` from every edge
+drawn (the polygon's, the diagonals', the claim itself) and from every label; the first such place in a
+fixed order, so a run places it the same way every time.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Sequence
+
+import numpy as np
+import shapely
+from manim import DL, UR, Line, Mobject
+
+from metaphors.board import Board
+from metaphors.layout import Box
+
+#: 2.5 % of the frame's height: the gap a mark keeps (the reading rule asks for 2 %)
+MARK_GAP = 0.2
+#: how far along its claim a mark may stand (fractions of it, the middle first)
+ALONG = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)
+#: the distances from the claim tried, beyond the mark's own half size (scene units)
+AWAY = tuple(np.round(np.arange(0.05, 2.5, 0.05), 6))
+
+Point = Sequence[float] | np.ndarray
+Segment = tuple[Point, Point]
+Area = tuple[float, float, float, float]  # left, bottom, right, top
+
+
+def mark_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment],
+              labels: Iterable[Area], inside: shapely.Geometry, within: Box,
+              avoid: shapely.Geometry | None = None) -> np.ndarray:
+    """The centre for a mark ``size`` (width, height) judging ``claim``: the first place, in
+    the order inside ``inside`` before outside it, nearest the claim, nearest its middle, on
+    its left before its right, that stays in ``within``, :data:`MARK_GAP` from the claim,
+    every edge and every label (twice that outside ``inside``), and off ``avoid`` (a shaded
+    region); if there is none, the place of those that keeps the most gap."""
+    a, b = np.asarray(claim[0], dtype=float)[:2], np.asarray(claim[1], dtype=float)[:2]
+    along = b - a
+    normal = np.array([-along[1], along[0]]) / max(float(np.linalg.norm(along)), 1e-9)
+    half = np.array(size, dtype=float) / 2
+    reach = float(np.linalg.norm(half))
+    places, order = [], []
+    for d, away in enumerate(AWAY):
+        for s, t in enumerate(ALONG):
+            for side in (1.0, -1.0):
+                places.append(a + t * along + side * (reach + away) * normal)
+                order.append((d, s, side < 0))
+    centres = np.array(places)
+    boxes = shapely.box(centres[:, 0] - half[0], centres[:, 1] - half[1],
+                        centres[:, 0] + half[0], centres[:, 1] + half[1])
+    obstacles = [shapely.LineString([a, b]),
+                 *[shapely.LineString([np.asarray(p, float)[:2], np.asarray(q, float)[:2]])
+                   for p, q in edges],
+                 *[shapely.box(*area) for area in labels]]
+    gap = np.min([shapely.distance(boxes, o) for o in obstacles], axis=0)
+    left, bottom = within.x - within.width / 2, within.y - within.height / 2
+    framed = ((centres[:, 0] - half[0] >= left) & (centres[:, 0] + half[0] <= left + within.width)
+              & (centres[:, 1] - half[1] >= bottom)
+              & (centres[:, 1] + half[1] <= bottom + within.height))
+    held = shapely.contains(inside, boxes)
+    # outside P, twice as far: a mark just past an edge seems to judge that edge
+    free = framed & (gap >= np.where(held, MARK_GAP, 2 * MARK_GAP))
+    if avoid is not None and not avoid.is_empty:
+        free &= ~shapely.intersects(boxes, avoid)
+    if not free.any():
+        return np.array([*centres[int(np.argmax(np.where(framed, gap, -1.0)))], 0.0])
+    best = min((k for k in range(len(places)) if free[k]),
+               key=lambda k: (not held[k], *order[k]))
+    return np.array([*centres[best], 0.0])
+
+
+def area_of(mobject: Mobject, moved: Callable[[np.ndarray], np.ndarray] | None = None) -> Area:
+    """A mobject's box on screen (``moved``: where its centre goes; its size stays)."""
+    low, high = mobject.get_corner(DL), mobject.get_corner(UR)
+    centre = (low + high) / 2
+    shift = (moved(centre) - centre) if moved is not None else np.zeros(3)
+    return (float(low[0] + shift[0]), float(low[1] + shift[1]),
+            float(high[0] + shift[0]), float(high[1] + shift[1]))
+
+
+def ring_edges(ring: Sequence[Point]) -> list[Segment]:
+    """The edges of a closed ring of points."""
+    return [(p, ring[(k + 1) % len(ring)]) for k, p in enumerate(ring)]
+
+
+def board_spot(board: Board, mark: Mobject, line: Mobject,
+               moved: Callable[[np.ndarray], np.ndarray] | None = None) -> np.ndarray:
+    """Where a run's verdict ``mark`` on the claim ``line`` goes on its board (:func:`mark_spot`):
+    clear of the outline's edges (its holes' too: the largest ring is the outer one), the
+    diagonals drawn and the vertex labels.
+    ``moved``: where each point of the picture ends (a turn under way), None: as it is."""
+    def end(p: np.ndarray) -> np.ndarray:
+        return moved(p) if moved is not None else p
+
+    # the outline as drawn, not P: ear clipping's fruit shrinks as its slices go
+    paths = [path for part in board.shape.family_members_with_points()
+             for path in part.get_subpaths() if len(path) >= 12]  # a triangle's, at least
+    rings = sorted(([end(p) for p in path[:-1:4]] for path in paths),
+                   key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
+    edges = [edge for ring in rings for edge in ring_edges(ring)]
+    edges += [(end(m.get_start()), end(m.get_end())) for key, m in board.objects.items()
+              if key.startswith("diagonal:") and isinstance(m, Line)]
+    labels = [area_of(part, moved) for marker in board.markers.values()
+              for part in marker.submobjects]
+    inside = shapely.Polygon([p[:2] for p in rings[0]], [[p[:2] for p in r] for r in rings[1:]])
+    return mark_spot((mark.width, mark.height), (end(line.get_start()), end(line.get_end())),
+                     edges, labels, inside, board.box)
