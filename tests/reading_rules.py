@@ -397,3 +397,66 @@ def repeated_verdicts(data: dict) -> list[str]:
             counts[(section, caption)] = counts.get((section, caption), 0) + 1
     return [f"{n} × {caption!r} ({section})" for (section, caption), n in counts.items()
             if n > 1]
+
+
+# --- issue 22 item 5: a summary covers one unbroken run of fast beats ----------------------------
+
+#: a summary caption of beats played fast (story.reading.summarised): its first and last claim
+_SUMMARY = re.compile(r"^\w+ (\d+)(?:–(\d+))?: the same steps, faster$")
+
+
+def _claims_made(play: dict, made: int) -> int:
+    """The claims made by the end of ``play``, ``made`` before it: a claim drawn (divide and
+    conquer's diagonals), a vertex classified (the monotone sweep's kind), a slice counted
+    (ear clipping's ``k / n slices`` says k itself)."""
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if anim["type"] not in INCOMING:
+            continue
+        if node.get("name") in ("claim", "kind"):
+            made += 1
+        elif node.get("name") == "counter" and (m := _SLICES.search(node.get("text", ""))):
+            made = int(m[1])
+    return made
+
+
+def _summary_spans(data: dict) -> Iterator[tuple[int, str, set[int]]]:
+    """Each subtitle said in a run, as ``(run, caption, claims)``: the run it is said in (a new
+    one begins where a polygon is drawn) and the claims whose marks appear while it is up."""
+    run, made, caption, claims = 0, 0, None, set()
+    for play in data["plays"]:
+        if any(a["type"] in INCOMING and (a.get("mobject") or {}).get("name") == "polygon"
+               for a in play["animations"]):
+            if caption is not None:
+                yield run, caption, claims
+            run, made, caption, claims = run + 1, 0, None, set()
+        said = play.get("subcaption")
+        if said and said != caption:
+            if caption is not None:
+                yield run, caption, claims
+            caption, claims = said, set()
+        now = _claims_made(play, made)
+        claims |= set(range(made + 1, now + 1))
+        made = now
+    if caption is not None:
+        yield run, caption, claims
+
+
+def broken_summaries(data: dict) -> list[str]:
+    """Issue 22 item 5: the summary captions (``"Vertices 3–7: the same steps, faster"``) that
+    come back in their run after another caption (a key step must end a summary, not
+    interrupt it), or whose range is not the claims made while they are up, as
+    ``"'Vertices 3–7: …' again"`` or ``"'Vertices 3–7: …' over 3–4"``."""
+    found = []
+    said: set[tuple[int, str]] = set()
+    for run, caption, claims in _summary_spans(data):
+        if (m := _SUMMARY.match(caption)) is None:
+            continue
+        if (run, caption) in said:
+            found.append(f"{caption!r} again")
+        said.add((run, caption))
+        first, last = int(m[1]), int(m[2] or m[1])
+        if claims != set(range(first, last + 1)):
+            shown = f"{min(claims)}–{max(claims)}" if claims else "nothing"
+            found.append(f"{caption!r} over {shown}")
+    return found

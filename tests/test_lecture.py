@@ -29,6 +29,7 @@ from click.testing import CliRunner
 from tests.reading_rules import (
     answers_over_pictures,
     broken_counts,
+    broken_summaries,
     crossfaded_subtitles,
     hidden_failures,
     repeated_verdicts,
@@ -477,6 +478,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert answers_over_pictures(data) == [], chapter.slug
     # issue 22 item 5: counters run 1 … n − 2 and end on the whole triangulation
     assert broken_counts(data) == [], chapter.slug
+    # issue 22 item 5: a summary of fast beats is not broken by a key step and comes back
+    assert broken_summaries(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():

@@ -45,6 +45,7 @@ from story.storyboard import run_vertices
 from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
+    broken_summaries,
     crossfaded_subtitles,
     graph_nodes,
     hidden_failures,
@@ -218,6 +219,14 @@ def test_slices_are_counted_one_by_one_up_to_the_whole_triangulation(case):
     """Issue 22 item 5: a slice counter runs 0, 1 … n − 2 and never jumps; the run ends on
     the whole triangulation drawn in P with its count."""
     assert broken_counts(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_summary_covers_one_unbroken_run_of_fast_beats(case):
+    """Issue 22 item 5: a key step (a split or merge vertex) ends the summary of the fast
+    beats before it, and no summary comes back after it; each summary's range ("Vertices
+    3–7") is the claims made while it is up, no more."""
+    assert broken_summaries(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
