@@ -30,6 +30,9 @@ METAPHOR = Box(-3.45, -0.05, 5.6, 5.6)
 # and above the code
 PANEL_POLYGON = Box(3.6, 1.82, 4.6, 2.0)
 PANEL_CODE = Box(3.6, -0.95, 6.2, 2.55)
+#: where the labels of the panel's polygon may stand: round it, under the title (its bottom
+#: 3.35) and over the code (its top 0.33), each 0.05 clear
+PANEL_LABELS = Box(3.6, 1.84, 5.8, 2.92)
 # the source (``--panel source``) takes the polygon's place too: title to call line
 PANEL_SOURCE = Box(3.58, 0.45, 6.7, 5.3)
 PANEL_CALL_Y = -2.65

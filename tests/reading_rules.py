@@ -460,3 +460,50 @@ def broken_summaries(data: dict) -> list[str]:
             shown = f"{min(claims)}–{max(claims)}" if claims else "nothing"
             found.append(f"{caption!r} over {shown}")
     return found
+
+
+# --- issue 22: the panel's small polygon keeps its labels readable --------------------------------
+
+#: the least a label of the panel's polygon keeps from its outline and from another label
+LABEL_ROOM = 0.03
+
+
+def crowded_panel_labels(data: dict) -> list[str]:
+    """The labels of the panel's polygon that overlap another label or come within
+    :data:`LABEL_ROOM` of its outline (an edge through a label misreads it), or that stand
+    nearer another vertex's dot than their own, as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``;
+    and the vertices left without a label (no room for one: ``"K unlabelled"``)."""
+    from shapely.geometry import MultiLineString, Point, box
+
+    outline, labels, dots = None, {}, {}
+    unlabelled: list[str] = []
+    for node in graph_nodes(data):
+        name = node.get("name") or ""
+        if name == "panel:polygon" and outline is None and node.get("points"):
+            # manim's points: four a curve, its first and last the ends of an edge (several
+            # rings, with holes, are not joined end to start)
+            points = node["points"]
+            outline = MultiLineString([(points[k][:2], points[k + 3][:2])
+                                       for k in range(0, len(points) - 3, 4)])
+        elif name.startswith("panel:") and name[6:] not in labels:
+            parts = list(mobject_nodes(node))
+            texts = [p for p in parts if p.get("text") and p.get("box")]
+            dot = next((p for p in parts if p.get("type") == "Dot" and p.get("points")), None)
+            if dot is not None and not texts:
+                unlabelled.append(name[6:])
+            if texts and dot is not None:
+                labels[name[6:]] = box(*texts[0]["box"])
+                xs, ys = zip(*[q[:2] for q in dot["points"]], strict=True)
+                dots[name[6:]] = Point(sum(xs) / len(xs), sum(ys) / len(ys))
+    if outline is None:
+        return []
+    found = [f"{label} unlabelled" for label in sorted(set(unlabelled))]
+    for label, shape in sorted(labels.items()):
+        if shape.distance(outline) < LABEL_ROOM:
+            found.append(f"{label} × edge")
+        found += [f"{label} × {other}" for other, there in sorted(labels.items())
+                  if other > label and shape.distance(there) < LABEL_ROOM]
+        nearest = min(dots, key=lambda k: (shape.distance(dots[k]), k))
+        if nearest != label and shape.distance(dots[nearest]) < shape.distance(dots[label]):
+            found.append(f"{label} ~ {nearest}")
+    return found

@@ -31,6 +31,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     crossfaded_subtitles,
+    crowded_panel_labels,
     hidden_failures,
     repeated_verdicts,
     replayed_beats,
@@ -480,6 +481,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert broken_counts(data) == [], chapter.slug
     # issue 22 item 5: a summary of fast beats is not broken by a key step and comes back
     assert broken_summaries(data) == [], chapter.slug
+    # the panel's small polygon: its labels apart, off its edges, none left out
+    assert crowded_panel_labels(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():

@@ -47,6 +47,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     crossfaded_subtitles,
+    crowded_panel_labels,
     graph_nodes,
     hidden_failures,
     small_texts,
@@ -227,6 +228,13 @@ def test_a_summary_covers_one_unbroken_run_of_fast_beats(case):
     beats before it, and no summary comes back after it; each summary's range ("Vertices
     3–7") is the claims made while it is up, no more."""
     assert broken_summaries(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_panels_polygon_keeps_its_labels_apart_and_off_its_edges(case):
+    """The panel's small copy of P: no label over another or over an edge, each nearer its
+    own dot than any other, none left out (issue 22: the lecture's M and K crowded)."""
+    assert crowded_panel_labels(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
