@@ -472,32 +472,69 @@ def crowded_panel_labels(data: dict) -> list[str]:
     """The labels of the panel's polygon that overlap another label or come within
     :data:`LABEL_ROOM` of its outline (an edge through a label misreads it), or that stand
     nearer another vertex's dot than their own, as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``;
-    and the vertices left without a label (no room for one: ``"K unlabelled"``)."""
+    and the vertices left without a label (no room for one: ``"K unlabelled"``). Each run's
+    panel (from its polygon's coming in) is judged alone."""
+    found: list[str] = []
+    for outline, markers in _panels(data):
+        found += _crowded(outline, markers)
+    return found
+
+
+def _panels(data: dict) -> Iterator[tuple[dict, dict[str, dict]]]:
+    """Each run's panel polygon and the first node of each of its markers (``panel:K``) the
+    graph shows: a run begins where its polygon is drawn (the panel comes in with it, added,
+    not played: its nodes are those a play recolours, and the last run's those on screen at
+    the end). A run whose panel polygon the graph never shows is left out."""
+    runs: list[tuple[dict | None, dict[str, dict]]] = [(None, {})]
+
+    def seen(node: dict) -> None:
+        name = node.get("name") or ""
+        outline, markers = runs[-1]
+        if name == "panel:polygon" and node.get("points") and outline is None:
+            runs[-1] = (node, markers)
+        elif name.startswith("panel:") and name not in _PANEL_PARTS:
+            markers.setdefault(name[6:], node)
+
+    for play in data["plays"]:
+        if any(a["type"] in INCOMING and (a.get("mobject") or {}).get("name") == "polygon"
+               for a in play["animations"]):
+            runs.append((None, {}))
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                seen(node)
+    for mobject in data.get("final", ()):
+        for node in mobject_nodes(mobject):
+            seen(node)
+    for outline, markers in runs:
+        if outline is not None and markers:
+            yield outline, markers
+
+
+#: the panel's nodes that are no vertex's marker
+_PANEL_PARTS = {"panel:polygon", "panel:lit", "panel:call"}
+
+
+def _crowded(outline_node: dict, markers: dict[str, dict]) -> list[str]:
     from shapely.geometry import MultiLineString, Point, box
 
-    outline, labels, dots = None, {}, {}
-    unlabelled: list[str] = []
-    for node in graph_nodes(data):
-        name = node.get("name") or ""
-        if name == "panel:polygon" and outline is None and node.get("points"):
-            # manim's points: four a curve, its first and last the ends of an edge (several
-            # rings, with holes, are not joined end to start)
-            points = node["points"]
-            outline = MultiLineString([(points[k][:2], points[k + 3][:2])
-                                       for k in range(0, len(points) - 3, 4)])
-        elif name.startswith("panel:") and name[6:] not in labels:
-            parts = list(mobject_nodes(node))
-            texts = [p for p in parts if p.get("text") and p.get("box")]
-            dot = next((p for p in parts if p.get("type") == "Dot" and p.get("points")), None)
-            if dot is not None and not texts:
-                unlabelled.append(name[6:])
-            if texts and dot is not None:
-                labels[name[6:]] = box(*texts[0]["box"])
-                xs, ys = zip(*[q[:2] for q in dot["points"]], strict=True)
-                dots[name[6:]] = Point(sum(xs) / len(xs), sum(ys) / len(ys))
-    if outline is None:
-        return []
-    found = [f"{label} unlabelled" for label in sorted(set(unlabelled))]
+    # manim's points: four a curve, its first and last the ends of an edge (several rings,
+    # with holes, are not joined end to start)
+    points = outline_node["points"]
+    outline = MultiLineString([(points[k][:2], points[k + 3][:2])
+                               for k in range(0, len(points) - 3, 4)])
+    labels, dots, found = {}, {}, []
+    for label, node in markers.items():
+        parts = list(mobject_nodes(node))
+        texts = [p for p in parts if p.get("text") and p.get("box")]
+        dot = next((p for p in parts if p.get("type") == "Dot" and p.get("points")), None)
+        if dot is None:
+            continue
+        xs, ys = zip(*[q[:2] for q in dot["points"]], strict=True)
+        dots[label] = Point(sum(xs) / len(xs), sum(ys) / len(ys))
+        if texts:
+            labels[label] = box(*texts[0]["box"])
+        else:
+            found.append(f"{label} unlabelled")
     for label, shape in sorted(labels.items()):
         if shape.distance(outline) < LABEL_ROOM:
             found.append(f"{label} × edge")
