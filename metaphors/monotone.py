@@ -9,11 +9,16 @@ step: never fast-forwarded. Split and merge vertices have colours of their own
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Iterator, Mapping
 from dataclasses import replace
 
 from manim import (
+    DL,
     DOWN,
+    ORIGIN,
+    RIGHT,
+    UR,
     Create,
     DashedLine,
     Dot,
@@ -26,9 +31,22 @@ from manim import (
     VMobject,
 )
 from manim import Polygon as MPolygon
+from shapely.geometry import Polygon as Region
+from shapely.geometry import box
+from shapely.geometry.base import BaseGeometry
+from shapely.ops import unary_union
 
 from metaphors.board import Board
 from metaphors.drawing import triangulation_pieces, whole_caption
+from metaphors.layout import (
+    FRAME_AREA,
+    PANEL_CALL_Y,
+    PANEL_CODE,
+    PANEL_SOURCE,
+    SUBTITLE_TOP,
+    Box,
+    free_place,
+)
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -36,9 +54,11 @@ from story.beats import Beat, beat_kind
 from story.storyboard import Reading, Walk
 from tracing import Event
 
-#: where the stack's column stands (its centre's x, its top): in the frame's left margin under
-#: the title, beside the metaphor's box (x from -6.25), where no polygon is drawn
-STACK_COLUMN = (-6.5, 2.9)
+#: the room between the stack's words (scene units)
+STACK_BUFF = 0.12
+#: each board's place for its stack (left, top, and whether it is a row), found once a run
+_PLACES: weakref.WeakKeyDictionary[Board, tuple[float, float, bool]] = (
+    weakref.WeakKeyDictionary())
 
 
 def _sweep_line(board: Board, y: float) -> DashedLine:
@@ -93,7 +113,7 @@ def stack_step(board: Board, beat: StackStep) -> None:
     (top at the top) rewritten; a triangle cut off is drawn as it leaves."""
     theme = board.theme
     chain = tag(_chain(board, beat.points), None, "stack:chain")
-    column = tag(_column(board, beat.chain), None, "stack:column")
+    column = tag(_column(board, beat.chain, beat.depth), None, "stack:column")
     anims: list = [_replace(board, "stack:chain", chain), _replace(board, "stack:column", column)]
     if beat.triangle:
         cut = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.ink,
@@ -126,15 +146,70 @@ def _chain(board: Board, points: list) -> VMobject:
     return line
 
 
-def _column(board: Board, chain: list[str]) -> VGroup:
-    """The stack as a column beside P: "stack" over its labels, the top first."""
+def _words(board: Board, chain: list[str]) -> list[VMobject]:
+    """The stack's words: "stack", then its labels, the top first."""
     theme = board.theme
     size = theme.label_size + 4  # "stack" has no capital: a line of it still ≥ 2.5 % high
-    words = [text(word, font=theme.font, size=size, colour=theme.stack)
-             for word in ("stack", *reversed(chain))]
-    column = VGroup(*words).arrange(DOWN, buff=0.12)
-    x, top = STACK_COLUMN
-    return column.move_to((x, top - column.height / 2, 0))
+    return [text(word, font=theme.font, size=size, colour=theme.stack)
+            for word in ("stack", *reversed(chain))]
+
+
+def _column(board: Board, chain: list[str], depth: int) -> VGroup:
+    """The stack beside P: "stack" over its labels, the top first, standing where the
+    tallest stack of the run keeps clear of everything else on screen (:func:`_place`);
+    a row, "stack" and its labels left to right, where no column fits."""
+    left, top, row = _place(board, depth)
+    words = VGroup(*_words(board, chain)).arrange(RIGHT if row else DOWN, buff=STACK_BUFF,
+                                                  aligned_edge=DOWN if row else ORIGIN)
+    return words.move_to((left + words.width / 2, top - words.height / 2, 0))
+
+
+def _place(board: Board, depth: int) -> tuple[float, float, bool]:
+    """Where the run's stack stands: the left and top of the first free place
+    (:func:`metaphors.layout.free_place`) for its tallest column (``depth`` labels, each as
+    large as the largest label of P), and whether it is a row. Found once a board, so the
+    stack never jumps; where neither fits, the frame's top-left corner, as it was."""
+    if board in _PLACES:
+        return _PLACES[board]
+    widest = max(_words(board, list(board.where)), key=lambda w: w.width)
+    tallest = max(_words(board, list(board.where)), key=lambda w: w.height)
+    heading = _words(board, [])[0]
+    n = max(depth, 1)
+    column = (max(widest.width, heading.width),
+              heading.height + n * (tallest.height + STACK_BUFF))
+    row = (heading.width + n * (widest.width + STACK_BUFF), max(heading.height, tallest.height))
+    taken = _taken(board)
+    place: tuple[float, float, bool] = (FRAME_AREA[0], FRAME_AREA[3] - 0.6, False)
+    for (width, height), as_row in ((column, False), (row, True)):
+        found = free_place(width, height, taken)
+        if found is not None:
+            place = (*found, as_row)
+            break
+    _PLACES[board] = place
+    return place
+
+
+def _taken(board: Board) -> BaseGeometry:
+    """What is on screen beside the stack: P's region, its markers (dots and labels), the
+    title, the panel (its polygon, its code with the lights that run over its whole width,
+    its call line) and the subtitles' band."""
+    corners = [tuple(board.at(p)[:2]) for p in board.polygon.points]
+    shapes: list[BaseGeometry] = [Region(corners)]
+    panel = board.panel
+    lights = PANEL_CODE if panel.shows_polygon else PANEL_SOURCE
+    shapes += [_box_of(m) for m in (*board.markers.values(), board.title, *panel.mobjects())]
+    shapes += [_rect(lights), _rect(Box(PANEL_CODE.x, PANEL_CALL_Y, PANEL_CODE.width, 0.4)),
+               box(-8.0, -4.5, 8.0, SUBTITLE_TOP)]
+    return unary_union(shapes)
+
+
+def _box_of(mobject: VMobject) -> BaseGeometry:
+    (x0, y0, _), (x1, y1, _) = mobject.get_corner(DL), mobject.get_corner(UR)
+    return box(x0, y0, x1, y1)
+
+
+def _rect(b: Box) -> BaseGeometry:
+    return box(b.x - b.width / 2, b.y - b.height / 2, b.x + b.width / 2, b.y + b.height / 2)
 
 
 def stack(board: Board, beat: Stack) -> None:
@@ -214,6 +289,8 @@ class StackStep(Beat):
     points: list
     cut: list[str]
     triangle: list
+    #: the most vertices the stack holds in the whole run (its column is made that tall)
+    depth: int = 0
 
 
 @beat_kind("stack")
@@ -263,13 +340,21 @@ def _stacked(walk: Walk, indices: list[int]) -> list[str]:
     return [labels[k] for k in indices]
 
 
+def _depth(walk: Walk) -> int:
+    """The most vertices the run's stack holds: the longest stack a push leaves."""
+    return int(walk.memo("monotone.depth", lambda: max(
+        (len((e.args or {}).get("stack", ())) + 1 for e in walk.log.events
+         if e.kind == "call" and e.name == "push"), default=0)))
+
+
 def read_push(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     """A vertex waits: the chain is the call's stack with it on top."""
     where = walk.root_points()
     args = call.args or {}
     chain = _stacked(walk, [*args["stack"], args["u"]])
     yield walk.step(StackStep, f"{chain[-1]} waits on the stack", call, ret, roles={},
-                    chain=chain, points=[where[v] for v in chain], cut=[], triangle=[])
+                    chain=chain, points=[where[v] for v in chain], cut=[], triangle=[],
+                    depth=_depth(walk))
 
 
 def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -281,7 +366,7 @@ def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     yield walk.step(StackStep, f"Triangle {''.join(cut)} cut off: {before[-1]} leaves",
                     call, ret, roles={}, chain=before[:-1],
                     points=[where[v] for v in before[:-1]], cut=cut,
-                    triangle=[where[v] for v in cut])
+                    triangle=[where[v] for v in cut], depth=_depth(walk))
 
 
 def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:

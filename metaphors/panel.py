@@ -16,21 +16,37 @@ same vertices by the same roles.
 
 from __future__ import annotations
 
+import math
+from collections.abc import Sequence
 from typing import cast
 
+import numpy as np
 from manim import (
     LEFT,
     Animation,
+    Dot,
     FadeIn,
     FadeOut,
     Mobject,
     Rectangle,
     VGroup,
 )
+from shapely.geometry import LineString, Point, box
+from shapely.geometry.base import BaseGeometry
+from shapely.ops import unary_union
+from shapely.prepared import PreparedGeometry, prep
 
 from geometry.polygon import Polygon
-from metaphors.drawing import Frame, hole_markers, polygon_mobject, vertex_markers
-from metaphors.layout import PANEL_CALL_Y, PANEL_CODE, PANEL_POLYGON, PANEL_SOURCE
+from metaphors.drawing import Frame, polygon_mobject
+from metaphors.layout import (
+    PANEL_CALL_Y,
+    PANEL_CODE,
+    PANEL_LABELS,
+    PANEL_POLYGON,
+    PANEL_SOURCE,
+    Box,
+    Rect,
+)
 from metaphors.listing import Row, Window, listing_rows, window_for
 from metaphors.pseudocode import source_of
 from metaphors.tags import tag
@@ -68,8 +84,7 @@ class Panel:
         self.outline.set_fill(opacity=0.12)
         self.markers = {
             label: tag(m, "idle", f"panel:{label}")
-            for label, m in [*zip(labels, vertex_markers(polygon, self.frame, theme), strict=True),
-                             *hole_markers(holes, self.frame, theme)]
+            for label, m in panel_markers(polygon, holes, self.frame, theme)
         }
         self.mode = SOURCE
         self.code_lines = source_of(shown) if shown else ()
@@ -327,3 +342,140 @@ def _baseline_offset(row, font: str, size: float) -> float:
     with_bar = typeset.outline(row.original_text + " |", font, float(size))
     own = typeset.outline(row.original_text, font, float(size))
     return float(with_bar[0][1] - own[0][1]) if len(with_bar) and len(own) else 0.0
+
+
+# --- the panel polygon's labels: each clear of the outline, the dots and the other labels -------
+
+#: how far a label of the panel's polygon keeps from its outline, its dots and other labels
+LABEL_CLEARANCE = 0.05
+#: the distances a label's box may stand from its vertex, nearest first
+LABEL_DISTANCES = (0.1, 0.16, 0.24, 0.34, 0.46)
+#: the directions a label may stand in from its vertex (every 15°)
+LABEL_DIRECTIONS = 24
+
+
+def panel_markers(polygon: Polygon, holes: Sequence[dict], frame: Frame, theme: Theme,
+                  area: Box = PANEL_LABELS) -> list[tuple[str, VGroup]]:
+    """(label, dot and label) for every vertex of the panel's polygon and of its holes.
+
+    The panel draws P small: the board's rule (a label away from the centre, at a fixed
+    distance: :func:`metaphors.drawing.vertex_markers`) puts labels of close vertices over an
+    edge or over each other (the lecture's M and K). Here each label takes the nearest free
+    place around its vertex (:func:`_label_places`): within ``area``, clear by
+    :data:`LABEL_CLEARANCE` of every edge, every dot and every other label, and nearer its own
+    vertex than any other (:func:`_assigned`). A label with no such place is left out (its
+    dot stays): a label over an edge or another label would be misread, and a smaller one
+    would be under 2.5 % of the frame's height. Every scene's and chapter's polygon keeps all
+    its labels (tests.reading_rules.crowded_panel_labels)."""
+    rings = [frame.many(polygon.points), *(frame.many(h["points"]) for h in holes)]
+    outline = unary_union([LineString([*(p[:2] for p in ring), ring[0][:2]]) for ring in rings])
+    vertices = [(label, point, _away(point, rings[0]), theme.label_size)
+                for label, point in zip(polygon.labels, rings[0], strict=True)]
+    for hole, ring in zip(holes, rings[1:], strict=True):
+        # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % high
+        vertices += [(label, point, _away(point, ring), theme.label_size + 4)
+                     for label, point in zip(hole["labels"], ring, strict=True)]
+    dots = unary_union([Point(p[:2]).buffer(theme.dot_radius) for _, p, _, _ in vertices])
+    texts = [typeset.text(label, font=theme.font, size=size, colour=theme.ink)
+             for label, _, _, size in vertices]
+    fixed = prep(unary_union([outline, dots]).buffer(LABEL_CLEARANCE))
+    bounds = box(area.x - area.width / 2, area.y - area.height / 2,
+                 area.x + area.width / 2, area.y + area.height / 2)
+    points = [(float(p[0]), float(p[1])) for _, p, _, _ in vertices]
+    places = [_label_places(k, points, away, t.width, t.height, fixed, bounds)
+              for k, ((_, _, away, _), t) in enumerate(zip(vertices, texts, strict=True))]
+    chosen = _assigned(places)
+    markers = []
+    for k, ((label, point, _, _), t) in enumerate(zip(vertices, texts, strict=True)):
+        dot = Dot(point, radius=theme.dot_radius, color=theme.ink)
+        if k in chosen:
+            t.move_to((*chosen[k], 0))
+            markers.append((label, VGroup(dot, t)))
+        else:
+            markers.append((label, VGroup(dot)))
+    return markers
+
+
+def _away(point: np.ndarray, ring: list[np.ndarray]) -> float:
+    """The angle from the centre of ``ring`` to ``point``: where a label stands by default."""
+    centre = np.mean(ring, axis=0)
+    dx, dy = (point - centre)[:2]
+    return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-9 else -math.pi / 2
+
+
+def _label_places(k: int, points: list[tuple[float, float]], away: float, width: float,
+                  height: float, fixed: PreparedGeometry, bounds: BaseGeometry
+                  ) -> list[tuple[tuple[float, float], Rect]]:
+    """The free places of vertex ``k``'s ``width`` × ``height`` label, best first (nearest,
+    then nearest to the direction ``away``): each its centre and its box, in ``bounds``,
+    clear of ``fixed`` (the outline and the dots, grown by the clearance) and nearer its own
+    vertex than any other (a label between two dots names neither)."""
+    found = []
+    px, py = points[k]
+    for rank, distance in enumerate(LABEL_DISTANCES):
+        for step in range(LABEL_DIRECTIONS):
+            turn = (step + 1) // 2 * (1 if step % 2 else -1) * 2 * math.pi / LABEL_DIRECTIONS
+            dx, dy = math.cos(away + turn), math.sin(away + turn)
+            # the box's side nearest the vertex stands ``distance`` from it
+            reach = distance + abs(dx) * width / 2 + abs(dy) * height / 2
+            x, y = px + dx * reach, py + dy * reach
+            rect = (x - width / 2, y - height / 2, x + width / 2, y + height / 2)
+            shape = box(*rect)
+            own = _gap(rect, points[k])
+            if (bounds.contains(shape) and not fixed.intersects(shape)
+                    and all(_gap(rect, q) > own for j, q in enumerate(points) if j != k)):
+                found.append(((rank, abs(turn)), (x, y), rect))
+    found.sort(key=lambda f: f[0])
+    return [(centre, rect) for _, centre, rect in found]
+
+
+def _gap(rect: Rect, point: tuple[float, float]) -> float:
+    """How far ``point`` is from the box ``rect``."""
+    x0, y0, x1, y1 = rect
+    return math.hypot(max(x0 - point[0], 0.0, point[0] - x1), max(y0 - point[1], 0.0, point[1] - y1))
+
+
+def _apart(a: Rect, b: Rect) -> bool:
+    """Whether two labels' boxes keep :data:`LABEL_CLEARANCE` apart."""
+    return (a[2] + LABEL_CLEARANCE <= b[0] or b[2] + LABEL_CLEARANCE <= a[0]
+            or a[3] + LABEL_CLEARANCE <= b[1] or b[3] + LABEL_CLEARANCE <= a[1])
+
+
+#: the most candidate places :func:`_assigned` tries before it settles for the most labels found
+ASSIGN_BUDGET = 200_000
+
+
+def _assigned(places: list[list[tuple[tuple[float, float], Rect]]]) -> dict[int, tuple[float, float]]:
+    """A place for each label, no two too close (:func:`_apart`): a depth-first search, the
+    most hemmed-in label first and each label's best places first, so the first whole
+    assignment found keeps labels near their vertices. If none is found within
+    :data:`ASSIGN_BUDGET` tries, each label in turn takes its best place still free, and a
+    label with none is left out (deterministic either way)."""
+    order = sorted((k for k in range(len(places)) if places[k]), key=lambda k: (len(places[k]), k))
+    tries = 0
+
+    def search(i: int, taken: dict[int, int]) -> bool:
+        nonlocal tries
+        if i == len(order):
+            return True
+        k = order[i]
+        for c, (_, rect) in enumerate(places[k]):
+            tries += 1
+            if tries > ASSIGN_BUDGET:
+                return False
+            if all(_apart(rect, places[j][d][1]) for j, d in taken.items()):
+                taken[k] = c
+                if search(i + 1, taken):
+                    return True
+                del taken[k]
+        return False
+
+    taken: dict[int, int] = {}
+    if not search(0, taken):
+        taken = {}
+        for k in order:
+            c = next((c for c, (_, rect) in enumerate(places[k])
+                      if all(_apart(rect, places[j][d][1]) for j, d in taken.items())), None)
+            if c is not None:
+                taken[k] = c
+    return {k: places[k][c][0] for k, c in taken.items()}

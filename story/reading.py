@@ -49,39 +49,65 @@ def readable(caption: str, seconds: float) -> bool:
 
 
 def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: str,
-               kept: Sequence[bool] = ()) -> list[Beat]:
+               kept: Sequence[bool] = (), numbers: Sequence[int] = ()) -> list[Beat]:
     """The beats with the captions of repeated claims replaced by summaries.
 
-    ``claims[k]`` is how many claims were counted when beat ``k`` was made: beats made
-    after ``full`` claims repeat what was shown, so each group of up to
-    :data:`SUMMARY_CLAIMS` claims shares one caption (``"Diagonals 3–7: the same steps,
-    faster"``). Kept as they are: the beats of the last count (the run's end), a failing
-    verdict with all after it (the crossed edge is named on screen), and the key steps
-    (``kept[k]`` true: a split or merge vertex and its diagonal, each its own step).
+    ``claims[k]`` is how many claims were counted when beat ``k`` was made (beat ``k``
+    belongs to claim ``claims[k] + 1``): beats made after ``full`` claims repeat what was
+    shown, so each group of up to :data:`SUMMARY_CLAIMS` claims shares one caption
+    (``"Diagonals 3–7: the same steps, faster"``). Kept as they are: the beats of the last
+    count (the run's end), a failing verdict with all after it (the crossed edge is named on
+    screen), and the key steps (``kept[k]`` true: a split or merge vertex and its diagonal,
+    each its own step). ``numbers[k]``: how many claims of ``noun`` were counted when beat
+    ``k`` was made, the numbers the summary says (default ``claims``: a run whose claims
+    are all ``noun``s; prune and search counts its diagonals too, not as slices).
+
+    A summary covers one unbroken run of fast beats (:func:`_fast_runs`): a key step ends
+    it, and the fast beats after it get a summary of their own that names only the claims
+    they belong to — never the one from before the key step again. A run of one beat keeps
+    its own caption (a summary of one step says less than the step).
 
     >>> from story.beats import Note
     >>> beats = [Note(caption=f"step {k}", step=k) for k in range(6)]
     >>> [b.caption for b in summarised(beats, [0, 1, 1, 2, 2, 3], 1, "diagonal")]
     ['step 0', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'step 5']
-    >>> [b.caption for b in summarised(beats, [0, 1, 1, 2, 2, 3], 1, "vertex",
-    ...                                [False, False, True, False, False, False])][1:4]
-    ['Vertices 2–3: the same steps, faster', 'step 2', 'Vertices 2–3: the same steps, faster']
+    >>> beats = [Note(caption=f"step {k}", step=k) for k in range(8)]
+    >>> [b.caption for b in summarised(beats, [0, 1, 1, 2, 3, 3, 4, 5], 1, "vertex",
+    ...                                [False, False, False, True, False, False, False, False])]
+    ['step 0', 'Vertex 2: the same steps, faster', 'Vertex 2: the same steps, faster', 'step 3', 'Vertices 4–5: the same steps, faster', 'Vertices 4–5: the same steps, faster', 'Vertices 4–5: the same steps, faster', 'step 7']
     """
     if not beats:
         return []
+    out = list(beats)
+    said = list(numbers) or list(claims)
+    for run in _fast_runs(beats, claims, full, kept):
+        if len(run) < 2:
+            continue  # one beat: its own caption says more than a summary of it
+        first, last = said[run[0]] + 1, said[run[-1]] + 1
+        for k in run:
+            out[k] = replace(beats[k], caption=_summary(noun, first, last))
+    return out
+
+
+def _fast_runs(beats: Sequence[Beat], claims: Sequence[int], full: int,
+               kept: Sequence[bool]) -> list[list[int]]:
+    """The indices of the beats that go under summaries, in unbroken runs: consecutive fast
+    beats of at most :data:`SUMMARY_CLAIMS` claims, counted from the run's first. A beat kept
+    as it is (a key step, the run's end, a failing verdict and after) ends a run."""
     last = claims[-1]
-    out = []
-    failed = False
     keep = list(kept) or [False] * len(beats)
-    for beat, counted, key in zip(beats, claims, keep, strict=True):
+    runs: list[list[int]] = []
+    failed, open_run = False, False
+    for k, (beat, counted, key) in enumerate(zip(beats, claims, keep, strict=True)):
         failed = failed or (isinstance(beat, Verdict) and not beat.ok)
         if failed or key or counted < full or counted >= last:
-            out.append(beat)
+            open_run = False
             continue
-        first = full + 1 + (counted - full) // SUMMARY_CLAIMS * SUMMARY_CLAIMS
-        out.append(replace(beat, caption=_summary(noun, first, min(first + SUMMARY_CLAIMS - 1,
-                                                                   last))))
-    return out
+        if not open_run or counted - claims[runs[-1][0]] >= SUMMARY_CLAIMS:
+            runs.append([])
+        runs[-1].append(k)
+        open_run = True
+    return runs
 
 
 #: the plural of a noun whose plural is not its name and an s

@@ -162,6 +162,10 @@ class Walk:
         self.claims = 0
         self.noun = "diagonal"  # what a claim is, in the summary captions of repeated ones
         self.counted: dict[int, int] = {}  # id of each beat made → claims counted by then
+        self.of_noun: dict[str, int] = {}  # claims counted of each noun (diagonal, slice …)
+        # id of each beat made → claims of each noun counted by then: a summary numbers its
+        # beats by the claims it names (prune and search claims diagonals between slices)
+        self.counted_of: dict[int, dict[str, int]] = {}
         self.kept: set[int] = set()  # ids of the key steps: never fast, never summarised
         self.heuristic_polygon: list[str] = []
         self.shown_polygon = False
@@ -248,6 +252,7 @@ class Walk:
         them the beats go faster, under summary captions (:func:`story.reading.summarised`)."""
         self.claims += 1
         self.noun = noun
+        self.of_noun[noun] = self.of_noun.get(noun, 0) + 1
 
     def pace(self) -> float:
         return 1.0 if self.claims < self.pacing.full else self.pacing.fast
@@ -261,6 +266,7 @@ class Walk:
                          row=self.pseudocode_row(event), pace=1.0 if key_step else self.pace(),
                          **fields)
         self.counted[id(beat)] = self.claims
+        self.counted_of[id(beat)] = dict(self.of_noun)
         if key_step:
             self.kept.add(id(beat))
         return beat
@@ -391,7 +397,8 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
         beats.extend(_boxed(walk, made) if walk.black_box and walk.heuristic_polygon else made)
         walk.track(event)
     return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
-                      walk.noun, kept=[id(b) in walk.kept for b in beats])
+                      walk.noun, kept=[id(b) in walk.kept for b in beats],
+                      numbers=[walk.counted_of.get(id(b), {}).get(walk.noun, 0) for b in beats])
 
 
 def _boxed(walk: Walk, beats: list[Beat]) -> list[Beat]:
@@ -402,6 +409,7 @@ def _boxed(walk: Walk, beats: list[Beat]) -> list[Beat]:
         if isinstance(beat, Claim):
             answer = replace(beat, caption=f"Out comes {''.join(beat.labels)}")
             walk.counted[id(answer)] = walk.counted[id(beat)]  # counted as the claim it says
+            walk.counted_of[id(answer)] = walk.counted_of[id(beat)]
             seen.append(answer)
         elif isinstance(beat, (FindDiagonal, Verdict)):
             seen.append(beat)

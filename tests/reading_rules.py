@@ -526,4 +526,150 @@ def crowded_verdicts(data: dict) -> list[str]:
             where, gap = min(gaps.items(), key=lambda item: item[1])
             if gap < LEAST_MARK_GAP:
                 found.append(f"play {k} {mark['name']}: {gap:.2f} from {where}")
+
+
+# --- issue 22 item 5: a summary covers one unbroken run of fast beats ----------------------------
+
+#: a summary caption of beats played fast (story.reading.summarised): its first and last claim
+_SUMMARY = re.compile(r"^\w+ (\d+)(?:–(\d+))?: the same steps, faster$")
+
+
+def _claims_made(play: dict, made: int) -> int:
+    """The claims made by the end of ``play``, ``made`` before it: a claim drawn (divide and
+    conquer's diagonals), a vertex classified (the monotone sweep's kind), a slice counted
+    (ear clipping's ``k / n slices`` says k itself)."""
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if anim["type"] not in INCOMING:
+            continue
+        if node.get("name") in ("claim", "kind"):
+            made += 1
+        elif node.get("name") == "counter" and (m := _SLICES.search(node.get("text", ""))):
+            made = int(m[1])
+    return made
+
+
+def _summary_spans(data: dict) -> Iterator[tuple[int, str, set[int]]]:
+    """Each subtitle said in a run, as ``(run, caption, claims)``: the run it is said in (a new
+    one begins where a polygon is drawn) and the claims whose marks appear while it is up."""
+    run, made, caption, claims = 0, 0, None, set()
+    for play in data["plays"]:
+        if any(a["type"] in INCOMING and (a.get("mobject") or {}).get("name") == "polygon"
+               for a in play["animations"]):
+            if caption is not None:
+                yield run, caption, claims
+            run, made, caption, claims = run + 1, 0, None, set()
+        said = play.get("subcaption")
+        if said and said != caption:
+            if caption is not None:
+                yield run, caption, claims
+            caption, claims = said, set()
+        now = _claims_made(play, made)
+        claims |= set(range(made + 1, now + 1))
+        made = now
+    if caption is not None:
+        yield run, caption, claims
+
+
+def broken_summaries(data: dict) -> list[str]:
+    """Issue 22 item 5: the summary captions (``"Vertices 3–7: the same steps, faster"``) that
+    come back in their run after another caption (a key step must end a summary, not
+    interrupt it), or whose range is not the claims made while they are up, as
+    ``"'Vertices 3–7: …' again"`` or ``"'Vertices 3–7: …' over 3–4"``."""
+    found = []
+    said: set[tuple[int, str]] = set()
+    for run, caption, claims in _summary_spans(data):
+        if (m := _SUMMARY.match(caption)) is None:
+            continue
+        if (run, caption) in said:
+            found.append(f"{caption!r} again")
+        said.add((run, caption))
+        first, last = int(m[1]), int(m[2] or m[1])
+        if claims != set(range(first, last + 1)):
+            shown = f"{min(claims)}–{max(claims)}" if claims else "nothing"
+            found.append(f"{caption!r} over {shown}")
+    return found
+
+
+# --- issue 22: the panel's small polygon keeps its labels readable --------------------------------
+
+#: the least a label of the panel's polygon keeps from its outline and from another label
+LABEL_ROOM = 0.03
+
+
+def crowded_panel_labels(data: dict) -> list[str]:
+    """The labels of the panel's polygon that overlap another label or come within
+    :data:`LABEL_ROOM` of its outline (an edge through a label misreads it), or that stand
+    nearer another vertex's dot than their own, as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``;
+    and the vertices left without a label (no room for one: ``"K unlabelled"``). Each run's
+    panel (from its polygon's coming in) is judged alone."""
+    found: list[str] = []
+    for outline, markers in _panels(data):
+        found += _crowded(outline, markers)
+    return found
+
+
+def _panels(data: dict) -> Iterator[tuple[dict, dict[str, dict]]]:
+    """Each run's panel polygon and the first node of each of its markers (``panel:K``) the
+    graph shows: a run begins where its polygon is drawn (the panel comes in with it, added,
+    not played: its nodes are those a play recolours, and the last run's those on screen at
+    the end). A run whose panel polygon the graph never shows is left out."""
+    runs: list[tuple[dict | None, dict[str, dict]]] = [(None, {})]
+
+    def seen(node: dict) -> None:
+        name = node.get("name") or ""
+        outline, markers = runs[-1]
+        if name == "panel:polygon" and node.get("points") and outline is None:
+            runs[-1] = (node, markers)
+        elif name.startswith("panel:") and name not in _PANEL_PARTS:
+            markers.setdefault(name[6:], node)
+
+    for play in data["plays"]:
+        if any(a["type"] in INCOMING and (a.get("mobject") or {}).get("name") == "polygon"
+               for a in play["animations"]):
+            runs.append((None, {}))
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                seen(node)
+    for mobject in data.get("final", ()):
+        for node in mobject_nodes(mobject):
+            seen(node)
+    for outline, markers in runs:
+        if outline is not None and markers:
+            yield outline, markers
+
+
+#: the panel's nodes that are no vertex's marker
+_PANEL_PARTS = {"panel:polygon", "panel:lit", "panel:call"}
+
+
+def _crowded(outline_node: dict, markers: dict[str, dict]) -> list[str]:
+    from shapely.geometry import MultiLineString, Point, box
+
+    # manim's points: four a curve, its first and last the ends of an edge (several rings,
+    # with holes, are not joined end to start)
+    points = outline_node["points"]
+    outline = MultiLineString([(points[k][:2], points[k + 3][:2])
+                               for k in range(0, len(points) - 3, 4)])
+    labels, dots, found = {}, {}, []
+    for label, node in markers.items():
+        parts = list(mobject_nodes(node))
+        texts = [p for p in parts if p.get("text") and p.get("box")]
+        dot = next((p for p in parts if p.get("type") == "Dot" and p.get("points")), None)
+        if dot is None:
+            continue
+        xs, ys = zip(*[q[:2] for q in dot["points"]], strict=True)
+        dots[label] = Point(sum(xs) / len(xs), sum(ys) / len(ys))
+        if texts:
+            labels[label] = box(*texts[0]["box"])
+        else:
+            found.append(f"{label} unlabelled")
+    for label, shape in sorted(labels.items()):
+        if shape.distance(outline) < LABEL_ROOM:
+            found.append(f"{label} × edge")
+        found += [f"{label} × {other}" for other, there in sorted(labels.items())
+                  if other > label and shape.distance(there) < LABEL_ROOM]
+        nearest = min(dots, key=lambda k: (shape.distance(dots[k]), k))
+        if nearest != label and shape.distance(dots[nearest]) < shape.distance(dots[label]):
+            found.append(f"{label} ~ {nearest}")
     return found

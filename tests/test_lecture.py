@@ -29,7 +29,9 @@ from click.testing import CliRunner
 from tests.reading_rules import (
     answers_over_pictures,
     broken_counts,
+    broken_summaries,
     crossfaded_subtitles,
+    crowded_panel_labels,
     crowded_verdicts,
     hidden_failures,
     repeated_verdicts,
@@ -483,6 +485,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert stale_endings(data) == [], chapter.slug
     # issue 22: a verdict's ✓ or ✗ stands clear of every edge and label
     assert crowded_verdicts(data) == [], chapter.slug
+    # issue 22 item 5: a summary of fast beats is not broken by a key step and comes back
+    assert broken_summaries(data) == [], chapter.slug
+    # the panel's small polygon: its labels apart, off its edges, none left out
+    assert crowded_panel_labels(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from hypothesis import given, settings
 
@@ -265,3 +267,96 @@ def test_the_stack_drawn_is_the_stack_of_the_log():
     assert len(last.triangulation) == p.n - 2
     assert set(cut) <= whole and len(cut) + sum(len(b.triangles) for b in beats
                                                 if isinstance(b, Stack)) == p.n - 2
+
+
+# --- the stack's place (issue 22 item 5: the stack drawn, clear of everything else) -----------------
+
+
+def _box_of(node) -> tuple[float, float, float, float] | None:
+    """A graph node's box: its text's box, else its points' bounds, with all its parts."""
+    from tests.reading_rules import mobject_nodes
+
+    xs, ys = [], []
+    for part in mobject_nodes(node):
+        if part.get("box") is not None:
+            x0, y0, x1, y1 = part["box"]
+            xs += [x0, x1]
+            ys += [y0, y1]
+        for x, y, *_ in part.get("points") or ():
+            xs.append(x)
+            ys.append(y)
+    return (min(xs), min(ys), max(xs), max(ys)) if xs else None
+
+
+def stack_collisions(data) -> list[str]:
+    """The stack's columns (each drawn) that overlap or touch P's region, a vertex's marker
+    or label, the title, the panel (its polygon, labels, code, lights, call line) or a
+    subtitle, as ``"stack 'A M K' × vertex:J"``."""
+    from shapely.geometry import Polygon as Region
+    from shapely.geometry import box
+
+    from tests.reading_rules import INCOMING, graph_nodes
+
+    columns, others = [], {}
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for key in ("mobject", "target"):
+                node = anim.get(key) or {}
+                name = node.get("name") or ""
+                if name == "stack:column" and (anim["type"] in INCOMING or key == "target"):
+                    columns.append(node)
+    for node in graph_nodes(data):
+        name = node.get("name") or ""
+        if name == "polygon" and node.get("points"):
+            others.setdefault(name, Region([p[:2] for p in node["points"]]))
+        elif (name.startswith(("vertex:", "panel", "code")) or name in ("title", "subtitle")) \
+                and (b := _box_of(node)) is not None:
+            others.setdefault(f"{name} {b}", box(*b))
+    assert columns and "polygon" in others  # not vacuous: a stack drawn beside a polygon
+    found = []
+    for column in columns:
+        words = " ".join(p["text"] for p in column["submobjects"])
+        here = box(*_box_of(column))
+        found += [f"stack {words!r} × {name}" for name, shape in others.items()
+                  if here.distance(shape) < 0.1]
+    return sorted(set(found))
+
+
+def _sweep_scene(tmp_path, points, panel):
+    from metaphors.scene import TraceScene
+
+    class Sweep(TraceScene):
+        algorithm = "monotone"
+        polygon = "lecture"
+        title = "Monotone partition, then the stack"
+
+    path = tmp_path / "polygon.json"
+    path.write_text(json.dumps([list(p) for p in points]))
+    cls = Sweep.handed(polygon=str(path))
+    return cls.with_panel(panel) if panel else cls
+
+
+#: the lecture polygon turned over left to right: its vertices D and J and their labels stand
+#: at the frame's left, where the stack stood before (x −6.97 … −6.03, from y 2.9 down)
+MIRRORED = [(-x, y) for x, y in make_sample("lecture")]
+
+
+@pytest.mark.parametrize("panel", [None, "source"])
+@pytest.mark.parametrize("points", [make_sample("lecture"), MIRRORED], ids=["lecture", "mirrored"])
+def test_the_stack_keeps_clear_of_the_polygon_its_labels_the_panel_and_the_captions(
+        tmp_path, points, panel):
+    from trex.snapshot import build
+
+    data = build(_sweep_scene(tmp_path, points, panel)).data
+    assert stack_collisions(data) == []
+
+
+@pytest.mark.parametrize("panel", [None, "source"])
+def test_the_lectures_stack_keeps_clear_too(panel):
+    from tests.test_lecture import _chapter_class
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    faster = _chapter_class(next(c for c in lecture_chapters() if c.slug == "faster"))
+    data = build((faster.with_panel(panel) if panel else faster).handed()).data
+    assert stack_collisions(data) == []

@@ -45,7 +45,9 @@ from story.storyboard import run_vertices
 from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
+    broken_summaries,
     crossfaded_subtitles,
+    crowded_panel_labels,
     crowded_verdicts,
     graph_nodes,
     hidden_failures,
@@ -235,6 +237,21 @@ def test_a_verdicts_mark_stands_clear_of_edges_and_labels(case):
     """Issue 22: a ✓ or ✗ keeps 2 % of the frame's height from every edge of its polygon
     and every vertex label (a ✓ on edge BC reads as judging BC)."""
     assert crowded_verdicts(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_summary_covers_one_unbroken_run_of_fast_beats(case):
+    """Issue 22 item 5: a key step (a split or merge vertex) ends the summary of the fast
+    beats before it, and no summary comes back after it; each summary's range ("Vertices
+    3–7") is the claims made while it is up, no more."""
+    assert broken_summaries(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_panels_polygon_keeps_its_labels_apart_and_off_its_edges(case):
+    """The panel's small copy of P: no label over another or over an edge, each nearer its
+    own dot than any other, none left out (issue 22: the lecture's M and K crowded)."""
+    assert crowded_panel_labels(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))

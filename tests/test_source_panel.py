@@ -219,3 +219,39 @@ def test_a_listing_of_one_tall_line_that_fits_is_not_cut(tmp_path):
         rows = _rows(panel)
         assert len(rows) == slots and panel.window is None
         assert not any(r.original_text.endswith("…") for r in rows)
+
+
+# --- the panel's small polygon: its labels readable (issue 22: the lecture's M and K) -------------
+
+
+@pytest.mark.parametrize("sample", ["lecture", "counterexample", "counterexample-twin",
+                                    "gravity-snag", "two-ears", "keyhole"])
+def test_the_panels_polygon_keeps_every_label_apart_off_its_edges_and_readable(sample):
+    """Each label of the panel's P: kept (none dropped for want of room), at least 2.5 % of
+    the frame's height, 0.03 clear of every edge and every other label, nearer its own dot
+    than any other, within the panel's polygon area (under the title, over the code)."""
+    from shapely.geometry import LineString, Point, box
+
+    from metaphors.layout import PANEL_LABELS
+    from story.runs import run_logged
+    from story.storyboard import storyboard
+    from tests.reading_rules import LABEL_ROOM
+
+    shown = storyboard(run_logged("ear-clipping", sample))[0]
+    panel = Panel(shown.points, shown.labels, None, holes=shown.holes)
+    rings = [panel.frame.many(shown.points),
+             *(panel.frame.many(h["points"]) for h in shown.holes)]
+    edges = [LineString([*(p[:2] for p in ring), ring[0][:2]]) for ring in rings]
+    area = box(PANEL_LABELS.x - PANEL_LABELS.width / 2, PANEL_LABELS.y - PANEL_LABELS.height / 2,
+               PANEL_LABELS.x + PANEL_LABELS.width / 2, PANEL_LABELS.y + PANEL_LABELS.height / 2)
+    assert all(len(m.submobjects) == 2 for m in panel.markers.values())  # no label dropped
+    boxes = {k: box(*m[1].get_corner([-1, -1, 0])[:2], *m[1].get_corner([1, 1, 0])[:2])
+             for k, m in panel.markers.items()}
+    dots = {k: Point(*m[0].get_center()[:2]) for k, m in panel.markers.items()}
+    for label, shape in boxes.items():
+        assert panel.markers[label][1].height >= LEAST_LINE, label
+        assert area.contains(shape), label
+        assert min(shape.distance(e) for e in edges) >= LABEL_ROOM, label
+        assert all(shape.distance(other) >= LABEL_ROOM
+                   for k, other in boxes.items() if k != label), label
+        assert min(dots, key=lambda k: shape.distance(dots[k])) == label, label
