@@ -526,6 +526,7 @@ def crowded_verdicts(data: dict) -> list[str]:
             where, gap = min(gaps.items(), key=lambda item: item[1])
             if gap < LEAST_MARK_GAP:
                 found.append(f"play {k} {mark['name']}: {gap:.2f} from {where}")
+    return found
 
 
 # --- issue 22 item 5: a summary covers one unbroken run of fast beats ----------------------------
