@@ -42,6 +42,12 @@ def graph_nodes(data: dict, *, final_only: bool = False) -> Iterator[dict]:
         yield from mobject_nodes(mobject)
 
 
+def drawn(node: dict) -> bool:
+    """Whether a text node is drawn: filled, or a written text (``GlyphText``: a title, whose
+    fill is its glyphs', which the graph does not list, not the group's)."""
+    return (node.get("fill_opacity") or 0) > 0 or node.get("type") == "GlyphText"
+
+
 def unreadable_cues(data: dict) -> list[str]:
     """The cues too short or too fast to read, as ``"1.20 s, 41 cps: …"``."""
     bad = []
@@ -65,8 +71,8 @@ def small_texts(data: dict) -> list[str]:
     for node in graph_nodes(data):
         if node.get("box") is None or not node.get("text", "").strip():
             continue
-        if (node.get("fill_opacity") or 0) <= 0:
-            continue  # not drawn
+        if not drawn(node):
+            continue
         height = line_height(node)
         if height < LEAST_LINE:
             found[(node["name"], node["text"])] = height
@@ -126,7 +132,7 @@ def _shown_texts(node: dict, skip: frozenset[str]) -> Iterator[str]:
     """The drawn texts of a node and its parts, leaving out the subtrees named in ``skip``."""
     if node.get("name") in skip:
         return
-    if (node.get("text") or "").strip() and (node.get("fill_opacity") or 0) > 0:
+    if (node.get("text") or "").strip() and drawn(node):
         yield node["text"]
     for child in node.get("submobjects", ()):
         yield from _shown_texts(child, skip)
@@ -397,3 +403,45 @@ def repeated_verdicts(data: dict) -> list[str]:
             counts[(section, caption)] = counts.get((section, caption), 0) + 1
     return [f"{n} × {caption!r} ({section})" for (section, caption), n in counts.items()
             if n > 1]
+
+
+# --- issue 22: no text over the picture -------------------------------------------------------
+
+#: the least gap between a note drawn on the picture and a vertex's label (1.5 % of the
+#: frame's height): nearer, the two read as one text ("Doutside P, inside T")
+LEAST_NOTE_GAP = 0.12
+#: the notes a metaphor writes beside what it points at, on the picture
+_NOTES = ("astray:note",)
+
+
+def _label_boxes(node: dict) -> Iterator[tuple[str, tuple[float, float, float, float]]]:
+    """(vertex, box) of each vertex label in a node and its parts."""
+    for part in mobject_nodes(node):
+        if (part.get("name") or "").startswith("vertex:"):
+            for child in part.get("submobjects", ()):
+                if child.get("box") and (child.get("text") or "").strip():
+                    yield part["name"].removeprefix("vertex:"), tuple(child["box"])
+
+
+def crowded_notes(data: dict) -> list[str]:
+    """The notes on the picture (:data:`_NOTES`) nearer than :data:`LEAST_NOTE_GAP` to a
+    vertex label shown with them, as ``"'outside P, inside T' touches D"``. The labels are
+    those of the polygon drawn last before the note (a scene of several runs draws several)."""
+    labels: set[tuple[str, tuple[float, float, float, float]]] = set()
+    found = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                labels = set()
+            for key in ("mobject", "target"):
+                labels.update(_label_boxes(anim.get(key, {})))
+            for part in mobject_nodes(node):
+                if part.get("name") not in _NOTES or not part.get("box"):
+                    continue
+                x0, y0, x1, y1 = part["box"]
+                grown = (x0 - LEAST_NOTE_GAP, y0 - LEAST_NOTE_GAP, x1 + LEAST_NOTE_GAP,
+                         y1 + LEAST_NOTE_GAP)
+                found += [f"{part['text']!r} touches {v}" for v, box in sorted(labels)
+                          if _overlap(grown, box)]
+    return sorted(set(found))

@@ -46,6 +46,7 @@ from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
     crossfaded_subtitles,
+    crowded_notes,
     graph_nodes,
     hidden_failures,
     small_texts,
@@ -233,6 +234,13 @@ def test_every_scene_speaks_the_taught_words(case):
     the thesis does (no slug), show no code and no number with two decimals; only the
     panel's call line shows the real call (a programmer's render keeps it)."""
     assert unspoken_words(graph(case).data, call_line=True) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_note_on_the_picture_keeps_clear_of_the_labels(case):
+    """Issue 22, no text over the picture: a note the metaphor writes on the picture ("outside
+    P, inside T") stands apart from every vertex label, or the two read as one text."""
+    assert crowded_notes(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
