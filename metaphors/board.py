@@ -187,11 +187,12 @@ class Board:
         return [FadeIn(new)]
 
     def _cut_outgoing(self) -> None:
-        """Take the subtitle being replaced off the screen at once (a cut): two subtitles
-        are never up together, as a crossfade would show them."""
+        """Take the subtitle and the call line being replaced off the screen at once (a cut):
+        two of them are never up together, as a crossfade would show them."""
         old, self.outgoing = self.outgoing, None
-        if old is not None:
-            self.scene.remove(old)
+        for gone in (old, self.panel.cut_outgoing()):  # the call line likewise
+            if gone is not None:
+                self.scene.remove(gone)
 
     def keep(self, key: str, mobject: Mobject) -> None:
         """Remember a metaphor object (it turns with the polygon and is cleared by ``drop``)."""

@@ -84,27 +84,34 @@ OUTGOING = {"FadeOut", "Uncreate", "Unwrite", "ShrinkToCenter"}
 INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter"}
 
 
-def _played_subtitles(anim: dict) -> Iterator[tuple[str, str]]:
-    """(animation type, text) of every subtitle an animation (or its members) plays."""
+def _played_texts(anim: dict, name: str) -> Iterator[tuple[str, str]]:
+    """(animation type, text) of every text named ``name`` an animation (or its members)
+    plays."""
     mobject = anim.get("mobject") or {}
-    if mobject.get("name") == "subtitle" and (mobject.get("text") or "").strip():
+    if mobject.get("name") == name and (mobject.get("text") or "").strip():
         yield anim["type"], mobject["text"]
     for child in anim.get("animations", ()):
-        yield from _played_subtitles(child)
+        yield from _played_texts(child, name)
+
+
+def crossfaded_texts(data: dict, name: str) -> list[str]:
+    """The plays that take one text named ``name`` off while putting the next on (the two on
+    screen at once, one over the other), as ``"play 12: 'old' → 'new'"``."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        played = [pair for anim in play["animations"] for pair in _played_texts(anim, name)]
+        gone = [text for kind, text in played if kind in OUTGOING]
+        come = [text for kind, text in played if kind in INCOMING]
+        if gone and come:
+            found.append(f"play {k}: {gone[0]!r} → {come[0]!r}")
+    return found
 
 
 def crossfaded_subtitles(data: dict) -> list[str]:
     """Issue 22 item 9: the plays that take one subtitle off while putting the next on (two
     subtitles on screen at once), as ``"play 12: 'old' → 'new'"``. A caption goes before the
     next comes: a cut, or a play that takes it off and then one that puts the next on."""
-    found = []
-    for k, play in enumerate(data["plays"]):
-        played = [pair for anim in play["animations"] for pair in _played_subtitles(anim)]
-        gone = [text for kind, text in played if kind in OUTGOING]
-        come = [text for kind, text in played if kind in INCOMING]
-        if gone and come:
-            found.append(f"play {k}: {gone[0]!r} → {come[0]!r}")
-    return found
+    return crossfaded_texts(data, "subtitle")
 
 
 # --- issue 22 item 10: the words ------------------------------------------------------------------

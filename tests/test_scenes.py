@@ -38,7 +38,7 @@ from geometry.io import read_polygon, read_shape
 from metaphors.pseudocode import source_of
 from metaphors.scene import SequenceScene, TraceScene
 from story.pseudocode import named
-from story.registry import entry, hole_pseudocode, wrong
+from story.registry import entry, hole_pseudocode, spoken, wrong
 from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
 from story.spec import RunSpec
 from story.storyboard import run_vertices
@@ -46,6 +46,7 @@ from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
     crossfaded_subtitles,
+    crossfaded_texts,
     crowded_notes,
     graph_nodes,
     hidden_failures,
@@ -215,6 +216,13 @@ def test_never_two_subtitles_at_once(case):
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
+def test_never_two_call_lines_at_once(case):
+    """Issue 22, no text over text: the panel's call line is cut, not crossfaded, to the
+    next (two calls fading through each other read "clip_ear(C,c₁(a₁)→[c₁ …")."""
+    assert crossfaded_texts(graph(case).data, "panel:call") == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
 def test_slices_are_counted_one_by_one_up_to_the_whole_triangulation(case):
     """Issue 22 item 5: a slice counter runs 0, 1 … n − 2 and never jumps; the run ends on
     the whole triangulation drawn in P with its count."""
@@ -241,6 +249,27 @@ def test_a_note_on_the_picture_keeps_clear_of_the_labels(case):
     """Issue 22, no text over the picture: a note the metaphor writes on the picture ("outside
     P, inside T") stands apart from every vertex label, or the two read as one text."""
     assert crowded_notes(graph(case).data) == [], case.id
+
+
+def _titled_runs(case: SceneCase) -> list[tuple[str, str]]:
+    """(algorithm, title) of each run a scene plays under a title of its own."""
+    cls = case.scene_class()
+    if issubclass(cls, SequenceScene):
+        return [(algorithm, title) for algorithm, _, title in cls.runs]
+    if issubclass(cls, TraceScene):
+        return [(cls.algorithm, cls.title)]
+    return []
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_heuristics_title_says_its_thesis_name(case):
+    """Issue 22 item 1: a heuristic's run is titled with the thesis's name for it ("Correct
+    Translation", not only "Sweeping parallel to AC"), so that the words taught are the words
+    shown."""
+    untold = [title for algorithm, title in _titled_runs(case)
+              if entry(algorithm).kind == "heuristic"
+              and spoken(algorithm).casefold() not in title.casefold()]
+    assert untold == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
