@@ -57,6 +57,7 @@ class Board:
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
         self.holes = list(holes)  # each {"points", "labels"}: drawn unfilled, their vertices marked
+        self.box = box  # the picture's part of the screen (nothing drawn leaves it)
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
         self.shape = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
                          "polygon")

@@ -59,7 +59,7 @@ class Sweep(Moving):
 EPS = 1e-6
 #: the gap kept between a note on the picture and a vertex label (a word's space and more):
 #: nearer, the two read as one text ("Doutside P, inside T")
-NOTE_GAP = 0.15
+NOTE_GAP = 0.12
 
 
 # --- plain geometry (any coordinates) ------------------------------------------------------------

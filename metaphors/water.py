@@ -11,11 +11,12 @@ from collections.abc import Mapping
 from typing import Any
 
 import shapely
-from manim import Circle, FadeIn, FadeOut, Indicate, Transform
+from manim import FadeIn, FadeOut, Indicate, Transform, config
 from manim import Polygon as MPolygon
 
 from geometry.visibility import visible_region
 from metaphors.board import Board
+from metaphors.layout import SUBTITLE_Y, TITLE_Y
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from story.beats import beat_kind
@@ -79,10 +80,25 @@ def _rise(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
                          for v, h in walk.reach(call, ret)))}
 
 
-def _disk(board: Board, center: Point, radius: float) -> Circle:
-    return tag(Circle(radius=max(board.length(radius), 1e-3), color=board.theme.water,
-                      stroke_width=board.theme.thin_stroke, fill_color=board.theme.water,
-                      fill_opacity=0.3).move_to(board.at(center)), "argument", "water")
+#: how far from the title's and the subtitle's middle line the water stops (above a one-line
+#: subtitle's top, below the title's bottom)
+TEXT_CLEARANCE = 0.35
+
+
+def _disk(board: Board, center: Point, radius: float) -> MPolygon:
+    """The water's disk, cut where the picture's part of the screen ends: grown past the
+    polygon it would spill under the subtitle, the title or the panel (Scaling's second
+    radius reaches past B's side). Cut at the screen's edge, not the box's: a cut at B would
+    look like a wall."""
+    x, y = board.at(center)[:2]
+    right = board.box.x + board.box.width / 2
+    disk = shapely.Point(x, y).buffer(max(board.length(radius), 1e-3), 64).intersection(
+        shapely.box(-config.frame_width / 2, SUBTITLE_Y + TEXT_CLEARANCE, right,
+                    TITLE_Y - TEXT_CLEARANCE))
+    corners = [(px, py, 0.0) for px, py in list(disk.exterior.coords)[:-1]] if isinstance(
+        disk, shapely.Polygon) and not disk.is_empty else [(x, y, 0.0)] * 3
+    return tag(MPolygon(*corners, color=board.theme.water, stroke_width=board.theme.thin_stroke,
+                        fill_color=board.theme.water, fill_opacity=0.3), "argument", "water")
 
 
 def water(board: Board, beat: Water) -> None:
