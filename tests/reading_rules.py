@@ -452,3 +452,28 @@ def crowded_notes(data: dict) -> list[str]:
                 found += [f"{part['text']!r} touches {v}" for v, box in sorted(labels)
                           if _overlap(grown, box)]
     return sorted(set(found))
+
+
+#: the metaphors' shapes that grow as the run goes (and may outgrow the picture)
+_GROWING = ("water",)
+
+
+def shapes_under_text(data: dict) -> list[str]:
+    """The growing shapes (:data:`_GROWING`) drawn under a subtitle or a title, or off the
+    screen's edge, as ``"water under the subtitle"``: the picture keeps to its part of the
+    screen, so that no text is read over it."""
+    texts = {(n["name"], tuple(n["box"])) for n in graph_nodes(data)
+             if n.get("name") in ("subtitle", "title") and n.get("box")
+             and (n.get("text") or "").strip()}
+    found = set()
+    for node in graph_nodes(data):
+        if node.get("name") not in _GROWING or not node.get("points"):
+            continue
+        box = _box_of(node)
+        if box is None:
+            continue
+        found |= {f"{node['name']} under the {name}" for name, where in texts
+                  if _overlap(box, where)}
+        if box[0] < -7.12 or box[2] > 7.12:
+            found.add(f"{node['name']} off the screen")
+    return sorted(found)

@@ -50,6 +50,7 @@ from tests.reading_rules import (
     crowded_notes,
     graph_nodes,
     hidden_failures,
+    shapes_under_text,
     small_texts,
     unreadable_cues,
     unspoken_words,
@@ -270,6 +271,13 @@ def test_a_heuristics_title_says_its_thesis_name(case):
               if entry(algorithm).kind == "heuristic"
               and spoken(algorithm).casefold() not in title.casefold()]
     assert untold == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_picture_keeps_off_the_text(case):
+    """Issue 22, no text over the picture: a growing shape (Scaling's spilled water) stays
+    on the screen and off the subtitle's and the title's lines."""
+    assert shapes_under_text(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
