@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import importlib.util
 import inspect
+import re
 import sys
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -278,6 +279,17 @@ def test_the_picture_keeps_off_the_text(case):
     """Issue 22, no text over the picture: a growing shape (Scaling's spilled water) stays
     on the screen and off the subtitle's and the title's lines."""
     assert shapes_under_text(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_call_line_is_a_real_call(case):
+    """Issue 22 item 1: a programmer's render keeps its call line because a programmer wants
+    the real call: one that Python could run, not the command line's slug as a function
+    ("ear-clipping-naive(P)")."""
+    calls = {n["text"] for n in nodes(graph(case)) if n.get("name") == "panel:call"
+             and (n.get("text") or "").strip()}
+    unreal = sorted(c for c in calls if not re.match(r"[A-Za-z_]\w*\(", c))
+    assert unreal == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
