@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from typing import Any
 
 import shapely
-from manim import FadeIn, FadeOut, Indicate, Transform, config
+from manim import FadeIn, FadeOut, Indicate, Mobject, Transform, UpdateFromAlphaFunc, config
 from manim import Polygon as MPolygon
 
 from geometry.visibility import visible_region
@@ -106,12 +106,23 @@ def water(board: Board, beat: Water) -> None:
     states = beat.states
     disk = _disk(board, states[0].center, 0.0)
     board.play(beat, FadeIn(disk), run_time=0.5)
+    radius = 0.0
     for k, (state, reached) in enumerate(hits(states[1:])):
-        grown = _disk(board, state.center, state.radius)
         colour = board.theme.result if k == 0 else board.theme.argument
-        board.play(beat, Transform(disk, grown),
+        board.play(beat, _grow(board, disk, state.center, radius, state.radius),
                    Indicate(board.markers[reached], color=colour), run_time=1.2)
+        radius = state.radius
     board.play(beat, FadeOut(disk), run_time=0.5)
+
+
+def _grow(board: Board, disk: MPolygon, center: Point, start: float, end: float,
+          ) -> UpdateFromAlphaFunc:
+    """The disk growing from radius ``start`` to ``end``, cut anew in every frame: a
+    Transform to the cut disk would shrink its cut edge into the picture on the way."""
+    def update(mobject: Mobject, alpha: float) -> None:
+        mobject.become(_disk(board, center, start + (end - start) * alpha))
+
+    return UpdateFromAlphaFunc(disk, update)
 
 
 def walled_water(board: Board, beat: WalledWater) -> None:
