@@ -166,7 +166,9 @@ def flood(board: Board, beat: Flood) -> None:
         wet = triangle.intersection(_strip(a, c, towards, state.level))
         drowned = board.markers[reached]
         is_last = state is states[-1]
-        colour = board.theme.result if is_last else board.theme.rejected
+        # going under is no failure: amber, as the clock's and the sweep's later candidates
+        # (red means "fails", metaphors.theme's legend); the last one, the pick, green
+        colour = board.theme.result if is_last else board.theme.argument
         board.play(beat, Transform(band, _region_mobject(board, wet)),
                    Indicate(drowned, color=colour), run_time=1.2)
     board.play(beat, FadeOut(band), run_time=0.5)
