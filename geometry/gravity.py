@@ -267,8 +267,8 @@ def _convex_fallback(polygon: Polygon) -> Diagonal:
     t = triangle_at(polygon, leftmost_vertex(polygon))
     tracing.note(
         "no-reflex-vertex",
-        reason="strictly convex: no reflex or straight vertex, so the claim is AC around the "
-               "left-most B",
+        reason="strictly convex: no reflex or straight vertex, so the claim is "  # its own labels
+               f"{t.a.label}{t.c.label} around the left-most {t.b.label}",
         diagonal=[t.a.label, t.c.label],
     )
     return claim(t.a, t.c)

@@ -57,6 +57,7 @@ class Board:
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
         self.holes = list(holes)  # each {"points", "labels"}: drawn unfilled, their vertices marked
+        self.box = box  # the picture's part of the screen (nothing drawn leaves it)
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
         self.box = box  # the picture's place on the frame
         self.shape = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
@@ -188,11 +189,12 @@ class Board:
         return [FadeIn(new)]
 
     def _cut_outgoing(self) -> None:
-        """Take the subtitle being replaced off the screen at once (a cut): two subtitles
-        are never up together, as a crossfade would show them."""
+        """Take the subtitle and the call line being replaced off the screen at once (a cut):
+        two of them are never up together, as a crossfade would show them."""
         old, self.outgoing = self.outgoing, None
-        if old is not None:
-            self.scene.remove(old)
+        for gone in (old, self.panel.cut_outgoing()):  # the call line likewise
+            if gone is not None:
+                self.scene.remove(gone)
 
     def keep(self, key: str, mobject: Mobject) -> None:
         """Remember a metaphor object (it turns with the polygon and is cleared by ``drop``)."""

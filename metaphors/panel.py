@@ -103,6 +103,8 @@ class Panel:
         self.lit: tuple[int, Rectangle, Mobject] | None = None
         self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
         self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
+        #: the call line being replaced, for the board to cut (see :meth:`cut_outgoing`)
+        self.outgoing_call: Mobject | None = None
         #: whether the call line shows each beat's real call: a programmer's render does, the
         #: lecture does not (issue 22: no code in the lecture; see TraceScene.call_line)
         self.shows_calls = True
@@ -309,8 +311,15 @@ class Panel:
                                   colour=self.theme.ink, width=PANEL_CODE.width),
                   "called", "panel:call")
         new.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
-        old, self.call = self.call, new
-        return [FadeOut(old), FadeIn(new)]
+        # the old one is cut, not faded out: two calls fading through each other in one
+        # place are unreadable (issue 22: never two texts over each other)
+        self.outgoing_call, self.call = self.call, new
+        return [FadeIn(new)]
+
+    def cut_outgoing(self) -> Mobject | None:
+        """The call line being replaced, once (the board takes it off the screen at once)."""
+        old, self.outgoing_call = self.outgoing_call, None
+        return old
 
 
 def _note(lines: int, where: str) -> str:

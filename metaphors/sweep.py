@@ -57,6 +57,9 @@ class Sweep(Moving):
 
 #: How far inside/outside counts as "on the boundary" (scene units).
 EPS = 1e-6
+#: the gap kept between a note on the picture and a vertex label (a word's space and more):
+#: nearer, the two read as one text ("Doutside P, inside T")
+NOTE_GAP = 0.12
 
 
 # --- plain geometry (any coordinates) ------------------------------------------------------------
@@ -195,21 +198,32 @@ def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineStri
              ((0, 1, 0), (1, 1, 0), (1, 0, 0), (1, -1, 0), (0, -1, 0), (-1, -1, 0), (-1, 0, 0),
               (-1, 1, 0))]
     marks = [m.get_center() for marker in board.markers.values() for m in marker]
+    # a label's box grown by a word's gap: a note nearer than that reads as one text with it
+    labels = shapely.union_all([_box(marker[-1]).buffer(NOTE_GAP, join_style="mitre")
+                                for marker in board.markers.values()])
     left, right = -config.frame_width / 2 + 0.1, METAPHOR.x + METAPHOR.width / 2 + 0.4
     shapes = [outline(board.shape), outline(board.objects.get("T")), tool.buffer(0.08)]
     busy = shapely.union_all([g for g in shapes if g is not None])
 
     def score(spot):
         note.next_to(near, direction=spot[0], buff=spot[1])
-        (x0, y0), (x1, y1) = note.get_corner(np.array([-1, -1, 0]))[:2], note.get_corner(
-            np.array([1, 1, 0]))[:2]
+        box = _box(note)
+        x0, _, x1, _ = box.bounds
         on_screen = x0 >= left and x1 <= right
-        covered = shapely.box(x0, y0, x1, y1).intersection(busy).area
+        covered = box.intersection(busy).area
         clearance = min(float(np.linalg.norm(note.get_center() - m)) for m in marks)
-        return (on_screen, -round(covered, 3), min(clearance, 0.6), -spot[1])
+        return (on_screen, not box.intersects(labels), -round(covered, 3), min(clearance, 0.6),
+                -spot[1])
 
     best = max(spots, key=score)
     note.next_to(near, direction=best[0], buff=best[1])
+
+
+def _box(mobject: Mobject) -> shapely.Polygon:
+    """A mobject's box on screen, as shapely."""
+    (x0, y0), (x1, y1) = mobject.get_corner(np.array([-1, -1, 0]))[:2], mobject.get_corner(
+        np.array([1, 1, 0]))[:2]
+    return shapely.box(x0, y0, x1, y1)
 
 
 def _tool(axis: Line, clip: shapely.Polygon | None = None) -> shapely.LineString:

@@ -11,11 +11,12 @@ from collections.abc import Mapping
 from typing import Any
 
 import shapely
-from manim import Circle, FadeIn, FadeOut, Indicate, Transform
+from manim import FadeIn, FadeOut, Indicate, Mobject, Transform, UpdateFromAlphaFunc, config
 from manim import Polygon as MPolygon
 
 from geometry.visibility import visible_region
 from metaphors.board import Board
+from metaphors.layout import SUBTITLE_Y, TITLE_Y
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from story.beats import beat_kind
@@ -79,10 +80,25 @@ def _rise(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
                          for v, h in walk.reach(call, ret)))}
 
 
-def _disk(board: Board, center: Point, radius: float) -> Circle:
-    return tag(Circle(radius=max(board.length(radius), 1e-3), color=board.theme.water,
-                      stroke_width=board.theme.thin_stroke, fill_color=board.theme.water,
-                      fill_opacity=0.3).move_to(board.at(center)), "argument", "water")
+#: how far from the title's and the subtitle's middle line the water stops (above a one-line
+#: subtitle's top, below the title's bottom)
+TEXT_CLEARANCE = 0.35
+
+
+def _disk(board: Board, center: Point, radius: float) -> MPolygon:
+    """The water's disk, cut where the picture's part of the screen ends: grown past the
+    polygon it would spill under the subtitle, the title or the panel (Scaling's second
+    radius reaches past B's side). Cut at the screen's edge, not the box's: a cut at B would
+    look like a wall."""
+    x, y = board.at(center)[:2]
+    right = board.box.x + board.box.width / 2
+    disk = shapely.Point(x, y).buffer(max(board.length(radius), 1e-3), 64).intersection(
+        shapely.box(-config.frame_width / 2, SUBTITLE_Y + TEXT_CLEARANCE, right,
+                    TITLE_Y - TEXT_CLEARANCE))
+    corners = [(px, py, 0.0) for px, py in list(disk.exterior.coords)[:-1]] if isinstance(
+        disk, shapely.Polygon) and not disk.is_empty else [(x, y, 0.0)] * 3
+    return tag(MPolygon(*corners, color=board.theme.water, stroke_width=board.theme.thin_stroke,
+                        fill_color=board.theme.water, fill_opacity=0.3), "argument", "water")
 
 
 def water(board: Board, beat: Water) -> None:
@@ -90,12 +106,23 @@ def water(board: Board, beat: Water) -> None:
     states = beat.states
     disk = _disk(board, states[0].center, 0.0)
     board.play(beat, FadeIn(disk), run_time=0.5)
+    radius = 0.0
     for k, (state, reached) in enumerate(hits(states[1:])):
-        grown = _disk(board, state.center, state.radius)
         colour = board.theme.result if k == 0 else board.theme.argument
-        board.play(beat, Transform(disk, grown),
+        board.play(beat, _grow(board, disk, state.center, radius, state.radius),
                    Indicate(board.markers[reached], color=colour), run_time=1.2)
+        radius = state.radius
     board.play(beat, FadeOut(disk), run_time=0.5)
+
+
+def _grow(board: Board, disk: MPolygon, center: Point, start: float, end: float,
+          ) -> UpdateFromAlphaFunc:
+    """The disk growing from radius ``start`` to ``end``, cut anew in every frame: a
+    Transform to the cut disk would shrink its cut edge into the picture on the way."""
+    def update(mobject: Mobject, alpha: float) -> None:
+        mobject.become(_disk(board, center, start + (end - start) * alpha))
+
+    return UpdateFromAlphaFunc(disk, update)
 
 
 def walled_water(board: Board, beat: WalledWater) -> None:
@@ -139,7 +166,9 @@ def flood(board: Board, beat: Flood) -> None:
         wet = triangle.intersection(_strip(a, c, towards, state.level))
         drowned = board.markers[reached]
         is_last = state is states[-1]
-        colour = board.theme.result if is_last else board.theme.rejected
+        # going under is no failure: amber, as the clock's and the sweep's later candidates
+        # (red means "fails", metaphors.theme's legend); the last one, the pick, green
+        colour = board.theme.result if is_last else board.theme.argument
         board.play(beat, Transform(band, _region_mobject(board, wet)),
                    Indicate(drowned, color=colour), run_time=1.2)
     board.play(beat, FadeOut(band), run_time=0.5)

@@ -114,8 +114,20 @@ def show(value: Any) -> str:
 
 
 def call_line(call: Event, ret: Event | None) -> str:
+    """A call as the panel's call line writes it: the real call, which Python could run. A
+    run traced under its registry name (``ear-clipping-naive``, no identifier) is called
+    as :func:`geometry.triangulate.triangulate` calls it.
+
+    >>> from tracing.events import Event
+    >>> p = {"polygon": {"ref": "P(ABCDE)"}}
+    >>> call_line(Event(0, "call", "ear-clipping-naive", args=p), None)
+    'triangulate(P, "ear-clipping-naive")'
+    >>> call_line(Event(0, "call", "is_ear", args={"v": {"ref": "B"}}), None)
+    'is_ear(B)'
+    """
     args = ", ".join(show(v) for v in (call.args or {}).values())
-    text = f"{call.name}({args})"
+    text = (f"{call.name}({args})" if call.name.isidentifier()
+            else f'triangulate({args}, "{call.name}")')
     return f"{text} → {show(ret.result)}" if ret is not None else text
 
 

@@ -42,6 +42,12 @@ def graph_nodes(data: dict, *, final_only: bool = False) -> Iterator[dict]:
         yield from mobject_nodes(mobject)
 
 
+def drawn(node: dict) -> bool:
+    """Whether a text node is drawn: filled, or a written text (``GlyphText``: a title, whose
+    fill is its glyphs', which the graph does not list, not the group's)."""
+    return (node.get("fill_opacity") or 0) > 0 or node.get("type") == "GlyphText"
+
+
 def unreadable_cues(data: dict) -> list[str]:
     """The cues too short or too fast to read, as ``"1.20 s, 41 cps: …"``."""
     bad = []
@@ -65,8 +71,8 @@ def small_texts(data: dict) -> list[str]:
     for node in graph_nodes(data):
         if node.get("box") is None or not node.get("text", "").strip():
             continue
-        if (node.get("fill_opacity") or 0) <= 0:
-            continue  # not drawn
+        if not drawn(node):
+            continue
         height = line_height(node)
         if height < LEAST_LINE:
             found[(node["name"], node["text"])] = height
@@ -78,27 +84,34 @@ OUTGOING = {"FadeOut", "Uncreate", "Unwrite", "ShrinkToCenter"}
 INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter"}
 
 
-def _played_subtitles(anim: dict) -> Iterator[tuple[str, str]]:
-    """(animation type, text) of every subtitle an animation (or its members) plays."""
+def _played_texts(anim: dict, name: str) -> Iterator[tuple[str, str]]:
+    """(animation type, text) of every text named ``name`` an animation (or its members)
+    plays."""
     mobject = anim.get("mobject") or {}
-    if mobject.get("name") == "subtitle" and (mobject.get("text") or "").strip():
+    if mobject.get("name") == name and (mobject.get("text") or "").strip():
         yield anim["type"], mobject["text"]
     for child in anim.get("animations", ()):
-        yield from _played_subtitles(child)
+        yield from _played_texts(child, name)
+
+
+def crossfaded_texts(data: dict, name: str) -> list[str]:
+    """The plays that take one text named ``name`` off while putting the next on (the two on
+    screen at once, one over the other), as ``"play 12: 'old' → 'new'"``."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        played = [pair for anim in play["animations"] for pair in _played_texts(anim, name)]
+        gone = [text for kind, text in played if kind in OUTGOING]
+        come = [text for kind, text in played if kind in INCOMING]
+        if gone and come:
+            found.append(f"play {k}: {gone[0]!r} → {come[0]!r}")
+    return found
 
 
 def crossfaded_subtitles(data: dict) -> list[str]:
     """Issue 22 item 9: the plays that take one subtitle off while putting the next on (two
     subtitles on screen at once), as ``"play 12: 'old' → 'new'"``. A caption goes before the
     next comes: a cut, or a play that takes it off and then one that puts the next on."""
-    found = []
-    for k, play in enumerate(data["plays"]):
-        played = [pair for anim in play["animations"] for pair in _played_subtitles(anim)]
-        gone = [text for kind, text in played if kind in OUTGOING]
-        come = [text for kind, text in played if kind in INCOMING]
-        if gone and come:
-            found.append(f"play {k}: {gone[0]!r} → {come[0]!r}")
-    return found
+    return crossfaded_texts(data, "subtitle")
 
 
 # --- issue 22 item 10: the words ------------------------------------------------------------------
@@ -126,7 +139,7 @@ def _shown_texts(node: dict, skip: frozenset[str]) -> Iterator[str]:
     """The drawn texts of a node and its parts, leaving out the subtrees named in ``skip``."""
     if node.get("name") in skip:
         return
-    if (node.get("text") or "").strip() and (node.get("fill_opacity") or 0) > 0:
+    if (node.get("text") or "").strip() and drawn(node):
         yield node["text"]
     for child in node.get("submobjects", ()):
         yield from _shown_texts(child, skip)
@@ -674,3 +687,70 @@ def _crowded(outline_node: dict, markers: dict[str, dict]) -> list[str]:
         if nearest != label and shape.distance(dots[nearest]) < shape.distance(dots[label]):
             found.append(f"{label} ~ {nearest}")
     return found
+
+
+# --- issue 22: no text over the picture -------------------------------------------------------
+
+#: the least gap between a note drawn on the picture and a vertex's label (1.5 % of the
+#: frame's height): nearer, the two read as one text ("Doutside P, inside T")
+LEAST_NOTE_GAP = 0.12
+#: the notes a metaphor writes beside what it points at, on the picture
+_NOTES = ("astray:note",)
+
+
+def _named_label_boxes(node: dict) -> Iterator[tuple[str, tuple[float, float, float, float]]]:
+    """(vertex, box) of each vertex label in a node and its parts."""
+    for part in mobject_nodes(node):
+        if (part.get("name") or "").startswith("vertex:"):
+            for child in part.get("submobjects", ()):
+                if child.get("box") and (child.get("text") or "").strip():
+                    yield part["name"].removeprefix("vertex:"), tuple(child["box"])
+
+
+def crowded_notes(data: dict) -> list[str]:
+    """The notes on the picture (:data:`_NOTES`) nearer than :data:`LEAST_NOTE_GAP` to a
+    vertex label shown with them, as ``"'outside P, inside T' touches D"``. The labels are
+    those of the polygon drawn last before the note (a scene of several runs draws several)."""
+    labels: set[tuple[str, tuple[float, float, float, float]]] = set()
+    found = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                labels = set()
+            for key in ("mobject", "target"):
+                labels.update(_named_label_boxes(anim.get(key, {})))
+            for part in mobject_nodes(node):
+                if part.get("name") not in _NOTES or not part.get("box"):
+                    continue
+                x0, y0, x1, y1 = part["box"]
+                grown = (x0 - LEAST_NOTE_GAP, y0 - LEAST_NOTE_GAP, x1 + LEAST_NOTE_GAP,
+                         y1 + LEAST_NOTE_GAP)
+                found += [f"{part['text']!r} touches {v}" for v, box in sorted(labels)
+                          if _overlap(grown, box)]
+    return sorted(set(found))
+
+
+#: the metaphors' shapes that grow as the run goes (and may outgrow the picture)
+_GROWING = ("water",)
+
+
+def shapes_under_text(data: dict) -> list[str]:
+    """The growing shapes (:data:`_GROWING`) drawn under a subtitle or a title, or off the
+    screen's edge, as ``"water under the subtitle"``: the picture keeps to its part of the
+    screen, so that no text is read over it."""
+    texts = {(n["name"], tuple(n["box"])) for n in graph_nodes(data)
+             if n.get("name") in ("subtitle", "title") and n.get("box")
+             and (n.get("text") or "").strip()}
+    found = set()
+    for node in graph_nodes(data):
+        if node.get("name") not in _GROWING or not node.get("points"):
+            continue
+        box = _box_of(node)
+        if box is None:
+            continue
+        found |= {f"{node['name']} under the {name}" for name, where in texts
+                  if _overlap(box, where)}
+        if box[0] < -7.12 or box[2] > 7.12:
+            found.add(f"{node['name']} off the screen")
+    return sorted(found)

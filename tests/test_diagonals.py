@@ -163,3 +163,18 @@ def test_huge_and_tiny_coordinates(scale):
     for name in CORRECT:
         assert is_inner_diagonal(p, *find_diagonal(p, name).pair), (name, scale)
     assert not is_inner_diagonal(p, *find_diagonal(p, "scaling").pair)
+
+
+def test_the_convex_fallback_names_the_pieces_own_vertices():
+    """Issue 22: a caption speaks of the picture's own vertices. A convex piece of divide and
+    conquer keeps its polygon's labels: its left-most vertex is not called B."""
+    whole = Polygon.from_points([(0, 0), (2, 0), (3, 2), (1, 3), (-1, 2), (-3, 1)])
+    assert whole.labels[1] == "B" and whole.points[1] == (-3.0, 1.0)
+    piece = whole.sub_polygon([0, 2, 3, 4, 5])  # B left out: A = (-1, 2) is left-most
+    with tracing.record() as log:
+        claim = find_diagonal(piece, "gravity")
+    (note,) = log.find(kind="note")
+    b = piece.labels[min(range(piece.n), key=lambda k: piece.points[k])]
+    assert b != "B" and note.args["reason"].endswith(
+        f"so the claim is {claim.u.label}{claim.v.label} around the left-most {b}"), \
+        note.args["reason"]

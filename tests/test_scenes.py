@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import importlib.util
 import inspect
+import re
 import sys
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -38,7 +39,7 @@ from geometry.io import read_polygon, read_shape
 from metaphors.pseudocode import source_of
 from metaphors.scene import SequenceScene, TraceScene
 from story.pseudocode import named
-from story.registry import entry, hole_pseudocode, wrong
+from story.registry import entry, hole_pseudocode, spoken, wrong
 from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
 from story.spec import RunSpec
 from story.storyboard import run_vertices
@@ -47,10 +48,13 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     crossfaded_subtitles,
+    crossfaded_texts,
+    crowded_notes,
     crowded_panel_labels,
     crowded_verdicts,
     graph_nodes,
     hidden_failures,
+    shapes_under_text,
     small_texts,
     stale_endings,
     unreadable_cues,
@@ -218,6 +222,13 @@ def test_never_two_subtitles_at_once(case):
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
+def test_never_two_call_lines_at_once(case):
+    """Issue 22, no text over text: the panel's call line is cut, not crossfaded, to the
+    next (two calls fading through each other read "clip_ear(C,c₁(a₁)→[c₁ …")."""
+    assert crossfaded_texts(graph(case).data, "panel:call") == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
 def test_slices_are_counted_one_by_one_up_to_the_whole_triangulation(case):
     """Issue 22 item 5: a slice counter runs 0, 1 … n − 2 and never jumps; the run ends on
     the whole triangulation drawn in P with its count."""
@@ -267,6 +278,52 @@ def test_every_scene_speaks_the_taught_words(case):
     the thesis does (no slug), show no code and no number with two decimals; only the
     panel's call line shows the real call (a programmer's render keeps it)."""
     assert unspoken_words(graph(case).data, call_line=True) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_note_on_the_picture_keeps_clear_of_the_labels(case):
+    """Issue 22, no text over the picture: a note the metaphor writes on the picture ("outside
+    P, inside T") stands apart from every vertex label, or the two read as one text."""
+    assert crowded_notes(graph(case).data) == [], case.id
+
+
+def _titled_runs(case: SceneCase) -> list[tuple[str, str]]:
+    """(algorithm, title) of each run a scene plays under a title of its own."""
+    cls = case.scene_class()
+    if issubclass(cls, SequenceScene):
+        return [(algorithm, title) for algorithm, _, title in cls.runs]
+    if issubclass(cls, TraceScene):
+        return [(cls.algorithm, cls.title)]
+    return []
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_heuristics_title_says_its_thesis_name(case):
+    """Issue 22 item 1: a heuristic's run is titled with the thesis's name for it ("Correct
+    Translation", not only "Sweeping parallel to AC"), so that the words taught are the words
+    shown."""
+    untold = [title for algorithm, title in _titled_runs(case)
+              if entry(algorithm).kind == "heuristic"
+              and spoken(algorithm).casefold() not in title.casefold()]
+    assert untold == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_picture_keeps_off_the_text(case):
+    """Issue 22, no text over the picture: a growing shape (Scaling's spilled water) stays
+    on the screen and off the subtitle's and the title's lines."""
+    assert shapes_under_text(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_call_line_is_a_real_call(case):
+    """Issue 22 item 1: a programmer's render keeps its call line because a programmer wants
+    the real call: one that Python could run, not the command line's slug as a function
+    ("ear-clipping-naive(P)")."""
+    calls = {n["text"] for n in nodes(graph(case)) if n.get("name") == "panel:call"
+             and (n.get("text") or "").strip()}
+    unreal = sorted(c for c in calls if not re.match(r"[A-Za-z_]\w*\(", c))
+    assert unreal == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
