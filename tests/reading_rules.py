@@ -5,6 +5,7 @@ every cue of the ``.srt`` at least 0.83 s and at most 17 characters per second
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Iterator
 from itertools import pairwise
@@ -397,3 +398,73 @@ def repeated_verdicts(data: dict) -> list[str]:
             counts[(section, caption)] = counts.get((section, caption), 0) + 1
     return [f"{n} × {caption!r} ({section})" for (section, caption), n in counts.items()
             if n > 1]
+
+
+# --- issue 22 item 5 for the exercises: polygons a class can read --------------------------------
+
+#: the least angle at a vertex, inside or out, as drawn (degrees)
+LEAST_ANGLE = 15.0
+#: the least gap between a vertex label and an edge or another label (touching is crowding)
+LEAST_LABEL_GAP = 0.02
+
+
+def _exercise_pictures(data: dict) -> Iterator[tuple[list[tuple[float, float]], list[tuple]]]:
+    """Each exercise picture coming on screen: its polygon's corners and its labels, as
+    ``(text, box)`` in the order of the corners."""
+    corners: list[tuple[float, float]] | None = None
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim.get("type") not in INCOMING or node.get("name") != "exercise":
+                continue
+            if node["type"] == "Polygon" and node.get("points"):
+                shape = _corners(node)
+                if corners is None or len(shape) > len(corners):  # P, not its triangle T
+                    corners = shape
+            markers = [m for m in node.get("submobjects", ()) if [c["type"] for c in
+                       m.get("submobjects", ())] == ["Dot", "FlatText"]]
+            if markers and corners is not None:
+                yield corners, [(m["submobjects"][1]["text"], m["submobjects"][1]["box"])
+                                for m in markers]
+                corners = None
+
+
+def _inner_angle(p, q, r) -> float:
+    import math
+
+    u, v = (p[0] - q[0], p[1] - q[1]), (r[0] - q[0], r[1] - q[1])
+    return math.degrees(math.atan2(v[0] * u[1] - v[1] * u[0], v[0] * u[0] + v[1] * u[1])) % 360
+
+
+def crowded_exercises(data: dict) -> list[str]:
+    """Issue 22 items 5 and 6: the exercise pictures a class cannot read, as drawn on screen:
+    an angle under :data:`LEAST_ANGLE` (a needle) or over 360° minus it (a notch), a vertex
+    nearer than :data:`LEAST_CLEARANCE` to an edge it is not on, and two vertex labels, or a
+    label and an edge, nearer than :data:`LEAST_LABEL_GAP`; as ``"angle at E: 2°"``."""
+    from shapely.geometry import LineString, box
+    from shapely.geometry import Point as ShapelyPoint
+
+    found = []
+    for corners, labels in _exercise_pictures(data):
+        n = len(corners)
+        names = [text for text, _ in labels] if len(labels) == n else [str(k) for k in range(n)]
+        if corners[0] == corners[-1]:
+            corners = corners[:-1]
+            n -= 1
+        edges = [LineString([corners[k], corners[(k + 1) % n]]) for k in range(n)]
+        for v in range(n):
+            a = _inner_angle(corners[v - 1], corners[v], corners[(v + 1) % n])
+            if a < LEAST_ANGLE or a > 360 - LEAST_ANGLE:
+                found.append(f"angle at {names[v]}: {a:.0f}°")
+            near = min(edges[e].distance(ShapelyPoint(corners[v])) for e in range(n)
+                       if v not in (e, (e + 1) % n))
+            if near < LEAST_CLEARANCE:
+                found.append(f"{names[v]} {near:.2f} from an edge")
+        boxes = [(text, box(*b)) for text, b in labels]
+        for (t1, b1), (t2, b2) in itertools.combinations(boxes, 2):
+            if b1.distance(b2) < LEAST_LABEL_GAP:
+                found.append(f"labels {t1} and {t2} touch")
+        for text, b in boxes:
+            if any(e.distance(b) < LEAST_LABEL_GAP for e in edges):
+                found.append(f"label {text} on an edge")
+    return found

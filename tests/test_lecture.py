@@ -30,6 +30,7 @@ from tests.reading_rules import (
     answers_over_pictures,
     broken_counts,
     crossfaded_subtitles,
+    crowded_exercises,
     hidden_failures,
     repeated_verdicts,
     replayed_beats,
@@ -475,6 +476,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 item 6: time to think, and the answer beside the picture, not over it
     assert rushed_questions(data) == [], chapter.slug
     assert answers_over_pictures(data) == [], chapter.slug
+    # issue 22 items 5 and 6: an exercise's polygon has room, its labels clear of each other
+    # and of the edges, as drawn
+    assert crowded_exercises(data) == [], chapter.slug
     # issue 22 item 5: counters run 1 … n − 2 and end on the whole triangulation
     assert broken_counts(data) == [], chapter.slug
 
