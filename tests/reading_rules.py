@@ -6,6 +6,7 @@ every cue of the ``.srt`` at least 0.83 s and at most 17 characters per second
 from __future__ import annotations
 
 import itertools
+import json
 import re
 from collections.abc import Iterator
 from itertools import pairwise
@@ -352,35 +353,99 @@ def _shape(node: dict) -> tuple[tuple[float, float], ...]:
     return tuple((round((x - x0) / size, 2), round((y - y0) / size, 2)) for x, y in corners)
 
 
-def shown_steps(data: dict) -> list[tuple[str, tuple | None, str]]:
-    """Each caption of a graph as ``(section, shape, caption)``: the card whose title opened
-    the section it is said in (a chapter's heuristic is its card and what follows, up to the
-    next card), and the shape of the run's polygon it is said over — the last one drawn by
-    the end of its step (a step's polygon may be drawn just after its caption)."""
-    steps: list[tuple[str, tuple | None, str]] = []
-    section, shape, open_step = "", None, None
+#: a step's picture is what it brings on screen, wherever its run is drawn: an analysis that
+#: plays a run again names its copies ``analysis:…``
+_COPY = "analysis:"
+
+
+def _box_of_polygon(node: dict) -> tuple[float, float, float]:
+    corners = _corners(node)
+    x0, y0 = min(x for x, _ in corners), min(y for _, y in corners)
+    return x0, y0, max(max(x for x, _ in corners) - x0, max(y for _, y in corners) - y0, 1e-9)
+
+
+def _drawn(node: dict, box: tuple[float, float, float] | None) -> tuple:
+    """What a mobject shows, wherever its run is drawn: its name (an analysis's copy named as
+    the original), its text and its points over its run's polygon's box, rounded."""
+    x0, y0, size = box or (0.0, 0.0, 1.0)
+    points = tuple((round((x - x0) / size, 2), round((y - y0) / size, 2))
+                   for n in mobject_nodes(node) for x, y, _ in n.get("points", ()))
+    texts = tuple(n["text"] for n in mobject_nodes(node) if n.get("text"))
+    return (node.get("name") or "").removeprefix(_COPY), texts, points
+
+
+def _raw(node: dict) -> str:
+    return json.dumps([node.get("name"), node.get("text"), node.get("points"),
+                       [_raw(n) for n in node.get("submobjects", ())]])
+
+
+def _changes(anim: dict) -> Iterator[tuple[dict | None, dict | None]]:
+    """(what leaves the screen, what comes on) for an animation and its members: a mobject
+    that comes in, one that goes, one a transform (or ``.animate``) turns into its target."""
+    node = anim.get("mobject") or None
+    if "target" in anim:
+        yield node, anim["target"]
+    elif anim.get("type") in INCOMING and node:
+        yield None, node
+    elif anim.get("type") in OUTGOING and node:
+        yield node, None
+    for child in anim.get("animations", ()):
+        yield from _changes(child)
+
+
+Step = tuple[str, tuple | None, str, frozenset]
+
+
+def shown_steps(data: dict) -> list[Step]:
+    """Each caption of a graph as ``(section, shape, caption, picture)``: the card whose
+    title opened the section it is said in (a chapter's heuristic is its card and what
+    follows, up to the next card; in a scene with no card, a run's title opens one), the shape of the run's polygon it is said over — the last
+    one drawn by the end of its step (a step's polygon may be drawn just after its caption) —
+    and what is on screen at the end of its step (each mobject as :func:`_drawn`, placed on
+    its run's polygon's box; the subtitle left out: the caption is the step)."""
+    steps: list[Step] = []
+    section, shape, box, open_step, carded = "", None, None, None, False
+    screen: dict[str, tuple] = {}  # each mobject on screen, by what it is: as it is drawn
+
+    def close() -> None:
+        if open_step is not None:
+            steps.append((open_step[0], shape, open_step[1], frozenset(screen.values())))
+
     for play in data["plays"]:
         tops = [(a["type"], a.get("mobject", {})) for a in play["animations"]]
-        if play.get("subcaption") and open_step is not None:  # the step before ends
-            steps.append((open_step[0], shape, open_step[1]))
+        if play.get("subcaption"):  # the step before ends
+            close()
         if any(kind in INCOMING and node.get("name") == "card:title" for kind, node in tops):
-            section, shape = play.get("subcaption") or "", None
+            section, shape, box, carded = play.get("subcaption") or "", None, None, True
+        titles = [node["text"] for kind, node in tops
+                  if kind in INCOMING and node.get("name") == "title" and node.get("text")]
+        if titles and not carded:  # a scene of several runs: each run's title opens one
+            section = titles[0]
         if play.get("subcaption"):
             open_step = (section, play["subcaption"])
         for kind, node in tops:
             if kind in INCOMING and node.get("name") in _RUN_POLYGONS and node.get("points"):
-                shape = _shape(node)
-    if open_step is not None:
-        steps.append((open_step[0], shape, open_step[1]))
+                shape, box = _shape(node), _box_of_polygon(node)
+        for anim in play["animations"]:
+            for gone, come in _changes(anim):
+                if gone is not None:
+                    screen.pop(_raw(gone), None)
+                if come is not None and come.get("name") != "subtitle":
+                    screen[_raw(come)] = _drawn(come, box)
+    close()
     return steps
 
 
 def replayed_beats(data: dict) -> list[str]:
     """Issue 22 item 4: the runs' beats shown twice, as ``"'caption' (section)"``. A run is a
     polygon drawn in a card's section; its beats are the captions said over it
-    (:func:`shown_steps`): the same caption over a polygon of the same shape in one section
-    is its beat replayed — the run, or an analysis that plays it again."""
-    seen: set[tuple[str, tuple | None, str]] = set()
+    (:func:`shown_steps`). A beat is replayed when the same caption is said again over a
+    polygon of the same shape in one section *and* the same picture is on screen at its
+    end (the run, or an analysis that plays it again). One step's caption said over each
+    piece of divide and conquer, each batch of a fast summary, or one claim of several
+    heuristics on one polygon, is no replay: each time something else is on screen (another
+    piece, another diagonal, another metaphor)."""
+    seen: set[Step] = set()
     found = []
     for step in shown_steps(data):
         if step[1] is not None and step in seen:
@@ -391,9 +456,9 @@ def replayed_beats(data: dict) -> list[str]:
 
 def repeated_verdicts(data: dict) -> list[str]:
     """Issue 22 item 4: the ✗ captions said more than once in a section (a heuristic's card
-    and what follows), as ``"2 × '✗ BD …' (section)"``."""
+    and what follows; in a scene, a run's title and what follows), as ``"2 × '✗ BD …' (section)"``."""
     counts: dict[tuple[str, str], int] = {}
-    for section, _, caption in shown_steps(data):
+    for section, _, caption, _ in shown_steps(data):
         if caption.startswith("✗"):
             counts[(section, caption)] = counts.get((section, caption), 0) + 1
     return [f"{n} × {caption!r} ({section})" for (section, caption), n in counts.items()

@@ -48,6 +48,8 @@ from tests.reading_rules import (
     crossfaded_subtitles,
     graph_nodes,
     hidden_failures,
+    repeated_verdicts,
+    replayed_beats,
     small_texts,
     unreadable_cues,
     unspoken_words,
@@ -225,6 +227,17 @@ def test_a_wrong_claim_is_seen_leaving_p(case):
     """Issue 22 item 3: every red claim leaves its polygon by at least 4 % of the frame's
     height on screen."""
     assert hidden_failures(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_run_is_replayed(case):
+    """Issue 22 item 4: no beat said again over the same picture (a run played twice), and
+    each ✗ said once per run (a scene of several runs: each its title and what follows).
+    Divide and conquer's caption per piece and the fast summaries' per batch are no replay:
+    something else is on screen each time."""
+    data = graph(case).data
+    assert replayed_beats(data) == [], case.id
+    assert repeated_verdicts(data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
