@@ -190,10 +190,26 @@ class _Frame:
     candidates: tuple[int, ...]
 
 
+def _may_hold_candidates(points: list[Point]) -> bool:
+    """Whether T's bounding box holds :data:`MIN_CANDIDATES` other vertices: a candidate
+    lies in T, so in its box (exact: comparisons of the same floats). Most drawn polygons
+    fail here, before they are validated a second time as a :class:`Polygon`."""
+    n = len(points)
+    b = min(range(n), key=lambda k: (points[k][0], points[k][1]))  # left-most, lowest on ties
+    corners = [points[b - 1], points[b], points[(b + 1) % n]]
+    x0, x1 = min(p[0] for p in corners), max(p[0] for p in corners)
+    y0, y1 = min(p[1] for p in corners), max(p[1] for p in corners)
+    inside = sum(1 for p in points if x0 <= p[0] <= x1 and y0 <= p[1] <= y1)
+    return inside - 3 >= MIN_CANDIDATES
+
+
 def _frame(spec: str) -> _Frame | None:
     """The polygon of ``spec`` with its T and candidates, if it makes a fair exercise."""
     try:
-        polygon = Polygon.from_points(sample_from_spec(spec))
+        points = sample_from_spec(spec)
+        if not _may_hold_candidates(points):
+            return None
+        polygon = Polygon.from_points(points)
     except GeometryError:
         return None
     t = triangle_at(polygon, leftmost_vertex(polygon))
