@@ -15,7 +15,8 @@ Three kinds, mixed in turn:
     "Which of these diagonals are inner: AC, BD, BE?" — AC and B to every candidate; each
     checked exactly. Always a mix: AC is not inner when T holds a candidate, the farthest
     candidate from AC is (thesis, lemma 2). (A B-diagonal that is not inner is rare on a
-    polygon with room, no needle and no notch: asking for one made the search 50× longer.)
+    polygon with room, no needle and no notch: asking for one made the search tens of times
+    longer.)
 
 Every polygon is a seeded sample spec (``random-2opt:11:48213``) that any ``trex`` command
 reads again; its triangle T = ABC holds 2–4 candidates, and it has room (no angle under 15°,
