@@ -11,7 +11,9 @@ from __future__ import annotations
 from manim import Camera, DashedLine, Scene, VGroup
 from manim import Polygon as MPolygon
 
-from metaphors.drawing import Frame, polygon_mobject, vertex_markers
+from geometry.diagonals import find_diagonal
+from metaphors.drawing import Frame, polygon_mobject
+from metaphors.labels import placed_vertex_markers
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from rendering.typeset import FlatText
@@ -43,7 +45,9 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME,
                    stroke_width=theme.stroke, dash_length=theme.dash_length * 1.5)
         for i, j in exercise.options
     ]
-    markers = vertex_markers(p, frame, theme)
+    # labels placed by measuring, clear of the edges, of T's AC and of every diagonal the
+    # question names or the answer draws: a class reads them with no run to explain them
+    markers = placed_vertex_markers(p, frame, theme, diagonals=drawn_diagonals(exercise))
     for k in (a, b, c):
         markers[k].set_color(theme.called)
     for k in exercise.candidates:
@@ -59,6 +63,15 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME,
     ).arrange(buff=0.6)
     legend.move_to((center[0], LEGEND_Y, 0))
     return [polygon_mobject(p, frame, theme), t, *options, markers, title, legend]
+
+
+def drawn_diagonals(exercise: Exercise) -> tuple[tuple[int, int], ...]:
+    """The diagonals the still and the answer draw on the polygon: T's AC, the options, the
+    claim asked about."""
+    a, _, c = exercise.triangle
+    claimed = ((find_diagonal(exercise.polygon, exercise.heuristic).pair,)
+               if exercise.kind == "claim" and exercise.heuristic else ())
+    return ((a, c), *exercise.options, *claimed)
 
 
 class ExerciseStill(Scene):

@@ -14,10 +14,13 @@ Three kinds, mixed in turn:
 ``inner``
     "Which of these diagonals are inner: AC, BD, BE?" — AC and B to every candidate; each
     checked exactly. Always a mix: AC is not inner when T holds a candidate, the farthest
-    candidate from AC is (thesis, lemma 2), and at least one other one is not.
+    candidate from AC is (thesis, lemma 2). (A B-diagonal that is not inner is rare on a
+    polygon with room, no needle and no notch: asking for one made the search tens of times
+    longer.)
 
 Every polygon is a seeded sample spec (``random-2opt:11:48213``) that any ``trex`` command
-reads again; its triangle T = ABC holds 2–4 candidates. The search is a deterministic
+reads again; its triangle T = ABC holds 2–4 candidates, and it has room (no angle under 15°,
+inside or out, no vertex near an edge it is not on: :func:`_roomy`). The search is a deterministic
 function of the seed, so the same seed gives the same exercises. No manim here.
 
 >>> exercises = make_exercises(3, seed=1)
@@ -45,6 +48,7 @@ from geometry.diagonals import find_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.polygon import Polygon
+from geometry.predicates import Point
 from geometry.samples import sample_from_spec
 from story.hunt import in_general_position
 from story.reach import reach_of
@@ -67,8 +71,12 @@ MAX_TRIES = 20_000
 #: class sees the failure (issue 22 items 3 and 6)
 MIN_OUTSIDE, PICTURE_ASPECT = 0.06, 7.4 / 5.6
 #: the least gap, on the same scale, between a diagonal shown and a vertex not its own: a
-#: crossing near a vertex looks like passing through it (3 % of the frame)
+#: crossing near a vertex looks like passing through it (3 % of the frame); also the least
+#: gap between a vertex and an edge it is not on (a notch or a spike the class cannot read)
 MIN_CLEARANCE = 0.045
+#: the least angle at a vertex, inside or out (degrees): a needle under it is a sliver on
+#: screen, its labels crowded (the lecture polygon's rule, issue 22 item 5)
+MIN_ANGLE = 15.0
 
 _STORY = {
     "scaling": ("the water spilled at B reaches", "distance ", "{:.1f}"),
@@ -132,6 +140,27 @@ def _legible(polygon: Polygon) -> bool:
     return closest >= MIN_GAP * size and in_general_position(pts)
 
 
+def _angle(p: Point, q: Point, r: Point) -> float:
+    """The inner angle at ``q`` of a counter-clockwise polygon, ``p`` before it and ``r``
+    after it, in degrees (0 to 360)."""
+    u, v = (p[0] - q[0], p[1] - q[1]), (r[0] - q[0], r[1] - q[1])
+    return math.degrees(math.atan2(v[0] * u[1] - v[1] * u[0], v[0] * u[0] + v[1] * u[1])) % 360
+
+
+def _roomy(polygon: Polygon) -> bool:
+    """No needle and no notch (every angle, inside and out, at least :data:`MIN_ANGLE`), and
+    no vertex nearer than :data:`MIN_CLEARANCE` to an edge it is not on: checked once per
+    finished polygon, so that the search pays for it only on polygons that fit otherwise."""
+    pts, n = polygon.points, polygon.n
+    if not all(MIN_ANGLE <= _angle(pts[v - 1], pts[v], pts[(v + 1) % n]) <= 360 - MIN_ANGLE
+               for v in range(n)):
+        return False
+    least = MIN_CLEARANCE * _scale(polygon)
+    edges = [LineString([pts[e], pts[(e + 1) % n]]) for e in range(n)]
+    return all(edges[e].distance(ShapelyPoint(pts[v])) >= least
+               for v in range(n) for e in range(n) if v not in (e, (e + 1) % n))
+
+
 def _scale(polygon: Polygon) -> float:
     """P's size as the picture fits it: its height, or its width over the picture's aspect."""
     xs, ys = [p[0] for p in polygon.points], [p[1] for p in polygon.points]
@@ -162,29 +191,65 @@ class _Frame:
     candidates: tuple[int, ...]
 
 
+def _may_hold_candidates(points: list[Point]) -> bool:
+    """Whether T's bounding box holds :data:`MIN_CANDIDATES` other vertices: a candidate
+    lies in T, so in its box (exact: comparisons of the same floats). Most drawn polygons
+    fail here, before they are validated a second time as a :class:`Polygon`."""
+    n = len(points)
+    b = min(range(n), key=lambda k: (points[k][0], points[k][1]))  # left-most, lowest on ties
+    corners = [points[b - 1], points[b], points[(b + 1) % n]]
+    x0, x1 = min(p[0] for p in corners), max(p[0] for p in corners)
+    y0, y1 = min(p[1] for p in corners), max(p[1] for p in corners)
+    inside = sum(1 for p in points if x0 <= p[0] <= x1 and y0 <= p[1] <= y1)
+    return inside - 3 >= MIN_CANDIDATES
+
+
 def _frame(spec: str) -> _Frame | None:
     """The polygon of ``spec`` with its T and candidates, if it makes a fair exercise."""
     try:
-        polygon = Polygon.from_points(sample_from_spec(spec))
+        points = sample_from_spec(spec)
+        if not _may_hold_candidates(points):
+            return None
+        polygon = Polygon.from_points(points)
     except GeometryError:
         return None
     t = triangle_at(polygon, leftmost_vertex(polygon))
     candidates = tuple(v.index for v in candidates_in_triangle(polygon, t))
-    if not MIN_CANDIDATES <= len(candidates) <= MAX_CANDIDATES or not _legible(polygon):
+    if not MIN_CANDIDATES <= len(candidates) <= MAX_CANDIDATES or not _roomy(polygon) \
+            or not _legible(polygon):
         return None
     return _Frame(spec, polygon, (t.a.index, t.b.index, t.c.index), candidates)
 
 
-def _search(
-    rng: random.Random, used: set[str], generator: tuple[str, int, int],
-    build: Callable[[_Frame], Exercise | None],
-) -> Exercise:
-    """The first exercise ``build(frame)`` accepts, over the seeded stream of polygons."""
-    for spec in itertools.islice(_specs(rng, used, generator), MAX_TRIES):
-        frame = _frame(spec)
-        made = build(frame) if frame is not None else None
+class _Pool:
+    """The polygons drawn so far, per generator, in the order drawn: a polygon one exercise
+    turns down (a kind it does not fit) is offered to the later ones before a new one is
+    drawn, so the search pays for each polygon's 2-opt once (deterministic: the order is the
+    seeded stream's)."""
+
+    def __init__(self, rng: random.Random) -> None:
+        self.rng = rng
+        self.used: set[str] = set()
+        self.kept: dict[tuple[str, int, int], list[_Frame]] = {}
+
+    def frames(self, generator: tuple[str, int, int]) -> Iterator[_Frame]:
+        """The unused fitting polygons of ``generator``: the kept ones, then new ones."""
+        kept = self.kept.setdefault(generator, [])
+        yield from [f for f in kept if f.spec not in self.used]
+        for spec in itertools.islice(_specs(self.rng, self.used, generator), MAX_TRIES):
+            frame = _frame(spec)
+            if frame is not None:
+                kept.append(frame)
+                yield frame
+
+
+def _search(pool: _Pool, generator: tuple[str, int, int],
+            build: Callable[[_Frame], Exercise | None]) -> Exercise:
+    """The first exercise ``build(frame)`` accepts, over the pool's polygons."""
+    for frame in pool.frames(generator):
+        made = build(frame)
         if made is not None:
-            used.add(spec)
+            pool.used.add(frame.spec)
             return made
     raise RuntimeError(f"no fitting polygon in {MAX_TRIES} tries")  # never seen in practice
 
@@ -278,8 +343,8 @@ def _inner(number: int) -> Callable[[_Frame], Exercise | None]:
         a, b, c = frame.triangle
         options = ((a, c), *((b, d) for d in sorted(frame.candidates, key=p.labels.__getitem__)))
         verdicts = [is_inner_diagonal(p, *pair) for pair in options]
-        if all(v.ok for v in verdicts[1:]) or not any(v.ok for v in verdicts):
-            return None  # no B-diagonal to reject: too easy
+        if all(v.ok for v in verdicts) or not any(v.ok for v in verdicts):
+            return None  # not a mix (AC, not inner when T holds a candidate, makes one)
         if not all(_clear(p, *pair) if v.ok else _visibly_outside(p, *pair)
                    for pair, v in zip(options, verdicts, strict=True)):
             return None  # one that looks, on screen, other than it is
@@ -310,7 +375,7 @@ def make_exercises(n: int = 6, seed: int = 0) -> list[Exercise]:
     claims = sum(1 for k in range(n) if KINDS[k % len(KINDS)] == "claim")
     wanted = [k % 2 == 0 for k in range(claims)]  # as many yes as no (±1) …
     rng.shuffle(wanted)  # … in a seeded order
-    used: set[str] = set()
+    pool = _Pool(rng)
     out = []
     for k in range(n):
         kind = KINDS[k % len(KINDS)]
@@ -320,7 +385,7 @@ def make_exercises(n: int = 6, seed: int = 0) -> list[Exercise]:
             build = _claim(k + 1, rng.sample(wrong(), len(wrong())), wanted.pop())
         else:
             build = _inner(k + 1)
-        out.append(_search(rng, used, GENERATORS[k % len(GENERATORS)], build))
+        out.append(_search(pool, GENERATORS[k % len(GENERATORS)], build))
     return out
 
 

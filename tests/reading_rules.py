@@ -5,6 +5,8 @@ every cue of the ``.srt`` at least 0.83 s and at most 17 characters per second
 
 from __future__ import annotations
 
+import itertools
+import json
 import re
 from collections.abc import Iterator
 from itertools import pairwise
@@ -364,35 +366,99 @@ def _shape(node: dict) -> tuple[tuple[float, float], ...]:
     return tuple((round((x - x0) / size, 2), round((y - y0) / size, 2)) for x, y in corners)
 
 
-def shown_steps(data: dict) -> list[tuple[str, tuple | None, str]]:
-    """Each caption of a graph as ``(section, shape, caption)``: the card whose title opened
-    the section it is said in (a chapter's heuristic is its card and what follows, up to the
-    next card), and the shape of the run's polygon it is said over — the last one drawn by
-    the end of its step (a step's polygon may be drawn just after its caption)."""
-    steps: list[tuple[str, tuple | None, str]] = []
-    section, shape, open_step = "", None, None
+#: a step's picture is what it brings on screen, wherever its run is drawn: an analysis that
+#: plays a run again names its copies ``analysis:…``
+_COPY = "analysis:"
+
+
+def _box_of_polygon(node: dict) -> tuple[float, float, float]:
+    corners = _corners(node)
+    x0, y0 = min(x for x, _ in corners), min(y for _, y in corners)
+    return x0, y0, max(max(x for x, _ in corners) - x0, max(y for _, y in corners) - y0, 1e-9)
+
+
+def _drawn(node: dict, box: tuple[float, float, float] | None) -> tuple:
+    """What a mobject shows, wherever its run is drawn: its name (an analysis's copy named as
+    the original), its text and its points over its run's polygon's box, rounded."""
+    x0, y0, size = box or (0.0, 0.0, 1.0)
+    points = tuple((round((x - x0) / size, 2), round((y - y0) / size, 2))
+                   for n in mobject_nodes(node) for x, y, _ in n.get("points", ()))
+    texts = tuple(n["text"] for n in mobject_nodes(node) if n.get("text"))
+    return (node.get("name") or "").removeprefix(_COPY), texts, points
+
+
+def _raw(node: dict) -> str:
+    return json.dumps([node.get("name"), node.get("text"), node.get("points"),
+                       [_raw(n) for n in node.get("submobjects", ())]])
+
+
+def _changes(anim: dict) -> Iterator[tuple[dict | None, dict | None]]:
+    """(what leaves the screen, what comes on) for an animation and its members: a mobject
+    that comes in, one that goes, one a transform (or ``.animate``) turns into its target."""
+    node = anim.get("mobject") or None
+    if "target" in anim:
+        yield node, anim["target"]
+    elif anim.get("type") in INCOMING and node:
+        yield None, node
+    elif anim.get("type") in OUTGOING and node:
+        yield node, None
+    for child in anim.get("animations", ()):
+        yield from _changes(child)
+
+
+Step = tuple[str, tuple | None, str, frozenset]
+
+
+def shown_steps(data: dict) -> list[Step]:
+    """Each caption of a graph as ``(section, shape, caption, picture)``: the card whose
+    title opened the section it is said in (a chapter's heuristic is its card and what
+    follows, up to the next card; in a scene with no card, a run's title opens one), the shape of the run's polygon it is said over — the last
+    one drawn by the end of its step (a step's polygon may be drawn just after its caption) —
+    and what is on screen at the end of its step (each mobject as :func:`_drawn`, placed on
+    its run's polygon's box; the subtitle left out: the caption is the step)."""
+    steps: list[Step] = []
+    section, shape, box, open_step, carded = "", None, None, None, False
+    screen: dict[str, tuple] = {}  # each mobject on screen, by what it is: as it is drawn
+
+    def close() -> None:
+        if open_step is not None:
+            steps.append((open_step[0], shape, open_step[1], frozenset(screen.values())))
+
     for play in data["plays"]:
         tops = [(a["type"], a.get("mobject", {})) for a in play["animations"]]
-        if play.get("subcaption") and open_step is not None:  # the step before ends
-            steps.append((open_step[0], shape, open_step[1]))
+        if play.get("subcaption"):  # the step before ends
+            close()
         if any(kind in INCOMING and node.get("name") == "card:title" for kind, node in tops):
-            section, shape = play.get("subcaption") or "", None
+            section, shape, box, carded = play.get("subcaption") or "", None, None, True
+        titles = [node["text"] for kind, node in tops
+                  if kind in INCOMING and node.get("name") == "title" and node.get("text")]
+        if titles and not carded:  # a scene of several runs: each run's title opens one
+            section = titles[0]
         if play.get("subcaption"):
             open_step = (section, play["subcaption"])
         for kind, node in tops:
             if kind in INCOMING and node.get("name") in _RUN_POLYGONS and node.get("points"):
-                shape = _shape(node)
-    if open_step is not None:
-        steps.append((open_step[0], shape, open_step[1]))
+                shape, box = _shape(node), _box_of_polygon(node)
+        for anim in play["animations"]:
+            for gone, come in _changes(anim):
+                if gone is not None:
+                    screen.pop(_raw(gone), None)
+                if come is not None and come.get("name") != "subtitle":
+                    screen[_raw(come)] = _drawn(come, box)
+    close()
     return steps
 
 
 def replayed_beats(data: dict) -> list[str]:
     """Issue 22 item 4: the runs' beats shown twice, as ``"'caption' (section)"``. A run is a
     polygon drawn in a card's section; its beats are the captions said over it
-    (:func:`shown_steps`): the same caption over a polygon of the same shape in one section
-    is its beat replayed — the run, or an analysis that plays it again."""
-    seen: set[tuple[str, tuple | None, str]] = set()
+    (:func:`shown_steps`). A beat is replayed when the same caption is said again over a
+    polygon of the same shape in one section *and* the same picture is on screen at its
+    end (the run, or an analysis that plays it again). One step's caption said over each
+    piece of divide and conquer, each batch of a fast summary, or one claim of several
+    heuristics on one polygon, is no replay: each time something else is on screen (another
+    piece, another diagonal, another metaphor)."""
+    seen: set[Step] = set()
     found = []
     for step in shown_steps(data):
         if step[1] is not None and step in seen:
@@ -403,9 +469,9 @@ def replayed_beats(data: dict) -> list[str]:
 
 def repeated_verdicts(data: dict) -> list[str]:
     """Issue 22 item 4: the ✗ captions said more than once in a section (a heuristic's card
-    and what follows), as ``"2 × '✗ BD …' (section)"``."""
+    and what follows; in a scene, a run's title and what follows), as ``"2 × '✗ BD …' (section)"``."""
     counts: dict[tuple[str, str], int] = {}
-    for section, _, caption in shown_steps(data):
+    for section, _, caption, _ in shown_steps(data):
         if caption.startswith("✗"):
             counts[(section, caption)] = counts.get((section, caption), 0) + 1
     return [f"{n} × {caption!r} ({section})" for (section, caption), n in counts.items()
@@ -754,3 +820,73 @@ def shapes_under_text(data: dict) -> list[str]:
         if box[0] < -7.12 or box[2] > 7.12:
             found.add(f"{node['name']} off the screen")
     return sorted(found)
+
+
+# --- issue 22 item 5 for the exercises: polygons a class can read --------------------------------
+
+#: the least angle at a vertex, inside or out, as drawn (degrees)
+LEAST_ANGLE = 15.0
+#: the least gap between a vertex label and an edge or another label (touching is crowding)
+LEAST_LABEL_GAP = 0.02
+
+
+def _exercise_pictures(data: dict) -> Iterator[tuple[list[tuple[float, float]], list[tuple]]]:
+    """Each exercise picture coming on screen: its polygon's corners and its labels, as
+    ``(text, box)`` in the order of the corners."""
+    corners: list[tuple[float, float]] | None = None
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim.get("type") not in INCOMING or node.get("name") != "exercise":
+                continue
+            if node["type"] == "Polygon" and node.get("points"):
+                shape = _corners(node)
+                if corners is None or len(shape) > len(corners):  # P, not its triangle T
+                    corners = shape
+            markers = [m for m in node.get("submobjects", ()) if [c["type"] for c in
+                       m.get("submobjects", ())] == ["Dot", "FlatText"]]
+            if markers and corners is not None:
+                yield corners, [(m["submobjects"][1]["text"], m["submobjects"][1]["box"])
+                                for m in markers]
+                corners = None
+
+
+def _inner_angle(p, q, r) -> float:
+    import math
+
+    u, v = (p[0] - q[0], p[1] - q[1]), (r[0] - q[0], r[1] - q[1])
+    return math.degrees(math.atan2(v[0] * u[1] - v[1] * u[0], v[0] * u[0] + v[1] * u[1])) % 360
+
+
+def crowded_exercises(data: dict) -> list[str]:
+    """Issue 22 items 5 and 6: the exercise pictures a class cannot read, as drawn on screen:
+    an angle under :data:`LEAST_ANGLE` (a needle) or over 360° minus it (a notch), a vertex
+    nearer than :data:`LEAST_CLEARANCE` to an edge it is not on, and two vertex labels, or a
+    label and an edge, nearer than :data:`LEAST_LABEL_GAP`; as ``"angle at E: 2°"``."""
+    from shapely.geometry import LineString, box
+    from shapely.geometry import Point as ShapelyPoint
+
+    found = []
+    for corners, labels in _exercise_pictures(data):
+        n = len(corners)
+        names = [text for text, _ in labels] if len(labels) == n else [str(k) for k in range(n)]
+        if corners[0] == corners[-1]:
+            corners = corners[:-1]
+            n -= 1
+        edges = [LineString([corners[k], corners[(k + 1) % n]]) for k in range(n)]
+        for v in range(n):
+            a = _inner_angle(corners[v - 1], corners[v], corners[(v + 1) % n])
+            if a < LEAST_ANGLE or a > 360 - LEAST_ANGLE:
+                found.append(f"angle at {names[v]}: {a:.0f}°")
+            near = min(edges[e].distance(ShapelyPoint(corners[v])) for e in range(n)
+                       if v not in (e, (e + 1) % n))
+            if near < LEAST_CLEARANCE:
+                found.append(f"{names[v]} {near:.2f} from an edge")
+        boxes = [(text, box(*b)) for text, b in labels]
+        for (t1, b1), (t2, b2) in itertools.combinations(boxes, 2):
+            if b1.distance(b2) < LEAST_LABEL_GAP:
+                found.append(f"labels {t1} and {t2} touch")
+        for text, b in boxes:
+            if any(e.distance(b) < LEAST_LABEL_GAP for e in edges):
+                found.append(f"label {text} on an edge")
+    return found

@@ -167,3 +167,48 @@ def test_bad_count_is_one_line(tmp_path):
     code, _, stderr = run("exercises", "--n", "0", "-o", str(tmp_path))
     assert code == 2 and len(stderr.splitlines()) == 1 and stderr.startswith("error: ")
     assert list(tmp_path.iterdir()) == []
+
+
+def _still_graph(exercise, box=None) -> dict:
+    """The still of ``exercise`` as a scene graph that fades it in (what ``trex exercises``
+    draws, or with ``box`` what the lecture's quiz draws)."""
+    from metaphors.stills import still_mobjects
+    from trex.scene_graph import mobject_graph
+
+    shown = still_mobjects(exercise) if box is None else still_mobjects(exercise, box=box)
+    return {"plays": [{"animations": [{"type": "FadeIn", "mobject": mobject_graph(m)}
+                                      for m in shown]}]}
+
+
+@pytest.mark.parametrize("seed", [0, 7, 2022])
+def test_exercise_polygons_have_room_and_their_labels_are_clear(seed):
+    """Issue 22 items 5 and 6, as drawn on the sheet of ``trex exercises`` and in the
+    lecture's quiz box: no angle under 15° (nor a notch over 345°), no vertex within 3 % of
+    the frame's height of an edge it is not on, and no vertex label touching another or an
+    edge (the old search gave a 2° needle at E and labels on edges for seed 2022)."""
+    from metaphors.lecture import QUIZ_BOX
+    from tests.reading_rules import crowded_exercises
+
+    for e in make_exercises(3, seed):
+        assert crowded_exercises(_still_graph(e)) == [], e.spec
+        assert crowded_exercises(_still_graph(e, QUIZ_BOX)) == [], e.spec
+
+
+def test_crowded_exercises_finds_a_needle_a_near_vertex_and_crowded_labels():
+    """The rule can fail: the old third exercise of the lecture (random-2opt:11:246, a 2°
+    needle at E, G 0.5 % of the frame from an edge) drawn with the labels the lecture's
+    boards use (a fixed step from the centre)."""
+    from metaphors.drawing import Frame, polygon_mobject, vertex_markers
+    from metaphors.lecture import QUIZ_BOX
+    from tests.reading_rules import crowded_exercises
+    from trex.scene_graph import mobject_graph
+
+    p = read_polygon("random-2opt:11:246")
+    frame = Frame(p.points, *QUIZ_BOX)
+    graph = {"plays": [{"animations": [
+        {"type": "FadeIn", "mobject": {**mobject_graph(m), "name": "exercise"}}
+        for m in (polygon_mobject(p, frame), vertex_markers(p, frame))]}]}
+    found = crowded_exercises(graph)
+    assert "angle at E: 2°" in found and "angle at F: 359°" in found
+    assert any(f.startswith("G 0.0") and f.endswith("from an edge") for f in found)
+    assert any(f.startswith("label ") for f in found), found

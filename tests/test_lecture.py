@@ -31,6 +31,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     crossfaded_subtitles,
+    crowded_exercises,
     crowded_panel_labels,
     crowded_verdicts,
     hidden_failures,
@@ -479,6 +480,12 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 item 6: time to think, and the answer beside the picture, not over it
     assert rushed_questions(data) == [], chapter.slug
     assert answers_over_pictures(data) == [], chapter.slug
+    # issue 22 items 5 and 6: an exercise's polygon has room, its labels clear of each other
+    # and of the edges, as drawn
+    assert crowded_exercises(data) == [], chapter.slug
+    # issue 22 item 4: no run's beat shown twice over the same picture, each ✗ said once
+    assert replayed_beats(data) == [], chapter.slug
+    assert repeated_verdicts(data) == [], chapter.slug
     # issue 22 item 5: counters run 1 … n − 2 and end on the whole triangulation
     assert broken_counts(data) == [], chapter.slug
     # issue 22: the whole triangulation comes under its own caption, not the last step's
@@ -661,8 +668,7 @@ def test_the_black_box_stands_clear_of_the_picture_the_panel_and_the_subtitles(p
 def test_the_heuristics_chapter_shows_each_wrong_heuristic_once():
     """Issue 22 item 4: each wrong heuristic in one continuous pass on the counterexample, its
     correction after it on the same polygon; no run's beat shown twice, its ✗ said once, and
-    "this one polygon defeats all three" said once, not per heuristic. (Divide and conquer
-    says one step's caption over each of its pieces, so the rule is this chapter's.)"""
+    "this one polygon defeats all three" said once, not per heuristic."""
     from geometry.check import is_inner_diagonal
     from geometry.diagonals import find_diagonal
     from geometry.io import read_polygon
@@ -683,3 +689,30 @@ def test_the_heuristics_chapter_shows_each_wrong_heuristic_once():
         assert not is_inner_diagonal(counterexample, *find_diagonal(counterexample, wrong).pair)
     # the chapter's length: the pass breathes instead of repeating (issue 22: 12-18 minutes)
     assert sum(float(p["run_time"]) for p in data["plays"]) >= 200
+
+
+def test_a_run_played_again_is_a_replay_and_one_step_per_piece_is_not():
+    """Issue 22 item 4, the rule can fail: a chapter that plays the same run twice in one
+    section replays its beats (each over the same picture) and says its ✗ twice. Divide and
+    conquer's one caption over each piece (the overview) is no replay: the graph says
+    "Find an inner diagonal of this polygon" again, over another piece."""
+    from metaphors.lecture import Card, LectureScene, Run
+    from tests.reading_rules import shown_steps
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    class Twice(LectureScene):
+        def chapter_segments(self) -> tuple:
+            run = Run("scaling", "counterexample", "Scaling on the counterexample")
+            return (Card("Scaling", ()), run, run)
+
+    data = build(Twice.handed()).data
+    replayed = replayed_beats(data)
+    assert "'Claim: BD is an inner diagonal' (Scaling)" in replayed
+    assert repeated_verdicts(data) == [
+        "2 × '✗ BD is not an inner diagonal: BD crosses edge E–A' (Scaling)"]
+    overview = next(c for c in lecture_chapters() if c.slug == "overview")
+    steps = shown_steps(build(_chapter_class(overview).handed()).data)
+    asked = [s for s in steps if s[2] == "Find an inner diagonal of this polygon"]
+    assert len(asked) >= 4 and len({s[:3] for s in asked}) < len(asked)  # same words …
+    assert len(set(asked)) == len(asked)  # … over another piece each time

@@ -54,6 +54,8 @@ from tests.reading_rules import (
     crowded_verdicts,
     graph_nodes,
     hidden_failures,
+    repeated_verdicts,
+    replayed_beats,
     shapes_under_text,
     small_texts,
     stale_endings,
@@ -270,6 +272,17 @@ def test_a_wrong_claim_is_seen_leaving_p(case):
     """Issue 22 item 3: every red claim leaves its polygon by at least 4 % of the frame's
     height on screen."""
     assert hidden_failures(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_run_is_replayed(case):
+    """Issue 22 item 4: no beat said again over the same picture (a run played twice), and
+    each ✗ said once per run (a scene of several runs: each its title and what follows).
+    Divide and conquer's caption per piece and the fast summaries' per batch are no replay:
+    something else is on screen each time."""
+    data = graph(case).data
+    assert replayed_beats(data) == [], case.id
+    assert repeated_verdicts(data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
