@@ -248,8 +248,8 @@ def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     roles = {unprimed(v): "result" if ear else "rejected"}
     if why is not None and why[1] is not None:
         roles[unprimed(why[1])] = "rejected"
-    yield walk.step(EarTest, caption, call, ret, roles=roles, vertex=v, ear=ear,
-                    triangle=why[0] if why else [], inside=why[1] if why else None)
+    yield walk.call_beat(EarTest, caption, call, ret, roles=roles, vertex=v, ear=ear,
+                         triangle=why[0] if why else [], inside=why[1] if why else None)
 
 
 def _ring(walk: Walk) -> tuple[list[str], list]:
@@ -287,9 +287,9 @@ def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     p, m = (show(r) for r in ret.result)
     hole = int("".join(ch for ch in p if ch in "₀₁₂₃₄₅₆₇₈₉").translate(_DIGITS))
     point_of = walk.root_points()
-    yield walk.step(Keyhole, f"Hole {hole}: a keyhole cut from {p} to {m}", call, ret,
-                    roles={p: "result", m: "result"}, hole=hole, corners=[p, m],
-                    points=[point_of[p], point_of[m]])
+    yield walk.call_beat(Keyhole, f"Hole {hole}: a keyhole cut from {p} to {m}", call, ret,
+                         roles={p: "result", m: "result"}, hole=hole, corners=[p, m],
+                         points=[point_of[p], point_of[m]])
 
 
 def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -308,8 +308,8 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
             return
         kind = LastSlice
     clipped.append(corners)
-    yield walk.step(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
-                    call, ret, **_slice(corners, labels, points, clipped))
+    yield walk.call_beat(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
+                         call, ret, **_slice(corners, labels, points, clipped))
     if kind is Slice:
         walk.count_claim("slice")  # after its beat: the beat belongs to the slice it cuts
 
@@ -333,9 +333,9 @@ def _slice(corners: list[str], labels: list[str], points: list,
 
 def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     state = walk.entered_after(ret, walk.result_ref(ret))
-    yield walk.step(Good, "A good sub-polygon: one cut edge, about half the vertices; "
-                    "its middle vertex is tested next", call, ret, points=state["points"],
-                    labels=state["labels"])
+    yield walk.call_beat(Good, "A good sub-polygon: one cut edge, about half the vertices; "
+                         "its middle vertex is tested next", call, ret, points=state["points"],
+                         labels=state["labels"])
 
 
 READS: Mapping[str, Reading] = {

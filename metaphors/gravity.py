@@ -199,9 +199,9 @@ class Snag(Beat):
 
 def read_turn(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     g = ret.result
-    yield walk.step(GravityTurn, "Turn the polygon so that gravity points down", call, ret,
-                    down=g["down"], tilt=g["tilt"], turn_picture=g["turn_picture"],
-                    polygon=walk.ref(call, "polygon"))
+    yield walk.call_beat(GravityTurn, "Turn the polygon so that gravity points down", call, ret,
+                         down=g["down"], tilt=g["tilt"], turn_picture=g["turn_picture"],
+                         polygon=walk.ref(call, "polygon"))
 
 
 def _hit(walk: Walk, call: Event) -> dict[str, Any]:
@@ -230,7 +230,7 @@ def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                walk.ref(call, "x")]
     band = None if "vertex" in _hit(walk, call) else RubberBand(
         corners=tuple(point(where[c]) for c in corners))
-    yield walk.step(Snag, caption, call, ret, band=band, snagged=snagged)
+    yield walk.call_beat(Snag, caption, call, ret, band=band, snagged=snagged)
 
 
 READS: Mapping[str, Reading] = {

@@ -42,11 +42,11 @@ def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     pieces = walk.result_refs(ret)
     entered = {target_of(e): state_of(e) for e in walk.log.events[ret.seq:]
                if e.kind == "enter" and e.target in pieces}
-    yield walk.step(Split, "Split along the diagonal into two smaller polygons", call, ret,
-                    pieces=pieces,
-                    parent=walk.ref(call, "piece"),
-                    points=[entered[k]["points"] for k in pieces if k in entered],
-                    labels=[entered[k]["labels"] for k in pieces if k in entered])
+    yield walk.call_beat(Split, "Split along the diagonal into two smaller polygons", call, ret,
+                         pieces=pieces,
+                         parent=walk.ref(call, "piece"),
+                         points=[entered[k]["points"] for k in pieces if k in entered],
+                         labels=[entered[k]["labels"] for k in pieces if k in entered])
 
 
 def _tint_colour(board: Board, labels: list[str], avoid: set[str]) -> str:

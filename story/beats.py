@@ -1,6 +1,6 @@
 """Beats: what each moment of a video shows, as typed plain data.
 
-A beat has what every moment has — its caption, the step of the log it comes from, the call
+A beat has what every moment has — its caption, the seq of the log event it comes from, the call
 line, the line of the shown code lit and the row of the pseudocode lit, the roles of the
 objects (called, argument, result, rejected, idle) and its pace — and the fields of its own
 kind: a water beat the states of the growing disk, a verdict whether the claim holds and the
@@ -9,7 +9,7 @@ snapshots and a scene's paces read it). This module has the kinds every run shar
 heuristics' frame, the claim and its verdict, notes, and the generic beats of a heuristic of
 one's own); a metaphor module declares its own kinds beside the performers that play them.
 
->>> beat = Pick(caption="B is the left-most vertex", step=3, vertex="B")
+>>> beat = Pick(caption="B is the left-most vertex", seq=3, vertex="B")
 >>> beat.action, beat.to_dict()["data"]
 ('pick', {'vertex': 'B'})
 >>> from dataclasses import replace
@@ -24,7 +24,7 @@ from dataclasses import dataclass, field, fields
 from typing import Any, ClassVar, TypeVar, dataclass_transform
 
 #: the fields every beat has; the others are its kind's ``data``
-COMMON = ("caption", "step", "call", "line", "row", "roles", "pace")
+COMMON = ("caption", "seq", "call", "line", "row", "roles", "pace")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -33,7 +33,7 @@ class Beat:
 
     action: ClassVar[str] = "note"
     caption: str
-    step: int
+    seq: int
     call: str | None = None
     line: int | None = None
     #: the index of the pseudocode row lit (:func:`story.pseudocode.lit_row`); None: none yet
@@ -47,7 +47,7 @@ class Beat:
         return {f.name: getattr(self, f.name) for f in fields(self) if f.name not in COMMON}
 
     def to_dict(self) -> dict[str, Any]:
-        return {"action": self.action, "caption": self.caption, "step": self.step,
+        return {"action": self.action, "caption": self.caption, "seq": self.seq,
                 "call": self.call, "line": self.line, "row": self.row, "roles": self.roles,
                 "data": self.data, "pace": self.pace}
 

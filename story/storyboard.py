@@ -257,7 +257,7 @@ class Walk:
         """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk.
         A key step (``key_step``: a split or merge vertex and its diagonal) plays at full pace under its
         own caption however many claims came before: fast-forwarding never hides it."""
-        beat = beat_type(caption=caption, step=event.seq, line=self.code_line(event),
+        beat = beat_type(caption=caption, seq=event.seq, line=self.code_line(event),
                          row=self.pseudocode_row(event), pace=1.0 if key_step else self.pace(),
                          **fields)
         self.counted[id(beat)] = self.claims
@@ -265,8 +265,8 @@ class Walk:
             self.kept.add(id(beat))
         return beat
 
-    def step(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
-             key_step: bool = False, **fields: Any) -> Beat:
+    def call_beat(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
+                  key_step: bool = False, **fields: Any) -> Beat:
         """The beat of a returned call: its call line, and the call's roles unless ``fields``
         give others (``key_step``: as :meth:`beat`)."""
         fields.setdefault("roles", call_roles(call, ret))
@@ -455,10 +455,10 @@ def read_pick(caption: str, none_caption: str | None = None) -> Reading:
     def read(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         if ret.result is None:
             if none_caption:
-                yield walk.step(Note, none_caption, call, ret)
+                yield walk.call_beat(Note, none_caption, call, ret)
             return
         vertex = show(ret.result)
-        yield walk.step(Pick, caption.format(result=vertex), call, ret, vertex=vertex)
+        yield walk.call_beat(Pick, caption.format(result=vertex), call, ret, vertex=vertex)
 
     return read
 
@@ -467,7 +467,7 @@ def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     found = [show(v) for v in ret.result or []]
     caption = (f"Candidates inside T: {', '.join(found)}" if found
                else f"No vertex inside T: {_outer_corners(walk, call)} is an inner diagonal")
-    yield walk.step(Candidates, caption, call, ret, candidates=found)
+    yield walk.call_beat(Candidates, caption, call, ret, candidates=found)
 
 
 def _outer_corners(walk: Walk, call: Event) -> str:
@@ -484,9 +484,9 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     state = walk.live.get(key) or walk.entered_after(ret, key)
     u, v = state["labels"]
     name = f"{u}{v}"
-    yield walk.step(Claim, f"Claim: {name} is an inner diagonal", call, ret,
-                    roles={u: "result", v: "result"},
-                    labels=[u, v], points=state["points"])
+    yield walk.call_beat(Claim, f"Claim: {name} is an inner diagonal", call, ret,
+                         roles={u: "result", v: "result"},
+                         labels=[u, v], points=state["points"])
     polygon = _claim_polygon(walk)
     if polygon is None:
         walk.count_claim()
@@ -530,8 +530,8 @@ def read_step(kind: type[Beat], caption: str,
 
     def read(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         result = show(ret.result)
-        yield walk.step(kind, caption.format(result=result), call, ret, result=result,
-                        **fields(walk, call, ret))
+        yield walk.call_beat(kind, caption.format(result=result), call, ret, result=result,
+                             **fields(walk, call, ret))
 
     return read
 
