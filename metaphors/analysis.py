@@ -47,7 +47,7 @@ from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
 from story.analysis import Band, Motion, inside, motion, outside, split
-from story.beats import Beat, Candidates, Claim, ShowPolygon, ShowTriangle, Verdict
+from story.beats import Beat, Candidates, Claim, Point, ShowPolygon, ShowTriangle, Verdict
 from story.registry import entry, spoken
 from story.spec import RunSpec
 from story.states import Moving, Tool
@@ -90,9 +90,9 @@ class Moment:
     step (``mover``: its beat, with its motion) or gravity's band, the claim and its verdict."""
 
     heuristic: str
-    points: list
-    labels: list
-    triangle: list | None
+    points: tuple[Point, ...]
+    labels: tuple[str, ...]
+    triangle: tuple[Point, ...] | None
     mover: Beat | None
     motion: Motion | None
     band: Band | None

@@ -25,7 +25,7 @@ from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering.layers import BACKDROP_Z, STILL_Z
 from rendering.typeset import balanced, glyphs, text
-from story.beats import Beat
+from story.beats import Beat, Hole
 
 #: seconds the words of a beat take to change (at most half the beat)
 WORDS_TIME = 0.3
@@ -56,7 +56,7 @@ class Board:
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
-        self.holes = list(holes)  # each {"points", "labels"}: drawn unfilled, their vertices marked
+        self.holes: list[Hole] = list(holes)  # drawn unfilled, their vertices marked
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
         self.shape = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
                          "polygon")
@@ -68,7 +68,7 @@ class Board:
         self.where: dict[str, tuple[float, ...]] = {
             label: p for label, p in zip(labels, self.polygon.points, strict=True)}
         self.where.update({label: tuple(p) for hole in self.holes
-                           for label, p in zip(hole["labels"], hole["points"], strict=True)})
+                           for label, p in zip(hole.labels, hole.points, strict=True)})
         self.panel = Panel(points, labels, shown, theme, self.holes)
         self.title = tag(glyphs(title, font=theme.font, size=30, colour=theme.ink), None, "title")
         self.title.move_to((0, TITLE_Y, 0))

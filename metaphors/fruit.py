@@ -32,7 +32,7 @@ from metaphors.drawing import triangulation_pieces
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
-from story.beats import Beat, beat_kind
+from story.beats import Beat, Hole, beat_kind
 from story.storyboard import Reading, Walk, show
 from tracing import Event
 
@@ -42,12 +42,12 @@ PLATE_WIDTH = 5.6
 
 
 def _fruit(board: Board, points: Sequence[Sequence[float]],
-           holes: Sequence[dict[str, Any]] = ()) -> MPolygon | Polygram:
+           holes: Sequence[Hole] = ()) -> MPolygon | Polygram:
     theme = board.theme
     style: dict[str, Any] = {"color": theme.rind, "stroke_width": theme.stroke * 2.2,
                              "fill_color": theme.fruit, "fill_opacity": 0.75}
     if holes:  # the whole fruit, its holes cut out (rings of one mobject; holes unfilled)
-        rings = [[board.at(p) for p in ring] for ring in (points, *(h["points"] for h in holes))]
+        rings = [[board.at(p) for p in ring] for ring in (points, *(h.points for h in holes))]
         return tag(Polygram(*[[*ring, ring[0]] for ring in rings], **style), "idle", "fruit")
     return tag(MPolygon(*[board.at(p) for p in points], **style), "idle", "fruit")
 
@@ -62,7 +62,7 @@ def _setup(board: Board, beat: Beat) -> None:
                         fill_color=theme.plate, fill_opacity=0.12), None, "plate")
     plate.move_to((x, PLATE_Y, 0))
     fruit = _fruit(board, board.polygon.points, board.holes)
-    slices = board.polygon.n + sum(len(h["points"]) + 2 for h in board.holes) - 2
+    slices = board.polygon.n + sum(len(h.points) + 2 for h in board.holes) - 2
     board.keep("plate", plate)
     board.keep("fruit", fruit)
     board.keep("counter", _counter(board, 0, getattr(beat, "total", slices)))
@@ -157,7 +157,7 @@ def _whole(board: Board, beat: Slice) -> None:
     theme = board.theme
     pieces = triangulation_pieces(beat.triangulation, board.at, theme)
     holes = len(board.holes)
-    n = board.polygon.n + sum(len(h["points"]) for h in board.holes)
+    n = board.polygon.n + sum(len(h.points) for h in board.holes)
     count = (f"n − 2 = {n} − 2 = {beat.total} triangles" if not holes else
              f"n + 2h − 2 = {n} + {2 * holes} − 2 = {beat.total} triangles")
     result = _counter_text(board, count, theme.result)

@@ -43,6 +43,7 @@ from metaphors.drawing import (
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
+from story.beats import Hole
 from usercode.heuristic import load_user_heuristic, run_heuristic
 
 #: the kinds drawn here, by the name a card's :class:`metaphors.figures.Figure` gives
@@ -250,7 +251,7 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
                 _label("no hole: nothing to cut", box, theme, theme.ink)]
     starts, pts, labels = shape.starts, shape.points, shape.labels
     outer = Polygon.from_points(pts[:starts[1]])  # ring 0: labelled as in the shape
-    holes = [{"points": pts[a:b], "labels": labels[a:b]} for a, b in pairwise(starts[1:])]
+    holes = [Hole(points=pts[a:b], labels=labels[a:b]) for a, b in pairwise(starts[1:])]
     frame = Frame(outer.points, *box)
     drawn: list[Mobject] = [tag(polygon_mobject(outer, frame, theme, holes), "idle",
                                 "figure:polygon")]

@@ -99,7 +99,7 @@ def frame_key(beats: Sequence[Beat]) -> tuple[tuple[Any, ...], tuple[Any, ...], 
     candidates; None if the run shows no frame. Two runs with the same key show the viewer
     the same frame.
 
-    >>> frame_key([Candidates(caption="c", seq=1, candidates=["D", "E"])])
+    >>> frame_key([Candidates(caption="c", seq=1, candidates=("D", "E"))])
     ((), (), ('D', 'E'))
     """
     polygon: tuple[Any, ...] = ()
@@ -121,9 +121,9 @@ def frame_summarised(beats: Sequence[Beat]) -> list[Beat]:
 
     >>> from story.beats import Note
     >>> beats = [Pick(caption="B is the left-most vertex", seq=1, vertex="B"),
-    ...          Candidates(caption="Candidates inside T: D, E", seq=2, candidates=["D", "E"]),
+    ...          Candidates(caption="Candidates inside T: D, E", seq=2, candidates=("D", "E")),
     ...          Note(caption="on", seq=3),
-    ...          Candidates(caption="Candidates inside T: F", seq=4, candidates=["F"])]
+    ...          Candidates(caption="Candidates inside T: F", seq=4, candidates=("F",))]
     >>> [b.caption for b in frame_summarised(beats)]
     ['The frame as before: candidates D, E', 'The frame as before: candidates D, E', 'on', 'Candidates inside T: F']
     """

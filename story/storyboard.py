@@ -39,12 +39,16 @@ from story.beats import (
     Candidates,
     Claim,
     FindDiagonal,
+    Hole,
     Note,
     Pick,
     ShapeChange,
     ShowPolygon,
     ShowTriangle,
     Verdict,
+    point,
+    points_of,
+    segment,
 )
 from story.pseudocode import PseudocodeRow, from_json, lit_row, named
 from story.reach import Reach, reach_of
@@ -412,8 +416,9 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
     if e.kind == "enter" and state_of(e).get("kind") == "polygon" and is_polygon_key(e.target):
         if not walk.shown_polygon:
             walk.shown_polygon = True
-            yield walk.beat(ShowPolygon, "The polygon", e, points=state_of(e)["points"],
-                            labels=state_of(e)["labels"], holes=state_of(e).get("holes", []))
+            yield walk.beat(ShowPolygon, "The polygon", e, points=points_of(state_of(e)["points"]),
+                            labels=tuple(state_of(e)["labels"]),
+                            holes=tuple(Hole.of(h) for h in state_of(e).get("holes", [])))
         return
     if e.kind == "call" and "polygon" in (e.args or {}) and walk.is_heuristic(e.name):
         if walk.black_box and not walk.heuristic_polygon:  # asked once, not again inside
@@ -428,7 +433,7 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
         corners = state_of(e)["labels"]  # the run's own: a piece keeps its parent's labels
         middle = corners[1] if len(corners) == 3 else "B"
         yield walk.beat(ShowTriangle, f"T = {''.join(corners)}: {middle} and its two neighbours", e,
-                        points=state_of(e)["points"], labels=state_of(e)["labels"])
+                        points=points_of(state_of(e)["points"]), labels=tuple(corners))
         return
     if e.kind == "return":
         call = walk.log.events[call_of(e)]
@@ -467,7 +472,7 @@ def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     found = [show(v) for v in ret.result or []]
     caption = (f"Candidates inside T: {', '.join(found)}" if found
                else f"No vertex inside T: {_outer_corners(walk, call)} is an inner diagonal")
-    yield walk.call_beat(Candidates, caption, call, ret, candidates=found)
+    yield walk.call_beat(Candidates, caption, call, ret, candidates=tuple(found))
 
 
 def _outer_corners(walk: Walk, call: Event) -> str:
@@ -486,7 +491,7 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     name = f"{u}{v}"
     yield walk.call_beat(Claim, f"Claim: {name} is an inner diagonal", call, ret,
                          roles={u: "result", v: "result"},
-                         labels=[u, v], points=state["points"])
+                         labels=(u, v), points=segment(state["points"]))
     polygon = _claim_polygon(walk)
     if polygon is None:
         walk.count_claim()
@@ -497,10 +502,11 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     caption = f"✓ {name} is an inner diagonal" if verdict else (
         f"✗ {name} is not an inner diagonal: {why_not_inner(verdict, polygon.labels, name)}")
     roles = {u: "result", v: "result"} if verdict else {u: "rejected", v: "rejected"}
-    yield walk.beat(Verdict, caption, call, roles=roles, ok=verdict.ok, labels=[u, v],
+    yield walk.beat(Verdict, caption, call, roles=roles, ok=verdict.ok, labels=(u, v),
                     why=verdict.why, code=verdict.code,
-                    point=list(verdict.point) if verdict.point else None,
-                    edge=[polygon.labels[k] for k in verdict.edge] if verdict.edge else None)
+                    point=point(verdict.point) if verdict.point else None,
+                    edge=(polygon.labels[verdict.edge[0]], polygon.labels[verdict.edge[1]])
+                    if verdict.edge else None)
     walk.count_claim()  # after its verdict: the verdict belongs to the claim it judges
 
 
