@@ -24,7 +24,7 @@ from geometry.check import is_inner_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.hole_samples import HOLE_SAMPLES
-from geometry.io import AnyPolygon, polygon_to_json_points, read_rings, shape_from_rings
+from geometry.io import AnyPolygon, any_polygon_from_rings, polygon_to_json_points, read_rings
 from geometry.polygon import Polygon
 from geometry.predicates import Point
 from geometry.samples import is_sample, parse_spec, sample_from_spec, sample_names
@@ -110,7 +110,7 @@ def check_shape(rings: list) -> AnyPolygon:
 
 def _shape(rings: list) -> AnyPolygon:
     try:
-        return shape_from_rings(rings)
+        return any_polygon_from_rings(rings)
     except GeometryError as exc:
         raise BadRequest(f"invalid polygon: {error_line(exc)}", 422) from None
 
@@ -142,7 +142,7 @@ def check(body: dict) -> dict:
     rings = rings_of(body)
     total = sum(len(r) for r in rings)
     try:
-        shape = shape_from_rings(rings)
+        shape = any_polygon_from_rings(rings)
     except GeometryError as exc:
         return {"valid": False, "why": error_line(exc), "labels": [], "reflex": [],
                 "edges": offending_edges(rings), "triangle": None, "candidates": []}
