@@ -233,7 +233,7 @@ def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = (),
     for path in logs:
         _check_log(cls, path, len(logs))
     if polygon is not None:
-        one_run = not plays_own_polygons(cls) and hasattr(cls, "with_spec")
+        one_run = not plays_own_polygons(cls)  # cls is Handed: it has with_spec
         spec = _read(polygon, polygon_read, cls.default_spec() if one_run else None)
         if spec is not None:
             return cls.with_spec(spec)

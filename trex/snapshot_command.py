@@ -21,6 +21,7 @@ from pathlib import Path
 import click
 
 from geometry.io import AnyPolygon
+from story.scene_kinds import Handed
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 
 EXIT_DIFFERS = 1
@@ -54,7 +55,7 @@ def _build(scene: str, polygon: str | None, logs: tuple[str, ...], polygon_read:
     except SnapshotError as exc:  # a polygon's or log's fault names it; else the scene's
         named = [p for p in (polygon, *logs) if p is not None and str(exc).startswith(f"{p}:")]
         fail(str(exc) if named else f"{scene}: {exc}")
-    spec = getattr(handed, "spec", None)
+    spec = handed.spec if isinstance(handed, Handed) else None
     if spec is not None and spec.polygon_read is not None:
         try:
             run_once(spec)
