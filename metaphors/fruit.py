@@ -32,7 +32,7 @@ from metaphors.drawing import triangulation_pieces
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
-from story.beats import Beat, Hole, beat_kind
+from story.beats import Beat, Hole, Point, beat_kind, point, points_of
 from story.storyboard import Reading, Walk, show
 from tracing import Event
 
@@ -189,8 +189,8 @@ class Keyhole(Beat):
     (its ``points``): the keyhole of ear clipping with holes."""
 
     hole: int
-    corners: list[str]
-    points: list[list[float]]
+    corners: tuple[str, str]
+    points: tuple[Point, Point]
 
 
 @beat_kind("ear-test")
@@ -200,7 +200,7 @@ class EarTest(Beat):
 
     vertex: str
     ear: bool
-    triangle: list[list[float]]
+    triangle: tuple[Point, ...]
     inside: str | None
 
 
@@ -208,12 +208,12 @@ class EarTest(Beat):
 class Slice(Beat):
     """Slice ``k`` of ``total`` cut off at ``corners``; ``rest`` is what is left of the fruit."""
 
-    corners: list[str]
-    points: list[list[float]]
+    corners: tuple[str, ...]
+    points: tuple[Point, ...]
     k: int
     total: int
-    rest: list[list[float]]
-    triangulation: list[list[list[float]]]  # after the last slice, every slice's corners' points; else empty
+    rest: tuple[Point, ...]
+    triangulation: tuple[tuple[Point, ...], ...]  # after the last slice, every slice's corners' points; else empty
 
 
 @beat_kind("last-slice")
@@ -225,8 +225,8 @@ class LastSlice(Slice):
 class Good(Beat):
     """Prune and search keeps a good sub-polygon (its points and labels)."""
 
-    points: list[list[float]]
-    labels: list[str]
+    points: tuple[Point, ...]
+    labels: tuple[str, ...]
 
 
 def unprimed(label: str) -> str:
@@ -249,7 +249,7 @@ def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     if why is not None and why[1] is not None:
         roles[unprimed(why[1])] = "rejected"
     yield walk.call_beat(EarTest, caption, call, ret, roles=roles, vertex=v, ear=ear,
-                         triangle=why[0] if why else [], inside=why[1] if why else None)
+                         triangle=points_of(why[0]) if why else (), inside=why[1] if why else None)
 
 
 def _ring(walk: Walk) -> tuple[list[str], list]:
@@ -288,8 +288,8 @@ def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     hole = int("".join(ch for ch in p if ch in "₀₁₂₃₄₅₆₇₈₉").translate(_DIGITS))
     point_of = walk.root_points()
     yield walk.call_beat(Keyhole, f"Hole {hole}: a keyhole cut from {p} to {m}", call, ret,
-                         roles={p: "result", m: "result"}, hole=hole, corners=[p, m],
-                         points=[point_of[p], point_of[m]])
+                         roles={p: "result", m: "result"}, hole=hole, corners=(p, m),
+                         points=(point(point_of[p]), point(point_of[m])))
 
 
 def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -319,23 +319,23 @@ def _slice(corners: list[str], labels: list[str], points: list,
     where = dict(zip(labels, points, strict=True))
     gone = {c[1] for c in clipped[:-1]}
     return {
-        "corners": corners,
-        "points": [where[c] for c in corners],
+        "corners": tuple(corners),
+        "points": points_of(where[c] for c in corners),
         "k": len(clipped),
         "total": len(labels) - 2,
         # what is left of the fruit once this slice is off (empty after the last one)
-        "rest": [where[x] for x in labels if x not in gone | {corners[1]}]
-        if len(clipped) < len(labels) - 2 else [],
-        "triangulation": [[where[c] for c in cut] for cut in clipped]
-        if len(clipped) == len(labels) - 2 else [],
+        "rest": points_of(where[x] for x in labels if x not in gone | {corners[1]})
+        if len(clipped) < len(labels) - 2 else (),
+        "triangulation": tuple(points_of(where[c] for c in cut) for cut in clipped)
+        if len(clipped) == len(labels) - 2 else (),
     }
 
 
 def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     state = walk.entered_after(ret, walk.result_ref(ret))
     yield walk.call_beat(Good, "A good sub-polygon: one cut edge, about half the vertices; "
-                         "its middle vertex is tested next", call, ret, points=state["points"],
-                         labels=state["labels"])
+                         "its middle vertex is tested next", call, ret,
+                         points=points_of(state["points"]), labels=tuple(state["labels"]))
 
 
 READS: Mapping[str, Reading] = {

@@ -384,7 +384,7 @@ def test_ear_clipping_log_has_keyholes_and_every_slice():
     assert [b.hole for b in beats if isinstance(b, Keyhole)] == [2, 1]  # right-most first
     slices = [b for b in beats if isinstance(b, Slice)]
     assert len(slices) == shape.n + 2 * shape.hole_count - 2
-    assert isinstance(slices[-1], LastSlice) and slices[-1].rest == []
+    assert isinstance(slices[-1], LastSlice) and slices[-1].rest == ()
     assert log.meta["pseudocode"][0][1] == ["join_hole"]
 
 
