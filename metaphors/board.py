@@ -58,8 +58,8 @@ class Board:
                                tuple(range(len(labels))))
         self.holes: list[Hole] = list(holes)  # drawn unfilled, their vertices marked
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
-        self.shape = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
-                         "polygon")
+        self.outline = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
+                           "polygon")
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}")
             for label, m in [*zip(labels, vertex_markers(self.polygon, self.frame, theme),
@@ -96,7 +96,7 @@ class Board:
 
     def left_group(self) -> VGroup:
         """What turns when the metaphor turns the polygon: outline, vertices, metaphor objects."""
-        parts = {id(m): m for m in (self.shape, *self.markers.values(), *self.objects.values())}
+        parts = {id(m): m for m in (self.outline, *self.markers.values(), *self.objects.values())}
         return VGroup(*parts.values())  # once each: the fruit is the outline itself
 
     # --- playing ----------------------------------------------------------------------------------

@@ -66,10 +66,10 @@ def _setup(board: Board, beat: Beat) -> None:
     board.keep("plate", plate)
     board.keep("fruit", fruit)
     board.keep("counter", _counter(board, 0, getattr(beat, "total", slices)))
-    board.scene.play(Transform(board.shape, fruit), FadeIn(plate),
+    board.scene.play(Transform(board.outline, fruit), FadeIn(plate),
                      FadeIn(board.objects["counter"]), run_time=0.8 * beat.pace)
     board.scene.remove(fruit)
-    board.objects["fruit"] = board.shape
+    board.objects["fruit"] = board.outline
 
 
 def _counter(board: Board, k: int, total: int) -> Mobject:
@@ -141,9 +141,9 @@ def clip(board: Board, beat: Slice) -> None:
     board.keep("counter", counter)
     anims = [Transform(piece, target), FadeOut(knife), FadeIn(counter)]
     if data.rest:
-        anims.append(Transform(board.shape, _fruit(board, data.rest)))
+        anims.append(Transform(board.outline, _fruit(board, data.rest)))
     else:
-        anims.append(FadeOut(board.shape))
+        anims.append(FadeOut(board.outline))
     board.scene.add(piece)
     board.play(beat, *anims, run_time=1.0)
     board.keep(f"slice:{data.k}", piece)

@@ -159,7 +159,7 @@ def _whole(board: Board, beat: Stack) -> None:
     n = board.polygon.n
     count = tag(text(f"n − 2 = {n} − 2 = {len(whole)} triangles", font=theme.font,
                      size=theme.label_size + 2, colour=theme.result), None, "counter")
-    count.next_to(board.shape, direction=[0, -1, 0], buff=0.3)
+    count.next_to(board.outline, direction=[0, -1, 0], buff=0.3)
     board.keep("triangulation", VGroup(*whole))
     board.keep("counter", count)
     board.scene.play(*board.drop(*tints), *[FadeIn(t) for t in whole], FadeIn(count),

@@ -93,8 +93,8 @@ def split(board: Board, beat: Split) -> None:
         board.keep(f"diagonal:{k}", tag(line, "idle", line.name))
         anims.append(line.animate.set_color(theme.ink).set_stroke(width=theme.stroke))
     anims += board.drop("verdict", f"piece:{beat.parent}")
-    if board.shape.get_fill_opacity() > 0:
-        anims.append(board.shape.animate.set_fill(opacity=0))
+    if board.outline.get_fill_opacity() > 0:
+        anims.append(board.outline.animate.set_fill(opacity=0))
     if all(len(p) == 3 for p in beat.points) and not any(
             key.startswith("piece:") for key in board.objects):
         board.play(beat, *anims, *_whole(board, beat.labels), run_time=1.2)
@@ -168,7 +168,7 @@ def find(board: Board, beat: FindDiagonal) -> None:
         anims = [FadeIn(finder, shift=0.2 * DOWN)]
     else:
         anims = [Indicate(finder[1], color=theme.argument, scale_factor=1.3)]
-    piece = board.objects.get(f"piece:{beat.piece}", board.shape)
+    piece = board.objects.get(f"piece:{beat.piece}", board.outline)
     anims.append(piece.animate.set_fill(theme.called, opacity=theme.active_opacity))
     board.play(beat, *anims, run_time=1.2)
 
