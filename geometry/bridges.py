@@ -46,18 +46,18 @@ from geometry.predicates import Contact, Point, on_segment, orient, segment_cont
 class BridgedRing:
     """The weakly simple ring of slots: links, the vertex in each slot, and each slot's turn."""
 
-    def __init__(self, shape: PolygonWithHoles) -> None:
-        n, holes = shape.n, shape.hole_count
-        outer = shape.starts[1]
+    def __init__(self, polygon: PolygonWithHoles) -> None:
+        n, holes = polygon.n, polygon.hole_count
+        outer = polygon.starts[1]
         size = n + 2 * holes
-        self.shape = shape
+        self.polygon = polygon
         self.vertex_of = list(range(n)) + [0] * (2 * holes)
-        self.points: list[Point] = list(shape.points) + [(0.0, 0.0)] * (2 * holes)
+        self.points: list[Point] = list(polygon.points) + [(0.0, 0.0)] * (2 * holes)
         self.next = [*range(1, outer), 0] + [0] * (size - outer)
         self.prev = [outer - 1, *range(outer - 1)] + [0] * (size - outer)
-        self.turn = [int(t) for t in shape.turns] + [0] * (2 * holes)
+        self.turn = [int(t) for t in polygon.turns] + [0] * (2 * holes)
         self.xy = np.zeros((size, 2))  # the points and links again, for NumPy
-        self.xy[:n] = np.asarray(shape.points, dtype=float)
+        self.xy[:n] = np.asarray(polygon.points, dtype=float)
         self.next_np = np.asarray(self.next)
         self.live = np.zeros(size, dtype=bool)
         self.live[:outer] = True
@@ -68,7 +68,7 @@ class BridgedRing:
 
     def label(self, s: int) -> str:
         """The label of slot s: its vertex's, primed for each further copy (``D′``, ``D″`` …)."""
-        return self.shape.labels[self.vertex_of[s]] + _primes(self.copies[s])
+        return self.polygon.labels[self.vertex_of[s]] + _primes(self.copies[s])
 
     @property
     def trace_key(self) -> str:
@@ -90,15 +90,15 @@ class BridgedRing:
 
     def splice(self, m: int, p: int) -> None:
         """Join the hole of vertex p (not yet in the ring) at slot m: ``m, p … p', m'``."""
-        shape, k = self.shape, len(self.bridges)
-        p2, m2 = shape.n + 2 * k, shape.n + 2 * k + 1
-        hole = shape.ring(shape.ring_of(p))
+        polygon, k = self.polygon, len(self.bridges)
+        p2, m2 = polygon.n + 2 * k, polygon.n + 2 * k + 1
+        hole = polygon.ring(polygon.ring_of(p))
         for v in hole:
-            self.next[v], self.prev[v] = shape.next(v), shape.prev(v)
-        last, after = shape.prev(p), self.next[m]
+            self.next[v], self.prev[v] = polygon.next(v), polygon.prev(v)
+        last, after = polygon.prev(p), self.next[m]
         self.vertex_of[p2], self.vertex_of[m2] = p, self.vertex_of[m]
         self.copies[p2] = 1
-        self.copies[m2] = 1 + sum(1 for s in range(shape.n, p2) if self.vertex_of[s] == self.vertex_of[m])
+        self.copies[m2] = 1 + sum(1 for s in range(polygon.n, p2) if self.vertex_of[s] == self.vertex_of[m])
         self.points[p2], self.points[m2] = self.points[p], self.points[m]
         self.xy[p2], self.xy[m2] = self.xy[p], self.xy[m]
         self.next[m], self.prev[p] = p, m
@@ -130,24 +130,24 @@ def _primes(k: int) -> str:
 _SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
-def _rightmost(shape: PolygonWithHoles, hole: int) -> int:
+def _rightmost(polygon: PolygonWithHoles, hole: int) -> int:
     """The hole's right-most vertex, the highest on ties."""
-    return max(shape.ring(hole), key=lambda i: shape.points[i])
+    return max(polygon.ring(hole), key=lambda i: polygon.points[i])
 
 
-def hole_order(shape: PolygonWithHoles) -> list[int]:
+def hole_order(polygon: PolygonWithHoles) -> list[int]:
     """Holes by their right-most vertex, right-most first (then by hole number)."""
-    key = {h: shape.points[_rightmost(shape, h)] for h in range(1, shape.hole_count + 1)}
+    key = {h: polygon.points[_rightmost(polygon, h)] for h in range(1, polygon.hole_count + 1)}
     return sorted(key, key=lambda h: (-key[h][0], -key[h][1], h))
 
 
-def bridge_holes(shape: PolygonWithHoles) -> BridgedRing:
-    """Join every hole of ``shape`` (a :class:`~geometry.holes.PolygonWithHoles`) by a bridge."""
-    ring = BridgedRing(shape)
-    for hole in hole_order(shape):
-        p = _rightmost(shape, hole)
-        m = _visible_slot(ring, shape.points[p])
-        join_hole(ring, shape.vertex(p), shape.vertex(ring.vertex_of[m]), m)
+def bridge_holes(polygon: PolygonWithHoles) -> BridgedRing:
+    """Join every hole of ``polygon`` (a :class:`~geometry.holes.PolygonWithHoles`) by a bridge."""
+    ring = BridgedRing(polygon)
+    for hole in hole_order(polygon):
+        p = _rightmost(polygon, hole)
+        m = _visible_slot(ring, polygon.points[p])
+        join_hole(ring, polygon.vertex(p), polygon.vertex(ring.vertex_of[m]), m)
     return ring
 
 

@@ -123,13 +123,13 @@ class PolygonWithHoles:
             source += [offset + s for s in hole.source]
             offset += len(hole.points)
         starts.append(len(points))
-        shape = cls(
+        polygon = cls(
             points=tuple(points), labels=tuple(labels), source=tuple(source),
             starts=tuple(starts), input_clockwise=outer.input_clockwise,
             warnings=outer.warnings + tuple(w for hole in holes for w in hole.warnings),
         )
-        check_rings(shape)
-        return shape
+        check_rings(polygon)
+        return polygon
 
     # --- the rings ---------------------------------------------------------------------------
 

@@ -51,13 +51,13 @@ from geometry.samples import is_sample, sample_from_spec
 
 __all__ = [
     "AnyPolygon",
+    "any_polygon_from_rings",
     "check_format",
     "polygon_from_rings",
     "polygon_to_json_points",
+    "read_any_polygon",
     "read_polygon",
     "read_rings",
-    "read_shape",
-    "shape_from_rings",
     "to_dat",
     "to_geojson",
     "to_wkt",
@@ -82,7 +82,7 @@ def read_polygon(arg: str | os.PathLike[str], *, ignore_holes: bool = False) -> 
     """The simple polygon in file ``arg``, or the sample it names (``NAME[:N[:SEED]]``).
 
     An existing path wins over a sample of the same name. Holes are validated
-    (a defect is named), then refused: use :func:`read_shape` where they are welcome.
+    (a defect is named), then refused: use :func:`read_any_polygon` where they are welcome.
 
     Parameters
     ----------
@@ -114,19 +114,19 @@ def read_polygon(arg: str | os.PathLike[str], *, ignore_holes: bool = False) -> 
     return polygon_from_rings(read_rings(path), ignore_holes=ignore_holes)
 
 
-def read_shape(arg: str | os.PathLike[str]) -> AnyPolygon:
+def read_any_polygon(arg: str | os.PathLike[str]) -> AnyPolygon:
     """Like :func:`read_polygon`, but a polygon with holes is returned as one (also the
     samples of :data:`geometry.hole_samples.HOLE_SAMPLES`).
 
-    >>> read_shape("counterexample").n, read_shape("keyhole").hole_count
+    >>> read_any_polygon("counterexample").n, read_any_polygon("keyhole").hole_count
     (5, 2)
     """
     path = _argument_path(arg)
     if not path.exists() and str(arg) in HOLE_SAMPLES:
-        return shape_from_rings(HOLE_SAMPLES[str(arg)])
+        return any_polygon_from_rings(HOLE_SAMPLES[str(arg)])
     if not path.exists() and is_sample(str(arg)):
         return Polygon.from_points(sample_from_spec(str(arg)))
-    return shape_from_rings(read_rings(path))
+    return any_polygon_from_rings(read_rings(path))
 
 
 def _argument_path(arg: str | os.PathLike[str]) -> Path:
@@ -142,10 +142,10 @@ def _argument_path(arg: str | os.PathLike[str]) -> Path:
     return Path(arg)
 
 
-def shape_from_rings(rings: Sequence[Ring]) -> AnyPolygon:
+def any_polygon_from_rings(rings: Sequence[Ring]) -> AnyPolygon:
     """A :class:`Polygon` for one ring, a validated :class:`PolygonWithHoles` for more.
 
-    >>> shape_from_rings([[[0, 0], [4, 0], [0, 4]], [[1, 1], [1, 2], [2, 1]]]).hole_count
+    >>> any_polygon_from_rings([[[0, 0], [4, 0], [0, 4]], [[1, 1], [1, 2], [2, 1]]]).hole_count
     1
     """
     if len(rings) > 1:
@@ -391,13 +391,13 @@ _READERS = {
 # --- writing -----------------------------------------------------------------
 
 
-def _points_of(shape: Polygon | Sequence[Point]) -> list[Point]:
+def _points_of(polygon: Polygon | Sequence[Point]) -> list[Point]:
     """A polygon's points in its input order (ccw for sub-polygons), or the points given."""
-    if not isinstance(shape, Polygon):
-        return [(p[0], p[1]) for p in shape]
-    if sorted(shape.source) == list(range(shape.n)):
-        return shape.input_points()
-    return list(shape.points)
+    if not isinstance(polygon, Polygon):
+        return [(p[0], p[1]) for p in polygon]
+    if sorted(polygon.source) == list(range(polygon.n)):
+        return polygon.input_points()
+    return list(polygon.points)
 
 
 def _number(x: float) -> float | int:
@@ -405,16 +405,16 @@ def _number(x: float) -> float | int:
     return int(x) if float(x).is_integer() and abs(x) < 2**53 else float(x)
 
 
-def polygon_to_json_points(shape: Polygon | Sequence[Point]) -> list[list[float | int]]:
+def polygon_to_json_points(polygon: Polygon | Sequence[Point]) -> list[list[float | int]]:
     """``[[x, y], …]`` in input order, integral coordinates as ints.
 
     >>> polygon_to_json_points(Polygon.from_points([(0, 0), (0, 1), (1.5, 0)]))
     [[0, 0], [0, 1], [1.5, 0]]
     """
-    return [[_number(x), _number(y)] for x, y in _points_of(shape)]
+    return [[_number(x), _number(y)] for x, y in _points_of(polygon)]
 
 
-def to_json(shape: Polygon | Sequence[Point]) -> str:
+def to_json(polygon: Polygon | Sequence[Point]) -> str:
     """JSON text: one point per line, so diffs stay readable.
 
     >>> print(to_json([(0, 0), (1, 0), (0, 1)]))
@@ -424,11 +424,11 @@ def to_json(shape: Polygon | Sequence[Point]) -> str:
       [0, 1]
     ]
     """
-    rows = ",\n".join(f"  {json.dumps(p)}" for p in polygon_to_json_points(shape))
+    rows = ",\n".join(f"  {json.dumps(p)}" for p in polygon_to_json_points(polygon))
     return f"[\n{rows}\n]"
 
 
-def to_wkt(shape: Polygon | Sequence[Point]) -> str:
+def to_wkt(polygon: Polygon | Sequence[Point]) -> str:
     """WKT ``POLYGON``, exact.
 
     Written by hand: shapely's writer prints at most 16–17 significant digits
@@ -437,22 +437,22 @@ def to_wkt(shape: Polygon | Sequence[Point]) -> str:
     >>> to_wkt([(0, 0), (0.1, 0), (0, 1e-07)])
     'POLYGON ((0 0, 0.1 0, 0 1e-07, 0 0))'
     """
-    points = polygon_to_json_points(shape)
+    points = polygon_to_json_points(polygon)
     ring = ", ".join(f"{x!r} {y!r}" for x, y in [*points, points[0]])
     return f"POLYGON (({ring}))"
 
 
-def to_geojson(shape: Polygon | Sequence[Point]) -> str:
+def to_geojson(polygon: Polygon | Sequence[Point]) -> str:
     """GeoJSON Polygon geometry.
 
     >>> to_geojson([(0, 0), (1, 0), (0, 1)])
     '{"type":"Polygon","coordinates":[[[0.0,0.0],[1.0,0.0],[0.0,1.0],[0.0,0.0]]]}'
     """
-    text: str = shapely.to_geojson(shapely.Polygon(_points_of(shape)))
+    text: str = shapely.to_geojson(shapely.Polygon(_points_of(polygon)))
     return text
 
 
-def to_dat(shape: Polygon | Sequence[Point]) -> str:
+def to_dat(polygon: Polygon | Sequence[Point]) -> str:
     """One ``x y`` per line (exact: shortest float repr).
 
     >>> print(to_dat([(0, 0), (1.5, 0), (0, 1)]), end="")
@@ -460,7 +460,7 @@ def to_dat(shape: Polygon | Sequence[Point]) -> str:
     1.5 0
     0 1
     """
-    return "".join(f"{x} {y}\n" for x, y in polygon_to_json_points(shape))
+    return "".join(f"{x} {y}\n" for x, y in polygon_to_json_points(polygon))
 
 
 _WRITERS = {
@@ -472,12 +472,12 @@ _WRITERS = {
 }
 
 
-def write_json(shape: Polygon | Sequence[Point], path: str | os.PathLike[str]) -> None:
+def write_json(polygon: Polygon | Sequence[Point], path: str | os.PathLike[str]) -> None:
     """Write the points as JSON to ``path``, atomically."""
-    write_atomic(Path(path), to_json(shape) + "\n")
+    write_atomic(Path(path), to_json(polygon) + "\n")
 
 
-def write_polygon(shape: Polygon | Sequence[Point], path: str | os.PathLike[str]) -> None:
+def write_polygon(polygon: Polygon | Sequence[Point], path: str | os.PathLike[str]) -> None:
     """Write in the format of ``path``'s extension, atomically.
 
     >>> write_polygon([(0, 0), (1, 0), (0, 1)], "out.xyz")
@@ -487,7 +487,7 @@ def write_polygon(shape: Polygon | Sequence[Point], path: str | os.PathLike[str]
     """
     path = Path(path)
     check_format(path)
-    text = _WRITERS[path.suffix.lower()](shape)
+    text = _WRITERS[path.suffix.lower()](polygon)
     write_atomic(path, text if text.endswith("\n") else text + "\n")
 
 

@@ -60,19 +60,19 @@ class Rings(Protocol):
     def hole_count(self) -> int: ...
 
 
-def check_rings(shape: Rings) -> None:
-    """Raise :class:`HoleError` unless the rings of ``shape`` lie apart, holes inside, none nested.
+def check_rings(polygon: Rings) -> None:
+    """Raise :class:`HoleError` unless the rings of ``polygon`` lie apart, holes inside, none nested.
 
-    ``shape`` is a :class:`geometry.holes.PolygonWithHoles` whose rings are each simple.
+    ``polygon`` is a :class:`geometry.holes.PolygonWithHoles` whose rings are each simple.
     """
-    points = shape.points
-    _check_repeats(points, shape.starts)
+    points = polygon.points
+    _check_repeats(points, polygon.starts)
     arr = np.asarray(points, dtype=float)
-    ends = np.asarray(shape.next_array)
-    rings = shape.ring_ids
+    ends = np.asarray(polygon.next_array)
+    rings = polygon.ring_ids
     tree = shapely.STRtree(shapely.linestrings(np.stack([arr, arr[ends]], axis=1)))
     _check_contacts(points, arr, ends, rings, tree)
-    _check_containment(shape, arr, ends, rings, tree)
+    _check_containment(polygon, arr, ends, rings, tree)
 
 
 def _check_repeats(points: Sequence[Point], starts: Sequence[int]) -> None:
@@ -135,12 +135,12 @@ def _touch_point(p: Point, q: Point, r: Point, s: Point) -> Point:
 
 
 def _check_containment(
-    shape: Rings, arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree: shapely.STRtree
+    polygon: Rings, arr: np.ndarray, ends: np.ndarray, rings: np.ndarray, tree: shapely.STRtree
 ) -> None:
-    holes = shape.hole_count
+    holes = polygon.hole_count
     if holes == 0:
         return
-    inside = _ring_parity(arr, ends, rings, tree, np.asarray(shape.starts[1:-1]), holes + 1)
+    inside = _ring_parity(arr, ends, rings, tree, np.asarray(polygon.starts[1:-1]), holes + 1)
     for hole in range(1, holes + 1):
         if not inside[hole - 1, 0]:
             raise HoleError(f"hole {hole} lies outside the polygon")

@@ -47,7 +47,7 @@ from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
 from story.analysis import Band, Motion, inside, motion, outside, split
-from story.beats import Beat, Candidates, Claim, ShowPolygon, ShowTriangle, Verdict
+from story.beats import Beat, Candidates, Claim, Point, ShowPolygon, ShowTriangle, Verdict
 from story.registry import entry, spoken
 from story.spec import RunSpec
 from story.states import Moving, Tool
@@ -87,13 +87,13 @@ class Analysis:
 @dataclass(frozen=True)
 class Moment:
     """What one run's analysis shows, read from its beats: the polygon, T, the metaphor's
-    step (``step``, with its motion) or gravity's band, the claim and its verdict."""
+    step (``mover``: its beat, with its motion) or gravity's band, the claim and its verdict."""
 
     heuristic: str
-    points: list
-    labels: list
-    triangle: list | None
-    step: Beat | None
+    points: tuple[Point, ...]
+    labels: tuple[str, ...]
+    triangle: tuple[Point, ...] | None
+    mover: Beat | None
     motion: Motion | None
     band: Band | None
     captions: dict[str, str]  # gravity's steps' captions by action (turn, drop, slide, snag)
@@ -107,8 +107,8 @@ class Moment:
         return cast(Motion, self.motion)
 
     @property
-    def moving_step(self) -> Beat:
-        return cast(Beat, self.step)
+    def moving_beat(self) -> Beat:
+        return cast(Beat, self.mover)
 
     @property
     def swept(self) -> Band:
@@ -136,11 +136,11 @@ def moment_of(heuristic: str, beats: Sequence[Beat]) -> Moment:
     shown = _first(beats, ShowPolygon)
     t = next((b for b in beats if isinstance(b, ShowTriangle)), None)  # gravity has none
     claim, verdict = _first(beats, Claim), _first(beats, Verdict)
-    step = next((b for b in beats if _target(b) is not None), None)
-    found = motion(cast(Tool, _target(step)), t.points) if step and t else None  # step: a target's
+    mover = next((b for b in beats if _target(b) is not None), None)
+    found = motion(cast(Tool, _target(mover)), t.points) if mover and t else None  # mover: a target's
     band, captions = _band(beats)
     lit = next((b for b in beats if isinstance(b, Candidates)), None)
-    return Moment(heuristic, shown.points, shown.labels, t.points if t else None, step, found,
+    return Moment(heuristic, shown.points, shown.labels, t.points if t else None, mover, found,
                   band, captions, claim, verdict, tuple(lit.candidates) if lit else ())
 
 
@@ -240,7 +240,7 @@ def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
                                    analysis.slow)
     opening = [] if analysis.intro else [*stage.appear(),
                                          *stage.key(theme.swept, "swept", "swept")]
-    stage.say(wrong.moving_step.caption, ([*opening, FadeIn(drawing)], 1.5 if opening else 0.3),
+    stage.say(wrong.moving_beat.caption, ([*opening, FadeIn(drawing)], 1.5 if opening else 0.3),
               (motion_anims, analysis.slow),
               ([Indicate(stage.markers[wrong.pick], color=theme.argument)], 0.8),
               ([], analysis.freeze))  # frozen at the pick: the moment the argument is about
@@ -306,7 +306,7 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
             first += [*stage.forget_legend(), *stage.key(colour, "under water", "water")]
         motion_anims, drawing = moving(stage, lambda t: tool_drawing(stage, m, t, colour),
                                        analysis.slow)
-        stage.say(right.moving_step.caption, (first, 0.6 if first else 1.5), ([FadeIn(drawing)], 0.3),
+        stage.say(right.moving_beat.caption, (first, 0.6 if first else 1.5), ([FadeIn(drawing)], 0.3),
                   (motion_anims, analysis.slow),
                   ([Indicate(stage.markers[right.pick], color=theme.result)], 0.6))
         witness = m.witness()

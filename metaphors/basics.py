@@ -44,7 +44,7 @@ def polygon(board: Board, beat: ShowPolygon) -> None:
     board.scene.add(*board.panel.mobjects())
     # one FadeIn per marker: FadeIn(*markers) would put them on screen as one group, and manim
     # redraws a whole group in every frame when any member of it changes colour
-    board.play(beat, Write(board.title), Create(board.shape),
+    board.play(beat, Write(board.title), Create(board.outline),
                *[FadeIn(m) for m in board.markers.values()], run_time=1.5)
 
 

@@ -25,7 +25,7 @@ from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering.layers import BACKDROP_Z, STILL_Z
 from rendering.typeset import balanced, glyphs, text
-from story.beats import Beat
+from story.beats import Beat, Hole
 
 #: seconds the words of a beat take to change (at most half the beat)
 WORDS_TIME = 0.3
@@ -56,12 +56,11 @@ class Board:
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
-        self.holes = list(holes)  # each {"points", "labels"}: drawn unfilled, their vertices marked
+        self.holes: list[Hole] = list(holes)  # drawn unfilled, their vertices marked
         self.box = box  # the picture's part of the screen (nothing drawn leaves it)
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
-        self.box = box  # the picture's place on the frame
-        self.shape = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
-                         "polygon")
+        self.outline = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
+                           "polygon")
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}")
             for label, m in [*zip(labels, vertex_markers(self.polygon, self.frame, theme),
@@ -70,7 +69,7 @@ class Board:
         self.where: dict[str, tuple[float, ...]] = {
             label: p for label, p in zip(labels, self.polygon.points, strict=True)}
         self.where.update({label: tuple(p) for hole in self.holes
-                           for label, p in zip(hole["labels"], hole["points"], strict=True)})
+                           for label, p in zip(hole.labels, hole.points, strict=True)})
         self.panel = Panel(points, labels, shown, theme, self.holes)
         self.title = tag(glyphs(title, font=theme.font, size=30, colour=theme.ink), None, "title")
         self.title.move_to((0, TITLE_Y, 0))
@@ -98,7 +97,7 @@ class Board:
 
     def left_group(self) -> VGroup:
         """What turns when the metaphor turns the polygon: outline, vertices, metaphor objects."""
-        parts = {id(m): m for m in (self.shape, *self.markers.values(), *self.objects.values())}
+        parts = {id(m): m for m in (self.outline, *self.markers.values(), *self.objects.values())}
         return VGroup(*parts.values())  # once each: the fruit is the outline itself
 
     # --- playing ----------------------------------------------------------------------------------

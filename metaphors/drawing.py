@@ -14,6 +14,7 @@ from geometry.polygon import Polygon
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
+from story.beats import Hole
 
 
 class Frame:
@@ -69,24 +70,23 @@ class Frame:
 
 
 def polygon_mobject(polygon: Polygon, frame: Frame, theme: Theme = THEME,
-                    holes: Sequence[dict] = ()) -> MPolygon | Polygram:
-    """The polygon's outline with a light fill; with ``holes`` (each ``{"points": …}``,
-    clockwise) one mobject of several rings, the holes left unfilled (winding number 0)."""
+                    holes: Sequence[Hole] = ()) -> MPolygon | Polygram:
+    """The polygon's outline with a light fill; with ``holes`` (each clockwise) one mobject of several rings, the holes left unfilled (winding number 0)."""
     style: dict[str, Any] = {"color": theme.ink, "stroke_width": theme.stroke, "fill_color": theme.polygon_fill,
              "fill_opacity": theme.fill_opacity}
     if holes:
-        rings = [frame.many(polygon.points), *(frame.many(h["points"]) for h in holes)]
+        rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
         return Polygram(*[[*ring, ring[0]] for ring in rings], **style)
     return MPolygon(*frame.many(polygon.points), **style)
 
 
-def hole_markers(holes: Sequence[dict], frame: Frame, theme: Theme = THEME) -> list:
+def hole_markers(holes: Sequence[Hole], frame: Frame, theme: Theme = THEME) -> list:
     """(label, marker) for every hole vertex; a label sits away from its hole's centre, in
     the region."""
     out = []
     for hole in holes:
-        centre = np.mean(frame.many(hole["points"]), axis=0)
-        for point, label in zip(hole["points"], hole["labels"], strict=True):
+        centre = np.mean(frame.many(hole.points), axis=0)
+        for point, label in zip(hole.points, hole.labels, strict=True):
             # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % of
             # the frame's height
             out.append((label, _marker(frame.to_scene(point), centre, label, theme, 0.3,

@@ -33,7 +33,7 @@ from metaphors.drawing import triangulation_pieces, whole_caption
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
-from story.beats import Beat, beat_kind
+from story.beats import Beat, Hole, Point, beat_kind, point, points_of
 from story.storyboard import Reading, Walk, show
 from tracing import Event
 
@@ -43,12 +43,12 @@ PLATE_WIDTH = 5.6
 
 
 def _fruit(board: Board, points: Sequence[Sequence[float]],
-           holes: Sequence[dict[str, Any]] = ()) -> MPolygon | Polygram:
+           holes: Sequence[Hole] = ()) -> MPolygon | Polygram:
     theme = board.theme
     style: dict[str, Any] = {"color": theme.rind, "stroke_width": theme.stroke * 2.2,
                              "fill_color": theme.fruit, "fill_opacity": 0.75}
     if holes:  # the whole fruit, its holes cut out (rings of one mobject; holes unfilled)
-        rings = [[board.at(p) for p in ring] for ring in (points, *(h["points"] for h in holes))]
+        rings = [[board.at(p) for p in ring] for ring in (points, *(h.points for h in holes))]
         return tag(Polygram(*[[*ring, ring[0]] for ring in rings], **style), "idle", "fruit")
     return tag(MPolygon(*[board.at(p) for p in points], **style), "idle", "fruit")
 
@@ -63,14 +63,14 @@ def _setup(board: Board, beat: Beat) -> None:
                         fill_color=theme.plate, fill_opacity=0.12), None, "plate")
     plate.move_to((x, PLATE_Y, 0))
     fruit = _fruit(board, board.polygon.points, board.holes)
-    slices = board.polygon.n + sum(len(h["points"]) + 2 for h in board.holes) - 2
+    slices = board.polygon.n + sum(len(h.points) + 2 for h in board.holes) - 2
     board.keep("plate", plate)
     board.keep("fruit", fruit)
     board.keep("counter", _counter(board, 0, getattr(beat, "total", slices)))
-    board.scene.play(Transform(board.shape, fruit), FadeIn(plate),
+    board.scene.play(Transform(board.outline, fruit), FadeIn(plate),
                      FadeIn(board.objects["counter"]), run_time=0.8 * beat.pace)
     board.scene.remove(fruit)
-    board.objects["fruit"] = board.shape
+    board.objects["fruit"] = board.outline
 
 
 def _counter(board: Board, k: int, total: int) -> Mobject:
@@ -142,9 +142,9 @@ def clip(board: Board, beat: Slice) -> None:
     board.keep("counter", counter)
     anims = [Transform(piece, target), FadeOut(knife), FadeIn(counter)]
     if data.rest:
-        anims.append(Transform(board.shape, _fruit(board, data.rest)))
+        anims.append(Transform(board.outline, _fruit(board, data.rest)))
     else:
-        anims.append(FadeOut(board.shape))
+        anims.append(FadeOut(board.outline))
     board.scene.add(piece)
     board.play(beat, *anims, run_time=1.0)
     board.keep(f"slice:{data.k}", piece)
@@ -158,7 +158,7 @@ def _whole(board: Board, beat: Slice) -> None:
     theme = board.theme
     pieces = triangulation_pieces(beat.triangulation, board.at, theme)
     holes = len(board.holes)
-    n = board.polygon.n + sum(len(h["points"]) for h in board.holes)
+    n = board.polygon.n + sum(len(h.points) for h in board.holes)
     count = (f"n − 2 = {n} − 2 = {beat.total} triangles" if not holes else
              f"n + 2h − 2 = {n} + {2 * holes} − 2 = {beat.total} triangles")
     result = _counter_text(board, count, theme.result)
@@ -192,8 +192,8 @@ class Keyhole(Beat):
     (its ``points``): the keyhole of ear clipping with holes."""
 
     hole: int
-    corners: list[str]
-    points: list[list[float]]
+    corners: tuple[str, str]
+    points: tuple[Point, Point]
 
 
 @beat_kind("ear-test")
@@ -203,7 +203,7 @@ class EarTest(Beat):
 
     vertex: str
     ear: bool
-    triangle: list[list[float]]
+    triangle: tuple[Point, ...]
     inside: str | None
 
 
@@ -211,12 +211,12 @@ class EarTest(Beat):
 class Slice(Beat):
     """Slice ``k`` of ``total`` cut off at ``corners``; ``rest`` is what is left of the fruit."""
 
-    corners: list[str]
-    points: list[list[float]]
+    corners: tuple[str, ...]
+    points: tuple[Point, ...]
     k: int
     total: int
-    rest: list[list[float]]
-    triangulation: list[list[list[float]]]  # after the last slice, every slice's corners' points; else empty
+    rest: tuple[Point, ...]
+    triangulation: tuple[tuple[Point, ...], ...]  # after the last slice, every slice's corners' points; else empty
 
 
 @beat_kind("last-slice")
@@ -228,8 +228,8 @@ class LastSlice(Slice):
 class Good(Beat):
     """Prune and search keeps a good sub-polygon (its points and labels)."""
 
-    points: list[list[float]]
-    labels: list[str]
+    points: tuple[Point, ...]
+    labels: tuple[str, ...]
 
 
 def unprimed(label: str) -> str:
@@ -251,8 +251,8 @@ def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     roles = {unprimed(v): "result" if ear else "rejected"}
     if why is not None and why[1] is not None:
         roles[unprimed(why[1])] = "rejected"
-    yield walk.step(EarTest, caption, call, ret, roles=roles, vertex=v, ear=ear,
-                    triangle=why[0] if why else [], inside=why[1] if why else None)
+    yield walk.call_beat(EarTest, caption, call, ret, roles=roles, vertex=v, ear=ear,
+                         triangle=points_of(why[0]) if why else (), inside=why[1] if why else None)
 
 
 def _ring(walk: Walk) -> tuple[list[str], list]:
@@ -290,9 +290,9 @@ def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     p, m = (show(r) for r in ret.result)
     hole = int("".join(ch for ch in p if ch in "₀₁₂₃₄₅₆₇₈₉").translate(_DIGITS))
     point_of = walk.root_points()
-    yield walk.step(Keyhole, f"Hole {hole}: a keyhole cut from {p} to {m}", call, ret,
-                    roles={p: "result", m: "result"}, hole=hole, corners=[p, m],
-                    points=[point_of[p], point_of[m]])
+    yield walk.call_beat(Keyhole, f"Hole {hole}: a keyhole cut from {p} to {m}", call, ret,
+                         roles={p: "result", m: "result"}, hole=hole, corners=(p, m),
+                         points=(point(point_of[p]), point(point_of[m])))
 
 
 def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -311,8 +311,8 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
             return
         kind = LastSlice
     clipped.append(corners)
-    yield walk.step(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
-                    call, ret, **_slice(corners, labels, points, clipped))
+    yield walk.call_beat(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
+                         call, ret, **_slice(corners, labels, points, clipped))
     if kind is Slice:
         walk.count_claim("slice")  # after its beat: the beat belongs to the slice it cuts
 
@@ -322,23 +322,23 @@ def _slice(corners: list[str], labels: list[str], points: list,
     where = dict(zip(labels, points, strict=True))
     gone = {c[1] for c in clipped[:-1]}
     return {
-        "corners": corners,
-        "points": [where[c] for c in corners],
+        "corners": tuple(corners),
+        "points": points_of(where[c] for c in corners),
         "k": len(clipped),
         "total": len(labels) - 2,
         # what is left of the fruit once this slice is off (empty after the last one)
-        "rest": [where[x] for x in labels if x not in gone | {corners[1]}]
-        if len(clipped) < len(labels) - 2 else [],
-        "triangulation": [[where[c] for c in cut] for cut in clipped]
-        if len(clipped) == len(labels) - 2 else [],
+        "rest": points_of(where[x] for x in labels if x not in gone | {corners[1]})
+        if len(clipped) < len(labels) - 2 else (),
+        "triangulation": tuple(points_of(where[c] for c in cut) for cut in clipped)
+        if len(clipped) == len(labels) - 2 else (),
     }
 
 
 def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     state = walk.entered_after(ret, walk.result_ref(ret))
-    yield walk.step(Good, "A good sub-polygon: one cut edge, about half the vertices; "
-                    "its middle vertex is tested next", call, ret, points=state["points"],
-                    labels=state["labels"])
+    yield walk.call_beat(Good, "A good sub-polygon: one cut edge, about half the vertices; "
+                         "its middle vertex is tested next", call, ret,
+                         points=points_of(state["points"]), labels=tuple(state["labels"]))
 
 
 READS: Mapping[str, Reading] = {

@@ -37,7 +37,7 @@ from metaphors.picture import again, turn_to
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
-from story.states import BallDrop, BallSlide, RubberBand, point
+from story.states import BallDrop, BallSlide, Point, RubberBand, point
 from story.storyboard import Reading, Walk, read_pick, read_step
 from tracing import Event
 
@@ -165,7 +165,7 @@ def snag(board: Board, beat: Snag) -> None:
 class GravityTurn(Beat):
     """Gravity's direction for the piece ``polygon``; the picture turns by ``turn_picture``."""
 
-    down: list[float]  # gravity's direction, a vector
+    down: Point  # gravity's direction, a vector
     tilt: float
     turn_picture: float
     polygon: str
@@ -199,9 +199,9 @@ class Snag(Beat):
 
 def read_turn(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     g = ret.result
-    yield walk.step(GravityTurn, "Turn the polygon so that gravity points down", call, ret,
-                    down=g["down"], tilt=g["tilt"], turn_picture=g["turn_picture"],
-                    polygon=walk.ref(call, "polygon"))
+    yield walk.call_beat(GravityTurn, "Turn the polygon so that gravity points down", call, ret,
+                         down=point(g["down"]), tilt=g["tilt"], turn_picture=g["turn_picture"],
+                         polygon=walk.ref(call, "polygon"))
 
 
 def _hit(walk: Walk, call: Event) -> dict[str, Any]:
@@ -230,7 +230,7 @@ def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                walk.ref(call, "x")]
     band = None if "vertex" in _hit(walk, call) else RubberBand(
         corners=tuple(point(where[c]) for c in corners))
-    yield walk.step(Snag, caption, call, ret, band=band, snagged=snagged)
+    yield walk.call_beat(Snag, caption, call, ret, band=band, snagged=snagged)
 
 
 READS: Mapping[str, Reading] = {

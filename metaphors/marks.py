@@ -97,7 +97,7 @@ def board_spot(board: Board, mark: Mobject, line: Mobject,
         return moved(p) if moved is not None else p
 
     # the outline as drawn, not P: ear clipping's fruit shrinks as its slices go
-    paths = [path for part in board.shape.family_members_with_points()
+    paths = [path for part in board.outline.family_members_with_points()
              for path in part.get_subpaths() if len(path) >= 12]  # a triangle's, at least
     rings = sorted(([end(p) for p in path[:-1:4]] for path in paths),
                    key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)

@@ -24,7 +24,7 @@ from geometry.bridges import bridge_holes
 from geometry.check import is_inner_diagonal
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.holes import PolygonWithHoles
-from geometry.io import read_polygon, read_shape
+from geometry.io import read_any_polygon, read_polygon
 from geometry.polygon import Polygon
 from geometry.prune_search import (
     GoodSubpolygon,
@@ -43,6 +43,7 @@ from metaphors.drawing import (
 from metaphors.figure_caption import figure_caption
 from metaphors.tags import tag
 from metaphors.theme import Theme
+from story.beats import Hole
 from usercode.heuristic import load_user_heuristic, run_heuristic
 
 #: the kinds drawn here, by the name a card's :class:`metaphors.figures.Figure` gives
@@ -234,19 +235,19 @@ def _rule(polygon: Polygon, heuristic: str, box: Box,
 def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
     """P with its holes, each hole's right-most vertex marked and its bridge drawn green to
     the vertex it sees (Eberly's, as the run computes it)."""
-    shape = read_shape(polygon_spec)
-    if not isinstance(shape, PolygonWithHoles):
-        frame = Frame(shape.points, *box)
-        return [tag(polygon_mobject(shape, frame, theme), "idle", "figure:polygon"),
-                tag(vertex_markers(shape, frame, theme), "idle", "figure:vertices"),
+    polygon_read = read_any_polygon(polygon_spec)
+    if not isinstance(polygon_read, PolygonWithHoles):
+        frame = Frame(polygon_read.points, *box)
+        return [tag(polygon_mobject(polygon_read, frame, theme), "idle", "figure:polygon"),
+                tag(vertex_markers(polygon_read, frame, theme), "idle", "figure:vertices"),
                 figure_caption(box, theme, ("no hole: nothing to cut", theme.ink))]
-    starts, pts, labels = shape.starts, shape.points, shape.labels
-    outer = Polygon.from_points(pts[:starts[1]])  # ring 0: labelled as in the shape
-    holes = [{"points": pts[a:b], "labels": labels[a:b]} for a, b in pairwise(starts[1:])]
+    starts, pts, labels = polygon_read.starts, polygon_read.points, polygon_read.labels
+    outer = Polygon.from_points(pts[:starts[1]])  # ring 0: labelled as in the polygon read
+    holes = [Hole(points=pts[a:b], labels=labels[a:b]) for a, b in pairwise(starts[1:])]
     frame = Frame(outer.points, *box)
     drawn: list[Mobject] = [tag(polygon_mobject(outer, frame, theme, holes), "idle",
                                 "figure:polygon")]
-    ring = bridge_holes(shape)
+    ring = bridge_holes(polygon_read)
     drawn += [_line(frame, pts[p], pts[m], theme.result, theme.stroke * 1.6, "result",
                     f"figure:bridge:{labels[p]}–{labels[m]}") for p, m in ring.bridges]
     drawn.append(tag(vertex_markers(outer, frame, theme), "idle", "figure:vertices"))
@@ -256,7 +257,7 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
               for p, _ in ring.bridges]
     cuts = ", ".join(f"{labels[p]}{labels[m]}" for p, m in ring.bridges)
     size = len(ring.walk())
-    words = f"bridges {cuts}: one ring of {size} vertices ({shape.n} + 2 per hole)"
+    words = f"bridges {cuts}: one ring of {size} vertices ({polygon_read.n} + 2 per hole)"
     return [*drawn, figure_caption(box, theme, (words, theme.result))]
 
 

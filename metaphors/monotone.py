@@ -119,7 +119,7 @@ def stack_step(board: Board, beat: StackStep) -> None:
         cut = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.ink,
                            stroke_width=theme.thin_stroke, fill_color=theme.stack,
                            fill_opacity=0.25), None, "triangle")
-        board.keep(f"triangle:{beat.step}", cut)
+        board.keep(f"triangle:{beat.seq}", cut)
         anims.append(Create(cut))
     else:  # a push: the vertex that now waits
         anims.append(Indicate(board.markers[beat.chain[-1]], color=theme.stack))
@@ -219,7 +219,7 @@ def stack(board: Board, beat: Stack) -> None:
     for k, triangle in enumerate(beat.triangles):
         t = tag(MPolygon(*[board.at(p) for p in triangle], color=theme.ink,
                          stroke_width=theme.thin_stroke, fill_opacity=0), None, "triangle")
-        board.keep(f"triangle:{beat.step}:{k}", t)
+        board.keep(f"triangle:{beat.seq}:{k}", t)
         drawn.append(Create(t))
     board.play(beat, *drawn, *board.drop("stack:chain", "stack:column"), run_time=1.0)
     if beat.triangulation:
@@ -235,7 +235,7 @@ def _whole(board: Board, beat: Stack) -> None:
     n = board.polygon.n
     count = tag(text(f"n − 2 = {n} − 2 = {len(whole)} triangles", font=theme.font,
                      size=theme.label_size + 2, colour=theme.result), None, "counter")
-    count.next_to(board.shape, direction=[0, -1, 0], buff=0.3)
+    count.next_to(board.outline, direction=[0, -1, 0], buff=0.3)
     board.keep("triangulation", VGroup(*whole))
     board.keep("counter", count)
     # under its own caption, at full pace: the last piece's words are over
@@ -310,9 +310,9 @@ def _kind_role(kind: str) -> str:
 
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, kind = walk.ref(call, "v"), ret.result
-    yield walk.step(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
-                    key_step=kind in ("split", "merge"), roles={v: _kind_role(kind)},
-                    vertex=v, kind=kind, at=walk.root_points()[v])
+    yield walk.call_beat(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
+                         key_step=kind in ("split", "merge"), roles={v: _kind_role(kind)},
+                         vertex=v, kind=kind, at=walk.root_points()[v])
     walk.count_claim("vertex")  # after its beat: the beat belongs to the vertex it classifies
 
 
@@ -323,16 +323,16 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     handler = walk.stack[-2].name if len(walk.stack) > 1 else ""
     why = (f"the split vertex {u} joins its helper {w}" if handler == "handle_split"
            else f"{u} takes over from the merge vertex {w}")
-    yield walk.step(MonotoneDiagonal, f"Diagonal {u}{w}: {why}", call, ret, key_step=True,
-                    roles={u: "split" if handler == "handle_split" else "called", w: (
+    yield walk.call_beat(MonotoneDiagonal, f"Diagonal {u}{w}: {why}", call, ret, key_step=True,
+                         roles={u: "split" if handler == "handle_split" else "called", w: (
                         "argument" if handler == "handle_split" else "merge")},
-                    labels=[u, w], points=[where[u], where[w]])
+                         labels=[u, w], points=[where[u], where[w]])
 
 
 def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     pieces = [walk.entered_after(call, key) for key in walk.result_refs(ret)]
-    yield walk.step(Pieces, f"The diagonals cut the polygon into {len(pieces)} y-monotone "
-                    "pieces", call, ret, pieces=[p.get("points", []) for p in pieces])
+    yield walk.call_beat(Pieces, f"The diagonals cut the polygon into {len(pieces)} y-monotone "
+                         "pieces", call, ret, pieces=[p.get("points", []) for p in pieces])
 
 
 def _stacked(walk: Walk, indices: list[int]) -> list[str]:
@@ -352,9 +352,9 @@ def read_push(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     where = walk.root_points()
     args = call.args or {}
     chain = _stacked(walk, [*args["stack"], args["u"]])
-    yield walk.step(StackStep, f"{chain[-1]} waits on the stack", call, ret, roles={},
-                    chain=chain, points=[where[v] for v in chain], cut=[], triangle=[],
-                    depth=_depth(walk))
+    yield walk.call_beat(StackStep, f"{chain[-1]} waits on the stack", call, ret, roles={},
+                         chain=chain, points=[where[v] for v in chain], cut=[], triangle=[],
+                         depth=_depth(walk))
 
 
 def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -363,10 +363,10 @@ def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     before = _stacked(walk, (call.args or {})["stack"])
     cut = _stacked(walk, ret.result)
     walk.memo("monotone.cut", list).append(cut)
-    yield walk.step(StackStep, f"Triangle {''.join(cut)} cut off: {before[-1]} leaves",
-                    call, ret, roles={}, chain=before[:-1],
-                    points=[where[v] for v in before[:-1]], cut=cut,
-                    triangle=[where[v] for v in cut], depth=_depth(walk))
+    yield walk.call_beat(StackStep, f"Triangle {''.join(cut)} cut off: {before[-1]} leaves",
+                         call, ret, roles={}, chain=before[:-1],
+                         points=[where[v] for v in before[:-1]], cut=cut,
+                         triangle=[where[v] for v in cut], depth=_depth(walk))
 
 
 def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -379,8 +379,8 @@ def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     n = len(triangles)
     caption = (f"This piece is done: {n} triangle{'s' if n != 1 else ''}" if cut
                else "This piece is a triangle already")
-    yield walk.step(Stack, caption, call, ret, triangles=[] if cut else triangles,
-                    triangulation=list(done) if len(done) == len(labels) - 2 else [])
+    yield walk.call_beat(Stack, caption, call, ret, triangles=[] if cut else triangles,
+                         triangulation=list(done) if len(done) == len(labels) - 2 else [])
     cut.clear()
 
 

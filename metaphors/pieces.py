@@ -53,11 +53,11 @@ def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     pieces = walk.result_refs(ret)
     entered = {target_of(e): state_of(e) for e in walk.log.events[ret.seq:]
                if e.kind == "enter" and e.target in pieces}
-    yield walk.step(Split, "Split along the diagonal into two smaller polygons", call, ret,
-                    pieces=pieces,
-                    parent=walk.ref(call, "piece"),
-                    points=[entered[k]["points"] for k in pieces if k in entered],
-                    labels=[entered[k]["labels"] for k in pieces if k in entered])
+    yield walk.call_beat(Split, "Split along the diagonal into two smaller polygons", call, ret,
+                         pieces=pieces,
+                         parent=walk.ref(call, "piece"),
+                         points=[entered[k]["points"] for k in pieces if k in entered],
+                         labels=[entered[k]["labels"] for k in pieces if k in entered])
 
 
 def _tint_colour(board: Board, labels: list[str], avoid: set[str]) -> str:
@@ -104,8 +104,8 @@ def split(board: Board, beat: Split) -> None:
         board.keep(f"diagonal:{k}", tag(line, "idle", line.name))
         anims.append(line.animate.set_color(theme.ink).set_stroke(width=theme.stroke))
     anims += board.drop("verdict", f"piece:{beat.parent}")
-    if board.shape.get_fill_opacity() > 0:
-        anims.append(board.shape.animate.set_fill(opacity=0))
+    if board.outline.get_fill_opacity() > 0:
+        anims.append(board.outline.animate.set_fill(opacity=0))
     last = all(len(p) == 3 for p in beat.points) and not any(
         key.startswith("piece:") for key in board.objects)
     chosen: set[str] = set()
@@ -213,7 +213,7 @@ def _taken(board: Board) -> list[Area]:
     reaches."""
     panel, theme = board.panel, board.theme
     # the pictures from further off: a box beside a label reads as part of its name
-    taken = [_grown(_area(m), PICTURE_GAP) for m in (board.shape, *board.markers.values())]
+    taken = [_grown(_area(m), PICTURE_GAP) for m in (board.outline, *board.markers.values())]
     taken.append(_area(board.title))
     if panel.shows_polygon:
         taken += [_grown(_area(m), PICTURE_GAP) for m in (panel.outline, *panel.markers.values())]
@@ -267,7 +267,7 @@ def find(board: Board, beat: FindDiagonal) -> None:
         anims = [FadeIn(finder, shift=0.2 * DOWN)]
     else:
         anims = [Indicate(finder[1], color=theme.argument, scale_factor=1.3)]
-    piece = board.objects.get(f"piece:{beat.piece}", board.shape)
+    piece = board.objects.get(f"piece:{beat.piece}", board.outline)
     anims.append(piece.animate.set_fill(theme.called, opacity=theme.active_opacity))
     board.play(beat, *anims, run_time=1.2)
 

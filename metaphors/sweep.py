@@ -135,7 +135,7 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
     theme = board.theme
     if clip is not None:
         start, end = _cut(start, end, clip)
-    parts = split_segment(start, end, outline(board.shape), outline(board.objects.get("T")))
+    parts = split_segment(start, end, outline(board.outline), outline(board.objects.get("T")))
     group = VGroup()
     for p, q in parts["inside"]:
         group.add(tag(Line(_3d(p), _3d(q), color=colour, stroke_width=theme.stroke),
@@ -202,7 +202,7 @@ def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineStri
     labels = shapely.union_all([_box(marker[-1]).buffer(NOTE_GAP, join_style="mitre")
                                 for marker in board.markers.values()])
     left, right = -config.frame_width / 2 + 0.1, METAPHOR.x + METAPHOR.width / 2 + 0.4
-    shapes = [outline(board.shape), outline(board.objects.get("T")), tool.buffer(0.08)]
+    shapes = [outline(board.outline), outline(board.objects.get("T")), tool.buffer(0.08)]
     busy = shapely.union_all([g for g in shapes if g is not None])
 
     def score(spot):
@@ -239,7 +239,7 @@ def _astray_at(board: Board, axis: Line, clip: shapely.Polygon | None,
     """The piece of the tool outside the polygon but inside T that passes through `at`."""
     (x0, y0), (x1, y1) = _tool(axis, clip).coords
     start, end = np.array([x0, y0, 0.0]), np.array([x1, y1, 0.0])
-    parts = split_segment(start, end, outline(board.shape), outline(board.objects.get("T")))
+    parts = split_segment(start, end, outline(board.outline), outline(board.objects.get("T")))
     point = shapely.Point(at[:2])
     for p, q in parts["astray"]:
         if shapely.LineString([p, q]).distance(point) < 1e-3:
@@ -293,8 +293,8 @@ def _long_line(board: Board, through: Point, direction: Point,
     and the box the drawing is cut to: the polygon's bounding box grown by a margin, so the line
     never leaves the metaphor's half of the screen."""
     margin = 0.35
-    lo = board.shape.get_corner(np.array([-1, -1, 0]))[:2] - margin
-    hi = board.shape.get_corner(np.array([1, 1, 0]))[:2] + margin
+    lo = board.outline.get_corner(np.array([-1, -1, 0]))[:2] - margin
+    hi = board.outline.get_corner(np.array([1, 1, 0]))[:2] + margin
     origin = board.at(through)[:2]
     ahead = board.at((through[0] + direction[0], through[1] + direction[1]))[:2] - origin
     ahead = ahead / np.linalg.norm(ahead)

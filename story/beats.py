@@ -1,6 +1,6 @@
 """Beats: what each moment of a video shows, as typed plain data.
 
-A beat has what every moment has — its caption, the step of the log it comes from, the call
+A beat has what every moment has — its caption, the seq of the log event it comes from, the call
 line, the line of the shown code lit and the row of the pseudocode lit, the roles of the
 objects (called, argument, result, rejected, idle) and its pace — and the fields of its own
 kind: a water beat the states of the growing disk, a verdict whether the claim holds and the
@@ -9,7 +9,7 @@ snapshots and a scene's paces read it). This module has the kinds every run shar
 heuristics' frame, the claim and its verdict, notes, and the generic beats of a heuristic of
 one's own); a metaphor module declares its own kinds beside the performers that play them.
 
->>> beat = Pick(caption="B is the left-most vertex", step=3, vertex="B")
+>>> beat = Pick(caption="B is the left-most vertex", seq=3, vertex="B")
 >>> beat.action, beat.to_dict()["data"]
 ('pick', {'vertex': 'B'})
 >>> from dataclasses import replace
@@ -19,12 +19,46 @@ one's own); a metaphor module declares its own kinds beside the performers that 
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field, fields
 from typing import Any, ClassVar, TypeVar, dataclass_transform
 
+#: a point in polygon coordinates, as the log holds it
+Point = tuple[float, float]
+
+
+def point(p: Sequence[float]) -> Point:
+    """``p`` (a log's list) as a record's point, its numbers unchanged."""
+    x, y = p
+    return (x, y)
+
+
+def points_of(ps: Iterable[Sequence[float]]) -> tuple[Point, ...]:
+    """A log's list of points as a record's."""
+    return tuple(point(p) for p in ps)
+
+
+def segment(ps: Sequence[Sequence[float]]) -> tuple[Point, Point]:
+    """A log's two end points (a diagonal's, an edge's) as a record's."""
+    a, b = ps
+    return point(a), point(b)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Hole:
+    """A hole of the polygon: its ring's ``points`` (clockwise) and ``labels``."""
+
+    points: tuple[Point, ...]
+    labels: tuple[str, ...]
+
+    @classmethod
+    def of(cls, hole: dict[str, Any]) -> Hole:
+        """The hole as the log holds it (``{"points": …, "labels": …}``)."""
+        return cls(points=points_of(hole["points"]), labels=tuple(hole["labels"]))
+
+
 #: the fields every beat has; the others are its kind's ``data``
-COMMON = ("caption", "step", "call", "line", "row", "roles", "pace")
+COMMON = ("caption", "seq", "call", "line", "row", "roles", "pace")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -33,7 +67,7 @@ class Beat:
 
     action: ClassVar[str] = "note"
     caption: str
-    step: int
+    seq: int
     call: str | None = None
     line: int | None = None
     #: the index of the pseudocode row lit (:func:`story.pseudocode.lit_row`); None: none yet
@@ -47,7 +81,7 @@ class Beat:
         return {f.name: getattr(self, f.name) for f in fields(self) if f.name not in COMMON}
 
     def to_dict(self) -> dict[str, Any]:
-        return {"action": self.action, "caption": self.caption, "step": self.step,
+        return {"action": self.action, "caption": self.caption, "seq": self.seq,
                 "call": self.call, "line": self.line, "row": self.row, "roles": self.roles,
                 "data": self.data, "pace": self.pace}
 
@@ -71,12 +105,12 @@ def beat_kind(action: str) -> Callable[[type[B]], type[B]]:
 
 @beat_kind("polygon")
 class ShowPolygon(Beat):
-    """The polygon appears: its points and labels (the outer ring's), and its holes (each
-    ``{"points": …, "labels": …}``; none for a simple polygon)."""
+    """The polygon appears: its points and labels (the outer ring's), and its holes (none
+    for a simple polygon)."""
 
-    points: list[list[float]]
-    labels: list[str]
-    holes: list[dict[str, Any]] = field(default_factory=list)
+    points: tuple[Point, ...]
+    labels: tuple[str, ...]
+    holes: tuple[Hole, ...] = ()
 
 
 @beat_kind("pick")
@@ -90,23 +124,23 @@ class Pick(Beat):
 class ShowTriangle(Beat):
     """T = ABC, the triangle of the heuristics' frame."""
 
-    points: list[list[float]]
-    labels: list[str]
+    points: tuple[Point, ...]
+    labels: tuple[str, ...]
 
 
 @beat_kind("candidates")
 class Candidates(Beat):
     """The vertices inside T."""
 
-    candidates: list[str]
+    candidates: tuple[str, ...]
 
 
 @beat_kind("claim")
 class Claim(Beat):
     """A heuristic claims the diagonal between two labels."""
 
-    labels: list[str]
-    points: list[list[float]]
+    labels: tuple[str, str]
+    points: tuple[Point, Point]
 
 
 @beat_kind("verdict")
@@ -114,11 +148,11 @@ class Verdict(Beat):
     """The claim judged exactly: ``ok``, or why not — the crossed ``edge`` and ``point``."""
 
     ok: bool
-    labels: list[str]
+    labels: tuple[str, str]
     why: str
     code: str
-    point: list[float] | None = None
-    edge: list[str] | None = None
+    point: Point | None = None
+    edge: tuple[str, str] | None = None
 
 
 @beat_kind("find")

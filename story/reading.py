@@ -68,10 +68,10 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
     its own caption (a summary of one step says less than the step).
 
     >>> from story.beats import Note
-    >>> beats = [Note(caption=f"step {k}", step=k) for k in range(6)]
+    >>> beats = [Note(caption=f"step {k}", seq=k) for k in range(6)]
     >>> [b.caption for b in summarised(beats, [0, 1, 1, 2, 2, 3], 1, "diagonal")]
     ['step 0', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'Diagonals 2–3: the same steps, faster', 'step 5']
-    >>> beats = [Note(caption=f"step {k}", step=k) for k in range(8)]
+    >>> beats = [Note(caption=f"step {k}", seq=k) for k in range(8)]
     >>> [b.caption for b in summarised(beats, [0, 1, 1, 2, 3, 3, 4, 5], 1, "vertex",
     ...                                [False, False, False, True, False, False, False, False])]
     ['step 0', 'Vertex 2: the same steps, faster', 'Vertex 2: the same steps, faster', 'step 3', 'Vertices 4–5: the same steps, faster', 'Vertices 4–5: the same steps, faster', 'Vertices 4–5: the same steps, faster', 'step 7']
@@ -125,7 +125,7 @@ def frame_key(beats: Sequence[Beat]) -> tuple[tuple[Any, ...], tuple[Any, ...], 
     candidates; None if the run shows no frame. Two runs with the same key show the viewer
     the same frame.
 
-    >>> frame_key([Candidates(caption="c", step=1, candidates=["D", "E"])])
+    >>> frame_key([Candidates(caption="c", seq=1, candidates=("D", "E"))])
     ((), (), ('D', 'E'))
     """
     polygon: tuple[Any, ...] = ()
@@ -146,10 +146,10 @@ def frame_summarised(beats: Sequence[Beat]) -> list[Beat]:
     short caption; later frames keep theirs.
 
     >>> from story.beats import Note
-    >>> beats = [Pick(caption="B is the left-most vertex", step=1, vertex="B"),
-    ...          Candidates(caption="Candidates inside T: D, E", step=2, candidates=["D", "E"]),
-    ...          Note(caption="on", step=3),
-    ...          Candidates(caption="Candidates inside T: F", step=4, candidates=["F"])]
+    >>> beats = [Pick(caption="B is the left-most vertex", seq=1, vertex="B"),
+    ...          Candidates(caption="Candidates inside T: D, E", seq=2, candidates=("D", "E")),
+    ...          Note(caption="on", seq=3),
+    ...          Candidates(caption="Candidates inside T: F", seq=4, candidates=("F",))]
     >>> [b.caption for b in frame_summarised(beats)]
     ['The frame as before: candidates D, E', 'The frame as before: candidates D, E', 'on', 'Candidates inside T: F']
     """

@@ -16,7 +16,7 @@ import tracing
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.holes import PolygonWithHoles
-from geometry.io import AnyPolygon, read_shape
+from geometry.io import AnyPolygon, read_any_polygon
 from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from geometry.triangulate import refuse_holes, triangulate
@@ -27,38 +27,38 @@ from usercode.heuristic import UserHeuristic, diagonal_rule, load_user_heuristic
 from usercode.loading import is_user_spec
 
 
-def fit_for(algorithm: str, shape: AnyPolygon) -> AnyPolygon:
-    """``shape`` if ``algorithm`` can run on it: the one rule for a polygon handed to a run.
+def fit_for(algorithm: str, polygon_read: AnyPolygon) -> AnyPolygon:
+    """``polygon_read`` if ``algorithm`` can run on it: the one rule for a polygon handed to a run.
     Only :data:`geometry.triangulate.HOLE_ALGORITHMS` take holes; the heuristics, the other
     triangulations and a heuristic of one's own refuse them in one line.
 
-    >>> fit_for("scaling", read_shape("keyhole"))
+    >>> fit_for("scaling", read_any_polygon("keyhole"))
     Traceback (most recent call last):
     ...
     geometry.errors.HolesNotSupportedError: scaling needs a simple polygon and this one has 2 holes; ear-clipping, monotone and cdt triangulate polygons with holes
-    >>> fit_for("monotone", read_shape("keyhole")).hole_count
+    >>> fit_for("monotone", read_any_polygon("keyhole")).hole_count
     2
     """
-    refuse_holes(shape, algorithm)
-    return shape
+    refuse_holes(polygon_read, algorithm)
+    return polygon_read
 
 
 def read_for(algorithm: str, polygon: str) -> AnyPolygon:
     """The polygon file or sample ``polygon``, read as a run of ``algorithm`` takes it
     (:func:`fit_for`). Raises :class:`geometry.errors.GeometryError` (one line)."""
-    return fit_for(algorithm, read_shape(polygon))
+    return fit_for(algorithm, read_any_polygon(polygon))
 
 
 def run_logged(algorithm: str, polygon: str, heuristic: str | None = None,
-               shape: AnyPolygon | None = None) -> tracing.Log:
+               polygon_read: AnyPolygon | None = None) -> tracing.Log:
     """Run a heuristic (by name, or ``file.py:function`` of one's own) or a triangulation algorithm
-    on a polygon file or sample (with holes, for the algorithms that take them). ``shape``, if
+    on a polygon file or sample (with holes, for the algorithms that take them). ``polygon_read``, if
     given, is that polygon read already (:func:`read_for`): it is not read again."""
     own = load_user_heuristic(algorithm) if is_user_spec(algorithm) else None  # a bad spec first
-    shape = read_for(algorithm, polygon) if shape is None else fit_for(algorithm, shape)
+    polygon_read = read_for(algorithm, polygon) if polygon_read is None else fit_for(algorithm, polygon_read)
     if own is not None:
-        return record_user_run(own, cast(Polygon, shape), polygon)  # fit_for refused holes
-    return record_run(algorithm, shape, polygon, heuristic)
+        return record_user_run(own, cast(Polygon, polygon_read), polygon)  # fit_for refused holes
+    return record_run(algorithm, polygon_read, polygon, heuristic)
 
 
 def record_run(algorithm: str, p: Polygon | PolygonWithHoles, polygon: str,

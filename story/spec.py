@@ -17,7 +17,7 @@ RunSpec(algorithm='scaling', polygon='counterexample-twin', heuristic=None, save
 'run.json'
 
 A polygon is read once, by one rule (:func:`story.runs.read_for`: holes only for the
-algorithms that take them): :meth:`RunSpec.read` keeps the polygon read (``shape``) in the
+algorithms that take them): :meth:`RunSpec.read` keeps the polygon read (``polygon_read``) in the
 spec, and a scene handed that spec plays it without reading the file again. ``trex`` reads
 and checks the polygon that way before anything renders, then hands the scene the spec.
 
@@ -25,7 +25,7 @@ and checks the polygon that way before anything renders, then hands the scene th
 Traceback (most recent call last):
 ...
 geometry.errors.HolesNotSupportedError: scaling needs a simple polygon and this one has 2 holes; ear-clipping, monotone and cdt triangulate polygons with holes
->>> RunSpec("monotone", "keyhole").read().shape.hole_count
+>>> RunSpec("monotone", "keyhole").read().polygon_read.hole_count
 2
 """
 
@@ -34,7 +34,7 @@ from __future__ import annotations
 from dataclasses import KW_ONLY, dataclass, field, replace
 
 import tracing
-from geometry.io import AnyPolygon, read_shape
+from geometry.io import AnyPolygon, read_any_polygon
 from story.runs import fit_for, run_logged, saved_log
 
 __all__ = ["RunSpec"]
@@ -54,7 +54,7 @@ class RunSpec:
         Divide and conquer's heuristic (None: gravity); other algorithms take none.
     saved : str or None
         The path of a saved log (``trex log`` writes them) to replay instead of running.
-    shape : Polygon, PolygonWithHoles or None
+    polygon_read : Polygon, PolygonWithHoles or None
         ``polygon`` as read and checked (:meth:`read`); None: not read yet, the run reads it.
         Not compared: it is what ``polygon`` names.
 
@@ -66,29 +66,29 @@ class RunSpec:
     _: KW_ONLY
     heuristic: str | None = None
     saved: str | None = None
-    shape: AnyPolygon | None = field(default=None, repr=False, compare=False)
+    polygon_read: AnyPolygon | None = field(default=None, repr=False, compare=False)
 
     def log(self) -> tracing.Log:
-        """The log of this run: the saved one if given, else a live run (on ``shape`` when the
+        """The log of this run: the saved one if given, else a live run (on ``polygon_read`` when the
         polygon was read already)."""
         if self.saved:
             return saved_log(self.saved)
-        return run_logged(self.algorithm, self.polygon, self.heuristic, self.shape)
+        return run_logged(self.algorithm, self.polygon, self.heuristic, self.polygon_read)
 
-    def read(self, shape: AnyPolygon | None = None) -> RunSpec:
-        """This run with its polygon read: ``shape`` (``polygon`` read already, as ``trex``
+    def read(self, polygon_read: AnyPolygon | None = None) -> RunSpec:
+        """This run with its polygon read: ``polygon_read`` (``polygon`` read already, as ``trex``
         reads every polygon argument) or read now, and checked by the one rule
         (:func:`story.runs.fit_for`). A replay reads nothing: it comes back as it is.
         Raises :class:`geometry.errors.GeometryError` (or OSError, ValueError) in one line."""
         if self.saved:
             return self
-        shape = read_shape(self.polygon) if shape is None else shape
-        return replace(self, shape=fit_for(self.algorithm, shape))
+        polygon_read = read_any_polygon(self.polygon) if polygon_read is None else polygon_read
+        return replace(self, polygon_read=fit_for(self.algorithm, polygon_read))
 
     def on(self, polygon: str) -> RunSpec:
         """The same run, live on another polygon (a saved log no longer applies)."""
-        return replace(self, polygon=polygon, saved=None, shape=None)
+        return replace(self, polygon=polygon, saved=None, polygon_read=None)
 
     def replaying(self, saved: str) -> RunSpec:
         """The same run, replayed from the saved log at ``saved``."""
-        return replace(self, saved=saved, shape=None)
+        return replace(self, saved=saved, polygon_read=None)

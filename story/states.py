@@ -31,16 +31,8 @@ from dataclasses import dataclass
 from typing import TypeVar
 
 from story.beats import Beat
-
-#: a point in polygon coordinates, as the log holds it
-Point = tuple[float, float]
-
-
-def point(p: Sequence[float]) -> Point:
-    """``p`` (a log's list) as a record's point, its numbers unchanged."""
-    x, y = p
-    return (x, y)
-
+from story.beats import Point as Point  # re-exported: the metaphors' records use it
+from story.beats import point as point
 
 # --- the moving tools -----------------------------------------------------------------------------
 

@@ -39,12 +39,16 @@ from story.beats import (
     Candidates,
     Claim,
     FindDiagonal,
+    Hole,
     Note,
     Pick,
     ShapeChange,
     ShowPolygon,
     ShowTriangle,
     Verdict,
+    point,
+    points_of,
+    segment,
 )
 from story.pseudocode import PseudocodeRow, from_json, lit_row, named
 from story.reach import Reach, reach_of
@@ -274,7 +278,7 @@ class Walk:
         """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk.
         A key step (``key_step``: a split or merge vertex and its diagonal) plays at full pace under its
         own caption however many claims came before: fast-forwarding never hides it."""
-        beat = beat_type(caption=caption, step=event.seq, line=self.code_line(event),
+        beat = beat_type(caption=caption, seq=event.seq, line=self.code_line(event),
                          row=self.pseudocode_row(event), pace=1.0 if key_step else self.pace(),
                          **fields)
         self.counted[id(beat)] = self.claims
@@ -283,8 +287,8 @@ class Walk:
             self.kept.add(id(beat))
         return beat
 
-    def step(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
-             key_step: bool = False, **fields: Any) -> Beat:
+    def call_beat(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
+                  key_step: bool = False, **fields: Any) -> Beat:
         """The beat of a returned call: its call line, and the call's roles unless ``fields``
         give others (``key_step``: as :meth:`beat`)."""
         fields.setdefault("roles", call_roles(call, ret))
@@ -432,8 +436,9 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
     if e.kind == "enter" and state_of(e).get("kind") == "polygon" and is_polygon_key(e.target):
         if not walk.shown_polygon:
             walk.shown_polygon = True
-            yield walk.beat(ShowPolygon, "The polygon", e, points=state_of(e)["points"],
-                            labels=state_of(e)["labels"], holes=state_of(e).get("holes", []))
+            yield walk.beat(ShowPolygon, "The polygon", e, points=points_of(state_of(e)["points"]),
+                            labels=tuple(state_of(e)["labels"]),
+                            holes=tuple(Hole.of(h) for h in state_of(e).get("holes", [])))
         return
     if e.kind == "call" and "polygon" in (e.args or {}) and walk.is_heuristic(e.name):
         if walk.black_box and not walk.heuristic_polygon:  # asked once, not again inside
@@ -448,7 +453,7 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
         corners = state_of(e)["labels"]  # the run's own: a piece keeps its parent's labels
         middle = corners[1] if len(corners) == 3 else "B"
         yield walk.beat(ShowTriangle, f"T = {''.join(corners)}: {middle} and its two neighbours", e,
-                        points=state_of(e)["points"], labels=state_of(e)["labels"])
+                        points=points_of(state_of(e)["points"]), labels=tuple(corners))
         return
     if e.kind == "return":
         call = walk.log.events[call_of(e)]
@@ -475,10 +480,10 @@ def read_pick(caption: str, none_caption: str | None = None) -> Reading:
     def read(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         if ret.result is None:
             if none_caption:
-                yield walk.step(Note, none_caption, call, ret)
+                yield walk.call_beat(Note, none_caption, call, ret)
             return
         vertex = show(ret.result)
-        yield walk.step(Pick, caption.format(result=vertex), call, ret, vertex=vertex)
+        yield walk.call_beat(Pick, caption.format(result=vertex), call, ret, vertex=vertex)
 
     return read
 
@@ -487,7 +492,7 @@ def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     found = [show(v) for v in ret.result or []]
     caption = (f"Candidates inside T: {', '.join(found)}" if found
                else f"No vertex inside T: {_outer_corners(walk, call)} is an inner diagonal")
-    yield walk.step(Candidates, caption, call, ret, candidates=found)
+    yield walk.call_beat(Candidates, caption, call, ret, candidates=tuple(found))
 
 
 def _outer_corners(walk: Walk, call: Event) -> str:
@@ -504,9 +509,9 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     state = walk.live.get(key) or walk.entered_after(ret, key)
     u, v = state["labels"]
     name = f"{u}{v}"
-    yield walk.step(Claim, f"Claim: {name} is an inner diagonal", call, ret,
-                    roles={u: "result", v: "result"},
-                    labels=[u, v], points=state["points"])
+    yield walk.call_beat(Claim, f"Claim: {name} is an inner diagonal", call, ret,
+                         roles={u: "result", v: "result"},
+                         labels=(u, v), points=segment(state["points"]))
     polygon = _claim_polygon(walk)
     if polygon is None:
         walk.count_claim()
@@ -517,10 +522,11 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     caption = f"✓ {name} is an inner diagonal" if verdict else (
         f"✗ {name} is not an inner diagonal: {why_not_inner(verdict, polygon.labels, name)}")
     roles = {u: "result", v: "result"} if verdict else {u: "rejected", v: "rejected"}
-    yield walk.beat(Verdict, caption, call, roles=roles, ok=verdict.ok, labels=[u, v],
+    yield walk.beat(Verdict, caption, call, roles=roles, ok=verdict.ok, labels=(u, v),
                     why=verdict.why, code=verdict.code,
-                    point=list(verdict.point) if verdict.point else None,
-                    edge=[polygon.labels[k] for k in verdict.edge] if verdict.edge else None)
+                    point=point(verdict.point) if verdict.point else None,
+                    edge=(polygon.labels[verdict.edge[0]], polygon.labels[verdict.edge[1]])
+                    if verdict.edge else None)
     walk.count_claim()  # after its verdict: the verdict belongs to the claim it judges
 
 
@@ -550,8 +556,8 @@ def read_step(kind: type[Beat], caption: str,
 
     def read(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         result = show(ret.result)
-        yield walk.step(kind, caption.format(result=result), call, ret, result=result,
-                        **fields(walk, call, ret))
+        yield walk.call_beat(kind, caption.format(result=result), call, ret, result=result,
+                             **fields(walk, call, ret))
 
     return read
 

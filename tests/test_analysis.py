@@ -49,7 +49,7 @@ def test_a_wrong_heuristics_sweep_leaves_the_polygon_inside_t(wrong):
     seen = moment(wrong, "counterexample")
     points, t = seen.points, seen.triangle
     astray = seen.motion.astray(points)
-    assert seen.motion.reached == "D" and seen.verdict.edge == ["E", "A"]
+    assert seen.motion.reached == "D" and seen.verdict.edge == ("E", "A")
     assert astray.area > 0.05  # a visible part, not a sliver
     assert lies_inside(astray, t) and shape(points).intersection(astray).area < 1e-6
     # the part outside P holds the stretch of BD beyond the crossed edge, next to D
@@ -90,7 +90,7 @@ def test_the_corrections_regions_lie_inside_every_polygon(polygon):
 def test_gravitys_band_sweeps_inside_the_polygon():
     seen = moment("gravity", "gravity-snag")
     band = seen.band
-    assert seen.claim.labels == ["C", "H"] and band.y is not None
+    assert seen.claim.labels == ("C", "H") and band.y is not None
     assert 0 < band.snag_time < 1
     for t in (0.25, band.snag_time, 0.75, 1.0):
         assert lies_inside(band.swept(t), seen.points)

@@ -114,7 +114,7 @@ def test_unexpected_read_errors_become_one_line(monkeypatch):
     def explode(arg):
         raise ValueError("shapely said no\nand more")
 
-    monkeypatch.setattr("trex.inputs.read_shape", explode)
+    monkeypatch.setattr("trex.inputs.read_any_polygon", explode)
     result = invoke("check", "square")
     assert result.exit_code == 2
     assert result.stderr == "error: square: shapely said no\n"

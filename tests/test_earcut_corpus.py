@@ -20,7 +20,7 @@ import pytest
 import shapely
 
 from geometry.errors import HoleError, InputFormatError, SelfIntersectionError, TooFewPointsError
-from geometry.io import read_polygon, read_rings, read_shape
+from geometry.io import read_any_polygon, read_polygon, read_rings
 from geometry.triangulate import triangulate
 
 EARCUT = Path(__file__).parent / "data" / "earcut"
@@ -195,12 +195,12 @@ def test_whole_file_verdict(name):
     assert len(read_rings(fixture(name))) == holes + 1
     verdict = WHOLE[name]
     if verdict is OK:
-        shape = read_shape(fixture(name))
+        shape = read_any_polygon(fixture(name))
         assert shape.hole_count == holes
         return
     error, fragment = verdict
     with pytest.raises(error) as info:
-        read_shape(fixture(name))
+        read_any_polygon(fixture(name))
     assert fragment in str(info.value)
     assert "\n" not in str(info.value)
 
@@ -249,7 +249,7 @@ def test_shapely_agrees(name):
 @pytest.mark.parametrize("name", sorted(NOT_POLYGONS))
 def test_not_polygons_are_refused_in_one_line(name):
     with pytest.raises(InputFormatError) as info:
-        read_shape(fixture(name))
+        read_any_polygon(fixture(name))
     assert "\n" not in str(info.value)
 
 
@@ -261,7 +261,7 @@ SMALL_VALID = sorted(n for n, v in WHOLE.items() if v is OK
 
 @pytest.mark.parametrize("name", SMALL_VALID)
 def test_our_count_is_n_plus_2h_minus_2_and_never_below_earcuts(name):
-    shape = read_shape(fixture(name))
+    shape = read_any_polygon(fixture(name))
     earcut = json.loads(fixture("expected-by-earcut").read_text())["triangles"][name]
     triangles = triangulate(shape, "ear-clipping").triangles
     assert len(triangles) == shape.n + 2 * shape.hole_count - 2 >= earcut

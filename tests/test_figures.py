@@ -181,9 +181,9 @@ def test_every_bridge_joins_a_holes_rightmost_vertex_to_a_vertex_it_sees():
     from shapely.geometry import LineString
     from shapely.geometry import Polygon as Region
 
-    from geometry.io import read_shape
+    from geometry.io import read_any_polygon
 
-    shape = read_shape("keyhole")
+    shape = read_any_polygon("keyhole")
     rings = [shape.points[a:b] for a, b in zip(shape.starts, shape.starts[1:], strict=False)]
     region = Region(rings[0], rings[1:])
     # the outer ring drawn on its own keeps the shape's labels, which the bridges name

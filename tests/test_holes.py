@@ -22,7 +22,7 @@ from geometry.check import verify_triangulation
 from geometry.errors import HoleError, HolesNotSupportedError, PolygonError
 from geometry.hole_samples import swiss_cheese
 from geometry.holes import PolygonWithHoles, hole_label
-from geometry.io import read_shape
+from geometry.io import read_any_polygon
 from geometry.predicates import orient
 from geometry.triangulate import ALGORITHMS, HOLE_ALGORITHMS, triangulate
 from tests.strategies import generated_polygons
@@ -74,7 +74,7 @@ def test_source_indexes_the_rings_concatenated():
 
 @pytest.mark.parametrize("name", ["two-holes.json", "hole.wkt"])
 def test_files_with_holes(name):
-    shape = read_shape(DATA / "holes" / name)
+    shape = read_any_polygon(DATA / "holes" / name)
     assert shape.hole_count == {"two-holes.json": 2, "hole.wkt": 1}[name]
 
 
@@ -84,7 +84,7 @@ def test_geojson_feature_with_interior_rings(tmp_path):
         [[6, 6], [8, 6], [8, 8], [6, 6]]]}}
     path = tmp_path / "p.geojson"
     path.write_text(json.dumps(doc))
-    shape = read_shape(path)
+    shape = read_any_polygon(path)
     assert (shape.n, shape.hole_count) == (10, 2)
     assert triangulated(shape, "ear-clipping").triangles
 
@@ -138,12 +138,12 @@ def test_validating_many_holes_is_exact_about_a_near_touch():
 @pytest.mark.parametrize("algorithm", HOLE_ALGORITHMS)
 @pytest.mark.parametrize("name", VALID_WITH_HOLES)
 def test_every_valid_earcut_fixture_with_holes(name, algorithm):
-    triangulated(read_shape(fixture(name)), algorithm)
+    triangulated(read_any_polygon(fixture(name)), algorithm)
 
 
 @pytest.mark.parametrize("name", VALID_WITH_HOLES)
 def test_bridges_found_by_eberly_need_no_search(name):
-    ring = bridge_holes(read_shape(fixture(name)))
+    ring = bridge_holes(read_any_polygon(fixture(name)))
     assert len(ring.bridges) == TABLE[name][0]
     assert ring.fallbacks == 0
     assert len(ring.walk()) == ring.size == len(ring.points)
@@ -245,7 +245,7 @@ def test_holes_go_right_most_first():
 
 @pytest.mark.parametrize("algorithm", sorted(set(ALGORITHMS) - set(HOLE_ALGORITHMS)))
 def test_simple_polygon_algorithms_refuse_holes(algorithm):
-    shape = read_shape(DATA / "holes" / "two-holes.json")
+    shape = read_any_polygon(DATA / "holes" / "two-holes.json")
     with pytest.raises(HolesNotSupportedError) as info:
         triangulate(shape, algorithm)
     assert str(info.value) == (
@@ -348,7 +348,7 @@ def test_generated_cheese_triangulates(vertices, holes, seed):
 
 
 def test_simple_polygons_are_untouched_by_holes_support():
-    shape = read_shape("counterexample")
+    shape = read_any_polygon("counterexample")
     assert shape.hole_count == 0 and type(shape).__name__ == "Polygon"
     assert triangulate(shape, "ear-clipping").triangles == [(0, 1, 4), (1, 2, 4), (2, 3, 4)]
 
@@ -359,7 +359,7 @@ def test_simple_polygons_are_untouched_by_holes_support():
 def test_monotone_sweep_meets_each_hole_at_a_split_and_a_merge_vertex():
     from geometry.monotone import Sweep, classify_vertex
 
-    shape = read_shape("keyhole")
+    shape = read_any_polygon("keyhole")
     sweep = Sweep(shape)
     kinds = {shape.labels[i]: classify_vertex(sweep, shape.vertex(i)) for i in range(shape.n)}
     for hole in range(1, shape.hole_count + 1):
@@ -375,7 +375,7 @@ def test_ear_clipping_log_has_keyholes_and_every_slice():
     from story.runs import run_logged
 
     log = run_logged("ear-clipping", "keyhole")
-    shape = read_shape("keyhole")
+    shape = read_any_polygon("keyhole")
     joins = [e for e in log.events if e.kind == "return" and e.name == "join_hole"]
     assert len(joins) == shape.hole_count
     ring = next(e.state for e in log.events if e.kind == "enter" and e.target == "keyhole")
@@ -384,7 +384,7 @@ def test_ear_clipping_log_has_keyholes_and_every_slice():
     assert [b.hole for b in beats if isinstance(b, Keyhole)] == [2, 1]  # right-most first
     slices = [b for b in beats if isinstance(b, Slice)]
     assert len(slices) == shape.n + 2 * shape.hole_count - 2
-    assert isinstance(slices[-1], LastSlice) and slices[-1].rest == []
+    assert isinstance(slices[-1], LastSlice) and slices[-1].rest == ()
     assert log.meta["pseudocode"][0][1] == ["join_hole"]
 
 

@@ -122,7 +122,7 @@ def test_the_storyboard_judges_its_claims_on_each_piece(mine):
     beats = storyboard(log)
     verdicts = [b for b in beats if b.action == "verdict"]
     assert len(verdicts) == 1 and not verdicts[0].ok
-    assert verdicts[0].edge == ["C", "D"]
+    assert verdicts[0].edge == ("C", "D")
     rows = [b.row for b in beats if b.action in ("claim", "verdict")]
     assert rows == [1, 1]  # "else find an inner diagonal d of P"
     right = storyboard(RunSpec("divide-and-conquer", "lecture",

@@ -43,7 +43,7 @@ def assert_plays_the_holes(cls: type, polygon: Path) -> None:
     """``cls`` was handed the polygon read, and plays it with the file gone."""
     polygon.unlink()
     spec = cls.spec
-    assert spec.polygon == str(polygon) and spec.shape.hole_count == 2
+    assert spec.polygon == str(polygon) and spec.polygon_read.hole_count == 2
     log = spec.log()  # reads no file: it is gone
     assert log.meta["polygon"] == str(polygon)
     assert log.meta["algorithm"] == "monotone" and "pseudocode" in log.meta  # the holes' rows
@@ -52,7 +52,7 @@ def assert_plays_the_holes(cls: type, polygon: Path) -> None:
 def test_a_spec_read_once_plays_without_its_file(holed):
     spec = RunSpec("monotone", str(holed)).read()
     holed.unlink()
-    assert spec.shape.hole_count == 2
+    assert spec.polygon_read.hole_count == 2
     assert spec.log().meta["polygon"] == str(holed)
 
 
@@ -152,14 +152,14 @@ def test_log_takes_a_polygon_with_holes(holed, tmp_path):
 
 
 def test_scene_run_is_the_scenes_run_on_the_polygon_read(tmp_path):
-    from geometry.io import read_shape
+    from geometry.io import read_any_polygon
     from scenes.divide_and_conquer import DivideAndConquer
     from scenes.scaling import Scaling
     from trex.render_command import run_once, scene_run
 
     path = tmp_path / "star.json"
     path.write_text("[[0, 0], [4, 1], [8, 0], [7, 4], [8, 8], [4, 7], [0, 8], [1, 4]]")
-    spec = scene_run(Scaling, str(path), read_shape(path))
+    spec = scene_run(Scaling, str(path), read_any_polygon(path))
     path.unlink()  # the run reads no file: it plays the shape handed
     assert (spec.algorithm, spec.heuristic) == ("scaling", None)
     assert run_once(spec).meta["polygon"] == str(path)
@@ -172,15 +172,15 @@ def test_a_chapter_is_checked_on_the_polygon_the_command_read(tmp_path, capsys):
     polygon it rejects is one line and exit 2, naming the polygon."""
     import click
 
-    from geometry.io import read_shape
+    from geometry.io import read_any_polygon
     from trex.chapters import check_chapters, pick_chapters
 
     path = tmp_path / "triangle.json"
     path.write_text("[[0, 0], [4, 0], [0, 4]]")
-    shape = read_shape(path)
+    shape = read_any_polygon(path)
     path.unlink()
     with pytest.raises(click.exceptions.Exit) as stopped:
         check_chapters(pick_chapters("scaling", None), str(path), shape)
     assert stopped.value.exit_code == 2
     assert capsys.readouterr().err == f"error: {path}: a triangle has no diagonal\n"
-    check_chapters(pick_chapters("scaling", None), "counterexample", read_shape("counterexample"))
+    check_chapters(pick_chapters("scaling", None), "counterexample", read_any_polygon("counterexample"))

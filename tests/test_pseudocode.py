@@ -49,9 +49,9 @@ def assert_rows_follow_calls(log: tracing.Log, beats, rows: tuple[PseudocodeRow,
         elif e.kind == "return":
             running.pop()
     for beat in beats:
-        names_, before = at[beat.step]
+        names_, before = at[beat.seq]
         inner = next((n for n in reversed(names_) if n in covered), None)
-        where = f"{beat.action} at step {beat.step} ({beat.caption!r})"
+        where = f"{beat.action} at event {beat.seq} ({beat.caption!r})"
         if inner is not None:
             assert beat.row is not None and inner in rows[beat.row].calls, where
         elif before & covered:

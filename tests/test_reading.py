@@ -48,7 +48,7 @@ def test_the_counterexample_scene_says_as_before_only_of_frames_it_showed():
 
 @pytest.mark.parametrize("failing_at", [2, 4])
 def test_a_failing_verdict_keeps_its_caption(failing_at):
-    verdicts = [Verdict(caption=f"verdict {k}", step=k, ok=k != failing_at, labels=["B", "D"],
+    verdicts = [Verdict(caption=f"verdict {k}", seq=k, ok=k != failing_at, labels=("B", "D"),
                         why="", code="")
                 for k in range(6)]
     shown = summarised(verdicts, list(range(6)), 1, "diagonal")  # verdict k made at k claims

@@ -35,7 +35,7 @@ from manim import Scene, tempconfig
 
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
-from geometry.io import read_polygon, read_shape
+from geometry.io import read_any_polygon, read_polygon
 from metaphors.pseudocode import source_of
 from metaphors.scene import SequenceScene, TraceScene
 from story.pseudocode import named
@@ -419,7 +419,7 @@ def _last_pseudocode(case: SceneCase) -> tuple:
     algorithm = _last_algorithm(case)
     polygon = (case.cls.runs[-1][1] if plays_several(case.cls)
                else case.cls.polygon if isinstance(case.cls, Handed) else None)
-    if polygon and read_shape(polygon).hole_count:
+    if polygon and read_any_polygon(polygon).hole_count:
         return hole_pseudocode(algorithm)
     # the rows name the run's own vertices where the picture has one of that name (issue 22)
     log = RunSpec(algorithm, polygon, heuristic=heuristic_of(case.cls)).log()

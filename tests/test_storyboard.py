@@ -35,7 +35,7 @@ def test_fruit_beats_count_every_slice():
     beats = storyboard(run_logged("ear-clipping-naive", "lecture"))
     slices = [b for b in beats if b.action in ("clip", "last-slice")]
     assert [b.data["k"] for b in slices] == list(range(1, 12))
-    assert slices[-1].action == "last-slice" and slices[-1].data["rest"] == []
+    assert slices[-1].action == "last-slice" and slices[-1].data["rest"] == ()
     assert all(b.data["total"] == 11 for b in slices)
 
 
@@ -54,7 +54,7 @@ def test_a_vertex_that_is_no_ear_shows_why(algorithm, polygon):
     assert any(not b.data["ear"] for b in tests)
     for b in tests:
         if b.data["ear"]:
-            assert b.data["triangle"] == [] and b.data["inside"] is None
+            assert b.data["triangle"] == () and b.data["inside"] is None
             continue
         a, v, c = (tuple(q) for q in b.data["triangle"])
         assert v == where[b.data["vertex"]]

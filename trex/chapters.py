@@ -157,11 +157,11 @@ def lecture_segments(cls: type) -> tuple | None:
     return tuple(cls.__new__(cls).chapter_segments())
 
 
-def polygon_checks(segments: Sequence, polygon: str, shape: AnyPolygon | None = None,
+def polygon_checks(segments: Sequence, polygon: str, polygon_read: AnyPolygon | None = None,
                    ) -> list[tuple[str, tuple, Callable[[], object]]]:
     """``(what, key, check)`` for each segment that plays the lecture's polygon: ``check()``
     computes what the chapter would show — a Run's log, a Compare's two triangulations — by
-    the chapter's own calls, on ``polygon`` (the one the chapter is handed; ``shape``: it
+    the chapter's own calls, on ``polygon`` (the one the chapter is handed; ``polygon_read``: it
     read already, which a Run then does not read again). Equal keys are the same
     computation."""
     from geometry.cdt import constrained_delaunay
@@ -170,11 +170,11 @@ def polygon_checks(segments: Sequence, polygon: str, shape: AnyPolygon | None = 
     from metaphors.lecture import Compare, Run
 
     def run(segment: Run):
-        return replace(segment.spec(polygon), shape=shape).log()
+        return replace(segment.spec(polygon), polygon_read=polygon_read).log()
 
     def compare(segment: Compare):
-        shape = lecture.read_polygon(polygon)
-        return triangulate(shape, segment.ours), constrained_delaunay(shape)
+        polygon_read = lecture.read_polygon(polygon)
+        return triangulate(polygon_read, segment.ours), constrained_delaunay(polygon_read)
 
     checks: list[tuple[str, tuple[Any, ...], Callable[..., object]]] = []  # (called with none)
     for segment in segments:
@@ -190,8 +190,8 @@ def polygon_checks(segments: Sequence, polygon: str, shape: AnyPolygon | None = 
 
 
 def check_chapters(chapters: Sequence[Chapter], polygon: str | None,
-                   shape: AnyPolygon | None = None) -> None:
-    """Load every chapter's scene class and, with a polygon (``shape``: it read already by
+                   polygon_read: AnyPolygon | None = None) -> None:
+    """Load every chapter's scene class and, with a polygon (``polygon_read``: it read already by
     the command), compute on it what the chapter plays on it (:func:`polygon_checks`; a
     scene that is not a lecture chapter: its ``algorithm``, once), drawing nothing.
 
@@ -211,28 +211,28 @@ def check_chapters(chapters: Sequence[Chapter], polygon: str | None,
         except ValueError as exc:
             raise ChapterFailed(f"{chapter_label(k, len(chapters), chapter)}: {exc}") from None
         if polygon is not None:
-            _check_polygon(cls, (polygon, shape), chapter_label(k, len(chapters), chapter),
+            _check_polygon(cls, (polygon, polygon_read), chapter_label(k, len(chapters), chapter),
                            done)
 
 
 def _check_polygon(cls: type, given: tuple[str, AnyPolygon | None], label: str, done: set) -> None:
     """One chapter's part of :func:`check_chapters` (``given``: the polygon, and it read);
     ``done`` holds the keys already run."""
-    polygon, shape = given
+    polygon, polygon_read = given
     try:
         segments = lecture_segments(cls)
     except Exception as exc:  # the chapter's own list is broken: it would not render either
         raise ChapterFailed(f"{label}: cannot list its segments: {type(exc).__name__}: "
                             f"{error_line(exc)}") from None
     if segments is None:  # a scene played as a chapter (none, if it plays its own polygons)
-        spec = scene_run(cls, polygon, shape)
+        spec = scene_run(cls, polygon, polygon_read)
         try:
             if spec is not None:
                 run_once(spec)
         except RUN_ERRORS as exc:
             fail(f"{polygon}: {error_line(exc)}")
         return
-    for what, key, check in polygon_checks(segments, polygon, shape):
+    for what, key, check in polygon_checks(segments, polygon, polygon_read):
         if key in done:
             continue
         try:

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, NoReturn
 import click
 
 from geometry.errors import GeometryError
-from geometry.io import AnyPolygon, check_format, read_polygon, read_shape
+from geometry.io import AnyPolygon, check_format, read_any_polygon, read_polygon
 from trex.exit_status import INVALID as EXIT_INVALID
 from usercode.limits import DEFAULT_CALL_TIMEOUT, call_timeout, set_call_timeout
 
@@ -65,7 +65,7 @@ def try_load(arg: str, *, holes: bool = False) -> AnyPolygon | None:
     :class:`geometry.holes.PolygonWithHoles`; without, it is refused in one line.
     """
     try:
-        polygon = read_shape(arg) if holes else read_polygon(arg)
+        polygon = read_any_polygon(arg) if holes else read_polygon(arg)
     except READ_ERRORS as exc:
         report_error(arg, exc)
         return None
@@ -82,19 +82,19 @@ def load_or_exit(arg: str, *, holes: bool = False) -> AnyPolygon:
     return polygon
 
 
-def load_run(spec: RunSpec, shape: AnyPolygon | None = None) -> RunSpec:
+def load_run(spec: RunSpec, polygon_read: AnyPolygon | None = None) -> RunSpec:
     """The :class:`story.spec.RunSpec` ``spec`` with its polygon read once and checked by the
     one rule a run's polygon obeys (:meth:`story.spec.RunSpec.read`: holes only for the
-    algorithms that take them); a scene handed it reads no file. ``shape`` is the polygon
+    algorithms that take them); a scene handed it reads no file. ``polygon_read`` is the polygon
     read already (a command reads its ``--polygon`` before manim is imported), else it is
     read here, warnings reported. A bad polygon is one line and exit 2; a replay comes back
     as it is."""
     if spec.saved:
         return spec
-    if shape is None:
-        shape = load_or_exit(spec.polygon, holes=True)
+    if polygon_read is None:
+        polygon_read = load_or_exit(spec.polygon, holes=True)
     try:
-        return spec.read(shape)
+        return spec.read(polygon_read)
     except READ_ERRORS as exc:
         fail(f"{spec.polygon}: {error_line(exc)}")
 

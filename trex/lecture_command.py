@@ -125,8 +125,8 @@ def lecture(quality: str, jobs: int, polygon: str | None, out_dir: str,
     failed run leaves DIR as it was.
     """
     # bad input: one line, exit 2, before anything else; read once, the checks' polygon
-    shape = load_or_exit(polygon) if polygon is not None else None
-    run_lecture(None, Path(out_dir), quality, jobs, polygon, only, panel, shape=shape)
+    polygon_read = load_or_exit(polygon) if polygon is not None else None
+    run_lecture(None, Path(out_dir), quality, jobs, polygon, only, panel, polygon_read=polygon_read)
 
 
 def _chapters(chapters: Sequence[Chapter] | None, only: str | None) -> Sequence[Chapter]:
@@ -152,9 +152,9 @@ def _chapters(chapters: Sequence[Chapter] | None, only: str | None) -> Sequence[
 
 def run_lecture(chapters: Sequence[Chapter] | None, out_dir: Path, quality: str = "l",
                 jobs: int = 1, polygon: str | None = None, only: str | None = None,
-                panel: str | None = None, *, shape: AnyPolygon | None = None) -> Path:
+                panel: str | None = None, *, polygon_read: AnyPolygon | None = None) -> Path:
     """The command after its polygon check: ``chapters`` None = the lecture's own;
-    ``shape``: ``polygon`` read already (None: the checks read it)."""
+    ``polygon_read``: ``polygon`` read already (None: the checks read it)."""
     chapters = _chapters(chapters, only)
     try:
         check_output_dir(out_dir)
@@ -163,7 +163,7 @@ def run_lecture(chapters: Sequence[Chapter] | None, out_dir: Path, quality: str 
     began = time.monotonic()
     with interrupts_raise() as signals:
         try:
-            check_chapters(chapters, polygon, shape)
+            check_chapters(chapters, polygon, polygon_read)
             video, seconds = build_lecture(chapters, out_dir, quality, jobs, polygon, signals,
                                            panel=panel)
         except Interrupted as exc:

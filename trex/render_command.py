@@ -161,14 +161,14 @@ def load_scene_class(path: Path, class_name: str | None) -> type:
 RUN_ERRORS = (GeometryError, ValueError, KeyError)
 
 
-def scene_run(cls: type, polygon: str, shape: AnyPolygon | None = None) -> RunSpec | None:
-    """The run the scene class ``cls`` plays on ``polygon`` (``shape``: that polygon read
+def scene_run(cls: type, polygon: str, polygon_read: AnyPolygon | None = None) -> RunSpec | None:
+    """The run the scene class ``cls`` plays on ``polygon`` (``polygon_read``: that polygon read
     already, so the run reads no file; None: the run reads it); None for a scene that plays
     no algorithm, or several runs on polygons of its own."""
     algorithm = algorithm_of(cls)
     if algorithm is None or plays_several(cls):
         return None
-    return RunSpec(algorithm, polygon, heuristic=heuristic_of(cls), shape=shape)
+    return RunSpec(algorithm, polygon, heuristic=heuristic_of(cls), polygon_read=polygon_read)
 
 
 def run_once(spec: RunSpec) -> tracing.Log:
@@ -180,12 +180,12 @@ def run_once(spec: RunSpec) -> tracing.Log:
 
 
 def scene_input(cls: type, polygon: str | None, panel: str | None = None,
-                shape: AnyPolygon | None = None) -> type:
+                polygon_read: AnyPolygon | None = None) -> type:
     """The scene class handed its run as data (a subclass carrying a
     :class:`story.spec.RunSpec`, see :class:`metaphors.scene.SpecScene`): on ``polygon`` if
     given, else as ``manim`` would give it (its default run, with ``TREX_POLYGON`` and
     ``TREX_LOG`` from the environment). A polygon given, or from ``TREX_POLYGON``, is read
-    here once and checked by the run's rule (:func:`trex.inputs.load_run`; ``shape``: it read
+    here once and checked by the run's rule (:func:`trex.inputs.load_run`; ``polygon_read``: it read
     already), one line and exit 2 if bad: the scene plays what was checked and reads no file.
     A scene of several runs plays its own polygons; a Scene that takes no run comes back as
     it is. ``panel`` (one of :data:`story.pseudocode.PANELS`), if given, is what a scene with
@@ -198,7 +198,7 @@ def scene_input(cls: type, polygon: str | None, panel: str | None = None,
     if plays_several(cls):
         return cls.handed(polygon) if polygon is not None else cls.from_environment()
     if polygon is not None:
-        return cls.with_spec(load_run(cls.default_spec().on(polygon), shape))
+        return cls.with_spec(load_run(cls.default_spec().on(polygon), polygon_read))
     spec: RunSpec = cls.from_environment().spec  # type: ignore[attr-defined]  # the subclass from_environment makes carries the run it was handed
     if spec.saved or spec == cls.default_spec():
         return cls.with_spec(spec)  # a replay, or the default run: nothing handed to check
@@ -383,7 +383,7 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
     """
     # bad input: one line, exit 2, before manim is even imported (holes: the scene's rule,
     # once its algorithm is known)
-    shape = load_or_exit(polygon, holes=True) if polygon is not None else None
+    polygon_read = load_or_exit(polygon, holes=True) if polygon is not None else None
     try:
         path, class_name = resolve_scene(scene)
     except ValueError as exc:
@@ -404,7 +404,7 @@ def render(scene: str, polygon: str | None, quality: str, fmt: str | None,
     interrupted = f"error: {scene}: render interrupted; nothing written"
     with interrupts_raise(interrupted) as signals:
         try:
-            _render(scene, path, class_name, (polygon, shape), target, fmt, quality, signals,
+            _render(scene, path, class_name, (polygon, polygon_read), target, fmt, quality, signals,
                     panel, heuristic)
         except Interrupted as exc:
             click.echo(interrupted, err=True)
@@ -425,7 +425,7 @@ def with_heuristic(cls: type, heuristic: str | None) -> type:
 def _render(scene: str, path: Path, class_name: str | None,
             given: tuple[str | None, AnyPolygon | None], target: Path, fmt: str, quality: str,
             signals: Signals, panel: str | None = None, heuristic: str | None = None) -> None:
-    polygon, shape = given  # --polygon, and that polygon read already
+    polygon, polygon_read = given  # --polygon, and that polygon read already
     try:
         if ".py:" in scene:  # the file's Scene class, or a heuristic of one's own
             from metaphors.scene import scene_for_heuristic
@@ -439,11 +439,11 @@ def _render(scene: str, path: Path, class_name: str | None,
     if polygon is not None and plays_several(cls):
         click.echo(f"warning: {scene}: plays its own polygons; --polygon is ignored", err=True)
     try:
-        handed = scene_input(cls, polygon, panel, shape)  # a bad polygon: one line, exit 2
+        handed = scene_input(cls, polygon, panel, polygon_read)  # a bad polygon: one line, exit 2
     except ValueError as exc:  # a TREX_LOG it cannot play
         fail(f"{scene}: {error_line(exc)}")
     spec = handed.spec if isinstance(handed, Handed) else None
-    if spec is not None and spec.shape is not None:  # a polygon handed: run it once, now
+    if spec is not None and spec.polygon_read is not None:  # a polygon handed: run it once, now
         try:
             run_once(spec)
         except RUN_ERRORS as exc:

@@ -83,9 +83,9 @@ def slides(scene: str, polygon: str | None, saved: str | None, quality: str,
     if scene == LECTURE:
         if saved is not None:
             fail("--log: the lecture plays many runs; give --polygon for its chapters")
-        shape = load_or_exit(polygon) if polygon is not None else None  # read once
+        polygon_read = load_or_exit(polygon) if polygon is not None else None  # read once
         _lecture(Path(output), quality, jobs or 1, polygon, panel, only,
-                 Path(lecture_dir) if lecture_dir else None, shape=shape)
+                 Path(lecture_dir) if lecture_dir else None, polygon_read=polygon_read)
         return
     for name, given in (("-j", jobs), ("--chapters", only), ("--lecture", lecture_dir)):
         if given is not None:
@@ -146,7 +146,7 @@ def _scene_slides(cls: type[TraceScene], quality: str, subtitle: str, target: Pa
 
 
 def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: str | None,
-             only: str | None, lecture_dir: Path | None, *, shape: AnyPolygon | None = None,
+             only: str | None, lecture_dir: Path | None, *, polygon_read: AnyPolygon | None = None,
              ) -> None:
     from trex import chapters as ch
     from trex.lecture_join import DEFAULT_DIR
@@ -167,7 +167,7 @@ def _lecture(target: Path, quality: str, jobs: int, polygon: str | None, panel: 
     except ValueError as exc:
         fail(f"{target}: {exc}")
     try:
-        ch.check_chapters(chapters, polygon, shape)
+        ch.check_chapters(chapters, polygon, polygon_read)
     except ch.ChapterFailed as exc:
         ch.chapter_failed(str(exc))
     began = time.monotonic()

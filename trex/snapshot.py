@@ -215,11 +215,11 @@ def plays_own_polygons(cls: type) -> bool:
 
 
 def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = (),
-         shape: AnyPolygon | None = None) -> type:
+         polygon_read: AnyPolygon | None = None) -> type:
     """The scene class handed its input: its default run, on ``polygon``, or replaying saved
     ``logs`` (one per run). No environment variable counts: a graph is its arguments' alone.
     A scene of one run is handed the polygon read once and checked by its run's rule
-    (:meth:`story.spec.RunSpec.read`; ``shape``: ``polygon`` read already). Raises
+    (:meth:`story.spec.RunSpec.read`; ``polygon_read``: ``polygon`` read already). Raises
     :class:`SnapshotError` (one line) for input the scene cannot take."""
     logs = tuple(os.fspath(p) for p in logs)
     if not isinstance(cls, Handed):  # takes_input(cls), said so that the checker narrows cls
@@ -233,8 +233,8 @@ def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = (),
     for path in logs:
         _check_log(cls, path, len(logs))
     if polygon is not None:
-        one_run = not plays_own_polygons(cls) and hasattr(cls, "with_spec")
-        spec = _read(polygon, shape, cls.default_spec() if one_run else None)
+        one_run = not plays_own_polygons(cls)  # cls is Handed: it has with_spec
+        spec = _read(polygon, polygon_read, cls.default_spec() if one_run else None)
         if spec is not None:
             return cls.with_spec(spec)
     try:
@@ -243,17 +243,17 @@ def hand(cls: type, polygon: str | None = None, logs: Sequence[str] = (),
         raise SnapshotError(str(exc)) from None
 
 
-def _read(polygon: str, shape: AnyPolygon | None, default=None):
-    """``polygon`` read (``shape``: read already) and, for a scene of one run, its
+def _read(polygon: str, polygon_read: AnyPolygon | None, default=None):
+    """``polygon`` read (``polygon_read``: read already) and, for a scene of one run, its
     ``default`` run on it, checked by that run's rule (None for a scene of several runs,
     which plays its own polygons: the polygon is only read). A polygon that cannot be read,
     is invalid, or is one the run cannot take raises :class:`SnapshotError` (one line)."""
-    from geometry.io import read_shape
+    from geometry.io import read_any_polygon
     from trex.inputs import READ_ERRORS, error_line
 
     try:
-        shape = read_shape(polygon) if shape is None else shape
-        return default.on(polygon).read(shape) if default is not None else None
+        polygon_read = read_any_polygon(polygon) if polygon_read is None else polygon_read
+        return default.on(polygon).read(polygon_read) if default is not None else None
     except READ_ERRORS as exc:
         raise SnapshotError(f"{polygon}: {error_line(exc)}") from None
 

@@ -21,6 +21,7 @@ from pathlib import Path
 import click
 
 from geometry.io import AnyPolygon
+from story.scene_kinds import Handed
 from trex.inputs import call_timeout_option, error_line, fail, load_or_exit
 
 EXIT_DIFFERS = 1
@@ -37,8 +38,8 @@ def _where(exc: BaseException, scene: str) -> str:
     return f" ({Path(file_part).name}:{frames[-1].lineno})" if frames else ""
 
 
-def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: AnyPolygon | None = None):
-    """The scene's graph, or exit 2 with one line (``shape``: ``polygon`` read already)."""
+def _build(scene: str, polygon: str | None, logs: tuple[str, ...], polygon_read: AnyPolygon | None = None):
+    """The scene's graph, or exit 2 with one line (``polygon_read``: ``polygon`` read already)."""
     from trex.render_command import RUN_ERRORS, run_once
     from trex.snapshot import SnapshotError, build, hand, load_scene, plays_own_polygons
 
@@ -50,12 +51,12 @@ def _build(scene: str, polygon: str | None, logs: tuple[str, ...], shape: AnyPol
         click.echo(f"warning: {scene}: plays its own polygons; --polygon is ignored", err=True)
         polygon = None
     try:
-        handed = hand(cls, polygon, logs, shape)
+        handed = hand(cls, polygon, logs, polygon_read)
     except SnapshotError as exc:  # a polygon's or log's fault names it; else the scene's
         named = [p for p in (polygon, *logs) if p is not None and str(exc).startswith(f"{p}:")]
         fail(str(exc) if named else f"{scene}: {exc}")
-    spec = getattr(handed, "spec", None)
-    if spec is not None and spec.shape is not None:
+    spec = handed.spec if isinstance(handed, Handed) else None
+    if spec is not None and spec.polygon_read is not None:
         try:
             run_once(spec)
         except RUN_ERRORS as exc:  # an input the algorithm rejects: said as the polygon's fault
@@ -121,12 +122,12 @@ def snapshot(scene: str, polygon: str | None, logs: tuple[str, ...], output: str
     if polygon is not None and logs:
         fail("--polygon and --log: give one of them (a saved log has its own polygon)")
     # one line, exit 2, before manim is even imported (holes: the scene's rule, later)
-    shape = load_or_exit(polygon, holes=True) if polygon is not None else None
+    polygon_read = load_or_exit(polygon, holes=True) if polygon is not None else None
     target = output if output is not None else check if update else None
     if target is not None:
         _writable(target)
     stored = _stored(check, update) if check is not None else None
-    graph = _build(scene, polygon, logs, shape)
+    graph = _build(scene, polygon, logs, polygon_read)
     if check is None:
         if output is None:
             click.echo(graph.text)

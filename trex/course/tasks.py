@@ -90,10 +90,10 @@ class _Checked:
 
 def _read(item: str, name: str, polygon: str, holes: bool) -> AnyPolygon:
     """The polygon ``polygon`` read (with holes, if ``holes``), once: the checks run on it."""
-    from geometry.io import read_polygon, read_shape
+    from geometry.io import read_any_polygon, read_polygon
 
     try:
-        return (read_shape if holes else read_polygon)(polygon)
+        return (read_any_polygon if holes else read_polygon)(polygon)
     except READ_ERRORS as exc:
         raise CourseError(item, name, f"{polygon}: {error_line(exc)}") from None
 
@@ -171,8 +171,8 @@ def _check_chapters(item: str, chapters: list, polygon: str | None, checked: _Ch
             if not plays_several(cls):
                 _run_once(item, "polygon", cls, polygon, checked)
             continue
-        shape = _read(item, "polygon", polygon, False)
-        for what, key, check in ch.polygon_checks(segments, polygon, shape):
+        polygon_read = _read(item, "polygon", polygon, False)
+        for what, key, check in ch.polygon_checks(segments, polygon, polygon_read):
             try:
                 checked.once((key, polygon), check)
             except rc.RUN_ERRORS as exc:

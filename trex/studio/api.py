@@ -24,7 +24,7 @@ from geometry.check import is_inner_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.hole_samples import HOLE_SAMPLES
-from geometry.io import AnyPolygon, polygon_to_json_points, read_rings, shape_from_rings
+from geometry.io import AnyPolygon, any_polygon_from_rings, polygon_to_json_points, read_rings
 from geometry.polygon import Polygon
 from geometry.predicates import Point
 from geometry.samples import is_sample, parse_spec, sample_from_spec, sample_names
@@ -103,20 +103,20 @@ def rings_of(body: dict, *, holes: bool = True) -> list[list[list[float]]]:
     return rings
 
 
-def check_shape(rings: list) -> AnyPolygon:
-    """The valid shape of the rings, or a 422 saying why not."""
-    return _shape(rings)
+def checked_polygon(rings: list) -> AnyPolygon:
+    """The valid polygon of the rings, or a 422 saying why not."""
+    return _polygon_of(rings)
 
 
-def _shape(rings: list) -> AnyPolygon:
+def _polygon_of(rings: list) -> AnyPolygon:
     try:
-        return shape_from_rings(rings)
+        return any_polygon_from_rings(rings)
     except GeometryError as exc:
         raise BadRequest(f"invalid polygon: {error_line(exc)}", 422) from None
 
 
 def _raw_index(rings: list) -> list[int]:
-    """For each cleaned vertex (the rings concatenated, as ``shape.source`` counts them),
+    """For each cleaned vertex (the rings concatenated, as ``polygon.source`` counts them),
     its index in the request's own rings: cleaning drops repeated and closing points."""
     out, offset = [], 0
     for ring in rings:
@@ -125,15 +125,15 @@ def _raw_index(rings: list) -> list[int]:
     return out
 
 
-def _frame(shape: AnyPolygon, raw: list[int]) -> tuple[list[int] | None, list[int]]:
+def _frame(polygon: AnyPolygon, raw: list[int]) -> tuple[list[int] | None, list[int]]:
     """T = ABC at the left-most vertex B and the candidates in it, input indices; none with
     holes (the heuristics take simple polygons)."""
-    if shape.hole_count:
+    if polygon.hole_count:
         return None, []
-    simple = cast(Polygon, shape)  # no holes
+    simple = cast(Polygon, polygon)  # no holes
     t = triangle_at(simple, leftmost_vertex(simple))
-    to_raw = [raw[shape.source[v.index]] for v in (t.a, t.b, t.c)]
-    return to_raw, [raw[shape.source[v.index]] for v in candidates_in_triangle(simple, t)]
+    to_raw = [raw[polygon.source[v.index]] for v in (t.a, t.b, t.c)]
+    return to_raw, [raw[polygon.source[v.index]] for v in candidates_in_triangle(simple, t)]
 
 
 def check(body: dict) -> dict:
@@ -142,24 +142,24 @@ def check(body: dict) -> dict:
     rings = rings_of(body)
     total = sum(len(r) for r in rings)
     try:
-        shape = shape_from_rings(rings)
+        polygon = any_polygon_from_rings(rings)
     except GeometryError as exc:
         return {"valid": False, "why": error_line(exc), "labels": [], "reflex": [],
                 "edges": offending_edges(rings), "triangle": None, "candidates": []}
     raw = _raw_index(rings)
     labels: list[str | None] = [None] * total
-    for i, label in enumerate(shape.labels):
-        labels[raw[shape.source[i]]] = label
-    triangle, candidates = _frame(shape, raw)
+    for i, label in enumerate(polygon.labels):
+        labels[raw[polygon.source[i]]] = label
+    triangle, candidates = _frame(polygon, raw)
     return {"valid": True, "why": None, "labels": labels,
-            "reflex": sorted(raw[shape.source[i]] for i in shape.reflex_vertices()),
+            "reflex": sorted(raw[polygon.source[i]] for i in polygon.reflex_vertices()),
             "edges": [], "triangle": triangle, "candidates": candidates}
 
 
-def rings_of_shape(shape: AnyPolygon) -> dict:
-    """A valid shape as a request's ``polygon`` and ``holes``, in its (cleaned) input order."""
-    points = polygon_to_json_points(shape.input_points())
-    starts = getattr(shape, "starts", (0, shape.n))
+def rings_of_polygon(polygon: AnyPolygon) -> dict:
+    """A valid polygon as a request's ``polygon`` and ``holes``, in its (cleaned) input order."""
+    points = polygon_to_json_points(polygon.input_points())
+    starts = getattr(polygon, "starts", (0, polygon.n))
     sizes = [b - a for a, b in itertools.pairwise(starts)]
     rings, at = [], 0
     for size in sizes:
@@ -182,17 +182,17 @@ def _heuristic(name: object, own: dict[str, UserHeuristic]) -> str | UserHeurist
     return own.get(known, known)
 
 
-def _claim(shape: AnyPolygon, raw: list[int], heuristic: str | UserHeuristic, name: str) -> dict:
+def _claim(polygon: AnyPolygon, raw: list[int], heuristic: str | UserHeuristic, name: str) -> dict:
     """The claim and its exact verdict as ``trex diagonal --json`` gives them, plus what the
     page draws: the edge the claim crosses (``crossed``) or the vertex it passes through
     (``through``), request indices."""
     try:
-        simple = cast(Polygon, shape)  # rings_of(body, holes=False): the outer ring only
+        simple = cast(Polygon, polygon)  # rings_of(body, holes=False): the outer ring only
         claim = run_heuristic(simple, heuristic)
         verdict = is_inner_diagonal(simple, *claim.pair)
     except (ValueError, GeometryError) as exc:
         raise BadRequest(f"{name}: {error_line(exc)}", 422) from None
-    to_raw = [raw[s] for s in shape.source]
+    to_raw = [raw[s] for s in polygon.source]
     return {"diagonal": [to_raw[i] for i in claim.pair], "inner": verdict.ok,
             "why": verdict.why, "labels": [claim.u.label, claim.v.label],
             "crossed": [to_raw[i] for i in verdict.edge] if verdict.edge else None,
@@ -203,7 +203,7 @@ def diagonal(body: dict, own: dict[str, UserHeuristic]) -> dict:
     """A heuristic's claim on the polygon and the exact verdict, as ``trex diagonal --json``."""
     heuristic = _heuristic(body.get("heuristic"), own)
     rings = rings_of(body, holes=False)
-    return _claim(_shape(rings), _raw_index(rings), heuristic, str(body.get("heuristic")))
+    return _claim(_polygon_of(rings), _raw_index(rings), heuristic, str(body.get("heuristic")))
 
 
 def failed_claim(name: str, error: str) -> dict:
@@ -217,12 +217,12 @@ def claims(body: dict, own: dict[str, UserHeuristic],
     """Every rule's claim and verdict (``names``; default the built-ins, then one's own), for
     the page's table; a rule that fails on this polygon has its ``error``."""
     rings = rings_of(body, holes=False)
-    shape, raw = _shape(rings), _raw_index(rings)
+    polygon, raw = _polygon_of(rings), _raw_index(rings)
     out = []
     for name in [*heuristics(), *own] if names is None else names:
         try:
             out.append({"name": name, "error": None,
-                        **_claim(shape, raw, _heuristic(name, own), name)})
+                        **_claim(polygon, raw, _heuristic(name, own), name)})
         except BadRequest as exc:
             out.append(failed_claim(name, str(exc)))
     return out
@@ -237,10 +237,10 @@ def triangulate(body: dict, own: dict[str, UserHeuristic]) -> dict:
         raise BadRequest(f"unknown algorithm {algorithm!r} (known: {', '.join(triangulations())})")
     heuristic = _heuristic(body.get("heuristic", "gravity"), own)
     rings = rings_of(body)
-    shape, raw = _shape(rings), _raw_index(rings)
+    polygon, raw = _polygon_of(rings), _raw_index(rings)
     started = time.perf_counter()
     try:
-        record = triangulation_record("studio", shape, algorithm, heuristic)
+        record = triangulation_record("studio", polygon, algorithm, heuristic)
     except (ValueError, GeometryError) as exc:
         raise BadRequest(f"{algorithm}: {error_line(exc)}", 422) from None
     seconds = time.perf_counter() - started

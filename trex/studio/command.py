@@ -17,7 +17,7 @@ import click
 
 from trex.inputs import call_timeout_option, fail, load_or_exit
 from trex.signals import EXIT_SIGNAL
-from trex.studio.api import rings_of_shape
+from trex.studio.api import rings_of_polygon
 from trex.studio.children import COMMANDS as JOB_COMMANDS
 from usercode.errors import UserHeuristicError
 from usercode.heuristic import UserHeuristic, load_user_heuristic
@@ -78,7 +78,7 @@ def studio(host: str, port: int, no_browser: bool, heuristics: tuple[str, ...],
     from trex.studio.app import create_app
 
     own = _own_heuristics(heuristics)
-    initial = rings_of_shape(load_or_exit(polygon, holes=True)) if polygon else None
+    initial = rings_of_polygon(load_or_exit(polygon, holes=True)) if polygon else None
     try:
         sock = server.bind(host, port)
     except server.PortInUse as exc:

@@ -65,7 +65,7 @@ def render(body: dict, jobs: Jobs, own: Own, timeout: float | None) -> dict:
     if kind not in ("video", "slides"):
         raise api.BadRequest(f"kind must be video or slides, not {kind!r}")
     rings = api.rings_of(body)
-    api.check_shape(rings)
+    api.checked_polygon(rings)
     if len(rings) > 1 and scene not in triangulations():
         raise api.BadRequest(f"{scene} takes polygons without holes", 422)
 
