@@ -53,7 +53,7 @@ from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from rendering.layers import BACKDROP_Z
-from story.beats import Beat
+from story.beats import Beat, Hole
 from story.pseudocode import PSEUDOCODE, SOURCE, PseudocodeRow
 
 #: the distance between the pseudocode's rows (scene units; less when more rows than fit are
@@ -363,7 +363,7 @@ LABEL_DISTANCES = (0.1, 0.16, 0.24, 0.34, 0.46)
 LABEL_DIRECTIONS = 24
 
 
-def panel_markers(polygon: Polygon, holes: Sequence[dict], frame: Frame, theme: Theme,
+def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: Theme,
                   area: Box = PANEL_LABELS) -> list[tuple[str, VGroup]]:
     """(label, dot and label) for every vertex of the panel's polygon and of its holes.
 
@@ -376,14 +376,14 @@ def panel_markers(polygon: Polygon, holes: Sequence[dict], frame: Frame, theme: 
     dot stays): a label over an edge or another label would be misread, and a smaller one
     would be under 2.5 % of the frame's height. Every scene's and chapter's polygon keeps all
     its labels (tests.reading_rules.crowded_panel_labels)."""
-    rings = [frame.many(polygon.points), *(frame.many(h["points"]) for h in holes)]
+    rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
     outline = unary_union([LineString([*(p[:2] for p in ring), ring[0][:2]]) for ring in rings])
     vertices = [(label, point, _away(point, rings[0]), theme.label_size)
                 for label, point in zip(polygon.labels, rings[0], strict=True)]
     for hole, ring in zip(holes, rings[1:], strict=True):
         # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % high
         vertices += [(label, point, _away(point, ring), theme.label_size + 4)
-                     for label, point in zip(hole["labels"], ring, strict=True)]
+                     for label, point in zip(hole.labels, ring, strict=True)]
     dots = unary_union([Point(p[:2]).buffer(theme.dot_radius) for _, p, _, _ in vertices])
     texts = [typeset.text(label, font=theme.font, size=size, colour=theme.ink)
              for label, _, _, size in vertices]

@@ -240,7 +240,7 @@ def test_the_panels_polygon_keeps_every_label_apart_off_its_edges_and_readable(s
     shown = storyboard(run_logged("ear-clipping", sample))[0]
     panel = Panel(shown.points, shown.labels, None, holes=shown.holes)
     rings = [panel.frame.many(shown.points),
-             *(panel.frame.many(h["points"]) for h in shown.holes)]
+             *(panel.frame.many(h.points) for h in shown.holes)]
     edges = [LineString([*(p[:2] for p in ring), ring[0][:2]]) for ring in rings]
     area = box(PANEL_LABELS.x - PANEL_LABELS.width / 2, PANEL_LABELS.y - PANEL_LABELS.height / 2,
                PANEL_LABELS.x + PANEL_LABELS.width / 2, PANEL_LABELS.y + PANEL_LABELS.height / 2)
