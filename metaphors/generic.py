@@ -72,7 +72,7 @@ def _is_stroke(state: dict[str, Any]) -> bool:
     return state.get("kind") in ("segment", "line", "ray", "polygon", "circle")
 
 
-def _recolour_shapes(board: Board, roles: dict[str, str]) -> list[Playable]:
+def _recolour_shapes(board: Board, roles: Mapping[str, str]) -> list[Playable]:
     anims = []
     for key, role in roles.items():
         mobject = board.objects.get(_PREFIX + key)
