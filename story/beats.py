@@ -24,6 +24,8 @@ from dataclasses import dataclass, field, fields
 from types import MappingProxyType
 from typing import Any, ClassVar, TypeVar, dataclass_transform
 
+from tracing import JSON
+
 #: a point in polygon coordinates, as the log holds it
 Point = tuple[float, float]
 
@@ -176,7 +178,7 @@ class FindDiagonal(Beat):
 class Note(Beat):
     """A caption only; ``details`` are the note's own fields from the log, if any."""
 
-    details: dict[str, Any] = field(default_factory=dict)
+    details: Mapping[str, JSON] = field(default_factory=dict)
 
 
 # --- a heuristic of one's own -------------------------------------------------------------------
@@ -193,4 +195,5 @@ class ShapeChange(Beat):
 
     key: str
     event: str
-    state: dict[str, Any] | None = None
+    #: the shape's drawable state as the log holds it (``kind``, ``at`` …; tracing.Shape)
+    state: Mapping[str, JSON] | None = None
