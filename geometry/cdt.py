@@ -5,7 +5,7 @@
 >>> constrained_delaunay(p)
 [(0, 1, 2), (0, 2, 3)]
 >>> cdt(p).triangles
-[(0, 1, 2), (0, 2, 3)]
+((0, 1, 2), (0, 2, 3))
 """
 
 from __future__ import annotations

@@ -23,9 +23,9 @@ slice with its three corners as vertex references (ear ``b`` between ``a`` and `
 >>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
 >>> ear_clipping(p).triangles
-[(0, 1, 4), (1, 2, 4), (2, 3, 4)]
+((0, 1, 4), (1, 2, 4), (2, 3, 4))
 >>> ear_clipping_naive(p).triangles
-[(0, 1, 4), (1, 2, 4), (2, 3, 4)]
+((0, 1, 4), (1, 2, 4), (2, 3, 4))
 """
 
 from __future__ import annotations

@@ -15,7 +15,7 @@ once checked. Steps: the heuristic's own, then ``split``.
 >>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)])
 >>> divide_and_conquer(p, "gravity").triangles
-[(0, 1, 4), (1, 2, 4), (2, 3, 4)]
+((0, 1, 4), (1, 2, 4), (2, 3, 4))
 >>> result = divide_and_conquer(p, "scaling")
 >>> result.valid, result.failure.why
 (False, 'B–D crosses edge E–A at (2.86087, 6.36087)')
@@ -126,7 +126,7 @@ def divide_and_conquer(polygon: Polygon,
             return _failure(piece, verdict, claim.pair, triangles, steps)
         halves = split(piece, *claim.pair)
         todo.extend(reversed(halves))  # the first half is worked on first
-    return Triangulation(sorted(triangles), True, steps=steps)
+    return Triangulation(tuple(sorted(triangles)), True, steps=steps)
 
 
 def _failure(
@@ -145,5 +145,5 @@ def _failure(
     labels = [piece.polygon.labels[k] for k in pair]
     tracing.note("bad-diagonal", diagonal=labels, why=verdict.why)
     return Triangulation(
-        sorted(triangles), False, failure=whole, claim=(ids[pair[0]], ids[pair[1]]), steps=steps
+        tuple(sorted(triangles)), False, failure=whole, claim=(ids[pair[0]], ids[pair[1]]), steps=steps
     )

@@ -29,7 +29,7 @@ storyboard draws it there), ``handle_start`` … ``handle_regular``, ``add_diago
 >>> make_monotone(p)  # the merge vertex E is joined to B, the next vertex below it
 [(1, 4)]
 >>> monotone(p).triangles
-[(0, 1, 4), (1, 2, 4), (2, 3, 4)]
+((0, 1, 4), (1, 2, 4), (2, 3, 4))
 """
 
 from __future__ import annotations

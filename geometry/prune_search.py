@@ -34,7 +34,7 @@ when done, shrinking (``change``) at every clip; steps ``is_ear``,
 >>> find_an_ear(p).label  # C is not an ear (E is in BCD); the sweep cuts off C–D–E
 'D'
 >>> prune_and_search(p).triangles
-[(0, 1, 4), (1, 2, 4), (2, 3, 4)]
+((0, 1, 4), (1, 2, 4), (2, 3, 4))
 """
 
 from __future__ import annotations

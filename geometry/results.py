@@ -7,14 +7,13 @@ found is in the trace log.) This module imports no algorithm, so every
 algorithm and the dispatcher :mod:`geometry.triangulate` can import it.
 
 >>> finished([(4, 0, 1), (2, 3, 4), (1, 2, 4)], steps=3).triangles
-[(0, 1, 4), (1, 2, 4), (2, 3, 4)]
+((0, 1, 4), (1, 2, 4), (2, 3, 4))
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
 
 from geometry.check import CheckResult
 from geometry.polygon import Vertex
@@ -35,12 +34,12 @@ class Triangulation:
     ``steps`` counts the algorithm's main steps; ``extra`` holds its own counters.
     """
 
-    triangles: list[TriangleIndices]
+    triangles: tuple[TriangleIndices, ...]
     valid: bool
     failure: CheckResult | None = None
     claim: tuple[int, int] | None = None
     steps: int = 0
-    extra: dict[str, Any] = field(default_factory=dict)
+    extra: Mapping[str, int] = field(default_factory=dict)
 
 
 def canonical(tri: TriangleIndices) -> TriangleIndices:
@@ -72,6 +71,6 @@ def indices(corners: Corners) -> TriangleIndices:
     return (a.index, b.index, c.index)
 
 
-def finished(triangles: Iterable[TriangleIndices], steps: int = 0, **extra: Any) -> Triangulation:
+def finished(triangles: Iterable[TriangleIndices], steps: int = 0, **extra: int) -> Triangulation:
     """A complete (``valid``) triangulation from counter-clockwise triples, in canonical form."""
-    return Triangulation(sorted(canonical(t) for t in triangles), True, steps=steps, extra=extra)
+    return Triangulation(tuple(sorted(canonical(t) for t in triangles)), True, steps=steps, extra=extra)

@@ -18,7 +18,7 @@ takes to read.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TypeVar, cast
 
@@ -96,7 +96,7 @@ class Moment:
     mover: Beat | None
     motion: Motion | None
     band: Band | None
-    captions: dict[str, str]  # gravity's steps' captions by action (turn, drop, slide, snag)
+    captions: Mapping[str, str]  # gravity's steps' captions by action (turn, drop, slide, snag)
     claim: Claim
     verdict: Verdict
     candidates: tuple[str, ...] = ()  # the vertices in T, as the run names them

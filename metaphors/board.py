@@ -9,7 +9,7 @@ been read (:mod:`metaphors.captions`).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any, TypeAlias
 
 import numpy as np
@@ -163,7 +163,7 @@ class Board:
                     bottom.append(mobject)
         self.scene.bring_to_back(*bottom)
 
-    def _recolour(self, roles: dict[str, str], busy: set[int]) -> tuple[list, list]:
+    def _recolour(self, roles: Mapping[str, str], busy: set[int]) -> tuple[list, list]:
         """Animations for markers whose role changed, and (marker, colour) to set after."""
         anims, after = [], []
         for label, marker in self.markers.items():

@@ -81,10 +81,10 @@ class Partition:
     """P cut by the monotone sweep: its diagonals, its pieces (vertex indices, counter-
     clockwise) and the split and merge vertices the diagonals remove."""
 
-    diagonals: list[tuple[int, int]]
-    pieces: list[tuple[int, ...]]
-    split: list[int]
-    merge: list[int]
+    diagonals: tuple[tuple[int, int], ...]
+    pieces: tuple[tuple[int, ...], ...]
+    split: tuple[int, ...]
+    merge: tuple[int, ...]
 
 
 def monotone_partition(polygon: Polygon) -> Partition:
@@ -92,9 +92,9 @@ def monotone_partition(polygon: Polygon) -> Partition:
     diagonals = make_monotone(polygon)
     sweep = Sweep(polygon)
     kinds = {i: classify_vertex(sweep, polygon.vertex(i)) for i in sweep.order}
-    return Partition(diagonals, [p.ids for p in monotone_pieces(polygon, diagonals)],
-                     [i for i in sweep.order if kinds[i] == "split"],
-                     [i for i in sweep.order if kinds[i] == "merge"])
+    return Partition(tuple(diagonals), tuple(p.ids for p in monotone_pieces(polygon, diagonals)),
+                     tuple(i for i in sweep.order if kinds[i] == "split"),
+                     tuple(i for i in sweep.order if kinds[i] == "merge"))
 
 
 def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
@@ -182,7 +182,7 @@ class Circumcircle:
     triangle: TriangleIndices
     centre: tuple[Fraction, Fraction]
     radius2: Fraction
-    inside: list[int]
+    inside: tuple[int, ...]
 
     @property
     def radius(self) -> float:
@@ -198,8 +198,8 @@ def circumcircle(polygon: Polygon, triangle: TriangleIndices) -> Circumcircle:
     centre = ((a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / d,
               (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / d)
     r2 = (ax - centre[0]) ** 2 + (ay - centre[1]) ** 2
-    inside = [k for k, (px, py) in enumerate(polygon.points) if k not in triangle
-              and (Fraction(px) - centre[0]) ** 2 + (Fraction(py) - centre[1]) ** 2 < r2]
+    inside = tuple(k for k, (px, py) in enumerate(polygon.points) if k not in triangle
+                   and (Fraction(px) - centre[0]) ** 2 + (Fraction(py) - centre[1]) ** 2 < r2)
     return Circumcircle(triangle, centre, r2, inside)
 
 
@@ -252,7 +252,7 @@ def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
 # --- the recap: three triangulations -------------------------------------------------------------
 
 
-def recap_triangulations(polygon: Polygon) -> list[tuple[str, str, list[TriangleIndices]]]:
+def recap_triangulations(polygon: Polygon) -> list[tuple[str, str, tuple[TriangleIndices, ...]]]:
     """(algorithm, bound, triangles) for each of :data:`RECAPPED` (divide and conquer with
     Gravity, as the lecture ran it)."""
     return [(name, bound, triangulate(polygon, name).triangles) for name, bound in RECAPPED]

@@ -287,7 +287,7 @@ def _not_an_ear(walk: Walk, v: str) -> tuple[list, str | None] | None:
 
 
 def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    p, m = (show(r) for r in ret.result)
+    p, m = (show(r) for r in walk.result_list(ret))
     hole = int("".join(ch for ch in p if ch in "₀₁₂₃₄₅₆₇₈₉").translate(_DIGITS))
     point_of = walk.root_points()
     yield walk.call_beat(Keyhole, f"Hole {hole}: a keyhole cut from {p} to {m}", call, ret,
@@ -302,7 +302,7 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         return
     clipped = walk.memo("fruit.clipped", list)  # the ears cut so far
     if ret.name == "clip_ear":
-        corners = [show(r) for r in ret.result]
+        corners = [show(r) for r in walk.result_list(ret)]
         kind = Slice
     else:
         gone = {c[1] for c in clipped}

@@ -31,6 +31,7 @@ from rendering import typeset
 from story.beats import Call, ShapeChange
 from story.roles import ROLES
 from story.storyboard import Reading
+from tracing import JSON
 
 #: Kinds the generic performer draws.
 DRAWN_KINDS = ("point", "segment", "polygon", "circle", "line", "ray", "text")
@@ -68,11 +69,11 @@ def shape(board: Board, beat: ShapeChange) -> None:
     board.play(beat, *anims, run_time=0.8 if old is None else 1.0)
 
 
-def _is_stroke(state: dict[str, Any]) -> bool:
+def _is_stroke(state: Mapping[str, JSON]) -> bool:
     return state.get("kind") in ("segment", "line", "ray", "polygon", "circle")
 
 
-def _recolour_shapes(board: Board, roles: dict[str, str]) -> list[Playable]:
+def _recolour_shapes(board: Board, roles: Mapping[str, str]) -> list[Playable]:
     anims = []
     for key, role in roles.items():
         mobject = board.objects.get(_PREFIX + key)
@@ -85,13 +86,15 @@ def _recolour_shapes(board: Board, roles: dict[str, str]) -> list[Playable]:
 # --- drawing a state ---------------------------------------------------------------------------
 
 
-def mobject_for(board: Board, state: dict[str, Any], role: str, key: str = "") -> VMobject | None:
-    """The mobject of a shape's state in the board's coordinates, or None if it has none."""
+def mobject_for(board: Board, state: Mapping[str, JSON], role: str, key: str = ""
+                ) -> VMobject | None:
+    """The mobject of a shape's state in the board's coordinates, or None if it has none (the
+    drawing reads the log's fields as it finds them: one it cannot read draws nothing)."""
     kind = state.get("kind")
     if kind not in DRAWN_KINDS:
         return None
     try:
-        mobject = _DRAW[kind](board, state, board.theme.role_colour(role))
+        mobject = _DRAW[kind](board, dict(state), board.theme.role_colour(role))
     except (KeyError, TypeError, ValueError, IndexError, ZeroDivisionError):
         return None
     if mobject is None:

@@ -198,7 +198,7 @@ class Snag(Beat):
 
 
 def read_turn(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    g = ret.result
+    g = walk.result_object(ret)
     yield walk.call_beat(GravityTurn, "Turn the polygon so that gravity points down", call, ret,
                          down=point(g["down"]), tilt=g["tilt"], turn_picture=g["turn_picture"],
                          polygon=walk.ref(call, "polygon"))

@@ -10,7 +10,7 @@ step: never fast-forwarded. Split and merge vertices have colours of their own
 from __future__ import annotations
 
 import weakref
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
 
 from manim import (
@@ -50,7 +50,7 @@ from metaphors.layout import (
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
-from story.beats import Beat, beat_kind
+from story.beats import Beat, Point, beat_kind, point, points_of
 from story.storyboard import Reading, Walk
 from tracing import Event
 
@@ -135,7 +135,7 @@ def _replace(board: Board, key: str, new: VMobject) -> Transform | FadeIn:
     return FadeIn(new)
 
 
-def _chain(board: Board, points: list) -> VMobject:
+def _chain(board: Board, points: Sequence[Point]) -> VMobject:
     """The waiting chain: a thick line through its vertices, a large dot when one waits."""
     theme = board.theme
     corners = [board.at(p) for p in points]
@@ -146,7 +146,7 @@ def _chain(board: Board, points: list) -> VMobject:
     return line
 
 
-def _words(board: Board, chain: list[str]) -> list[VMobject]:
+def _words(board: Board, chain: Sequence[str]) -> list[VMobject]:
     """The stack's words: "stack", then its labels, the top first."""
     theme = board.theme
     size = theme.label_size + 4  # "stack" has no capital: a line of it still ≥ 2.5 % high
@@ -154,7 +154,7 @@ def _words(board: Board, chain: list[str]) -> list[VMobject]:
             for word in ("stack", *reversed(chain))]
 
 
-def _column(board: Board, chain: list[str], depth: int) -> VGroup:
+def _column(board: Board, chain: Sequence[str], depth: int) -> VGroup:
     """The stack beside P: "stack" over its labels, the top first, standing where the
     tallest stack of the run keeps clear of everything else on screen (:func:`_place`);
     a row, "stack" and its labels left to right, where no column fits."""
@@ -261,22 +261,22 @@ class Classify(Beat):
 
     vertex: str
     kind: str
-    at: list
+    at: Point
 
 
 @beat_kind("monotone-diagonal")
 class MonotoneDiagonal(Beat):
     """A diagonal that removes a split or merge vertex."""
 
-    labels: list[str]
-    points: list
+    labels: tuple[str, str]
+    points: tuple[Point, Point]
 
 
 @beat_kind("pieces")
 class Pieces(Beat):
     """The y-monotone pieces (their points)."""
 
-    pieces: list
+    pieces: tuple[tuple[Point, ...], ...]
 
 
 @beat_kind("stack-step")
@@ -285,10 +285,10 @@ class StackStep(Beat):
     bottom first, and their ``points``), and the ``triangle`` cut off (its points and
     ``cut``, its labels; both empty when a vertex is pushed)."""
 
-    chain: list[str]
-    points: list
-    cut: list[str]
-    triangle: list
+    chain: tuple[str, ...]
+    points: tuple[Point, ...]
+    cut: tuple[str, ...]
+    triangle: tuple[Point, ...]
     #: the most vertices the stack holds in the whole run (its column is made that tall)
     depth: int = 0
 
@@ -299,8 +299,8 @@ class Stack(Beat):
     that is a triangle already); after the last piece, every triangle of the run
     (``triangulation``; else empty)."""
 
-    triangles: list
-    triangulation: list
+    triangles: tuple[tuple[Point, ...], ...]
+    triangulation: tuple[tuple[Point, ...], ...]
 
 
 def _kind_role(kind: str) -> str:
@@ -309,78 +309,79 @@ def _kind_role(kind: str) -> str:
 
 
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    v, kind = walk.ref(call, "v"), ret.result
+    v, kind = walk.ref(call, "v"), walk.result_string(ret)
     yield walk.call_beat(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
                          key_step=kind in ("split", "merge"), roles={v: _kind_role(kind)},
-                         vertex=v, kind=kind, at=walk.root_points()[v])
+                         vertex=v, kind=kind, at=point(walk.root_points()[v]))
     walk.count_claim("vertex")  # after its beat: the beat belongs to the vertex it classifies
 
 
 def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     where = walk.root_points()
     labels = list(where)
-    u, w = (labels[k] for k in ret.result)
+    u, w = (labels[k] for k in walk.result_ints(ret))
     handler = walk.stack[-2].name if len(walk.stack) > 1 else ""
     why = (f"the split vertex {u} joins its helper {w}" if handler == "handle_split"
            else f"{u} takes over from the merge vertex {w}")
     yield walk.call_beat(MonotoneDiagonal, f"Diagonal {u}{w}: {why}", call, ret, key_step=True,
                          roles={u: "split" if handler == "handle_split" else "called", w: (
                         "argument" if handler == "handle_split" else "merge")},
-                         labels=[u, w], points=[where[u], where[w]])
+                         labels=(u, w), points=(point(where[u]), point(where[w])))
 
 
 def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     pieces = [walk.entered_after(call, key) for key in walk.result_refs(ret)]
     yield walk.call_beat(Pieces, f"The diagonals cut the polygon into {len(pieces)} y-monotone "
-                         "pieces", call, ret, pieces=[p.get("points", []) for p in pieces])
+                         "pieces", call, ret, pieces=tuple(points_of(p.get("points", [])) for p in pieces))
 
 
-def _stacked(walk: Walk, indices: list[int]) -> list[str]:
+def _stacked(walk: Walk, indices: list[int]) -> tuple[str, ...]:
     labels = list(walk.root_points())
-    return [labels[k] for k in indices]
+    return tuple(labels[k] for k in indices)
 
 
 def _depth(walk: Walk) -> int:
     """The most vertices the run's stack holds: the longest stack a push leaves."""
     return int(walk.memo("monotone.depth", lambda: max(
-        (len((e.args or {}).get("stack", ())) + 1 for e in walk.log.events
+        (len(walk.arg_ints(e, "stack")) + 1 for e in walk.log.events
          if e.kind == "call" and e.name == "push"), default=0)))
 
 
 def read_push(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     """A vertex waits: the chain is the call's stack with it on top."""
     where = walk.root_points()
-    args = call.args or {}
-    chain = _stacked(walk, [*args["stack"], args["u"]])
+    stack, u = walk.arg_ints(call, "stack"), walk.arg_int(call, "u")
+    chain = _stacked(walk, [*stack, u])
     yield walk.call_beat(StackStep, f"{chain[-1]} waits on the stack", call, ret, roles={},
-                         chain=chain, points=[where[v] for v in chain], cut=[], triangle=[],
+                         chain=chain, points=points_of(where[v] for v in chain), cut=(), triangle=(),
                          depth=_depth(walk))
 
 
 def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     """A triangle is cut off: the stack's top leaves it."""
     where = walk.root_points()
-    before = _stacked(walk, (call.args or {})["stack"])
-    cut = _stacked(walk, ret.result)
+    before = _stacked(walk, walk.arg_ints(call, "stack"))
+    cut = _stacked(walk, walk.result_ints(ret))
     walk.memo("monotone.cut", list).append(cut)
     yield walk.call_beat(StackStep, f"Triangle {''.join(cut)} cut off: {before[-1]} leaves",
                          call, ret, roles={}, chain=before[:-1],
-                         points=[where[v] for v in before[:-1]], cut=cut,
-                         triangle=[where[v] for v in cut], depth=_depth(walk))
+                         points=points_of(where[v] for v in before[:-1]), cut=cut,
+                         triangle=points_of(where[v] for v in cut), depth=_depth(walk))
 
 
 def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     where = walk.root_points()
     labels = list(where)
-    triangles = [[where[labels[k]] for k in t] for t in ret.result]
+    triangles = [points_of(where[labels[k]] for k in walk.int_list(t, "a triangle"))
+                 for t in walk.result_list(ret)]
     done = walk.memo("monotone.triangles", list)  # the triangles of the pieces so far
     done.extend(triangles)
     cut = walk.memo("monotone.cut", list)  # cut off step by step in this piece
     n = len(triangles)
     caption = (f"This piece is done: {n} triangle{'s' if n != 1 else ''}" if cut
                else "This piece is a triangle already")
-    yield walk.call_beat(Stack, caption, call, ret, triangles=[] if cut else triangles,
-                         triangulation=list(done) if len(done) == len(labels) - 2 else [])
+    yield walk.call_beat(Stack, caption, call, ret, triangles=() if cut else tuple(triangles),
+                         triangulation=tuple(done) if len(done) == len(labels) - 2 else ())
     cut.clear()
 
 

@@ -17,7 +17,7 @@ same vertices by the same roles.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import cast
 
 import numpy as np
@@ -248,7 +248,7 @@ class Panel:
             anims += self._call_line(beat.call)
         return anims
 
-    def _recolour(self, roles: dict[str, str]) -> list[Animation]:
+    def _recolour(self, roles: Mapping[str, str]) -> list[Animation]:
         anims = []
         wanted = {label: roles.get(label, "idle") for label in self.markers}
         for label, role in wanted.items():

@@ -32,7 +32,7 @@ from metaphors.layout import (
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
-from story.beats import Beat, FindDiagonal, beat_kind
+from story.beats import Beat, FindDiagonal, Point, beat_kind, points_of
 from story.pseudocode import PSEUDOCODE
 from story.refs import state_of, target_of
 from story.storyboard import Reading, Walk
@@ -43,10 +43,10 @@ from tracing import Event
 class Split(Beat):
     """The piece ``parent`` is cut into ``pieces`` (keys), with their points and labels."""
 
-    pieces: list[str]
+    pieces: tuple[str, ...]
     parent: str
-    points: list[list[list[float]]]  # one ring of points per piece
-    labels: list[list[str]]
+    points: tuple[tuple[Point, ...], ...]  # one ring of points per piece
+    labels: tuple[tuple[str, ...], ...]
 
 
 def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -54,13 +54,13 @@ def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     entered = {target_of(e): state_of(e) for e in walk.log.events[ret.seq:]
                if e.kind == "enter" and e.target in pieces}
     yield walk.call_beat(Split, "Split along the diagonal into two smaller polygons", call, ret,
-                         pieces=pieces,
+                         pieces=tuple(pieces),
                          parent=walk.ref(call, "piece"),
-                         points=[entered[k]["points"] for k in pieces if k in entered],
-                         labels=[entered[k]["labels"] for k in pieces if k in entered])
+                         points=tuple(points_of(entered[k]["points"]) for k in pieces if k in entered),
+                         labels=tuple(tuple(entered[k]["labels"]) for k in pieces if k in entered))
 
 
-def _tint_colour(board: Board, labels: list[str], avoid: set[str]) -> str:
+def _tint_colour(board: Board, labels: Sequence[str], avoid: set[str]) -> str:
     """A palette colour for a new piece: unlike its neighbours (tints sharing an edge), then the
     least used; ties by palette order."""
     palette = board.theme.pieces

@@ -19,9 +19,12 @@ one's own); a metaphor module declares its own kinds beside the performers that 
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, fields
+from types import MappingProxyType
 from typing import Any, ClassVar, TypeVar, dataclass_transform
+
+from tracing import JSON
 
 #: a point in polygon coordinates, as the log holds it
 Point = tuple[float, float]
@@ -57,6 +60,8 @@ class Hole:
         return cls(points=points_of(hole["points"]), labels=tuple(hole["labels"]))
 
 
+_NO_ROLES: Mapping[str, str] = MappingProxyType({})
+
 #: the fields every beat has; the others are its kind's ``data``
 COMMON = ("caption", "seq", "call", "line", "row", "roles", "pace")
 
@@ -72,8 +77,13 @@ class Beat:
     line: int | None = None
     #: the index of the pseudocode row lit (:func:`story.pseudocode.lit_row`); None: none yet
     row: int | None = None
-    roles: dict[str, str] = field(default_factory=dict)
+    #: label or key → role; read-only (a copy of what the beat was made with)
+    roles: Mapping[str, str] = field(default_factory=lambda: _NO_ROLES)
     pace: float = 1.0
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.roles, MappingProxyType):  # a frozen beat's roles stay as made
+            object.__setattr__(self, "roles", MappingProxyType(dict(self.roles)))
 
     @property
     def data(self) -> dict[str, Any]:
@@ -82,7 +92,7 @@ class Beat:
 
     def to_dict(self) -> dict[str, Any]:
         return {"action": self.action, "caption": self.caption, "seq": self.seq,
-                "call": self.call, "line": self.line, "row": self.row, "roles": self.roles,
+                "call": self.call, "line": self.line, "row": self.row, "roles": dict(self.roles),
                 "data": self.data, "pace": self.pace}
 
 
@@ -168,7 +178,7 @@ class FindDiagonal(Beat):
 class Note(Beat):
     """A caption only; ``details`` are the note's own fields from the log, if any."""
 
-    details: dict[str, Any] = field(default_factory=dict)
+    details: Mapping[str, JSON] = field(default_factory=dict)
 
 
 # --- a heuristic of one's own -------------------------------------------------------------------
@@ -185,4 +195,5 @@ class ShapeChange(Beat):
 
     key: str
     event: str
-    state: dict[str, Any] | None = None
+    #: the shape's drawable state as the log holds it (``kind``, ``at`` …; tracing.Shape)
+    state: Mapping[str, JSON] | None = None

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import random
 import time
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from geometry.check import CheckResult, is_inner_diagonal
@@ -97,7 +97,7 @@ class Hunt:
     verdict: CheckResult | None = None
     first: int | None = None
     checks: int = 0
-    sizes: dict[int, int] = field(default_factory=dict)
+    sizes: Mapping[int, int] = field(default_factory=dict)
     skipped: int = 0
     error: str | None = None
     stopped: bool = False

@@ -31,6 +31,9 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from story.refs import listed
+from tracing import JSON
+
 __all__ = [
     "PANELS",
     "PSEUDOCODE",
@@ -186,10 +189,12 @@ def to_json(pseudocode: Iterable[PseudocodeRow]) -> list[list[Any]]:
     return [[row.text, list(row.calls)] for row in pseudocode]
 
 
-def from_json(rows: Iterable[Sequence[Any]] | None) -> tuple[PseudocodeRow, ...]:
+def from_json(rows: JSON) -> tuple[PseudocodeRow, ...]:
     """Rows from a log's meta (:func:`to_json`).
 
     >>> from_json(to_json([PseudocodeRow("claim BD", ("claim",))]))
     (PseudocodeRow(text='claim BD', calls=('claim',)),)
     """
-    return tuple(PseudocodeRow(str(text), tuple(str(c) for c in calls)) for text, calls in rows or ())
+    what = "the log's meta 'pseudocode'"
+    return tuple(PseudocodeRow(str(text), tuple(str(c) for c in listed(calls, what)))
+                 for text, calls in (listed(row, what) for row in listed(rows, what)))

@@ -33,10 +33,11 @@ geometry.errors.LogFormatError: the log's meta 'shown' is not a string
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from typing import Any, cast
 
 from geometry.errors import LogFormatError
-from tracing import Event, Log
+from tracing import JSON, Event, Log
 
 
 def ref(call: Event, name: str) -> str:
@@ -82,6 +83,97 @@ def result_refs(ret: Event) -> list[str]:
     return [_key(v, f"{what}: an item") for v in ret.result]
 
 
+# --- a value of the log, checked as what a reading takes it for ---------------------------------
+# The log holds plain JSON (tracing.JSON). A reading that takes a value for a list, a list of
+# indices, a string or an object says so through these: a value of another shape is one clear
+# line naming what was read, and the reading gets the type it expects.
+
+
+def listed(value: JSON, what: str) -> Sequence[JSON]:
+    """``value``, a list (None: an empty one).
+
+    >>> listed([1, "a"], "x"), listed(None, "x")
+    ([1, 'a'], ())
+    >>> listed(3, "the result")
+    Traceback (most recent call last):
+    ...
+    geometry.errors.LogFormatError: the result is not a list
+    """
+    if value is None:
+        return ()
+    if isinstance(value, list):
+        return value
+    raise LogFormatError(f"{what} is not a list")
+
+
+def int_list(value: JSON, what: str) -> list[int]:
+    """``value``, a list of integers (vertex indices …).
+
+    >>> int_list([2, 0], "x")
+    [2, 0]
+    >>> int_list([2, "B"], "the stack")
+    Traceback (most recent call last):
+    ...
+    geometry.errors.LogFormatError: the stack is not a list of integers
+    """
+    found = [v for v in listed(value, what) if isinstance(v, int) and not isinstance(v, bool)]
+    if value is None or len(found) != len(listed(value, what)):
+        raise LogFormatError(f"{what} is not a list of integers")
+    return found
+
+
+def integer(value: JSON, what: str) -> int:
+    """``value``, an integer."""
+    if isinstance(value, int) and not isinstance(value, bool):
+        return value
+    raise LogFormatError(f"{what} is not an integer")
+
+
+def string(value: JSON, what: str) -> str:
+    """``value``, a string."""
+    if isinstance(value, str):
+        return value
+    raise LogFormatError(f"{what} is not a string")
+
+
+def json_object(value: JSON, what: str) -> Mapping[str, Any]:
+    """``value``, an object: its fields by name, each read on by the reading (Any: the reading
+    decodes it into its record's field)."""
+    if isinstance(value, dict):
+        return value
+    raise LogFormatError(f"{what} is not an object")
+
+
+def arg_int(call: Event, name: str) -> int:
+    """Argument ``name`` of ``call``, an integer (a vertex index …)."""
+    return integer(arg(call, name), f"the log's call of {call.name}: argument {name!r}")
+
+
+def arg_ints(call: Event, name: str) -> list[int]:
+    """Argument ``name`` of ``call``, a list of integers (vertex indices …)."""
+    return int_list(arg(call, name), f"the log's call of {call.name}: argument {name!r}")
+
+
+def result_list(ret: Event) -> Sequence[JSON]:
+    """What a traced function returned, a list (None: an empty one)."""
+    return listed(ret.result, f"the log's return of {ret.name}: its result")
+
+
+def result_ints(ret: Event) -> list[int]:
+    """What a traced function returned, a list of integers (vertex indices …)."""
+    return int_list(ret.result, f"the log's return of {ret.name}: its result")
+
+
+def result_string(ret: Event) -> str:
+    """What a traced function returned, a string."""
+    return string(ret.result, f"the log's return of {ret.name}: its result")
+
+
+def result_object(ret: Event) -> Mapping[str, Any]:
+    """What a traced function returned, an object (its fields by name)."""
+    return json_object(ret.result, f"the log's return of {ret.name}: its result")
+
+
 def _key(value: Any, what: str) -> str:
     if isinstance(value, dict) and isinstance(value.get("ref"), str):
         key: str = value["ref"]
@@ -101,7 +193,7 @@ def target_of(event: Event) -> str:
 
 
 def state_of(event: Event) -> dict[str, Any]:
-    """The state of an enter or change event."""
+    """The state of an enter or change event (a dict: the log's JSON object)."""
     return cast("dict[str, Any]", event.state)
 
 

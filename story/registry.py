@@ -176,11 +176,11 @@ class Entry:
 
     name: str
     kind: str
-    function: Callable[..., Any]
+    function: Callable[..., object]
     correct: bool
     metaphor: str | None
     shown: str
-    source: Callable[..., Any] | None
+    source: Callable[..., object] | None
     polygon: str
     title: str
     pseudocode: tuple[PseudocodeRow, ...] = ()

@@ -53,7 +53,23 @@ from story.beats import (
 from story.pseudocode import PseudocodeRow, from_json, lit_row, named
 from story.reach import Reach, reach_of
 from story.reading import summarised
-from story.refs import call_of, meta, ref, result_ref, result_refs, state_of, target_of
+from story.refs import (
+    arg_int,
+    arg_ints,
+    call_of,
+    int_list,
+    meta,
+    ref,
+    result_ints,
+    result_list,
+    result_object,
+    result_ref,
+    result_refs,
+    result_string,
+    state_of,
+    string,
+    target_of,
+)
 from story.registry import heuristics, pseudocode
 from story.roles import ROLES
 from story.words import number, said, why_not_inner
@@ -198,6 +214,14 @@ class Walk:
     ref = staticmethod(ref)
     result_ref = staticmethod(result_ref)
     result_refs = staticmethod(result_refs)
+    #: the log's values a reading takes for indices, a list, a string or an object (checked)
+    arg_int = staticmethod(arg_int)
+    arg_ints = staticmethod(arg_ints)
+    int_list = staticmethod(int_list)
+    result_ints = staticmethod(result_ints)
+    result_list = staticmethod(result_list)
+    result_string = staticmethod(result_string)
+    result_object = staticmethod(result_object)
 
     def memo(self, name: str, make: Callable[[], Any]) -> Any:
         """A reading's own state for the whole walk (made on first use)."""
@@ -465,7 +489,8 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
                             roles=call_roles(call, e))
         return
     if e.kind == "note":
-        yield walk.beat(Note, e.args.get("reason", e.name) if e.args else e.name, e,
+        yield walk.beat(Note, string(e.args.get("reason", e.name), f"the log's note {e.name}")
+                        if e.args else e.name, e,
                         details=dict(e.args or {}))
     elif walk.user and e.kind in ("enter", "change", "exit"):
         yield from _shape_beats(walk, e, table)
@@ -489,7 +514,7 @@ def read_pick(caption: str, none_caption: str | None = None) -> Reading:
 
 
 def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    found = [show(v) for v in ret.result or []]
+    found = [show(v) for v in result_list(ret)]
     caption = (f"Candidates inside T: {', '.join(found)}" if found
                else f"No vertex inside T: {_outer_corners(walk, call)} is an inner diagonal")
     yield walk.call_beat(Candidates, caption, call, ret, candidates=tuple(found))
@@ -611,8 +636,8 @@ def _shape_beats(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator
     else:
         walk.drawn.add(key)
         kind = state.get("kind", "shape")
-        caption = state.get("caption") or (
-            f"Drawn: {key} ({kind})" if e.kind == "enter" else f"Changed: {key}")
+        caption = str(state.get("caption") or (
+            f"Drawn: {key} ({kind})" if e.kind == "enter" else f"Changed: {key}"))
     inner = walk.stack[-1] if walk.stack and walk.stack[-1].name != walk.user else None
     roles = call_roles(inner, None) if inner is not None else {}
     if state is not None:

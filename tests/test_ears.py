@@ -109,7 +109,7 @@ def test_convex_polygon_is_clipped_vertex_by_vertex(name):
         result = ALGORITHMS[name](p)
     assert clipped_ears(log) == [["H", "A", "B"], ["H", "B", "C"], ["H", "C", "D"],
                                  ["H", "D", "E"], ["H", "E", "F"]]
-    assert result.triangles == [(0, 1, 7), (1, 2, 7), (2, 3, 7), (3, 4, 7), (4, 5, 7), (5, 6, 7)]
+    assert result.triangles == ((0, 1, 7), (1, 2, 7), (2, 3, 7), (3, 4, 7), (4, 5, 7), (5, 6, 7))
 
 
 def test_naive_tests_from_the_start_after_every_clip():

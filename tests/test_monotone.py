@@ -251,7 +251,7 @@ def test_the_stack_drawn_is_the_stack_of_the_log():
     beats = _lecture_beats()
     steps = [b for b in beats if isinstance(b, StackStep)]
     assert max(len(b.chain) for b in steps) >= 3
-    before: list[str] = []
+    before: tuple[str, ...] = ()
     cut = []
     for b in steps:
         if b.cut:
@@ -259,7 +259,7 @@ def test_the_stack_drawn_is_the_stack_of_the_log():
             assert set(b.cut) - set(before) and len(set(b.cut)) == 3
             cut.append(frozenset(b.cut))
         else:  # a push: on the chain so far, or a new chain of two (the other chain)
-            assert b.chain[:-1] in (before, before[-1:], []) or len(b.chain) == 2, b.caption
+            assert b.chain[:-1] in (before, before[-1:], ()) or len(b.chain) == 2, b.caption
         before = b.chain
     last = next(b for b in reversed(beats) if isinstance(b, Stack))
     p = Polygon.from_points(make_sample("lecture"))

@@ -25,7 +25,7 @@ True
 
 from tracing.decorators import lifetimes as lifetimes  # explicit re-export (not in __all__)
 from tracing.decorators import traced, traced_class
-from tracing.encoding import Traceable, encode
+from tracing.encoding import JSON, Traceable, encode
 from tracing.events import EVENT_KINDS, SCHEMA, Event, Log
 from tracing.recorder import (
     Recording,
@@ -42,6 +42,7 @@ from tracing.shapes import SHAPE_KINDS, Shape
 
 __all__ = [
     "EVENT_KINDS",
+    "JSON",
     "SCHEMA",
     "SHAPE_KINDS",
     "Event",

@@ -9,9 +9,14 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any, Protocol, runtime_checkable
+from collections.abc import Mapping, Sequence
+from typing import Any, Protocol, TypeAlias, Union, runtime_checkable
 
-__all__ = ["MAX_DEPTH", "Traceable", "encode", "trace_key_of"]
+__all__ = ["JSON", "MAX_DEPTH", "Traceable", "encode", "trace_key_of"]
+
+#: Plain JSON data as a log holds it (what :func:`encode` makes, what ``json`` reads back):
+#: objects, arrays, strings, numbers, booleans and null, to be read, not changed.
+JSON: TypeAlias = Union[Mapping[str, "JSON"], Sequence["JSON"], str, int, float, bool, None]  # noqa: UP007  # a recursive alias: its forward refs need Union
 
 #: Containers nested deeper than this are cut off as ``{"type": ...}`` (guards cycles).
 MAX_DEPTH = 32

@@ -8,11 +8,12 @@ were alive at any step (:meth:`Log.state_at`).
 from __future__ import annotations
 
 import json
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any, cast
 
+from tracing.encoding import JSON
 from tracing.replay import LiveStates
 
 __all__ = ["EVENT_KINDS", "SCHEMA", "Event", "Log", "new_event"]
@@ -66,9 +67,9 @@ class Event:
     kind: str
     name: str
     target: str | None = None
-    args: dict[str, Any] | None = None
-    result: Any = None
-    state: dict[str, Any] | None = None
+    args: Mapping[str, JSON] | None = None
+    result: JSON = None
+    state: Mapping[str, JSON] | None = None
     line: int | None = None
     depth: int = 0
     call: int | None = None
@@ -175,7 +176,7 @@ class Log:
     True
     """
 
-    meta: dict[str, Any] = field(default_factory=dict)
+    meta: dict[str, JSON] = field(default_factory=dict)
     events: list[Event] = field(default_factory=list)
     _live: LiveStates | None = field(default=None, init=False, repr=False, compare=False)
 

@@ -10,8 +10,10 @@ replays at most that many events from the nearest checkpoint.
 from __future__ import annotations
 
 import bisect
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any, Protocol, cast
+
+from tracing.encoding import JSON
 
 __all__ = ["CHECKPOINT_EVERY", "LiveStates", "apply_event"]
 
@@ -29,7 +31,7 @@ class Event(Protocol):
     @property
     def target(self) -> str | None: ...
     @property
-    def state(self) -> dict[str, Any] | None: ...
+    def state(self) -> Mapping[str, JSON] | None: ...
 
 
 def apply_event(live: States, event: Event) -> None:

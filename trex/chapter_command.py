@@ -18,6 +18,7 @@ from pathlib import Path
 import click
 
 from story.pseudocode import PANELS
+from tracing import JSON
 from trex.inputs import EXIT_INVALID, call_timeout_option, error_line
 from trex.render_command import (
     EXIT_FAILED,
@@ -54,7 +55,7 @@ def source_fingerprint() -> str:
 
 
 def render_settings(scene_file: str, class_name: str | None, quality: str,
-                    polygon: str | None, panel: str | None) -> dict:
+                    polygon: str | None, panel: str | None) -> dict[str, JSON]:
     """What a chapter's frames depend on, as its step marks record it (``made_by``):
     ``trex slides lecture`` reuses a chapter render whose settings are these."""
     from story.environment import environment_values

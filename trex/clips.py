@@ -22,15 +22,16 @@ from __future__ import annotations
 
 import contextlib
 import json
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, cast
+from typing import cast
 
 import av
 from PIL import Image
 
 from story.step_marks import StepMark
+from tracing import JSON
 
 SCHEMA = "trex-steps/1"
 SUFFIX = ".steps.json"
@@ -43,7 +44,7 @@ class Marks:
 
     steps: tuple[StepMark, ...]
     end: int | None = None
-    made_by: dict[str, Any] | None = None
+    made_by: Mapping[str, JSON] | None = None
 
     def to_json(self) -> str:
         """The marks as ``NAME.steps.json`` holds them.

@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import difflib
 import json
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import Any, cast
 
@@ -181,17 +181,17 @@ def _box_change(old: Any, new: Any) -> str:
 _TOP = ("mobject", "target", "final: mobject")
 
 
-@dataclass
+@dataclass(frozen=True)
 class _Delta:
     """What changed in one mobject node: its own fields (``stroke #A → #B``), its paired parts
     that changed, and its parts added or removed (whole lines)."""
 
     where: str
-    own: list[str]
-    parts: list[_Delta]
-    extra: list[str]
+    own: tuple[str, ...]
+    parts: tuple[_Delta, ...]
+    extra: tuple[str, ...]
 
-    def uniform(self, own: list[str]) -> bool:
+    def uniform(self, own: tuple[str, ...]) -> bool:
         """Whether this node and all its changed parts changed exactly as ``own`` says."""
         return self.own == own and not self.extra and all(p.uniform(own) for p in self.parts)
 
@@ -206,7 +206,7 @@ class _Delta:
             count = sum(p.size() for p in folded)
             also = (f" (its {count} parts too)" if count > 1 else " (its part too)") if count else ""
             yield f"{self.where} {', '.join(self.own)}{also}"
-            rest = [p for p in self.parts if p not in folded]
+            rest: Sequence[_Delta] = [p for p in self.parts if p not in folded]
         elif len(self.parts) > 1 and all(p.uniform(self.parts[0].own) for p in self.parts):
             count = sum(p.size() for p in self.parts)
             yield f"{self.where}: {count} parts {', '.join(self.parts[0].own)}"
@@ -251,7 +251,7 @@ def _delta(old: dict, new: dict, parent: str, index: int, siblings: list) -> _De
     step = _place(old, index, siblings)
     where = f"{parent} {step}" if parent in _TOP else f"{parent} › {step}"
     parts, extra = _children(old.get("submobjects") or [], new.get("submobjects") or [], where)
-    return _Delta(where, _own_changes(old, new), parts, extra)
+    return _Delta(where, tuple(_own_changes(old, new)), tuple(parts), tuple(extra))
 
 
 def _children(old: list, new: list, where: str) -> tuple[list[_Delta], list[str]]:

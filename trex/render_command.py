@@ -20,7 +20,7 @@ import os
 import shutil
 import sys
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -39,6 +39,7 @@ from story.scene_kinds import (
     plays_several,
 )
 from story.spec import RunSpec
+from tracing import JSON
 from trex import encoders, exit_status
 from trex.inputs import (
     call_timeout_option,
@@ -236,7 +237,7 @@ def inflight_encoders(cfg: Path = MANIM_CFG) -> int | None:
 
 def render_into(make_scene: Callable[[], Scene], output: Path, fmt: str, quality: str,
                 *, progress: bool = True, srt: bool = True,
-                signals: Signals | None = None, marks_made_by: dict | None = None,
+                signals: Signals | None = None, marks_made_by: Mapping[str, JSON] | None = None,
                 ) -> Path:
     """Render ``make_scene()`` with manim and move the finished file to ``output``.
 
@@ -288,7 +289,7 @@ def _settings(media: Path, fmt: str, quality: str, progress: bool) -> dict:
 
 def _render_in(make_scene: Callable[[], Scene], temp: Path, output: Path, fmt: str,
                quality: str, *, progress: bool, srt: bool, signals: Signals,
-               marks_made_by: dict | None) -> Path:
+               marks_made_by: Mapping[str, JSON] | None) -> Path:
     """:func:`render_into`'s work, in its temporary directory ``temp``."""
     from manim import tempconfig
 
@@ -318,7 +319,7 @@ def _render_in(make_scene: Callable[[], Scene], temp: Path, output: Path, fmt: s
     return output
 
 
-def _write_marks(scene, video: Path, made_by: dict) -> Path:
+def _write_marks(scene, video: Path, made_by: Mapping[str, JSON]) -> Path:
     """The scene's step marks, beside the video it rendered."""
     from metaphors.recorded import recorded_steps, steps_end
     from trex.clips import Marks, write_marks

@@ -39,16 +39,17 @@ from __future__ import annotations
 import atexit
 import shutil
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, TypeGuard, cast
+from typing import Any, TypedDict, TypeGuard, cast
 
 import numpy as np
 from manim import Animation, AnimationGroup, Mobject, Scene, VMobject, tempconfig
 from manim.renderer.cairo_renderer import CairoRenderer
 
+from tracing import JSON
 from trex.graph_format import SCHEMA, to_json
 
 #: Decimal places kept for points, bounding boxes, run times, widths and opacities.
@@ -173,6 +174,15 @@ def animation_graph(animation: Animation) -> dict[str, Any]:
 # --- recording plays ---------------------------------------------------------------------------
 
 
+class PlayGraph(TypedDict):
+    """One play as the scene graph writes it (docs/scene-graph.md): its run time, its
+    subcaption and its animations (:func:`animation_graph`)."""
+
+    run_time: float
+    subcaption: str | None
+    animations: list[Mapping[str, JSON]]
+
+
 @dataclass
 class Play:
     """One ``Scene.play`` call: the animations (live objects, which go on changing), the
@@ -182,7 +192,7 @@ class Play:
     animations: list[Animation]
     run_time: float
     subcaption: str | None
-    graph: dict[str, Any]
+    graph: PlayGraph
 
 
 @contextmanager
@@ -212,7 +222,7 @@ def recording(scene: Scene) -> Iterator[list[Play]]:
         animations = scene.compile_animations(*args, **kwargs)
         run_time = max((a.run_time for a in animations), default=0.0)
         subcaption = captions.get("subcaption")
-        graph = {
+        graph: PlayGraph = {
             "run_time": _number(run_time),
             "subcaption": subcaption,
             "animations": [animation_graph(a) for a in animations],

@@ -85,7 +85,9 @@ def check_log(cls: type[TraceScene], log: Log, scene: str | None = None) -> None
     that start with the polygon. Raises ValueError (one line)."""
     from metaphors.catalog import beats as storyboard
 
-    logged, plays, name = log.meta["algorithm"], cls.algorithm, scene or cls.__name__
+    logged, plays, name = log.meta.get("algorithm"), cls.algorithm, scene or cls.__name__
+    if not isinstance(logged, str):
+        raise ValueError("is no log of a run: its meta names no algorithm")
     if not _same_algorithm(plays, logged):
         raise ValueError(f"is a log of {logged}, but {name} plays {plays}")
     ran_with, wants = log.meta.get("heuristic"), heuristic_of(cls)

@@ -81,7 +81,7 @@ class UserHeuristic:
     spec: str
     name: str
     path: Path
-    raw: Callable[[Polygon], Any]
+    raw: Callable[[Polygon], object]
     function: Callable[[Polygon], Diagonal]
 
     def __str__(self) -> str:

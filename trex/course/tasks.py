@@ -28,7 +28,7 @@ import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, cast
+from typing import Any, NotRequired, TypedDict, cast
 
 from geometry.io import AnyPolygon
 from story.scene_kinds import Handed, WithPanel, algorithm_of, plays_several
@@ -40,6 +40,67 @@ LECTURE_SCENE = "lecture"  # [[slides]] scene = "lecture": the lecture's slides
 KINDS = ("chapter", "join", "scene", "slides", "student")
 
 
+class ChapterRecord(TypedDict):
+    """A chapter as a task's settings hold it (the fields of :class:`trex.chapters.Chapter`)."""
+
+    number: int
+    slug: str
+    title: str
+    scene_file: str
+    scene_class: str | None
+
+
+class ChapterSettings(TypedDict):
+    """A ``chapter`` task: one chapter, rendered as ``trex lecture`` renders it."""
+
+    chapter: ChapterRecord
+    quality: str
+    polygon: str | None
+    panel: str | None
+
+
+class JoinSettings(TypedDict):
+    """A ``join`` task: the lecture's folder and the chapters it joins."""
+
+    folder: str
+    chapters: list[ChapterRecord]
+
+
+class SceneSettings(TypedDict):
+    """A ``scene`` task: one scene on one polygon, as ``trex render`` renders it."""
+
+    scene: str
+    polygon: str | None
+    format: str
+    quality: str
+    panel: str | None
+
+
+class SlidesSettings(TypedDict):
+    """A ``slides`` task: ``trex slides``' page of a scene, or of the lecture (its chapters
+    and the lecture's folder then)."""
+
+    scene: str
+    quality: str
+    polygon: str | None
+    panel: str | None
+    chapters: NotRequired[list[ChapterRecord]]
+    lecture: NotRequired[str]
+
+
+class StudentSettings(TypedDict):
+    """A ``student`` task: one student's exercise sheets, and a video if asked."""
+
+    n: int
+    seed: int
+    video: bool
+    quality: str
+
+
+#: what a task's body reads, by the task's kind
+Settings = ChapterSettings | JoinSettings | SceneSettings | SlidesSettings | StudentSettings
+
+
 @dataclass(frozen=True)
 class Task:
     """One unit of work: ``files`` (relative to the output directory) it writes, the
@@ -49,7 +110,7 @@ class Task:
     kind: str
     item: str
     files: tuple[str, ...]
-    settings: dict[str, Any] = field(hash=False)
+    settings: Settings = field(hash=False)
     inputs: tuple[str, ...] = ()
     deps: tuple[str, ...] = ()
     fingerprint: str = ""
@@ -191,13 +252,18 @@ def _chapter_tasks(folder: str, item: str, chapters: list, quality: str, polygon
     tasks = []
     for chapter in chapters:
         stem = f"{folder}/{lj.CHAPTER_DIR}/{ch.chapter_stem(chapter)}"
-        settings = {"chapter": _chapter_dict(chapter), "quality": quality, "polygon": polygon,
-                    "panel": panel}
+        settings: ChapterSettings = {"chapter": _chapter_dict(chapter), "quality": quality,
+                                     "polygon": polygon, "panel": panel}
         tasks.append(Task(stem, "chapter", item, (f"{stem}.mp4",), settings, _inputs(polygon)))
     return tasks
 
 
-def _chapter_dict(chapter) -> dict[str, Any]:
+def _chapter_of(task: Task) -> ChapterRecord:
+    """The chapter a ``chapter`` task renders."""
+    return cast(ChapterSettings, task.settings)["chapter"]  # a chapter task's, by its kind
+
+
+def _chapter_dict(chapter) -> ChapterRecord:
     from trex import chapters as ch
 
     return {"number": chapter.number, "slug": chapter.slug, "title": chapter.title,
@@ -215,7 +281,7 @@ def _lecture(course: Course, item: Lecture, checked: _Checked) -> list[Task]:
     files = tuple(f"{folder}/{name}" for name in (lj.VIDEO, lj.SUBTITLES, lj.LIST_JSON,
                                                    lj.LIST_MD, lj.NOTES))
     join = Task(folder, "join", item.name, files,
-                {"folder": folder, "chapters": [t.settings["chapter"] for t in parts]},
+                JoinSettings(folder=folder, chapters=[_chapter_of(t) for t in parts]),
                 deps=tuple(t.id for t in parts))
     return [*parts, join]
 
@@ -234,8 +300,8 @@ def _scene(course: Course, item: SceneItem, checked: _Checked) -> list[Task]:
         if polygon is not None:
             _run_once(item.name, f"polygons[{k}]", cls, polygon, checked)
         name = f"scene-{scene_slug(item.scene)}{_polygon_part(cls, given)}"
-        settings = {"scene": scene, "polygon": polygon, "format": item.format,
-                    "quality": item.quality, "panel": item.panel}
+        settings: SceneSettings = {"scene": scene, "polygon": polygon, "format": item.format,
+                                   "quality": item.quality, "panel": item.panel}
         tasks.append(Task(name, "scene", item.name, (f"{name}.{item.format}",), settings,
                           _inputs(polygon, scene)))
     return tasks
@@ -254,7 +320,7 @@ def _slides(course: Course, item: Slides, checked: _Checked,
             lectures: dict[tuple, list[Task]]) -> list[Task]:
     polygon = _polygon(course, item.polygon)
     name = f"slides-{scene_slug(item.scene)}"
-    settings: dict[str, Any] = {"scene": item.scene, "quality": item.quality,
+    settings: SlidesSettings = {"scene": item.scene, "quality": item.quality,
                                 "polygon": polygon, "panel": item.panel}
     if item.scene == LECTURE_SCENE:
         chapters = _chapters(course, item.name, item.chapters)
@@ -285,8 +351,8 @@ def _students(item: Exercises, first: bool) -> list[Task]:
     tasks = []
     for k in range(1, item.students + 1):
         name = f"{folder}/student-{k}"
-        settings = {"n": item.n, "seed": item.seed + k - 1, "video": item.video,
-                    "quality": item.quality}
+        settings: StudentSettings = {"n": item.n, "seed": item.seed + k - 1,
+                                     "video": item.video, "quality": item.quality}
         files = (f"{name}/answers.md", *((f"{name}/video.mp4",) if item.video else ()))
         tasks.append(Task(name, "student", item.name, files, settings))
     return tasks

@@ -20,7 +20,14 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, cast
 
-from trex.course.tasks import Task
+from trex.course.tasks import (
+    ChapterSettings,
+    JoinSettings,
+    SceneSettings,
+    SlidesSettings,
+    StudentSettings,
+    Task,
+)
 from trex.inputs import error_line
 
 TEMP_SUFFIXES = (".render", ".build", ".join", ".old", ".tmp")  # what sweep may remove
@@ -89,7 +96,8 @@ def _chapter(task: Task, root: Path, _deps) -> tuple[list[str], float]:
     from trex import chapter_command as cc
     from trex.render_command import QUALITIES, load_scene_class, render_into
 
-    s, chapter = task.settings, task.settings["chapter"]
+    s = cast(ChapterSettings, task.settings)  # each body is its kind's (BODIES)
+    chapter = s["chapter"]
     output = root / task.files[0]
     output.parent.mkdir(parents=True, exist_ok=True)
     cls = load_scene_class(Path(chapter["scene_file"]), chapter["scene_class"])
@@ -108,8 +116,9 @@ def _join(task: Task, root: Path, deps: Sequence[Done]) -> tuple[list[str], floa
     from trex import lecture_join as lj
     from trex.assemble import probe
 
-    folder = root / task.settings["folder"]
-    chapters = [ch.Chapter(**c) for c in task.settings["chapters"]]
+    s = cast(JoinSettings, task.settings)
+    folder = root / s["folder"]
+    chapters = [ch.Chapter(**c) for c in s["chapters"]]
     videos = [probe(root / done.files[0]) for done in deps]
     stage = Path(tempfile.mkdtemp(prefix=".lecture.", suffix=".join", dir=folder))
     try:
@@ -125,7 +134,7 @@ def _scene(task: Task, root: Path, _deps) -> tuple[list[str], float]:
     """One scene on one polygon, as ``trex render`` renders it."""
     from trex.render_command import QUALITIES, load_scene_class, render_into, resolve_scene
 
-    s = task.settings
+    s = cast(SceneSettings, task.settings)
     if ".py:" in s["scene"]:
         from metaphors.scene import scene_for_heuristic
 
@@ -147,7 +156,7 @@ def _slides(task: Task, root: Path, _deps) -> tuple[list[str], float]:
     from trex import slides_command as sc
     from trex.scene_inputs import choose
 
-    s = task.settings
+    s = cast(SlidesSettings, task.settings)
     target = root / Path(task.files[0]).parent
     if s["scene"] == "lecture":
         chapters = [ch.Chapter(**c) for c in s["chapters"]]
@@ -169,7 +178,7 @@ def _student(task: Task, root: Path, _deps) -> tuple[list[str], float]:
     from trex.exercises_command import write_exercises
     from trex.output_dir import move_into_place
 
-    s = task.settings
+    s = cast(StudentSettings, task.settings)
     target = root / Path(task.files[0]).parent
     target.parent.mkdir(parents=True, exist_ok=True)
     built = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".build", dir=target.parent))

@@ -24,6 +24,7 @@ from geometry.check import is_inner_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.hole_samples import HOLE_SAMPLES
+from geometry.holes import PolygonWithHoles
 from geometry.io import AnyPolygon, any_polygon_from_rings, polygon_to_json_points, read_rings
 from geometry.polygon import Polygon
 from geometry.predicates import Point
@@ -159,7 +160,7 @@ def check(body: dict) -> dict:
 def rings_of_polygon(polygon: AnyPolygon) -> dict:
     """A valid polygon as a request's ``polygon`` and ``holes``, in its (cleaned) input order."""
     points = polygon_to_json_points(polygon.input_points())
-    starts = getattr(polygon, "starts", (0, polygon.n))
+    starts = polygon.starts if isinstance(polygon, PolygonWithHoles) else (0, polygon.n)
     sizes = [b - a for a, b in itertools.pairwise(starts)]
     rings, at = [], 0
     for size in sizes:

@@ -40,7 +40,7 @@ class Job:
 
     id: str
     kind: str
-    argv: list[str]
+    argv: tuple[str, ...]
     folder: Path
     finish: Callable[[Job, str], object]
     state: str = "queued"
@@ -94,7 +94,7 @@ class Jobs:
         folder.mkdir(parents=True)
         if prepare is not None:
             prepare(folder)
-        argv = [self.python, "-m", "trex", *[a.replace("{folder}", str(folder)) for a in args]]
+        argv = (self.python, "-m", "trex", *[a.replace("{folder}", str(folder)) for a in args])
         job = Job(job_id, kind, argv, folder, finish)
         with self.lock:
             if self.closed:
