@@ -164,11 +164,14 @@ def follower(board: Board, axis: Line, colour: str, name: str,
 
 
 def light(board: Board, label: str, first: bool, axis: Line,
-          clip: shapely.Polygon | None = None) -> tuple[list[Mobject], list[Animation]]:
+          clip: shapely.Polygon | None = None, ahead: shapely.Geometry | None = None,
+          ) -> tuple[list[Mobject], list[Animation]]:
     """A ring round a candidate the tool has just reached: green for the first, amber after.
 
     If the first one is reached by a part of the tool outside the polygon but inside T, that
     part is traced over in red and named: the claim to come will cross an edge there.
+    ``ahead``: what the tool will still sweep over (scene coordinates) while the note is up;
+    the note keeps off it, so that no moving shape crosses a text.
     Returns the new objects (to fade with the tool) and the animations.
     """
     theme = board.theme
@@ -185,16 +188,18 @@ def light(board: Board, label: str, first: bool, axis: Line,
                     "rejected", f"astray:{label}")
         note = tag(text("outside P, inside T", font=theme.font, size=theme.label_size * 0.8,
                         colour=theme.rejected), "rejected", "astray:note")
-        _place(board, note, (p + q) / 2, _tool(axis, clip))
+        _place(board, note, (p + q) / 2, _tool(axis, clip), ahead)
         kept += [trace, note]
         anims += [Create(trace), FadeIn(note), Flash(at, color=theme.rejected, flash_radius=0.35)]
     return kept, anims
 
 
-def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineString) -> None:
-    """Put a note beside a point: on screen, off the polygon, T and the tool if it can, and
-    clear of the vertex labels."""
-    spots = [(np.array(d, dtype=float), buff) for buff in (0.12, 0.45) for d in
+def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineString,
+           ahead: shapely.Geometry | None = None) -> None:
+    """Put a note beside a point: on screen, clear of the vertex labels and of what the tool
+    will still sweep over (``ahead``), crossed by no edge, off the polygon, T and the tool
+    if it can."""
+    spots = [(np.array(d, dtype=float), buff) for buff in (0.12, 0.45, 0.8) for d in
              ((0, 1, 0), (1, 1, 0), (1, 0, 0), (1, -1, 0), (0, -1, 0), (-1, -1, 0), (-1, 0, 0),
               (-1, 1, 0))]
     marks = [m.get_center() for marker in board.markers.values() for m in marker]
@@ -204,6 +209,9 @@ def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineStri
     left, right = -config.frame_width / 2 + 0.1, METAPHOR.x + METAPHOR.width / 2 + 0.4
     shapes = [outline(board.outline), outline(board.objects.get("T")), tool.buffer(0.08)]
     busy = shapely.union_all([g for g in shapes if g is not None])
+    swept = (ahead if ahead is not None else shapely.GeometryCollection()).buffer(NOTE_GAP / 2)
+    # the edges drawn: a text an edge runs through is worse to read than one over a fill
+    edges = shapely.union_all([g.boundary for g in shapes[:2] if g is not None])
 
     def score(spot):
         note.next_to(near, direction=spot[0], buff=spot[1])
@@ -212,8 +220,8 @@ def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineStri
         on_screen = x0 >= left and x1 <= right
         covered = box.intersection(busy).area
         clearance = min(float(np.linalg.norm(note.get_center() - m)) for m in marks)
-        return (on_screen, not box.intersects(labels), -round(covered, 3), min(clearance, 0.6),
-                -spot[1])
+        return (on_screen, not box.intersects(labels), not box.intersects(swept),
+                not box.intersects(edges), -round(covered, 3), min(clearance, 0.6), -spot[1])
 
     best = max(spots, key=score)
     note.next_to(near, direction=best[0], buff=best[1])
@@ -274,12 +282,16 @@ def sweep(board: Board, beat: Sweep) -> None:
     board.scene.add(axis)
     board.play(beat, FadeIn(drawing), run_time=0.6)
     lit, offset = [], 0.0
+    last = reached[-1][0].offset
     for k, (state, label) in enumerate(reached):
         travel = state.offset - offset
         offset = state.offset
         board.play(beat, axis.animate.shift(step * travel),
                    run_time=0.6 + board.length(abs(travel)) / 2.5)
-        kept, anims = light(board, label, k == 0, axis, box)
+        # what the line still sweeps over, from here to its last candidate
+        now, then = _tool(axis, box), _tool(axis.copy().shift(step * (last - offset)), box)
+        ahead = shapely.MultiPoint([*now.coords, *then.coords]).convex_hull
+        kept, anims = light(board, label, k == 0, axis, box, ahead)
         lit += kept
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
     drawing.clear_updaters()

@@ -35,6 +35,8 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     hidden_failures,
+    labels_under_faces,
+    notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
     rushed_questions,
@@ -496,6 +498,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert broken_summaries(data) == [], chapter.slug
     # the panel's small polygon: its labels apart, off its edges, none left out
     assert crowded_panel_labels(data) == [], chapter.slug
+    # no note under a moving tool, no vertex label under the clock's face
+    assert notes_under_moving_tools(data) == [], chapter.slug
+    assert labels_under_faces(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
