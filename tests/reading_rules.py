@@ -1013,3 +1013,51 @@ def labels_under_faces(data: dict) -> list[str]:
                 found |= {f"the {part['name']} covers {v}" for v, box in labels.items()
                           if face.intersects(rectangle(*box))}
     return sorted(found)
+
+
+# --- issue 22 item 4: the correction stays inside P ------------------------------------------------
+
+#: the rising water of Correct Scaling (a run's and an analysis's): what a correction shows
+#: in the water's colour, which the legend keeps for what is inside P
+_RISING = ("flood",)
+#: how much of the water may lie outside its polygon on screen (float clipping's slivers)
+MOST_WATER_OUTSIDE = 1e-3
+
+
+def _paths(node: dict) -> list[list[tuple[float, float]]]:
+    """A node's closed paths as lists of corners: a path ends where the next curve does not
+    start at the last one's end."""
+    points = [tuple(p[:2]) for p in node.get("points", ())]
+    paths: list[list[tuple[float, float]]] = []
+    for k in range(0, len(points) - 3, 4):
+        a, b = points[k], points[k + 3]
+        if not paths or paths[-1][-1] != a:
+            paths.append([a])
+        paths[-1].append(b)
+    return [p for p in paths if len(p) >= 4]
+
+
+def water_outside_polygon(data: dict) -> list[str]:
+    """The rising water (:data:`_RISING`) drawn outside the polygon it rises in, as ``"flood:
+    0.42 outside P"`` (square units on screen): Correct Scaling's water is shown inside P,
+    or the blue would say "inside" where the legend's red says "outside P"."""
+    from shapely.geometry import Polygon as Region
+
+    polygon = None
+    found = {}
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if node.get("name") in _POLYGONS and anim.get("type") in INCOMING \
+                    and node.get("points"):
+                polygon = Region(_corners(node)).buffer(0)
+            for key in ("mobject", "target"):
+                for part in mobject_nodes(anim.get(key, {})):
+                    if part.get("name") not in _RISING or polygon is None:
+                        continue
+                    for corners in (c for piece in mobject_nodes(part) for c in _paths(piece)):
+                        water = Region(corners).buffer(0)
+                        spilt = water.difference(polygon).area
+                        if spilt > MOST_WATER_OUTSIDE:
+                            found[part["name"]] = max(found.get(part["name"], 0.0), spilt)
+    return [f"{name}: {area:.2f} outside P" for name, area in sorted(found.items())]

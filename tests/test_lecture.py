@@ -44,6 +44,7 @@ from tests.reading_rules import (
     stale_endings,
     unreadable_cues,
     unspoken_words,
+    water_outside_polygon,
 )
 from trex import assemble, chapter_pool, lecture_command
 from trex.cli import main
@@ -501,6 +502,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # no note under a moving tool, no vertex label under the clock's face
     assert notes_under_moving_tools(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
+    # issue 22 item 4: the correction's rising water inside P
+    assert water_outside_polygon(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():

@@ -63,6 +63,7 @@ from tests.reading_rules import (
     stale_endings,
     unreadable_cues,
     unspoken_words,
+    water_outside_polygon,
 )
 from tests.test_pseudocode import (
     EXAMPLE,
@@ -343,6 +344,13 @@ def test_no_label_is_under_the_clock_face(case):
     """Issue 22, labels stay readable: the clock's face at B (Rotation) or at C (Correct
     Rotation) covers no vertex label, the hub's own included."""
     assert labels_under_faces(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_rising_water_stays_inside_p(case):
+    """Issue 22 item 4: Correct Scaling's rising water is drawn inside P only; blue water
+    outside P would contradict the legend (red: outside P)."""
+    assert water_outside_polygon(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
