@@ -60,6 +60,8 @@ EPS = 1e-6
 #: the gap kept between a note on the picture and a vertex label (a word's space and more):
 #: nearer, the two read as one text ("Doutside P, inside T")
 NOTE_GAP = 0.12
+#: the gap a tool's line leaves round a vertex label it would run through
+LABEL_GAP = 0.04
 
 
 # --- plain geometry (any coordinates) ------------------------------------------------------------
@@ -136,6 +138,10 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
     if clip is not None:
         start, end = _cut(start, end, clip)
     parts = split_segment(start, end, outline(board.outline), outline(board.objects.get("T")))
+    # a gap where the line would run through a vertex label: the label stays readable
+    labels = shapely.union_all([_box(marker[-1]).buffer(LABEL_GAP, join_style="mitre")
+                                for marker in board.markers.values()])
+    parts = {kind: _around(pieces, labels) for kind, pieces in parts.items()}
     group = VGroup()
     for p, q in parts["inside"]:
         group.add(tag(Line(_3d(p), _3d(q), color=colour, stroke_width=theme.stroke),
@@ -150,6 +156,22 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
     if not group.submobjects:  # keeps `become` happy: always at least one (empty) piece
         group.add(Line(_3d(start), _3d(start), stroke_opacity=0))
     return group
+
+
+def _around(pieces: list[tuple[tuple, tuple]], labels: shapely.Geometry,
+            ) -> list[tuple[tuple, tuple]]:
+    """The pieces with the parts inside ``labels`` cut out.
+
+    >>> _around([((0.0, 0.0), (4.0, 0.0))], shapely.box(1, -1, 2, 1))
+    [((0.0, 0.0), (1.0, 0.0)), ((2.0, 0.0), (4.0, 0.0))]
+    """
+    kept = []
+    for p, q in pieces:
+        for part in _lines(shapely.LineString([p, q]).difference(labels)):
+            a, b = part.coords[0], part.coords[-1]
+            if math.dist(a, b) > 10 * EPS:
+                kept.append(((a[0], a[1]), (b[0], b[1])))
+    return kept
 
 
 def follower(board: Board, axis: Line, colour: str, name: str,

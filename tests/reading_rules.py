@@ -1061,3 +1061,38 @@ def water_outside_polygon(data: dict) -> list[str]:
                         if spilt > MOST_WATER_OUTSIDE:
                             found[part["name"]] = max(found.get(part["name"], 0.0), spilt)
     return [f"{name}: {area:.2f} outside P" for name, area in sorted(found.items())]
+
+
+#: the drawn pieces of a moving tool's line (:func:`metaphors.sweep.drawn_segment`)
+_TOOL_PIECES = ("sweep:", "hand:")
+
+
+def labels_under_tools(data: dict) -> list[str]:
+    """The vertex labels a tool's drawn line runs through where it is recorded (as it
+    appears and as it is cleared away: where it stopped), as ``"the sweep runs through A"``;
+    the labels are those of the polygon drawn last."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as rectangle
+
+    labels: dict[str, tuple[float, float, float, float]] = {}
+    found = set()
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                labels = {}
+            for key in ("mobject", "target"):
+                labels.update(dict(_named_label_boxes(anim.get(key, {}))))
+            for piece in mobject_nodes(node):
+                name = piece.get("name") or ""
+                if not name.startswith(_TOOL_PIECES):
+                    continue
+                for part in mobject_nodes(piece):  # a dashed line's dashes
+                    if len(part.get("points", ())) < 2 or (part.get("stroke_opacity") or 0) == 0:
+                        continue
+                    line = LineString([p[:2] for p in part["points"]])
+                    found |= {f"the {name.split(':')[0]} runs through {v}"
+                              for v, (x0, y0, x1, y1) in labels.items()
+                              if line.intersects(rectangle(x0 + 0.005, y0 + 0.005, x1 - 0.005,
+                                                           y1 - 0.005))}
+    return sorted(found)

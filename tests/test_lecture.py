@@ -36,6 +36,7 @@ from tests.reading_rules import (
     crowded_verdicts,
     hidden_failures,
     labels_under_faces,
+    labels_under_tools,
     notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
@@ -502,6 +503,7 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # no note under a moving tool, no vertex label under the clock's face
     assert notes_under_moving_tools(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
+    assert labels_under_tools(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P
     assert water_outside_polygon(data) == [], chapter.slug
 

@@ -55,6 +55,7 @@ from tests.reading_rules import (
     graph_nodes,
     hidden_failures,
     labels_under_faces,
+    labels_under_tools,
     notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
@@ -344,6 +345,8 @@ def test_no_label_is_under_the_clock_face(case):
     """Issue 22, labels stay readable: the clock's face at B (Rotation) or at C (Correct
     Rotation) covers no vertex label, the hub's own included."""
     assert labels_under_faces(graph(case).data) == [], case.id
+    # nor under the line of a tool where it stands: it leaves a gap round a label
+    assert labels_under_tools(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
