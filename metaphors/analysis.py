@@ -185,17 +185,26 @@ def _kind(kinds: dict[str, Beat], kind: type[B]) -> B | None:
     return cast("B | None", kinds.get(kind.action))
 
 
-def tool_drawing(stage: Canvas, moving: Motion, t: float, colour: str) -> VGroup:
+def tool_drawing(stage: Canvas, moving: Motion, t: float, colour: str,
+                 within: Sequence[Point] | None = None) -> VGroup:
     """The tool at time ``t`` and what it has swept inside T: the region in the one swept
     colour whatever the metaphor, the tool in its own (thick inside T, faint beyond). No red
     yet: the part outside the polygon turns red when the tool has stopped (:func:`fails`).
-    The rising water: all of it in the water's colour — what it covers is not what the
-    argument is about, what is still dry is."""
+    The rising water: in the water's colour — what it covers is not what the argument is
+    about, what is still dry is — and, given the polygon (``within``), only inside it: the
+    shore AC lies outside P, and blue water there would say "inside" where the legend's red
+    says "outside P"; its level is thick inside P, faint outside."""
     theme, corners = stage.theme, moving.triangle
     swept, tool = moving.swept(t), moving.tool(t)
     if moving.rising:
-        return VGroup(region(stage, swept, colour, 0.35, "swept"),
-                      path(stage, tool, colour, theme.stroke * 1.3, "tool"))
+        if within is None:
+            return VGroup(region(stage, swept, colour, 0.35, "flood"),
+                          path(stage, tool, colour, theme.stroke * 1.3, "tool"))
+        return VGroup(
+            region(stage, inside(swept, within), colour, 0.35, "flood"),
+            path(stage, outside(tool, within), colour, theme.thin_stroke, "tool:beyond", None,
+                 0.45),
+            path(stage, inside(tool, within), colour, theme.stroke * 1.3, "tool"))
     return VGroup(
         region(stage, swept, theme.swept, 0.3, "swept", "argument"),
         path(stage, outside(tool, corners), colour, theme.thin_stroke, "tool:beyond", None,
@@ -302,10 +311,11 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
     else:
         m = right.moved
         colour = tool_colour(theme, right.heuristic)
-        if m.rising:  # what the rising water covers may lie outside P: another key
+        if m.rising:  # the water is no swept region: its own key
             first += [*stage.forget_legend(), *stage.key(colour, "under water", "water")]
-        motion_anims, drawing = moving(stage, lambda t: tool_drawing(stage, m, t, colour),
-                                       analysis.slow)
+        motion_anims, drawing = moving(
+            stage, lambda t: tool_drawing(stage, m, t, colour, stage.polygon.points),
+            analysis.slow)
         stage.say(right.moving_beat.caption, (first, 0.6 if first else 1.5), ([FadeIn(drawing)], 0.3),
                   (motion_anims, analysis.slow),
                   ([Indicate(stage.markers[right.pick], color=theme.result)], 0.6))

@@ -16,7 +16,9 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
-from manim import DEGREES, Circle, Dot, FadeIn, FadeOut, Line, Rotate, VGroup
+import shapely
+from manim import DEGREES, Dot, FadeIn, FadeOut, Line, Rotate, VGroup
+from manim import Polygon as MPolygon
 
 from metaphors.board import Board
 from metaphors.performing import Performances, act, performs
@@ -72,8 +74,10 @@ def clock(board: Board, beat: Clock) -> None:
     reach = max(float(np.linalg.norm(board.vertex(label) - centre)) for label in labels)
     tip = centre + _unit(board.at(_ahead(origin, heading)) - centre) * (reach + HAND_MARGIN)
 
-    face = tag(Circle(radius=FACE_RADIUS, color=theme.dial, stroke_width=theme.thin_stroke,
-                      fill_color=theme.dial, fill_opacity=0.12).move_to(centre), "idle", "dial")
+    last = reached[-1][0].angle
+    face = tag(MPolygon(*_face(centre, tip, sign * last), color=theme.dial,
+                        stroke_width=theme.thin_stroke, fill_color=theme.dial,
+                        fill_opacity=0.12), "idle", "dial")
     marks = {label: _mark(board, centre, board.vertex(label), theme.dial, f"mark:{label}")
              for label in labels}
     twelve = _mark(board, centre, tip, theme.hand, "mark:start", long=True)
@@ -90,7 +94,8 @@ def clock(board: Board, beat: Clock) -> None:
         turned = state.angle
         board.play(beat, Rotate(axis, angle=sign * step * DEGREES, about_point=centre),
                    run_time=0.6 + abs(step) / 60)
-        kept, anims = light(board, label, k == 0, axis)
+        kept, anims = light(board, label, k == 0, axis,
+                            ahead=_wedge(centre, axis.get_end(), sign * (last - turned)))
         lit += kept
         mark = marks[label]
         colour = theme.result if k == 0 else theme.argument
@@ -99,6 +104,47 @@ def clock(board: Board, beat: Clock) -> None:
     hand.clear_updaters()
     board.scene.remove(axis)
     board.play(beat, *[FadeOut(m) for m in (dial, hand, hub, *lit)], run_time=0.5)
+
+
+#: degrees the face reaches past the hand's first and last directions: room for the marks
+FACE_PAD = 12.0
+
+
+def _face(centre: np.ndarray, tip: np.ndarray, degrees: float) -> list[np.ndarray]:
+    """The clock face: the part of a disk the hand turns through (from ``tip``'s direction by
+    ``degrees``, counter-clockwise if positive), a little wider, not the whole disk. The
+    vertex label at the hub lies outside the polygon, away from the way the hand turns: a
+    whole face would cover it (B in Rotation, C in Correct Rotation).
+
+    >>> corners = _face(np.array([0.0, 0, 0]), np.array([2.0, 0, 0]), 90)
+    >>> [round(float(c), 2) for c in corners[1][:2]], [round(float(c), 2) for c in corners[-1][:2]]
+    ([0.54, -0.11], [-0.11, 0.54])
+    """
+    (dx, dy) = (tip - centre)[:2]
+    start = math.atan2(dy, dx) - math.copysign(math.radians(FACE_PAD), degrees)
+    span = degrees + math.copysign(2 * FACE_PAD, degrees)
+    steps = max(2, math.ceil(abs(span) / 4) + 1)
+    rim = [centre + FACE_RADIUS * np.array([math.cos(start + math.radians(span) * k / (steps - 1)),
+                                            math.sin(start + math.radians(span) * k / (steps - 1)),
+                                            0.0]) for k in range(steps)]
+    return [centre, *rim]
+
+
+def _wedge(centre: np.ndarray, tip: np.ndarray, degrees: float) -> shapely.Polygon:
+    """What a hand from ``centre`` to ``tip`` sweeps over as it turns by ``degrees``
+    (counter-clockwise if positive): a fan, in scene coordinates.
+
+    >>> round(_wedge(np.array([0.0, 0, 0]), np.array([1.0, 0, 0]), 90).area, 2)  # a quarter disk
+    0.79
+    """
+    (cx, cy), (dx, dy) = centre[:2], (tip - centre)[:2]
+    steps = max(2, math.ceil(abs(degrees) / 3) + 1)
+    fan = [(cx, cy)]
+    for k in range(steps):
+        a = math.radians(degrees * k / (steps - 1))
+        fan.append((cx + dx * math.cos(a) - dy * math.sin(a), cy + dx * math.sin(a) + dy * math.cos(a)))
+    shape = shapely.Polygon(fan)
+    return shape if shape.area > 1e-9 else shapely.LineString(fan[:2]).buffer(1e-6)
 
 
 def _mark(board: Board, centre: np.ndarray, towards: np.ndarray, colour: str, name: str,

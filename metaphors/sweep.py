@@ -60,6 +60,8 @@ EPS = 1e-6
 #: the gap kept between a note on the picture and a vertex label (a word's space and more):
 #: nearer, the two read as one text ("Doutside P, inside T")
 NOTE_GAP = 0.12
+#: the gap a tool's line leaves round a vertex label it would run through
+LABEL_GAP = 0.04
 
 
 # --- plain geometry (any coordinates) ------------------------------------------------------------
@@ -136,6 +138,10 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
     if clip is not None:
         start, end = _cut(start, end, clip)
     parts = split_segment(start, end, outline(board.outline), outline(board.objects.get("T")))
+    # a gap where the line would run through a vertex label: the label stays readable
+    labels = shapely.union_all([_box(marker[-1]).buffer(LABEL_GAP, join_style="mitre")
+                                for marker in board.markers.values()])
+    parts = {kind: _around(pieces, labels) for kind, pieces in parts.items()}
     group = VGroup()
     for p, q in parts["inside"]:
         group.add(tag(Line(_3d(p), _3d(q), color=colour, stroke_width=theme.stroke),
@@ -152,6 +158,22 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
     return group
 
 
+def _around(pieces: list[tuple[tuple, tuple]], labels: shapely.Geometry,
+            ) -> list[tuple[tuple, tuple]]:
+    """The pieces with the parts inside ``labels`` cut out.
+
+    >>> _around([((0.0, 0.0), (4.0, 0.0))], shapely.box(1, -1, 2, 1))
+    [((0.0, 0.0), (1.0, 0.0)), ((2.0, 0.0), (4.0, 0.0))]
+    """
+    kept = []
+    for p, q in pieces:
+        for part in _lines(shapely.LineString([p, q]).difference(labels)):
+            a, b = part.coords[0], part.coords[-1]
+            if math.dist(a, b) > 10 * EPS:
+                kept.append(((a[0], a[1]), (b[0], b[1])))
+    return kept
+
+
 def follower(board: Board, axis: Line, colour: str, name: str,
              clip: shapely.Polygon | None = None) -> VGroup:
     """The visible drawing of an (invisible) axis line: redrawn whenever the axis moves."""
@@ -164,11 +186,14 @@ def follower(board: Board, axis: Line, colour: str, name: str,
 
 
 def light(board: Board, label: str, first: bool, axis: Line,
-          clip: shapely.Polygon | None = None) -> tuple[list[Mobject], list[Animation]]:
+          clip: shapely.Polygon | None = None, ahead: shapely.Geometry | None = None,
+          ) -> tuple[list[Mobject], list[Animation]]:
     """A ring round a candidate the tool has just reached: green for the first, amber after.
 
     If the first one is reached by a part of the tool outside the polygon but inside T, that
     part is traced over in red and named: the claim to come will cross an edge there.
+    ``ahead``: what the tool will still sweep over (scene coordinates) while the note is up;
+    the note keeps off it, so that no moving shape crosses a text.
     Returns the new objects (to fade with the tool) and the animations.
     """
     theme = board.theme
@@ -185,16 +210,18 @@ def light(board: Board, label: str, first: bool, axis: Line,
                     "rejected", f"astray:{label}")
         note = tag(text("outside P, inside T", font=theme.font, size=theme.label_size * 0.8,
                         colour=theme.rejected), "rejected", "astray:note")
-        _place(board, note, (p + q) / 2, _tool(axis, clip))
+        _place(board, note, (p + q) / 2, _tool(axis, clip), ahead)
         kept += [trace, note]
         anims += [Create(trace), FadeIn(note), Flash(at, color=theme.rejected, flash_radius=0.35)]
     return kept, anims
 
 
-def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineString) -> None:
-    """Put a note beside a point: on screen, off the polygon, T and the tool if it can, and
-    clear of the vertex labels."""
-    spots = [(np.array(d, dtype=float), buff) for buff in (0.12, 0.45) for d in
+def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineString,
+           ahead: shapely.Geometry | None = None) -> None:
+    """Put a note beside a point: on screen, clear of the vertex labels and of what the tool
+    will still sweep over (``ahead``), crossed by no edge, off the polygon, T and the tool
+    if it can."""
+    spots = [(np.array(d, dtype=float), buff) for buff in (0.12, 0.45, 0.8) for d in
              ((0, 1, 0), (1, 1, 0), (1, 0, 0), (1, -1, 0), (0, -1, 0), (-1, -1, 0), (-1, 0, 0),
               (-1, 1, 0))]
     marks = [m.get_center() for marker in board.markers.values() for m in marker]
@@ -204,6 +231,9 @@ def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineStri
     left, right = -config.frame_width / 2 + 0.1, METAPHOR.x + METAPHOR.width / 2 + 0.4
     shapes = [outline(board.outline), outline(board.objects.get("T")), tool.buffer(0.08)]
     busy = shapely.union_all([g for g in shapes if g is not None])
+    swept = (ahead if ahead is not None else shapely.GeometryCollection()).buffer(NOTE_GAP / 2)
+    # the edges drawn: a text an edge runs through is worse to read than one over a fill
+    edges = shapely.union_all([g.boundary for g in shapes[:2] if g is not None])
 
     def score(spot):
         note.next_to(near, direction=spot[0], buff=spot[1])
@@ -212,8 +242,8 @@ def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineStri
         on_screen = x0 >= left and x1 <= right
         covered = box.intersection(busy).area
         clearance = min(float(np.linalg.norm(note.get_center() - m)) for m in marks)
-        return (on_screen, not box.intersects(labels), -round(covered, 3), min(clearance, 0.6),
-                -spot[1])
+        return (on_screen, not box.intersects(labels), not box.intersects(swept),
+                not box.intersects(edges), -round(covered, 3), min(clearance, 0.6), -spot[1])
 
     best = max(spots, key=score)
     note.next_to(near, direction=best[0], buff=best[1])
@@ -274,12 +304,16 @@ def sweep(board: Board, beat: Sweep) -> None:
     board.scene.add(axis)
     board.play(beat, FadeIn(drawing), run_time=0.6)
     lit, offset = [], 0.0
+    last = reached[-1][0].offset
     for k, (state, label) in enumerate(reached):
         travel = state.offset - offset
         offset = state.offset
         board.play(beat, axis.animate.shift(step * travel),
                    run_time=0.6 + board.length(abs(travel)) / 2.5)
-        kept, anims = light(board, label, k == 0, axis, box)
+        # what the line still sweeps over, from here to its last candidate
+        now, then = _tool(axis, box), _tool(axis.copy().shift(step * (last - offset)), box)
+        ahead = shapely.MultiPoint([*now.coords, *then.coords]).convex_hull
+        kept, anims = light(board, label, k == 0, axis, box, ahead)
         lit += kept
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
     drawing.clear_updaters()

@@ -11,7 +11,16 @@ from collections.abc import Mapping
 from typing import Any
 
 import shapely
-from manim import FadeIn, FadeOut, Indicate, Mobject, Transform, UpdateFromAlphaFunc, config
+from manim import (
+    FadeIn,
+    FadeOut,
+    Indicate,
+    Mobject,
+    Transform,
+    UpdateFromAlphaFunc,
+    VMobject,
+    config,
+)
 from manim import Polygon as MPolygon
 
 from geometry.visibility import visible_region
@@ -143,14 +152,22 @@ def walled_water(board: Board, beat: WalledWater) -> None:
     board.play(beat, FadeOut(disk), run_time=0.5)
 
 
-def _region_mobject(board: Board, geometry: shapely.Geometry) -> MPolygon:
-    parts = list(shapely.get_parts(geometry))
-    largest = max(parts, key=lambda g: g.area) if parts else None
-    if largest is None or largest.is_empty or largest.geom_type != "Polygon":
-        return tag(MPolygon(board.at((0, 0)), board.at((0, 0))), "argument", "water")
-    corners = [board.at(p) for p in list(largest.exterior.coords)[:-1]]
-    return tag(MPolygon(*corners, color=board.theme.water, stroke_width=board.theme.thin_stroke,
-                        fill_color=board.theme.water, fill_opacity=0.3), "argument", "water")
+def _region_mobject(board: Board, geometry: shapely.Geometry, name: str = "water",
+                    at: Point = (0.0, 0.0)) -> VMobject:
+    """The polygons of a region (polygon coordinates) as one filled shape, each part a path
+    of its own: water clipped to the polygon may lie in two pools. No part: an invisible
+    point at ``at``."""
+    parts = [g for g in shapely.get_parts(geometry) if g.geom_type == "Polygon" and not g.is_empty]
+    shape = VMobject(color=board.theme.water, stroke_width=board.theme.thin_stroke,
+                     fill_color=board.theme.water, fill_opacity=0.3)
+    if not parts:
+        shape.set_points_as_corners([board.at(at), board.at(at)])
+        shape.set_stroke(opacity=0).set_fill(opacity=0)
+    for part in parts:
+        corners = [board.at(p) for p in part.exterior.coords]
+        shape.start_new_path(corners[0])
+        shape.add_points_as_corners(corners[1:])
+    return tag(shape, "argument", name)
 
 
 def flood(board: Board, beat: Flood) -> None:
@@ -159,17 +176,20 @@ def flood(board: Board, beat: Flood) -> None:
     states = beat.states
     a, c = states[0].shore
     towards = states[0].towards
-    triangle = shapely.Polygon([a, c, towards])
-    band = tag(MPolygon(board.at(a), board.at(c)), "argument", "flood")
+    # the water inside P only: the shore AC lies outside P where P has a notch, and water
+    # drawn there in blue would contradict the legend (red: outside P)
+    inner = shapely.Polygon(board.polygon.points).intersection(shapely.Polygon([a, c, towards]))
+    band = _region_mobject(board, shapely.GeometryCollection(), "flood",
+                           ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2))
     board.play(beat, FadeIn(band), run_time=0.3)
     for state, reached in hits(states[1:]):
-        wet = triangle.intersection(_strip(a, c, towards, state.level))
+        wet = inner.intersection(_strip(a, c, towards, state.level))
         drowned = board.markers[reached]
         is_last = state is states[-1]
         # going under is no failure: amber, as the clock's and the sweep's later candidates
         # (red means "fails", metaphors.theme's legend); the last one, the pick, green
         colour = board.theme.result if is_last else board.theme.argument
-        board.play(beat, Transform(band, _region_mobject(board, wet)),
+        board.play(beat, Transform(band, _region_mobject(board, wet, "flood")),
                    Indicate(drowned, color=colour), run_time=1.2)
     board.play(beat, FadeOut(band), run_time=0.5)
 

@@ -890,3 +890,209 @@ def crowded_exercises(data: dict) -> list[str]:
             if any(e.distance(b) < LEAST_LABEL_GAP for e in edges):
                 found.append(f"label {text} on an edge")
     return found
+
+
+# --- issue 22: no text under a moving shape --------------------------------------------------------
+
+#: the margin round the polygon's box that a sweeping line is drawn in
+#: (:func:`metaphors.sweep._long_line`): the long invisible axis is cut to it on screen
+SWEEP_MARGIN = 0.35
+
+
+def _segment(node: dict) -> tuple[tuple[float, float], tuple[float, float]]:
+    """A line node's ends."""
+    (x0, y0, _), (x1, y1, _) = node["points"][0], node["points"][-1]
+    return (x0, y0), (x1, y1)
+
+
+def _fan(hub, tip, towards):
+    """The fan a hand from ``hub`` to ``tip`` sweeps turning (the short way) until it points
+    at ``towards``."""
+    import math
+
+    from shapely.geometry import Polygon as Region
+
+    start = math.atan2(tip[1] - hub[1], tip[0] - hub[0])
+    turn = (math.atan2(towards[1] - hub[1], towards[0] - hub[0]) - start + math.pi) \
+        % (2 * math.pi) - math.pi
+    r = math.dist(hub, tip)
+    steps = max(2, math.ceil(abs(math.degrees(turn)) / 3) + 1)
+    return Region([hub, *((hub[0] + r * math.cos(start + turn * k / (steps - 1)),
+                           hub[1] + r * math.sin(start + turn * k / (steps - 1)))
+                          for k in range(steps))]).buffer(0)
+
+
+def _centre(node: dict) -> tuple[float, float]:
+    points = node["points"]
+    return (sum(p[0] for p in points) / len(points), sum(p[1] for p in points) / len(points))
+
+
+def notes_under_moving_tools(data: dict) -> list[str]:
+    """The notes on the picture (:data:`_NOTES`) that a tool moving after them sweeps over
+    while they are up, as ``"'outside P, inside T' under the sweep"``: the sweeping line's
+    path from where it starts to where it stops (cut to the picture as it is drawn), or the
+    clock hand's fan up to the candidate it lights next. Only the moves' ends are recorded,
+    so the path between them is the one the tool takes: a translation, a turn about the hub."""
+    from shapely.geometry import MultiPoint
+    from shapely.geometry import box as rectangle
+
+    plays = data["plays"]
+    notes: dict[str, tuple[str, tuple]] = {}
+    picture = None
+    found = set()
+    for k, play in enumerate(plays):
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            name = node.get("name")
+            if name in _POLYGONS and anim.get("type") in INCOMING and node.get("points"):
+                x0, y0, x1, y1 = _box_of(node)
+                picture = rectangle(x0 - SWEEP_MARGIN, y0 - SWEEP_MARGIN, x1 + SWEEP_MARGIN,
+                                    y1 + SWEEP_MARGIN)
+            for part in mobject_nodes(node):
+                if part.get("name") in _NOTES and part.get("box"):
+                    if anim.get("type") in OUTGOING:
+                        notes.pop(part["text"], None)
+                    else:
+                        notes[part["text"]] = (part["text"], tuple(part["box"]))
+            swept = None
+            if name == "sweep" and "target" in anim and node.get("points"):
+                ends = [*_segment(node), *_segment(anim["target"])]
+                swept = MultiPoint(ends).convex_hull
+                swept = swept.intersection(picture) if picture is not None else swept
+            elif name == "hand" and anim.get("type") == "Rotate" and node.get("points"):
+                lit = next((a["mobject"] for later in plays[k + 1:k + 2]
+                            for a in later["animations"]
+                            if (a.get("mobject", {}).get("name") or "").startswith("lit:")), None)
+                if lit is not None:
+                    hub, tip = _segment(node)
+                    swept = _fan(hub, tip, _centre(lit))
+            if swept is None or swept.is_empty:
+                continue
+            for text, (x0, y0, x1, y1) in notes.values():
+                if rectangle(x0, y0, x1, y1).intersects(swept):
+                    found.add(f"{text!r} under the {name}")
+    return sorted(found)
+
+
+#: the metaphors' faces drawn round a vertex (the clock's dial): a vertex label under one is
+#: read through its fill and rim
+_FACES = ("dial",)
+
+
+def _outline(node: dict):
+    """A closed node's outline as a shapely polygon: its curves' anchor points."""
+    from shapely.geometry import Polygon as Region
+
+    corners = [(x, y) for x, y, _ in node["points"][::4]]
+    return Region(corners).buffer(0) if len(corners) >= 3 else None
+
+
+def labels_under_faces(data: dict) -> list[str]:
+    """The vertex labels a face (:data:`_FACES`) covers, as ``"the dial covers B"``; the labels
+    are those of the polygon drawn last before the face, at the places they were last
+    drawn."""
+    from shapely.geometry import box as rectangle
+
+    labels: dict[str, tuple[float, float, float, float]] = {}
+    found = set()
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                labels = {}
+            for key in ("mobject", "target"):
+                labels.update(dict(_named_label_boxes(anim.get(key, {}))))
+            if anim.get("type") not in INCOMING:
+                continue
+            for part in mobject_nodes(node):
+                if part.get("name") not in _FACES or not part.get("points"):
+                    continue
+                face = _outline(part)
+                if face is None:
+                    continue
+                found |= {f"the {part['name']} covers {v}" for v, box in labels.items()
+                          if face.intersects(rectangle(*box))}
+    return sorted(found)
+
+
+# --- issue 22 item 4: the correction stays inside P ------------------------------------------------
+
+#: the rising water of Correct Scaling (a run's and an analysis's): what a correction shows
+#: in the water's colour, which the legend keeps for what is inside P
+_RISING = ("flood",)
+#: how much of the water may lie outside its polygon on screen (float clipping's slivers)
+MOST_WATER_OUTSIDE = 1e-3
+
+
+def _paths(node: dict) -> list[list[tuple[float, float]]]:
+    """A node's closed paths as lists of corners: a path ends where the next curve does not
+    start at the last one's end."""
+    points = [tuple(p[:2]) for p in node.get("points", ())]
+    paths: list[list[tuple[float, float]]] = []
+    for k in range(0, len(points) - 3, 4):
+        a, b = points[k], points[k + 3]
+        if not paths or paths[-1][-1] != a:
+            paths.append([a])
+        paths[-1].append(b)
+    return [p for p in paths if len(p) >= 4]
+
+
+def water_outside_polygon(data: dict) -> list[str]:
+    """The rising water (:data:`_RISING`) drawn outside the polygon it rises in, as ``"flood:
+    0.42 outside P"`` (square units on screen): Correct Scaling's water is shown inside P,
+    or the blue would say "inside" where the legend's red says "outside P"."""
+    from shapely.geometry import Polygon as Region
+
+    polygon = None
+    found = {}
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if node.get("name") in _POLYGONS and anim.get("type") in INCOMING \
+                    and node.get("points"):
+                polygon = Region(_corners(node)).buffer(0)
+            for key in ("mobject", "target"):
+                for part in mobject_nodes(anim.get(key, {})):
+                    if part.get("name") not in _RISING or polygon is None:
+                        continue
+                    for corners in (c for piece in mobject_nodes(part) for c in _paths(piece)):
+                        water = Region(corners).buffer(0)
+                        spilt = water.difference(polygon).area
+                        if spilt > MOST_WATER_OUTSIDE:
+                            found[part["name"]] = max(found.get(part["name"], 0.0), spilt)
+    return [f"{name}: {area:.2f} outside P" for name, area in sorted(found.items())]
+
+
+#: the drawn pieces of a moving tool's line (:func:`metaphors.sweep.drawn_segment`)
+_TOOL_PIECES = ("sweep:", "hand:")
+
+
+def labels_under_tools(data: dict) -> list[str]:
+    """The vertex labels a tool's drawn line runs through where it is recorded (as it
+    appears and as it is cleared away: where it stopped), as ``"the sweep runs through A"``;
+    the labels are those of the polygon drawn last."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as rectangle
+
+    labels: dict[str, tuple[float, float, float, float]] = {}
+    found = set()
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                labels = {}
+            for key in ("mobject", "target"):
+                labels.update(dict(_named_label_boxes(anim.get(key, {}))))
+            for piece in mobject_nodes(node):
+                name = piece.get("name") or ""
+                if not name.startswith(_TOOL_PIECES):
+                    continue
+                for part in mobject_nodes(piece):  # a dashed line's dashes
+                    if len(part.get("points", ())) < 2 or (part.get("stroke_opacity") or 0) == 0:
+                        continue
+                    line = LineString([p[:2] for p in part["points"]])
+                    found |= {f"the {name.split(':')[0]} runs through {v}"
+                              for v, (x0, y0, x1, y1) in labels.items()
+                              if line.intersects(rectangle(x0 + 0.005, y0 + 0.005, x1 - 0.005,
+                                                           y1 - 0.005))}
+    return sorted(found)

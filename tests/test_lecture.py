@@ -35,6 +35,9 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     hidden_failures,
+    labels_under_faces,
+    labels_under_tools,
+    notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
     rushed_questions,
@@ -42,6 +45,7 @@ from tests.reading_rules import (
     stale_endings,
     unreadable_cues,
     unspoken_words,
+    water_outside_polygon,
 )
 from trex import assemble, chapter_pool, lecture_command
 from trex.cli import main
@@ -496,6 +500,12 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert broken_summaries(data) == [], chapter.slug
     # the panel's small polygon: its labels apart, off its edges, none left out
     assert crowded_panel_labels(data) == [], chapter.slug
+    # no note under a moving tool, no vertex label under the clock's face
+    assert notes_under_moving_tools(data) == [], chapter.slug
+    assert labels_under_faces(data) == [], chapter.slug
+    assert labels_under_tools(data) == [], chapter.slug
+    # issue 22 item 4: the correction's rising water inside P
+    assert water_outside_polygon(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
@@ -716,3 +726,30 @@ def test_a_run_played_again_is_a_replay_and_one_step_per_piece_is_not():
     asked = [s for s in steps if s[2] == "Find an inner diagonal of this polygon"]
     assert len(asked) >= 4 and len({s[:3] for s in asked}) < len(asked)  # same words …
     assert len(set(asked)) == len(asked)  # … over another piece each time
+
+
+def test_the_frame_card_names_the_candidates_its_figure_shows():
+    """Issue 22, no caption contradicting the picture: a card's line that picks a candidate
+    by name picks one its figure shows as a candidate ("candidates in T: G, H"), not the
+    figure's reflex D ("Otherwise pick a candidate D: is BD?")."""
+    from tests.reading_rules import mobject_nodes
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    chapter = next(c for c in lecture_chapters() if c.slug == "heuristics")
+    data = build(_chapter_class(chapter).handed()).data
+    shown: set[str] = set()
+    picked = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            texts = " ".join(n.get("text") or "" for n in mobject_nodes(node))
+            if node.get("name") == "card:title":
+                shown = set()
+            if node.get("name") == "figure:label" and "candidates in T:" in texts:
+                shown = set(re.findall(r"\b[A-Z]\b", texts.split("candidates in T:")[1]))
+            if node.get("name") == "card:line" and anim.get("type") in ("FadeIn", "Write"):
+                picked += [(name, frozenset(shown)) for name in
+                           re.findall(r"\bcandidate,? (?:say )?([A-Z])\b", " ".join(texts.split()))]
+    assert picked, "the frame card picks no candidate by name"
+    assert [name for name, shown in picked if shown and name not in shown] == []

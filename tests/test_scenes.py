@@ -54,6 +54,9 @@ from tests.reading_rules import (
     crowded_verdicts,
     graph_nodes,
     hidden_failures,
+    labels_under_faces,
+    labels_under_tools,
+    notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
     shapes_under_text,
@@ -61,6 +64,7 @@ from tests.reading_rules import (
     stale_endings,
     unreadable_cues,
     unspoken_words,
+    water_outside_polygon,
 )
 from tests.test_pseudocode import (
     EXAMPLE,
@@ -326,6 +330,30 @@ def test_the_picture_keeps_off_the_text(case):
     """Issue 22, no text over the picture: a growing shape (Scaling's spilled water) stays
     on the screen and off the subtitle's and the title's lines."""
     assert shapes_under_text(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_note_is_under_a_moving_tool(case):
+    """Issue 22, no text under a moving shape: the note a tool writes on the picture
+    ("outside P, inside T") is clear of the path the line or the hand still sweeps while the
+    note is up, not only of where the tool stands when it is written."""
+    assert notes_under_moving_tools(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_label_is_under_the_clock_face(case):
+    """Issue 22, labels stay readable: the clock's face at B (Rotation) or at C (Correct
+    Rotation) covers no vertex label, the hub's own included."""
+    assert labels_under_faces(graph(case).data) == [], case.id
+    # nor under the line of a tool where it stands: it leaves a gap round a label
+    assert labels_under_tools(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_rising_water_stays_inside_p(case):
+    """Issue 22 item 4: Correct Scaling's rising water is drawn inside P only; blue water
+    outside P would contradict the legend (red: outside P)."""
+    assert water_outside_polygon(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))

@@ -86,7 +86,9 @@ class Heuristics(LectureScene):
         frame = Card("The frame every heuristic shares", (
             "B: the left-most vertex (lowest on ties) — always convex: P lies to its right.",
             "A and C: its neighbours; T = triangle ABC.",
-            "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate D: is BD?"),
+            # the figure's own names: its D is a reflex vertex outside T, its candidates G, H
+            "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate, "
+            "say G: is BG inner?"),
             Figure("frame"))
         families = [family_segments(f, INTRO_FIRST if k == 0 else INTRO_AGAIN)
                     for k, f in enumerate(FAMILIES)]
