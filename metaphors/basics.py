@@ -68,8 +68,9 @@ def candidates(board: Board, beat: Candidates) -> None:
 
 def claim(board: Board, beat: Claim) -> None:
     u, v = beat.points
-    line = tag(Line(board.at(u), board.at(v), color=board.theme.result,
-                    stroke_width=board.theme.stroke * 1.5), "result", "claim")
+    # Amber until judged: green is kept for a claim that holds, red for one that fails.
+    line = tag(Line(board.at(u), board.at(v), color=board.theme.argument,
+                    stroke_width=board.theme.stroke * 1.5), "argument", "claim")
     board.keep("claim", line)
     board.play(beat, Create(line), run_time=1.0)
 
@@ -91,11 +92,14 @@ def _judged(board: Board, beat: Verdict) -> None:
         if line is not None:  # beside the claim, clear of every edge and label
             mark.move_to(board_spot(board, mark, line))
         board.keep("verdict", mark)
-        board.play(beat, FadeIn(mark, scale=1.5), run_time=1.0)
+        held = [] if line is None else [line.animate.set_color(theme.result)]
+        if line is not None:
+            tag(line, "result", "claim")
+        board.play(beat, *held, FadeIn(mark, scale=1.5), run_time=1.0)
         return
     anims: list[Playable] = []
     if line is not None:
-        anims.append(line.animate.set_color(theme.rejected))
+        anims.append(tag(line, "rejected", "claim").animate.set_color(theme.rejected))
     edge = beat.edge
     if edge:
         crossed = crossed_edge(board.vertex(edge[0]), board.vertex(edge[1]),

@@ -10,7 +10,8 @@ The legend: each colour has one meaning for the whole lecture and every scene.
 field         colour      meaning
 ============  ==========  ===========================================================
 called        blue        the object a call runs on (a vertex being looked at)
-argument      amber       a call's other inputs while it runs; a diagonal being drawn
+argument      amber       a call's other inputs while it runs; a diagonal being drawn;
+                          a claim not yet judged (then green or red)
 result        green       what a call gives; a correct claim; a triangulation's count
 rejected      red         fails: a wrong claim, its part outside P, the crossed edge,
                           a vertex inside a triangle that is not an ear — never a kind

@@ -534,8 +534,9 @@ def _read_claim(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     state = walk.live.get(key) or walk.entered_after(ret, key)
     u, v = state["labels"]
     name = f"{u}{v}"
+    # amber ("argument") until the verdict: green is kept for a claim that holds
     yield walk.call_beat(Claim, f"Claim: {name} is an inner diagonal", call, ret,
-                         roles={u: "result", v: "result"},
+                         roles={u: "argument", v: "argument"},
                          labels=(u, v), points=segment(state["points"]))
     polygon = _claim_polygon(walk)
     if polygon is None:
