@@ -403,11 +403,31 @@ def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     done.extend(triangles)
     cut = walk.memo("monotone.cut", list)  # cut off step by step in this piece
     n = len(triangles)
+    bare = _bare_run(walk, ret)
     caption = (f"This piece is done: {n} triangle{'s' if n != 1 else ''}" if cut
-               else "This piece is a triangle already")
+               else "This piece is a triangle already" if bare <= 1
+               else f"{bare} pieces are triangles already")
     yield walk.call_beat(Stack, caption, call, ret, triangles=[] if cut else triangles,
                          triangulation=list(done) if len(done) == len(labels) - 2 else [])
     cut.clear()
+
+
+def _bare_run(walk: Walk, ret: Event) -> int:
+    """How many pieces that are triangles already come one after another with the piece
+    that ``ret`` ends (none if it is not one): they are drawn in a moment under one caption,
+    which says how many there are (not "this piece" of three)."""
+    pieces = walk.memo("monotone.pieces", lambda: [
+        (e.seq, len(e.result) == 1) for e in walk.log.events
+        if e.kind == "return" and e.name == "triangulate_monotone_piece"])
+    k = next((i for i, (seq, _) in enumerate(pieces) if seq == ret.seq), None)
+    if k is None or not pieces[k][1]:
+        return 0
+    first, last = k, k
+    while first > 0 and pieces[first - 1][1]:
+        first -= 1
+    while last + 1 < len(pieces) and pieces[last + 1][1]:
+        last += 1
+    return last - first + 1
 
 
 READS: Mapping[str, Reading] = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,

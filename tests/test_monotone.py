@@ -379,3 +379,12 @@ def test_the_count_n_minus_2_stands_clear_of_the_labels_and_the_subtitle(tmp_pat
     assert counts <= {"n − 2 = 13 − 2 = 11 triangles", "n − 2 = 13 − 2\n= 11 triangles"}
     assert len(counts) == (1 if panel is None else len(counts)) and len(counts) <= 1, counts
     assert crowded_counts(data) == []
+
+
+def test_pieces_that_are_triangles_already_are_counted_not_called_this_piece():
+    """The lecture's three pieces that are triangles already are drawn in a moment under one
+    caption: it says there are three ("This piece …" named none of them)."""
+    from metaphors.monotone import Stack
+
+    captions = [b.caption for b in _lecture_beats() if isinstance(b, Stack)]
+    assert captions == ["This piece is done: 8 triangles", *["3 pieces are triangles already"] * 3]
