@@ -56,6 +56,9 @@ from tracing import Event
 
 #: the room between the stack's words (scene units)
 STACK_BUFF = 0.12
+#: how far the count n − 2 keeps from everything else on screen: a label beside it is not
+#: read as its first word (scene units)
+COUNT_GAP = 0.35
 #: each board's place for its stack (left, top, and whether it is a row), found once a run
 _PLACES: weakref.WeakKeyDictionary[Board, tuple[float, float, bool]] = (
     weakref.WeakKeyDictionary())
@@ -232,16 +235,39 @@ def _whole(board: Board, beat: Stack) -> None:
     theme = board.theme
     tints = [k for k in board.objects if k.startswith("piece:")]
     whole = triangulation_pieces(beat.triangulation, board.at, theme)
-    n = board.polygon.n
-    count = tag(text(f"n − 2 = {n} − 2 = {len(whole)} triangles", font=theme.font,
-                     size=theme.label_size + 2, colour=theme.result), None, "counter")
-    count.next_to(board.outline, direction=[0, -1, 0], buff=0.3)
+    count = _count(board, len(whole))
     board.keep("triangulation", VGroup(*whole))
-    board.keep("counter", count)
+    shown: list[FadeIn] = []
+    if count is not None:
+        board.keep("counter", count)
+        shown.append(FadeIn(count))
     # under its own caption, at full pace: the last piece's words are over
     board.play(replace(beat, caption=whole_caption(len(whole)), pace=1.0),
-               *board.drop(*tints), *[FadeIn(t) for t in whole], FadeIn(count), run_time=1.2)
+               *board.drop(*tints), *[FadeIn(t) for t in whole], *shown, run_time=1.2)
     board.scene.wait(1.0)
+
+
+def _count(board: Board, triangles: int) -> VMobject | None:
+    """The count, n − 2, where it keeps clear of P, its labels, the title, the panel and the
+    subtitle (:func:`_taken`, :func:`metaphors.layout.free_place`), far enough from a label
+    not to be read with it (:data:`COUNT_GAP`): outside P's hull where it can (not in a
+    notch of P), in one line or two. None where nothing fits (a panel of source takes the
+    whole right half): the triangles and the caption's count alone then, as for divide and
+    conquer (:mod:`metaphors.pieces`); under P the count met the bottom vertex's label and
+    the subtitle."""
+    theme, n = board.theme, board.polygon.n
+    taken = _taken(board)
+    hull = Region([tuple(board.at(p)[:2]) for p in board.polygon.points]).convex_hull
+    for around in (unary_union([taken, hull]), taken):
+        for words in (f"n − 2 = {n} − 2 = {triangles} triangles",
+                      f"n − 2 = {n} − 2\n= {triangles} triangles"):
+            count = tag(text(words, font=theme.font, size=theme.label_size + 2,
+                             colour=theme.result), None, "counter")
+            found = free_place(count.width, count.height, around, clearance=COUNT_GAP)
+            if found is not None:
+                left, top = found
+                return count.move_to((left + count.width / 2, top - count.height / 2, 0))
+    return None
 
 
 # --- what the monotone triangulation reads from the log ------------------------------------------
@@ -378,11 +404,31 @@ def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     done.extend(triangles)
     cut = walk.memo("monotone.cut", list)  # cut off step by step in this piece
     n = len(triangles)
+    bare = _bare_run(walk, ret)
     caption = (f"This piece is done: {n} triangle{'s' if n != 1 else ''}" if cut
-               else "This piece is a triangle already")
+               else "This piece is a triangle already" if bare <= 1
+               else f"{bare} pieces are triangles already")
     yield walk.call_beat(Stack, caption, call, ret, triangles=() if cut else tuple(triangles),
                          triangulation=tuple(done) if len(done) == len(labels) - 2 else ())
     cut.clear()
+
+
+def _bare_run(walk: Walk, ret: Event) -> int:
+    """How many pieces that are triangles already come one after another with the piece
+    that ``ret`` ends (none if it is not one): they are drawn in a moment under one caption,
+    which says how many there are (not "this piece" of three)."""
+    pieces = walk.memo("monotone.pieces", lambda: [
+        (e.seq, len(walk.result_list(e)) == 1) for e in walk.log.events
+        if e.kind == "return" and e.name == "triangulate_monotone_piece"])
+    k = next((i for i, (seq, _) in enumerate(pieces) if seq == ret.seq), None)
+    if k is None or not pieces[k][1]:
+        return 0
+    first, last = k, k
+    while first > 0 and pieces[first - 1][1]:
+        first -= 1
+    while last + 1 < len(pieces) and pieces[last + 1][1]:
+        last += 1
+    return last - first + 1
 
 
 READS: Mapping[str, Reading] = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,

@@ -56,13 +56,17 @@ from story.refs import call_of, state_of, target_of
 from story.registry import heuristics, spoken, wrong
 from story.words import why_not_inner
 
-__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "make_exercises"]
+__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "front_gap", "make_exercises"]
 
 KINDS = ("pick", "claim", "inner")
 #: (generator, smallest n, largest n): shapes whose T often holds several candidates.
 #: Only 2-opt polygons: combs stand their teeth on one line, and an exercise is in general
 #: position (issue 22 item 6); stars and spirals rarely hold two candidates in T.
 GENERATORS = (("random-2opt", 8, 13), ("random-2opt", 10, 16))
+#: the claims' shapes: a wrong claim the class sees fail, on a polygon whose AC keeps clear of
+#: every vertex, comes about once in 1,500 drawn polygons of 5–9 vertices and once in 5,000
+#: of 8–16 (a wrong rule's pick lies near AC, where the rule's motion meets it first)
+CLAIM_GENERATOR = ("random-2opt", 5, 9)
 MIN_CANDIDATES, MAX_CANDIDATES = 2, 4
 MIN_GAP = 0.04  # closest two vertices, as a fraction of the bounding box's diagonal (legibility)
 MAX_TRIES = 20_000
@@ -215,8 +219,9 @@ def _frame(spec: str) -> _Frame | None:
         return None
     t = triangle_at(polygon, leftmost_vertex(polygon))
     candidates = tuple(v.index for v in candidates_in_triangle(polygon, t))
+    # AC clear of every vertex: whether a vertex is a candidate is read off the picture
     if not MIN_CANDIDATES <= len(candidates) <= MAX_CANDIDATES or not _roomy(polygon) \
-            or not _legible(polygon):
+            or not _clear(polygon, t.a.index, t.c.index) or not _legible(polygon):
         return None
     return _Frame(spec, polygon, (t.a.index, t.b.index, t.c.index), candidates)
 
@@ -299,12 +304,39 @@ def _pick_reason(heuristic: str, steps: list[tuple[str, float]]) -> str | None:
     return f"{lead} {first} ({unit}{v}) before {others}"
 
 
+def _off_line(q: Point, u: Point, v: Point) -> float:
+    """How far ``q`` is from the line through ``u`` and ``v``."""
+    return abs((v[0] - u[0]) * (q[1] - u[1]) - (v[1] - u[1]) * (q[0] - u[0])) / math.dist(u, v)
+
+
+def front_gap(polygon: Polygon, triangle: tuple[int, int, int], candidates: Iterable[int],
+              heuristic: str, d: int) -> float:
+    """How far the metaphor's front, as it reaches the pick ``d``, stays from the other
+    candidates (in P's units): the water's circle about B, the clock hand's line (from B, or
+    from C), the vertical sweep, the line parallel to AC (the rising water's shore too). A
+    near tie would be decided where the class cannot see it. Infinite with one candidate."""
+    pts = polygon.points
+    a, b, c = (pts[k] for k in triangle)
+    at = pts[d]
+    gap: dict[str, Callable[[Point], float]] = {
+        "scaling": lambda q: abs(math.dist(b, q) - math.dist(b, at)),
+        "rotation": lambda q: _off_line(q, b, at),
+        "rotation-ccw": lambda q: _off_line(q, b, at),
+        "rotation-correct": lambda q: _off_line(q, c, at),
+        "translation": lambda q: abs(q[0] - at[0]),
+        "translation-correct": lambda q: abs(_off_line(q, a, c) - _off_line(at, a, c)),
+        "scaling-correct": lambda q: abs(_off_line(q, a, c) - _off_line(at, a, c)),
+    }
+    return min((gap[heuristic](pts[k]) for k in candidates if k != d), default=math.inf)
+
+
 def _pick(number: int, heuristic: str) -> Callable[[_Frame], Exercise | None]:
     def build(frame: _Frame) -> Exercise | None:
         d, steps = _reached(frame.polygon, heuristic)
         reason = _pick_reason(heuristic, steps)
-        if reason is None:
-            return None
+        if reason is None or front_gap(frame.polygon, frame.triangle, frame.candidates,
+                                       heuristic, d) < MIN_CLEARANCE * _scale(frame.polygon):
+            return None  # a tie as printed, or as seen
         return _exercise(number, "pick", frame, heuristic,
                          f"Which vertex does {spoken(heuristic)} pick?", frame.polygon.labels[d],
                          reason)
@@ -385,7 +417,8 @@ def make_exercises(n: int = 6, seed: int = 0) -> list[Exercise]:
             build = _claim(k + 1, rng.sample(wrong(), len(wrong())), wanted.pop())
         else:
             build = _inner(k + 1)
-        out.append(_search(pool, GENERATORS[k % len(GENERATORS)], build))
+        generator = CLAIM_GENERATOR if kind == "claim" else GENERATORS[k % len(GENERATORS)]
+        out.append(_search(pool, generator, build))
     return out
 
 

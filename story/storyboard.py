@@ -606,15 +606,39 @@ FRAME_READS: Mapping[str, Reading] = MappingProxyType({
 
 
 def _call_caption(call: Event, ret: Event) -> str:
-    """A step of one's own in words (its call line shows the code): ``Distance to c for C,
-    E: 1.4``."""
-    name = said(call.name)
-    name = name[:1].upper() + name[1:]
-    given = [show(v) for v in (call.args or {}).values()]
-    step = f"{name} for {', '.join(given)}" if given else name
+    """A step of one's own in words (its call line shows the code), naming the picture's own
+    vertices (:func:`_step_words`): ``distance_to_c(c, d)`` on C and E is ``Distance to C
+    for E: 1.4``."""
+    step = _step_words(call.name, call.args or {})
     if isinstance(ret.result, dict) and "raised" in ret.result:
         return f"{step}: it raised {ret.result['raised']}"
     return f"{step}: done" if ret.result is None else f"{step}: {show(ret.result)}"
+
+
+def _step_words(name: str, args: Mapping[str, Any]) -> str:
+    """A function's name said with its arguments: a word of the name that is also the name
+    of a parameter given an object on screen (a vertex, T, P) says that object, and the
+    arguments not said so follow after "for"; any other one-letter word (but "a") is a
+    vertex's capital.
+
+    >>> _step_words("distance_to_c", {"c": {"ref": "C"}, "d": {"ref": "E"}})
+    'Distance to C for E'
+    >>> _step_words("angle_at_b", {"p": {"ref": "D"}}), _step_words("is_a_fit", {})
+    ('Angle at B for D', 'Is a fit')
+    """
+    names = {key.lower(): key for key in args}
+    words, spoken = [], set()
+    for word in said(name).split():
+        key = names.get(word)
+        if key is not None and isinstance(args[key], dict) and "ref" in args[key]:
+            words.append(show(args[key]))
+            spoken.add(key)
+        else:
+            words.append(word.upper() if len(word) == 1 and word != "a" else word)
+    step = " ".join(words)
+    step = step[:1].upper() + step[1:]
+    given = [show(v) for key, v in args.items() if key not in spoken]
+    return f"{step} for {', '.join(given)}" if given else step
 
 
 def _shape_beats(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[Beat]:

@@ -797,6 +797,38 @@ def crowded_notes(data: dict) -> list[str]:
     return sorted(set(found))
 
 
+def crowded_counts(data: dict) -> list[str]:
+    """The counters (``"n − 2 = 13 − 2 = 11 triangles"``, ``"3 / 11 slices"``) nearer than
+    :data:`LEAST_NOTE_GAP` to a vertex label or to the subtitle on screen with them, as
+    ``"'n − 2 = …' touches C"``, ``"'n − 2 = …' touches the subtitle"``: text over text (the
+    monotone count stood under P, on the bottom vertex's label and the subtitle)."""
+    labels: set[tuple[str, tuple[float, float, float, float]]] = set()
+    subtitle: tuple[float, ...] | None = None
+    found = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                labels = set()
+            for key in ("mobject", "target"):
+                labels.update(_named_label_boxes(anim.get(key, {})))
+            if node.get("name") == "subtitle" and node.get("box"):
+                subtitle = None if anim.get("type") in OUTGOING else tuple(node["box"])
+            if anim.get("type") not in INCOMING:
+                continue
+            for part in mobject_nodes(node):
+                if part.get("name") != "counter" or not part.get("box"):
+                    continue
+                x0, y0, x1, y1 = part["box"]
+                grown = (x0 - LEAST_NOTE_GAP, y0 - LEAST_NOTE_GAP, x1 + LEAST_NOTE_GAP,
+                         y1 + LEAST_NOTE_GAP)
+                found += [f"{part['text']!r} touches {v}" for v, box in sorted(labels)
+                          if _overlap(grown, box)]
+                if subtitle is not None and _overlap(grown, subtitle):
+                    found.append(f"{part['text']!r} touches the subtitle")
+    return sorted(set(found))
+
+
 #: the metaphors' shapes that grow as the run goes (and may outgrow the picture)
 _GROWING = ("water",)
 
@@ -830,10 +862,12 @@ LEAST_ANGLE = 15.0
 LEAST_LABEL_GAP = 0.02
 
 
-def _exercise_pictures(data: dict) -> Iterator[tuple[list[tuple[float, float]], list[tuple]]]:
-    """Each exercise picture coming on screen: its polygon's corners and its labels, as
-    ``(text, box)`` in the order of the corners."""
+def _exercise_pictures(data: dict) -> Iterator[tuple[list[tuple[float, float]], list[tuple],
+                                                      list[tuple[float, float]]]]:
+    """Each exercise picture coming on screen: its polygon's corners, its labels, as
+    ``(text, box)`` in the order of the corners, and its triangle T's corners."""
     corners: list[tuple[float, float]] | None = None
+    triangle: list[tuple[float, float]] = []
     for play in data["plays"]:
         for anim in play["animations"]:
             node = anim.get("mobject") or {}
@@ -842,13 +876,17 @@ def _exercise_pictures(data: dict) -> Iterator[tuple[list[tuple[float, float]], 
             if node["type"] == "Polygon" and node.get("points"):
                 shape = _corners(node)
                 if corners is None or len(shape) > len(corners):  # P, not its triangle T
+                    if corners is not None:
+                        triangle = corners
                     corners = shape
+                else:
+                    triangle = shape
             markers = [m for m in node.get("submobjects", ()) if [c["type"] for c in
                        m.get("submobjects", ())] == ["Dot", "FlatText"]]
             if markers and corners is not None:
                 yield corners, [(m["submobjects"][1]["text"], m["submobjects"][1]["box"])
-                                for m in markers]
-                corners = None
+                                for m in markers], triangle
+                corners, triangle = None, []
 
 
 def _inner_angle(p, q, r) -> float:
@@ -861,19 +899,27 @@ def _inner_angle(p, q, r) -> float:
 def crowded_exercises(data: dict) -> list[str]:
     """Issue 22 items 5 and 6: the exercise pictures a class cannot read, as drawn on screen:
     an angle under :data:`LEAST_ANGLE` (a needle) or over 360° minus it (a notch), a vertex
-    nearer than :data:`LEAST_CLEARANCE` to an edge it is not on, and two vertex labels, or a
-    label and an edge, nearer than :data:`LEAST_LABEL_GAP`; as ``"angle at E: 2°"``."""
+    nearer than :data:`LEAST_CLEARANCE` to an edge it is not on or to a side of T (its AC:
+    is the vertex a candidate or not?), and two vertex labels, or a label and an edge, nearer
+    than :data:`LEAST_LABEL_GAP`; as ``"angle at E: 2°"``, ``"H 0.03 from T's side"``."""
     from shapely.geometry import LineString, box
     from shapely.geometry import Point as ShapelyPoint
 
     found = []
-    for corners, labels in _exercise_pictures(data):
+    for corners, labels, triangle in _exercise_pictures(data):
         n = len(corners)
         names = [text for text, _ in labels] if len(labels) == n else [str(k) for k in range(n)]
         if corners[0] == corners[-1]:
             corners = corners[:-1]
             n -= 1
         edges = [LineString([corners[k], corners[(k + 1) % n]]) for k in range(n)]
+        t = list(dict.fromkeys(triangle))
+        sides = [LineString([t[k], t[(k + 1) % len(t)]]) for k in range(len(t))]
+        for v in range(n):
+            if not _near(corners[v], t, 1e-3) and sides:
+                near = min(side.distance(ShapelyPoint(corners[v])) for side in sides)
+                if near < LEAST_CLEARANCE:
+                    found.append(f"{names[v]} {near:.2f} from T's side")
         for v in range(n):
             a = _inner_angle(corners[v - 1], corners[v], corners[(v + 1) % n])
             if a < LEAST_ANGLE or a > 360 - LEAST_ANGLE:

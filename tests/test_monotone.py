@@ -360,3 +360,31 @@ def test_the_lectures_stack_keeps_clear_too(panel):
     faster = _chapter_class(next(c for c in lecture_chapters() if c.slug == "faster"))
     data = build((faster.with_panel(panel) if panel else faster).handed()).data
     assert stack_collisions(data) == []
+    from tests.reading_rules import crowded_counts
+
+    assert crowded_counts(data) == []  # the count n − 2, clear of C's label and the subtitle
+
+
+@pytest.mark.parametrize("panel", [None, "source"])
+@pytest.mark.parametrize("points", [make_sample("lecture"), MIRRORED], ids=["lecture", "mirrored"])
+def test_the_count_n_minus_2_stands_clear_of_the_labels_and_the_subtitle(tmp_path, points, panel):
+    """The whole triangulation's count is not written over a vertex label or the subtitle
+    (it stood under P, on the lecture's C and its caption "The whole triangulation: …"):
+    beside P, or, where a panel of source leaves no room, not at all (the caption says it)."""
+    from tests.reading_rules import crowded_counts, graph_nodes
+    from trex.snapshot import build
+
+    data = build(_sweep_scene(tmp_path, points, panel)).data
+    counts = {n["text"] for n in graph_nodes(data) if n.get("name") == "counter"}
+    assert counts <= {"n − 2 = 13 − 2 = 11 triangles", "n − 2 = 13 − 2\n= 11 triangles"}
+    assert len(counts) == (1 if panel is None else len(counts)) and len(counts) <= 1, counts
+    assert crowded_counts(data) == []
+
+
+def test_pieces_that_are_triangles_already_are_counted_not_called_this_piece():
+    """The lecture's three pieces that are triangles already are drawn in a moment under one
+    caption: it says there are three ("This piece …" named none of them)."""
+    from metaphors.monotone import Stack
+
+    captions = [b.caption for b in _lecture_beats() if isinstance(b, Stack)]
+    assert captions == ["This piece is done: 8 triangles", *["3 pieces are triangles already"] * 3]

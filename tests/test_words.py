@@ -63,7 +63,9 @@ def test_a_heuristic_of_ones_own_is_captioned_in_words():
     heuristic = load_user_heuristic(f"{EXAMPLES / 'nearest_to_c.py'}:nearest_to_c")
     p = Polygon.from_points(make_sample("counterexample"))
     captions = [b.caption for b in storyboard(record_user_run(heuristic, p, "counterexample"))]
-    steps = [c for c in captions if c.startswith("Distance to c for ")]
+    # the picture's own vertices, in capitals: "Distance to C for D: 2.2", not "to c for C, D"
+    steps = [c for c in captions if c.startswith("Distance to C for ")]
+    assert steps and not any(" c " in c or ", " in c.split(":")[0] for c in steps), steps
     log = record_user_run(heuristic, p, "counterexample")
     claimed = run_heuristic(p, heuristic)  # the pseudocode's D is the vertex it claims
     assert claimed.u.label == "B" and run_vertices(log)["D"] == claimed.v.label
