@@ -7,7 +7,6 @@ Every slice, and what is left of the fruit after it, comes from the log (the bea
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import replace
 from typing import Any
 
 from manim import (
@@ -29,7 +28,7 @@ from manim import (
 from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
 from metaphors.board import Board
-from metaphors.drawing import triangulation_pieces, whole_caption
+from metaphors.drawing import count_words, ending_beat, triangulation_pieces
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
@@ -159,27 +158,33 @@ def _whole(board: Board, beat: Slice) -> None:
     pieces = triangulation_pieces(beat.triangulation, board.at, theme)
     holes = len(board.holes)
     n = board.polygon.n + sum(len(h.points) for h in board.holes)
-    count = (f"n − 2 = {n} − 2 = {beat.total} triangles" if not holes else
-             f"n + 2h − 2 = {n} + {2 * holes} − 2 = {beat.total} triangles")
-    result = _counter_text(board, count, theme.result)
+    result = _counter_text(board, count_words(n, holes, beat.total), theme.result)
     board.scene.remove(board.objects["counter"])
     board.keep("counter", result)
     board.keep("triangulation", VGroup(*pieces))
-    # under its own caption, at full pace: the last slice's words are over
-    board.play(replace(beat, caption=whole_caption(beat.total), pace=1.0),
-               *[FadeIn(p) for p in pieces], FadeIn(result), run_time=1.2)
+    # under its own caption, at full pace: the last slice's words are over; what the steps
+    # left (prune and search's good part, its last diagonal and ✓) goes
+    board.play(ending_beat(beat, board.panel.pseudocode, beat.total),
+               *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], FadeIn(result),
+               run_time=1.2)
     board.scene.wait(1.0)
 
 
 
 
+#: what a diagonal's search leaves on the picture (:mod:`metaphors.basics`): its claim and verdict
+_FOUND = ("claim", "verdict", "crossed", "crossing")
+
+
 def good(board: Board, beat: Good) -> None:
-    """Prune and search: the good sub-polygon kept, tinted; the previous one fades."""
+    """Prune and search: the good sub-polygon kept, tinted; the previous one fades, and so do
+    the diagonal found and its ✓: the good part's edge is that diagonal now (left on screen,
+    the next search's claim would take their keys and leave them behind, unturned)."""
     theme = board.theme
     region = tag(MPolygon(*[board.at(p) for p in beat.points], color=theme.called,
                           stroke_width=theme.stroke, fill_color=theme.called,
                           fill_opacity=theme.piece_opacity), "called", "good")
-    board.play(beat, *board.drop("good"), FadeIn(region), run_time=1.2)
+    board.play(beat, *board.drop("good", *_FOUND), FadeIn(region), run_time=1.2)
     board.keep("good", region)
 
 

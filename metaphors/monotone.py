@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import weakref
 from collections.abc import Iterator, Mapping
-from dataclasses import replace
 
 from manim import (
     DL,
@@ -37,7 +36,7 @@ from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 
 from metaphors.board import Board
-from metaphors.drawing import triangulation_pieces, whole_caption
+from metaphors.drawing import count_words, ending_beat, triangulation_pieces
 from metaphors.layout import (
     FRAME_AREA,
     PANEL_CALL_Y,
@@ -228,18 +227,18 @@ def stack(board: Board, beat: Stack) -> None:
 
 def _whole(board: Board, beat: Stack) -> None:
     """After the last piece: the pieces' tints give way to the whole triangulation, each
-    triangle its own colour, and the count it had to reach, n − 2."""
+    triangle its own colour, and the count it had to reach, n − 2 (two more a hole)."""
     theme = board.theme
     tints = [k for k in board.objects if k.startswith("piece:")]
     whole = triangulation_pieces(beat.triangulation, board.at, theme)
-    n = board.polygon.n
-    count = tag(text(f"n − 2 = {n} − 2 = {len(whole)} triangles", font=theme.font,
+    n = board.polygon.n + sum(len(h.points) for h in board.holes)
+    count = tag(text(count_words(n, len(board.holes), len(whole)), font=theme.font,
                      size=theme.label_size + 2, colour=theme.result), None, "counter")
     count.next_to(board.outline, direction=[0, -1, 0], buff=0.3)
     board.keep("triangulation", VGroup(*whole))
     board.keep("counter", count)
     # under its own caption, at full pace: the last piece's words are over
-    board.play(replace(beat, caption=whole_caption(len(whole)), pace=1.0),
+    board.play(ending_beat(beat, board.panel.pseudocode, len(whole)),
                *board.drop(*tints), *[FadeIn(t) for t in whole], FadeIn(count), run_time=1.2)
     board.scene.wait(1.0)
 
@@ -379,8 +378,10 @@ def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     n = len(triangles)
     caption = (f"This piece is done: {n} triangle{'s' if n != 1 else ''}" if cut
                else "This piece is a triangle already")
+    # all of them: n − 2, two more a hole (n counting the holes' vertices)
+    whole = len(done) == len(labels) - 2 + 2 * len(walk.root_holes())
     yield walk.call_beat(Stack, caption, call, ret, triangles=[] if cut else triangles,
-                         triangulation=list(done) if len(done) == len(labels) - 2 else [])
+                         triangulation=list(done) if whole else [])
     cut.clear()
 
 

@@ -11,14 +11,13 @@ by the frame every run shares (:mod:`metaphors.basics`).
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import replace
 
 import numpy as np
 from manim import DL, DOWN, RIGHT, UR, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board, Playable
-from metaphors.drawing import triangulation_pieces, whole_caption
+from metaphors.drawing import ending_beat, triangulation_pieces
 from metaphors.layout import (
     METAPHOR,
     PANEL_CALL_Y,
@@ -120,7 +119,7 @@ def split(board: Board, beat: Split) -> None:
     board.play(beat, *anims, run_time=1.2)
     if last:  # the whole triangulation under its own caption: the split's is over
         triangles = sum(1 for key in board.objects if key.startswith("triangle:"))
-        board.play(replace(beat, caption=whole_caption(triangles), pace=1.0), *_whole(board),
+        board.play(ending_beat(beat, board.panel.pseudocode, triangles), *_whole(board),
                    run_time=1.2)
 
 

@@ -520,6 +520,67 @@ def stale_endings(data: dict) -> list[str]:
     return found
 
 
+def _result_rows() -> frozenset[str]:
+    """The texts of the pseudocode rows that say a run's result (:data:`story.pseudocode.RESULT`)."""
+    from story.pseudocode import RESULT
+    from story.registry import entry, names
+
+    return frozenset(row.text.strip() for name in names() for row in entry(name).pseudocode
+                     if RESULT in row.calls)
+
+
+def _lit_rows(anim: dict) -> Iterator[str]:
+    """The texts of the lit pseudocode rows (a ``code:`` row's copy in ink) an animation
+    (or its members) puts on the screen."""
+    mobject = anim.get("mobject") or {}
+    if (anim["type"] in INCOMING and (mobject.get("name") or "").startswith("code:")
+            and mobject.get("role") == "called" and (mobject.get("text") or "").strip()):
+        yield mobject["text"].strip()
+    for child in anim.get("animations", ()):
+        yield from _lit_rows(child)
+
+
+def stale_lit_rows(data: dict) -> list[str]:
+    """The plays that draw a run's whole triangulation while the pseudocode's lit row is
+    not the one saying the result ("their union is the triangulation of P"), as
+    ``"play 40: 'divide P along d into P1 and P2'"``: the last step's row no longer says what
+    the picture shows. A run without pseudocode rows lit (no panel, or its source) is not
+    judged."""
+    results = _result_rows()
+    found, lit = [], None
+    for k, play in enumerate(data["plays"]):
+        tops = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        for anim in play["animations"]:
+            for text in _lit_rows(anim):
+                lit = text
+        if lit is not None and lit not in results and any(
+                kind in INCOMING and name == "triangulation" for kind, name in tops):
+            found.append(f"play {k}: {lit!r}")
+    return found
+
+
+#: a verdict's marks on a run's picture (:mod:`metaphors.basics`)
+_VERDICT_MARKS = ("tick", "cross")
+
+
+def leftover_verdicts(data: dict) -> list[str]:
+    """The plays that draw a run's whole triangulation while a verdict's ✓ or ✗ of one of
+    its steps is still on screen, as ``"play 90: 2 ✓/✗ left"``: the diagonal it judged is
+    an edge of the result now, and a mark left over (or left behind, unturned, when a later
+    claim took its place) reads as a claim on the triangulation."""
+    found = []
+    shown = 0
+    for k, play in enumerate(data["plays"]):
+        tops = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        if any(kind in INCOMING and name in _POLYGONS for kind, name in tops):
+            shown = 0  # a new run: the screen was cleared for it
+        shown += sum(1 for kind, name in tops if kind in INCOMING and name in _VERDICT_MARKS)
+        shown -= sum(1 for kind, name in tops if kind in OUTGOING and name in _VERDICT_MARKS)
+        if shown > 0 and any(kind in INCOMING and name == "triangulation" for kind, name in tops):
+            found.append(f"play {k}: {shown} ✓/✗ left")
+    return found
+
+
 # --- issue 22: a verdict's mark reads -------------------------------------------------------------
 
 #: 2 % of the frame's height: the least gap between a verdict's ✓ or ✗ and an edge or label

@@ -35,11 +35,13 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     hidden_failures,
+    leftover_verdicts,
     repeated_verdicts,
     replayed_beats,
     rushed_questions,
     small_texts,
     stale_endings,
+    stale_lit_rows,
     unreadable_cues,
     unspoken_words,
 )
@@ -490,6 +492,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert broken_counts(data) == [], chapter.slug
     # issue 22: the whole triangulation comes under its own caption, not the last step's
     assert stale_endings(data) == [], chapter.slug
+    assert stale_lit_rows(data) == [], chapter.slug
+    # and no ✓ or ✗ of a step is left over on it (prune and search's diagonals)
+    assert leftover_verdicts(data) == [], chapter.slug
     # issue 22: a verdict's ✓ or ✗ stands clear of every edge and label
     assert crowded_verdicts(data) == [], chapter.slug
     # issue 22 item 5: a summary of fast beats is not broken by a key step and comes back
