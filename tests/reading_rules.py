@@ -116,6 +116,31 @@ def crossfaded_subtitles(data: dict) -> list[str]:
     return crossfaded_texts(data, "subtitle")
 
 
+def _text_boxes(anim: dict, kinds: set[str]) -> Iterator[tuple[str, tuple[float, ...]]]:
+    """(text, box) of every drawn text an animation of one of ``kinds`` (or its members')
+    plays, its parts' too."""
+    if anim["type"] in kinds:
+        for node in mobject_nodes(anim.get("mobject") or {}):
+            if (node.get("text") or "").strip() and node.get("box") and (
+                    drawn(node) or node.get("type") == "FlatText"):
+                yield node["text"], tuple(node["box"])
+    for child in anim.get("animations", ()):
+        yield from _text_boxes(child, kinds)
+
+
+def crossfaded_overlaps(data: dict) -> list[str]:
+    """The plays that fade a text out while fading another in over it (the two read as one,
+    as a count coming where the black box's question goes), as
+    ``"play 80: 'an inner' under 'n − 2 = 13 − 2'"``: a text goes before the next comes."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        gone = [t for a in play["animations"] for t in _text_boxes(a, OUTGOING)]
+        come = [t for a in play["animations"] for t in _text_boxes(a, INCOMING)]
+        found += [f"play {k}: {old!r} under {new!r}" for old, a in gone for new, b in come
+                  if old != new and a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]]
+    return found
+
+
 # --- issue 22 item 10: the words ------------------------------------------------------------------
 
 #: the command line's names that are no English word: every hyphenated registry name, and

@@ -47,6 +47,7 @@ from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
     broken_summaries,
+    crossfaded_overlaps,
     crossfaded_subtitles,
     crossfaded_texts,
     crowded_notes,
@@ -223,6 +224,8 @@ def test_never_two_subtitles_at_once(case):
     """Issue 22 item 9: a caption goes before the next comes (no play fades one subtitle
     out while the next fades in)."""
     assert crossfaded_subtitles(graph(case).data) == [], case.id
+    # nor any text fading in over one fading out
+    assert crossfaded_overlaps(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
