@@ -6,6 +6,7 @@ Every slice, and what is left of the fruit after it, comes from the log (the bea
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator, Mapping, Sequence
 from typing import Any
 
@@ -41,6 +42,28 @@ PLATE_Y = -2.55
 PLATE_WIDTH = 5.6
 
 
+#: the plate's height, and the part of its width the slices take (the ends are too thin)
+PLATE_HEIGHT, PLATE_USED = 0.9, 0.82
+
+
+def plate_slot(k: int, total: int) -> tuple[float, float, float]:
+    """Where slice ``k`` of ``total`` goes on the plate: its centre's offset from the plate's
+    centre, and the widest and tallest it may be there, so that every slice lies inside the
+    plate's ellipse (near the ends the ellipse is thin: the slices keep to the middle part,
+    :data:`PLATE_USED`, and are lower there).
+
+    >>> x, w, h = plate_slot(11, 11)
+    >>> round(x, 3), round(w, 3), round(h, 3)
+    (2.087, 0.355, 0.45)
+    """
+    used = PLATE_WIDTH * PLATE_USED
+    slot = used / max(total, 1)
+    x = -used / 2 + slot * (k - 0.5)
+    edge = abs(x) + slot * 0.85 / 2  # the slice's far side
+    room = PLATE_HEIGHT * math.sqrt(max(0.0, 1 - (2 * edge / PLATE_WIDTH) ** 2))
+    return x, slot * 0.85, min(0.6, 0.85 * room)
+
+
 def _fruit(board: Board, points: Sequence[Sequence[float]],
            holes: Sequence[Hole] = ()) -> MPolygon | Polygram:
     theme = board.theme
@@ -58,7 +81,7 @@ def _setup(board: Board, beat: Beat) -> None:
         return
     theme = board.theme
     x = board.frame.center[0]
-    plate = tag(Ellipse(width=PLATE_WIDTH, height=0.9, color=theme.plate, stroke_width=2,
+    plate = tag(Ellipse(width=PLATE_WIDTH, height=PLATE_HEIGHT, color=theme.plate, stroke_width=2,
                         fill_color=theme.plate, fill_opacity=0.12), None, "plate")
     plate.move_to((x, PLATE_Y, 0))
     fruit = _fruit(board, board.polygon.points, board.holes)
@@ -93,10 +116,15 @@ def ear_test(board: Board, beat: EarTest) -> None:
              Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
     if beat.triangle:
         outline = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.rejected,
-                               stroke_width=theme.stroke * 1.5, fill_color=theme.rejected,
-                               fill_opacity=0.3), "rejected", "ear-triangle")
+                               stroke_width=theme.stroke * 1.5, stroke_opacity=0,
+                               fill_color=theme.rejected, fill_opacity=0), "rejected",
+                      "ear-triangle")
         board.keep("ear-triangle", outline)
-        anims.append(FadeIn(outline))
+        # under the vertices and their labels: the vertex inside it is what the caption
+        # names ("G lies in its triangle"), and a fade-in would put the triangle over it
+        board.scene.add(outline)
+        board.scene.bring_to_front(*board.markers.values())
+        anims.append(outline.animate.set_fill(opacity=0.3).set_stroke(opacity=1.0))
     if beat.inside:
         anims.append(Indicate(board.markers[unprimed(beat.inside)], color=theme.rejected,
                               scale_factor=1.6))
@@ -130,11 +158,10 @@ def clip(board: Board, beat: Slice) -> None:
                          stroke_width=theme.thin_stroke, fill_color=theme.fruit,
                          fill_opacity=0.9), "result", f"slice:{''.join(data.corners)}")
     target = piece.copy()
-    slot = PLATE_WIDTH / max(data.total, 1)
-    target.scale_to_fit_width(min(slot * 0.85, target.width)).scale_to_fit_height(
-        min(0.6, target.height))
-    left = board.frame.center[0] - PLATE_WIDTH / 2
-    target.move_to((left + slot * (data.k - 0.5), PLATE_Y, 0))
+    x, width, height = plate_slot(data.k, data.total)
+    target.scale_to_fit_width(min(width, target.width)).scale_to_fit_height(
+        min(height, target.height))
+    target.move_to((board.frame.center[0] + x, PLATE_Y, 0))
     counter = _counter(board, data.k, data.total)
     # the count is cut, not morphed: glyphs melting into each other read as other numbers
     board.scene.remove(board.objects["counter"])
@@ -178,13 +205,14 @@ _FOUND = ("claim", "verdict", "crossed", "crossing")
 
 def good(board: Board, beat: Good) -> None:
     """Prune and search: the good sub-polygon kept, tinted; the previous one fades, and so do
-    the diagonal found and its ✓: the good part's edge is that diagonal now (left on screen,
-    the next search's claim would take their keys and leave them behind, unturned)."""
+    the vertex found no ear (its red triangle) and the diagonal found and its ✓: the good
+    part's edge is that diagonal now (left on screen, the next search's claim would take
+    their keys and leave them behind, unturned)."""
     theme = board.theme
     region = tag(MPolygon(*[board.at(p) for p in beat.points], color=theme.called,
                           stroke_width=theme.stroke, fill_color=theme.called,
                           fill_opacity=theme.piece_opacity), "called", "good")
-    board.play(beat, *board.drop("good", *_FOUND), FadeIn(region), run_time=1.2)
+    board.play(beat, *board.drop("good", "ear-triangle", *_FOUND), FadeIn(region), run_time=1.2)
     board.keep("good", region)
 
 

@@ -23,6 +23,7 @@ from manim import (
     Dot,
     FadeIn,
     FadeOut,
+    Group,
     Indicate,
     Line,
     Transform,
@@ -232,15 +233,37 @@ def _whole(board: Board, beat: Stack) -> None:
     tints = [k for k in board.objects if k.startswith("piece:")]
     whole = triangulation_pieces(beat.triangulation, board.at, theme)
     n = board.polygon.n + sum(len(h.points) for h in board.holes)
-    count = tag(text(count_words(n, len(board.holes), len(whole)), font=theme.font,
-                     size=theme.label_size + 2, colour=theme.result), None, "counter")
-    count.next_to(board.outline, direction=[0, -1, 0], buff=0.3)
+    count = _count(board, count_words(n, len(board.holes), len(whole)))
     board.keep("triangulation", VGroup(*whole))
     board.keep("counter", count)
     # under its own caption, at full pace: the last piece's words are over
     board.play(ending_beat(beat, board.panel.pseudocode, len(whole)),
                *board.drop(*tints), *[FadeIn(t) for t in whole], FadeIn(count), run_time=1.2)
     board.scene.wait(1.0)
+
+
+def _count(board: Board, words: str) -> VMobject:
+    """The count under the picture, clear of its labels (a label under P's lowest vertex
+    stood in it); where it does not fit there, on two lines in the first free place
+    (:func:`metaphors.layout.free_place`); else under the outline, as it was."""
+    theme = board.theme
+
+    def made(said: str) -> VMobject:
+        return tag(text(said, font=theme.font, size=theme.label_size + 2, colour=theme.result),
+                   None, "counter")
+
+    taken = _taken(board).buffer(0.1)
+    count = made(words)
+    picture = Group(board.outline, *board.markers.values())
+    count.next_to(picture, direction=DOWN, buff=0.15).set_x(board.outline.get_x())
+    if not taken.intersects(_box_of(count)):
+        return count
+    head, _, tail = words.rpartition(" = ")  # "n − 2 = 13 − 2", "= 11 triangles"
+    count = made(f"{head}\n= {tail}" if head else words)
+    found = free_place(count.width, count.height, _taken(board))
+    if found is None:
+        return made(words).next_to(board.outline, direction=DOWN, buff=0.3)
+    return count.move_to((found[0] + count.width / 2, found[1] - count.height / 2, 0))
 
 
 # --- what the monotone triangulation reads from the log ------------------------------------------
