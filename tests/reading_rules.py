@@ -883,6 +883,32 @@ def crowded_notes(data: dict) -> list[str]:
     return sorted(set(found))
 
 
+def crowded_counts(data: dict) -> list[str]:
+    """The counters (a fruit's ``k / n − 2 slices``, a run's whole count ``n − 2 = …``)
+    nearer than :data:`LEAST_NOTE_GAP` to a vertex label shown with them, as
+    ``"'n + 2h − 2 = …' touches D"``: the two read as one text ("B 0 / 11 slices")."""
+    labels: dict[str, tuple[float, float, float, float]] = {}
+    found = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                labels = {}
+            for key in ("mobject", "target"):
+                labels.update(_named_label_boxes(anim.get(key, {})))
+            if anim.get("type") not in INCOMING or node.get("name") != "counter":
+                continue
+            for part in mobject_nodes(node):
+                if not part.get("box") or not (part.get("text") or "").strip():
+                    continue
+                x0, y0, x1, y1 = part["box"]
+                grown = (x0 - LEAST_NOTE_GAP, y0 - LEAST_NOTE_GAP, x1 + LEAST_NOTE_GAP,
+                         y1 + LEAST_NOTE_GAP)
+                found += [f"{part['text']!r} touches {v}" for v, box in sorted(labels.items())
+                          if _overlap(grown, box)]
+    return sorted(set(found))
+
+
 #: the metaphors' shapes that grow as the run goes (and may outgrow the picture)
 _GROWING = ("water",)
 

@@ -32,6 +32,7 @@ from tests.reading_rules import (
     broken_summaries,
     crossfaded_overlaps,
     crossfaded_subtitles,
+    crowded_counts,
     crowded_exercises,
     crowded_panel_labels,
     crowded_verdicts,
@@ -479,6 +480,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # yet in chapter 2, whose analyses fade their title and legend into the correction's
     if chapter.slug != "heuristics":
         assert crossfaded_overlaps(data) == [], chapter.slug
+    # a counter (slices, the whole count) stands clear of the labels
+    assert crowded_counts(data) == [], chapter.slug
     # issue 22 item 3: every red claim leaves its polygon by 4 % of the frame's height
     assert hidden_failures(data) == [], chapter.slug
     # issue 22 items 1 and 10: the taught words, no slug, no code (no call line either), no

@@ -50,6 +50,7 @@ from tests.reading_rules import (
     crossfaded_overlaps,
     crossfaded_subtitles,
     crossfaded_texts,
+    crowded_counts,
     crowded_notes,
     crowded_panel_labels,
     crowded_verdicts,
@@ -278,6 +279,7 @@ def test_a_triangulation_ends_on_the_whole_triangulation_and_its_count(case):
     assert drawn == expected, (case.id, drawn, expected)
     assert counts and {(int(m[1]), int(m[2] or 0), int(m[3])) for m in counts} == {
         (n, 2 * shape.hole_count, expected)}, case.id
+    assert crowded_counts(data) == [], case.id  # clear of the labels (it ran through D)
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
