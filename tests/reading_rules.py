@@ -909,6 +909,23 @@ def crowded_counts(data: dict) -> list[str]:
     return sorted(set(found))
 
 
+def calls_over_code(data: dict) -> list[str]:
+    """The panel's call lines that run over its pseudocode rows (a long result wrapped to
+    four lines reached up into them), as ``"'triangulate_monotone_piece(…' over 'their …'"``."""
+    rows, calls = {}, {}
+    for node in graph_nodes(data):
+        name, box, said = node.get("name") or "", node.get("box"), (node.get("text") or "").strip()
+        if box and said and name.startswith("code:"):
+            rows[said] = box
+        elif name == "panel:call":  # one text, or a group of its wrapped lines
+            said = " ".join(t for n in mobject_nodes(node) if (t := (n.get("text") or "").strip()))
+            whole = _box_of(node)
+            if said and whole is not None:
+                calls[said] = whole
+    return sorted(f"{c[:30]!r} over {r!r}" for c, a in calls.items() for r, b in rows.items()
+                  if _overlap(a, b))
+
+
 #: the metaphors' shapes that grow as the run goes (and may outgrow the picture)
 _GROWING = ("water",)
 

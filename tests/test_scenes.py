@@ -47,6 +47,7 @@ from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
     broken_summaries,
+    calls_over_code,
     crossfaded_overlaps,
     crossfaded_subtitles,
     crossfaded_texts,
@@ -234,6 +235,8 @@ def test_never_two_call_lines_at_once(case):
     """Issue 22, no text over text: the panel's call line is cut, not crossfaded, to the
     next (two calls fading through each other read "clip_ear(C,c₁(a₁)→[c₁ …")."""
     assert crossfaded_texts(graph(case).data, "panel:call") == [], case.id
+    # nor over the pseudocode: a long result is cut short
+    assert calls_over_code(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
