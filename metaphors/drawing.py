@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import copy
 from collections.abc import Sequence
-from typing import Any
+from dataclasses import replace
+from typing import Any, TypeVar
 
 import numpy as np
 from manim import DOWN, Dot, Line, Polygram, VGroup
@@ -14,7 +15,8 @@ from geometry.polygon import Polygon
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
-from story.beats import Hole
+from story.beats import Beat, Hole
+from story.pseudocode import PseudocodeRow, result_row
 
 
 class Frame:
@@ -145,6 +147,44 @@ def whole_caption(triangles: int) -> str:
     (a split, a slice, a stack) is over, and its caption would no longer say what is on
     screen."""
     return f"The whole triangulation: {triangles} triangles"
+
+
+B = TypeVar("B", bound=Beat)
+
+
+def ending_beat(beat: B, pseudocode: Sequence[PseudocodeRow], triangles: int) -> B:
+    """The beat of a run's ending, after its last step ``beat``: the whole triangulation's
+    caption (:func:`whole_caption`), at full pace, and the pseudocode's row saying the result
+    lit (:func:`story.pseudocode.result_row`), not the last step's row, which no longer says
+    what the picture shows; the last step's row if the listing has none.
+
+    >>> from story.pseudocode import RESULT
+    >>> rows = (PseudocodeRow("divide P along d", ("split",)),
+    ...         PseudocodeRow("their union is the triangulation of P", (RESULT,)))
+    >>> end = ending_beat(Beat(caption="Split", seq=9, row=0, pace=0.35), rows, 11)
+    >>> end.caption, end.row, end.pace
+    ('The whole triangulation: 11 triangles', 1, 1.0)
+    >>> ending_beat(Beat(caption="Split", seq=9, row=0), rows[:1], 11).row
+    0
+    """
+    row = result_row(pseudocode)
+    return replace(beat, caption=whole_caption(triangles), pace=1.0,
+                   row=beat.row if row is None else row)
+
+
+def count_words(n: int, holes: int, triangles: int) -> str:
+    """The count a whole triangulation had to reach, in words a class reads: n − 2 for a
+    polygon of ``n`` vertices, two more for each of its ``holes`` (``n`` counting the holes'
+    vertices too).
+
+    >>> count_words(12, 0, 10)
+    'n − 2 = 12 − 2 = 10 triangles'
+    >>> count_words(12, 2, 14)
+    'n + 2h − 2 = 12 + 4 − 2 = 14 triangles'
+    """
+    if not holes:
+        return f"n − 2 = {n} − 2 = {triangles} triangles"
+    return f"n + 2h − 2 = {n} + {2 * holes} − 2 = {triangles} triangles"
 
 
 def crossed_edge(start: Any, end: Any, name: str, theme: Theme = THEME) -> Line:

@@ -6,8 +6,8 @@ Every slice, and what is left of the fruit after it, comes from the log (the bea
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import replace
 from typing import Any
 
 from manim import (
@@ -29,7 +29,7 @@ from manim import (
 from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
 from metaphors.board import Board
-from metaphors.drawing import triangulation_pieces, whole_caption
+from metaphors.drawing import count_words, ending_beat, triangulation_pieces
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
@@ -40,6 +40,28 @@ from tracing import Event
 _DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 PLATE_Y = -2.55
 PLATE_WIDTH = 5.6
+
+
+#: the plate's height, and the part of its width the slices take (the ends are too thin)
+PLATE_HEIGHT, PLATE_USED = 0.9, 0.82
+
+
+def plate_slot(k: int, total: int) -> tuple[float, float, float]:
+    """Where slice ``k`` of ``total`` goes on the plate: its centre's offset from the plate's
+    centre, and the widest and tallest it may be there, so that every slice lies inside the
+    plate's ellipse (near the ends the ellipse is thin: the slices keep to the middle part,
+    :data:`PLATE_USED`, and are lower there).
+
+    >>> x, w, h = plate_slot(11, 11)
+    >>> round(x, 3), round(w, 3), round(h, 3)
+    (2.087, 0.355, 0.45)
+    """
+    used = PLATE_WIDTH * PLATE_USED
+    slot = used / max(total, 1)
+    x = -used / 2 + slot * (k - 0.5)
+    edge = abs(x) + slot * 0.85 / 2  # the slice's far side
+    room = PLATE_HEIGHT * math.sqrt(max(0.0, 1 - (2 * edge / PLATE_WIDTH) ** 2))
+    return x, slot * 0.85, min(0.6, 0.85 * room)
 
 
 def _fruit(board: Board, points: Sequence[Sequence[float]],
@@ -59,7 +81,7 @@ def _setup(board: Board, beat: Beat) -> None:
         return
     theme = board.theme
     x = board.frame.center[0]
-    plate = tag(Ellipse(width=PLATE_WIDTH, height=0.9, color=theme.plate, stroke_width=2,
+    plate = tag(Ellipse(width=PLATE_WIDTH, height=PLATE_HEIGHT, color=theme.plate, stroke_width=2,
                         fill_color=theme.plate, fill_opacity=0.12), None, "plate")
     plate.move_to((x, PLATE_Y, 0))
     fruit = _fruit(board, board.polygon.points, board.holes)
@@ -94,10 +116,15 @@ def ear_test(board: Board, beat: EarTest) -> None:
              Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
     if beat.triangle:
         outline = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.rejected,
-                               stroke_width=theme.stroke * 1.5, fill_color=theme.rejected,
-                               fill_opacity=0.3), "rejected", "ear-triangle")
+                               stroke_width=theme.stroke * 1.5, stroke_opacity=0,
+                               fill_color=theme.rejected, fill_opacity=0), "rejected",
+                      "ear-triangle")
         board.keep("ear-triangle", outline)
-        anims.append(FadeIn(outline))
+        # under the vertices and their labels: the vertex inside it is what the caption
+        # names ("G lies in its triangle"), and a fade-in would put the triangle over it
+        board.scene.add(outline)
+        board.scene.bring_to_front(*board.markers.values())
+        anims.append(outline.animate.set_fill(opacity=0.3).set_stroke(opacity=1.0))
     if beat.inside:
         anims.append(Indicate(board.markers[unprimed(beat.inside)], color=theme.rejected,
                               scale_factor=1.6))
@@ -131,11 +158,10 @@ def clip(board: Board, beat: Slice) -> None:
                          stroke_width=theme.thin_stroke, fill_color=theme.fruit,
                          fill_opacity=0.9), "result", f"slice:{''.join(data.corners)}")
     target = piece.copy()
-    slot = PLATE_WIDTH / max(data.total, 1)
-    target.scale_to_fit_width(min(slot * 0.85, target.width)).scale_to_fit_height(
-        min(0.6, target.height))
-    left = board.frame.center[0] - PLATE_WIDTH / 2
-    target.move_to((left + slot * (data.k - 0.5), PLATE_Y, 0))
+    x, width, height = plate_slot(data.k, data.total)
+    target.scale_to_fit_width(min(width, target.width)).scale_to_fit_height(
+        min(height, target.height))
+    target.move_to((board.frame.center[0] + x, PLATE_Y, 0))
     counter = _counter(board, data.k, data.total)
     # the count is cut, not morphed: glyphs melting into each other read as other numbers
     board.scene.remove(board.objects["counter"])
@@ -159,27 +185,34 @@ def _whole(board: Board, beat: Slice) -> None:
     pieces = triangulation_pieces(beat.triangulation, board.at, theme)
     holes = len(board.holes)
     n = board.polygon.n + sum(len(h.points) for h in board.holes)
-    count = (f"n − 2 = {n} − 2 = {beat.total} triangles" if not holes else
-             f"n + 2h − 2 = {n} + {2 * holes} − 2 = {beat.total} triangles")
-    result = _counter_text(board, count, theme.result)
+    result = _counter_text(board, count_words(n, holes, beat.total), theme.result)
     board.scene.remove(board.objects["counter"])
     board.keep("counter", result)
     board.keep("triangulation", VGroup(*pieces))
-    # under its own caption, at full pace: the last slice's words are over
-    board.play(replace(beat, caption=whole_caption(beat.total), pace=1.0),
-               *[FadeIn(p) for p in pieces], FadeIn(result), run_time=1.2)
+    # under its own caption, at full pace: the last slice's words are over; what the steps
+    # left (prune and search's good part, its last diagonal and ✓) goes
+    board.play(ending_beat(beat, board.panel.pseudocode, beat.total),
+               *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], FadeIn(result),
+               run_time=1.2)
     board.scene.wait(1.0)
 
 
 
 
+#: what a diagonal's search leaves on the picture (:mod:`metaphors.basics`): its claim and verdict
+_FOUND = ("claim", "verdict", "crossed", "crossing")
+
+
 def good(board: Board, beat: Good) -> None:
-    """Prune and search: the good sub-polygon kept, tinted; the previous one fades."""
+    """Prune and search: the good sub-polygon kept, tinted; the previous one fades, and so do
+    the vertex found no ear (its red triangle) and the diagonal found and its ✓: the good
+    part's edge is that diagonal now (left on screen, the next search's claim would take
+    their keys and leave them behind, unturned)."""
     theme = board.theme
     region = tag(MPolygon(*[board.at(p) for p in beat.points], color=theme.called,
                           stroke_width=theme.stroke, fill_color=theme.called,
                           fill_opacity=theme.piece_opacity), "called", "good")
-    board.play(beat, *board.drop("good"), FadeIn(region), run_time=1.2)
+    board.play(beat, *board.drop("good", "ear-triangle", *_FOUND), FadeIn(region), run_time=1.2)
     board.keep("good", region)
 
 

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import weakref
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import replace
 
 from manim import (
     DL,
@@ -37,7 +36,7 @@ from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 
 from metaphors.board import Board
-from metaphors.drawing import triangulation_pieces, whole_caption
+from metaphors.drawing import count_words, ending_beat, triangulation_pieces
 from metaphors.layout import (
     FRAME_AREA,
     PANEL_CALL_Y,
@@ -231,39 +230,43 @@ def stack(board: Board, beat: Stack) -> None:
 
 def _whole(board: Board, beat: Stack) -> None:
     """After the last piece: the pieces' tints give way to the whole triangulation, each
-    triangle its own colour, and the count it had to reach, n − 2."""
+    triangle its own colour, and the count it had to reach, n − 2 (two more a hole)."""
     theme = board.theme
     tints = [k for k in board.objects if k.startswith("piece:")]
     whole = triangulation_pieces(beat.triangulation, board.at, theme)
-    count = _count(board, len(whole))
+    n = board.polygon.n + sum(len(h.points) for h in board.holes)
+    count = _count(board, count_words(n, len(board.holes), len(whole)))
     board.keep("triangulation", VGroup(*whole))
     shown: list[FadeIn] = []
     if count is not None:
         board.keep("counter", count)
         shown.append(FadeIn(count))
-    # under its own caption, at full pace: the last piece's words are over
-    board.play(replace(beat, caption=whole_caption(len(whole)), pace=1.0),
+    # under its own caption, at full pace, its result row lit: the last piece's words are over
+    board.play(ending_beat(beat, board.panel.pseudocode, len(whole)),
                *board.drop(*tints), *[FadeIn(t) for t in whole], *shown, run_time=1.2)
     board.scene.wait(1.0)
 
 
-def _count(board: Board, triangles: int) -> VMobject | None:
-    """The count, n − 2, where it keeps clear of P, its labels, the title, the panel and the
-    subtitle (:func:`_taken`, :func:`metaphors.layout.free_place`), far enough from a label
-    not to be read with it (:data:`COUNT_GAP`): outside P's hull where it can (not in a
-    notch of P), in one line or two. None where nothing fits (a panel of source takes the
-    whole right half): the triangles and the caption's count alone then, as for divide and
-    conquer (:mod:`metaphors.pieces`); under P the count met the bottom vertex's label and
-    the subtitle."""
-    theme, n = board.theme, board.polygon.n
+def _count(board: Board, words: str) -> VMobject | None:
+    """The count ``words`` (n − 2, or n + 2h − 2 with holes), where it keeps clear of P, its
+    labels, the title, the panel and the subtitle (:func:`_taken`,
+    :func:`metaphors.layout.free_place`), far enough from a label not to be read with it
+    (:data:`COUNT_GAP`): outside P's hull where it can (not in a notch of P), in one line or
+    two. None where nothing fits (a panel of source takes the whole right half): the
+    triangles and the caption's count alone then, as for divide and conquer
+    (:mod:`metaphors.pieces`); under P the count met the bottom vertex's label and the
+    subtitle."""
+    theme = board.theme
     taken = _taken(board)
     hull = Region([tuple(board.at(p)[:2]) for p in board.polygon.points]).convex_hull
-    for around in (unary_union([taken, hull]), taken):
-        for words in (f"n − 2 = {n} − 2 = {triangles} triangles",
-                      f"n − 2 = {n} − 2\n= {triangles} triangles"):
-            count = tag(text(words, font=theme.font, size=theme.label_size + 2,
+    head, _, tail = words.rpartition(" = ")  # "n − 2 = 13 − 2", "11 triangles"
+    # the last try nearer P's labels: a keyhole's long "n + 2h − 2 = …" found no room else
+    for around, gap in ((unary_union([taken, hull]), COUNT_GAP), (taken, COUNT_GAP),
+                        (taken, COUNT_GAP / 3)):
+        for said in (words, f"{head}\n= {tail}"):
+            count = tag(text(said, font=theme.font, size=theme.label_size + 2,
                              colour=theme.result), None, "counter")
-            found = free_place(count.width, count.height, around, clearance=COUNT_GAP)
+            found = free_place(count.width, count.height, around, clearance=gap)
             if found is not None:
                 left, top = found
                 return count.move_to((left + count.width / 2, top - count.height / 2, 0))
@@ -408,8 +411,10 @@ def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     caption = (f"This piece is done: {n} triangle{'s' if n != 1 else ''}" if cut
                else "This piece is a triangle already" if bare <= 1
                else f"{bare} pieces are triangles already")
+    # all of them: n − 2, two more a hole (n counting the holes' vertices)
+    whole = len(done) == len(labels) - 2 + 2 * len(walk.root_holes())
     yield walk.call_beat(Stack, caption, call, ret, triangles=() if cut else tuple(triangles),
-                         triangulation=tuple(done) if len(done) == len(labels) - 2 else ())
+                         triangulation=tuple(done) if whole else ())
     cut.clear()
 
 

@@ -13,7 +13,6 @@ import numpy as np
 from manim import Circle, Mobject
 
 from metaphors.board import Board, Playable
-from metaphors.layout import METAPHOR
 from metaphors.marks import board_spot
 from rendering.turn import Turn
 from rendering.typeset import FlatText
@@ -31,12 +30,14 @@ def again(board: Board, beat: Beat, *anims: Playable, run_time: float = 1.0) -> 
 
 
 def _fit_zoom(board: Board, angle: float) -> float:
-    """Largest zoom ≤ 1 that keeps the polygon turned by ``angle`` inside the metaphor's box."""
-    turned = board.frame.turned(angle, METAPHOR.center, 1.0)
-    pts = np.array(turned.many(board.polygon.points))[:, :2] - np.array(METAPHOR.center)
+    """Largest zoom ≤ 1 that keeps the polygon turned by ``angle`` inside the board's box (a
+    fruit's leaves room for the plate and counter below it: the turned fruit keeps off them)."""
+    box = board.box
+    turned = board.frame.turned(angle, box.center, 1.0)
+    pts = np.array(turned.many(board.polygon.points))[:, :2] - np.array(box.center[:2])
     reach = np.abs(pts).max(axis=0)
-    return float(min(1.0, METAPHOR.width / 2 / max(reach[0], 1e-9),
-                     METAPHOR.height / 2 / max(reach[1], 1e-9)))
+    return float(min(1.0, box.width / 2 / max(reach[0], 1e-9),
+                     box.height / 2 / max(reach[1], 1e-9)))
 
 
 def _movers(board: Board) -> list[Mobject]:
@@ -50,12 +51,12 @@ def turn_to(board: Board, angle: float) -> list[Turn]:
     """Animations turning the picture to ``angle`` degrees (absolute; 0 is upright), and the
     board's frame with it. Labels, dots and the ball keep their size and stay upright."""
     old = board.frame
-    new = old.turned(angle, METAPHOR.center, _fit_zoom(board, angle))
+    new = old.turned(angle, board.box.center, _fit_zoom(board, angle))
     delta = new.angle - old.angle
     k = new.zoom / old.zoom
     if abs(delta) < 1e-9 and abs(k - 1) < 1e-9:
         return []
-    turns = {id(m): Turn(m, math.radians(delta), METAPHOR.center, k, upright=_UPRIGHT)
+    turns = {id(m): Turn(m, math.radians(delta), board.box.center, k, upright=_UPRIGHT)
              for m in _movers(board)}
     line, mark = board.objects.get("claim"), board.objects.get("verdict")
     if line is not None and mark is not None and id(mark) in turns:

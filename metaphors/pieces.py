@@ -11,14 +11,13 @@ by the frame every run shares (:mod:`metaphors.basics`).
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import replace
 
 import numpy as np
 from manim import DL, DOWN, RIGHT, UR, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board, Playable
-from metaphors.drawing import triangulation_pieces, whole_caption
+from metaphors.drawing import ending_beat, triangulation_pieces
 from metaphors.layout import (
     METAPHOR,
     PANEL_CALL_Y,
@@ -120,20 +119,24 @@ def split(board: Board, beat: Split) -> None:
     board.play(beat, *anims, run_time=1.2)
     if last:  # the whole triangulation under its own caption: the split's is over
         triangles = sum(1 for key in board.objects if key.startswith("triangle:"))
-        board.play(replace(beat, caption=whole_caption(triangles), pace=1.0), *_whole(board),
-                   run_time=1.2)
+        # the black box goes before the count comes where it stood: never two texts at once
+        finder = board.objects.get("finder")
+        if finder is not None:
+            board.scene.play(*board.drop("finder"), run_time=0.5)
+        board.play(ending_beat(beat, board.panel.pseudocode, triangles),
+                   *_whole(board, finder), run_time=1.2)
 
 
-def _whole(board: Board) -> list[Playable]:
+def _whole(board: Board, finder: Mobject | None) -> list[Playable]:
     """After the last split: the finished triangles give way to the whole triangulation,
-    each triangle its own colour, and the count it had to reach, n − 2."""
+    each triangle its own colour, and the count it had to reach, n − 2 (where the black box
+    ``finder`` stood, if there was one)."""
     theme = board.theme
     done = [k for k in board.objects if k.startswith("triangle:")]
     corners = [[board.where[label] for label in _labels(board.objects[k])] for k in done]
     whole = triangulation_pieces(corners, board.at, theme)
     n = board.polygon.n
-    finder = board.objects.get("finder")
-    shown: list[Playable] = [*board.drop(*done, "finder"), *[FadeIn(t) for t in whole]]
+    shown: list[Playable] = [*board.drop(*done), *[FadeIn(t) for t in whole]]
     # the count where the black box stood, clear of the picture, the panel and the subtitle
     # (:func:`_place`); with no black box, beside the picture when the panel's rows leave
     # room there: a panel of source takes the whole right half, and under the picture the

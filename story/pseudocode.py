@@ -37,12 +37,14 @@ from tracing import JSON
 __all__ = [
     "PANELS",
     "PSEUDOCODE",
+    "RESULT",
     "SOURCE",
     "PseudocodeRow",
     "from_docstring",
     "from_json",
     "lit_row",
     "named",
+    "result_row",
     "to_json",
 ]
 
@@ -90,6 +92,24 @@ def lit_row(pseudocode: Sequence[PseudocodeRow], running: Sequence[str], lit: in
             later = [k for k in rows if lit is not None and k >= lit]
             return later[0] if later else rows[0]
     return None
+
+
+#: What a row covers that says the run's result (the whole triangulation, drawn at the end):
+#: no traced call has this name, so the walk never lights the row; the ending lights it
+#: (:func:`result_row`), not the row of the last step, which no longer says what is on screen.
+RESULT = "(result)"
+
+
+def result_row(pseudocode: Sequence[PseudocodeRow]) -> int | None:
+    """The row saying the run's result (covering :data:`RESULT`); None if none does.
+
+    >>> result_row((PseudocodeRow("divide P along d", ("split",)),
+    ...             PseudocodeRow("their union is the triangulation of P", (RESULT,))))
+    1
+    >>> result_row((PseudocodeRow("divide P along d", ("split",)),)) is None
+    True
+    """
+    return next((k for k, row in enumerate(pseudocode) if RESULT in row.calls), None)
 
 
 # --- the picture's own vertices -----------------------------------------------------------------

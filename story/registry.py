@@ -44,7 +44,7 @@ from geometry.lennes import divide_and_conquer
 from geometry.polygon import Polygon
 from geometry.results import Triangulation
 from geometry.triangulate import RUNNERS, triangulate
-from story.pseudocode import PseudocodeRow
+from story.pseudocode import RESULT, PseudocodeRow
 from usercode.heuristic import UserHeuristic, diagonal_rule
 
 __all__ = [
@@ -267,6 +267,10 @@ _GRAVITY = (
 )
 
 
+#: The last row of a listing that slices ears: what the whole triangulation drawn at its end is.
+_SLICES = PseudocodeRow("the slices together: the triangulation of P", (RESULT,))
+
+
 _ENTRIES = (
     # --- heuristics (thesis ch. 2.1): the wrong ones, then the corrections -------------------
     _heuristic("scaling", correct=False, metaphor="water", polygon="counterexample",
@@ -309,7 +313,7 @@ _ENTRIES = (
                        PseudocodeRow("else find an inner diagonal d of P", _HEURISTICS_TRACED),
                        PseudocodeRow("divide P along d into P1 and P2", ("split",)),
                        PseudocodeRow("triangulate P1 and P2 the same way"),
-                       PseudocodeRow("their union is the triangulation of P"),
+                       PseudocodeRow("their union is the triangulation of P", (RESULT,)),
                    )),
     _triangulation("ear-clipping-naive", metaphor="fruit",
                    idea="Meisters slices the first ear found",
@@ -319,29 +323,35 @@ _ENTRIES = (
                        PseudocodeRow("    is V an ear? (convex, V−1 V V+1 empty)", ("is_ear",)),
                        PseudocodeRow("    yes: slice V−1 V V+1 off, start again", ("clip_ear",)),
                        PseudocodeRow("the triangle left is the last slice", ("ear-clipping-naive",)),
+                       _SLICES,
                    )),
     _triangulation("ear-clipping", metaphor="fruit",
                    idea="only the neighbours of a slice change",
                    pseudocode=(
-                       PseudocodeRow("ear status of every vertex: unknown"),
-                       PseudocodeRow("walk round P while it has > 3 vertices:"),
+                       # every vertex's ear status unknown at first: one row, room for the
+                       # keyhole's and the result's on a polygon with holes (at most 8 rows fit
+                       # the panel at the least size of text)
+                       PseudocodeRow("all unknown; walk round P while > 3 vertices:"),
                        PseudocodeRow("  V's status unknown: is V an ear?", ("is_ear",)),
                        PseudocodeRow("  V is an ear: slice V−1 V V+1 off", ("clip_ear",)),
                        PseudocodeRow("    only V−1 and V+1 change: test again"),
                        PseudocodeRow("  else go on to the next vertex"),
                        PseudocodeRow("the triangle left is the last slice", ("ear-clipping",)),
+                       _SLICES,
                    )),
     _triangulation("prune-and-search", metaphor="fruit",
                    idea="the good sub-polygons shrink",
                    pseudocode=(
-                       PseudocodeRow("G = P, good: it has no cutting edge"),
-                       PseudocodeRow("while P is more than a triangle:"),
+                       # G = P at first, good (no cutting edge: the chapter's card says so); one
+                       # row, room for the result's (at most 8 rows fit at the least size of text)
+                       PseudocodeRow("G = P (good); while P is more than a triangle:"),
                        PseudocodeRow("  V = the middle vertex of G: an ear?", ("is_ear",)),
                        PseudocodeRow("  yes: slice the ear V off, go on in G", ("clip_ear",)),
                        PseudocodeRow("  no: find an inner diagonal V–W of G", ("diagonal_at",)),
                        PseudocodeRow("    (V convex: the sweep; else gravity)", ("sweep_at", "gravity_at")),
                        PseudocodeRow("    G = the good part beyond V–W", ("good_subpolygon",)),
                        PseudocodeRow("the triangle left is the last slice", ("prune-and-search",)),
+                       _SLICES,
                    )),
     _triangulation("monotone", metaphor="monotone", idea="y-monotone pieces, then the stack",
                    pseudocode=(
@@ -354,11 +364,11 @@ _ENTRIES = (
                        # end, regular and merge vertices add one too (geometry.monotone)
                        PseudocodeRow("  split, or v ends or replaces a merge helper:"),
                        PseudocodeRow("    add the diagonal v–helper", ("add_diagonal",)),
-                       PseudocodeRow("cut P along them into y-monotone pieces", ("monotone_pieces",)),
-                       PseudocodeRow("each piece, top down, with a stack:",
-                            ("triangulate_monotone_piece",)),
+                       PseudocodeRow("cut P into y-monotone pieces; each, top down:",
+                            ("monotone_pieces", "triangulate_monotone_piece")),
                        PseudocodeRow("  push v: it waits on the stack", ("push",)),
                        PseudocodeRow("  v sees past the top: cut off, pop", ("cut_off",)),
+                       PseudocodeRow("their triangles: the triangulation of P", (RESULT,)),
                    )),
     _triangulation("cdt", metaphor=None, idea="the reference, by shapely",
                    show_source=False),
@@ -456,7 +466,7 @@ def hole_pseudocode(name: str) -> tuple[PseudocodeRow, ...]:
     """The pseudocode of ``name`` on a polygon with holes: the bridges first, for ear clipping.
 
     >>> [step.text for step in hole_pseudocode("ear-clipping")[:2]]
-    ['cut a keyhole from each hole to the rind', 'ear status of every vertex: unknown']
+    ['cut a keyhole from each hole to the rind', 'all unknown; walk round P while > 3 vertices:']
     >>> hole_pseudocode("monotone") == pseudocode("monotone")
     True
     """

@@ -148,7 +148,20 @@ def call_line(call: Event, ret: Event | None) -> str:
     args = ", ".join(show(v) for v in (call.args or {}).values())
     text = (f"{call.name}({args})" if call.name.isidentifier()
             else f'triangulate({args}, "{call.name}")')
-    return f"{text} → {show(ret.result)}" if ret is not None else text
+    return f"{text} → {_shown_result(ret.result)}" if ret is not None else text
+
+
+def _shown_result(value: Any) -> str:
+    """A result as the call line writes it (:func:`show`); a list of more than two lists
+    (a piece's triangles) by its first two and an ellipsis: the whole would take four lines
+    of the panel and run over its pseudocode.
+
+    >>> _shown_result([[0, 1, 2], [0, 2, 3], [0, 3, 4]]), _shown_result([[0, 1, 2]])
+    ('[[0, 1, 2], [0, 2, 3], …]', '[[0, 1, 2]]')
+    """
+    if isinstance(value, list) and len(value) > 2 and any(isinstance(v, list) for v in value):
+        return "[" + ", ".join(show(v) for v in value[:2]) + ", …]"
+    return show(value)
 
 
 def refs(value: Any) -> list[str]:

@@ -116,6 +116,31 @@ def crossfaded_subtitles(data: dict) -> list[str]:
     return crossfaded_texts(data, "subtitle")
 
 
+def _text_boxes(anim: dict, kinds: set[str]) -> Iterator[tuple[str, tuple[float, ...]]]:
+    """(text, box) of every drawn text an animation of one of ``kinds`` (or its members')
+    plays, its parts' too."""
+    if anim["type"] in kinds:
+        for node in mobject_nodes(anim.get("mobject") or {}):
+            if (node.get("text") or "").strip() and node.get("box") and (
+                    drawn(node) or node.get("type") == "FlatText"):
+                yield node["text"], tuple(node["box"])
+    for child in anim.get("animations", ()):
+        yield from _text_boxes(child, kinds)
+
+
+def crossfaded_overlaps(data: dict) -> list[str]:
+    """The plays that fade a text out while fading another in over it (the two read as one,
+    as a count coming where the black box's question goes), as
+    ``"play 80: 'an inner' under 'n − 2 = 13 − 2'"``: a text goes before the next comes."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        gone = [t for a in play["animations"] for t in _text_boxes(a, OUTGOING)]
+        come = [t for a in play["animations"] for t in _text_boxes(a, INCOMING)]
+        found += [f"play {k}: {old!r} under {new!r}" for old, a in gone for new, b in come
+                  if old != new and a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]]
+    return found
+
+
 # --- issue 22 item 10: the words ------------------------------------------------------------------
 
 #: the command line's names that are no English word: every hyphenated registry name, and
@@ -520,6 +545,67 @@ def stale_endings(data: dict) -> list[str]:
     return found
 
 
+def _result_rows() -> frozenset[str]:
+    """The texts of the pseudocode rows that say a run's result (:data:`story.pseudocode.RESULT`)."""
+    from story.pseudocode import RESULT
+    from story.registry import entry, names
+
+    return frozenset(row.text.strip() for name in names() for row in entry(name).pseudocode
+                     if RESULT in row.calls)
+
+
+def _lit_rows(anim: dict) -> Iterator[str]:
+    """The texts of the lit pseudocode rows (a ``code:`` row's copy in ink) an animation
+    (or its members) puts on the screen."""
+    mobject = anim.get("mobject") or {}
+    if (anim["type"] in INCOMING and (mobject.get("name") or "").startswith("code:")
+            and mobject.get("role") == "called" and (mobject.get("text") or "").strip()):
+        yield mobject["text"].strip()
+    for child in anim.get("animations", ()):
+        yield from _lit_rows(child)
+
+
+def stale_lit_rows(data: dict) -> list[str]:
+    """The plays that draw a run's whole triangulation while the pseudocode's lit row is
+    not the one saying the result ("their union is the triangulation of P"), as
+    ``"play 40: 'divide P along d into P1 and P2'"``: the last step's row no longer says what
+    the picture shows. A run without pseudocode rows lit (no panel, or its source) is not
+    judged."""
+    results = _result_rows()
+    found, lit = [], None
+    for k, play in enumerate(data["plays"]):
+        tops = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        for anim in play["animations"]:
+            for text in _lit_rows(anim):
+                lit = text
+        if lit is not None and lit not in results and any(
+                kind in INCOMING and name == "triangulation" for kind, name in tops):
+            found.append(f"play {k}: {lit!r}")
+    return found
+
+
+#: a verdict's marks on a run's picture (:mod:`metaphors.basics`)
+_VERDICT_MARKS = ("tick", "cross")
+
+
+def leftover_verdicts(data: dict) -> list[str]:
+    """The plays that draw a run's whole triangulation while a verdict's ✓ or ✗ of one of
+    its steps is still on screen, as ``"play 90: 2 ✓/✗ left"``: the diagonal it judged is
+    an edge of the result now, and a mark left over (or left behind, unturned, when a later
+    claim took its place) reads as a claim on the triangulation."""
+    found = []
+    shown = 0
+    for k, play in enumerate(data["plays"]):
+        tops = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        if any(kind in INCOMING and name in _POLYGONS for kind, name in tops):
+            shown = 0  # a new run: the screen was cleared for it
+        shown += sum(1 for kind, name in tops if kind in INCOMING and name in _VERDICT_MARKS)
+        shown -= sum(1 for kind, name in tops if kind in OUTGOING and name in _VERDICT_MARKS)
+        if shown > 0 and any(kind in INCOMING and name == "triangulation" for kind, name in tops):
+            found.append(f"play {k}: {shown} ✓/✗ left")
+    return found
+
+
 # --- issue 22: a verdict's mark reads -------------------------------------------------------------
 
 #: 2 % of the frame's height: the least gap between a verdict's ✓ or ✗ and an edge or label
@@ -827,6 +913,23 @@ def crowded_counts(data: dict) -> list[str]:
                 if subtitle is not None and _overlap(grown, subtitle):
                     found.append(f"{part['text']!r} touches the subtitle")
     return sorted(set(found))
+
+
+def calls_over_code(data: dict) -> list[str]:
+    """The panel's call lines that run over its pseudocode rows (a long result wrapped to
+    four lines reached up into them), as ``"'triangulate_monotone_piece(…' over 'their …'"``."""
+    rows, calls = {}, {}
+    for node in graph_nodes(data):
+        name, box, said = node.get("name") or "", node.get("box"), (node.get("text") or "").strip()
+        if box and said and name.startswith("code:"):
+            rows[said] = box
+        elif name == "panel:call":  # one text, or a group of its wrapped lines
+            said = " ".join(t for n in mobject_nodes(node) if (t := (n.get("text") or "").strip()))
+            whole = _box_of(node)
+            if said and whole is not None:
+                calls[said] = whole
+    return sorted(f"{c[:30]!r} over {r!r}" for c, a in calls.items() for r, b in rows.items()
+                  if _overlap(a, b))
 
 
 #: the metaphors' shapes that grow as the run goes (and may outgrow the picture)

@@ -14,8 +14,16 @@ from click.testing import CliRunner
 
 import tracing
 from metaphors.catalog import beats as storyboard
-from story.pseudocode import PANELS, PseudocodeRow, from_docstring, lit_row, to_json
-from story.registry import REGISTRY, entry, heuristics, names
+from story.pseudocode import (
+    PANELS,
+    RESULT,
+    PseudocodeRow,
+    from_docstring,
+    lit_row,
+    result_row,
+    to_json,
+)
+from story.registry import REGISTRY, entry, heuristics, names, triangulations
 from story.runs import run_logged
 from story.storyboard import pseudocode_of
 from trex import chapter_command, chapter_pool, chapters, player_steps, render_command
@@ -130,8 +138,19 @@ def test_pseudocode_is_a_few_short_rows_in_words(name):
 def test_every_row_covers_calls_its_runs_make(name):
     """A row is lit by the traced names it lists: each of them occurs in some run."""
     made = {e.name for log in _logs(name) for e in log.events if e.kind in ("call", "note")}
-    listed = {c for step in entry(name).pseudocode for c in step.calls}
+    listed = {c for step in entry(name).pseudocode for c in step.calls} - {RESULT}
     assert listed <= made, listed - made
+
+
+@pytest.mark.parametrize("name", [n for n in triangulations() if entry(n).pseudocode])
+def test_a_triangulations_listing_ends_on_its_result(name):
+    """Issue 22: the whole triangulation drawn at a run's end lights a row saying so (the
+    union of the pieces, the slices, the pieces' triangles), the last row, one only: not the
+    last step's row, which no longer says what is on screen."""
+    rows = entry(name).pseudocode
+    assert [k for k, row in enumerate(rows) if RESULT in row.calls] == [len(rows) - 1], name
+    assert result_row(rows) == len(rows) - 1
+    assert "triangulation of P" in rows[-1].text, name
 
 
 def test_the_triangle_heuristics_share_their_frame():

@@ -39,7 +39,7 @@ from geometry.io import read_any_polygon, read_polygon
 from metaphors.pseudocode import source_of
 from metaphors.scene import SequenceScene, TraceScene
 from story.pseudocode import named
-from story.registry import entry, hole_pseudocode, spoken, wrong
+from story.registry import entry, hole_pseudocode, spoken, triangulations, wrong
 from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
 from story.spec import RunSpec
 from story.storyboard import run_vertices
@@ -47,8 +47,11 @@ from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
     broken_summaries,
+    calls_over_code,
+    crossfaded_overlaps,
     crossfaded_subtitles,
     crossfaded_texts,
+    crowded_counts,
     crowded_notes,
     crowded_panel_labels,
     crowded_verdicts,
@@ -56,12 +59,14 @@ from tests.reading_rules import (
     hidden_failures,
     labels_under_faces,
     labels_under_tools,
+    leftover_verdicts,
     notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
     shapes_under_text,
     small_texts,
     stale_endings,
+    stale_lit_rows,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
@@ -225,6 +230,8 @@ def test_never_two_subtitles_at_once(case):
     """Issue 22 item 9: a caption goes before the next comes (no play fades one subtitle
     out while the next fades in)."""
     assert crossfaded_subtitles(graph(case).data) == [], case.id
+    # nor any text fading in over one fading out
+    assert crossfaded_overlaps(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -232,6 +239,8 @@ def test_never_two_call_lines_at_once(case):
     """Issue 22, no text over text: the panel's call line is cut, not crossfaded, to the
     next (two calls fading through each other read "clip_ear(C,c₁(a₁)→[c₁ …")."""
     assert crossfaded_texts(graph(case).data, "panel:call") == [], case.id
+    # nor over the pseudocode: a long result is cut short
+    assert calls_over_code(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -247,6 +256,37 @@ def test_the_whole_triangulation_comes_under_its_own_caption(case):
     it is not the last step's (a split, a slice, a stack), which no longer says what is on
     screen."""
     assert stale_endings(graph(case).data) == [], case.id
+    # nor its lit pseudocode row: the row saying the result ("their union is …") is lit
+    assert stale_lit_rows(graph(case).data) == [], case.id
+    # and no ✓ or ✗ of a step is left over on it
+    assert leftover_verdicts(graph(case).data) == [], case.id
+
+
+#: a run's whole triangulation said in words: ``n − 2 = 12 − 2 = 10 triangles``, or
+#: ``n + 2h − 2 = 15 + 4 − 2 = 17 triangles`` on a polygon with holes
+_WHOLE_COUNT = re.compile(r"^n (?:\+ 2h )?− 2 = (\d+) (?:\+ (\d+) )?− 2\s*= (\d+) triangles$")
+
+
+@pytest.mark.parametrize("case", _params(
+    [c for c in SCENES if c.cls is not None and not plays_several(c.cls)
+     and algorithm_of(c.cls) in triangulations() and entry(algorithm_of(c.cls)).pseudocode]))
+def test_a_triangulation_ends_on_the_whole_triangulation_and_its_count(case):
+    """Issue 22 item 5: a triangulation's run ends on its whole triangulation drawn in P and
+    its count in words a class reads, n − 2 triangles, two more a hole (n counting the holes'
+    vertices): not on its last piece's step ("This piece is done: 2 triangles")."""
+    shape = read_any_polygon(case.cls.polygon)
+    n = shape.n  # every ring's vertices
+    expected = n - 2 + 2 * shape.hole_count
+    data = graph(case).data
+    drawn = sum(1 for play in data["plays"] for anim in play["animations"]
+                if anim["type"] in ("FadeIn", "Create")
+                and (anim.get("mobject") or {}).get("name") == "triangulation")
+    counts = [m for node in graph_nodes(data) if node.get("name") == "counter"
+              and (m := _WHOLE_COUNT.match(" ".join((node.get("text") or "").split())))]
+    assert drawn == expected, (case.id, drawn, expected)
+    assert counts and {(int(m[1]), int(m[2] or 0), int(m[3])) for m in counts} == {
+        (n, 2 * shape.hole_count, expected)}, case.id
+    assert crowded_counts(data) == [], case.id  # clear of the labels (it ran through D)
 
 
 @pytest.mark.parametrize("case", _params(SCENES))

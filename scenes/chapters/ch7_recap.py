@@ -37,6 +37,8 @@ class Recap(LectureScene):
     def chapter_segments(self) -> tuple:
         wrong_claim, why = _claim(FAILING[0])
         right_claim, _ = _claim(HOLDING[0])
+        gravity_claim, gravity_why = _claim("gravity")  # drawn in the figure beside theirs
+        assert not gravity_why, "Gravity fails on the counterexample"
         assert all(_claim(h)[0] == wrong_claim for h in FAILING), "the failing rules differ"
         assert all(_claim(h) == (right_claim, "") for h in HOLDING), "the holding rules differ"
         return (
@@ -47,8 +49,8 @@ class Recap(LectureScene):
                 Figure("claims", POLYGON, heuristics=FAILING)),
             Card("Recap: the rules that hold", (
                 f"{_names(HOLDING)} claim {right_claim}, inside P.",
-                "Their motion stays inside T until it meets the first candidate,",
-                "and Gravity's ball and band never leave P."),
+                "Their motion stays inside T until it meets the first candidate.",
+                f"Gravity claims {gravity_claim}: its ball and band never leave P."),
                 Figure("claims", POLYGON, heuristics=(*HOLDING, "gravity"))),
             Card("Recap: the algorithms", (
                 "Divide and conquer: O(n) per diagonal, n − 3 diagonals: O(n²).",
