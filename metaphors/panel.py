@@ -31,10 +31,6 @@ from manim import (
     Rectangle,
     VGroup,
 )
-from shapely.geometry import LineString, Point, box
-from shapely.geometry.base import BaseGeometry
-from shapely.ops import unary_union
-from shapely.prepared import PreparedGeometry, prep
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject
@@ -45,7 +41,10 @@ from metaphors.layout import (
     PANEL_POLYGON,
     PANEL_SOURCE,
     Box,
+    Obstacles,
     Rect,
+    around,
+    clear,
 )
 from metaphors.listing import Row, Window, listing_rows, window_for
 from metaphors.pseudocode import source_of
@@ -377,20 +376,20 @@ def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: 
     would be under 2.5 % of the frame's height. Every scene's and chapter's polygon keeps all
     its labels (tests.reading_rules.crowded_panel_labels)."""
     rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
-    outline = unary_union([LineString([*(p[:2] for p in ring), ring[0][:2]]) for ring in rings])
     vertices = [(label, point, _away(point, rings[0]), theme.label_size)
                 for label, point in zip(polygon.labels, rings[0], strict=True)]
     for hole, ring in zip(holes, rings[1:], strict=True):
         # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % high
         vertices += [(label, point, _away(point, ring), theme.label_size + 4)
                      for label, point in zip(hole.labels, ring, strict=True)]
-    dots = unary_union([Point(p[:2]).buffer(theme.dot_radius) for _, p, _, _ in vertices])
     texts = [typeset.text(label, font=theme.font, size=size, colour=theme.ink)
              for label, _, _, size in vertices]
-    fixed = prep(unary_union([outline, dots]).buffer(LABEL_CLEARANCE))
-    bounds = box(area.x - area.width / 2, area.y - area.height / 2,
-                 area.x + area.width / 2, area.y + area.height / 2)
     points = [(float(p[0]), float(p[1])) for _, p, _, _ in vertices]
+    fixed = Obstacles(segments=[(ring[k], ring[(k + 1) % len(ring)]) for ring in rings
+                                for k in range(len(ring))],
+                      dots=[(x, y, theme.dot_radius) for x, y in points])
+    bounds = (area.x - area.width / 2, area.y - area.height / 2,
+              area.x + area.width / 2, area.y + area.height / 2)
     places = [_label_places(k, points, away, t.width, t.height, fixed, bounds)
               for k, ((_, _, away, _), t) in enumerate(zip(vertices, texts, strict=True))]
     chosen = _assigned(places)
@@ -413,29 +412,26 @@ def _away(point: np.ndarray, ring: list[np.ndarray]) -> float:
 
 
 def _label_places(k: int, points: list[tuple[float, float]], away: float, width: float,
-                  height: float, fixed: PreparedGeometry, bounds: BaseGeometry
+                  height: float, fixed: Obstacles, bounds: Rect
                   ) -> list[tuple[tuple[float, float], Rect]]:
     """The free places of vertex ``k``'s ``width`` × ``height`` label, best first (nearest,
     then nearest to the direction ``away``): each its centre and its box, in ``bounds``,
-    clear of ``fixed`` (the outline and the dots, grown by the clearance) and nearer its own
+    :data:`LABEL_CLEARANCE` clear of ``fixed`` (the outline and the dots) and nearer its own
     vertex than any other (a label between two dots names neither)."""
+    turns = [(step + 1) // 2 * (1 if step % 2 else -1) * 2 * math.pi / LABEL_DIRECTIONS
+             for step in range(LABEL_DIRECTIONS)]
+    # the box's side nearest the vertex stands a distance from it
+    centres = around([points[k]], [(math.cos(away + t), math.sin(away + t)) for t in turns],
+                     LABEL_DISTANCES, size=(width, height))
+    ok = clear(centres, (width, height), fixed, LABEL_CLEARANCE, bounds)
     found = []
-    px, py = points[k]
-    for rank, distance in enumerate(LABEL_DISTANCES):
-        for step in range(LABEL_DIRECTIONS):
-            turn = (step + 1) // 2 * (1 if step % 2 else -1) * 2 * math.pi / LABEL_DIRECTIONS
-            dx, dy = math.cos(away + turn), math.sin(away + turn)
-            # the box's side nearest the vertex stands ``distance`` from it
-            reach = distance + abs(dx) * width / 2 + abs(dy) * height / 2
-            x, y = px + dx * reach, py + dy * reach
-            rect = (x - width / 2, y - height / 2, x + width / 2, y + height / 2)
-            shape = box(*rect)
-            own = _gap(rect, points[k])
-            if (bounds.contains(shape) and not fixed.intersects(shape)
-                    and all(_gap(rect, q) > own for j, q in enumerate(points) if j != k)):
-                found.append(((rank, abs(turn)), (x, y), rect))
-    found.sort(key=lambda f: f[0])
-    return [(centre, rect) for _, centre, rect in found]
+    for x, y in centres[ok]:
+        rect = (float(x) - width / 2, float(y) - height / 2, float(x) + width / 2,
+                float(y) + height / 2)
+        own = _gap(rect, points[k])
+        if all(_gap(rect, q) > own for j, q in enumerate(points) if j != k):
+            found.append(((float(x), float(y)), rect))
+    return found
 
 
 def _gap(rect: Rect, point: tuple[float, float]) -> float:

@@ -13,7 +13,6 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
 
-import numpy as np
 from manim import DL, DOWN, RIGHT, UR, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
@@ -27,6 +26,9 @@ from metaphors.layout import (
     PANEL_SOURCE,
     SUBTITLE_WIDTH,
     Box,
+    Obstacles,
+    first_clear,
+    grid,
     subtitle_centre,
 )
 from metaphors.performing import Performances, act, performs
@@ -241,19 +243,16 @@ def _box_area(box: Box) -> Area:
 def _place(finder: Mobject, taken: Sequence[Area],
            near: Sequence[float] = BESIDE) -> tuple[float, float] | None:
     """The centre nearest ``near`` (on a grid of :data:`FINDER_STEP`) where ``finder`` stays
-    in the frame and :data:`FINDER_GAP` clear of every area ``taken``; None if none."""
-    w, h = finder.width / 2 + FINDER_GAP, finder.height / 2 + FINDER_GAP
-    xs = np.arange(-HALF_FRAME[0] + w, HALF_FRAME[0] - w, FINDER_STEP)
-    ys = np.arange(-HALF_FRAME[1] + h, HALF_FRAME[1] - h, FINDER_STEP)
-    x, y = np.meshgrid(xs, ys)
-    free = np.ones_like(x, dtype=bool)
-    for left, bottom, right, top in taken:
-        free &= (x + w <= left) | (x - w >= right) | (y + h <= bottom) | (y - h >= top)
-    if not free.any():
+    in the frame and :data:`FINDER_GAP` clear of every area ``taken``; None if none
+    (:func:`metaphors.layout.first_clear`)."""
+    size = (finder.width, finder.height)
+    frame = (-HALF_FRAME[0] + FINDER_GAP, -HALF_FRAME[1] + FINDER_GAP,
+             HALF_FRAME[0] - FINDER_GAP, HALF_FRAME[1] - FINDER_GAP)
+    centres = grid(frame, size, FINDER_STEP, near=near[:2])
+    k = first_clear(centres, size, Obstacles(boxes=taken), FINDER_GAP)
+    if k is None:
         return None
-    far = np.where(free, (x - near[0]) ** 2 + (y - near[1]) ** 2, np.inf)
-    k = np.unravel_index(np.argmin(far), far.shape)  # the first of equals: deterministic
-    return (round(float(x[k]), 6), round(float(y[k]), 6))
+    return (round(float(centres[k][0]), 6), round(float(centres[k][1]), 6))
 
 
 def find(board: Board, beat: FindDiagonal) -> None:

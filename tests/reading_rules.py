@@ -538,10 +538,16 @@ def _recorded(anim: dict) -> Iterator[tuple[str, dict]]:
         yield from _recorded(child)
 
 
-def _label_boxes(marker: dict) -> Iterator[tuple[float, ...]]:
-    for node in mobject_nodes(marker):
+def _label_boxes(marker: dict, *, direct: bool = False
+                 ) -> Iterator[tuple[float, float, float, float]]:
+    """The box of each text a vertex's marker shows (its label): among all its parts, or,
+    ``direct``, among its own children only (a marker's dot and label, not what a group
+    holding markers holds further down)."""
+    parts = marker.get("submobjects", ()) if direct else mobject_nodes(marker)
+    for node in parts:
         if node.get("box") and (node.get("text") or "").strip():
-            yield tuple(node["box"])
+            x0, y0, x1, y1 = node["box"]
+            yield (x0, y0, x1, y1)
 
 
 def _state_then(data: dict, last: dict[str, tuple[int, str, dict]], k: int,
@@ -768,9 +774,8 @@ def _named_label_boxes(node: dict) -> Iterator[tuple[str, tuple[float, float, fl
     """(vertex, box) of each vertex label in a node and its parts."""
     for part in mobject_nodes(node):
         if (part.get("name") or "").startswith("vertex:"):
-            for child in part.get("submobjects", ()):
-                if child.get("box") and (child.get("text") or "").strip():
-                    yield part["name"].removeprefix("vertex:"), tuple(child["box"])
+            for box in _label_boxes(part, direct=True):
+                yield part["name"].removeprefix("vertex:"), box
 
 
 def crowded_notes(data: dict) -> list[str]:
@@ -890,3 +895,56 @@ def crowded_exercises(data: dict) -> list[str]:
             if any(e.distance(b) < LEAST_LABEL_GAP for e in edges):
                 found.append(f"label {text} on an edge")
     return found
+
+
+# --- issue 22: a vertex label is read clear of the lines drawn ------------------------------------
+
+#: the board's drawn segments a vertex label must not meet: its outline's edges and the
+#: diagonals drawn on it
+_SEGMENT_OWNERS = ("polygon", "diagonal:")
+
+
+def _segments(node: dict) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The straight pieces of a drawn outline or line: manim's points come four a curve,
+    the first and the last the ends of an edge (several rings, with holes, are not joined)."""
+    points = node.get("points") or []
+    return [(tuple(points[k][:2]), tuple(points[k + 3][:2])) for k in range(0, len(points) - 3, 4)
+            if points[k][:2] != points[k + 3][:2]]
+
+
+def crossed_vertex_labels(data: dict) -> list[str]:
+    """The board's vertex labels that a drawn segment meets, as ``"play 93 K × diagonal:IM"``
+    or ``"play 12 K × polygon"`` (each label and segment once, at the first play it shows):
+    a label an edge or a diagonal runs through reads as part of the line, or names the wrong
+    vertex. The label, the outline and the diagonals are as the play leaves them; a thing
+    faded out is gone. A polygon coming in begins a new picture."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    shown: dict[str, dict] = {}
+    found: dict[tuple[str, str], str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            top = anim.get("mobject") or {}
+            if anim.get("type") in INCOMING and top.get("name") in _POLYGONS:
+                shown = {}
+            for kind, node in _recorded(anim):
+                for part in mobject_nodes(node):
+                    name = part.get("name") or ""
+                    if name.startswith(("vertex:", *_SEGMENT_OWNERS)):
+                        if kind in OUTGOING:
+                            shown.pop(name, None)
+                        else:
+                            shown[name] = part
+        lines = {name: [LineString(s) for s in _segments(node)] for name, node in shown.items()
+                 if name.startswith(_SEGMENT_OWNERS)}
+        for name, marker in shown.items():
+            if not name.startswith("vertex:"):
+                continue
+            for label in _label_boxes(marker, direct=True):
+                shape = area(*label)
+                for owner, segments in lines.items():
+                    if any(shape.intersects(s) for s in segments):
+                        found.setdefault((name, owner),
+                                         f"play {k} {name.removeprefix('vertex:')} × {owner}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
