@@ -23,6 +23,7 @@ from metaphors.drawing import Frame
 from metaphors.layout import Obstacles, Rect, Segment, around, first_clear, rects_at
 from metaphors.theme import THEME, Theme
 from rendering import typeset
+from story.beats import Hole
 
 #: the least gap (scene units) between a label and an edge, a dot or another label
 MARGIN = 0.05
@@ -109,4 +110,68 @@ def placed_vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME,
     return group
 
 
-__all__ = ["MARGIN", "outward", "place_labels", "place_ring_labels", "placed_vertex_markers"]
+def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
+                     theme: Theme = THEME) -> list[tuple[str, VGroup]]:
+    """(label, dot and label) for every vertex of the board's polygon and of its holes, each
+    label where :func:`metaphors.drawing.vertex_markers` and
+    :func:`metaphors.drawing.hole_markers` put it (a fixed step away from its ring's centre)
+    if that is clear, else in the first clear place round its vertex
+    (:func:`place_ring_labels`): an edge through a label reads as part of the line."""
+    rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
+    names = [*polygon.labels, *(label for h in holes for label in h.labels)]
+    # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % high
+    steps = [(0.32, theme.label_size)] * polygon.n + [
+        (0.3, theme.label_size + 4)] * (len(names) - polygon.n)
+    texts = [typeset.text(name, font=theme.font, size=size, colour=theme.ink)
+             for name, (_, size) in zip(names, steps, strict=True)]
+    first: list[np.ndarray] = []
+    for ring in rings:
+        centre = np.mean(ring, axis=0)
+        for point in ring:
+            away = (point - centre)[:2]
+            norm = float(np.linalg.norm(away))
+            first.append(point[:2] + (away / norm if norm > 1e-9 else np.array([0.0, -1.0]))
+                         * steps[len(first)][0])
+    centres = place_ring_labels(rings, [(t.width, t.height) for t in texts], [],
+                                theme.dot_radius, first=first)
+    points = [point for ring in rings for point in ring]
+    markers = []
+    for name, at, text, centre in zip(names, points, texts, centres, strict=True):
+        text.move_to((centre[0], centre[1], 0.0))
+        markers.append((name, VGroup(Dot(at, radius=theme.dot_radius, color=theme.ink), text)))
+    return markers
+
+
+def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
+                   drawn: Sequence[Segment], new: Sequence[Segment],
+                   dot: float = THEME.dot_radius) -> dict[str, np.ndarray]:
+    """The labels that the ``new`` segments come within :data:`MARGIN` of, each with a new
+    centre: the first clear place round its vertex (:func:`place_ring_labels`' order: out
+    along the bisector of its ring, each ring a list of labels, their dots where the markers
+    stand now), clear of the segments ``drawn`` (the edges, the lines on the picture) and
+    ``new``, of the dots and of the other labels; a label with no clear place stays."""
+    at = {name: np.asarray(m[0].get_center(), dtype=float)[:2] for name, m in markers.items()}
+    boxes = {name: tuple(rects_at(m[1].get_center()[:2], (m[1].width, m[1].height))[0])
+             for name, m in markers.items() if len(m) > 1}
+    lines = Obstacles(segments=[(np.asarray(a, float)[:2], np.asarray(b, float)[:2])
+                                for a, b in new])
+    base = Obstacles(segments=[*drawn, *new],
+                     dots=[(float(p[0]), float(p[1]), dot) for p in at.values()])
+    moved: dict[str, np.ndarray] = {}
+    for ring in rings:
+        for i, name in enumerate(ring):
+            if name not in boxes or lines.gaps(np.array([boxes[name]]))[0] >= MARGIN:
+                continue
+            size = (boxes[name][2] - boxes[name][0], boxes[name][3] - boxes[name][1])
+            d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])
+            tried = around([at[name]], [_turned(d, turn) for turn in TURNS], RADII)
+            others = [box for other, box in boxes.items() if other != name]
+            found = first_clear(tried, size, base.plus(boxes=others), MARGIN)
+            if found is not None:
+                moved[name] = tried[found]
+                boxes[name] = tuple(rects_at(tried[found], size)[0])
+    return moved
+
+
+__all__ = ["MARGIN", "crossed_labels", "measured_markers", "outward", "place_labels",
+           "place_ring_labels", "placed_vertex_markers"]

@@ -89,10 +89,7 @@ def board_spot(board: Board, mark: Mobject, line: Mobject,
         return moved(p) if moved is not None else p
 
     # the outline as drawn, not P: ear clipping's fruit shrinks as its slices go
-    paths = [path for part in board.outline.family_members_with_points()
-             for path in part.get_subpaths() if len(path) >= 12]  # a triangle's, at least
-    rings = sorted(([end(p) for p in path[:-1:4]] for path in paths),
-                   key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
+    rings = [[end(p) for p in ring] for ring in board.outline_rings()]
     edges = [edge for ring in rings for edge in ring_edges(ring)]
     edges += [(end(m.get_start()), end(m.get_end())) for key, m in board.objects.items()
               if key.startswith("diagonal:") and isinstance(m, Line)]

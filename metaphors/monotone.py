@@ -92,7 +92,7 @@ def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
                     stroke_width=board.theme.stroke * 1.3), "argument",
                f"diagonal:{''.join(beat.labels)}")
     board.keep(f"diagonal:{''.join(beat.labels)}", line)
-    board.play(beat, Create(line), run_time=1.0)
+    board.play(beat, Create(line), *board.clear_labels(line), run_time=1.0)
 
 
 def pieces(board: Board, beat: Pieces) -> None:

@@ -912,12 +912,25 @@ def _segments(node: dict) -> list[tuple[tuple[float, float], tuple[float, float]
             if points[k][:2] != points[k + 3][:2]]
 
 
+def _ends(anim: dict) -> Iterator[tuple[str, dict, str]]:
+    """(the animation's type, node, name) of every top mobject an animation (or its members)
+    has: its mobject, then its target, the state the mobject ends in, under the mobject's
+    name (a transform into a new shape: the fruit's outline as its slices go)."""
+    own = (anim.get("mobject") or {}).get("name") or ""
+    for key in ("mobject", "target"):
+        if key in anim:
+            yield anim["type"], anim[key], own or anim[key].get("name") or ""
+    for child in anim.get("animations", ()):
+        yield from _ends(child)
+
+
 def crossed_vertex_labels(data: dict) -> list[str]:
     """The board's vertex labels that a drawn segment meets, as ``"play 93 K × diagonal:IM"``
     or ``"play 12 K × polygon"`` (each label and segment once, at the first play it shows):
     a label an edge or a diagonal runs through reads as part of the line, or names the wrong
     vertex. The label, the outline and the diagonals are as the play leaves them; a thing
-    faded out is gone. A polygon coming in begins a new picture."""
+    faded out is gone, and one a turn moves is unknown until it is recorded again (a turn
+    records where it starts). A polygon coming in begins a new picture."""
     from shapely.geometry import LineString
     from shapely.geometry import box as area
 
@@ -928,11 +941,12 @@ def crossed_vertex_labels(data: dict) -> list[str]:
             top = anim.get("mobject") or {}
             if anim.get("type") in INCOMING and top.get("name") in _POLYGONS:
                 shown = {}
-            for kind, node in _recorded(anim):
+            for kind, node, named in _ends(anim):
                 for part in mobject_nodes(node):
-                    name = part.get("name") or ""
+                    name = named if part is node else part.get("name") or ""
                     if name.startswith(("vertex:", *_SEGMENT_OWNERS)):
-                        if kind in OUTGOING:
+                        # a turn records where it starts, not where it leaves the thing
+                        if kind in OUTGOING or kind == "Turn":
                             shown.pop(name, None)
                         else:
                             shown[name] = part

@@ -47,6 +47,7 @@ from tests.reading_rules import (
     LEAST_LINE,
     broken_counts,
     broken_summaries,
+    crossed_vertex_labels,
     crossfaded_subtitles,
     crossfaded_texts,
     crowded_notes,
@@ -250,6 +251,13 @@ def test_a_verdicts_mark_stands_clear_of_edges_and_labels(case):
     """Issue 22: a ✓ or ✗ keeps 2 % of the frame's height from every edge of its polygon
     and every vertex label (a ✓ on edge BC reads as judging BC)."""
     assert crowded_verdicts(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_drawn_line_crosses_a_vertex_label(case):
+    """Issue 22: a board's vertex label stands clear of the lines drawn, the polygon's edges
+    and the diagonals (an edge through chapter 5's K read as part of the line)."""
+    assert crossed_vertex_labels(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
