@@ -360,6 +360,15 @@ LABEL_CLEARANCE = 0.05
 LABEL_DISTANCES = (0.1, 0.16, 0.24, 0.34, 0.46)
 #: the directions a label may stand in from its vertex (every 15°)
 LABEL_DIRECTIONS = 24
+#: how much nearer its own dot than any other a label's centre stands (a label midway
+#: between two dots, as the keyhole's b₂ between a₂ and b₂, names neither)
+LABEL_OWN = 1.25
+#: the least a label keeps from the outline and the dots where it has no place nearer its
+#: own dot :data:`LABEL_CLEARANCE` clear (the reading rule asks for 0.03)
+LABEL_NARROW = 0.035
+#: the finer ring of places a label with no roomy place of its own is looked for on
+FINE_DISTANCES = tuple(round(0.04 + 0.02 * i, 2) for i in range(22))
+FINE_DIRECTIONS = 72
 
 
 def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: Theme,
@@ -414,24 +423,44 @@ def _away(point: np.ndarray, ring: list[np.ndarray]) -> float:
 def _label_places(k: int, points: list[tuple[float, float]], away: float, width: float,
                   height: float, fixed: Obstacles, bounds: Rect
                   ) -> list[tuple[tuple[float, float], Rect]]:
-    """The free places of vertex ``k``'s ``width`` × ``height`` label, best first (nearest,
-    then nearest to the direction ``away``): each its centre and its box, in ``bounds``,
-    :data:`LABEL_CLEARANCE` clear of ``fixed`` (the outline and the dots) and nearer its own
-    vertex than any other (a label between two dots names neither)."""
-    turns = [(step + 1) // 2 * (1 if step % 2 else -1) * 2 * math.pi / LABEL_DIRECTIONS
-             for step in range(LABEL_DIRECTIONS)]
+    """The free places of vertex ``k``'s ``width`` × ``height`` label, best first: each its
+    centre and its box, in ``bounds``, clear of ``fixed`` (the outline and the dots), its box
+    nearer its own vertex than any other (a label between two dots names neither). First
+    those :data:`LABEL_CLEARANCE` clear whose centre stands :data:`LABEL_OWN` times nearer its
+    own dot than any other, then those only :data:`LABEL_NARROW` clear that do, then the
+    rest :data:`LABEL_CLEARANCE` clear (a crowded hole's vertex: the keyhole's b₂ between a₂
+    and G); each tier nearest first, then nearest to the direction ``away``."""
+    found = _tiers(k, points, away, width, height, fixed, bounds, LABEL_DISTANCES,
+                   LABEL_DIRECTIONS)
+    if not found[0]:  # none roomy and its own: look closer, on a finer ring of places
+        found = _tiers(k, points, away, width, height, fixed, bounds, FINE_DISTANCES,
+                       FINE_DIRECTIONS)
+    return [place for tier in found for place in tier]
+
+
+def _tiers(k: int, points: list[tuple[float, float]], away: float, width: float, height: float,
+           fixed: Obstacles, bounds: Rect, distances: Sequence[float], directions: int
+           ) -> list[list[tuple[tuple[float, float], Rect]]]:
+    """:func:`_label_places`' three tiers, on ``distances`` × ``directions`` round vertex ``k``."""
+    turns = [(step + 1) // 2 * (1 if step % 2 else -1) * 2 * math.pi / directions
+             for step in range(directions)]
     # the box's side nearest the vertex stands a distance from it
     centres = around([points[k]], [(math.cos(away + t), math.sin(away + t)) for t in turns],
-                     LABEL_DISTANCES, size=(width, height))
-    ok = clear(centres, (width, height), fixed, LABEL_CLEARANCE, bounds)
-    found = []
-    for x, y in centres[ok]:
-        rect = (float(x) - width / 2, float(y) - height / 2, float(x) + width / 2,
-                float(y) + height / 2)
-        own = _gap(rect, points[k])
-        if all(_gap(rect, q) > own for j, q in enumerate(points) if j != k):
-            found.append(((float(x), float(y)), rect))
-    return found
+                     distances, size=(width, height))
+    wide = clear(centres, (width, height), fixed, LABEL_CLEARANCE, bounds)
+    narrow = clear(centres, (width, height), fixed, LABEL_NARROW, bounds)
+    tiers: list[list[tuple[tuple[float, float], Rect]]] = [[], [], []]
+    for (x, y), roomy, tight in zip(centres.tolist(), wide, narrow, strict=True):
+        rect = (x - width / 2, y - height / 2, x + width / 2, y + height / 2)
+        own, others = _gap(rect, points[k]), [q for j, q in enumerate(points) if j != k]
+        if not tight or not all(_gap(rect, q) > own for q in others):
+            continue
+        mine = all(math.dist((x, y), q) >= LABEL_OWN * math.dist((x, y), points[k])
+                   for q in others)
+        tier = 0 if mine and roomy else 1 if mine else 2 if roomy else None
+        if tier is not None:
+            tiers[tier].append(((x, y), rect))
+    return tiers
 
 
 def _gap(rect: Rect, point: tuple[float, float]) -> float:

@@ -681,12 +681,16 @@ def broken_summaries(data: dict) -> list[str]:
 
 #: the least a label of the panel's polygon keeps from its outline and from another label
 LABEL_ROOM = 0.03
+#: how much nearer its own dot a panel label's centre stands than any other's (the keyhole's
+#: b₂, midway between the dots a₂ and b₂, named neither)
+LABEL_OWN = 1.2
 
 
 def crowded_panel_labels(data: dict) -> list[str]:
     """The labels of the panel's polygon that overlap another label or come within
     :data:`LABEL_ROOM` of its outline (an edge through a label misreads it), or that stand
-    nearer another vertex's dot than their own, as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``;
+    nearer another vertex's dot than their own (their box, or their centre by
+    :data:`LABEL_OWN`), as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``;
     and the vertices left without a label (no room for one: ``"K unlabelled"``). Each run's
     panel (from its polygon's coming in) is judged alone."""
     found: list[str] = []
@@ -756,8 +760,13 @@ def _crowded(outline_node: dict, markers: dict[str, dict]) -> list[str]:
         found += [f"{label} × {other}" for other, there in sorted(labels.items())
                   if other > label and shape.distance(there) < LABEL_ROOM]
         nearest = min(dots, key=lambda k: (shape.distance(dots[k]), k))
+        centre = shape.centroid
+        closest = min(dots, key=lambda k: (centre.distance(dots[k]) * (
+            LABEL_OWN if k == label else 1), k != label))
         if nearest != label and shape.distance(dots[nearest]) < shape.distance(dots[label]):
             found.append(f"{label} ~ {nearest}")
+        elif closest != label:  # midway between two dots: it names neither
+            found.append(f"{label} ~ {closest}")
     return found
 
 
