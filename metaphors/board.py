@@ -14,6 +14,7 @@ from typing import Any, TypeAlias
 
 import numpy as np
 from manim import Animation, FadeIn, FadeOut, Line, Mobject, Scene, Transform, VGroup
+from manim import Polygon as MPolygon
 from manim.mobject.mobject import _AnimationBuilder
 
 from geometry.polygon import Polygon
@@ -207,21 +208,21 @@ class Board:
         rings = [list(path[:-1:4]) for path in paths]
         return sorted(rings, key=lambda ring: -abs(_area([p[:2] for p in ring])))
 
-    def clear_labels(self, *lines: Line) -> list[Animation]:
-        """The moves, to play with ``lines`` (about to be drawn: a diagonal, a cut), of the
-        vertex labels they would cross: each to a clear place beside its vertex, measured
-        against the outline's edges, the lines drawn and the other labels
-        (:func:`metaphors.labels.crossed_labels`); a label the lines keep clear of stays. A
-        move transforms the whole marker, so :meth:`play` recolours it after the play."""
+    def clear_labels(self, *lines: Mobject) -> list[Animation]:
+        """The moves, to play with ``lines`` (about to be drawn: a diagonal, a cut, the
+        triangles of a triangulation), of the vertex labels they would cross: each to a clear
+        place beside its vertex, measured against the outline's edges, the lines and
+        triangles drawn and the other labels (:func:`metaphors.labels.crossed_labels`); a
+        label the lines keep clear of stays. A move transforms the whole marker, so
+        :meth:`play` recolours it after the play."""
         rings = [list(self.polygon.labels), *(list(h.labels) for h in self.holes)]
         drawn = [(ring[k], ring[(k + 1) % len(ring)]) for ring in self.outline_rings()
                  for k in range(len(ring))]
-        drawn += [(m.get_start(), m.get_end()) for m in self.objects.values()
-                  if isinstance(m, Line) and m not in lines]
+        drawn += [edge for m in self.objects.values() if m not in lines for edge in _edges(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
         moves: list[Animation] = []
         for label, centre in crossed_labels(rings, markers, drawn,
-                                            [(line.get_start(), line.get_end()) for line in lines],
+                                            [edge for line in lines for edge in _edges(line)],
                                             self.theme.dot_radius).items():
             moved = self.markers[label].copy()
             moved[1].move_to((centre[0], centre[1], 0.0))
@@ -237,3 +238,15 @@ def _area(ring: Sequence[Sequence[float]]) -> float:
     """The signed area of a ring of points (the shoelace formula)."""
     return 0.5 * sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(ring, [*ring[1:], ring[0]],
                                                                strict=True))
+
+
+def _edges(mobject: Mobject) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""
+    if isinstance(mobject, Line):
+        return [(mobject.get_start(), mobject.get_end())]
+    if isinstance(mobject, MPolygon):
+        corners = list(mobject.get_vertices())
+        return [(p, corners[(k + 1) % len(corners)]) for k, p in enumerate(corners)]
+    if isinstance(mobject, VGroup):
+        return [edge for part in mobject.submobjects for edge in _edges(part)]
+    return []

@@ -168,7 +168,8 @@ def _whole(board: Board, beat: Slice) -> None:
     board.keep("triangulation", VGroup(*pieces))
     # under its own caption, at full pace: the last slice's words are over
     board.play(replace(beat, caption=whole_caption(beat.total), pace=1.0),
-               *[FadeIn(p) for p in pieces], FadeIn(result), run_time=1.2)
+               *[FadeIn(p) for p in pieces], FadeIn(result), *board.clear_labels(*pieces),
+               run_time=1.2)
     board.scene.wait(1.0)
 
 

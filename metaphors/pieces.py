@@ -111,6 +111,7 @@ def split(board: Board, beat: Split) -> None:
     last = all(len(p) == 3 for p in beat.points) and not any(
         key.startswith("piece:") for key in board.objects)
     chosen: set[str] = set()
+    made: list[Mobject] = []
     for piece, points, labels in zip(beat.pieces, beat.points,
                                      beat.labels, strict=False):
         done = len(points) == 3
@@ -119,7 +120,8 @@ def split(board: Board, beat: Split) -> None:
         tint = _tint(board, points, labels, colour, done)
         board.keep(f"triangle:{''.join(labels)}" if done else f"piece:{piece}", tint)
         anims.append(FadeIn(tint))
-    board.play(beat, *anims, run_time=1.2)
+        made.append(tint)
+    board.play(beat, *anims, *board.clear_labels(*made), run_time=1.2)
     if last:  # the whole triangulation under its own caption: the split's is over
         triangles = sum(1 for key in board.objects if key.startswith("triangle:"))
         board.play(replace(beat, caption=whole_caption(triangles), pace=1.0), *_whole(board),
@@ -135,7 +137,8 @@ def _whole(board: Board) -> list[Playable]:
     whole = triangulation_pieces(corners, board.at, theme)
     n = board.polygon.n
     finder = board.objects.get("finder")
-    shown: list[Playable] = [*board.drop(*done, "finder"), *[FadeIn(t) for t in whole]]
+    shown: list[Playable] = [*board.drop(*done, "finder"), *[FadeIn(t) for t in whole],
+                             *board.clear_labels(*whole)]
     # the count where the black box stood, clear of the picture, the panel and the subtitle
     # (:func:`_place`); with no black box, beside the picture when the panel's rows leave
     # room there: a panel of source takes the whole right half, and under the picture the

@@ -908,9 +908,11 @@ def crowded_exercises(data: dict) -> list[str]:
 
 # --- issue 22: a vertex label is read clear of the lines drawn ------------------------------------
 
-#: the board's drawn segments a vertex label must not meet: its outline's edges and the
-#: diagonals drawn on it
-_SEGMENT_OWNERS = ("polygon", "diagonal:")
+#: the board's drawn segments a vertex label must not meet: its outline's edges, the
+#: diagonals drawn on it and the triangles' edges (a piece done, the whole triangulation)
+_SEGMENT_OWNERS = ("polygon", "diagonal:", "triangle", "triangulation")
+#: the owners of which several are shown under one name (each piece's triangles)
+_MANY = ("triangle", "triangulation")
 
 
 def _segments(node: dict) -> list[tuple[tuple[float, float], tuple[float, float]]]:
@@ -953,6 +955,8 @@ def crossed_vertex_labels(data: dict) -> list[str]:
             for kind, node, named in _ends(anim):
                 for part in mobject_nodes(node):
                     name = named if part is node else part.get("name") or ""
+                    if name.startswith(_MANY) and part.get("points"):
+                        name += f"@{part['points'][0]}"  # one of many: told by where it is
                     if name.startswith(("vertex:", *_SEGMENT_OWNERS)):
                         # a turn records where it starts, not where it leaves the thing
                         if kind in OUTGOING or kind == "Turn":
@@ -968,6 +972,7 @@ def crossed_vertex_labels(data: dict) -> list[str]:
                 shape = area(*label)
                 for owner, segments in lines.items():
                     if any(shape.intersects(s) for s in segments):
-                        found.setdefault((name, owner),
-                                         f"play {k} {name.removeprefix('vertex:')} × {owner}")
+                        drawn = owner.partition("@")[0]
+                        found.setdefault((name, drawn),
+                                         f"play {k} {name.removeprefix('vertex:')} × {drawn}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
