@@ -910,7 +910,7 @@ def crowded_exercises(data: dict) -> list[str]:
 
 #: the board's drawn segments a vertex label must not meet: its outline's edges, the
 #: diagonals drawn on it and the triangles' edges (a piece done, the whole triangulation)
-_SEGMENT_OWNERS = ("polygon", "diagonal:", "triangle", "triangulation")
+_SEGMENT_OWNERS = ("polygon", "analysis:polygon", "diagonal:", "triangle", "triangulation")
 #: the owners of which several are shown under one name (each piece's triangles)
 _MANY = ("triangle", "triangulation")
 

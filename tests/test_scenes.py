@@ -651,10 +651,16 @@ def _vertex_places(nodes_: list[dict]) -> dict[str, list]:
                                               "divide_and_conquer.DivideAndConquer")])
 def test_vertices_come_back_after_the_picture_turns(case):
     """Gravity turns the picture and turns it back after the verdict (every claim of divide
-    and conquer): dots and labels end where they started, however many turns came between."""
+    and conquer): dots and labels end where they started, however many turns came between,
+    or where a label was last moved clear of a line drawn (a Transform of its marker)."""
     data = graph(case).data
     first = _vertex_places(n for play in data["plays"] for a in play["animations"]
                            for n in _walk_animation(a))
+    # the last move of each label counts: the targets latest first, under their marker's name
+    moves = [{**a["target"], "name": a["mobject"]["name"]} for play in data["plays"]
+             for a in play["animations"] if a["type"] == "Transform" and "target" in a
+             and (a["mobject"].get("name") or "").startswith("vertex:")]
+    first.update(_vertex_places(reversed(moves)))
     last = _vertex_places(m for n in data["final"] for m in _walk(n))
     assert len(first) >= 8 and first.keys() == last.keys()
     moved = {k: (first[k], last[k]) for k in first if first[k] != last[k]}
