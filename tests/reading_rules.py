@@ -976,3 +976,42 @@ def crossed_vertex_labels(data: dict) -> list[str]:
                         found.setdefault((name, drawn),
                                          f"play {k} {name.removeprefix('vertex:')} × {drawn}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- issue 22: a ✓ stands beside its claim inside P ---------------------------------------------
+
+#: the marks of a correct claim the analyses draw (a run's board may turn or shrink its
+#: polygon under the mark: its ticks are not judged here)
+_TICKS = ("analysis:tick",)
+
+
+def ticks_outside(data: dict) -> list[str]:
+    """The analyses' ✓ marks not wholly inside their polygon, as ``"play 60 analysis:tick: 0.46 outside
+    P"`` (how far its box reaches out): a ✓ past an edge seems to judge that edge, and a
+    correct claim lies inside P, where there is room for its mark. The polygon is the last
+    drawn before the mark (:func:`crowded_verdicts`)."""
+    from shapely.geometry import Point, Polygon
+    from shapely.geometry import box as area
+
+    last: dict[str, tuple[int, str, dict]] = {}
+    found = []
+    for k, play in enumerate(data["plays"]):
+        ticks = []
+        for kind, node in (r for a in play["animations"] for r in _recorded(a)):
+            name = node.get("name") or ""
+            if name in _TICKS and kind in INCOMING:
+                ticks.append(node)
+            elif name in _POLYGONS:
+                last[name] = (k, kind, node)
+        for tick in ticks:
+            home = "analysis:polygon" if tick["name"].startswith("analysis:") else "polygon"
+            polygon = _state_then(data, last, k, home)
+            box = _box_of(tick)
+            if polygon is None or box is None:
+                continue
+            shape = area(*box)
+            region = Polygon(_corners(polygon))
+            if not region.buffer(1e-6).contains(shape):
+                reach = max(region.distance(Point(p)) for p in shape.exterior.coords)
+                found.append(f"play {k} {tick['name']}: {reach:.2f} outside P")
+    return found

@@ -41,6 +41,7 @@ from tests.reading_rules import (
     rushed_questions,
     small_texts,
     stale_endings,
+    ticks_outside,
     unreadable_cues,
     unspoken_words,
 )
@@ -495,6 +496,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert crowded_verdicts(data) == [], chapter.slug
     # issue 22: no drawn line (an edge, a diagonal) crosses a vertex label
     assert crossed_vertex_labels(data) == [], chapter.slug
+    # issue 22: an analysis's ✓ for a correct claim stands inside P, beside its claim
+    assert ticks_outside(data) == [], chapter.slug
     # issue 22 item 5: a summary of fast beats is not broken by a key step and comes back
     assert broken_summaries(data) == [], chapter.slug
     # the panel's small polygon: its labels apart, off its edges, none left out
