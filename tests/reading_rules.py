@@ -568,6 +568,26 @@ def _state_then(data: dict, last: dict[str, tuple[int, str, dict]], k: int,
     return ends[0] if ends else None
 
 
+def _marks_on_polygons(data: dict, names: tuple[str, ...]
+                       ) -> Iterator[tuple[int, dict, dict | None, dict[str, tuple[int, str, dict]]]]:
+    """(play, mark node, its polygon as the play shows it, the last records of the polygons
+    and vertex markers) of each mark named in ``names`` coming in: the polygon is the last
+    drawn before the mark (a turned picture's: as the turn back starts from it), the
+    analysis's for an analysis's mark."""
+    last: dict[str, tuple[int, str, dict]] = {}  # name: (play, animation type, node)
+    for k, play in enumerate(data["plays"]):
+        marks = []
+        for kind, node in (r for a in play["animations"] for r in _recorded(a)):
+            name = node.get("name") or ""
+            if name in names and kind in INCOMING:
+                marks.append(node)
+            elif name in _POLYGONS or name.startswith("vertex:"):
+                last[name] = (k, kind, node)
+        for mark in marks:
+            home = "analysis:polygon" if mark["name"].startswith("analysis:") else "polygon"
+            yield k, mark, _state_then(data, last, k, home), last
+
+
 def crowded_verdicts(data: dict) -> list[str]:
     """The verdicts' marks (✓, ✗) that come nearer than :data:`LEAST_MARK_GAP` to an edge of
     their polygon or to one of its vertex labels, as ``"play 38 tick: 0.05 from edge …"``;
@@ -577,40 +597,28 @@ def crowded_verdicts(data: dict) -> list[str]:
     from shapely.geometry import LineString
     from shapely.geometry import box as area
 
-    plays = data["plays"]
-    last: dict[str, tuple[int, str, dict]] = {}  # name: (play, animation type, node)
     found = []
-    for k, play in enumerate(plays):
-        marks = []
-        for kind, node in (r for a in play["animations"] for r in _recorded(a)):
-            name = node.get("name") or ""
-            if name in _MARKS and kind in INCOMING:
-                marks.append(node)
-            elif name in _POLYGONS or name.startswith("vertex:"):
-                last[name] = (k, kind, node)
-        for mark in marks:
-            home = "analysis:polygon" if mark["name"].startswith("analysis:") else "polygon"
-            polygon = _state_then(data, last, k, home)
-            box = _box_of(mark)
-            if polygon is None or box is None:
-                found.append(f"play {k} {mark['name']}: no polygon drawn")
+    for k, mark, polygon, last in _marks_on_polygons(data, _MARKS):
+        box = _box_of(mark)
+        if polygon is None or box is None:
+            found.append(f"play {k} {mark['name']}: no polygon drawn")
+            continue
+        shape, corners = area(*box), _corners(polygon)
+        gaps = {f"edge ({a[0]:g}, {a[1]:g})–({b[0]:g}, {b[1]:g})":
+                shape.distance(LineString([a, b]))
+                for a, b in zip(corners, corners[1:] + corners[:1], strict=True)}
+        for name in [n for n in last if n.startswith("vertex:")]:
+            marker = _state_then(data, last, k, name)
+            dots = [n for n in mobject_nodes(marker or {}) if n.get("points")]
+            if not dots:
                 continue
-            shape, corners = area(*box), _corners(polygon)
-            gaps = {f"edge ({a[0]:g}, {a[1]:g})–({b[0]:g}, {b[1]:g})":
-                    shape.distance(LineString([a, b]))
-                    for a, b in zip(corners, corners[1:] + corners[:1], strict=True)}
-            for name in [n for n in last if n.startswith("vertex:")]:
-                marker = _state_then(data, last, k, name)
-                dots = [n for n in mobject_nodes(marker or {}) if n.get("points")]
-                if not dots:
-                    continue
-                centre = tuple(np.mean([q[:2] for q in dots[0]["points"]], axis=0))
-                if _near(centre, corners, 0.05):  # a vertex of this polygon
-                    for label in _label_boxes(marker or {}):
-                        gaps[name] = min(gaps.get(name, np.inf), shape.distance(area(*label)))
-            where, gap = min(gaps.items(), key=lambda item: item[1])
-            if gap < LEAST_MARK_GAP:
-                found.append(f"play {k} {mark['name']}: {gap:.2f} from {where}")
+            centre = tuple(np.mean([q[:2] for q in dots[0]["points"]], axis=0))
+            if _near(centre, corners, 0.05):  # a vertex of this polygon
+                for label in _label_boxes(marker or {}):
+                    gaps[name] = min(gaps.get(name, np.inf), shape.distance(area(*label)))
+        where, gap = min(gaps.items(), key=lambda item: item[1])
+        if gap < LEAST_MARK_GAP:
+            found.append(f"play {k} {mark['name']}: {gap:.2f} from {where}")
     return found
 
 
@@ -986,32 +994,21 @@ _TICKS = ("analysis:tick",)
 
 
 def ticks_outside(data: dict) -> list[str]:
-    """The analyses' ✓ marks not wholly inside their polygon, as ``"play 60 analysis:tick: 0.46 outside
-    P"`` (how far its box reaches out): a ✓ past an edge seems to judge that edge, and a
-    correct claim lies inside P, where there is room for its mark. The polygon is the last
-    drawn before the mark (:func:`crowded_verdicts`)."""
+    """The analyses' ✓ marks not wholly inside their polygon, as ``"play 60 analysis:tick:
+    0.83 outside P"`` (how far its box reaches out): a ✓ past an edge seems to judge that
+    edge, and a correct claim lies inside P, where there is room for its mark. The polygon
+    is the last drawn before the mark (:func:`_marks_on_polygons`)."""
     from shapely.geometry import Point, Polygon
     from shapely.geometry import box as area
 
-    last: dict[str, tuple[int, str, dict]] = {}
     found = []
-    for k, play in enumerate(data["plays"]):
-        ticks = []
-        for kind, node in (r for a in play["animations"] for r in _recorded(a)):
-            name = node.get("name") or ""
-            if name in _TICKS and kind in INCOMING:
-                ticks.append(node)
-            elif name in _POLYGONS:
-                last[name] = (k, kind, node)
-        for tick in ticks:
-            home = "analysis:polygon" if tick["name"].startswith("analysis:") else "polygon"
-            polygon = _state_then(data, last, k, home)
-            box = _box_of(tick)
-            if polygon is None or box is None:
-                continue
-            shape = area(*box)
-            region = Polygon(_corners(polygon))
-            if not region.buffer(1e-6).contains(shape):
-                reach = max(region.distance(Point(p)) for p in shape.exterior.coords)
-                found.append(f"play {k} {tick['name']}: {reach:.2f} outside P")
+    for k, tick, polygon, _ in _marks_on_polygons(data, _TICKS):
+        box = _box_of(tick)
+        if polygon is None or box is None:
+            continue
+        shape = area(*box)
+        region = Polygon(_corners(polygon))
+        if not region.buffer(1e-6).contains(shape):
+            reach = max(region.distance(Point(p)) for p in shape.exterior.coords)
+            found.append(f"play {k} {tick['name']}: {reach:.2f} outside P")
     return found
