@@ -13,12 +13,14 @@ from collections.abc import Mapping, Sequence
 from typing import Any, TypeAlias
 
 import numpy as np
-from manim import Animation, FadeIn, FadeOut, Mobject, Scene, VGroup
+from manim import Animation, FadeIn, FadeOut, Line, Mobject, Scene, Transform, VGroup
+from manim import Polygon as MPolygon
 from manim.mobject.mobject import _AnimationBuilder
 
 from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
-from metaphors.drawing import Frame, hole_markers, polygon_mobject, vertex_markers
+from metaphors.drawing import Frame, polygon_mobject
+from metaphors.labels import crossed_labels, measured_markers
 from metaphors.layout import METAPHOR, SUBTITLE_WIDTH, TITLE_Y, Box, subtitle_centre
 from metaphors.panel import Panel
 from metaphors.tags import tag
@@ -63,8 +65,7 @@ class Board:
                            "polygon")
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}")
-            for label, m in [*zip(labels, vertex_markers(self.polygon, self.frame, theme),
-                                  strict=True), *hole_markers(self.holes, self.frame, theme)]
+            for label, m in measured_markers(self.polygon, self.holes, self.frame, theme)
         }
         self.where: dict[str, tuple[float, ...]] = {
             label: p for label, p in zip(labels, self.polygon.points, strict=True)}
@@ -199,6 +200,53 @@ class Board:
         """Remember a metaphor object (it turns with the polygon and is cleared by ``drop``)."""
         self.objects[key] = mobject
 
+    def outline_rings(self) -> list[list[np.ndarray]]:
+        """The outline's rings as drawn (not P: ear clipping's fruit shrinks as its slices
+        go), the largest first (the outer one, then the holes'), each its corners."""
+        paths = [path for part in self.outline.family_members_with_points()
+                 for path in part.get_subpaths() if len(path) >= 12]  # a triangle's, at least
+        rings = [list(path[:-1:4]) for path in paths]
+        return sorted(rings, key=lambda ring: -abs(_area([p[:2] for p in ring])))
+
+    def clear_labels(self, *lines: Mobject) -> list[Animation]:
+        """The moves, to play with ``lines`` (about to be drawn: a diagonal, a cut, the
+        triangles of a triangulation), of the vertex labels they would cross: each to a clear
+        place beside its vertex, measured against the outline's edges, the lines and
+        triangles drawn and the other labels (:func:`metaphors.labels.crossed_labels`); a
+        label the lines keep clear of stays. A move transforms the whole marker, so
+        :meth:`play` recolours it after the play."""
+        rings = [list(self.polygon.labels), *(list(h.labels) for h in self.holes)]
+        drawn = [(ring[k], ring[(k + 1) % len(ring)]) for ring in self.outline_rings()
+                 for k in range(len(ring))]
+        drawn += [edge for m in self.objects.values() if m not in lines for edge in _edges(m)]
+        markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
+        moves: list[Animation] = []
+        for label, centre in crossed_labels(rings, markers, drawn,
+                                            [edge for line in lines for edge in _edges(line)],
+                                            self.theme.dot_radius).items():
+            moved = self.markers[label].copy()
+            moved[1].move_to((centre[0], centre[1], 0.0))
+            moves.append(Transform(self.markers[label], moved))
+        return moves
+
     def drop(self, *keys: str) -> list[FadeOut]:
         """Fade-outs for remembered objects."""
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
+
+
+def _area(ring: Sequence[Sequence[float]]) -> float:
+    """The signed area of a ring of points (the shoelace formula)."""
+    return 0.5 * sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(ring, [*ring[1:], ring[0]],
+                                                               strict=True))
+
+
+def _edges(mobject: Mobject) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""
+    if isinstance(mobject, Line):
+        return [(mobject.get_start(), mobject.get_end())]
+    if isinstance(mobject, MPolygon):
+        corners = list(mobject.get_vertices())
+        return [(p, corners[(k + 1) % len(corners)]) for k, p in enumerate(corners)]
+    if isinstance(mobject, VGroup):
+        return [edge for part in mobject.submobjects for edge in _edges(part)]
+    return []

@@ -142,7 +142,7 @@ def keyhole(board: Board, beat: Keyhole) -> None:
               f"keyhole:{beat.hole}")
     board.play(beat, Create(knife), Indicate(board.markers[beat.corners[0]], color=theme.result),
                run_time=0.8)
-    board.play(beat, FadeOut(knife), FadeIn(cut), run_time=0.5)
+    board.play(beat, FadeOut(knife), FadeIn(cut), *board.clear_labels(cut), run_time=0.5)
     board.keep(f"keyhole:{beat.hole}", cut)
 
 
@@ -153,7 +153,8 @@ def clip(board: Board, beat: Slice) -> None:
     a, b, c = data.points
     knife = tag(Line(board.at(a), board.at(c), color=theme.knife, stroke_width=theme.stroke * 2),
                 "called", "knife")
-    board.play(beat, *board.drop("ear-triangle"), Create(knife), run_time=0.6)
+    board.play(beat, *board.drop("ear-triangle"), Create(knife), *board.clear_labels(knife),
+               run_time=0.6)
     piece = tag(MPolygon(*[board.at(p) for p in (a, b, c)], color=theme.rind,
                          stroke_width=theme.thin_stroke, fill_color=theme.fruit,
                          fill_opacity=0.9), "result", f"slice:{''.join(data.corners)}")
@@ -193,6 +194,7 @@ def _whole(board: Board, beat: Slice) -> None:
     # left (prune and search's good part, its last diagonal and ✓) goes
     board.play(ending_beat(beat, board.panel.pseudocode, beat.total),
                *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], FadeIn(result),
+               *board.clear_labels(*pieces),
                run_time=1.2)
     board.scene.wait(1.0)
 

@@ -20,8 +20,10 @@ from manim import Dot, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame
+from metaphors.layout import Obstacles, Rect, Segment, around, first_clear, rects_at
 from metaphors.theme import THEME, Theme
 from rendering import typeset
+from story.beats import Hole
 
 #: the least gap (scene units) between a label and an edge, a dot or another label
 MARGIN = 0.05
@@ -30,8 +32,6 @@ NEAREST, FARTHEST, STEP = 0.26, 0.62, 0.04
 #: the turns tried away from the bisector (degrees), nearest first
 TURNS = (0, 20, -20, 40, -40, 60, -60, 90, -90, 120, -120, 150, -150)
 
-Box = tuple[float, float, float, float]  # left, bottom, right, top
-Segment = tuple[np.ndarray, np.ndarray]
 
 
 def outward(before: np.ndarray, at: np.ndarray, after: np.ndarray) -> np.ndarray:
@@ -47,63 +47,13 @@ def outward(before: np.ndarray, at: np.ndarray, after: np.ndarray) -> np.ndarray
     return -s / np.linalg.norm(s) if convex else s / np.linalg.norm(s)
 
 
-def box_gap(box: Box, a: np.ndarray, b: np.ndarray) -> float:
-    """The distance between a box and the segment ``a``–``b`` (0 when they meet)."""
-    left, bottom, right, top = box
-    if _crosses_box(box, a, b):
-        return 0.0
-    corners = [np.array(c) for c in ((left, bottom), (right, bottom), (right, top), (left, top))]
-    ends = min(_box_point_gap(box, p) for p in (a[:2], b[:2]))
-    return min(ends, *(_point_segment_gap(c, a[:2], b[:2]) for c in corners))
-
-
-def boxes_gap(one: Box, other: Box) -> float:
-    """The distance between two boxes (0 when they meet or overlap)."""
-    dx = max(other[0] - one[2], one[0] - other[2], 0.0)
-    dy = max(other[1] - one[3], one[1] - other[3], 0.0)
-    return float(np.hypot(dx, dy))
-
-
-def _box_point_gap(box: Box, p: np.ndarray) -> float:
-    dx = max(box[0] - p[0], p[0] - box[2], 0.0)
-    dy = max(box[1] - p[1], p[1] - box[3], 0.0)
-    return float(np.hypot(dx, dy))
-
-
-def _point_segment_gap(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
-    d = b - a
-    t = float(np.clip(np.dot(p - a, d) / max(float(np.dot(d, d)), 1e-18), 0.0, 1.0))
-    return float(np.linalg.norm(p - a - t * d))
-
-
-def _crosses_box(box: Box, a: np.ndarray, b: np.ndarray) -> bool:
-    """Whether the segment meets the box (Liang–Barsky clipping)."""
-    t0, t1 = 0.0, 1.0
-    d = b[:2] - a[:2]
-    for p, q in ((-d[0], a[0] - box[0]), (d[0], box[2] - a[0]),
-                 (-d[1], a[1] - box[1]), (d[1], box[3] - a[1])):
-        if abs(p) < 1e-12:
-            if q < 0:
-                return False
-            continue
-        t = q / p
-        if p < 0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-        if t0 > t1:
-            return False
-    return True
-
-
-def _box(centre: np.ndarray, size: tuple[float, float]) -> Box:
-    w, h = size
-    return (centre[0] - w / 2, centre[1] - h / 2, centre[0] + w / 2, centre[1] + h / 2)
-
-
 def _turned(d: np.ndarray, degrees: float) -> np.ndarray:
     t = np.radians(degrees)
     return np.array([np.cos(t) * d[0] - np.sin(t) * d[1], np.sin(t) * d[0] + np.cos(t) * d[1]])
+
+
+#: the distances tried from a vertex to its label's centre, nearest first
+RADII = tuple(round(NEAREST + STEP * i, 6) for i in range(round((FARTHEST - NEAREST) / STEP) + 1))
 
 
 def place_labels(corners: Sequence[np.ndarray], sizes: Sequence[tuple[float, float]],
@@ -112,33 +62,34 @@ def place_labels(corners: Sequence[np.ndarray], sizes: Sequence[tuple[float, flo
     nearest to its corner, and then to its bisector, that keeps :data:`MARGIN` from every
     edge of the polygon, every segment of ``segments`` (diagonals drawn), every dot and every
     label placed before; the bisector's nearest place if none does. Deterministic."""
-    n = len(corners)
-    pts = [np.asarray(c, dtype=float)[:2] for c in corners]
-    lines = [(pts[k], pts[(k + 1) % n]) for k in range(n)]
-    lines += [(np.asarray(a, dtype=float)[:2], np.asarray(b, dtype=float)[:2]) for a, b in segments]
-    placed: list[Box] = []
+    return place_ring_labels([corners], sizes, segments, dot)
+
+
+def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tuple[float, float]],
+                      segments: Sequence[Segment], dot: float = THEME.dot_radius,
+                      first: Sequence[np.ndarray] | None = None) -> list[np.ndarray]:
+    """:func:`place_labels` for a polygon of several rings (its outer ring, then its holes':
+    ``sizes`` and ``first`` run over their vertices in that order): each label clear of every
+    ring's edges and dots. ``first``: a place to try for each label before the measured ones
+    (where a label has always stood, if it is clear); the first of those if none is."""
+    pts = [[np.asarray(c, dtype=float)[:2] for c in ring] for ring in rings]
+    edges = [(ring[k], ring[(k + 1) % len(ring)]) for ring in pts for k in range(len(ring))]
+    edges += [(np.asarray(a, dtype=float)[:2], np.asarray(b, dtype=float)[:2]) for a, b in segments]
+    base = Obstacles(segments=edges, dots=[(float(p[0]), float(p[1]), dot)
+                                           for ring in pts for p in ring])
+    placed: list[Rect] = []
     centres = []
-    for k in range(n):
-        d = outward(pts[k - 1], pts[k], pts[(k + 1) % n])
-        centre = _first_clear(pts, k, d, sizes[k], lines, placed, dot)
-        centre = pts[k] + d * NEAREST if centre is None else centre
-        placed.append(_box(centre, sizes[k]))
+    for k, (ring, i) in enumerate([(r, i) for r in pts for i in range(len(r))]):
+        d = outward(ring[i - 1], ring[i], ring[(i + 1) % len(ring)])
+        tried = around([ring[i]], [_turned(d, turn) for turn in TURNS], RADII)
+        if first is not None:
+            tried = np.vstack([np.asarray(first[k], dtype=float)[:2], tried])
+        found = first_clear(tried, sizes[k], base.plus(boxes=placed), MARGIN)
+        centre = tried[found] if found is not None else (
+            tried[0] if first is not None else ring[i] + d * NEAREST)
+        placed.append(tuple(rects_at(centre, sizes[k])[0]))
         centres.append(centre)
     return centres
-
-
-def _first_clear(pts: list[np.ndarray], k: int, d: np.ndarray, size: tuple[float, float],
-                 lines: list[Segment], placed: list[Box], dot: float) -> np.ndarray | None:
-    steps = round((FARTHEST - NEAREST) / STEP) + 1
-    for r in (NEAREST + STEP * i for i in range(steps)):
-        for turn in TURNS:
-            centre = pts[k] + _turned(d, turn) * r
-            box = _box(centre, size)
-            if all(box_gap(box, a, b) >= MARGIN for a, b in lines) \
-                    and all(_box_point_gap(box, p) >= dot + MARGIN for p in pts) \
-                    and all(boxes_gap(box, other) >= MARGIN for other in placed):
-                return centre
-    return None
 
 
 def placed_vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME,
@@ -159,4 +110,68 @@ def placed_vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME,
     return group
 
 
-__all__ = ["MARGIN", "box_gap", "boxes_gap", "outward", "place_labels", "placed_vertex_markers"]
+def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
+                     theme: Theme = THEME) -> list[tuple[str, VGroup]]:
+    """(label, dot and label) for every vertex of the board's polygon and of its holes, each
+    label where :func:`metaphors.drawing.vertex_markers` and
+    :func:`metaphors.drawing.hole_markers` put it (a fixed step away from its ring's centre)
+    if that is clear, else in the first clear place round its vertex
+    (:func:`place_ring_labels`): an edge through a label reads as part of the line."""
+    rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
+    names = [*polygon.labels, *(label for h in holes for label in h.labels)]
+    # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % high
+    steps = [(0.32, theme.label_size)] * polygon.n + [
+        (0.3, theme.label_size + 4)] * (len(names) - polygon.n)
+    texts = [typeset.text(name, font=theme.font, size=size, colour=theme.ink)
+             for name, (_, size) in zip(names, steps, strict=True)]
+    first: list[np.ndarray] = []
+    for ring in rings:
+        centre = np.mean(ring, axis=0)
+        for point in ring:
+            away = (point - centre)[:2]
+            norm = float(np.linalg.norm(away))
+            first.append(point[:2] + (away / norm if norm > 1e-9 else np.array([0.0, -1.0]))
+                         * steps[len(first)][0])
+    centres = place_ring_labels(rings, [(t.width, t.height) for t in texts], [],
+                                theme.dot_radius, first=first)
+    points = [point for ring in rings for point in ring]
+    markers = []
+    for name, at, text, centre in zip(names, points, texts, centres, strict=True):
+        text.move_to((centre[0], centre[1], 0.0))
+        markers.append((name, VGroup(Dot(at, radius=theme.dot_radius, color=theme.ink), text)))
+    return markers
+
+
+def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
+                   drawn: Sequence[Segment], new: Sequence[Segment],
+                   dot: float = THEME.dot_radius) -> dict[str, np.ndarray]:
+    """The labels that the ``new`` segments come within :data:`MARGIN` of, each with a new
+    centre: the first clear place round its vertex (:func:`place_ring_labels`' order: out
+    along the bisector of its ring, each ring a list of labels, their dots where the markers
+    stand now), clear of the segments ``drawn`` (the edges, the lines on the picture) and
+    ``new``, of the dots and of the other labels; a label with no clear place stays."""
+    at = {name: np.asarray(m[0].get_center(), dtype=float)[:2] for name, m in markers.items()}
+    boxes = {name: tuple(rects_at(m[1].get_center()[:2], (m[1].width, m[1].height))[0])
+             for name, m in markers.items() if len(m) > 1}
+    lines = Obstacles(segments=[(np.asarray(a, float)[:2], np.asarray(b, float)[:2])
+                                for a, b in new])
+    base = Obstacles(segments=[*drawn, *new],
+                     dots=[(float(p[0]), float(p[1]), dot) for p in at.values()])
+    moved: dict[str, np.ndarray] = {}
+    for ring in rings:
+        for i, name in enumerate(ring):
+            if name not in boxes or lines.gaps(np.array([boxes[name]]))[0] >= MARGIN:
+                continue
+            size = (boxes[name][2] - boxes[name][0], boxes[name][3] - boxes[name][1])
+            d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])
+            tried = around([at[name]], [_turned(d, turn) for turn in TURNS], RADII)
+            others = [box for other, box in boxes.items() if other != name]
+            found = first_clear(tried, size, base.plus(boxes=others), MARGIN)
+            if found is not None:
+                moved[name] = tried[found]
+                boxes[name] = tuple(rects_at(tried[found], size)[0])
+    return moved
+
+
+__all__ = ["MARGIN", "crossed_labels", "measured_markers", "outward", "place_labels",
+           "place_ring_labels", "placed_vertex_markers"]

@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
-from shapely.geometry import box
+import numpy as np
+import shapely
 from shapely.geometry.base import BaseGeometry
-from shapely.prepared import prep
 
 
 @dataclass(frozen=True)
@@ -53,10 +54,13 @@ def subtitle_centre(height: float) -> tuple[float, float, float]:
     return (0, round(max(SUBTITLE_Y, SUBTITLE_BOTTOM + height / 2), 6), 0)
 
 
-# --- a free place for what a metaphor adds beside its polygon ------------------------------------
+# --- one search for a clear place: candidates in a first-fit order, measured against obstacles ---
 
 #: a rectangle of the frame: left, bottom, right, top
 Rect = tuple[float, float, float, float]
+#: a point of the frame (scene units), and a straight line drawn between two
+XY = Sequence[float] | np.ndarray
+Segment = tuple[XY, XY]
 #: the whole frame (14.2 × 8 units), less a margin of 0.3 (4 % of its height) that keeps a
 #: thing off the screen's edge, where a projector may crop it
 FRAME_AREA: Rect = (-6.8, -3.7, 6.8, 3.7)
@@ -66,6 +70,111 @@ SUBTITLE_TOP = SUBTITLE_BOTTOM + 0.85
 CLEARANCE = 0.12
 #: the grid a free place is looked for on (scene units)
 PLACE_STEP = 0.05
+
+
+@dataclass(frozen=True)
+class Obstacles:
+    """What a thing placed on screen keeps clear of: boxes (labels, text, a panel's parts),
+    segments (edges, diagonals, a claim), dots (centre and radius) and any other shapes (a
+    polygon's region, a shaded part of it)."""
+
+    boxes: Sequence[Rect] = ()
+    segments: Sequence[Segment] = ()
+    dots: Sequence[tuple[float, float, float]] = ()
+    shapes: Sequence[BaseGeometry] = ()
+
+    def plus(self, *, boxes: Sequence[Rect] = (), segments: Sequence[Segment] = ()
+             ) -> Obstacles:
+        """These obstacles and more."""
+        return Obstacles((*self.boxes, *boxes), (*self.segments, *segments), self.dots,
+                         self.shapes)
+
+    def gaps(self, rects: np.ndarray) -> np.ndarray:
+        """The distance from each rectangle (rows of left, bottom, right, top) to the nearest
+        obstacle: 0 where one meets it, infinite where there are none."""
+        rects = np.asarray(rects, dtype=float).reshape(-1, 4)
+        gap = np.full(len(rects), np.inf)
+        if not len(rects):
+            return gap
+        candidates = shapely.box(rects[:, 0], rects[:, 1], rects[:, 2], rects[:, 3])
+        lines = [shapely.LineString([np.asarray(a, float)[:2], np.asarray(b, float)[:2]])
+                 for a, b in self.segments]
+        solid = [*(shapely.box(*r) for r in self.boxes), *lines, *self.shapes]
+        if solid:
+            gap = np.minimum(gap, shapely.distance(candidates, shapely.union_all(solid)))
+        for x, y, radius in self.dots:
+            gap = np.minimum(gap, np.maximum(
+                shapely.distance(candidates, shapely.Point(x, y)) - radius, 0.0))
+        return gap
+
+
+def rects_at(centres: np.ndarray, size: tuple[float, float]) -> np.ndarray:
+    """The rectangles ``size`` (width, height) centred on each of ``centres``."""
+    c = np.asarray(centres, dtype=float).reshape(-1, 2)
+    w, h = size[0] / 2, size[1] / 2
+    return np.column_stack([c[:, 0] - w, c[:, 1] - h, c[:, 0] + w, c[:, 1] + h])
+
+
+def around(anchors: Sequence[XY], directions: Sequence[XY], distances: Sequence[float],
+           size: tuple[float, float] | None = None) -> np.ndarray:
+    """Candidate centres round anchors, in first-fit order: the nearest distance first, then
+    anchor by anchor, then direction by direction (unit vectors). A distance is the centre's
+    from its anchor, or, given the thing's ``size``, its box's nearest side's.
+
+    >>> around([(0, 0)], [(1, 0), (0, 1)], [1.0, 2.0]).tolist()
+    [[1.0, 0.0], [0.0, 1.0], [2.0, 0.0], [0.0, 2.0]]
+    >>> around([(0, 0)], [(1, 0)], [0.5], size=(1.0, 0.2)).tolist()
+    [[1.0, 0.0]]
+    """
+    points = [np.asarray(a, dtype=float)[:2] for a in anchors]
+    units = [np.asarray(d, dtype=float)[:2] for d in directions]
+    half = np.zeros(2) if size is None else np.asarray(size, dtype=float) / 2
+    return np.array([p + u * (r + float(np.abs(u) @ half))
+                     for r in distances for p in points for u in units]).reshape(-1, 2)
+
+
+def grid(area: Rect, size: tuple[float, float], step: float = PLACE_STEP,
+         near: XY | None = None) -> np.ndarray:
+    """Candidate centres on a grid of ``step`` for a thing ``size`` that stays in ``area``, in
+    first-fit order: nearest ``near`` first (ties: the lower row, then the left), or, with no
+    ``near``, column by column from the left, each from the top (its left and top on the
+    grid from the area's left and top)."""
+    left, bottom, right, top = area
+    w, h = size
+    columns = math.floor(round((right - left - w) / step, 6)) + 1
+    rows = math.floor(round((top - bottom - h) / step, 6)) + 1
+    if columns <= 0 or rows <= 0:
+        return np.zeros((0, 2))
+    xs = np.round(left + np.arange(columns) * step, 6) + w / 2
+    ys = np.round(top - np.arange(rows) * step, 6) - h / 2
+    if near is None:
+        columns_x, columns_y = np.meshgrid(xs, ys, indexing="ij")
+        return np.column_stack([columns_x.ravel(), columns_y.ravel()])
+    rows_x, rows_y = np.meshgrid(xs, ys[::-1])  # rows from the bottom, each from the left
+    x, y = rows_x.ravel(), rows_y.ravel()
+    order = np.argsort((x - near[0]) ** 2 + (y - near[1]) ** 2, kind="stable")
+    return np.column_stack([x[order], y[order]])
+
+
+def clear(centres: np.ndarray, size: tuple[float, float], obstacles: Obstacles,
+          clearance: float | np.ndarray = CLEARANCE, within: Rect | None = None) -> np.ndarray:
+    """Which candidates (centres of a thing ``size``) keep ``clearance`` (one, or one a
+    candidate) from every obstacle and stay in ``within``."""
+    rects = rects_at(centres, size)
+    ok = obstacles.gaps(rects) >= np.asarray(clearance) - 1e-9
+    if within is not None:
+        left, bottom, right, top = within
+        ok &= ((rects[:, 0] >= left - 1e-9) & (rects[:, 1] >= bottom - 1e-9)
+               & (rects[:, 2] <= right + 1e-9) & (rects[:, 3] <= top + 1e-9))
+    return np.asarray(ok, dtype=bool)
+
+
+def first_clear(centres: np.ndarray, size: tuple[float, float], obstacles: Obstacles,
+                clearance: float | np.ndarray = CLEARANCE, within: Rect | None = None
+                ) -> int | None:
+    """The index of the first candidate that is :func:`clear`, None if none is."""
+    ok = clear(centres, size, obstacles, clearance, within)
+    return int(np.argmax(ok)) if ok.any() else None
 
 
 def free_place(width: float, height: float, taken: BaseGeometry, area: Rect = FRAME_AREA,
@@ -82,14 +191,8 @@ def free_place(width: float, height: float, taken: BaseGeometry, area: Rect = FR
     >>> free_place(20.0, 1.0, box(0.0, 0.0, 1.0, 1.0)) is None
     True
     """
-    near = prep(taken.buffer(clearance))
-    left, bottom, right, top = area
-    columns = math.floor(round((right - left - width) / PLACE_STEP, 6))
-    rows = math.floor(round((top - bottom - height) / PLACE_STEP, 6))
-    for i in range(columns + 1):
-        x = round(left + i * PLACE_STEP, 6)
-        for j in range(rows + 1):
-            y = round(top - j * PLACE_STEP, 6)
-            if not near.intersects(box(x, y - height, x + width, y)):
-                return x, y
-    return None
+    centres = grid(area, (width, height))
+    k = first_clear(centres, (width, height), Obstacles(shapes=(taken,)), clearance)
+    if k is None:
+        return None
+    return round(float(centres[k][0]) - width / 2, 6), round(float(centres[k][1]) + height / 2, 6)

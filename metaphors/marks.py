@@ -16,7 +16,7 @@ import shapely
 from manim import DL, UR, Line, Mobject
 
 from metaphors.board import Board
-from metaphors.layout import Box
+from metaphors.layout import Box, Obstacles, around, clear, rects_at
 
 #: 2.5 % of the frame's height: the gap a mark keeps (the reading rule asks for 2 %)
 MARK_GAP = 0.2
@@ -37,39 +37,31 @@ def mark_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment
     the order inside ``inside`` before outside it, nearest the claim, nearest its middle, on
     its left before its right, that stays in ``within``, :data:`MARK_GAP` from the claim,
     every edge and every label (twice that outside ``inside``), and off ``avoid`` (a shaded
-    region); if there is none, the place of those that keeps the most gap."""
+    region) where it can be inside ``inside``: a mark just outside P seems to judge the edge
+    it stands by, so a place inside P over the shading comes before any outside it; if there
+    is none, the place of those that keeps the most gap (:func:`metaphors.layout.around`)."""
     a, b = np.asarray(claim[0], dtype=float)[:2], np.asarray(claim[1], dtype=float)[:2]
     along = b - a
     normal = np.array([-along[1], along[0]]) / max(float(np.linalg.norm(along)), 1e-9)
-    half = np.array(size, dtype=float) / 2
-    reach = float(np.linalg.norm(half))
-    places, order = [], []
-    for d, away in enumerate(AWAY):
-        for s, t in enumerate(ALONG):
-            for side in (1.0, -1.0):
-                places.append(a + t * along + side * (reach + away) * normal)
-                order.append((d, s, side < 0))
-    centres = np.array(places)
-    boxes = shapely.box(centres[:, 0] - half[0], centres[:, 1] - half[1],
-                        centres[:, 0] + half[0], centres[:, 1] + half[1])
-    obstacles = [shapely.LineString([a, b]),
-                 *[shapely.LineString([np.asarray(p, float)[:2], np.asarray(q, float)[:2]])
-                   for p, q in edges],
-                 *[shapely.box(*area) for area in labels]]
-    gap = np.min([shapely.distance(boxes, o) for o in obstacles], axis=0)
+    reach = float(np.linalg.norm(np.array(size, dtype=float) / 2))
+    centres = around([a + t * along for t in ALONG], [normal, -normal],
+                     [reach + away for away in AWAY])
+    rects = rects_at(centres, size)
+    boxes = shapely.box(rects[:, 0], rects[:, 1], rects[:, 2], rects[:, 3])
+    obstacles = Obstacles(boxes=list(labels), segments=[(a, b), *edges])
+    gap = obstacles.gaps(rects)
     left, bottom = within.x - within.width / 2, within.y - within.height / 2
-    framed = ((centres[:, 0] - half[0] >= left) & (centres[:, 0] + half[0] <= left + within.width)
-              & (centres[:, 1] - half[1] >= bottom)
-              & (centres[:, 1] + half[1] <= bottom + within.height))
+    framed = clear(centres, size, Obstacles(), 0.0,
+                   (left, bottom, left + within.width, bottom + within.height))
     held = shapely.contains(inside, boxes)
     # outside P, twice as far: a mark just past an edge seems to judge that edge
     free = framed & (gap >= np.where(held, MARK_GAP, 2 * MARK_GAP))
-    if avoid is not None and not avoid.is_empty:
-        free &= ~shapely.intersects(boxes, avoid)
+    shaded = (shapely.intersects(boxes, avoid) if avoid is not None and not avoid.is_empty
+              else np.zeros(len(centres), dtype=bool))
     if not free.any():
         return np.array([*centres[int(np.argmax(np.where(framed, gap, -1.0)))], 0.0])
-    best = min((k for k in range(len(places)) if free[k]),
-               key=lambda k: (not held[k], *order[k]))
+    # the order of :func:`around` is the first-fit order: nearest, middle first, left first
+    best = min(np.flatnonzero(free), key=lambda k: (not held[k], bool(shaded[k]), k))
     return np.array([*centres[best], 0.0])
 
 
@@ -97,10 +89,7 @@ def board_spot(board: Board, mark: Mobject, line: Mobject,
         return moved(p) if moved is not None else p
 
     # the outline as drawn, not P: ear clipping's fruit shrinks as its slices go
-    paths = [path for part in board.outline.family_members_with_points()
-             for path in part.get_subpaths() if len(path) >= 12]  # a triangle's, at least
-    rings = sorted(([end(p) for p in path[:-1:4]] for path in paths),
-                   key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
+    rings = [[end(p) for p in ring] for ring in board.outline_rings()]
     edges = [edge for ring in rings for edge in ring_edges(ring)]
     edges += [(end(m.get_start()), end(m.get_end())) for key, m in board.objects.items()
               if key.startswith("diagonal:") and isinstance(m, Line)]

@@ -94,7 +94,7 @@ def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
                     stroke_width=board.theme.stroke * 1.3), "argument",
                f"diagonal:{''.join(beat.labels)}")
     board.keep(f"diagonal:{''.join(beat.labels)}", line)
-    board.play(beat, Create(line), run_time=1.0)
+    board.play(beat, Create(line), *board.clear_labels(line), run_time=1.0)
 
 
 def pieces(board: Board, beat: Pieces) -> None:
@@ -122,7 +122,7 @@ def stack_step(board: Board, beat: StackStep) -> None:
                            stroke_width=theme.thin_stroke, fill_color=theme.stack,
                            fill_opacity=0.25), None, "triangle")
         board.keep(f"triangle:{beat.seq}", cut)
-        anims.append(Create(cut))
+        anims += [Create(cut), *board.clear_labels(cut)]
     else:  # a push: the vertex that now waits
         anims.append(Indicate(board.markers[beat.chain[-1]], color=theme.stack))
     board.play(beat, *anims, run_time=0.9)
@@ -217,13 +217,15 @@ def _rect(b: Box) -> BaseGeometry:
 def stack(board: Board, beat: Stack) -> None:
     """A piece is done: its chain and column go; a piece that is a triangle is drawn."""
     theme = board.theme
-    drawn = []
+    drawn, made = [], []
     for k, triangle in enumerate(beat.triangles):
         t = tag(MPolygon(*[board.at(p) for p in triangle], color=theme.ink,
                          stroke_width=theme.thin_stroke, fill_opacity=0), None, "triangle")
         board.keep(f"triangle:{beat.seq}:{k}", t)
         drawn.append(Create(t))
-    board.play(beat, *drawn, *board.drop("stack:chain", "stack:column"), run_time=1.0)
+        made.append(t)
+    board.play(beat, *drawn, *board.drop("stack:chain", "stack:column"),
+               *board.clear_labels(*made), run_time=1.0)
     if beat.triangulation:
         _whole(board, beat)
 
@@ -243,7 +245,8 @@ def _whole(board: Board, beat: Stack) -> None:
         shown.append(FadeIn(count))
     # under its own caption, at full pace, its result row lit: the last piece's words are over
     board.play(ending_beat(beat, board.panel.pseudocode, len(whole)),
-               *board.drop(*tints), *[FadeIn(t) for t in whole], *shown, run_time=1.2)
+               *board.drop(*tints), *[FadeIn(t) for t in whole], *shown,
+               *board.clear_labels(*whole), run_time=1.2)
     board.scene.wait(1.0)
 
 

@@ -31,10 +31,6 @@ from manim import (
     Rectangle,
     VGroup,
 )
-from shapely.geometry import LineString, Point, box
-from shapely.geometry.base import BaseGeometry
-from shapely.ops import unary_union
-from shapely.prepared import PreparedGeometry, prep
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject
@@ -45,7 +41,10 @@ from metaphors.layout import (
     PANEL_POLYGON,
     PANEL_SOURCE,
     Box,
+    Obstacles,
     Rect,
+    around,
+    clear,
 )
 from metaphors.listing import Row, Window, listing_rows, window_for
 from metaphors.pseudocode import source_of
@@ -361,6 +360,15 @@ LABEL_CLEARANCE = 0.05
 LABEL_DISTANCES = (0.1, 0.16, 0.24, 0.34, 0.46)
 #: the directions a label may stand in from its vertex (every 15°)
 LABEL_DIRECTIONS = 24
+#: how much nearer its own dot than any other a label's centre stands (a label midway
+#: between two dots, as the keyhole's b₂ between a₂ and b₂, names neither)
+LABEL_OWN = 1.25
+#: the least a label keeps from the outline and the dots where it has no place nearer its
+#: own dot :data:`LABEL_CLEARANCE` clear (the reading rule asks for 0.03)
+LABEL_NARROW = 0.035
+#: the finer ring of places a label with no roomy place of its own is looked for on
+FINE_DISTANCES = tuple(round(0.04 + 0.02 * i, 2) for i in range(22))
+FINE_DIRECTIONS = 72
 
 
 def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: Theme,
@@ -377,20 +385,20 @@ def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: 
     would be under 2.5 % of the frame's height. Every scene's and chapter's polygon keeps all
     its labels (tests.reading_rules.crowded_panel_labels)."""
     rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
-    outline = unary_union([LineString([*(p[:2] for p in ring), ring[0][:2]]) for ring in rings])
     vertices = [(label, point, _away(point, rings[0]), theme.label_size)
                 for label, point in zip(polygon.labels, rings[0], strict=True)]
     for hole, ring in zip(holes, rings[1:], strict=True):
         # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % high
         vertices += [(label, point, _away(point, ring), theme.label_size + 4)
                      for label, point in zip(hole.labels, ring, strict=True)]
-    dots = unary_union([Point(p[:2]).buffer(theme.dot_radius) for _, p, _, _ in vertices])
     texts = [typeset.text(label, font=theme.font, size=size, colour=theme.ink)
              for label, _, _, size in vertices]
-    fixed = prep(unary_union([outline, dots]).buffer(LABEL_CLEARANCE))
-    bounds = box(area.x - area.width / 2, area.y - area.height / 2,
-                 area.x + area.width / 2, area.y + area.height / 2)
     points = [(float(p[0]), float(p[1])) for _, p, _, _ in vertices]
+    fixed = Obstacles(segments=[(ring[k], ring[(k + 1) % len(ring)]) for ring in rings
+                                for k in range(len(ring))],
+                      dots=[(x, y, theme.dot_radius) for x, y in points])
+    bounds = (area.x - area.width / 2, area.y - area.height / 2,
+              area.x + area.width / 2, area.y + area.height / 2)
     places = [_label_places(k, points, away, t.width, t.height, fixed, bounds)
               for k, ((_, _, away, _), t) in enumerate(zip(vertices, texts, strict=True))]
     chosen = _assigned(places)
@@ -413,29 +421,46 @@ def _away(point: np.ndarray, ring: list[np.ndarray]) -> float:
 
 
 def _label_places(k: int, points: list[tuple[float, float]], away: float, width: float,
-                  height: float, fixed: PreparedGeometry, bounds: BaseGeometry
+                  height: float, fixed: Obstacles, bounds: Rect
                   ) -> list[tuple[tuple[float, float], Rect]]:
-    """The free places of vertex ``k``'s ``width`` × ``height`` label, best first (nearest,
-    then nearest to the direction ``away``): each its centre and its box, in ``bounds``,
-    clear of ``fixed`` (the outline and the dots, grown by the clearance) and nearer its own
-    vertex than any other (a label between two dots names neither)."""
-    found = []
-    px, py = points[k]
-    for rank, distance in enumerate(LABEL_DISTANCES):
-        for step in range(LABEL_DIRECTIONS):
-            turn = (step + 1) // 2 * (1 if step % 2 else -1) * 2 * math.pi / LABEL_DIRECTIONS
-            dx, dy = math.cos(away + turn), math.sin(away + turn)
-            # the box's side nearest the vertex stands ``distance`` from it
-            reach = distance + abs(dx) * width / 2 + abs(dy) * height / 2
-            x, y = px + dx * reach, py + dy * reach
-            rect = (x - width / 2, y - height / 2, x + width / 2, y + height / 2)
-            shape = box(*rect)
-            own = _gap(rect, points[k])
-            if (bounds.contains(shape) and not fixed.intersects(shape)
-                    and all(_gap(rect, q) > own for j, q in enumerate(points) if j != k)):
-                found.append(((rank, abs(turn)), (x, y), rect))
-    found.sort(key=lambda f: f[0])
-    return [(centre, rect) for _, centre, rect in found]
+    """The free places of vertex ``k``'s ``width`` × ``height`` label, best first: each its
+    centre and its box, in ``bounds``, clear of ``fixed`` (the outline and the dots), its box
+    nearer its own vertex than any other (a label between two dots names neither). First
+    those :data:`LABEL_CLEARANCE` clear whose centre stands :data:`LABEL_OWN` times nearer its
+    own dot than any other, then those only :data:`LABEL_NARROW` clear that do, then the
+    rest :data:`LABEL_CLEARANCE` clear (a crowded hole's vertex: the keyhole's b₂ between a₂
+    and G); each tier nearest first, then nearest to the direction ``away``."""
+    found = _tiers(k, points, away, width, height, fixed, bounds, LABEL_DISTANCES,
+                   LABEL_DIRECTIONS)
+    if not found[0]:  # none roomy and its own: look closer, on a finer ring of places
+        found = _tiers(k, points, away, width, height, fixed, bounds, FINE_DISTANCES,
+                       FINE_DIRECTIONS)
+    return [place for tier in found for place in tier]
+
+
+def _tiers(k: int, points: list[tuple[float, float]], away: float, width: float, height: float,
+           fixed: Obstacles, bounds: Rect, distances: Sequence[float], directions: int
+           ) -> list[list[tuple[tuple[float, float], Rect]]]:
+    """:func:`_label_places`' three tiers, on ``distances`` × ``directions`` round vertex ``k``."""
+    turns = [(step + 1) // 2 * (1 if step % 2 else -1) * 2 * math.pi / directions
+             for step in range(directions)]
+    # the box's side nearest the vertex stands a distance from it
+    centres = around([points[k]], [(math.cos(away + t), math.sin(away + t)) for t in turns],
+                     distances, size=(width, height))
+    wide = clear(centres, (width, height), fixed, LABEL_CLEARANCE, bounds)
+    narrow = clear(centres, (width, height), fixed, LABEL_NARROW, bounds)
+    tiers: list[list[tuple[tuple[float, float], Rect]]] = [[], [], []]
+    for (x, y), roomy, tight in zip(centres.tolist(), wide, narrow, strict=True):
+        rect = (x - width / 2, y - height / 2, x + width / 2, y + height / 2)
+        own, others = _gap(rect, points[k]), [q for j, q in enumerate(points) if j != k]
+        if not tight or not all(_gap(rect, q) > own for q in others):
+            continue
+        mine = all(math.dist((x, y), q) >= LABEL_OWN * math.dist((x, y), points[k])
+                   for q in others)
+        tier = 0 if mine and roomy else 1 if mine else 2 if roomy else None
+        if tier is not None:
+            tiers[tier].append(((x, y), rect))
+    return tiers
 
 
 def _gap(rect: Rect, point: tuple[float, float]) -> float:

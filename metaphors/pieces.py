@@ -12,7 +12,6 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
 
-import numpy as np
 from manim import DL, DOWN, RIGHT, UR, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
@@ -26,6 +25,9 @@ from metaphors.layout import (
     PANEL_SOURCE,
     SUBTITLE_WIDTH,
     Box,
+    Obstacles,
+    first_clear,
+    grid,
     subtitle_centre,
 )
 from metaphors.performing import Performances, act, performs
@@ -108,6 +110,7 @@ def split(board: Board, beat: Split) -> None:
     last = all(len(p) == 3 for p in beat.points) and not any(
         key.startswith("piece:") for key in board.objects)
     chosen: set[str] = set()
+    made: list[Mobject] = []
     for piece, points, labels in zip(beat.pieces, beat.points,
                                      beat.labels, strict=False):
         done = len(points) == 3
@@ -116,7 +119,8 @@ def split(board: Board, beat: Split) -> None:
         tint = _tint(board, points, labels, colour, done)
         board.keep(f"triangle:{''.join(labels)}" if done else f"piece:{piece}", tint)
         anims.append(FadeIn(tint))
-    board.play(beat, *anims, run_time=1.2)
+        made.append(tint)
+    board.play(beat, *anims, *board.clear_labels(*made), run_time=1.2)
     if last:  # the whole triangulation under its own caption: the split's is over
         triangles = sum(1 for key in board.objects if key.startswith("triangle:"))
         # the black box goes before the count comes where it stood: never two texts at once
@@ -136,7 +140,8 @@ def _whole(board: Board, finder: Mobject | None) -> list[Playable]:
     corners = [[board.where[label] for label in _labels(board.objects[k])] for k in done]
     whole = triangulation_pieces(corners, board.at, theme)
     n = board.polygon.n
-    shown: list[Playable] = [*board.drop(*done), *[FadeIn(t) for t in whole]]
+    shown: list[Playable] = [*board.drop(*done), *[FadeIn(t) for t in whole],
+                             *board.clear_labels(*whole)]
     # the count where the black box stood, clear of the picture, the panel and the subtitle
     # (:func:`_place`); with no black box, beside the picture when the panel's rows leave
     # room there: a panel of source takes the whole right half, and under the picture the
@@ -244,19 +249,16 @@ def _box_area(box: Box) -> Area:
 def _place(finder: Mobject, taken: Sequence[Area],
            near: Sequence[float] = BESIDE) -> tuple[float, float] | None:
     """The centre nearest ``near`` (on a grid of :data:`FINDER_STEP`) where ``finder`` stays
-    in the frame and :data:`FINDER_GAP` clear of every area ``taken``; None if none."""
-    w, h = finder.width / 2 + FINDER_GAP, finder.height / 2 + FINDER_GAP
-    xs = np.arange(-HALF_FRAME[0] + w, HALF_FRAME[0] - w, FINDER_STEP)
-    ys = np.arange(-HALF_FRAME[1] + h, HALF_FRAME[1] - h, FINDER_STEP)
-    x, y = np.meshgrid(xs, ys)
-    free = np.ones_like(x, dtype=bool)
-    for left, bottom, right, top in taken:
-        free &= (x + w <= left) | (x - w >= right) | (y + h <= bottom) | (y - h >= top)
-    if not free.any():
+    in the frame and :data:`FINDER_GAP` clear of every area ``taken``; None if none
+    (:func:`metaphors.layout.first_clear`)."""
+    size = (finder.width, finder.height)
+    frame = (-HALF_FRAME[0] + FINDER_GAP, -HALF_FRAME[1] + FINDER_GAP,
+             HALF_FRAME[0] - FINDER_GAP, HALF_FRAME[1] - FINDER_GAP)
+    centres = grid(frame, size, FINDER_STEP, near=near[:2])
+    k = first_clear(centres, size, Obstacles(boxes=taken), FINDER_GAP)
+    if k is None:
         return None
-    far = np.where(free, (x - near[0]) ** 2 + (y - near[1]) ** 2, np.inf)
-    k = np.unravel_index(np.argmin(far), far.shape)  # the first of equals: deterministic
-    return (round(float(x[k]), 6), round(float(y[k]), 6))
+    return (round(float(centres[k][0]), 6), round(float(centres[k][1]), 6))
 
 
 def find(board: Board, beat: FindDiagonal) -> None:

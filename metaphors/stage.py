@@ -20,7 +20,8 @@ from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
 from metaphors.captions import whole_frames
-from metaphors.drawing import Frame, polygon_mobject, vertex_markers
+from metaphors.drawing import Frame, polygon_mobject
+from metaphors.labels import measured_markers
 from metaphors.layout import SUBTITLE_WIDTH, TITLE_Y, Box, subtitle_centre
 from metaphors.marks import area_of, mark_spot, ring_edges
 from metaphors.recorded import captions_of, mark_step
@@ -47,8 +48,7 @@ class Stage:
         self.outline = tag(polygon_mobject(self.polygon, self.frame, theme), "idle",
                            "analysis:polygon")
         self.markers = {label: tag(m, "idle", f"vertex:{label}").set_z_index(4) for label, m in
-                        zip(labels, vertex_markers(self.polygon, self.frame, theme),
-                            strict=True)}
+                        measured_markers(self.polygon, (), self.frame, theme)}
         self.triangle = None
         if triangle:
             self.triangle = tag(MPolygon(*self.frame.many(triangle), color=theme.called,

@@ -624,10 +624,16 @@ def _recorded(anim: dict) -> Iterator[tuple[str, dict]]:
         yield from _recorded(child)
 
 
-def _label_boxes(marker: dict) -> Iterator[tuple[float, ...]]:
-    for node in mobject_nodes(marker):
+def _label_boxes(marker: dict, *, direct: bool = False
+                 ) -> Iterator[tuple[float, float, float, float]]:
+    """The box of each text a vertex's marker shows (its label): among all its parts, or,
+    ``direct``, among its own children only (a marker's dot and label, not what a group
+    holding markers holds further down)."""
+    parts = marker.get("submobjects", ()) if direct else mobject_nodes(marker)
+    for node in parts:
         if node.get("box") and (node.get("text") or "").strip():
-            yield tuple(node["box"])
+            x0, y0, x1, y1 = node["box"]
+            yield (x0, y0, x1, y1)
 
 
 def _state_then(data: dict, last: dict[str, tuple[int, str, dict]], k: int,
@@ -648,6 +654,26 @@ def _state_then(data: dict, last: dict[str, tuple[int, str, dict]], k: int,
     return ends[0] if ends else None
 
 
+def _marks_on_polygons(data: dict, names: tuple[str, ...]
+                       ) -> Iterator[tuple[int, dict, dict | None, dict[str, tuple[int, str, dict]]]]:
+    """(play, mark node, its polygon as the play shows it, the last records of the polygons
+    and vertex markers) of each mark named in ``names`` coming in: the polygon is the last
+    drawn before the mark (a turned picture's: as the turn back starts from it), the
+    analysis's for an analysis's mark."""
+    last: dict[str, tuple[int, str, dict]] = {}  # name: (play, animation type, node)
+    for k, play in enumerate(data["plays"]):
+        marks = []
+        for kind, node in (r for a in play["animations"] for r in _recorded(a)):
+            name = node.get("name") or ""
+            if name in names and kind in INCOMING:
+                marks.append(node)
+            elif name in _POLYGONS or name.startswith("vertex:"):
+                last[name] = (k, kind, node)
+        for mark in marks:
+            home = "analysis:polygon" if mark["name"].startswith("analysis:") else "polygon"
+            yield k, mark, _state_then(data, last, k, home), last
+
+
 def crowded_verdicts(data: dict) -> list[str]:
     """The verdicts' marks (✓, ✗) that come nearer than :data:`LEAST_MARK_GAP` to an edge of
     their polygon or to one of its vertex labels, as ``"play 38 tick: 0.05 from edge …"``;
@@ -657,40 +683,28 @@ def crowded_verdicts(data: dict) -> list[str]:
     from shapely.geometry import LineString
     from shapely.geometry import box as area
 
-    plays = data["plays"]
-    last: dict[str, tuple[int, str, dict]] = {}  # name: (play, animation type, node)
     found = []
-    for k, play in enumerate(plays):
-        marks = []
-        for kind, node in (r for a in play["animations"] for r in _recorded(a)):
-            name = node.get("name") or ""
-            if name in _MARKS and kind in INCOMING:
-                marks.append(node)
-            elif name in _POLYGONS or name.startswith("vertex:"):
-                last[name] = (k, kind, node)
-        for mark in marks:
-            home = "analysis:polygon" if mark["name"].startswith("analysis:") else "polygon"
-            polygon = _state_then(data, last, k, home)
-            box = _box_of(mark)
-            if polygon is None or box is None:
-                found.append(f"play {k} {mark['name']}: no polygon drawn")
+    for k, mark, polygon, last in _marks_on_polygons(data, _MARKS):
+        box = _box_of(mark)
+        if polygon is None or box is None:
+            found.append(f"play {k} {mark['name']}: no polygon drawn")
+            continue
+        shape, corners = area(*box), _corners(polygon)
+        gaps = {f"edge ({a[0]:g}, {a[1]:g})–({b[0]:g}, {b[1]:g})":
+                shape.distance(LineString([a, b]))
+                for a, b in zip(corners, corners[1:] + corners[:1], strict=True)}
+        for name in [n for n in last if n.startswith("vertex:")]:
+            marker = _state_then(data, last, k, name)
+            dots = [n for n in mobject_nodes(marker or {}) if n.get("points")]
+            if not dots:
                 continue
-            shape, corners = area(*box), _corners(polygon)
-            gaps = {f"edge ({a[0]:g}, {a[1]:g})–({b[0]:g}, {b[1]:g})":
-                    shape.distance(LineString([a, b]))
-                    for a, b in zip(corners, corners[1:] + corners[:1], strict=True)}
-            for name in [n for n in last if n.startswith("vertex:")]:
-                marker = _state_then(data, last, k, name)
-                dots = [n for n in mobject_nodes(marker or {}) if n.get("points")]
-                if not dots:
-                    continue
-                centre = tuple(np.mean([q[:2] for q in dots[0]["points"]], axis=0))
-                if _near(centre, corners, 0.05):  # a vertex of this polygon
-                    for label in _label_boxes(marker or {}):
-                        gaps[name] = min(gaps.get(name, np.inf), shape.distance(area(*label)))
-            where, gap = min(gaps.items(), key=lambda item: item[1])
-            if gap < LEAST_MARK_GAP:
-                found.append(f"play {k} {mark['name']}: {gap:.2f} from {where}")
+            centre = tuple(np.mean([q[:2] for q in dots[0]["points"]], axis=0))
+            if _near(centre, corners, 0.05):  # a vertex of this polygon
+                for label in _label_boxes(marker or {}):
+                    gaps[name] = min(gaps.get(name, np.inf), shape.distance(area(*label)))
+        where, gap = min(gaps.items(), key=lambda item: item[1])
+        if gap < LEAST_MARK_GAP:
+            found.append(f"play {k} {mark['name']}: {gap:.2f} from {where}")
     return found
 
 
@@ -761,12 +775,16 @@ def broken_summaries(data: dict) -> list[str]:
 
 #: the least a label of the panel's polygon keeps from its outline and from another label
 LABEL_ROOM = 0.03
+#: how much nearer its own dot a panel label's centre stands than any other's (the keyhole's
+#: b₂, midway between the dots a₂ and b₂, named neither)
+LABEL_OWN = 1.2
 
 
 def crowded_panel_labels(data: dict) -> list[str]:
     """The labels of the panel's polygon that overlap another label or come within
     :data:`LABEL_ROOM` of its outline (an edge through a label misreads it), or that stand
-    nearer another vertex's dot than their own, as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``;
+    nearer another vertex's dot than their own (their box, or their centre by
+    :data:`LABEL_OWN`), as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``;
     and the vertices left without a label (no room for one: ``"K unlabelled"``). Each run's
     panel (from its polygon's coming in) is judged alone."""
     found: list[str] = []
@@ -836,8 +854,13 @@ def _crowded(outline_node: dict, markers: dict[str, dict]) -> list[str]:
         found += [f"{label} × {other}" for other, there in sorted(labels.items())
                   if other > label and shape.distance(there) < LABEL_ROOM]
         nearest = min(dots, key=lambda k: (shape.distance(dots[k]), k))
+        centre = shape.centroid
+        closest = min(dots, key=lambda k: (centre.distance(dots[k]) * (
+            LABEL_OWN if k == label else 1), k != label))
         if nearest != label and shape.distance(dots[nearest]) < shape.distance(dots[label]):
             found.append(f"{label} ~ {nearest}")
+        elif closest != label:  # midway between two dots: it names neither
+            found.append(f"{label} ~ {closest}")
     return found
 
 
@@ -854,9 +877,8 @@ def _named_label_boxes(node: dict) -> Iterator[tuple[str, tuple[float, float, fl
     """(vertex, box) of each vertex label in a node and its parts."""
     for part in mobject_nodes(node):
         if (part.get("name") or "").startswith("vertex:"):
-            for child in part.get("submobjects", ()):
-                if child.get("box") and (child.get("text") or "").strip():
-                    yield part["name"].removeprefix("vertex:"), tuple(child["box"])
+            for box in _label_boxes(part, direct=True):
+                yield part["name"].removeprefix("vertex:"), box
 
 
 def crowded_notes(data: dict) -> list[str]:
@@ -1245,3 +1267,101 @@ def labels_under_tools(data: dict) -> list[str]:
                               if line.intersects(rectangle(x0 + 0.005, y0 + 0.005, x1 - 0.005,
                                                            y1 - 0.005))}
     return sorted(found)
+# --- issue 22: a vertex label is read clear of the lines drawn ------------------------------------
+
+#: the board's drawn segments a vertex label must not meet: its outline's edges, the
+#: diagonals drawn on it and the triangles' edges (a piece done, the whole triangulation)
+_SEGMENT_OWNERS = ("polygon", "analysis:polygon", "diagonal:", "triangle", "triangulation")
+#: the owners of which several are shown under one name (each piece's triangles)
+_MANY = ("triangle", "triangulation")
+
+
+def _segments(node: dict) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The straight pieces of a drawn outline or line: manim's points come four a curve,
+    the first and the last the ends of an edge (several rings, with holes, are not joined)."""
+    points = node.get("points") or []
+    return [(tuple(points[k][:2]), tuple(points[k + 3][:2])) for k in range(0, len(points) - 3, 4)
+            if points[k][:2] != points[k + 3][:2]]
+
+
+def _ends(anim: dict) -> Iterator[tuple[str, dict, str]]:
+    """(the animation's type, node, name) of every top mobject an animation (or its members)
+    has: its mobject, then its target, the state the mobject ends in, under the mobject's
+    name (a transform into a new shape: the fruit's outline as its slices go)."""
+    own = (anim.get("mobject") or {}).get("name") or ""
+    for key in ("mobject", "target"):
+        if key in anim:
+            yield anim["type"], anim[key], own or anim[key].get("name") or ""
+    for child in anim.get("animations", ()):
+        yield from _ends(child)
+
+
+def crossed_vertex_labels(data: dict) -> list[str]:
+    """The board's vertex labels that a drawn segment meets, as ``"play 93 K × diagonal:IM"``
+    or ``"play 12 K × polygon"`` (each label and segment once, at the first play it shows):
+    a label an edge or a diagonal runs through reads as part of the line, or names the wrong
+    vertex. The label, the outline and the diagonals are as the play leaves them; a thing
+    faded out is gone, and one a turn moves is unknown until it is recorded again (a turn
+    records where it starts). A polygon coming in begins a new picture."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    shown: dict[str, dict] = {}
+    found: dict[tuple[str, str], str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            top = anim.get("mobject") or {}
+            if anim.get("type") in INCOMING and top.get("name") in _POLYGONS:
+                shown = {}
+            for kind, node, named in _ends(anim):
+                for part in mobject_nodes(node):
+                    name = named if part is node else part.get("name") or ""
+                    if name.startswith(_MANY) and part.get("points"):
+                        name += f"@{part['points'][0]}"  # one of many: told by where it is
+                    if name.startswith(("vertex:", *_SEGMENT_OWNERS)):
+                        # a turn records where it starts, not where it leaves the thing
+                        if kind in OUTGOING or kind == "Turn":
+                            shown.pop(name, None)
+                        else:
+                            shown[name] = part
+        lines = {name: [LineString(s) for s in _segments(node)] for name, node in shown.items()
+                 if name.startswith(_SEGMENT_OWNERS)}
+        for name, marker in shown.items():
+            if not name.startswith("vertex:"):
+                continue
+            for label in _label_boxes(marker, direct=True):
+                shape = area(*label)
+                for owner, segments in lines.items():
+                    if any(shape.intersects(s) for s in segments):
+                        drawn = owner.partition("@")[0]
+                        found.setdefault((name, drawn),
+                                         f"play {k} {name.removeprefix('vertex:')} × {drawn}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- issue 22: a ✓ stands beside its claim inside P ---------------------------------------------
+
+#: the marks of a correct claim the analyses draw (a run's board may turn or shrink its
+#: polygon under the mark: its ticks are not judged here)
+_TICKS = ("analysis:tick",)
+
+
+def ticks_outside(data: dict) -> list[str]:
+    """The analyses' ✓ marks not wholly inside their polygon, as ``"play 60 analysis:tick:
+    0.83 outside P"`` (how far its box reaches out): a ✓ past an edge seems to judge that
+    edge, and a correct claim lies inside P, where there is room for its mark. The polygon
+    is the last drawn before the mark (:func:`_marks_on_polygons`)."""
+    from shapely.geometry import Point, Polygon
+    from shapely.geometry import box as area
+
+    found = []
+    for k, tick, polygon, _ in _marks_on_polygons(data, _TICKS):
+        box = _box_of(tick)
+        if polygon is None or box is None:
+            continue
+        shape = area(*box)
+        region = Polygon(_corners(polygon))
+        if not region.buffer(1e-6).contains(shape):
+            reach = max(region.distance(Point(p)) for p in shape.exterior.coords)
+            found.append(f"play {k} {tick['name']}: {reach:.2f} outside P")
+    return found

@@ -30,6 +30,7 @@ from tests.reading_rules import (
     answers_over_pictures,
     broken_counts,
     broken_summaries,
+    crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
     crowded_counts,
@@ -47,6 +48,7 @@ from tests.reading_rules import (
     small_texts,
     stale_endings,
     stale_lit_rows,
+    ticks_outside,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
@@ -509,6 +511,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert leftover_verdicts(data) == [], chapter.slug
     # issue 22: a verdict's ✓ or ✗ stands clear of every edge and label
     assert crowded_verdicts(data) == [], chapter.slug
+    # issue 22: no drawn line (an edge, a diagonal) crosses a vertex label
+    assert crossed_vertex_labels(data) == [], chapter.slug
+    # issue 22: an analysis's ✓ for a correct claim stands inside P, beside its claim
+    assert ticks_outside(data) == [], chapter.slug
     # issue 22 item 5: a summary of fast beats is not broken by a key step and comes back
     assert broken_summaries(data) == [], chapter.slug
     # the panel's small polygon: its labels apart, off its edges, none left out

@@ -48,6 +48,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     calls_over_code,
+    crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
     crossfaded_texts,
@@ -294,6 +295,13 @@ def test_a_verdicts_mark_stands_clear_of_edges_and_labels(case):
     """Issue 22: a ✓ or ✗ keeps 2 % of the frame's height from every edge of its polygon
     and every vertex label (a ✓ on edge BC reads as judging BC)."""
     assert crowded_verdicts(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_drawn_line_crosses_a_vertex_label(case):
+    """Issue 22: a board's vertex label stands clear of the lines drawn, the polygon's edges
+    and the diagonals (an edge through chapter 5's K read as part of the line)."""
+    assert crossed_vertex_labels(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -711,10 +719,16 @@ def _vertex_places(nodes_: list[dict]) -> dict[str, list]:
                                               "divide_and_conquer.DivideAndConquer")])
 def test_vertices_come_back_after_the_picture_turns(case):
     """Gravity turns the picture and turns it back after the verdict (every claim of divide
-    and conquer): dots and labels end where they started, however many turns came between."""
+    and conquer): dots and labels end where they started, however many turns came between,
+    or where a label was last moved clear of a line drawn (a Transform of its marker)."""
     data = graph(case).data
     first = _vertex_places(n for play in data["plays"] for a in play["animations"]
                            for n in _walk_animation(a))
+    # the last move of each label counts: the targets latest first, under their marker's name
+    moves = [{**a["target"], "name": a["mobject"]["name"]} for play in data["plays"]
+             for a in play["animations"] if a["type"] == "Transform" and "target" in a
+             and (a["mobject"].get("name") or "").startswith("vertex:")]
+    first.update(_vertex_places(reversed(moves)))
     last = _vertex_places(m for n in data["final"] for m in _walk(n))
     assert len(first) >= 8 and first.keys() == last.keys()
     moved = {k: (first[k], last[k]) for k in first if first[k] != last[k]}
