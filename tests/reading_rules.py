@@ -881,27 +881,24 @@ def _named_label_boxes(node: dict) -> Iterator[tuple[str, tuple[float, float, fl
                 yield part["name"].removeprefix("vertex:"), box
 
 
+def _touching(part: dict, labels: dict[str, tuple[float, float, float, float]]) -> list[str]:
+    """``part``'s text nearer than :data:`LEAST_NOTE_GAP` to each of the ``labels`` it
+    touches, as ``"'outside P, inside T' touches D"``."""
+    x0, y0, x1, y1 = part["box"]
+    grown = (x0 - LEAST_NOTE_GAP, y0 - LEAST_NOTE_GAP, x1 + LEAST_NOTE_GAP, y1 + LEAST_NOTE_GAP)
+    return [f"{part['text']!r} touches {v}" for v, box in sorted(labels.items())
+            if _overlap(grown, box)]
+
+
 def crowded_notes(data: dict) -> list[str]:
     """The notes on the picture (:data:`_NOTES`) nearer than :data:`LEAST_NOTE_GAP` to a
     vertex label shown with them, as ``"'outside P, inside T' touches D"``. The labels are
     those of the polygon drawn last before the note (a scene of several runs draws several)."""
-    labels: set[tuple[str, tuple[float, float, float, float]]] = set()
     found = []
-    for play in data["plays"]:
-        for anim in play["animations"]:
-            node = anim.get("mobject", {})
-            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
-                labels = set()
-            for key in ("mobject", "target"):
-                labels.update(_named_label_boxes(anim.get(key, {})))
-            for part in mobject_nodes(node):
-                if part.get("name") not in _NOTES or not part.get("box"):
-                    continue
-                x0, y0, x1, y1 = part["box"]
-                grown = (x0 - LEAST_NOTE_GAP, y0 - LEAST_NOTE_GAP, x1 + LEAST_NOTE_GAP,
-                         y1 + LEAST_NOTE_GAP)
-                found += [f"{part['text']!r} touches {v}" for v, box in sorted(labels)
-                          if _overlap(grown, box)]
+    for anim, labels in _with_labels(data):
+        for part in mobject_nodes(anim.get("mobject", {})):
+            if part.get("name") in _NOTES and part.get("box"):
+                found += _touching(part, labels)
     return sorted(set(found))
 
 
@@ -910,30 +907,23 @@ def crowded_counts(data: dict) -> list[str]:
     :data:`LEAST_NOTE_GAP` to a vertex label or to the subtitle on screen with them, as
     ``"'n − 2 = …' touches C"``, ``"'n − 2 = …' touches the subtitle"``: text over text (the
     monotone count stood under P, on the bottom vertex's label and the subtitle)."""
-    labels: set[tuple[str, tuple[float, float, float, float]]] = set()
     subtitle: tuple[float, ...] | None = None
     found = []
-    for play in data["plays"]:
-        for anim in play["animations"]:
-            node = anim.get("mobject", {})
-            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
-                labels = set()
-            for key in ("mobject", "target"):
-                labels.update(_named_label_boxes(anim.get(key, {})))
-            if node.get("name") == "subtitle" and node.get("box"):
-                subtitle = None if anim.get("type") in OUTGOING else tuple(node["box"])
-            if anim.get("type") not in INCOMING:
+    for anim, labels in _with_labels(data):
+        node = anim.get("mobject", {})
+        if node.get("name") == "subtitle" and node.get("box"):
+            subtitle = None if anim.get("type") in OUTGOING else tuple(node["box"])
+        if anim.get("type") not in INCOMING:
+            continue
+        for part in mobject_nodes(node):
+            if part.get("name") != "counter" or not part.get("box"):
                 continue
-            for part in mobject_nodes(node):
-                if part.get("name") != "counter" or not part.get("box"):
-                    continue
-                x0, y0, x1, y1 = part["box"]
-                grown = (x0 - LEAST_NOTE_GAP, y0 - LEAST_NOTE_GAP, x1 + LEAST_NOTE_GAP,
-                         y1 + LEAST_NOTE_GAP)
-                found += [f"{part['text']!r} touches {v}" for v, box in sorted(labels)
-                          if _overlap(grown, box)]
-                if subtitle is not None and _overlap(grown, subtitle):
-                    found.append(f"{part['text']!r} touches the subtitle")
+            found += _touching(part, labels)
+            x0, y0, x1, y1 = part["box"]
+            grown = (x0 - LEAST_NOTE_GAP, y0 - LEAST_NOTE_GAP, x1 + LEAST_NOTE_GAP,
+                     y1 + LEAST_NOTE_GAP)
+            if subtitle is not None and _overlap(grown, subtitle):
+                found.append(f"{part['text']!r} touches the subtitle")
     return sorted(set(found))
 
 
@@ -1158,14 +1148,11 @@ def _outline(node: dict):
     return Region(corners).buffer(0) if len(corners) >= 3 else None
 
 
-def labels_under_faces(data: dict) -> list[str]:
-    """The vertex labels a face (:data:`_FACES`) covers, as ``"the dial covers B"``; the labels
-    are those of the polygon drawn last before the face, at the places they were last
-    drawn."""
-    from shapely.geometry import box as rectangle
-
+def _with_labels(data: dict) -> Iterator[tuple[dict, dict[str, tuple[float, float, float, float]]]]:
+    """Every animation of the graph with the vertex labels on screen once it has played: those
+    of the polygon drawn last, each at the place it was last drawn (a polygon coming in
+    begins a new picture)."""
     labels: dict[str, tuple[float, float, float, float]] = {}
-    found = set()
     for play in data["plays"]:
         for anim in play["animations"]:
             node = anim.get("mobject", {})
@@ -1173,16 +1160,28 @@ def labels_under_faces(data: dict) -> list[str]:
                 labels = {}
             for key in ("mobject", "target"):
                 labels.update(dict(_named_label_boxes(anim.get(key, {}))))
-            if anim.get("type") not in INCOMING:
+            yield anim, labels
+
+
+def labels_under_faces(data: dict) -> list[str]:
+    """The vertex labels a face (:data:`_FACES`) covers, as ``"the dial covers B"``; the labels
+    are those of the polygon drawn last before the face, at the places they were last
+    drawn."""
+    from shapely.geometry import box as rectangle
+
+    found = set()
+    for anim, labels in _with_labels(data):
+        node = anim.get("mobject", {})
+        if anim.get("type") not in INCOMING:
+            continue
+        for part in mobject_nodes(node):
+            if part.get("name") not in _FACES or not part.get("points"):
                 continue
-            for part in mobject_nodes(node):
-                if part.get("name") not in _FACES or not part.get("points"):
-                    continue
-                face = _outline(part)
-                if face is None:
-                    continue
-                found |= {f"the {part['name']} covers {v}" for v, box in labels.items()
-                          if face.intersects(rectangle(*box))}
+            face = _outline(part)
+            if face is None:
+                continue
+            found |= {f"the {part['name']} covers {v}" for v, box in labels.items()
+                      if face.intersects(rectangle(*box))}
     return sorted(found)
 
 
@@ -1245,27 +1244,21 @@ def labels_under_tools(data: dict) -> list[str]:
     from shapely.geometry import LineString
     from shapely.geometry import box as rectangle
 
-    labels: dict[str, tuple[float, float, float, float]] = {}
     found = set()
-    for play in data["plays"]:
-        for anim in play["animations"]:
-            node = anim.get("mobject", {})
-            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
-                labels = {}
-            for key in ("mobject", "target"):
-                labels.update(dict(_named_label_boxes(anim.get(key, {}))))
-            for piece in mobject_nodes(node):
-                name = piece.get("name") or ""
-                if not name.startswith(_TOOL_PIECES):
+    for anim, labels in _with_labels(data):
+        node = anim.get("mobject", {})
+        for piece in mobject_nodes(node):
+            name = piece.get("name") or ""
+            if not name.startswith(_TOOL_PIECES):
+                continue
+            for part in mobject_nodes(piece):  # a dashed line's dashes
+                if len(part.get("points", ())) < 2 or (part.get("stroke_opacity") or 0) == 0:
                     continue
-                for part in mobject_nodes(piece):  # a dashed line's dashes
-                    if len(part.get("points", ())) < 2 or (part.get("stroke_opacity") or 0) == 0:
-                        continue
-                    line = LineString([p[:2] for p in part["points"]])
-                    found |= {f"the {name.split(':')[0]} runs through {v}"
-                              for v, (x0, y0, x1, y1) in labels.items()
-                              if line.intersects(rectangle(x0 + 0.005, y0 + 0.005, x1 - 0.005,
-                                                           y1 - 0.005))}
+                line = LineString([p[:2] for p in part["points"]])
+                found |= {f"the {name.split(':')[0]} runs through {v}"
+                          for v, (x0, y0, x1, y1) in labels.items()
+                          if line.intersects(rectangle(x0 + 0.005, y0 + 0.005, x1 - 0.005,
+                                                       y1 - 0.005))}
     return sorted(found)
 # --- issue 22: a vertex label is read clear of the lines drawn ------------------------------------
 
