@@ -316,7 +316,7 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
         motion_anims, drawing = moving(
             stage, lambda t: tool_drawing(stage, m, t, colour, stage.polygon.points),
             analysis.slow)
-        stage.say(right.moving_beat.caption, (first, 0.6 if first else 1.5), ([FadeIn(drawing)], 0.3),
+        stage.say(right.moving_beat.caption, *out_then_in(first, 1.5), ([FadeIn(drawing)], 0.3),
                   (motion_anims, analysis.slow),
                   ([Indicate(stage.markers[right.pick], color=theme.result)], 0.6))
         witness = m.witness()
@@ -333,6 +333,19 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
               ([FadeIn(shaded), Create(claim), FadeIn(tick),
                 *stage.key(theme.result, f"{label}: in P", "witness")], 1.5),
               ([], analysis.freeze))
+
+
+def out_then_in(anims: Sequence[Animation], alone: float) -> list[tuple[list, float]]:
+    """The plays of ``anims`` with what they take off played before what they put on: a text
+    goes (the wrong heuristic's title, a legend entry) before the next comes in its place,
+    never the two faded into each other (issue 22 item 9). None: one still play of ``alone``
+    seconds."""
+    gone: list[Animation] = [a for a in anims if isinstance(a, FadeOut)]
+    come = [a for a in anims if not isinstance(a, FadeOut)]
+    plays: list[tuple[list, float]] = [(gone, 0.4)] if gone else []
+    if come or not plays:
+        plays.append((come, 0.6 if anims else alone))
+    return plays
 
 
 def _band_moves(stage: Stage, right: Moment, analysis: Analysis, first: list) -> None:

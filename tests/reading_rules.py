@@ -141,6 +141,30 @@ def crossfaded_overlaps(data: dict) -> list[str]:
     return found
 
 
+
+def words_before_pictures(data: dict) -> list[str]:
+    """Issue 22: the runs whose first subtitle comes up in a play before the one that writes
+    their title and draws their picture (the words a second ahead of what they speak of), as
+    ``"play 71: 'The frame as before: …' before 'Rotation on …'"``: since the screen was last
+    cleared (a play of fades out only), no subtitle before the title."""
+    found, said = [], None
+    for k, play in enumerate(data["plays"]):
+        kinds = {a["type"] for a in play["animations"]}
+        if kinds and kinds <= OUTGOING:
+            said = None
+            continue
+        titles = [t for a in play["animations"] for t in _played_texts(a, "title")]
+        if titles and said is not None:
+            found.append(f"play {said[0]}: {said[1]!r} before {titles[0][1]!r}")
+        if titles:
+            said = None
+        elif said is None:
+            subtitles = [t for a in play["animations"] for _, t in _played_texts(a, "subtitle")]
+            if subtitles:
+                said = (k, subtitles[0])
+    return found
+
+
 # --- issue 22 item 10: the words ------------------------------------------------------------------
 
 #: the command line's names that are no English word: every hyphenated registry name, and

@@ -52,6 +52,7 @@ from tests.reading_rules import (
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
+    words_before_pictures,
 )
 from trex import assemble, chapter_pool, lecture_command
 from trex.cli import main
@@ -482,10 +483,11 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert small_texts(data) == [], chapter.slug
     # issue 22 item 9: never two subtitles at once
     assert crossfaded_subtitles(data) == [], chapter.slug
-    # nor a text fading in over one fading out (the count where the black box stood); not
-    # yet in chapter 2, whose analyses fade their title and legend into the correction's
-    if chapter.slug != "heuristics":
-        assert crossfaded_overlaps(data) == [], chapter.slug
+    # nor a text fading in over one fading out (the count where the black box stood; chapter
+    # 2's analyses' title and legend, which go before the correction's come)
+    assert crossfaded_overlaps(data) == [], chapter.slug
+    # issue 22: a run's title and picture come with its panel and first words, not after
+    assert words_before_pictures(data) == [], chapter.slug
     # a counter (slices, the whole count) stands clear of the labels
     assert crowded_counts(data) == [], chapter.slug
     # issue 22 item 3: every red claim leaves its polygon by 4 % of the frame's height
