@@ -36,6 +36,7 @@ from manim import (
     Line,
     UpdateFromAlphaFunc,
     VGroup,
+    VMobject,
     linear,
 )
 
@@ -56,6 +57,8 @@ from story.states import Moving, Tool
 SLOW = 5.0
 #: seconds the picture holds still at the decisive moment (the pick, the red, the witness)
 FREEZE = 1.5
+#: the stroke width of the dark halo under an analysis's ✓ (:func:`halo`)
+HALO_WIDTH = 7.0
 #: the metaphor's name on screen, by the registry's metaphor module
 NAMES = {"water": "Water", "clock": "Clock", "sweep": "Sweep", "gravity": "Gravity"}
 
@@ -330,7 +333,7 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
                "analysis:tick").set_z_index(4)
     beside(stage, tick, claim, witness)
     stage.say(right.words(analysis.holds),
-              ([FadeIn(shaded), Create(claim), FadeIn(tick),
+              ([FadeIn(shaded), Create(claim), FadeIn(halo(stage, tick)), FadeIn(tick),
                 *stage.key(theme.result, f"{label}: in P", "witness")], 1.5),
               ([], analysis.freeze))
 
@@ -346,6 +349,16 @@ def out_then_in(anims: Sequence[Animation], alone: float) -> list[tuple[list, fl
     if come or not plays:
         plays.append((come, 0.6 if anims else alone))
     return plays
+
+
+def halo(stage: Stage, mark) -> VMobject:
+    """A dark silhouette of ``mark`` (its glyph's outline, filled and thickly stroked in the
+    background's colour) just under it: a green ✓ on the green witness shading reads."""
+    theme = stage.theme
+    backing = VMobject(fill_color=theme.background, fill_opacity=1.0,
+                       stroke_color=theme.background, stroke_width=HALO_WIDTH)
+    backing.set_points(mark.points.copy())
+    return tag(backing, None, "analysis:tick:halo").set_z_index(mark.z_index - 0.5)
 
 
 def _band_moves(stage: Stage, right: Moment, analysis: Analysis, first: list) -> None:

@@ -1370,6 +1370,29 @@ def crossed_vertex_labels(data: dict) -> list[str]:
 _TICKS = ("analysis:tick",)
 
 
+def _luminance(colour: str) -> float:
+    """The relative luminance (0 black, 1 white) of a ``#rrggbb`` colour."""
+    r, g, b = (int(colour.lstrip("#")[k:k + 2], 16) / 255 for k in (0, 2, 4))
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
+
+def bare_ticks(data: dict) -> list[str]:
+    """Issue 22: the analyses' green ✓ marks that come in without their dark halo (a filled,
+    thickly stroked silhouette in a dark colour, in the same play), as ``"play 61"``: green on
+    the green witness shading does not read."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        came = [node for a in play["animations"] for kind, node in _recorded(a)
+                if kind in INCOMING]
+        ticks = [n for n in came if n.get("name") in _TICKS]
+        halos = [n for n in came if n.get("name") == "analysis:tick:halo"
+                 and (n.get("fill_opacity") or 0) >= 0.99 and (n.get("stroke_width") or 0) >= 4
+                 and _luminance(n["fill"]) < 0.15 and _luminance(n["stroke"]) < 0.15]
+        if ticks and len(halos) < len(ticks):
+            found.append(f"play {k}")
+    return found
+
+
 def ticks_outside(data: dict) -> list[str]:
     """The analyses' ✓ marks not wholly inside their polygon, as ``"play 60 analysis:tick:
     0.83 outside P"`` (how far its box reaches out): a ✓ past an edge seems to judge that

@@ -28,6 +28,7 @@ from click.testing import CliRunner
 
 from tests.reading_rules import (
     answers_over_pictures,
+    bare_ticks,
     broken_counts,
     broken_summaries,
     crossed_vertex_labels,
@@ -517,6 +518,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert crossed_vertex_labels(data) == [], chapter.slug
     # issue 22: an analysis's ✓ for a correct claim stands inside P, beside its claim
     assert ticks_outside(data) == [], chapter.slug
+    # and on a dark halo: green on the green witness shading does not read
+    assert bare_ticks(data) == [], chapter.slug
     # issue 22 item 5: a summary of fast beats is not broken by a key step and comes back
     assert broken_summaries(data) == [], chapter.slug
     # the panel's small polygon: its labels apart, off its edges, none left out
