@@ -424,20 +424,23 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
         return
     if known.correction is None:
         raise ValueError(f"{analysis.heuristic} is wrong and has no correction to analyse")
-    stage = _stage(scene, first, analysis.title or f"{name}: why {said} fails", theme)
+    right = moment(known.correction, analysis.polygon)
+    stage = _stage(scene, first, analysis.title or f"{name}: why {said} fails", theme,
+                   right.claim.labels)
     if analysis.intro:
         frame(stage, first, analysis)
     cleared = fails(stage, first, analysis)
-    right = moment(known.correction, analysis.polygon)
     # the correction's first appearance in the chapter: named with its picture
     holds(stage, right, analysis, [
         *[FadeOut(m) for m in cleared], *stage.forget_key("astray"),
         *stage.retitle(f"{name}: the correction, {spoken(known.correction, first=True)}")])
 
 
-def _stage(scene, seen: Moment, title: str, theme: Theme) -> Stage:
+def _stage(scene, seen: Moment, title: str, theme: Theme, *later: tuple[str, str]) -> Stage:
+    """The stage of ``seen``, its labels clear of its claim and of the ``later`` ones (its
+    correction's)."""
     return Stage(scene, seen.points, seen.labels, seen.triangle, title, theme,
-                 seen.band.turn if seen.band else 0.0)
+                 seen.band.turn if seen.band else 0.0, (seen.claim.labels, *later))
 
 
 def _check(analysis: Analysis, seen: Moment) -> None:

@@ -1363,6 +1363,35 @@ def crossed_vertex_labels(data: dict) -> list[str]:
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
 
 
+def labels_on_claims(data: dict, margin: float = 0.05) -> list[str]:
+    """Issue 22: the analyses' vertex labels nearer than ``margin`` (the labels' own margin
+    from an edge, :data:`metaphors.labels.MARGIN`) to a claim the analysis draws, as
+    ``"play 60 E: 0.00 from analysis:claim"``: a label on the claim reads as part of it. The
+    labels as the analysis's picture last put them up."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    shown: dict[str, dict] = {}
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name = node.get("name") or ""
+            if name.startswith("vertex:") and anim["type"] in INCOMING:
+                shown[name] = node
+            if name == "analysis:claim" and anim["type"] in INCOMING and node.get("points"):
+                points = node["points"]
+                claim = LineString([points[0][:2], points[-1][:2]])
+                for vertex, marker in shown.items():
+                    near = min((area(*b).distance(claim) for b in _label_boxes(marker,
+                                                                                  direct=True)),
+                               default=margin)
+                    if near < margin:
+                        found.append(f"play {k} {vertex.removeprefix('vertex:')}: {near:.2f} "
+                                     f"from {name}")
+    return found
+
+
 # --- issue 22: a ✓ stands beside its claim inside P ---------------------------------------------
 
 #: the marks of a correct claim the analyses draw (a run's board may turn or shrink its

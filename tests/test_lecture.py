@@ -39,6 +39,7 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     hidden_failures,
+    labels_on_claims,
     labels_under_faces,
     labels_under_tools,
     leftover_verdicts,
@@ -520,6 +521,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert ticks_outside(data) == [], chapter.slug
     # and on a dark halo: green on the green witness shading does not read
     assert bare_ticks(data) == [], chapter.slug
+    # issue 22: an analysis's labels clear of the claims it draws (E stood on BE)
+    assert labels_on_claims(data) == [], chapter.slug
     # issue 22 item 5: a summary of fast beats is not broken by a key step and comes back
     assert broken_summaries(data) == [], chapter.slug
     # the panel's small polygon: its labels apart, off its edges, none left out
