@@ -36,6 +36,7 @@ from manim import (
     Line,
     UpdateFromAlphaFunc,
     VGroup,
+    VMobject,
     linear,
 )
 
@@ -56,6 +57,8 @@ from story.states import Moving, Tool
 SLOW = 5.0
 #: seconds the picture holds still at the decisive moment (the pick, the red, the witness)
 FREEZE = 1.5
+#: the stroke width of the dark halo under an analysis's ✓ (:func:`halo`)
+HALO_WIDTH = 7.0
 #: the metaphor's name on screen, by the registry's metaphor module
 NAMES = {"water": "Water", "clock": "Clock", "sweep": "Sweep", "gravity": "Gravity"}
 
@@ -316,7 +319,7 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
         motion_anims, drawing = moving(
             stage, lambda t: tool_drawing(stage, m, t, colour, stage.polygon.points),
             analysis.slow)
-        stage.say(right.moving_beat.caption, (first, 0.6 if first else 1.5), ([FadeIn(drawing)], 0.3),
+        stage.say(right.moving_beat.caption, *out_then_in(first, 1.5), ([FadeIn(drawing)], 0.3),
                   (motion_anims, analysis.slow),
                   ([Indicate(stage.markers[right.pick], color=theme.result)], 0.6))
         witness = m.witness()
@@ -330,9 +333,32 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
                "analysis:tick").set_z_index(4)
     beside(stage, tick, claim, witness)
     stage.say(right.words(analysis.holds),
-              ([FadeIn(shaded), Create(claim), FadeIn(tick),
+              ([FadeIn(shaded), Create(claim), FadeIn(halo(stage, tick)), FadeIn(tick),
                 *stage.key(theme.result, f"{label}: in P", "witness")], 1.5),
               ([], analysis.freeze))
+
+
+def out_then_in(anims: Sequence[Animation], alone: float) -> list[tuple[list, float]]:
+    """The plays of ``anims`` with what they take off played before what they put on: a text
+    goes (the wrong heuristic's title, a legend entry) before the next comes in its place,
+    never the two faded into each other (issue 22 item 9). None: one still play of ``alone``
+    seconds."""
+    gone: list[Animation] = [a for a in anims if isinstance(a, FadeOut)]
+    come = [a for a in anims if not isinstance(a, FadeOut)]
+    plays: list[tuple[list, float]] = [(gone, 0.4)] if gone else []
+    if come or not plays:
+        plays.append((come, 0.6 if anims else alone))
+    return plays
+
+
+def halo(stage: Stage, mark) -> VMobject:
+    """A dark silhouette of ``mark`` (its glyph's outline, filled and thickly stroked in the
+    background's colour) just under it: a green ✓ on the green witness shading reads."""
+    theme = stage.theme
+    backing = VMobject(fill_color=theme.background, fill_opacity=1.0,
+                       stroke_color=theme.background, stroke_width=HALO_WIDTH)
+    backing.set_points(mark.points.copy())
+    return tag(backing, None, "analysis:tick:halo").set_z_index(mark.z_index - 0.5)
 
 
 def _band_moves(stage: Stage, right: Moment, analysis: Analysis, first: list) -> None:
@@ -398,20 +424,23 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
         return
     if known.correction is None:
         raise ValueError(f"{analysis.heuristic} is wrong and has no correction to analyse")
-    stage = _stage(scene, first, analysis.title or f"{name}: why {said} fails", theme)
+    right = moment(known.correction, analysis.polygon)
+    stage = _stage(scene, first, analysis.title or f"{name}: why {said} fails", theme,
+                   right.claim.labels)
     if analysis.intro:
         frame(stage, first, analysis)
     cleared = fails(stage, first, analysis)
-    right = moment(known.correction, analysis.polygon)
     # the correction's first appearance in the chapter: named with its picture
     holds(stage, right, analysis, [
         *[FadeOut(m) for m in cleared], *stage.forget_key("astray"),
         *stage.retitle(f"{name}: the correction, {spoken(known.correction, first=True)}")])
 
 
-def _stage(scene, seen: Moment, title: str, theme: Theme) -> Stage:
+def _stage(scene, seen: Moment, title: str, theme: Theme, *later: tuple[str, str]) -> Stage:
+    """The stage of ``seen``, its labels clear of its claim and of the ``later`` ones (its
+    correction's)."""
     return Stage(scene, seen.points, seen.labels, seen.triangle, title, theme,
-                 seen.band.turn if seen.band else 0.0)
+                 seen.band.turn if seen.band else 0.0, (seen.claim.labels, *later))
 
 
 def _check(analysis: Analysis, seen: Moment) -> None:

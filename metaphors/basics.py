@@ -41,11 +41,17 @@ from story.storyboard import Reading
 
 
 def polygon(board: Board, beat: ShowPolygon) -> None:
-    board.scene.add(*board.panel.mobjects())
+    # the lecture: the panel and the first words come with the title and the picture, never
+    # before them (TraceScene.words_with_picture); elsewhere the panel is up at once
+    together = getattr(board.scene, "words_with_picture", False)
+    panel = [FadeIn(m) for m in board.panel.mobjects()] if together else []
+    if not together:
+        board.scene.add(*board.panel.mobjects())
     # one FadeIn per marker: FadeIn(*markers) would put them on screen as one group, and manim
     # redraws a whole group in every frame when any member of it changes colour
     board.play(beat, Write(board.title), Create(board.outline),
-               *[FadeIn(m) for m in board.markers.values()], run_time=1.5)
+               *[FadeIn(m) for m in board.markers.values()], *panel, run_time=1.5,
+               together=together)
 
 
 def pick(board: Board, beat: Pick) -> None:

@@ -103,7 +103,8 @@ class Board:
 
     # --- playing ----------------------------------------------------------------------------------
 
-    def play(self, beat: Beat, *anims: Playable, run_time: float = 1.0) -> None:
+    def play(self, beat: Beat, *anims: Playable, run_time: float = 1.0,
+             together: bool = False) -> None:
         """Play a beat: first its words (subtitle, lit line, call line) change, briefly; then its
         own animations play with the roles on both sides, for the rest of the beat's time.
 
@@ -111,7 +112,8 @@ class Board:
         that lies above that. The words change on top of everything (:data:`WORDS_Z`), so their
         short play redraws only them; then they go to the bottom (:meth:`settle`), so the
         picture's play does not redraw them. Nothing overlaps the words, so their place in the
-        drawing order does not show."""
+        drawing order does not show. ``together``: one play, the words with the picture (a
+        run's first beat in the lecture: the words do not come before what they speak of)."""
         # A marker the beat already animates (a pulse) is recoloured after the play: two
         # animations of one mobject in one play would cancel the first.
         busy = {id(getattr(a, "mobject", None)) for a in anims}
@@ -123,7 +125,7 @@ class Board:
         caption = self.captions.show(beat.caption, total) if beat.caption != self.caption else {}
         self._cut_outgoing()  # read: it goes before the next comes in (never crossfaded)
         lead = min(WORDS_TIME, total / 2)
-        if words and lead >= MIN_PLAY:
+        if words and lead >= MIN_PLAY and not together:
             for animation in words:
                 animation.mobject.set_z_index(WORDS_Z)
             self.scene.play(*words, run_time=lead, **caption)

@@ -111,12 +111,15 @@ def placed_vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME,
 
 
 def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
-                     theme: Theme = THEME) -> list[tuple[str, VGroup]]:
+                     theme: Theme = THEME, diagonals: Sequence[tuple[int, int]] = ()
+                     ) -> list[tuple[str, VGroup]]:
     """(label, dot and label) for every vertex of the board's polygon and of its holes, each
     label where :func:`metaphors.drawing.vertex_markers` and
     :func:`metaphors.drawing.hole_markers` put it (a fixed step away from its ring's centre)
     if that is clear, else in the first clear place round its vertex
-    (:func:`place_ring_labels`): an edge through a label reads as part of the line."""
+    (:func:`place_ring_labels`): an edge through a label reads as part of the line. Likewise
+    clear of ``diagonals`` (pairs of the polygon's vertex indices: the claims a picture will
+    draw, which its labels are placed before)."""
     rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
     names = [*polygon.labels, *(label for h in holes for label in h.labels)]
     # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % high
@@ -132,7 +135,8 @@ def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
             norm = float(np.linalg.norm(away))
             first.append(point[:2] + (away / norm if norm > 1e-9 else np.array([0.0, -1.0]))
                          * steps[len(first)][0])
-    centres = place_ring_labels(rings, [(t.width, t.height) for t in texts], [],
+    segments = [(rings[0][i], rings[0][j]) for i, j in diagonals]
+    centres = place_ring_labels(rings, [(t.width, t.height) for t in texts], segments,
                                 theme.dot_radius, first=first)
     points = [point for ring in rings for point in ring]
     markers = []

@@ -36,19 +36,21 @@ LEGEND = (3.6, 2.2)  # top left corner of the legend
 
 class Stage:
     """The picture an analysis plays on — the polygon (turned by ``turn`` degrees), its
-    labels, T (``triangle``, if any), a title, the subtitle and a legend — and the one way it
-    speaks: :meth:`say`."""
+    labels (clear of the ``claims`` it will draw), T (``triangle``, if any), a title, the
+    subtitle and a legend — and the one way it speaks: :meth:`say`."""
 
     def __init__(self, scene, points, labels, triangle, title: str, theme: Theme,
-                 turn: float = 0.0):
+                 turn: float = 0.0, claims: Sequence[tuple[str, str]] = ()):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
         self.frame = _fitted(self.polygon.points, turn)
         self.outline = tag(polygon_mobject(self.polygon, self.frame, theme), "idle",
                            "analysis:polygon")
+        # the labels clear of the claims to come (``claims``: pairs of labels) as of the edges
+        pairs = [(self.polygon.labels.index(u), self.polygon.labels.index(v)) for u, v in claims]
         self.markers = {label: tag(m, "idle", f"vertex:{label}").set_z_index(4) for label, m in
-                        measured_markers(self.polygon, (), self.frame, theme)}
+                        measured_markers(self.polygon, (), self.frame, theme, pairs)}
         self.triangle = None
         if triangle:
             self.triangle = tag(MPolygon(*self.frame.many(triangle), color=theme.called,

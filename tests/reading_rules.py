@@ -141,6 +141,30 @@ def crossfaded_overlaps(data: dict) -> list[str]:
     return found
 
 
+
+def words_before_pictures(data: dict) -> list[str]:
+    """Issue 22: the runs whose first subtitle comes up in a play before the one that writes
+    their title and draws their picture (the words a second ahead of what they speak of), as
+    ``"play 71: 'The frame as before: …' before 'Rotation on …'"``: since the screen was last
+    cleared (a play of fades out only), no subtitle before the title."""
+    found, said = [], None
+    for k, play in enumerate(data["plays"]):
+        kinds = {a["type"] for a in play["animations"]}
+        if kinds and kinds <= OUTGOING:
+            said = None
+            continue
+        titles = [t for a in play["animations"] for t in _played_texts(a, "title")]
+        if titles and said is not None:
+            found.append(f"play {said[0]}: {said[1]!r} before {titles[0][1]!r}")
+        if titles:
+            said = None
+        elif said is None:
+            subtitles = [t for a in play["animations"] for _, t in _played_texts(a, "subtitle")]
+            if subtitles:
+                said = (k, subtitles[0])
+    return found
+
+
 # --- issue 22 item 10: the words ------------------------------------------------------------------
 
 #: the command line's names that are no English word: every hyphenated registry name, and
@@ -1332,11 +1356,63 @@ def crossed_vertex_labels(data: dict) -> list[str]:
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
 
 
+def labels_on_claims(data: dict, margin: float = 0.05) -> list[str]:
+    """Issue 22: the analyses' vertex labels nearer than ``margin`` (the labels' own margin
+    from an edge, :data:`metaphors.labels.MARGIN`) to a claim the analysis draws, as
+    ``"play 60 E: 0.00 from analysis:claim"``: a label on the claim reads as part of it. The
+    labels as the analysis's picture last put them up."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    shown: dict[str, dict] = {}
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name = node.get("name") or ""
+            if name.startswith("vertex:") and anim["type"] in INCOMING:
+                shown[name] = node
+            if name == "analysis:claim" and anim["type"] in INCOMING and node.get("points"):
+                points = node["points"]
+                claim = LineString([points[0][:2], points[-1][:2]])
+                for vertex, marker in shown.items():
+                    near = min((area(*b).distance(claim) for b in _label_boxes(marker,
+                                                                                  direct=True)),
+                               default=margin)
+                    if near < margin:
+                        found.append(f"play {k} {vertex.removeprefix('vertex:')}: {near:.2f} "
+                                     f"from {name}")
+    return found
+
+
 # --- issue 22: a ✓ stands beside its claim inside P ---------------------------------------------
 
 #: the marks of a correct claim the analyses draw (a run's board may turn or shrink its
 #: polygon under the mark: its ticks are not judged here)
 _TICKS = ("analysis:tick",)
+
+
+def _luminance(colour: str) -> float:
+    """The relative luminance (0 black, 1 white) of a ``#rrggbb`` colour."""
+    r, g, b = (int(colour.lstrip("#")[k:k + 2], 16) / 255 for k in (0, 2, 4))
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
+
+def bare_ticks(data: dict) -> list[str]:
+    """Issue 22: the analyses' green ✓ marks that come in without their dark halo (a filled,
+    thickly stroked silhouette in a dark colour, in the same play), as ``"play 61"``: green on
+    the green witness shading does not read."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        came = [node for a in play["animations"] for kind, node in _recorded(a)
+                if kind in INCOMING]
+        ticks = [n for n in came if n.get("name") in _TICKS]
+        halos = [n for n in came if n.get("name") == "analysis:tick:halo"
+                 and (n.get("fill_opacity") or 0) >= 0.99 and (n.get("stroke_width") or 0) >= 4
+                 and _luminance(n["fill"]) < 0.15 and _luminance(n["stroke"]) < 0.15]
+        if ticks and len(halos) < len(ticks):
+            found.append(f"play {k}")
+    return found
 
 
 def ticks_outside(data: dict) -> list[str]:

@@ -28,6 +28,7 @@ from click.testing import CliRunner
 
 from tests.reading_rules import (
     answers_over_pictures,
+    bare_ticks,
     broken_counts,
     broken_summaries,
     crossed_vertex_labels,
@@ -38,6 +39,7 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     hidden_failures,
+    labels_on_claims,
     labels_under_faces,
     labels_under_tools,
     leftover_verdicts,
@@ -52,6 +54,7 @@ from tests.reading_rules import (
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
+    words_before_pictures,
 )
 from trex import assemble, chapter_pool, lecture_command
 from trex.cli import main
@@ -482,10 +485,11 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert small_texts(data) == [], chapter.slug
     # issue 22 item 9: never two subtitles at once
     assert crossfaded_subtitles(data) == [], chapter.slug
-    # nor a text fading in over one fading out (the count where the black box stood); not
-    # yet in chapter 2, whose analyses fade their title and legend into the correction's
-    if chapter.slug != "heuristics":
-        assert crossfaded_overlaps(data) == [], chapter.slug
+    # nor a text fading in over one fading out (the count where the black box stood; chapter
+    # 2's analyses' title and legend, which go before the correction's come)
+    assert crossfaded_overlaps(data) == [], chapter.slug
+    # issue 22: a run's title and picture come with its panel and first words, not after
+    assert words_before_pictures(data) == [], chapter.slug
     # a counter (slices, the whole count) stands clear of the labels
     assert crowded_counts(data) == [], chapter.slug
     # issue 22 item 3: every red claim leaves its polygon by 4 % of the frame's height
@@ -515,6 +519,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert crossed_vertex_labels(data) == [], chapter.slug
     # issue 22: an analysis's ✓ for a correct claim stands inside P, beside its claim
     assert ticks_outside(data) == [], chapter.slug
+    # and on a dark halo: green on the green witness shading does not read
+    assert bare_ticks(data) == [], chapter.slug
+    # issue 22: an analysis's labels clear of the claims it draws (E stood on BE)
+    assert labels_on_claims(data) == [], chapter.slug
     # issue 22 item 5: a summary of fast beats is not broken by a key step and comes back
     assert broken_summaries(data) == [], chapter.slug
     # the panel's small polygon: its labels apart, off its edges, none left out
