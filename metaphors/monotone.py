@@ -345,7 +345,7 @@ def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     yield walk.call_beat(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
                          key_step=kind in ("split", "merge"), roles={v: _kind_role(kind)},
                          vertex=v, kind=kind, at=point(walk.root_points()[v]))
-    walk.count_claim("vertex")  # after its beat: the beat belongs to the vertex it classifies
+    walk.count_claim("vertex", v)  # after its beat: the beat belongs to the vertex it classifies
 
 
 def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
