@@ -151,6 +151,19 @@ def call_line(call: Event, ret: Event | None) -> str:
     return f"{text} → {_shown_result(ret.result)}" if ret is not None else text
 
 
+def run_call(log: Log) -> str | None:
+    """The run's own call (the log's first traced call) as the call line writes it, without
+    its result: what the call line says at the run's end, with the result the picture shows
+    (:func:`metaphors.drawing.ending_beat`). None for a log with no call.
+
+    >>> from story.runs import run_logged
+    >>> run_call(run_logged("divide-and-conquer", "counterexample", "gravity"))
+    'divide_and_conquer(P, gravity)'
+    """
+    first = next((e for e in log.events if e.kind == "call"), None)
+    return call_line(first, None) if first is not None else None
+
+
 def _shown_result(value: Any) -> str:
     """A result as the call line writes it (:func:`show`); a list of more than two lists
     (a piece's triangles) by its first two and an ellipsis: the whole would take four lines

@@ -545,6 +545,34 @@ def stale_endings(data: dict) -> list[str]:
     return found
 
 
+def _call_text(node: dict) -> str:
+    """The words of a call line's node (its lines' texts, joined)."""
+    return " ".join(t for part in mobject_nodes(node) if (t := part.get("text", "").strip()))
+
+
+def stale_call_lines(data: dict) -> list[str]:
+    """The plays that draw a run's whole triangulation while the panel's call line is a step's
+    call, as ``"play 177: 'split(P, 3, 1) → [P, P]'"``: the call line on screen then (the
+    last one brought in since the run's polygon was drawn) is of a function the run called
+    with other call lines too (a split, a piece's triangles), where the run's own call, made
+    once, says what the picture shows (``divide_and_conquer(P, gravity) → 11 triangles``)."""
+    found = []
+    said: list[str] = []
+    for k, play in enumerate(data["plays"]):
+        tops = [(a["type"], a.get("mobject") or {}) for a in play["animations"]]
+        if any(kind in INCOMING and node.get("name") == "polygon" for kind, node in tops):
+            said = []
+        said += [_call_text(node) for kind, node in tops
+                 if kind in INCOMING and node.get("name") == "panel:call"]
+        if not said or not any(kind in INCOMING and node.get("name") == "triangulation"
+                               for kind, node in tops):
+            continue
+        name = said[-1].split("(")[0]
+        if len({c for c in said if c.split("(")[0] == name}) > 1:
+            found.append(f"play {k}: {said[-1]!r}")
+    return found
+
+
 def _result_rows() -> frozenset[str]:
     """The texts of the pseudocode rows that say a run's result (:data:`story.pseudocode.RESULT`)."""
     from story.pseudocode import RESULT
