@@ -172,12 +172,13 @@ def ending_beat(beat: B, pseudocode: Sequence[PseudocodeRow], triangles: int,
     0
     >>> split = Beat(caption="Split", seq=9, call="split(P, 0, 2) → [P, P]")
     >>> ending_beat(split, rows, 11, "divide_and_conquer(P, gravity)").call
-    'divide_and_conquer(P, gravity) → 11 triangles'
+    'divide_and_conquer(P, gravity) →\xa011\xa0triangles'
     >>> ending_beat(split, rows, 11).call
     'split(P, 0, 2) → [P, P]'
     """
     row = result_row(pseudocode)
-    call = beat.call if run_call is None else f"{run_call} → {triangles} triangles"
+    # the result kept on one line (no-break spaces): "→ 11" and "triangles" are one thing
+    call = beat.call if run_call is None else f"{run_call} →\u00a0{triangles}\u00a0triangles"
     return replace(beat, caption=whole_caption(triangles), pace=1.0,
                    row=beat.row if row is None else row, call=call)
 
