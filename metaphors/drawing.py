@@ -152,11 +152,15 @@ def whole_caption(triangles: int) -> str:
 B = TypeVar("B", bound=Beat)
 
 
-def ending_beat(beat: B, pseudocode: Sequence[PseudocodeRow], triangles: int) -> B:
+def ending_beat(beat: B, pseudocode: Sequence[PseudocodeRow], triangles: int,
+                run_call: str | None = None) -> B:
     """The beat of a run's ending, after its last step ``beat``: the whole triangulation's
     caption (:func:`whole_caption`), at full pace, and the pseudocode's row saying the result
     lit (:func:`story.pseudocode.result_row`), not the last step's row, which no longer says
-    what the picture shows; the last step's row if the listing has none.
+    what the picture shows; the last step's row if the listing has none. Its call line
+    likewise: the run's own call (``run_call``, :func:`story.storyboard.run_call`) with the
+    triangles it returns, not the last step's call (``split(P, 0, 2) → [P, P]`` under the
+    whole triangulation); the last step's if the run's call is not known.
 
     >>> from story.pseudocode import RESULT
     >>> rows = (PseudocodeRow("divide P along d", ("split",)),
@@ -166,10 +170,17 @@ def ending_beat(beat: B, pseudocode: Sequence[PseudocodeRow], triangles: int) ->
     ('The whole triangulation: 11 triangles', 1, 1.0)
     >>> ending_beat(Beat(caption="Split", seq=9, row=0), rows[:1], 11).row
     0
+    >>> split = Beat(caption="Split", seq=9, call="split(P, 0, 2) → [P, P]")
+    >>> ending_beat(split, rows, 11, "divide_and_conquer(P, gravity)").call
+    'divide_and_conquer(P, gravity) →\xa011\xa0triangles'
+    >>> ending_beat(split, rows, 11).call
+    'split(P, 0, 2) → [P, P]'
     """
     row = result_row(pseudocode)
+    # the result kept on one line (no-break spaces): "→ 11" and "triangles" are one thing
+    call = beat.call if run_call is None else f"{run_call} →\u00a0{triangles}\u00a0triangles"
     return replace(beat, caption=whole_caption(triangles), pace=1.0,
-                   row=beat.row if row is None else row)
+                   row=beat.row if row is None else row, call=call)
 
 
 def count_words(n: int, holes: int, triangles: int) -> str:

@@ -244,7 +244,7 @@ def _whole(board: Board, beat: Stack) -> None:
         board.keep("counter", count)
         shown.append(FadeIn(count))
     # under its own caption, at full pace, its result row lit: the last piece's words are over
-    board.play(ending_beat(beat, board.panel.pseudocode, len(whole)),
+    board.play(ending_beat(beat, board.panel.pseudocode, len(whole), board.panel.run_call),
                *board.drop(*tints), *[FadeIn(t) for t in whole], *shown,
                *board.clear_labels(*whole), run_time=1.2)
     board.scene.wait(1.0)
@@ -345,7 +345,7 @@ def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     yield walk.call_beat(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
                          key_step=kind in ("split", "merge"), roles={v: _kind_role(kind)},
                          vertex=v, kind=kind, at=point(walk.root_points()[v]))
-    walk.count_claim("vertex")  # after its beat: the beat belongs to the vertex it classifies
+    walk.count_claim("vertex", v)  # after its beat: the beat belongs to the vertex it classifies
 
 
 def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:

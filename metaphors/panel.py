@@ -107,6 +107,9 @@ class Panel:
         #: whether the call line shows each beat's real call: a programmer's render does, the
         #: lecture does not (issue 22: no code in the lecture; see TraceScene.call_line)
         self.shows_calls = True
+        #: the run's own call, without its result: the call line of the run's ending says it
+        #: with the result (metaphors.drawing.ending_beat); None: not known
+        self.run_call: str | None = None
         self.roles: dict[str, str] = {}
 
     def show_code(self, code) -> None:

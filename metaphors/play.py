@@ -20,7 +20,7 @@ from metaphors.recorded import Recorded, captions_of, mark_step
 from story.beats import Beat, ShowPolygon
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
-from story.storyboard import spoken_pseudocode
+from story.storyboard import run_call, spoken_pseudocode
 from tracing import Log
 
 #: widest title (scene units) before it is shrunk to fit the frame
@@ -47,6 +47,7 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded))
     board.panel.shows_calls = scene.call_line
+    board.panel.run_call = run_call(log)
     code = log.meta.get("code")
     rows = spoken_pseudocode(log)
     if scene.panel == PSEUDOCODE and rows:

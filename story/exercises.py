@@ -82,14 +82,21 @@ MIN_CLEARANCE = 0.045
 #: screen, its labels crowded (the lecture polygon's rule, issue 22 item 5)
 MIN_ANGLE = 15.0
 
+#: each rule's story as a reason tells it: its lead, what its number means at the pick (the
+#: ``{v}`` in it), and the number's form; the other candidates come after it as "E at 3.6"
 _STORY = {
-    "scaling": ("the water spilled at B reaches", "distance ", "{:.1f}"),
-    "rotation": ("the clock hand at B, set to A, passes", "after ", "{:.1f}°"),
-    "rotation-ccw": ("the clock hand at B, set to C, turning back, passes", "after ", "{:.1f}°"),
-    "rotation-correct": ("the clock hand at C, set to B, passes", "after ", "{:.1f}°"),
-    "translation": ("the vertical line swept rightwards from B reaches", "after ", "{:.1f}"),
-    "translation-correct": ("the line parallel to AC, swept from B, reaches", "after ", "{:.1f}"),
-    "scaling-correct": ("the water rising from the shore AC wets", "height ", "{:.1f}"),
+    "scaling": ("the water spilled at B reaches", "{v} from B", "{:.1f}"),
+    "rotation": ("the clock hand at B, set to A, passes", "after turning {v}", "{:.1f}°"),
+    "rotation-ccw": ("the clock hand at B, set to C, turning back, passes",
+                     "after turning {v}", "{:.1f}°"),
+    "rotation-correct": ("the clock hand at C, set to B, passes", "after turning {v}",
+                         "{:.1f}°"),
+    "translation": ("the vertical line swept rightwards from B reaches", "{v} right of B",
+                    "{:.1f}"),
+    "translation-correct": ("the line parallel to AC, swept from B, reaches",
+                            "{v} from B", "{:.1f}"),
+    "scaling-correct": ("the water rising from the shore AC wets", "at height {v} above AC",
+                        "{:.1f}"),
 }
 #: Heuristics that pick a candidate of T by a rule a student can apply by hand: those whose
 #: metaphor's story is told above, in the registry's order.
@@ -287,21 +294,23 @@ def _reached(polygon: Polygon, heuristic: str) -> tuple[int, list[tuple[str, flo
 
 
 def _pick_reason(heuristic: str, steps: list[tuple[str, float]]) -> str | None:
-    """"the water spilled at B reaches D (distance 2.8) before E (3.6)"; None when the
-    deciding two values would print alike (the tie rule would be the real reason)."""
-    lead, unit, fmt = _STORY[heuristic]
+    """"the water spilled at B reaches D first: 2.8 from B, before E at 3.6" (each number
+    said with what it measures); None when the deciding two values would print alike (the
+    tie rule would be the real reason)."""
+    lead, measure, fmt = _STORY[heuristic]
     shown = [(label, fmt.format(value)) for label, value in steps]
     if heuristic == "scaling-correct":  # the last candidate reached is the pick
         if shown[-1][1] == shown[-2][1]:
             return None
-        wet = [f"{label} ({unit if k == 0 else ''}{v})" for k, (label, v) in enumerate(shown[:-1])]
+        wet = [f"{label} {measure.format(v=v) if k == 0 else f'at {v}'}"
+               for k, (label, v) in enumerate(shown[:-1])]
         last, v = shown[-1]
-        return f"{lead} {_and(wet)} before {last} ({v}), so {last} stays dry longest"
+        return f"{lead} {_and(wet)} before {last} at {v}, so {last} stays dry longest"
     if shown[0][1] == shown[1][1]:
         return None
     (first, v), rest = shown[0], shown[1:]
-    others = _and([f"{label} ({value})" for label, value in rest])
-    return f"{lead} {first} ({unit}{v}) before {others}"
+    others = _and([f"{label} at {value}" for label, value in rest])
+    return f"{lead} {first} first: {measure.format(v=v)}, before {others}"
 
 
 def _off_line(q: Point, u: Point, v: Point) -> float:

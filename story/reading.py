@@ -17,8 +17,9 @@ caption does not flash.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import replace
+from types import MappingProxyType
 from typing import Any, cast
 
 from story.beats import Beat, Candidates, Pick, ShowPolygon, ShowTriangle, Verdict
@@ -49,7 +50,9 @@ def readable(caption: str, seconds: float) -> bool:
 
 
 def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: str,
-               kept: Sequence[bool] = (), numbers: Sequence[int] = ()) -> list[Beat]:
+               kept: Sequence[bool] = (), numbers: Sequence[int] = (),
+               names: Mapping[int, str] = MappingProxyType({}),
+               order: Sequence[str] = ()) -> list[Beat]:
     """The beats with the captions of repeated claims replaced by summaries.
 
     ``claims[k]`` is how many claims were counted when beat ``k`` was made (beat ``k``
@@ -61,6 +64,9 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
     each its own step). ``numbers[k]``: how many claims of ``noun`` were counted when beat
     ``k`` was made, the numbers the summary says (default ``claims``: a run whose claims
     are all ``noun``s; prune and search counts its diagonals too, not as slices).
+    ``names[c]``: the label on screen of claim ``c`` (a vertex's letter): a summary whose
+    claims all have one names them by it (:func:`_named_summary`, ``order`` the labels'
+    order a range means), for the picture never shows their numbers.
 
     A summary covers one unbroken run of fast beats (:func:`_fast_runs`): a key step ends
     it, and the fast beats after it get a summary of their own that names only the claims
@@ -75,6 +81,9 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
     >>> [b.caption for b in summarised(beats, [0, 1, 1, 2, 3, 3, 4, 5], 1, "vertex",
     ...                                [False, False, False, True, False, False, False, False])]
     ['step 0', 'Vertex 2: the same steps, faster', 'Vertex 2: the same steps, faster', 'step 3', 'Vertices 4–5: the same steps, faster', 'Vertices 4–5: the same steps, faster', 'Vertices 4–5: the same steps, faster', 'step 7']
+    >>> [b.caption for b in summarised(beats[:6], [0, 1, 2, 3, 4, 5], 1, "vertex",
+    ...                                names={2: "H", 3: "B", 4: "G", 5: "F"})][1]
+    'Vertices H, B, G and F: the same steps, faster'
     """
     if not beats:
         return []
@@ -84,8 +93,11 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
         if len(run) < 2:
             continue  # one beat: its own caption says more than a summary of it
         first, last = said[run[0]] + 1, said[run[-1]] + 1
+        labels = [names.get(c) for c in range(first, last + 1)]
+        caption = (_named_summary(noun, cast(list[str], labels), order)
+                   if names and None not in labels else _summary(noun, first, last))
         for k in run:
-            out[k] = replace(beats[k], caption=_summary(noun, first, last))
+            out[k] = replace(beats[k], caption=caption)
     return out
 
 
@@ -118,6 +130,25 @@ def _summary(noun: str, first: int, last: int) -> str:
     if first == last:
         return f"{noun.capitalize()} {first}: the same steps, faster"
     return f"{_PLURALS.get(noun, noun + 's').capitalize()} {first}–{last}: the same steps, faster"
+
+
+def _named_summary(noun: str, labels: list[str], order: Sequence[str]) -> str:
+    """The summary of claims named by their labels on screen, in the order they came: a
+    range when they follow one another in ``order`` (the polygon's labels), else a list.
+
+    >>> _named_summary("vertex", ["H", "I", "J"], "ABCDEFGHIJ")
+    'Vertices H–J: the same steps, faster'
+    >>> _named_summary("vertex", ["E", "C"], "ABCDE")
+    'Vertices E and C: the same steps, faster'
+    """
+    if len(labels) == 1:
+        return f"{noun.capitalize()} {labels[0]}: the same steps, faster"
+    plural = _PLURALS.get(noun, noun + "s").capitalize()
+    at = [list(order).index(x) if x in order else -1 for x in labels]
+    if len(labels) > 2 and -1 not in at and at == list(range(at[0], at[0] + len(at))):
+        return f"{plural} {labels[0]}–{labels[-1]}: the same steps, faster"
+    listed = f"{', '.join(labels[:-1])} and {labels[-1]}"
+    return f"{plural} {listed}: the same steps, faster"
 
 
 def frame_key(beats: Sequence[Beat]) -> tuple[tuple[Any, ...], tuple[Any, ...], tuple[str, ...]] | None:

@@ -151,6 +151,19 @@ def call_line(call: Event, ret: Event | None) -> str:
     return f"{text} → {_shown_result(ret.result)}" if ret is not None else text
 
 
+def run_call(log: Log) -> str | None:
+    """The run's own call (the log's first traced call) as the call line writes it, without
+    its result: what the call line says at the run's end, with the result the picture shows
+    (:func:`metaphors.drawing.ending_beat`). None for a log with no call.
+
+    >>> from story.runs import run_logged
+    >>> run_call(run_logged("divide-and-conquer", "counterexample", "gravity"))
+    'divide_and_conquer(P, gravity)'
+    """
+    first = next((e for e in log.events if e.kind == "call"), None)
+    return call_line(first, None) if first is not None else None
+
+
 def _shown_result(value: Any) -> str:
     """A result as the call line writes it (:func:`show`); a list of more than two lists
     (a piece's triangles) by its first two and an ellipsis: the whole would take four lines
@@ -211,6 +224,9 @@ class Walk:
         # id of each beat made → claims of each noun counted by then: a summary numbers its
         # beats by the claims it names (prune and search claims diagonals between slices)
         self.counted_of: dict[int, dict[str, int]] = {}
+        # noun → claim number → the label on screen of the claim (a vertex classified): a
+        # summary names such claims by their labels, not by numbers the picture never shows
+        self.named: dict[str, dict[int, str]] = {}
         self.kept: set[int] = set()  # ids of the key steps: never fast, never summarised
         self.heuristic_polygon: list[str] = []
         self.shown_polygon = False
@@ -300,12 +316,16 @@ class Walk:
         self.lit = row
         return row
 
-    def count_claim(self, noun: str = "diagonal") -> None:
+    def count_claim(self, noun: str = "diagonal", label: str | None = None) -> None:
         """One more claim (a ``noun``: a diagonal, a slice) made: after ``pacing.full`` of
-        them the beats go faster, under summary captions (:func:`story.reading.summarised`)."""
+        them the beats go faster, under summary captions (:func:`story.reading.summarised`).
+        ``label``: the claim's label on screen (a vertex's letter), which a summary then says
+        instead of the claim's number."""
         self.claims += 1
         self.noun = noun
         self.of_noun[noun] = self.of_noun.get(noun, 0) + 1
+        if label is not None:
+            self.named.setdefault(noun, {})[self.of_noun[noun]] = label
 
     def pace(self) -> float:
         return 1.0 if self.claims < self.pacing.full else self.pacing.fast
@@ -451,7 +471,14 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
         walk.track(event)
     return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
                       walk.noun, kept=[id(b) in walk.kept for b in beats],
-                      numbers=[walk.counted_of.get(id(b), {}).get(walk.noun, 0) for b in beats])
+                      numbers=[walk.counted_of.get(id(b), {}).get(walk.noun, 0) for b in beats],
+                      names=walk.named.get(walk.noun, {}), order=_root_labels(log))
+
+
+def _root_labels(log: Log) -> tuple[str, ...]:
+    """The labels of the log's first polygon, in its order (the order a range of them means)."""
+    return tuple(next((state_of(e)["labels"] for e in log.events
+                       if e.kind == "enter" and is_polygon_key(e.target)), ()))
 
 
 def _boxed(walk: Walk, beats: list[Beat]) -> list[Beat]:

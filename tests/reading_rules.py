@@ -569,6 +569,34 @@ def stale_endings(data: dict) -> list[str]:
     return found
 
 
+def _call_text(node: dict) -> str:
+    """The words of a call line's node (its lines' texts, joined)."""
+    return " ".join(t for part in mobject_nodes(node) if (t := part.get("text", "").strip()))
+
+
+def stale_call_lines(data: dict) -> list[str]:
+    """The plays that draw a run's whole triangulation while the panel's call line is a step's
+    call, as ``"play 177: 'split(P, 3, 1) → [P, P]'"``: the call line on screen then (the
+    last one brought in since the run's polygon was drawn) is of a function the run called
+    with other call lines too (a split, a piece's triangles), where the run's own call, made
+    once, says what the picture shows (``divide_and_conquer(P, gravity) → 11 triangles``)."""
+    found = []
+    said: list[str] = []
+    for k, play in enumerate(data["plays"]):
+        tops = [(a["type"], a.get("mobject") or {}) for a in play["animations"]]
+        if any(kind in INCOMING and node.get("name") == "polygon" for kind, node in tops):
+            said = []
+        said += [_call_text(node) for kind, node in tops
+                 if kind in INCOMING and node.get("name") == "panel:call"]
+        if not said or not any(kind in INCOMING and node.get("name") == "triangulation"
+                               for kind, node in tops):
+            continue
+        name = said[-1].split("(")[0]
+        if len({c for c in said if c.split("(")[0] == name}) > 1:
+            found.append(f"play {k}: {said[-1]!r}")
+    return found
+
+
 def _result_rows() -> frozenset[str]:
     """The texts of the pseudocode rows that say a run's result (:data:`story.pseudocode.RESULT`)."""
     from story.pseudocode import RESULT
@@ -736,6 +764,9 @@ def crowded_verdicts(data: dict) -> list[str]:
 
 #: a summary caption of beats played fast (story.reading.summarised): its first and last claim
 _SUMMARY = re.compile(r"^\w+ (\d+)(?:–(\d+))?: the same steps, faster$")
+#: a summary naming its claims by their labels on screen (the monotone sweep's vertices):
+#: ``"Vertices H, B, G and F: …"``, ``"Vertices H–K: …"``, ``"Vertex H: …"``
+_NAMED_SUMMARY = re.compile(r"^(?:Vertex|Vertices) (.+): the same steps, faster$")
 
 
 def _claims_made(play: dict, made: int) -> int:
@@ -753,38 +784,74 @@ def _claims_made(play: dict, made: int) -> int:
     return made
 
 
-def _summary_spans(data: dict) -> Iterator[tuple[int, str, set[int]]]:
-    """Each subtitle said in a run, as ``(run, caption, claims)``: the run it is said in (a new
-    one begins where a polygon is drawn) and the claims whose marks appear while it is up."""
-    run, made, caption, claims = 0, 0, None, set()
+def _classified(play: dict) -> list[str]:
+    """The vertices a play shows the kind of (the monotone sweep: a kind comes in beside the
+    vertex it indicates), by their labels."""
+    names = [(a["type"], (a.get("mobject") or {}).get("name") or "") for a in play["animations"]]
+    if not any(kind in INCOMING and name == "kind" for kind, name in names):
+        return []
+    return [name.removeprefix("vertex:") for kind, name in names
+            if kind == "Indicate" and name.startswith("vertex:")]
+
+
+def _summary_spans(data: dict) -> Iterator[tuple[int, str, set[int], list[str]]]:
+    """Each subtitle said in a run, as ``(run, caption, claims, vertices)``: the run it is said
+    in (a new one begins where a polygon is drawn), the claims whose marks appear while it is
+    up, and the labels of the vertices classified meanwhile, in order."""
+    run, made, caption, claims, vertices = 0, 0, None, set(), []
     for play in data["plays"]:
         if any(a["type"] in INCOMING and (a.get("mobject") or {}).get("name") == "polygon"
                for a in play["animations"]):
             if caption is not None:
-                yield run, caption, claims
-            run, made, caption, claims = run + 1, 0, None, set()
+                yield run, caption, claims, vertices
+            run, made, caption, claims, vertices = run + 1, 0, None, set(), []
         said = play.get("subcaption")
         if said and said != caption:
             if caption is not None:
-                yield run, caption, claims
-            caption, claims = said, set()
+                yield run, caption, claims, vertices
+            caption, claims, vertices = said, set(), []
         now = _claims_made(play, made)
         claims |= set(range(made + 1, now + 1))
+        vertices += _classified(play)
         made = now
     if caption is not None:
-        yield run, caption, claims
+        yield run, caption, claims, vertices
+
+
+def _named(listed: str) -> list[str]:
+    """The labels a named summary lists: ``"H, B, G and F"`` → ``["H", "B", "G", "F"]``; a
+    range ``"H–K"`` stays one item (its ends checked by the caller)."""
+    return [x for x in re.split(r", | and ", listed) if x]
 
 
 def broken_summaries(data: dict) -> list[str]:
     """Issue 22 item 5: the summary captions (``"Vertices 3–7: the same steps, faster"``) that
     come back in their run after another caption (a key step must end a summary, not
     interrupt it), or whose range is not the claims made while they are up, as
-    ``"'Vertices 3–7: …' again"`` or ``"'Vertices 3–7: …' over 3–4"``."""
+    ``"'Diagonals 3–7: …' again"`` or ``"'Diagonals 3–7: …' over 3–4"``. A summary of vertices
+    names them by their labels, the vertices classified while it is up (``"'Vertices H and
+    B: …' over H, B, G"``); one that numbers them names what the picture never shows."""
     found = []
     said: set[tuple[int, str]] = set()
-    for run, caption, claims in _summary_spans(data):
+    for run, caption, claims, vertices in _summary_spans(data):
+        if (named := _NAMED_SUMMARY.match(caption)) is not None and (
+                _SUMMARY.match(caption) is None):
+            if (run, caption) in said:
+                found.append(f"{caption!r} again")
+            said.add((run, caption))
+            listed = _named(named[1])
+            ends = listed[0].split("–") if len(listed) == 1 else listed
+            if len(ends) == 2 and len(listed) == 1:  # a range: its ends, and at least three
+                ok = len(vertices) > 2 and [vertices[0], vertices[-1]] == ends
+            else:
+                ok = listed == vertices
+            if not ok:
+                found.append(f"{caption!r} over {', '.join(vertices) or 'nothing'}")
+            continue
         if (m := _SUMMARY.match(caption)) is None:
             continue
+        if m[0].startswith("Vert"):  # the picture shows a vertex by its label, never a number
+            found.append(f"{caption!r} numbers vertices")
         if (run, caption) in said:
             found.append(f"{caption!r} again")
         said.add((run, caption))

@@ -40,6 +40,35 @@ def entries(markdown: str) -> list[tuple]:
     return found
 
 
+#: what a pick's reason says a number is: the distance from B, the angle turned, the height
+#: above AC, or another candidate's value on the same scale ("before E at 3.6")
+_MEANT = re.compile(r"(?:\d+\.\d(?:°| from B| right of B| above AC))|(?:(?:turning|height|at) \d+\.\d°?)")
+
+
+def said_numbers(reason: str) -> list[str]:
+    """The numbers of a reason said without what they measure (issue 22: "after 15.1 … (25.5)"
+    gave a class figures with no meaning): each must come with its unit or its scale."""
+    bare = _MEANT.sub("", reason)
+    return re.findall(r"\d+(?:\.\d+)?", bare)
+
+
+def test_a_picks_reason_says_what_its_numbers_are():
+    from story.exercises import _pick_reason
+
+    steps = [("D", 15.12), ("E", 25.54), ("F", 30.0)]
+    said = {h: _pick_reason(h, steps) for h in PICKABLE}
+    assert said["scaling"] == "the water spilled at B reaches D first: 15.1 from B, before E " \
+        "at 25.5 and F at 30.0"
+    assert said["rotation"] == "the clock hand at B, set to A, passes D first: after turning " \
+        "15.1°, before E at 25.5° and F at 30.0°"
+    assert said["scaling-correct"] == "the water rising from the shore AC wets D at height " \
+        "15.1 above AC and E at 25.5 before F at 30.0, so F stays dry longest"
+    assert all(said_numbers(r) == [] for r in said.values()), said
+    # the rule fails on the old reasons, numbers in brackets with no meaning
+    assert said_numbers("the line parallel to AC, swept from B, reaches E (after 15.1) before "
+                        "D (25.5)") == ["15.1", "25.5"]
+
+
 def _index(polygon, label: str) -> int:
     return polygon.labels.index(label)
 
@@ -55,7 +84,9 @@ def check_entry(number, question, spec, picture, answer, reason) -> str:
         assert heuristic in PICKABLE
         claim = find_diagonal(p, heuristic)
         assert claim.u.label == "B" and answer == claim.v.label
-        assert f" {answer} (" in reason  # the reason quotes the winner's number
+        assert (f" {answer} first: " in reason  # the reason says the winner's number first
+                or reason.endswith(f"so {answer} stays dry longest"))
+        assert said_numbers(reason) == [], reason
         return "pick"
     if m := re.fullmatch(r"Is the claim of (.+) an inner diagonal\?", question):
         heuristic = BY_SPOKEN[m[1]]

@@ -66,6 +66,7 @@ from tests.reading_rules import (
     replayed_beats,
     shapes_under_text,
     small_texts,
+    stale_call_lines,
     stale_endings,
     stale_lit_rows,
     unreadable_cues,
@@ -259,6 +260,8 @@ def test_the_whole_triangulation_comes_under_its_own_caption(case):
     assert stale_endings(graph(case).data) == [], case.id
     # nor its lit pseudocode row: the row saying the result ("their union is …") is lit
     assert stale_lit_rows(graph(case).data) == [], case.id
+    # nor its call line: the run's own call with its result, not the last split's
+    assert stale_call_lines(graph(case).data) == [], case.id
     # and no ✓ or ✗ of a step is left over on it
     assert leftover_verdicts(graph(case).data) == [], case.id
 

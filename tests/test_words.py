@@ -106,3 +106,43 @@ def test_the_call_line_is_left_out_only_when_allowed():
         "cues": []}
     assert unspoken_words(data, call_line=True) == []
     assert unspoken_words(data) == ["code: 'nearest_to(B, [D, E]) → D'"]
+
+
+# --- a summary of fast beats names the vertices by their labels, as the picture shows them ---
+
+
+def _classifying(caption: str, *labels: str) -> list[dict]:
+    """Plays of the monotone sweep under one caption: each shows a vertex's kind."""
+    return [{"subcaption": caption, "animations": [
+        {"type": "FadeIn", "mobject": {"name": "kind", "text": "regular"}},
+        {"type": "Indicate", "mobject": {"name": f"vertex:{v}"}}]} for v in labels]
+
+
+def test_a_summary_of_the_sweep_names_its_vertices_by_their_labels():
+    """Chapter 5's monotone run: the fast-forwarded vertices are named by the letters on
+    screen, in the order the sweep meets them ("Vertices 7–10" numbered what is never shown)."""
+    from metaphors.catalog import beats
+    from story.runs import run_logged
+
+    log = run_logged("monotone", "lecture")
+    labels = set(next(b.labels for b in beats(log) if b.action == "polygon"))
+    summaries = list(dict.fromkeys(b.caption for b in beats(log)
+                                   if b.caption.endswith("the same steps, faster")))
+    assert summaries == ["Vertices H, B, G and F: the same steps, faster",
+                         "Vertices E and C: the same steps, faster"]
+    for caption in summaries:
+        named = caption.removeprefix("Vertices ").split(":")[0].replace(" and ", ", ")
+        assert not any(c.isdigit() for c in named) and set(named.split(", ")) <= labels
+
+
+def test_the_summary_rule_finds_vertices_numbered_or_named_wrong():
+    from tests.reading_rules import broken_summaries
+
+    numbered = {"plays": _classifying("Vertices 1–2: the same steps, faster", "H", "B")}
+    assert broken_summaries(numbered) == [
+        "'Vertices 1–2: the same steps, faster' numbers vertices"]
+    wrong = {"plays": _classifying("Vertices H and C: the same steps, faster", "H", "B")}
+    assert broken_summaries(wrong) == ["'Vertices H and C: the same steps, faster' over H, B"]
+    fine = {"plays": [*_classifying("Vertices H, B and G: the same steps, faster", "H", "B", "G"),
+                      *_classifying("Vertices I–K: the same steps, faster", "I", "J", "K")]}
+    assert broken_summaries(fine) == []
