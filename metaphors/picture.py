@@ -81,8 +81,8 @@ TRANSIENT = ("ball", "band", "hit", "gravity")
 def upright(board: Board, beat: Beat) -> None:
     """After a verdict: the turn's objects go and the picture turns back upright."""
     gone = board.drop(*TRANSIENT)
-    if gone:
-        again(board, beat, *gone, run_time=0.5)
+    if gone:  # the labels moved off the ball's way come back with it gone
+        again(board, beat, *gone, *board.labels_back(), run_time=0.5)
     turn = turn_to(board, 0.0)
     if turn:
         again(board, beat, *turn, run_time=1.5)

@@ -1365,3 +1365,55 @@ def ticks_outside(data: dict) -> list[str]:
             reach = max(region.distance(Point(p)) for p in shape.exterior.coords)
             found.append(f"play {k} {tick['name']}: {reach:.2f} outside P")
     return found
+
+
+# --- issue 22: the ball's fall is seen, no label under it -------------------------------------
+
+#: the least gap (scene units) a vertex label keeps from the hit ring and from the ball's path
+FALL_GAP = 0.08
+#: the ball's radius (:func:`metaphors.gravity._ball`): its path is that wide either side
+BALL_RADIUS = 0.12
+
+
+def labels_under_the_fall(data: dict) -> list[str]:
+    """The vertex labels within :data:`FALL_GAP` of gravity's hit ring, or of the ball's path
+    down to it, while the ring is up, as ``"play 14 E under the fall"``: a label the ring
+    circles hides where the ball hit, the decisive moment. The path is the band's straight
+    drop (its shape when the ring comes in), as wide as the ball and cut square at V (V's own
+    label stands beside the ball hanging there); a label counts where it was recorded since
+    the last turn (a turn records where it starts)."""
+    from shapely.geometry import LineString, Point
+    from shapely.geometry import box as rectangle
+
+    fresh: dict[str, tuple[float, float, float, float]] = {}
+    band: list = []
+    fall = None
+    found: dict[str, str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim.get("type") == "Turn" or (anim.get("type") in INCOMING
+                                              and node.get("name") in _POLYGONS):
+                fresh = {}
+                continue
+            for key in ("mobject", "target"):
+                part = anim.get(key) or {}
+                fresh.update(dict(_named_label_boxes(part)))
+                if part.get("name") == "band" and part.get("points"):
+                    band = part["points"]
+            if node.get("name") == "hit" and node.get("points"):
+                if anim.get("type") in OUTGOING:
+                    fall = None
+                elif anim.get("type") in INCOMING:
+                    pts = [p[:2] for p in node["points"]]
+                    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+                    centre = ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
+                    ring = Point(centre).buffer((max(xs) - min(xs)) / 2)
+                    path = (LineString([band[0][:2], band[-1][:2]]).buffer(BALL_RADIUS, cap_style=2)
+                            if len(band) >= 2 and band[0][:2] != band[-1][:2] else ring)
+                    fall = ring.union(path)
+        if fall is not None:
+            for v, box in fresh.items():
+                if fall.distance(rectangle(*box)) < FALL_GAP:
+                    found.setdefault(v, f"play {k} {v} under the fall")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
