@@ -59,6 +59,7 @@ from tests.reading_rules import (
     graph_nodes,
     hidden_failures,
     labels_under_faces,
+    labels_under_test_triangles,
     labels_under_the_fall,
     labels_under_tools,
     leftover_verdicts,
@@ -403,6 +404,15 @@ def test_no_label_is_under_the_balls_fall(case):
     """Issue 22: gravity's decisive moment is seen: no vertex label under the hit ring or
     the ball's path to it (on the counterexample E's label sat where the ball hit)."""
     assert labels_under_the_fall(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_label_is_left_on_a_red_test_triangle(case):
+    """Issue 22: ear clipping's red "not an ear" triangle lies over no vertex label (a red
+    label on it, over the fruit's orange, was hard to read; its edge crossed the keyhole's
+    c₂), but for a label it cannot keep off (its vertex inside it), which is on a dark card;
+    its edges cross no label (:func:`crossed_vertex_labels` follows it too)."""
+    assert labels_under_test_triangles(graph(case).data) == [], case.id
 
 
 def test_no_label_is_under_the_balls_fall_on_the_counterexample():
