@@ -159,7 +159,8 @@ def covering(corners: Sequence[np.ndarray]) -> VGroup:
     a, b, c = (np.asarray(p, dtype=float) for p in corners)
     lines = VGroup(*[Line(p, q) for p, q in ((a, b), (b, c), (c, a))])
     u = c - b
-    height = abs(float(np.cross(u[:2], (a - b)[:2]))) / max(float(np.linalg.norm(u[:2])), 1e-9)
+    w = a - b
+    height = abs(float(u[0] * w[1] - u[1] * w[0])) / max(float(np.linalg.norm(u[:2])), 1e-9)
     n = max(1, math.ceil(height / HATCH))
     lines.add(*[Line(a + (b - a) * k / n, a + (c - a) * k / n) for k in range(1, n)])
     return lines
