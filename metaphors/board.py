@@ -82,8 +82,9 @@ class Board:
         self.outgoing: Mobject | None = None
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
-        # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood
-        self.moved_for_now: dict[str, np.ndarray] = {}
+        # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood,
+        # in the polygon's coordinates
+        self.moved_for_now: dict[str, tuple[float, float]] = {}
 
     # --- coordinates -----------------------------------------------------------------------------
 
@@ -228,8 +229,9 @@ class Board:
                                             [edge for line in lines for edge in _edges(line)],
                                             self.theme.dot_radius).items():
             moved = self.markers[label].copy()
-            if for_now:
-                self.moved_for_now.setdefault(label, self.markers[label][1].get_center())
+            if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
+                self.moved_for_now.setdefault(
+                    label, _from_scene(self.frame, self.markers[label][1].get_center()))
             moved[1].move_to((centre[0], centre[1], 0.0))
             # a move for now is an ``animate`` (it is undone), a lasting one a Transform
             moves.append(animate(self.markers[label]).become(moved) if for_now
@@ -238,11 +240,12 @@ class Board:
 
     def labels_back(self) -> list[Playable]:
         """The moves putting the labels moved aside ``for_now`` (:meth:`clear_labels`) back
-        where they stood (the picture has not turned since)."""
+        where they stood, or where they would stand had they not moved (the picture turned
+        since: they turn with it)."""
         moves: list[Playable] = []
-        for label, centre in sorted(self.moved_for_now.items()):
+        for label, place in sorted(self.moved_for_now.items()):
             back = self.markers[label].copy()
-            back[1].move_to(centre)
+            back[1].move_to(self.at(place))
             moves.append(animate(self.markers[label]).become(back))
         self.moved_for_now = {}
         return moves
@@ -250,6 +253,17 @@ class Board:
     def drop(self, *keys: str) -> list[FadeOut]:
         """Fade-outs for remembered objects."""
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
+
+
+def _from_scene(frame: Frame, q: np.ndarray) -> tuple[float, float]:
+    """The polygon-coordinate point that ``frame`` puts at scene point ``q``
+    (:meth:`Frame.to_scene` undone)."""
+    t = np.radians(frame.angle)
+    c, s = np.cos(t), np.sin(t)
+    dx, dy = (np.asarray(q, dtype=float) - frame.pivot)[:2] / frame.zoom
+    at = frame.pivot[:2] + np.array([c * dx + s * dy, -s * dx + c * dy])
+    p = (at - frame.center[:2]) / frame.base_scale + frame.mid
+    return float(p[0]), float(p[1])
 
 
 def _area(ring: Sequence[Sequence[float]]) -> float:

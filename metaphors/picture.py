@@ -81,8 +81,11 @@ TRANSIENT = ("ball", "band", "hit", "gravity")
 def upright(board: Board, beat: Beat) -> None:
     """After a verdict: the turn's objects go and the picture turns back upright."""
     gone = board.drop(*TRANSIENT)
-    if gone:  # the labels moved off the ball's way come back with it gone
-        again(board, beat, *gone, *board.labels_back(), run_time=0.5)
+    if gone:
+        again(board, beat, *gone, run_time=0.5)
     turn = turn_to(board, 0.0)
     if turn:
         again(board, beat, *turn, run_time=1.5)
+    back = board.labels_back()  # the labels moved off the ball's way, once it is upright
+    if back:
+        again(board, beat, *back, run_time=0.4)
