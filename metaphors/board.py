@@ -82,6 +82,9 @@ class Board:
         self.outgoing: Mobject | None = None
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
+        # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood,
+        # in the polygon's coordinates
+        self.moved_for_now: dict[str, tuple[float, float]] = {}
 
     # --- coordinates -----------------------------------------------------------------------------
 
@@ -210,30 +213,59 @@ class Board:
         rings = [list(path[:-1:4]) for path in paths]
         return sorted(rings, key=lambda ring: -abs(_area([p[:2] for p in ring])))
 
-    def clear_labels(self, *lines: Mobject) -> list[Animation]:
+    def clear_labels(self, *lines: Mobject, for_now: bool = False) -> list[Playable]:
         """The moves, to play with ``lines`` (about to be drawn: a diagonal, a cut, the
         triangles of a triangulation), of the vertex labels they would cross: each to a clear
         place beside its vertex, measured against the outline's edges, the lines and
         triangles drawn and the other labels (:func:`metaphors.labels.crossed_labels`); a
         label the lines keep clear of stays. A move transforms the whole marker, so
-        :meth:`play` recolours it after the play."""
+        :meth:`play` recolours it after the play. ``for_now``: the lines go again soon (the
+        ball's fall), and :meth:`labels_back` puts the labels back where they stood."""
         rings = [list(self.polygon.labels), *(list(h.labels) for h in self.holes)]
         drawn = [(ring[k], ring[(k + 1) % len(ring)]) for ring in self.outline_rings()
                  for k in range(len(ring))]
         drawn += [edge for m in self.objects.values() if m not in lines for edge in _edges(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
-        moves: list[Animation] = []
+        moves: list[Playable] = []
         for label, centre in crossed_labels(rings, markers, drawn,
                                             [edge for line in lines for edge in _edges(line)],
                                             self.theme.dot_radius).items():
             moved = self.markers[label].copy()
+            if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
+                self.moved_for_now.setdefault(
+                    label, _from_scene(self.frame, self.markers[label][1].get_center()))
             moved[1].move_to((centre[0], centre[1], 0.0))
-            moves.append(Transform(self.markers[label], moved))
+            # a move for now is an ``animate`` (it is undone), a lasting one a Transform
+            moves.append(animate(self.markers[label]).become(moved) if for_now
+                         else Transform(self.markers[label], moved))
+        return moves
+
+    def labels_back(self) -> list[Playable]:
+        """The moves putting the labels moved aside ``for_now`` (:meth:`clear_labels`) back
+        where they stood, or where they would stand had they not moved (the picture turned
+        since: they turn with it)."""
+        moves: list[Playable] = []
+        for label, place in sorted(self.moved_for_now.items()):
+            back = self.markers[label].copy()
+            back[1].move_to(self.at(place))
+            moves.append(animate(self.markers[label]).become(back))
+        self.moved_for_now = {}
         return moves
 
     def drop(self, *keys: str) -> list[FadeOut]:
         """Fade-outs for remembered objects."""
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
+
+
+def _from_scene(frame: Frame, q: np.ndarray) -> tuple[float, float]:
+    """The polygon-coordinate point that ``frame`` puts at scene point ``q``
+    (:meth:`Frame.to_scene` undone)."""
+    t = np.radians(frame.angle)
+    c, s = np.cos(t), np.sin(t)
+    dx, dy = (np.asarray(q, dtype=float) - frame.pivot)[:2] / frame.zoom
+    at = frame.pivot[:2] + np.array([c * dx + s * dy, -s * dx + c * dy])
+    p = (at - frame.center[:2]) / frame.base_scale + frame.mid
+    return float(p[0]), float(p[1])
 
 
 def _area(ring: Sequence[Sequence[float]]) -> float:

@@ -10,6 +10,7 @@ import math
 from collections.abc import Iterator, Mapping, Sequence
 from typing import Any
 
+import numpy as np
 from manim import (
     Create,
     Ellipse,
@@ -19,6 +20,7 @@ from manim import (
     Line,
     Mobject,
     Polygram,
+    Rectangle,
     Transform,
     VGroup,
 )
@@ -28,8 +30,10 @@ from manim import (
 
 from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
-from metaphors.board import Board
+from metaphors.board import Board, Playable
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
+from metaphors.labels import MARGIN
+from metaphors.layout import Obstacles, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
@@ -112,8 +116,16 @@ def ear_test(board: Board, beat: EarTest) -> None:
     _setup(board, beat)
     theme = board.theme
     colour = theme.result if beat.ear else theme.rejected
-    anims = [*board.drop("ear-triangle"),
-             Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
+    gone = board.drop(*_TEST)
+    if beat.triangle:
+        # the labels the red triangle would lie over move clear of it first (a pulse and a
+        # move of one marker in one play would cancel): a label on its red over the fruit's
+        # orange was hard to read, and its edge ran through the keyhole's c₂
+        moves = board.clear_labels(covering([board.at(p) for p in beat.triangle]))
+        if moves:
+            board.scene.play(*gone, *moves, run_time=max(0.1, 0.4 * beat.pace))
+            gone = []
+    anims: list[Playable] = [*gone, Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
     if beat.triangle:
         outline = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.rejected,
                                stroke_width=theme.stroke * 1.5, stroke_opacity=0,
@@ -123,12 +135,61 @@ def ear_test(board: Board, beat: EarTest) -> None:
         # under the vertices and their labels: the vertex inside it is what the caption
         # names ("G lies in its triangle"), and a fade-in would put the triangle over it
         board.scene.add(outline)
+        backing = _backing(board, covering(outline.get_vertices()))
+        if backing is not None:  # a label left on the red (its vertex inside): a dark card
+            board.keep("ear-backing", backing)
+            board.scene.add(backing)
+            anims.append(backing.animate.set_fill(opacity=BACKING_OPACITY))
         board.scene.bring_to_front(*board.markers.values())
         anims.append(outline.animate.set_fill(opacity=0.3).set_stroke(opacity=1.0))
     if beat.inside:
         anims.append(Indicate(board.markers[unprimed(beat.inside)], color=theme.rejected,
                               scale_factor=1.6))
     board.play(beat, *anims, run_time=0.6 if beat.ear else 0.9)
+
+
+#: the gap (scene units) between the lines that stand for a test triangle's inside
+HATCH = 0.08
+
+
+def covering(corners: Sequence[np.ndarray]) -> VGroup:
+    """A triangle as lines a label must keep clear of (:meth:`Board.clear_labels`): its edges
+    and, across it, lines parallel to its last edge :data:`HATCH` apart (a label inside it,
+    which no edge meets, is covered too)."""
+    a, b, c = (np.asarray(p, dtype=float) for p in corners)
+    lines = VGroup(*[Line(p, q) for p, q in ((a, b), (b, c), (c, a))])
+    u = c - b
+    w = a - b
+    height = abs(float(u[0] * w[1] - u[1] * w[0])) / max(float(np.linalg.norm(u[:2])), 1e-9)
+    n = max(1, math.ceil(height / HATCH))
+    lines.add(*[Line(a + (b - a) * k / n, a + (c - a) * k / n) for k in range(1, n)])
+    return lines
+
+
+#: what a test triangle shows, taken away with it
+_TEST = ("ear-triangle", "ear-backing")
+#: a backing's margin round its label (scene units) and its opacity
+BACKING_PAD, BACKING_OPACITY = 0.04, 0.85
+
+
+def _backing(board: Board, lines: VGroup) -> VGroup | None:
+    """Dark cards (the background's colour, transparent until faded in) under the labels
+    that ``lines`` (:func:`covering`) still meet, their markers where they stand now; None if
+    none: a red label on the red triangle over the fruit's orange is hard to read."""
+    edges = [(line.get_start(), line.get_end()) for line in lines.submobjects]
+    solid = Obstacles(segments=edges)
+    cards = VGroup()
+    for label, marker in sorted(board.markers.items()):
+        if not isinstance(marker, VGroup) or len(marker) < 2:
+            continue
+        text = marker[1]
+        box = rects_at(text.get_center()[:2], (text.width, text.height))
+        if solid.gaps(box)[0] >= MARGIN:
+            continue
+        card = Rectangle(width=text.width + 2 * BACKING_PAD, height=text.height + 2 * BACKING_PAD,
+                         stroke_width=0, fill_color=board.theme.background, fill_opacity=0)
+        cards.add(tag(card.move_to(text.get_center()), None, f"backing:{label}"))
+    return tag(cards, None, "ear-backing") if len(cards) else None
 
 
 def keyhole(board: Board, beat: Keyhole) -> None:
@@ -153,7 +214,7 @@ def clip(board: Board, beat: Slice) -> None:
     a, b, c = data.points
     knife = tag(Line(board.at(a), board.at(c), color=theme.knife, stroke_width=theme.stroke * 2),
                 "called", "knife")
-    board.play(beat, *board.drop("ear-triangle"), Create(knife), *board.clear_labels(knife),
+    board.play(beat, *board.drop(*_TEST), Create(knife), *board.clear_labels(knife),
                run_time=0.6)
     piece = tag(MPolygon(*[board.at(p) for p in (a, b, c)], color=theme.rind,
                          stroke_width=theme.thin_stroke, fill_color=theme.fruit,
@@ -214,7 +275,7 @@ def good(board: Board, beat: Good) -> None:
     region = tag(MPolygon(*[board.at(p) for p in beat.points], color=theme.called,
                           stroke_width=theme.stroke, fill_color=theme.called,
                           fill_opacity=theme.piece_opacity), "called", "good")
-    board.play(beat, *board.drop("good", "ear-triangle", *_FOUND), FadeIn(region), run_time=1.2)
+    board.play(beat, *board.drop("good", *_TEST, *_FOUND), FadeIn(region), run_time=1.2)
     board.keep("good", region)
 
 

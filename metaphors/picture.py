@@ -86,3 +86,6 @@ def upright(board: Board, beat: Beat) -> None:
     turn = turn_to(board, 0.0)
     if turn:
         again(board, beat, *turn, run_time=1.5)
+    back = board.labels_back()  # the labels moved off the ball's way, once it is upright
+    if back:
+        again(board, beat, *back, run_time=0.4)

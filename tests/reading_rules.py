@@ -1355,7 +1355,8 @@ def labels_under_tools(data: dict) -> list[str]:
 
 #: the board's drawn segments a vertex label must not meet: its outline's edges, the
 #: diagonals drawn on it and the triangles' edges (a piece done, the whole triangulation)
-_SEGMENT_OWNERS = ("polygon", "analysis:polygon", "diagonal:", "triangle", "triangulation")
+_SEGMENT_OWNERS = ("polygon", "analysis:polygon", "diagonal:", "triangle", "triangulation",
+                   "ear-triangle")
 #: the owners of which several are shown under one name (each piece's triangles)
 _MANY = ("triangle", "triangulation")
 
@@ -1501,3 +1502,111 @@ def ticks_outside(data: dict) -> list[str]:
             reach = max(region.distance(Point(p)) for p in shape.exterior.coords)
             found.append(f"play {k} {tick['name']}: {reach:.2f} outside P")
     return found
+
+
+# --- issue 22: the ball's fall is seen, no label under it -------------------------------------
+
+#: the least gap (scene units) a vertex label keeps from the hit ring and from the ball's path
+FALL_GAP = 0.08
+#: the ball's radius (:func:`metaphors.gravity._ball`): its path is that wide either side
+BALL_RADIUS = 0.12
+
+
+def labels_under_the_fall(data: dict) -> list[str]:
+    """The vertex labels within :data:`FALL_GAP` of gravity's hit ring, or of the ball's path
+    down to it, while the ring is up, as ``"play 14 E under the fall"``: a label the ring
+    circles hides where the ball hit, the decisive moment. The path is the band's straight
+    drop (its shape when the ring comes in), as wide as the ball and cut square at V (V's own
+    label stands beside the ball hanging there); a label counts where it was recorded since
+    the last turn (a turn records where it starts)."""
+    from shapely.geometry import LineString, Point
+    from shapely.geometry import box as rectangle
+
+    fresh: dict[str, tuple[float, float, float, float]] = {}
+    band: list = []
+    fall = None
+    found: dict[str, str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim.get("type") == "Turn" or (anim.get("type") in INCOMING
+                                              and node.get("name") in _POLYGONS):
+                fresh = {}
+                continue
+            for key in ("mobject", "target"):
+                part = anim.get(key) or {}
+                fresh.update(dict(_named_label_boxes(part)))
+                if part.get("name") == "band" and part.get("points"):
+                    band = part["points"]
+            if node.get("name") == "hit" and node.get("points"):
+                if anim.get("type") in OUTGOING:
+                    fall = None
+                elif anim.get("type") in INCOMING:
+                    pts = [p[:2] for p in node["points"]]
+                    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+                    centre = ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
+                    ring = Point(centre).buffer((max(xs) - min(xs)) / 2)
+                    path = (LineString([band[0][:2], band[-1][:2]]).buffer(BALL_RADIUS, cap_style=2)
+                            if len(band) >= 2 and band[0][:2] != band[-1][:2] else ring)
+                    fall = ring.union(path)
+        if fall is not None:
+            for v, box in fresh.items():
+                if fall.distance(rectangle(*box)) < FALL_GAP:
+                    found.setdefault(v, f"play {k} {v} under the fall")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- issue 22: a label is read clear of ear clipping's red test triangle ------------------------
+
+#: the red triangle of a vertex that is not an ear (:func:`metaphors.fruit.ear_test`)
+_TEST_TRIANGLES = ("ear-triangle",)
+#: a dark card under a label the triangle could not be kept off (its vertex inside it)
+_BACKINGS = "backing:"
+#: how opaque a card must be to read a label on it
+LEAST_BACKING = 0.6
+
+
+def labels_under_test_triangles(data: dict) -> list[str]:
+    """The vertex labels that a red test triangle lies over, as ``"play 60 c₂ under the
+    ear-triangle"``: a label on its red over the fruit's orange is hard to read (a red label
+    all but vanishes), and an edge through it reads as part of the line. The labels and the
+    triangle are as :func:`crossed_vertex_labels` follows them; a triangle counts once it is
+    drawn (its fill or its edge up). A label on a dark card (``backing:V``, at least
+    :data:`LEAST_BACKING` opaque, covering the label) reads, its vertex inside the triangle."""
+    from shapely.geometry import Polygon
+    from shapely.geometry import box as area
+
+    shown: dict[str, dict] = {}
+    found: dict[str, str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            top = anim.get("mobject") or {}
+            if anim.get("type") in INCOMING and top.get("name") in _POLYGONS:
+                shown = {}
+            for kind, node, named in _ends(anim):
+                for part in mobject_nodes(node):
+                    name = named if part is node else part.get("name") or ""
+                    if name.startswith(("vertex:", _BACKINGS, *_TEST_TRIANGLES)):
+                        if kind in OUTGOING or kind == "Turn":
+                            shown.pop(name, None)
+                        else:
+                            shown[name] = part
+        triangles = [(name, Polygon(_corners(node))) for name, node in shown.items()
+                     if name.startswith(_TEST_TRIANGLES) and len(node.get("points") or []) >= 12
+                     and ((node.get("fill_opacity") or 0) > 0
+                          or (node.get("stroke_opacity") or 0) > 0)]
+        for name, marker in shown.items():
+            if not name.startswith("vertex:"):
+                continue
+            vertex = name.removeprefix("vertex:")
+            card = shown.get(_BACKINGS + vertex)
+            backed = (None if card is None or (card.get("fill_opacity") or 0) < LEAST_BACKING
+                      or _box_of(card) is None else area(*_box_of(card)))
+            for label in _label_boxes(marker, direct=True):
+                if backed is not None and backed.buffer(1e-6).contains(area(*label)):
+                    continue
+                for owner, triangle in triangles:
+                    if triangle.intersects(area(*label)):
+                        found.setdefault(f"{vertex} {owner}",
+                                         f"play {k} {vertex} under the {owner}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))

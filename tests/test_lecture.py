@@ -41,6 +41,8 @@ from tests.reading_rules import (
     hidden_failures,
     labels_on_claims,
     labels_under_faces,
+    labels_under_test_triangles,
+    labels_under_the_fall,
     labels_under_tools,
     leftover_verdicts,
     notes_under_moving_tools,
@@ -531,6 +533,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert notes_under_moving_tools(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
     assert labels_under_tools(data) == [], chapter.slug
+    # issue 22: gravity's hit is seen, no label under the hit ring or the ball's path
+    assert labels_under_the_fall(data) == [], chapter.slug
+    # issue 22: no label left on ear clipping's red test triangle, unless on a dark card
+    assert labels_under_test_triangles(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P
     assert water_outside_polygon(data) == [], chapter.slug
 

@@ -59,6 +59,8 @@ from tests.reading_rules import (
     graph_nodes,
     hidden_failures,
     labels_under_faces,
+    labels_under_test_triangles,
+    labels_under_the_fall,
     labels_under_tools,
     leftover_verdicts,
     notes_under_moving_tools,
@@ -401,6 +403,28 @@ def test_no_label_is_under_the_clock_face(case):
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
+def test_no_label_is_under_the_balls_fall(case):
+    """Issue 22: gravity's decisive moment is seen: no vertex label under the hit ring or
+    the ball's path to it (on the counterexample E's label sat where the ball hit)."""
+    assert labels_under_the_fall(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_label_is_left_on_a_red_test_triangle(case):
+    """Issue 22: ear clipping's red "not an ear" triangle lies over no vertex label (a red
+    label on it, over the fruit's orange, was hard to read; its edge crossed the keyhole's
+    c₂), but for a label it cannot keep off (its vertex inside it), which is on a dark card;
+    its edges cross no label (:func:`crossed_vertex_labels` follows it too)."""
+    assert labels_under_test_triangles(graph(case).data) == [], case.id
+
+
+def test_no_label_is_under_the_balls_fall_on_the_counterexample():
+    """The same on the counterexample, where the drop is shortest (0.3 units)."""
+    case = next(c for c in SCENES if c.id == "gravity.Gravity")
+    assert labels_under_the_fall(graph(case, "counterexample").data) == []
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
 def test_the_rising_water_stays_inside_p(case):
     """Issue 22 item 4: Correct Scaling's rising water is drawn inside P only; blue water
     outside P would contradict the legend (red: outside P)."""
@@ -723,7 +747,9 @@ def _vertex_places(nodes_: list[dict]) -> dict[str, list]:
 def test_vertices_come_back_after_the_picture_turns(case):
     """Gravity turns the picture and turns it back after the verdict (every claim of divide
     and conquer): dots and labels end where they started, however many turns came between,
-    or where a label was last moved clear of a line drawn (a Transform of its marker)."""
+    or where a label was last moved clear of a line drawn (a Transform of its marker; a
+    label moved off the ball's way for the fall, an ``animate``, comes back with the ball
+    gone, before the picture turns back)."""
     data = graph(case).data
     first = _vertex_places(n for play in data["plays"] for a in play["animations"]
                            for n in _walk_animation(a))
