@@ -41,17 +41,13 @@ from story.storyboard import Reading
 
 
 def polygon(board: Board, beat: ShowPolygon) -> None:
-    # the lecture: the panel and the first words come with the title and the picture, never
-    # before them (TraceScene.words_with_picture); elsewhere the panel is up at once
-    together = getattr(board.scene, "words_with_picture", False)
-    panel = [FadeIn(m) for m in board.panel.mobjects()] if together else []
-    if not together:
-        board.scene.add(*board.panel.mobjects())
-    # one FadeIn per marker: FadeIn(*markers) would put them on screen as one group, and manim
-    # redraws a whole group in every frame when any member of it changes colour
+    # the panel and the first words come with the title and the picture, never before them
+    # (issue 22: up a second before the picture they speak of). One FadeIn per marker:
+    # FadeIn(*markers) would put them on screen as one group, and manim redraws a whole group
+    # in every frame when any member of it changes colour
     board.play(beat, Write(board.title), Create(board.outline),
-               *[FadeIn(m) for m in board.markers.values()], *panel, run_time=1.5,
-               together=together)
+               *[FadeIn(m) for m in board.markers.values()],
+               *[FadeIn(m) for m in board.panel.mobjects()], run_time=1.5, together=True)
 
 
 def pick(board: Board, beat: Pick) -> None:

@@ -147,7 +147,6 @@ class LectureScene(TraceScene):
     teacher_notes: tuple[Card, ...] = ()
     polygon = "lecture"  # the lecture's polygon, unless one is handed (trex lecture --polygon)
     call_line = False  # no code in the lecture: a run's steps are its lit rows and captions
-    words_with_picture = True  # a run's title and picture come with its panel and words
 
     def chapter_segments(self) -> tuple:
         """The chapter's segments, in order (a chapter's scene file says them)."""

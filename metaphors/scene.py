@@ -118,10 +118,6 @@ class TraceScene(SpecScene, Recorded, Scene):
     #: whether divide and conquer's heuristic is a black box: each diagonal is asked for and
     #: comes out, none of the heuristic's steps shown (the overview, before any is taught)
     black_box = False
-    #: whether a run's panel and first subtitle come with its title and picture, in one play
-    #: (the lecture: issue 22, the words up a second before the picture they speak of), not
-    #: the panel at once and the words just before (the scenes, as their control frames show)
-    words_with_picture = False
 
     def __init__(self, renderer=None, **kwargs):
         if renderer is None and config.renderer == RendererType.CAIRO:
