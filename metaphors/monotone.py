@@ -12,6 +12,7 @@ from __future__ import annotations
 import weakref
 from collections.abc import Iterator, Mapping, Sequence
 
+import numpy as np
 from manim import (
     DL,
     DOWN,
@@ -44,9 +45,15 @@ from metaphors.layout import (
     PANEL_SOURCE,
     SUBTITLE_TOP,
     Box,
+    Obstacles,
+    Segment,
+    first_clear,
     free_place,
 )
+from metaphors.layout import around as round_about
+from metaphors.marks import area_of
 from metaphors.performing import Performances, act, performs
+from metaphors.sweep import around_labels, label_gaps
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, Point, beat_kind, point, points_of
@@ -58,26 +65,84 @@ STACK_BUFF = 0.12
 #: how far the count n − 2 keeps from everything else on screen: a label beside it is not
 #: read as its first word (scene units)
 COUNT_GAP = 0.35
+#: the sweep line's length (scene units), centred on the picture
+SWEEP_WIDTH = 5.8
+#: the gaps a kind word ("split", "merge" …) keeps from every label, dot and line, the
+#: largest that fits (scene units): nearer than 0.12 to a label, the two read as one word
+#: ("Gregular"); 0.18 keeps 0.12 diagonally off a label's corner too
+KIND_GAPS = (0.18, 0.12)
+#: the directions tried round a vertex for its kind word: right, left, then above, below
+KIND_DIRECTIONS = tuple(np.array(d) / np.linalg.norm(d) for d in
+                        ((1, 1), (1, -1), (-1, 1), (-1, -1), (0, 1), (0, -1), (1, 0), (-1, 0)))
+#: the distances tried from the vertex's dot to the kind word's box (scene units)
+KIND_AWAY = tuple(np.round(np.arange(0.1, 1.5, 0.05), 6))
 #: each board's place for its stack (left, top, and whether it is a row), found once a run
 _PLACES: weakref.WeakKeyDictionary[Board, tuple[float, float, bool]] = (
     weakref.WeakKeyDictionary())
 
 
-def _sweep_line(board: Board, y: float) -> DashedLine:
+def _sweep_line(board: Board, y: float) -> VGroup:
+    """The dotted sweep line at ``y`` (P's coordinates), with a gap round every vertex label
+    it would run through (:func:`metaphors.sweep.label_gaps`): it may cross its own vertex's
+    dot, never a label."""
     theme = board.theme
-    x0 = board.frame.center[0] - 2.9
-    at = board.at((0.0, y))[1]
-    return tag(DashedLine((x0, at, 0), (x0 + 5.8, at, 0), color=theme.sweep,
-                          stroke_width=theme.thin_stroke), "called", "sweep")
+    x0, at = _sweep_span(board, y)
+    labels = label_gaps(board)
+    group = VGroup(*[tag(DashedLine((p[0], p[1], 0), (q[0], q[1], 0), color=theme.sweep,
+                                    stroke_width=theme.thin_stroke), "called", "sweep:line")
+                     for p, q in around_labels([((x0, at), (x0 + SWEEP_WIDTH, at))], labels)])
+    if not group.submobjects:  # keeps a transform happy: always one (empty) piece
+        group.add(Line((x0, at, 0), (x0, at, 0), stroke_opacity=0))
+    # the group's own colour too (its pieces have it already): one dotted line, not white
+    return tag(group.set_stroke(theme.sweep, theme.thin_stroke, family=False), "called", "sweep")
+
+
+def _sweep_span(board: Board, y: float) -> tuple[float, float]:
+    """The sweep line's left end and height on screen, at ``y`` (P's coordinates)."""
+    return board.frame.center[0] - SWEEP_WIDTH / 2, float(board.at((0.0, y))[1])
+
+
+def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarray | None:
+    """Where the kind word of ``vertex`` stands: the first place round its dot
+    (:func:`metaphors.layout.around`: nearest first, right before left, above before below)
+    that keeps a gap of :data:`KIND_GAPS` from every vertex label and dot, every edge and diagonal
+    drawn, the sweep line at ``y``, the title and the panel, on screen above the subtitle;
+    None where there is none."""
+    theme = board.theme
+    dot = board.markers[vertex][0].get_center()[:2]
+    size = (float(kind.width), float(kind.height))
+    rings = board.outline_rings()
+    edges: list[Segment] = [(ring[k][:2], ring[(k + 1) % len(ring)][:2]) for ring in rings
+             for k in range(len(ring))]
+    edges += [(m.get_start()[:2], m.get_end()[:2]) for name, m in board.objects.items()
+              if isinstance(m, Line) and name.startswith("diagonal:")]
+    x0, at = _sweep_span(board, y)
+    edges.append(((x0, at), (x0 + SWEEP_WIDTH, at)))
+    boxes = [area_of(marker[-1]) for marker in board.markers.values()]
+    boxes += [area_of(m) for m in (board.title, *board.panel.mobjects())]
+    dots = [(*marker[0].get_center()[:2], theme.dot_radius) for marker in board.markers.values()]
+    centres = round_about([dot], KIND_DIRECTIONS, KIND_AWAY, size=size)
+    obstacles = Obstacles(boxes=boxes, segments=edges, dots=dots)
+    for gap in KIND_GAPS:
+        k = first_clear(centres, size, obstacles, gap,
+                        within=(FRAME_AREA[0], SUBTITLE_TOP, FRAME_AREA[2], FRAME_AREA[3]))
+        if k is not None:
+            return np.array([*centres[k], 0.0])
+    return None
 
 
 def classify(board: Board, beat: Classify) -> None:
-    """The sweep line reaches a vertex; the vertex shows its kind."""
+    """The sweep line reaches a vertex; the vertex shows its kind, in a clear place beside
+    it (:func:`_kind_place`)."""
     theme, data = board.theme, beat
     line = _sweep_line(board, data.at[1])
     kind = tag(text(data.kind, font=theme.font, size=theme.label_size + 2,
                     colour=theme.role_colour(_kind_role(data.kind))), None, "kind")
-    kind.next_to(board.markers[data.vertex], direction=[1, 0, 0], buff=0.1)
+    place = _kind_place(board, kind, data.vertex, data.at[1])
+    if place is None:  # nowhere clear: beside the dot, as it was
+        kind.next_to(board.markers[data.vertex], direction=[1, 0, 0], buff=0.1)
+    else:
+        kind.move_to(place)
     anims: list[FadeIn | Indicate | Transform | Create] = [FadeIn(kind), Indicate(board.markers[data.vertex])]
     if "sweep" in board.objects:
         anims.append(Transform(board.objects["sweep"], line))

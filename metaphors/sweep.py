@@ -139,9 +139,8 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
         start, end = _cut(start, end, clip)
     parts = split_segment(start, end, outline(board.outline), outline(board.objects.get("T")))
     # a gap where the line would run through a vertex label: the label stays readable
-    labels = shapely.union_all([_box(marker[-1]).buffer(LABEL_GAP, join_style="mitre")
-                                for marker in board.markers.values()])
-    parts = {kind: _around(pieces, labels) for kind, pieces in parts.items()}
+    labels = label_gaps(board)
+    parts = {kind: around_labels(pieces, labels) for kind, pieces in parts.items()}
     group = VGroup()
     for p, q in parts["inside"]:
         group.add(tag(Line(_3d(p), _3d(q), color=colour, stroke_width=theme.stroke),
@@ -158,11 +157,18 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
     return group
 
 
-def _around(pieces: list[tuple[tuple, tuple]], labels: shapely.Geometry,
-            ) -> list[tuple[tuple, tuple]]:
+def label_gaps(board: Board) -> shapely.Geometry:
+    """The vertex labels' boxes, each grown by :data:`LABEL_GAP`: where a tool's line leaves
+    a gap (:func:`around_labels`)."""
+    return shapely.union_all([_box(marker[-1]).buffer(LABEL_GAP, join_style="mitre")
+                              for marker in board.markers.values()])
+
+
+def around_labels(pieces: list[tuple[tuple, tuple]], labels: shapely.Geometry,
+                  ) -> list[tuple[tuple, tuple]]:
     """The pieces with the parts inside ``labels`` cut out.
 
-    >>> _around([((0.0, 0.0), (4.0, 0.0))], shapely.box(1, -1, 2, 1))
+    >>> around_labels([((0.0, 0.0), (4.0, 0.0))], shapely.box(1, -1, 2, 1))
     [((0.0, 0.0), (1.0, 0.0)), ((2.0, 0.0), (4.0, 0.0))]
     """
     kept = []

@@ -993,6 +993,35 @@ def crowded_notes(data: dict) -> list[str]:
     return sorted(set(found))
 
 
+#: the word a vertex gets as the monotone partition's sweep reaches it ("split", "merge" …)
+_KIND_WORDS = ("kind",)
+
+
+def crowded_kind_words(data: dict) -> list[str]:
+    """Issue 22: the monotone partition's kind words (:data:`_KIND_WORDS`) nearer than
+    :data:`LEAST_NOTE_GAP` to a vertex label shown with them, as ``"'split' touches B"``, or
+    on an edge of the polygon drawn last, as ``"'split' on an edge"``: beside a label the
+    word reads with it (B's label read "Bregular"), on an edge it is crossed out."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as rectangle
+
+    found = []
+    edges: list = []
+    for anim, labels in _with_labels(data):
+        node = anim.get("mobject", {})
+        if anim.get("type") in INCOMING and node.get("name") in _POLYGONS and node.get("points"):
+            edges = [LineString(s) for s in _segments(node)]
+        if anim.get("type") not in INCOMING:
+            continue
+        for part in mobject_nodes(node):
+            if part.get("name") not in _KIND_WORDS or not part.get("box"):
+                continue
+            found += _touching(part, labels)
+            if any(rectangle(*part["box"]).intersects(e) for e in edges):
+                found.append(f"{part['text']!r} on an edge")
+    return sorted(set(found))
+
+
 def crowded_counts(data: dict) -> list[str]:
     """The counters (``"n − 2 = 13 − 2 = 11 triangles"``, ``"3 / 11 slices"``) nearer than
     :data:`LEAST_NOTE_GAP` to a vertex label or to the subtitle on screen with them, as
@@ -1326,6 +1355,9 @@ def water_outside_polygon(data: dict) -> list[str]:
 
 #: the drawn pieces of a moving tool's line (:func:`metaphors.sweep.drawn_segment`)
 _TOOL_PIECES = ("sweep:", "hand:")
+#: a tool's line drawn whole, under its own name: the monotone partition's sweep line was
+#: one dashed line ("sweep"), through every label at its height
+_TOOL_LINES = ("sweep",)
 
 
 def labels_under_tools(data: dict) -> list[str]:
@@ -1340,7 +1372,7 @@ def labels_under_tools(data: dict) -> list[str]:
         node = anim.get("mobject", {})
         for piece in mobject_nodes(node):
             name = piece.get("name") or ""
-            if not name.startswith(_TOOL_PIECES):
+            if not name.startswith(_TOOL_PIECES) and name not in _TOOL_LINES:
                 continue
             for part in mobject_nodes(piece):  # a dashed line's dashes
                 if len(part.get("points", ())) < 2 or (part.get("stroke_opacity") or 0) == 0:

@@ -36,6 +36,7 @@ from tests.reading_rules import (
     crossfaded_subtitles,
     crowded_counts,
     crowded_exercises,
+    crowded_kind_words,
     crowded_panel_labels,
     crowded_verdicts,
     hidden_failures,
@@ -533,6 +534,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert notes_under_moving_tools(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
     assert labels_under_tools(data) == [], chapter.slug
+    # issue 22: the monotone sweep's kind word ("split") clear of every label and edge
+    assert crowded_kind_words(data) == [], chapter.slug
     # issue 22: gravity's hit is seen, no label under the hit ring or the ball's path
     assert labels_under_the_fall(data) == [], chapter.slug
     # issue 22: no label left on ear clipping's red test triangle, unless on a dark card

@@ -53,6 +53,7 @@ from tests.reading_rules import (
     crossfaded_subtitles,
     crossfaded_texts,
     crowded_counts,
+    crowded_kind_words,
     crowded_notes,
     crowded_panel_labels,
     crowded_verdicts,
@@ -408,6 +409,14 @@ def test_no_label_is_under_the_clock_face(case):
     assert labels_under_faces(graph(case).data) == [], case.id
     # nor under the line of a tool where it stands: it leaves a gap round a label
     assert labels_under_tools(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_kind_words_stand_clear_of_labels_and_edges(case):
+    """Issue 22: the word a vertex gets as the monotone sweep reaches it ("regular",
+    "split" …) stands in a clear place beside it: it overlapped B's label, and stood on
+    edges, beside the dot at the line's height."""
+    assert crowded_kind_words(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
