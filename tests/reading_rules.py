@@ -1413,6 +1413,32 @@ def _ends(anim: dict) -> Iterator[tuple[str, dict, str]]:
         yield from _ends(child)
 
 
+def _shown_after_plays(data: dict, names: tuple[str, ...], many: tuple[str, ...] = ()
+                       ) -> Iterator[tuple[int, dict[str, dict]]]:
+    """After each play ``k``, the things on screen whose names start with one of ``names``,
+    by name, as the play leaves them: a thing faded out is gone, and one a turn moves is
+    unknown until it is recorded again (a turn records where it starts, not where it leaves
+    the thing). A polygon coming in begins a new picture. Of the ``many`` shown under one
+    name (each piece's triangles), each is told by where it starts."""
+    shown: dict[str, dict] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            top = anim.get("mobject") or {}
+            if anim.get("type") in INCOMING and top.get("name") in _POLYGONS:
+                shown = {}
+            for kind, node, named in _ends(anim):
+                for part in mobject_nodes(node):
+                    name = named if part is node else part.get("name") or ""
+                    if many and name.startswith(many) and part.get("points"):
+                        name += f"@{part['points'][0]}"
+                    if name.startswith(names):
+                        if kind in OUTGOING or kind == "Turn":
+                            shown.pop(name, None)
+                        else:
+                            shown[name] = part
+        yield k, shown
+
+
 def crossed_vertex_labels(data: dict) -> list[str]:
     """The board's vertex labels that a drawn segment meets, as ``"play 93 K × diagonal:IM"``
     or ``"play 12 K × polygon"`` (each label and segment once, at the first play it shows):
@@ -1423,24 +1449,8 @@ def crossed_vertex_labels(data: dict) -> list[str]:
     from shapely.geometry import LineString
     from shapely.geometry import box as area
 
-    shown: dict[str, dict] = {}
     found: dict[tuple[str, str], str] = {}
-    for k, play in enumerate(data["plays"]):
-        for anim in play["animations"]:
-            top = anim.get("mobject") or {}
-            if anim.get("type") in INCOMING and top.get("name") in _POLYGONS:
-                shown = {}
-            for kind, node, named in _ends(anim):
-                for part in mobject_nodes(node):
-                    name = named if part is node else part.get("name") or ""
-                    if name.startswith(_MANY) and part.get("points"):
-                        name += f"@{part['points'][0]}"  # one of many: told by where it is
-                    if name.startswith(("vertex:", *_SEGMENT_OWNERS)):
-                        # a turn records where it starts, not where it leaves the thing
-                        if kind in OUTGOING or kind == "Turn":
-                            shown.pop(name, None)
-                        else:
-                            shown[name] = part
+    for k, shown in _shown_after_plays(data, ("vertex:", *_SEGMENT_OWNERS), many=_MANY):
         lines = {name: [LineString(s) for s in _segments(node)] for name, node in shown.items()
                  if name.startswith(_SEGMENT_OWNERS)}
         for name, marker in shown.items():
@@ -1608,21 +1618,8 @@ def labels_under_test_triangles(data: dict) -> list[str]:
     from shapely.geometry import Polygon
     from shapely.geometry import box as area
 
-    shown: dict[str, dict] = {}
     found: dict[str, str] = {}
-    for k, play in enumerate(data["plays"]):
-        for anim in play["animations"]:
-            top = anim.get("mobject") or {}
-            if anim.get("type") in INCOMING and top.get("name") in _POLYGONS:
-                shown = {}
-            for kind, node, named in _ends(anim):
-                for part in mobject_nodes(node):
-                    name = named if part is node else part.get("name") or ""
-                    if name.startswith(("vertex:", _BACKINGS, *_TEST_TRIANGLES)):
-                        if kind in OUTGOING or kind == "Turn":
-                            shown.pop(name, None)
-                        else:
-                            shown[name] = part
+    for k, shown in _shown_after_plays(data, ("vertex:", _BACKINGS, *_TEST_TRIANGLES)):
         triangles = [(name, Polygon(_corners(node))) for name, node in shown.items()
                      if name.startswith(_TEST_TRIANGLES) and len(node.get("points") or []) >= 12
                      and ((node.get("fill_opacity") or 0) > 0
