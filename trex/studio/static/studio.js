@@ -462,20 +462,28 @@ async function load(body) {
 function listen() {
   const canvas = $("canvas");
   let drag = null, moved = false;
+  // A press on a vertex starts a drag, and its click (after the release) only selects; every
+  // press sets `drag` anew, so a click never reads the last one's (a release clearing it on a
+  // timer lost the race with the next click on a loaded machine: that click added nothing).
   canvas.addEventListener("mousedown", (event) => {
     if (event.button !== 0) return;
     const hit = vertexAt(...eventPoint(event));
-    if (hit) { drag = hit; moved = false; state.selected = hit; state.active = hit.ring; }
+    drag = hit || null;
+    moved = false;
+    if (hit) { state.selected = hit; state.active = hit.ring; }
   });
   canvas.addEventListener("mousemove", (event) => {
-    if (!drag) return;
+    if (!drag || !(event.buttons & 1)) return;  // a drag moves only while the button is held
     if (!moved) { remember(); moved = true; }
     state.rings[drag.ring][drag.index] = snapped(toWorld(...eventPoint(event)));
     edited();
   });
-  window.addEventListener("mouseup", () => { setTimeout(() => { drag = null; }, 0); });
   canvas.addEventListener("click", (event) => {
-    if (drag) { if (!moved) drawRings(); return; }
+    if (drag) {
+      drag = null;
+      if (!moved) drawRings();
+      return;
+    }
     const [sx, sy] = eventPoint(event);
     if (vertexAt(sx, sy)) return;
     addVertex(toWorld(sx, sy), event.shiftKey || state.holeNext);
