@@ -13,6 +13,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any, TypeAlias
 
 import numpy as np
+import shapely
 from manim import Animation, FadeIn, FadeOut, Line, Mobject, Scene, Transform, VGroup
 from manim import Polygon as MPolygon
 from manim.mobject.mobject import _AnimationBuilder
@@ -21,7 +22,15 @@ from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
 from metaphors.drawing import Frame, polygon_mobject
 from metaphors.labels import crossed_labels, measured_markers
-from metaphors.layout import METAPHOR, SUBTITLE_WIDTH, TITLE_Y, Box, subtitle_centre
+from metaphors.layout import (
+    METAPHOR,
+    SUBTITLE_WIDTH,
+    TITLE_Y,
+    Box,
+    Segment,
+    ring_edges,
+    subtitle_centre,
+)
 from metaphors.panel import Panel
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
@@ -211,7 +220,7 @@ class Board:
         paths = [path for part in self.outline.family_members_with_points()
                  for path in part.get_subpaths() if len(path) >= 12]  # a triangle's, at least
         rings = [list(path[:-1:4]) for path in paths]
-        return sorted(rings, key=lambda ring: -abs(_area([p[:2] for p in ring])))
+        return sorted(rings, key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
 
     def clear_labels(self, *lines: Mobject, for_now: bool = False) -> list[Playable]:
         """The moves, to play with ``lines`` (about to be drawn: a diagonal, a cut, the
@@ -222,8 +231,7 @@ class Board:
         :meth:`play` recolours it after the play. ``for_now``: the lines go again soon (the
         ball's fall), and :meth:`labels_back` puts the labels back where they stood."""
         rings = [list(self.polygon.labels), *(list(h.labels) for h in self.holes)]
-        drawn = [(ring[k], ring[(k + 1) % len(ring)]) for ring in self.outline_rings()
-                 for k in range(len(ring))]
+        drawn = [edge for ring in self.outline_rings() for edge in ring_edges(ring)]
         drawn += [edge for m in self.objects.values() if m not in lines for edge in _edges(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
         moves: list[Playable] = []
@@ -233,7 +241,7 @@ class Board:
             moved = self.markers[label].copy()
             if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
                 self.moved_for_now.setdefault(
-                    label, _from_scene(self.frame, self.markers[label][1].get_center()))
+                    label, self.frame.from_scene(self.markers[label][1].get_center()))
             moved[1].move_to((centre[0], centre[1], 0.0))
             # a move for now is an ``animate`` (it is undone), a lasting one a Transform
             moves.append(animate(self.markers[label]).become(moved) if for_now
@@ -257,30 +265,12 @@ class Board:
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
 
 
-def _from_scene(frame: Frame, q: np.ndarray) -> tuple[float, float]:
-    """The polygon-coordinate point that ``frame`` puts at scene point ``q``
-    (:meth:`Frame.to_scene` undone)."""
-    t = np.radians(frame.angle)
-    c, s = np.cos(t), np.sin(t)
-    dx, dy = (np.asarray(q, dtype=float) - frame.pivot)[:2] / frame.zoom
-    at = frame.pivot[:2] + np.array([c * dx + s * dy, -s * dx + c * dy])
-    p = (at - frame.center[:2]) / frame.base_scale + frame.mid
-    return float(p[0]), float(p[1])
-
-
-def _area(ring: Sequence[Sequence[float]]) -> float:
-    """The signed area of a ring of points (the shoelace formula)."""
-    return 0.5 * sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(ring, [*ring[1:], ring[0]],
-                                                               strict=True))
-
-
-def _edges(mobject: Mobject) -> list[tuple[np.ndarray, np.ndarray]]:
+def _edges(mobject: Mobject) -> list[Segment]:
     """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""
     if isinstance(mobject, Line):
         return [(mobject.get_start(), mobject.get_end())]
     if isinstance(mobject, MPolygon):
-        corners = list(mobject.get_vertices())
-        return [(p, corners[(k + 1) % len(corners)]) for k, p in enumerate(corners)]
+        return ring_edges(list(mobject.get_vertices()))
     if isinstance(mobject, VGroup):
         return [edge for part in mobject.submobjects for edge in _edges(part)]
     return []

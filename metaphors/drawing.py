@@ -67,6 +67,20 @@ class Frame:
         dx, dy = (at - self.pivot)[:2] * self.zoom
         return self.pivot + np.array([c * dx - s * dy, s * dx + c * dy, 0.0])
 
+    def from_scene(self, q: Sequence[float] | np.ndarray) -> tuple[float, float]:
+        """The polygon point this frame puts at scene point ``q`` (:meth:`to_scene` undone).
+
+        >>> f = Frame([(0, 0), (4, 2)], (0, 0), 4, 4).turned(90)
+        >>> [round(v, 6) for v in f.from_scene(f.to_scene((4, 2)))]
+        [4.0, 2.0]
+        """
+        t = np.radians(self.angle)
+        c, s = np.cos(t), np.sin(t)
+        dx, dy = (np.asarray(q, dtype=float) - self.pivot)[:2] / self.zoom
+        at = self.pivot[:2] + np.array([c * dx + s * dy, -s * dx + c * dy])
+        p = (at - self.center[:2]) / self.base_scale + self.mid
+        return float(p[0]), float(p[1])
+
     def many(self, points: Sequence[Sequence[float]]) -> list[np.ndarray]:
         return [self.to_scene(p) for p in points]
 

@@ -20,7 +20,7 @@ from manim import Dot, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame
-from metaphors.layout import Obstacles, Rect, Segment, around, first_clear, rects_at
+from metaphors.layout import Obstacles, Rect, Segment, around, first_clear, rects_at, ring_edges
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from story.beats import Hole
@@ -73,7 +73,7 @@ def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tup
     ring's edges and dots. ``first``: a place to try for each label before the measured ones
     (where a label has always stood, if it is clear); the first of those if none is."""
     pts = [[np.asarray(c, dtype=float)[:2] for c in ring] for ring in rings]
-    edges = [(ring[k], ring[(k + 1) % len(ring)]) for ring in pts for k in range(len(ring))]
+    edges: list[Segment] = [edge for ring in pts for edge in ring_edges(ring)]
     edges += [(np.asarray(a, dtype=float)[:2], np.asarray(b, dtype=float)[:2]) for a, b in segments]
     base = Obstacles(segments=edges, dots=[(float(p[0]), float(p[1]), dot)
                                            for ring in pts for p in ring])

@@ -61,6 +61,15 @@ Rect = tuple[float, float, float, float]
 #: a point of the frame (scene units), and a straight line drawn between two
 XY = Sequence[float] | np.ndarray
 Segment = tuple[XY, XY]
+
+
+def ring_edges(ring: Sequence[XY]) -> list[Segment]:
+    """The edges of a closed ring of points, each from a point to the next.
+
+    >>> ring_edges([(0, 0), (1, 0), (0, 1)])
+    [((0, 0), (1, 0)), ((1, 0), (0, 1)), ((0, 1), (0, 0))]
+    """
+    return [(p, ring[(k + 1) % len(ring)]) for k, p in enumerate(ring)]
 #: the whole frame (14.2 × 8 units), less a margin of 0.3 (4 % of its height) that keeps a
 #: thing off the screen's edge, where a projector may crop it
 FRAME_AREA: Rect = (-6.8, -3.7, 6.8, 3.7)

@@ -16,7 +16,7 @@ import shapely
 from manim import DL, UR, Line, Mobject
 
 from metaphors.board import Board
-from metaphors.layout import Box, Obstacles, around, clear, rects_at
+from metaphors.layout import Box, Obstacles, around, clear, rects_at, ring_edges
 
 #: 2.5 % of the frame's height: the gap a mark keeps (the reading rule asks for 2 %)
 MARK_GAP = 0.2
@@ -72,11 +72,6 @@ def area_of(mobject: Mobject, moved: Callable[[np.ndarray], np.ndarray] | None =
     shift = (moved(centre) - centre) if moved is not None else np.zeros(3)
     return (float(low[0] + shift[0]), float(low[1] + shift[1]),
             float(high[0] + shift[0]), float(high[1] + shift[1]))
-
-
-def ring_edges(ring: Sequence[Point]) -> list[Segment]:
-    """The edges of a closed ring of points."""
-    return [(p, ring[(k + 1) % len(ring)]) for k, p in enumerate(ring)]
 
 
 def board_spot(board: Board, mark: Mobject, line: Mobject,

@@ -49,6 +49,7 @@ from metaphors.layout import (
     Segment,
     first_clear,
     free_place,
+    ring_edges,
 )
 from metaphors.layout import around as round_about
 from metaphors.marks import area_of
@@ -112,8 +113,7 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     dot = board.markers[vertex][0].get_center()[:2]
     size = (float(kind.width), float(kind.height))
     rings = board.outline_rings()
-    edges: list[Segment] = [(ring[k][:2], ring[(k + 1) % len(ring)][:2]) for ring in rings
-             for k in range(len(ring))]
+    edges: list[Segment] = [edge for ring in rings for edge in ring_edges([p[:2] for p in ring])]
     edges += [(m.get_start()[:2], m.get_end()[:2]) for name, m in board.objects.items()
               if isinstance(m, Line) and name.startswith("diagonal:")]
     x0, at = _sweep_span(board, y)

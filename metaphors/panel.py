@@ -45,6 +45,7 @@ from metaphors.layout import (
     Rect,
     around,
     clear,
+    ring_edges,
 )
 from metaphors.listing import Row, Window, listing_rows, window_for
 from metaphors.pseudocode import source_of
@@ -397,8 +398,7 @@ def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: 
     texts = [typeset.text(label, font=theme.font, size=size, colour=theme.ink)
              for label, _, _, size in vertices]
     points = [(float(p[0]), float(p[1])) for _, p, _, _ in vertices]
-    fixed = Obstacles(segments=[(ring[k], ring[(k + 1) % len(ring)]) for ring in rings
-                                for k in range(len(ring))],
+    fixed = Obstacles(segments=[edge for ring in rings for edge in ring_edges(ring)],
                       dots=[(x, y, theme.dot_radius) for x, y in points])
     bounds = (area.x - area.width / 2, area.y - area.height / 2,
               area.x + area.width / 2, area.y + area.height / 2)

@@ -472,13 +472,7 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
     return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
                       walk.noun, kept=[id(b) in walk.kept for b in beats],
                       numbers=[walk.counted_of.get(id(b), {}).get(walk.noun, 0) for b in beats],
-                      names=walk.named.get(walk.noun, {}), order=_root_labels(log))
-
-
-def _root_labels(log: Log) -> tuple[str, ...]:
-    """The labels of the log's first polygon, in its order (the order a range of them means)."""
-    return tuple(next((state_of(e)["labels"] for e in log.events
-                       if e.kind == "enter" and is_polygon_key(e.target)), ()))
+                      names=walk.named.get(walk.noun, {}), order=tuple(walk.root_polygon()[0]))
 
 
 def _boxed(walk: Walk, beats: list[Beat]) -> list[Beat]:
