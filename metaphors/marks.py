@@ -1,10 +1,15 @@
 """Where a verdict's mark (✓ or ✗) goes: beside its claim, clear of every edge and label.
 
 A mark over an edge or a label reads as part of the picture (a ✓ on edge BC seems to judge
-BC). It goes beside the middle of the claim it judges, inside the polygon if there is room
-there, else outside it, farther off, and always at least :data:`MARK_GAP` from every edge
-drawn (the polygon's, the diagonals', the claim itself) and from every label; the first such place in a
-fixed order, so a run places it the same way every time.
+BC), and one past an edge seems to judge that edge. It goes beside the middle of the claim it
+judges, inside the polygon if there is room there; else in the place inside the polygon
+nearest the claim's middle (a claim along a thin spike has no room beside it), a little
+smaller if it must (never under :data:`LEAST_SCALE` of its size); only where the polygon has
+no room for it at all, outside it, farther off; always at least :data:`MARK_GAP` from every
+edge drawn (the polygon's, the diagonals', the claim itself) and from every label (inside,
+:data:`LEAST_GAP` where nothing else fits). The first such place in a fixed order
+(:mod:`metaphors.layout`'s candidates and :func:`metaphors.layout.clear`), so a run places it
+the same way every time.
 """
 
 from __future__ import annotations
@@ -16,10 +21,20 @@ import shapely
 from manim import DL, UR, Line, Mobject
 
 from metaphors.board import Board
-from metaphors.layout import Box, Obstacles, around, clear, rects_at, ring_edges
+from metaphors.layout import Box, Obstacles, around, clear, grid, rects_at, ring_edges
 
 #: 2.5 % of the frame's height: the gap a mark keeps (the reading rule asks for 2 %)
 MARK_GAP = 0.2
+#: the least gap a mark inside the polygon keeps where nothing keeps :data:`MARK_GAP` (2 %
+#: of the frame's height, the reading rule's)
+LEAST_GAP = 0.16
+#: the smallest a mark is drawn (of its size) to fit inside a thin polygon: a ✓ of 48 points
+#: stays 3 % of the frame's height
+LEAST_SCALE = 0.7
+#: the scales tried, largest first
+SCALES = (1.0, 0.85, LEAST_SCALE)
+#: the grid the place inside the polygon nearest the claim is looked for on (scene units)
+STEP = 0.05
 #: how far along its claim a mark may stand (fractions of it, the middle first)
 ALONG = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)
 #: the distances from the claim tried, beyond the mark's own half size (scene units)
@@ -38,9 +53,49 @@ def mark_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment
     its left before its right, that stays in ``within``, :data:`MARK_GAP` from the claim,
     every edge and every label (twice that outside ``inside``), and off ``avoid`` (a shaded
     region) where it can be inside ``inside``: a mark just outside P seems to judge the edge
-    it stands by, so a place inside P over the shading comes before any outside it; if there
-    is none, the place of those that keeps the most gap (:func:`metaphors.layout.around`)."""
+    it stands by, so a place inside P over the shading comes before any outside it. With no
+    such place beside the claim inside ``inside``, the place inside it nearest the claim's
+    middle (:func:`inside_spot`, :data:`MARK_GAP` then :data:`LEAST_GAP`); then outside; if
+    there is none, the place of those that keeps the most gap
+    (:func:`metaphors.layout.around`)."""
+    return scaled_spot(size, claim, edges, labels, inside, within, avoid, scales=(1.0,))[0]
+
+
+def scaled_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment],
+                labels: Iterable[Area], inside: shapely.Geometry, within: Box,
+                avoid: shapely.Geometry | None = None, scales: Sequence[float] = SCALES
+                ) -> tuple[np.ndarray, float]:
+    """:func:`mark_spot`, the mark smaller (each of ``scales`` in turn) where its own size
+    finds no place inside ``inside``: the centre and the scale. Beside the claim at full
+    size comes first, then inside at each scale, then outside at full size."""
     a, b = np.asarray(claim[0], dtype=float)[:2], np.asarray(claim[1], dtype=float)[:2]
+    edges, labels = list(edges), list(labels)
+    obstacles = Obstacles(boxes=labels, segments=[(a, b), *edges])
+    left, bottom = within.x - within.width / 2, within.y - within.height / 2
+    frame = (left, bottom, left + within.width, bottom + within.height)
+    centres, held, framed, gap, shaded = _beside(size, a, b, obstacles, inside, frame, avoid)
+    # outside P, twice as far: a mark just past an edge seems to judge that edge
+    free = framed & (gap >= np.where(held, MARK_GAP, 2 * MARK_GAP))
+    if (free & held).any():
+        # the order of :func:`around` is the first-fit order: nearest, middle first, left first
+        best = min(np.flatnonzero(free & held), key=lambda k: (bool(shaded[k]), k))
+        return np.array([*centres[best], 0.0]), 1.0
+    for scale in scales:
+        spot = inside_spot((size[0] * scale, size[1] * scale), (a + b) / 2, obstacles, inside,
+                           frame)
+        if spot is not None:
+            return np.array([*spot, 0.0]), scale
+    if free.any():
+        return np.array([*centres[int(np.flatnonzero(free)[0])], 0.0]), 1.0
+    return np.array([*centres[int(np.argmax(np.where(framed, gap, -1.0)))], 0.0]), 1.0
+
+
+def _beside(size: tuple[float, float], a: np.ndarray, b: np.ndarray, obstacles: Obstacles,
+            inside: shapely.Geometry, frame: tuple[float, float, float, float],
+            avoid: shapely.Geometry | None):
+    """The places beside the claim ``a``–``b`` in first-fit order (:data:`ALONG`,
+    :data:`AWAY`, left first), and for each: inside ``inside``, in ``frame``, its gap to the
+    obstacles, over ``avoid``."""
     along = b - a
     normal = np.array([-along[1], along[0]]) / max(float(np.linalg.norm(along)), 1e-9)
     reach = float(np.linalg.norm(np.array(size, dtype=float) / 2))
@@ -48,21 +103,31 @@ def mark_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment
                      [reach + away for away in AWAY])
     rects = rects_at(centres, size)
     boxes = shapely.box(rects[:, 0], rects[:, 1], rects[:, 2], rects[:, 3])
-    obstacles = Obstacles(boxes=list(labels), segments=[(a, b), *edges])
-    gap = obstacles.gaps(rects)
-    left, bottom = within.x - within.width / 2, within.y - within.height / 2
-    framed = clear(centres, size, Obstacles(), 0.0,
-                   (left, bottom, left + within.width, bottom + within.height))
-    held = shapely.contains(inside, boxes)
-    # outside P, twice as far: a mark just past an edge seems to judge that edge
-    free = framed & (gap >= np.where(held, MARK_GAP, 2 * MARK_GAP))
+    framed = clear(centres, size, Obstacles(), 0.0, frame)
     shaded = (shapely.intersects(boxes, avoid) if avoid is not None and not avoid.is_empty
               else np.zeros(len(centres), dtype=bool))
-    if not free.any():
-        return np.array([*centres[int(np.argmax(np.where(framed, gap, -1.0)))], 0.0])
-    # the order of :func:`around` is the first-fit order: nearest, middle first, left first
-    best = min(np.flatnonzero(free), key=lambda k: (not held[k], bool(shaded[k]), k))
-    return np.array([*centres[best], 0.0])
+    return centres, shapely.contains(inside, boxes), framed, obstacles.gaps(rects), shaded
+
+
+def inside_spot(size: tuple[float, float], near: Point, obstacles: Obstacles,
+                inside: shapely.Geometry, frame: tuple[float, float, float, float]
+                ) -> np.ndarray | None:
+    """The centre of the place for a thing ``size`` wholly inside ``inside`` and in ``frame``,
+    nearest ``near`` on a grid of :data:`STEP` (:func:`metaphors.layout.grid`), that keeps
+    :data:`MARK_GAP` from the obstacles, else :data:`LEAST_GAP`; None if there is none."""
+    minx, miny, maxx, maxy = inside.bounds
+    area = (max(minx, frame[0]), max(miny, frame[1]), min(maxx, frame[2]), min(maxy, frame[3]))
+    centres = grid(area, size, STEP, near=np.asarray(near, dtype=float)[:2])
+    if not len(centres):
+        return None
+    rects = rects_at(centres, size)
+    held = shapely.contains(inside, shapely.box(rects[:, 0], rects[:, 1], rects[:, 2],
+                                                rects[:, 3]))
+    for gap in (MARK_GAP, LEAST_GAP):
+        ok = held & clear(centres, size, obstacles, gap, frame)
+        if ok.any():
+            return centres[int(np.argmax(ok))]
+    return None
 
 
 def area_of(mobject: Mobject, moved: Callable[[np.ndarray], np.ndarray] | None = None) -> Area:
@@ -78,8 +143,10 @@ def board_spot(board: Board, mark: Mobject, line: Mobject,
                moved: Callable[[np.ndarray], np.ndarray] | None = None) -> np.ndarray:
     """Where a run's verdict ``mark`` on the claim ``line`` goes on its board (:func:`mark_spot`):
     clear of the outline's edges (its holes' too: the largest ring is the outer one), the
-    diagonals drawn and the vertex labels.
-    ``moved``: where each point of the picture ends (a turn under way), None: as it is."""
+    diagonals drawn and the vertex labels; the mark made smaller if only that fits it inside
+    the outline (:func:`scaled_spot`).
+    ``moved``: where each point of the picture ends (a turn under way: the mark keeps its
+    size), None: as it is."""
     def end(p: np.ndarray) -> np.ndarray:
         return moved(p) if moved is not None else p
 
@@ -91,5 +158,9 @@ def board_spot(board: Board, mark: Mobject, line: Mobject,
     labels = [area_of(part, moved) for marker in board.markers.values()
               for part in marker.submobjects]
     inside = shapely.Polygon([p[:2] for p in rings[0]], [[p[:2] for p in r] for r in rings[1:]])
-    return mark_spot((mark.width, mark.height), (end(line.get_start()), end(line.get_end())),
-                     edges, labels, inside, board.box)
+    spot, scale = scaled_spot((mark.width, mark.height),
+                              (end(line.get_start()), end(line.get_end())), edges, labels,
+                              inside, board.box, scales=SCALES if moved is None else (1.0,))
+    if scale != 1.0:  # the picture as it is, not one turning: the turn moves the mark
+        mark.scale(scale)
+    return spot

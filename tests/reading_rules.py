@@ -691,8 +691,9 @@ def _label_boxes(marker: dict, *, direct: bool = False
 def _state_then(data: dict, last: dict[str, tuple[int, str, dict]], k: int,
                 name: str) -> dict | None:
     """The node ``name`` as play ``k`` shows it: its last record, or, when that record is a
-    turn's start (a turn records where it starts), the start of the turn back after ``k``,
-    or, never recorded again, as the graph's end has it."""
+    turn's start (a turn records where it starts), its next record after ``k`` where that
+    shows where it starts (a turn's, a transform's, a fade out's), or, never recorded again,
+    as the graph's end has it."""
     if name not in last:
         return None
     _, kind, node = last[name]
@@ -701,24 +702,30 @@ def _state_then(data: dict, last: dict[str, tuple[int, str, dict]], k: int,
     for play in data["plays"][k + 1:]:
         for later, then in (r for a in play["animations"] for r in _recorded(a)):
             if then.get("name") == name:
-                return then if later == "Turn" else None
+                return then if later not in INCOMING else None
     ends = [n for top in data.get("final", ()) for n in mobject_nodes(top) if n.get("name") == name]
     return ends[0] if ends else None
 
 
-def _marks_on_polygons(data: dict, names: tuple[str, ...]
+def _marks_on_polygons(data: dict, names: tuple[str, ...], *, settled: bool = False
                        ) -> Iterator[tuple[int, dict, dict | None, dict[str, tuple[int, str, dict]]]]:
     """(play, mark node, its polygon as the play shows it, the last records of the polygons
     and vertex markers) of each mark named in ``names`` coming in: the polygon is the last
     drawn before the mark (a turned picture's: as the turn back starts from it), the
-    analysis's for an analysis's mark."""
+    analysis's for an analysis's mark. ``settled``: also each later record of the mark that
+    shows where it stands (not a turn's, which records where the turn starts), each place
+    once: a turned picture's mark, placed again for the picture upright, as it leaves."""
     last: dict[str, tuple[int, str, dict]] = {}  # name: (play, animation type, node)
+    seen: set[tuple[str, tuple | None]] = set()
     for k, play in enumerate(data["plays"]):
         marks = []
         for kind, node in (r for a in play["animations"] for r in _recorded(a)):
             name = node.get("name") or ""
-            if name in names and kind in INCOMING:
-                marks.append(node)
+            if name in names and (kind in INCOMING or (settled and kind != "Turn")):
+                place = (name, _box_of(node))
+                if kind in INCOMING or place not in seen:
+                    marks.append(node)
+                seen.add(place)
             elif name in _POLYGONS or name.startswith("vertex:"):
                 last[name] = (k, kind, node)
         for mark in marks:
@@ -1497,9 +1504,10 @@ def labels_on_claims(data: dict, margin: float = 0.05) -> list[str]:
 
 # --- issue 22: a ✓ stands beside its claim inside P ---------------------------------------------
 
-#: the marks of a correct claim the analyses draw (a run's board may turn or shrink its
-#: polygon under the mark: its ticks are not judged here)
-_TICKS = ("analysis:tick",)
+#: the marks of a correct claim: an analysis's and a run's (:mod:`metaphors.basics`, placed
+#: by :mod:`metaphors.marks`). Not judged: the ✓ that begins a caption ("✓ BE is an inner
+#: diagonal"), which is the subtitle's, under the picture
+_TICKS = ("analysis:tick", "tick")
 
 
 def _luminance(colour: str) -> float:
@@ -1511,12 +1519,12 @@ def _luminance(colour: str) -> float:
 def bare_ticks(data: dict) -> list[str]:
     """Issue 22: the analyses' green ✓ marks that come in without their dark halo (a filled,
     thickly stroked silhouette in a dark colour, in the same play), as ``"play 61"``: green on
-    the green witness shading does not read."""
+    the green witness shading does not read. (A run's ✓ comes once its shading is gone.)"""
     found = []
     for k, play in enumerate(data["plays"]):
         came = [node for a in play["animations"] for kind, node in _recorded(a)
                 if kind in INCOMING]
-        ticks = [n for n in came if n.get("name") in _TICKS]
+        ticks = [n for n in came if n.get("name") == "analysis:tick"]
         halos = [n for n in came if n.get("name") == "analysis:tick:halo"
                  and (n.get("fill_opacity") or 0) >= 0.99 and (n.get("stroke_width") or 0) >= 4
                  and _luminance(n["fill"]) < 0.15 and _luminance(n["stroke"]) < 0.15]
@@ -1526,17 +1534,20 @@ def bare_ticks(data: dict) -> list[str]:
 
 
 def ticks_outside(data: dict) -> list[str]:
-    """The analyses' ✓ marks not wholly inside their polygon, as ``"play 60 analysis:tick:
-    0.83 outside P"`` (how far its box reaches out): a ✓ past an edge seems to judge that
-    edge, and a correct claim lies inside P, where there is room for its mark. The polygon
-    is the last drawn before the mark (:func:`_marks_on_polygons`)."""
+    """The ✓ marks (:data:`_TICKS`) not wholly inside their polygon, as ``"play 60
+    analysis:tick: 0.83 outside P"`` (how far its box reaches out): a ✓ past an edge seems
+    to judge that edge, and a correct claim lies inside P, where there is room for its mark.
+    The polygon is as the play shows it (:func:`_marks_on_polygons`): the last drawn before
+    the mark, or the ear clipping's fruit as it has shrunk; a ✓ on a turned picture is
+    judged as it comes in and again as it leaves, once the picture is upright."""
     from shapely.geometry import Point, Polygon
     from shapely.geometry import box as area
 
     found = []
-    for k, tick, polygon, _ in _marks_on_polygons(data, _TICKS):
+    for k, tick, polygon, _ in _marks_on_polygons(data, _TICKS, settled=True):
         box = _box_of(tick)
         if polygon is None or box is None:
+            found.append(f"play {k} {tick['name']}: no polygon drawn")
             continue
         shape = area(*box)
         region = Polygon(_corners(polygon))

@@ -72,6 +72,7 @@ from tests.reading_rules import (
     stale_call_lines,
     stale_endings,
     stale_lit_rows,
+    ticks_outside,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
@@ -302,6 +303,15 @@ def test_a_verdicts_mark_stands_clear_of_edges_and_labels(case):
     """Issue 22: a ✓ or ✗ keeps 2 % of the frame's height from every edge of its polygon
     and every vertex label (a ✓ on edge BC reads as judging BC)."""
     assert crowded_verdicts(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_correct_claims_tick_stands_inside_p(case):
+    """Issue 22: every ✓ of a claim that holds (a run's, an analysis's) stands wholly inside
+    its polygon, as it comes in and, on a turned picture, once upright again: a ✓ past an
+    edge seems to judge that edge (Divide and Conquer's stood in the notch between P's two
+    lobes, 0.80 outside P)."""
+    assert ticks_outside(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
