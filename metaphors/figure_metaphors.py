@@ -4,12 +4,16 @@ The card "Scaling: spilled water" (and the clock hand's, the sweeping line's) dr
 metaphor as a :class:`metaphors.figures.Figure` of kind ``metaphor``: the polygon, T, and the
 tool stopped at the vertex it picks — the circle of water grown from B, the hand turned from
 A, the line swept from B — with what it swept, in the colours of the lecture's analysis
-(:func:`metaphors.analysis.tool_drawing`: the one swept colour, the tool in its own). No red:
-that the swept part leaves P is what the pass on the counterexample shows, after the card.
+(:func:`metaphors.analysis.tool_drawing`: the one swept colour, the tool in its own). The
+card teaches the rule before its failure is shown: what the tool swept is shaded inside P
+only, for the legend's swept blue means inside P and its red outside P (a card's blue past
+an edge would say the opposite). That the swept part leaves P, in red, is what the pass on
+the counterexample shows, after the card.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import shapely
@@ -18,8 +22,10 @@ from manim import Polygon as MPolygon
 
 from metaphors.analysis import moment, tool_colour, tool_drawing
 from metaphors.drawing import Frame
+from metaphors.stage import region
 from metaphors.tags import tag
 from metaphors.theme import Theme
+from story.analysis import Point, inside
 from story.registry import entry
 
 #: what the card's figure says below it, by the heuristic's metaphor
@@ -56,14 +62,25 @@ def metaphor_parts(heuristic: str, polygon_spec: str, frame: Frame, theme: Theme
                      stroke_width=theme.thin_stroke, fill_opacity=0), "called", "figure:T")
     if seen.motion is None:  # a polygon handed to the lecture may leave T empty
         return [t], [], "no candidate in T: AC is the diagonal"
-    tool = tag(tool_drawing(Sheet(frame, theme), seen.motion, 1.0, tool_colour(theme, heuristic)),
+    sheet = Sheet(frame, theme)
+    tool = tag(tool_drawing(sheet, seen.motion, 1.0, tool_colour(theme, heuristic)),
                "argument", "figure:tool")
+    _swept_inside(tool, sheet, seen.motion.swept(1.0), seen.points)
     if within is not None:
         _clip_beyond(tool, within)
     where = dict(zip(seen.labels, seen.points, strict=True))
     pick = tag(Dot(frame.to_scene(where[seen.pick]), radius=0.11, color=theme.argument),
                "argument", "figure:candidate")
     return [t, tool], [pick], SAID[metaphor].format(pick=seen.pick)
+
+
+def _swept_inside(tool: VGroup, sheet: Sheet, swept: shapely.Geometry,
+                  polygon: Sequence[Point]) -> None:
+    """The tool's swept region (its part named ``swept``) shaded inside ``polygon`` only."""
+    theme = sheet.theme
+    tool.submobjects = [region(sheet, inside(swept, polygon), theme.swept, 0.3, "swept",
+                               "argument") if part.name == "swept" else part
+                        for part in tool.submobjects]
 
 
 def _clip_beyond(tool: VGroup, within: Bounds) -> None:

@@ -1314,11 +1314,19 @@ def labels_under_faces(data: dict) -> list[str]:
 
 # --- issue 22 item 4: the correction stays inside P ------------------------------------------------
 
-#: the rising water of Correct Scaling (a run's and an analysis's): what a correction shows
-#: in the water's colour, which the legend keeps for what is inside P
-_RISING = ("flood",)
 #: how much of the water may lie outside its polygon on screen (float clipping's slivers)
 MOST_WATER_OUTSIDE = 1e-3
+#: the polygons a metaphor's shading is drawn on: a run's, an analysis's, a card's figure's
+_PICTURES = (*_POLYGONS, "figure:polygon")
+#: the least corners of a water shape on one circle round a vertex for it to be spilt water
+_DISK_CORNERS = 12
+
+
+def _colour(name: str) -> str:
+    """A colour of the legend (:data:`metaphors.theme.THEME`) as the graph writes it."""
+    from metaphors.theme import THEME
+
+    return str(getattr(THEME, name)).upper()
 
 
 def _paths(node: dict) -> list[list[tuple[float, float]]]:
@@ -1334,30 +1342,122 @@ def _paths(node: dict) -> list[list[tuple[float, float]]]:
     return [p for p in paths if len(p) >= 4]
 
 
+def _filled_in(node: dict, colours: set[str]) -> bool:
+    return (node.get("fill") or "").upper() in colours and (node.get("fill_opacity") or 0) > 0 \
+        and bool(node.get("points"))
+
+
+def _shaded(anim: dict, colours: set[str]) -> Iterator[dict]:
+    """The parts of an animation's mobjects (and targets) filled in one of ``colours``, but
+    the legend's swatches (beside the picture, not on it)."""
+    def walk(node: dict) -> Iterator[dict]:
+        if (node.get("name") or "").startswith("legend:"):
+            return
+        if _filled_in(node, colours):
+            yield node
+        for child in node.get("submobjects", ()):
+            yield from walk(child)
+
+    for _kind, node in _recorded(anim):
+        yield from walk(node)
+
+
+def _spilt(corners: list[tuple[float, float]], polygon: list[tuple[float, float]]) -> bool:
+    """Whether a water shape is water spilt at a vertex (Scaling's): a disk round one of the
+    polygon's corners, cut only by straight lines (where the picture's part of the screen
+    ends): at least :data:`_DISK_CORNERS` of its corners on one circle round it, none
+    beyond."""
+    import math
+
+    for x, y in polygon:
+        far = [math.hypot(px - x, py - y) for px, py in corners]
+        radius = max(far)
+        if radius > 1e-6 and sum(r > radius * 0.995 for r in far) >= _DISK_CORNERS:
+            return True
+    return False
+
+
 def water_outside_polygon(data: dict) -> list[str]:
-    """The rising water (:data:`_RISING`) drawn outside the polygon it rises in, as ``"flood:
-    0.42 outside P"`` (square units on screen): Correct Scaling's water is shown inside P,
-    or the blue would say "inside" where the legend's red says "outside P"."""
+    """The water (any shape filled in the legend's water colour, whatever its name: the
+    rising water of Correct Scaling, a run's and an analysis's) drawn outside the polygon it
+    is drawn on (the last drawn, :data:`_PICTURES`), as ``"play 62 FadeOut Line: 0.42
+    outside P"`` (square units on screen, the most of each shape name): the corrections'
+    water is shown inside P, or the blue would say "inside" where the legend's red says
+    "outside P". Not judged: water spilt at a vertex (:func:`_spilt`), Scaling's disk, which
+    spreads over P's edges by design (its metaphor; the analysis turns the part outside P
+    red), and the legend's swatches."""
     from shapely.geometry import Polygon as Region
 
-    polygon = None
-    found = {}
-    for play in data["plays"]:
+    water = {_colour("water")}
+    polygon = corners = None
+    found: dict[str, tuple[float, str]] = {}
+    for k, play in enumerate(data["plays"]):
         for anim in play["animations"]:
             node = anim.get("mobject", {})
-            if node.get("name") in _POLYGONS and anim.get("type") in INCOMING \
+            if node.get("name") in _PICTURES and anim.get("type") in INCOMING \
                     and node.get("points"):
-                polygon = Region(_corners(node)).buffer(0)
-            for key in ("mobject", "target"):
-                for part in mobject_nodes(anim.get(key, {})):
-                    if part.get("name") not in _RISING or polygon is None:
+                corners = _corners(node)
+                polygon = Region(corners).buffer(0)
+            if polygon is None:
+                continue
+            for part in _shaded(anim, water):
+                for piece in (c for n in mobject_nodes(part) for c in _paths(n)):
+                    if _spilt(piece, corners):
                         continue
-                    for corners in (c for piece in mobject_nodes(part) for c in _paths(piece)):
-                        water = Region(corners).buffer(0)
-                        spilt = water.difference(polygon).area
-                        if spilt > MOST_WATER_OUTSIDE:
-                            found[part["name"]] = max(found.get(part["name"], 0.0), spilt)
-    return [f"{name}: {area:.2f} outside P" for name, area in sorted(found.items())]
+                    spilt = Region(piece).buffer(0).difference(polygon).area
+                    name = part.get("name") or part.get("type") or "?"
+                    if spilt > MOST_WATER_OUTSIDE and spilt > found.get(name, (0.0, ""))[0]:
+                        found[name] = (spilt, f"play {k} {anim['type']} {name}")
+    return [f"{where}: {area:.2f} outside P" for area, where in sorted(found.values(),
+                                                                         key=lambda f: f[1])]
+
+
+#: how much of a swept region may lie outside its polygon, not turned red (slivers)
+MOST_SWEPT_OUTSIDE = 1e-2
+
+
+def swept_outside_polygon(data: dict) -> list[str]:
+    """The swept regions (filled in the legend's swept colour, whatever their name: what the
+    water, the hand or the line swept) whose part outside the polygon they are drawn on
+    (:data:`_PICTURES`: a run's, an analysis's, a card's figure's) is never shown red in that
+    picture, as ``"play 63 figure:polygon: 1.20 outside P"`` (square units on screen, for
+    each picture): the legend's swept blue means inside, red outside P. The wrong
+    heuristic's pass shows the swept part outside P pale blue while the tool moves and red
+    once it stops (a red shape over it); a card's figure comes before that pass and shows
+    the swept region inside P only. A picture ends when the next polygon comes in."""
+    from shapely.geometry import Polygon as Region
+    from shapely.ops import unary_union
+
+    swept, red = {_colour("swept")}, {_colour("rejected")}
+    found = []
+    picture: tuple[int, str] | None = None
+    polygon = None
+    outside: list = []
+    shown_red: list = []
+
+    def close() -> None:
+        if picture is not None and outside:
+            left = unary_union(outside).difference(unary_union(shown_red)).area if shown_red \
+                else unary_union(outside).area
+            if left > MOST_SWEPT_OUTSIDE:
+                found.append(f"play {picture[0]} {picture[1]}: {left:.2f} outside P")
+
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if node.get("name") in _PICTURES and anim.get("type") in INCOMING \
+                    and node.get("points"):
+                close()
+                picture, polygon, outside, shown_red = (k, node["name"]), \
+                    Region(_corners(node)).buffer(0), [], []
+            if polygon is None:
+                continue
+            for part in _shaded(anim, swept):
+                outside += [Region(c).buffer(0).difference(polygon) for c in _paths(part)]
+            for part in _shaded(anim, red):
+                shown_red += [Region(c).buffer(0) for c in _paths(part)]
+    close()
+    return found
 
 
 #: the drawn pieces of a moving tool's line (:func:`metaphors.sweep.drawn_segment`)

@@ -53,6 +53,7 @@ from tests.reading_rules import (
     small_texts,
     stale_endings,
     stale_lit_rows,
+    swept_outside_polygon,
     ticks_outside,
     unreadable_cues,
     unspoken_words,
@@ -540,8 +541,12 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_under_the_fall(data) == [], chapter.slug
     # issue 22: no label left on ear clipping's red test triangle, unless on a dark card
     assert labels_under_test_triangles(data) == [], chapter.slug
-    # issue 22 item 4: the correction's rising water inside P
+    # issue 22 item 4: the correction's rising water inside P (found by its colour: chapter
+    # 2's analysis drew it as an unnamed region, 1.80 outside P before the fix)
     assert water_outside_polygon(data) == [], chapter.slug
+    # a swept region's part outside P is shown red, or not at all: chapter 2's cards shaded
+    # it in the swept blue (1.05, 0.84 and 1.03 outside P)
+    assert swept_outside_polygon(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():

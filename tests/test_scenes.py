@@ -72,6 +72,7 @@ from tests.reading_rules import (
     stale_call_lines,
     stale_endings,
     stale_lit_rows,
+    swept_outside_polygon,
     ticks_outside,
     unreadable_cues,
     unspoken_words,
@@ -454,8 +455,10 @@ def test_no_label_is_under_the_balls_fall_on_the_counterexample():
 @pytest.mark.parametrize("case", _params(SCENES))
 def test_the_rising_water_stays_inside_p(case):
     """Issue 22 item 4: Correct Scaling's rising water is drawn inside P only; blue water
-    outside P would contradict the legend (red: outside P)."""
+    outside P would contradict the legend (red: outside P). The water is found by its colour,
+    whatever its name; and a swept region's part outside P is red, or not drawn."""
     assert water_outside_polygon(graph(case).data) == [], case.id
+    assert swept_outside_polygon(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))

@@ -1,13 +1,17 @@
 """The reading rules on the metaphors' moving tools can fail: each is tried on a small graph
 made by hand with the defect a viewer saw (a note crossed by the sweep, the clock's face over
-B, a line through a label, Correct Scaling's water outside P) and on the same graph mended."""
+B, a line through a label, Correct Scaling's water outside P, a card's swept blue outside P)
+and on the same graph mended."""
 
 from __future__ import annotations
+
+import math
 
 from tests.reading_rules import (
     labels_under_faces,
     labels_under_tools,
     notes_under_moving_tools,
+    swept_outside_polygon,
     water_outside_polygon,
 )
 
@@ -90,14 +94,69 @@ def test_a_line_through_a_label_is_found():
     assert labels_under_tools(_graph(seen, [around])) == []
 
 
-def test_rising_water_outside_the_polygon_is_found():
+WATER, SWEPT, RED = "#3AA0FF", "#8FC1FF", "#EF4B4B"  # metaphors.theme.THEME's, as written
+
+
+def _filled(name: str, colour: str, *corners: tuple[float, float]) -> dict:
+    return {"name": name, "fill": colour, "fill_opacity": 0.3, "points": _closed(*corners)}
+
+
+def test_water_outside_the_polygon_is_found_whatever_its_name():
+    """The old chapter 2's rising water was an analysis's region whose placeholder line had
+    become it (``become`` keeps the type and name): a "Line" in a group "swept", in water
+    colour, recorded as it faded out; a rule matching the name "flood" missed it."""
     seen = [{"type": "Create", "mobject": POLYGON}]
 
-    def water(*corners):
-        return {"type": "Transform", "mobject": {"name": "flood", "points": []},
-                "target": {"name": "flood", "points": _closed(*corners)}}
+    def fading(shape: dict) -> dict:
+        return {"type": "FadeOut", "mobject": {"name": "analysis:tool", "submobjects": [
+            {"name": "swept", "submobjects": [shape]}]}}
 
-    spilt = water((3, 3), (5, 3), (5, 5), (3, 5))  # 3 of its 4 square units outside P
-    inside = water((1, 1), (3, 1), (3, 3))
-    assert water_outside_polygon(_graph(seen, [spilt])) == ["flood: 3.00 outside P"]
+    astray = fading(_filled("Line", WATER, (3, 3), (5, 3), (5, 5), (3, 5)))  # 3 of 4 outside
+    inside = fading(_filled("Line", WATER, (1, 1), (3, 1), (3, 3)))
+    grown = {"type": "Transform", "mobject": {"name": "flood", "points": []},
+             "target": _filled("flood", WATER, (3, 3), (5, 3), (5, 5), (3, 5))}
+    assert water_outside_polygon(_graph(seen, [astray])) == ["play 1 FadeOut Line: 3.00 outside P"]
+    assert water_outside_polygon(_graph(seen, [grown])) == ["play 1 Transform flood: 3.00 outside P"]
     assert water_outside_polygon(_graph(seen, [inside])) == []
+    # not water: another colour; the legend's swatch beside the picture
+    red = fading(_filled("Line", RED, (3, 3), (5, 3), (5, 5)))
+    assert water_outside_polygon(_graph(seen, [red])) == []
+    swatch = {"type": "FadeIn", "mobject": {"name": "legend:water", "submobjects": [
+        _filled("Square", WATER, (6, 6), (6.3, 6), (6.3, 6.3), (6, 6.3))]}}
+    assert water_outside_polygon(_graph(seen, [swatch])) == []
+
+
+def test_water_spilt_at_a_vertex_spreads_over_the_edges():
+    """Scaling's disk round B is its metaphor (the analysis turns its part outside P red);
+    a disk round a point that is no vertex of P is judged."""
+    def disk(x: float, y: float) -> dict:
+        corners = [(x + 2 * math.cos(k * math.pi / 32), y + 2 * math.sin(k * math.pi / 32))
+                   for k in range(64)]
+        return {"type": "FadeOut", "mobject": _filled("water", WATER, *corners)}
+
+    seen = [{"type": "Create", "mobject": POLYGON}]
+    assert water_outside_polygon(_graph(seen, [disk(0, 0)])) == []
+    assert water_outside_polygon(_graph(seen, [disk(0.5, 0.5)])) \
+        == ["play 1 FadeOut water: 7.18 outside P"]
+
+
+def test_a_swept_region_outside_p_must_turn_red():
+    """A card's figure shaded what the hand swept in the swept blue, outside P too; the
+    analysis shows that part red once the tool stops."""
+    card = [{"type": "FadeIn", "mobject": {**POLYGON, "name": "figure:polygon"}}]
+    swept = {"type": "FadeIn", "mobject": {"name": "figure:tool", "submobjects": [
+        _filled("Polygon", SWEPT, (3, 3), (5, 3), (5, 5), (3, 5))]}}
+    red = {"type": "FadeIn", "mobject": _filled("analysis:outside", RED, (4, 3), (5, 3), (5, 5),
+                                                  (3, 5), (3, 4), (4, 4))}
+    clipped = {"type": "FadeIn", "mobject": {"name": "figure:tool", "submobjects": [
+        _filled("Polygon", SWEPT, (3, 3), (4, 3), (4, 4), (3, 4))]}}
+    assert swept_outside_polygon(_graph(card, [swept])) \
+        == ["play 0 figure:polygon: 3.00 outside P"]
+    assert swept_outside_polygon(_graph(card, [clipped])) == []
+    # an analysis: the part outside P turned red, all of it or not
+    seen = [{"type": "FadeIn", "mobject": {**POLYGON, "name": "analysis:polygon"}}]
+    assert swept_outside_polygon(_graph(seen, [swept], [red])) == []
+    half = {"type": "FadeIn", "mobject": _filled("analysis:outside", RED, (4, 3), (5, 3),
+                                                   (5, 5), (4, 5))}
+    assert swept_outside_polygon(_graph(seen, [swept], [half])) \
+        == ["play 0 analysis:polygon: 1.00 outside P"]
