@@ -142,6 +142,23 @@ def around(anchors: Sequence[XY], directions: Sequence[XY], distances: Sequence[
                      for r in distances for p in points for u in units]).reshape(-1, 2)
 
 
+def next_to(anchors: Sequence[XY], directions: Sequence[XY], gaps: Sequence[float],
+            size: tuple[float, float]) -> np.ndarray:
+    """Candidate centres for a thing ``size`` (width, height) beside anchors as manim's
+    ``next_to`` puts it: ``gap`` from the anchor along each direction (unit steps on the axes:
+    a diagonal puts its corner there, a side its side), in first-fit order: the nearest gap
+    first, then anchor by anchor, then direction by direction.
+
+    >>> next_to([(0, 0)], [(1, 0), (1, 1)], [0.5], size=(1.0, 0.2)).tolist()
+    [[1.0, 0.0], [1.0, 0.6]]
+    """
+    points = [np.asarray(a, dtype=float)[:2] for a in anchors]
+    steps = [np.asarray(d, dtype=float)[:2] for d in directions]
+    half = np.asarray(size, dtype=float) / 2
+    return np.array([p + d * (gap + half) for gap in gaps for p in points for d in steps]
+                    ).reshape(-1, 2)
+
+
 def grid(area: Rect, size: tuple[float, float], step: float = PLACE_STEP,
          near: XY | None = None) -> np.ndarray:
     """Candidate centres on a grid of ``step`` for a thing ``size`` that stays in ``area``, in

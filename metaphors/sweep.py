@@ -35,7 +35,7 @@ from manim import (
 )
 
 from metaphors.board import Board
-from metaphors.layout import METAPHOR
+from metaphors.layout import METAPHOR, Obstacles, clear, next_to, rects_at, ring_edges
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -222,37 +222,50 @@ def light(board: Board, label: str, first: bool, axis: Line,
     return kept, anims
 
 
+#: how far a note stands from the point it names (its side's or corner's gap), nearest first
+NOTE_AWAY = (0.12, 0.45, 0.8)
+#: the directions round that point a note is tried in: above first, then clockwise
+NOTE_SIDES = ((0, 1), (1, 1), (1, 0), (1, -1), (0, -1), (-1, -1), (-1, 0), (-1, 1))
+
+
 def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineString,
            ahead: shapely.Geometry | None = None) -> None:
-    """Put a note beside a point: on screen, clear of the vertex labels and of what the tool
-    will still sweep over (``ahead``), crossed by no edge, off the polygon, T and the tool
-    if it can."""
-    spots = [(np.array(d, dtype=float), buff) for buff in (0.12, 0.45, 0.8) for d in
-             ((0, 1, 0), (1, 1, 0), (1, 0, 0), (1, -1, 0), (0, -1, 0), (-1, -1, 0), (-1, 0, 0),
-              (-1, 1, 0))]
-    marks = [m.get_center() for marker in board.markers.values() for m in marker]
-    # a label's box grown by a word's gap: a note nearer than that reads as one text with it
-    labels = shapely.union_all([_box(marker[-1]).buffer(NOTE_GAP, join_style="mitre")
-                                for marker in board.markers.values()])
-    left, right = -config.frame_width / 2 + 0.1, METAPHOR.x + METAPHOR.width / 2 + 0.4
-    shapes = [outline(board.outline), outline(board.objects.get("T")), tool.buffer(0.08)]
-    busy = shapely.union_all([g for g in shapes if g is not None])
-    swept = (ahead if ahead is not None else shapely.GeometryCollection()).buffer(NOTE_GAP / 2)
-    # the edges drawn: a text an edge runs through is worse to read than one over a fill
-    edges = shapely.union_all([g.boundary for g in shapes[:2] if g is not None])
+    """Put a note beside a point, in the first place round it (:data:`NOTE_SIDES`, nearest
+    :data:`NOTE_AWAY` first; :func:`metaphors.layout.next_to`) that is on screen, keeps
+    :data:`NOTE_GAP` from every vertex label (nearer, the two read as one text), half that
+    from what the tool will still sweep over (``ahead``: no moving shape crosses a text) and
+    is crossed by no edge (the polygon's, T's: a text an edge runs through is worse to read
+    than one over a fill) — of those, the one least over the polygon, T and the tool. Where
+    no place is all of these, the last wish goes first: edges, then the path ahead, then the
+    labels (:func:`metaphors.layout.clear`)."""
+    size = (note.width, note.height)
+    centres = next_to([near], NOTE_SIDES, NOTE_AWAY, size)
+    rects = rects_at(centres, size)
+    screen = (-config.frame_width / 2 + 0.1, -config.frame_height / 2,
+              METAPHOR.x + METAPHOR.width / 2 + 0.4, config.frame_height / 2)
+    shapes = [g for g in (outline(board.outline), outline(board.objects.get("T"))) if g is not None]
+    edges = [edge for g in shapes for ring in _rings(g) for edge in ring_edges(ring[:-1])]
+    labels = [_box(marker[-1]).bounds for marker in board.markers.values()]
+    wishes = [clear(centres, size, Obstacles(), 0.0, screen),
+              clear(centres, size, Obstacles(boxes=labels), NOTE_GAP),
+              clear(centres, size, Obstacles(shapes=[ahead] if ahead is not None else []),
+                    NOTE_GAP / 2),
+              clear(centres, size, Obstacles(segments=edges), 1e-6)]
+    busy = shapely.union_all([*shapes, tool.buffer(0.08)])
+    covered = np.round(shapely.area(shapely.intersection(
+        shapely.box(rects[:, 0], rects[:, 1], rects[:, 2], rects[:, 3]), busy)), 3)
+    for kept in range(len(wishes), -1, -1):
+        ok = np.logical_and.reduce([*wishes[:kept], np.ones(len(centres), dtype=bool)])
+        if ok.any():
+            best = min(np.flatnonzero(ok), key=lambda k: (covered[k], k))
+            note.move_to(_3d(centres[best]))
+            return
 
-    def score(spot):
-        note.next_to(near, direction=spot[0], buff=spot[1])
-        box = _box(note)
-        x0, _, x1, _ = box.bounds
-        on_screen = x0 >= left and x1 <= right
-        covered = box.intersection(busy).area
-        clearance = min(float(np.linalg.norm(note.get_center() - m)) for m in marks)
-        return (on_screen, not box.intersects(labels), not box.intersects(swept),
-                not box.intersects(edges), -round(covered, 3), min(clearance, 0.6), -spot[1])
 
-    best = max(spots, key=score)
-    note.next_to(near, direction=best[0], buff=best[1])
+def _rings(shape: shapely.Geometry) -> list[list[tuple[float, float]]]:
+    """The rings (outer and holes) of a polygon's every part, each closed."""
+    return [list(ring.coords) for part in shapely.get_parts(shape) if part.geom_type == "Polygon"
+            for ring in (part.exterior, *part.interiors)]
 
 
 def _box(mobject: Mobject) -> shapely.Polygon:
