@@ -737,13 +737,14 @@ def crowded_verdicts(data: dict) -> list[str]:
     """The verdicts' marks (✓, ✗) that come nearer than :data:`LEAST_MARK_GAP` to an edge of
     their polygon or to one of its vertex labels, as ``"play 38 tick: 0.05 from edge …"``;
     a mark whose polygon cannot be found is reported too. The polygon and the labels are the
-    last drawn before the mark (a turned picture's: as the turn back starts from it)."""
+    last drawn before the mark (a turned picture's: as the turn back starts from it); a mark
+    on a turned picture is judged again where it stands once the picture is upright."""
     import numpy as np
     from shapely.geometry import LineString
     from shapely.geometry import box as area
 
     found = []
-    for k, mark, polygon, last in _marks_on_polygons(data, _MARKS):
+    for k, mark, polygon, last in _marks_on_polygons(data, _MARKS, settled=True):
         box = _box_of(mark)
         if polygon is None or box is None:
             found.append(f"play {k} {mark['name']}: no polygon drawn")
