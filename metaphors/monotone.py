@@ -156,13 +156,14 @@ def classify(board: Board, beat: Classify) -> None:
     anims: list[FadeIn | Indicate | Transform | Create] = [Indicate(board.markers[data.vertex])]
     if place is not None:  # None: nowhere near enough, no word (the caption names the kind)
         anims.append(FadeIn(kind.move_to(place)))
-        board.leaving.append(kind)  # up while its caption is read: it goes with the next words
     if "sweep" in board.objects:
         anims.append(Transform(board.objects["sweep"], line))
     else:
         board.keep("sweep", line)
         anims.append(Create(line))
     board.play(beat, *anims, run_time=0.8)
+    if place is not None:  # up while its caption is read: it goes with the next beat's words
+        board.leaving.append(kind)
 
 
 def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:

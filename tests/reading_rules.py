@@ -1081,29 +1081,34 @@ def fleeting_kind_words(data: dict) -> list[str]:
     """Issue 22: the monotone partition's kind words gone before their caption (the one
     that names their vertex, ``"L: … a start vertex"``) has been read: up less than
     :data:`story.reading.LEAST_CUE` seconds, as ``"'start' up 0.28 s"`` (it faded out at
-    once, while its caption stayed three seconds). A kind word of a summary's fast steps,
-    whose caption names no vertex first, may go as fast as its step."""
+    once, while its caption stayed three seconds); or left over when the next comes in, as
+    ``"'start' left over"`` (one word at a time). A kind word of a summary's fast steps,
+    whose caption names no vertex first, may go as fast as its step. A word is known by its
+    text and box."""
     from story.reading import LEAST_CUE
 
     found, now, caption = [], 0.0, ""
-    up: list[tuple[str, float, bool]] = []  # (word, since, its caption names its vertex)
+    up: dict[tuple, tuple[float, bool]] = {}  # (word, box) -> (since, its caption names its vertex)
     for play in data["plays"]:
         caption = play.get("subcaption") or caption
-        gone = [a for a in play["animations"] if a.get("type") in OUTGOING
-                and any(p.get("name") in _KIND_WORDS for p in mobject_nodes(a.get("mobject", {})))]
-        if gone:
-            found += [f"{w!r} up {now - since:.2f} s" for w, since, named in up
-                      if named and now - since < LEAST_CUE - 1e-6]
-            up = []
-        for anim in play["animations"]:
-            node = anim.get("mobject", {})
-            if anim.get("type") not in INCOMING:
-                continue
-            flashed = {a["mobject"]["name"].removeprefix("vertex:") for a in play["animations"]
-                       if a.get("type") == "Indicate"
-                       and (a.get("mobject", {}).get("name") or "").startswith("vertex:")}
-            up += [(p["text"], now, any(caption.startswith(f"{v}:") for v in flashed))
-                   for p in mobject_nodes(node) if p.get("name") in _KIND_WORDS and p.get("text")]
+        flashed = {a["mobject"]["name"].removeprefix("vertex:") for a in play["animations"]
+                   if a.get("type") == "Indicate"
+                   and (a.get("mobject", {}).get("name") or "").startswith("vertex:")}
+        for going in (True, False):  # what goes, then what comes
+            for anim in play["animations"]:
+                if anim.get("type") not in (OUTGOING if going else INCOMING):
+                    continue
+                for p in mobject_nodes(anim.get("mobject", {})):
+                    if p.get("name") not in _KIND_WORDS or not p.get("box"):
+                        continue
+                    key = (p.get("text"), tuple(p["box"]))
+                    if going and key in up:
+                        since, named = up.pop(key)
+                        if named and now - since < LEAST_CUE - 1e-6:
+                            found.append(f"{key[0]!r} up {now - since:.2f} s")
+                    elif not going:
+                        found += [f"{k[0]!r} left over" for k in up]
+                        up[key] = (now, any(caption.startswith(f"{v}:") for v in flashed))
         now += play.get("run_time") or 0.0
     return found
 
