@@ -76,8 +76,9 @@ KIND_GAPS = (0.18, 0.12)
 #: 0.6 (7.5 % of the frame's height) beside it, else 1.0 where a crowded vertex (the left-most,
 #: at the frame's margin) has no room nearer; farther, it is read as nobody's, and none is shown
 KIND_REACH = (0.6, 1.0)
-#: every other vertex's dot stands at least this many times as far from the kind word as its
-#: own: the word is read as its vertex's ("start" between A and L was read as L's)
+#: every other vertex's dot and label stand at least this many times as far from the kind word
+#: as its own dot: the word is read as its vertex's ("start" between A and L was read as L's,
+#: "regular" between B and b₁'s label as b₁'s)
 KIND_OWN = 1.5
 #: each board's place for its stack (left, top, and whether it is a row), found once a run
 _PLACES: weakref.WeakKeyDictionary[Board, tuple[float, float, bool]] = (
@@ -131,7 +132,8 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     own = Obstacles(dots=[(*dot, 0.0)]).gaps(rects_at(centres, size))
     order = np.argsort(np.round(own, 6), kind="stable")  # the nearest first
     centres, own = centres[order], own[order]
-    others = Obstacles(dots=[(*m[0].get_center()[:2], 0.0) for v, m in board.markers.items()
+    others = Obstacles(boxes=[area_of(m[-1]) for v, m in board.markers.items() if v != vertex],
+                       dots=[(*m[0].get_center()[:2], 0.0) for v, m in board.markers.items()
                              if v != vertex])
     ours = clear(centres, size, others, KIND_OWN * own)
     obstacles = Obstacles(boxes=boxes, segments=edges, dots=dots)

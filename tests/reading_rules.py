@@ -1045,22 +1045,24 @@ def _dot_centres(node: dict) -> Iterator[tuple[str, tuple[float, float]]]:
 def stray_kind_words(data: dict) -> list[str]:
     """Issue 22: the monotone partition's kind words not beside their own vertex (the one the
     play flashes, Indicate): farther than :data:`KIND_FARTHEST` from its dot, as
-    ``"'regular' for B 1.4 away"``, or with another vertex's dot nearer than
-    :data:`KIND_OWN` times its own, as ``"'start' for A nearer L"``. The dots are those of
-    the polygon drawn last, where they were last drawn."""
+    ``"'regular' for B 1.4 away"``, or with another vertex's dot or label nearer than
+    :data:`KIND_OWN` times its own dot, as ``"'start' for A nearer L"``. The dots and labels
+    are those of the polygon drawn last, where they were last drawn."""
     from shapely.geometry import Point
     from shapely.geometry import box as rectangle
 
     dots: dict[str, tuple[float, float]] = {}
+    labels: dict[str, tuple[float, float, float, float]] = {}
     found = []
     for play in data["plays"]:
         words, own = [], set()
         for anim in play["animations"]:
             node = anim.get("mobject", {})
             if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
-                dots = {}
+                dots, labels = {}, {}
             for key in ("mobject", "target"):
                 dots.update(dict(_dot_centres(anim.get(key, {}))))
+                labels.update(dict(_named_label_boxes(anim.get(key, {}))))
             if anim.get("type") == "Indicate" and (node.get("name") or "").startswith("vertex:"):
                 own.add(node["name"].removeprefix("vertex:"))
             if anim.get("type") in INCOMING:
@@ -1072,8 +1074,10 @@ def stray_kind_words(data: dict) -> list[str]:
                 gap = shape.distance(Point(dots[v]))
                 if gap > KIND_FARTHEST + 0.01:  # the graph rounds boxes to 0.001
                     found.append(f"{word['text']!r} for {v} {gap:.1f} away")
-                found += [f"{word['text']!r} for {v} nearer {w}" for w, at in sorted(dots.items())
-                          if w != v and shape.distance(Point(at)) < KIND_OWN * gap]
+                marks = [(w, Point(at)) for w, at in dots.items()]
+                marks += [(w, rectangle(*b)) for w, b in labels.items()]
+                found += [f"{word['text']!r} for {v} nearer {w}" for w, mark in sorted(
+                    marks, key=lambda m: m[0]) if w != v and shape.distance(mark) < KIND_OWN * gap]
     return sorted(set(found))
 
 
