@@ -786,9 +786,11 @@ def _claims_made(play: dict, made: int) -> int:
 
 def _classified(play: dict) -> list[str]:
     """The vertices a play shows the kind of (the monotone sweep: a kind comes in beside the
+    vertex it indicates, or, where no place beside it is its own, the sweep line moves to the
     vertex it indicates), by their labels."""
     names = [(a["type"], (a.get("mobject") or {}).get("name") or "") for a in play["animations"]]
-    if not any(kind in INCOMING and name == "kind" for kind, name in names):
+    if not any(kind in INCOMING and name == "kind" for kind, name in names) and not any(
+            kind in ("Transform", "Create") and name == "sweep" for kind, name in names):
         return []
     return [name.removeprefix("vertex:") for kind, name in names
             if kind == "Indicate" and name.startswith("vertex:")]
