@@ -89,6 +89,9 @@ class Board:
         self.caption = ""  # the caption of this board's subtitle
         # the subtitle a beat replaces, cut once the beat's caption shows
         self.outgoing: Mobject | None = None
+        # notes of a beat that stay up while its caption is read and go with the next beat's
+        # words (the monotone sweep's kind word)
+        self.leaving: list[Mobject] = []
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
         # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood,
@@ -131,7 +134,9 @@ class Board:
         busy = {id(getattr(a, "mobject", None)) for a in anims}
         recolour, after = self._recolour(beat.roles, busy)
         action = [*anims, *self.panel.follow_roles(beat), *recolour]
-        words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption)]
+        words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
+                 *(FadeOut(m) for m in self.leaving)]
+        self.leaving = []
         total = max(0.1, run_time * beat.pace)
         # a new caption waits until the one before it has been read
         caption = self.captions.show(beat.caption, total) if beat.caption != self.caption else {}

@@ -23,7 +23,6 @@ from manim import (
     DashedLine,
     Dot,
     FadeIn,
-    FadeOut,
     Indicate,
     Line,
     Transform,
@@ -47,11 +46,12 @@ from metaphors.layout import (
     Box,
     Obstacles,
     Segment,
-    first_clear,
+    clear,
     free_place,
+    grid,
+    rects_at,
     ring_edges,
 )
-from metaphors.layout import around as round_about
 from metaphors.marks import area_of
 from metaphors.performing import Performances, act, performs
 from metaphors.sweep import around_labels, label_gaps
@@ -72,11 +72,14 @@ SWEEP_WIDTH = 5.8
 #: largest that fits (scene units): nearer than 0.12 to a label, the two read as one word
 #: ("Gregular"); 0.18 keeps 0.12 diagonally off a label's corner too
 KIND_GAPS = (0.18, 0.12)
-#: the directions tried round a vertex for its kind word: right, left, then above, below
-KIND_DIRECTIONS = tuple(np.array(d) / np.linalg.norm(d) for d in
-                        ((1, 1), (1, -1), (-1, 1), (-1, -1), (0, 1), (0, -1), (1, 0), (-1, 0)))
-#: the distances tried from the vertex's dot to the kind word's box (scene units)
-KIND_AWAY = tuple(np.round(np.arange(0.1, 1.5, 0.05), 6))
+#: the farthest a kind word's box stands from its vertex's dot (scene units), tried in turn:
+#: 0.6 (7.5 % of the frame's height) beside it, else 1.0 where a crowded vertex (the left-most,
+#: at the frame's margin) has no room nearer; farther, it is read as nobody's, and none is shown
+KIND_REACH = (0.6, 1.0)
+#: every other vertex's dot and label stand at least this many times as far from the kind word
+#: as its own dot: the word is read as its vertex's ("start" between A and L was read as L's,
+#: "regular" between B and b₁'s label as b₁'s)
+KIND_OWN = 1.5
 #: each board's place for its stack (left, top, and whether it is a row), found once a run
 _PLACES: weakref.WeakKeyDictionary[Board, tuple[float, float, bool]] = (
     weakref.WeakKeyDictionary())
@@ -104,11 +107,12 @@ def _sweep_span(board: Board, y: float) -> tuple[float, float]:
 
 
 def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarray | None:
-    """Where the kind word of ``vertex`` stands: the first place round its dot
-    (:func:`metaphors.layout.around`: nearest first, right before left, above before below)
-    that keeps a gap of :data:`KIND_GAPS` from every vertex label and dot, every edge and diagonal
-    drawn, the sweep line at ``y``, the title and the panel, on screen above the subtitle;
-    None where there is none."""
+    """Where the kind word of ``vertex`` stands: the nearest place to its dot (on a grid,
+    :func:`metaphors.layout.grid`, measured from the dot to the word's box) within
+    :data:`KIND_REACH` that keeps every other vertex's dot :data:`KIND_OWN` times as far, and a
+    gap of :data:`KIND_GAPS` from every vertex label and dot, every edge and diagonal drawn, the
+    sweep line at ``y``, the title and the panel, on screen above the subtitle; None where there
+    is none (the caption names the kind)."""
     theme = board.theme
     dot = board.markers[vertex][0].get_center()[:2]
     size = (float(kind.width), float(kind.height))
@@ -121,36 +125,47 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     boxes = [area_of(marker[-1]) for marker in board.markers.values()]
     boxes += [area_of(m) for m in (board.title, *board.panel.mobjects())]
     dots = [(*marker[0].get_center()[:2], theme.dot_radius) for marker in board.markers.values()]
-    centres = round_about([dot], KIND_DIRECTIONS, KIND_AWAY, size=size)
+    reach = max(KIND_REACH)
+    window = (dot[0] - reach - size[0], dot[1] - reach - size[1],
+              dot[0] + reach + size[0], dot[1] + reach + size[1])
+    centres = grid(window, size)
+    own = Obstacles(dots=[(*dot, 0.0)]).gaps(rects_at(centres, size))
+    order = np.argsort(np.round(own, 6), kind="stable")  # the nearest first
+    centres, own = centres[order], own[order]
+    others = Obstacles(boxes=[area_of(m[-1]) for v, m in board.markers.items() if v != vertex],
+                       dots=[(*m[0].get_center()[:2], 0.0) for v, m in board.markers.items()
+                             if v != vertex])
+    ours = clear(centres, size, others, KIND_OWN * own)
     obstacles = Obstacles(boxes=boxes, segments=edges, dots=dots)
-    for gap in KIND_GAPS:
-        k = first_clear(centres, size, obstacles, gap,
-                        within=(FRAME_AREA[0], SUBTITLE_TOP, FRAME_AREA[2], FRAME_AREA[3]))
-        if k is not None:
-            return np.array([*centres[k], 0.0])
+    within = (FRAME_AREA[0], SUBTITLE_TOP, FRAME_AREA[2], FRAME_AREA[3])
+    free = [ours & clear(centres, size, obstacles, gap, within) for gap in KIND_GAPS]
+    for most in KIND_REACH:
+        for ok in free:
+            ok = ok & (own <= most + 1e-9)
+            if ok.any():
+                return np.array([*centres[int(np.argmax(ok))], 0.0])
     return None
 
 
 def classify(board: Board, beat: Classify) -> None:
     """The sweep line reaches a vertex; the vertex shows its kind, in a clear place beside
-    it (:func:`_kind_place`)."""
+    it (:func:`_kind_place`), until the next beat's words come."""
     theme, data = board.theme, beat
     line = _sweep_line(board, data.at[1])
     kind = tag(text(data.kind, font=theme.font, size=theme.label_size + 2,
                     colour=theme.role_colour(_kind_role(data.kind))), None, "kind")
     place = _kind_place(board, kind, data.vertex, data.at[1])
-    if place is None:  # nowhere clear: beside the dot, as it was
-        kind.next_to(board.markers[data.vertex], direction=[1, 0, 0], buff=0.1)
-    else:
-        kind.move_to(place)
-    anims: list[FadeIn | Indicate | Transform | Create] = [FadeIn(kind), Indicate(board.markers[data.vertex])]
+    anims: list[FadeIn | Indicate | Transform | Create] = [Indicate(board.markers[data.vertex])]
+    if place is not None:  # None: nowhere near enough, no word (the caption names the kind)
+        anims.append(FadeIn(kind.move_to(place)))
     if "sweep" in board.objects:
         anims.append(Transform(board.objects["sweep"], line))
     else:
         board.keep("sweep", line)
         anims.append(Create(line))
     board.play(beat, *anims, run_time=0.8)
-    board.scene.play(FadeOut(kind), run_time=0.2 * beat.pace)
+    if place is not None:  # up while its caption is read: it goes with the next beat's words
+        board.leaving.append(kind)
 
 
 def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
@@ -444,12 +459,29 @@ def _depth(walk: Walk) -> int:
          if e.kind == "call" and e.name == "push"), default=0)))
 
 
+def _shown(walk: Walk) -> list[str]:
+    """The chain the stack was last shown with (its labels, the bottom first)."""
+    return walk.memo("monotone.shown", list)
+
+
 def read_push(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
-    """A vertex waits: the chain is the call's stack with it on top."""
+    """A vertex waits: the chain is the call's stack with it on top. After u met the other
+    chain the stack is not what was last shown: the last vertex cut off with u (the bottom,
+    whose triangles are all cut) is done, and the top it had waits again under u (as the
+    textbook's "push u_{j−1} and u_j"); the caption says so, or the stack would jump."""
     where = walk.root_points()
     stack, u = walk.arg_ints(call, "stack"), walk.arg_int(call, "u")
     chain = _stacked(walk, [*stack, u])
-    yield walk.call_beat(StackStep, f"{chain[-1]} waits on the stack", call, ret, roles={},
+    shown = _shown(walk)
+    done = [v for v in shown if v not in chain]
+    if done or shown != list(chain[:-1]):
+        waiting = ", ".join(chain[:-1]) + f" and {chain[-1]}" if len(chain) > 1 else chain[-1]
+        caption = (f"{', '.join(done)} {'is' if len(done) == 1 else 'are'} done: "
+                   if done else "") + f"{waiting} wait{'s' if len(chain) == 1 else ''} on the stack"
+    else:
+        caption = f"{chain[-1]} waits on the stack"
+    shown[:] = chain
+    yield walk.call_beat(StackStep, caption, call, ret, roles={},
                          chain=chain, points=points_of(where[v] for v in chain), cut=(), triangle=(),
                          depth=_depth(walk))
 
@@ -460,6 +492,7 @@ def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     before = _stacked(walk, walk.arg_ints(call, "stack"))
     cut = _stacked(walk, walk.result_ints(ret))
     walk.memo("monotone.cut", list).append(cut)
+    _shown(walk)[:] = before[:-1]
     yield walk.call_beat(StackStep, f"Triangle {''.join(cut)} cut off: {before[-1]} leaves",
                          call, ret, roles={}, chain=before[:-1],
                          points=points_of(where[v] for v in before[:-1]), cut=cut,
@@ -484,6 +517,7 @@ def read_stack(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     yield walk.call_beat(Stack, caption, call, ret, triangles=() if cut else tuple(triangles),
                          triangulation=tuple(done) if whole else ())
     cut.clear()
+    _shown(walk).clear()  # the next piece's stack starts empty
 
 
 def _bare_run(walk: Walk, ret: Event) -> int:

@@ -794,9 +794,11 @@ def _claims_made(play: dict, made: int) -> int:
 
 def _classified(play: dict) -> list[str]:
     """The vertices a play shows the kind of (the monotone sweep: a kind comes in beside the
+    vertex it indicates, or, where no place beside it is its own, the sweep line moves to the
     vertex it indicates), by their labels."""
     names = [(a["type"], (a.get("mobject") or {}).get("name") or "") for a in play["animations"]]
-    if not any(kind in INCOMING and name == "kind" for kind, name in names):
+    if not any(kind in INCOMING and name == "kind" for kind, name in names) and not any(
+            kind in ("Transform", "Create") and name == "sweep" for kind, name in names):
         return []
     return [name.removeprefix("vertex:") for kind, name in names
             if kind == "Indicate" and name.startswith("vertex:")]
@@ -1028,6 +1030,134 @@ def crowded_kind_words(data: dict) -> list[str]:
             if any(rectangle(*part["box"]).intersects(e) for e in edges):
                 found.append(f"{part['text']!r} on an edge")
     return sorted(set(found))
+
+
+#: the farthest a kind word's box may stand from its vertex's dot (12.5 % of the frame's
+#: height): farther, it is read as nobody's ("regular" stood up-left, a way from its vertex)
+KIND_FARTHEST = 1.0
+#: how many times farther than its own vertex every other vertex's dot must be from a kind
+#: word: nearer, the word reads as the other's ("start" between A and L)
+KIND_OWN = 1.5
+
+
+def _dot_centres(node: dict) -> Iterator[tuple[str, tuple[float, float]]]:
+    """(vertex, centre) of each vertex marker's dot in a node and its parts."""
+    for part in mobject_nodes(node):
+        if (part.get("name") or "").startswith("vertex:"):
+            for dot in part.get("submobjects", ()):
+                if dot.get("type") == "Dot" and dot.get("points"):
+                    xs = [q[0] for q in dot["points"]]
+                    ys = [q[1] for q in dot["points"]]
+                    yield (part["name"].removeprefix("vertex:"),
+                           ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2))
+
+
+def stray_kind_words(data: dict) -> list[str]:
+    """Issue 22: the monotone partition's kind words not beside their own vertex (the one the
+    play flashes, Indicate): farther than :data:`KIND_FARTHEST` from its dot, as
+    ``"'regular' for B 1.4 away"``, or with another vertex's dot or label nearer than
+    :data:`KIND_OWN` times its own dot, as ``"'start' for A nearer L"``. The dots and labels
+    are those of the polygon drawn last, where they were last drawn."""
+    from shapely.geometry import Point
+    from shapely.geometry import box as rectangle
+
+    dots: dict[str, tuple[float, float]] = {}
+    labels: dict[str, tuple[float, float, float, float]] = {}
+    found = []
+    for play in data["plays"]:
+        words, own = [], set()
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                dots, labels = {}, {}
+            for key in ("mobject", "target"):
+                dots.update(dict(_dot_centres(anim.get(key, {}))))
+                labels.update(dict(_named_label_boxes(anim.get(key, {}))))
+            if anim.get("type") == "Indicate" and (node.get("name") or "").startswith("vertex:"):
+                own.add(node["name"].removeprefix("vertex:"))
+            if anim.get("type") in INCOMING:
+                words += [p for p in mobject_nodes(node)
+                          if p.get("name") in _KIND_WORDS and p.get("box")]
+        for word in words:
+            shape = rectangle(*word["box"])
+            for v in sorted(own & set(dots)):
+                gap = shape.distance(Point(dots[v]))
+                if gap > KIND_FARTHEST + 0.01:  # the graph rounds boxes to 0.001
+                    found.append(f"{word['text']!r} for {v} {gap:.1f} away")
+                marks = [(w, Point(at)) for w, at in dots.items()]
+                marks += [(w, rectangle(*b)) for w, b in labels.items()]
+                found += [f"{word['text']!r} for {v} nearer {w}" for w, mark in sorted(
+                    marks, key=lambda m: m[0]) if w != v and shape.distance(mark) < KIND_OWN * gap]
+    return sorted(set(found))
+
+
+def fleeting_kind_words(data: dict) -> list[str]:
+    """Issue 22: the monotone partition's kind words gone before their caption (the one
+    that names their vertex, ``"L: … a start vertex"``) has been read: up less than
+    :data:`story.reading.LEAST_CUE` seconds, as ``"'start' up 0.28 s"`` (it faded out at
+    once, while its caption stayed three seconds); or left over when the next comes in, as
+    ``"'start' left over"`` (one word at a time). A kind word of a summary's fast steps,
+    whose caption names no vertex first, may go as fast as its step. A word is known by its
+    text and box."""
+    from story.reading import LEAST_CUE
+
+    found, now, caption = [], 0.0, ""
+    up: dict[tuple, tuple[float, bool]] = {}  # (word, box) -> (since, its caption names its vertex)
+    for play in data["plays"]:
+        caption = play.get("subcaption") or caption
+        flashed = {a["mobject"]["name"].removeprefix("vertex:") for a in play["animations"]
+                   if a.get("type") == "Indicate"
+                   and (a.get("mobject", {}).get("name") or "").startswith("vertex:")}
+        for going in (True, False):  # what goes, then what comes
+            for anim in play["animations"]:
+                if anim.get("type") not in (OUTGOING if going else INCOMING):
+                    continue
+                for p in mobject_nodes(anim.get("mobject", {})):
+                    if p.get("name") not in _KIND_WORDS or not p.get("box"):
+                        continue
+                    key = (p.get("text"), tuple(p["box"]))
+                    if going and key in up:
+                        since, named = up.pop(key)
+                        if named and now - since < LEAST_CUE - 1e-6:
+                            found.append(f"{key[0]!r} up {now - since:.2f} s")
+                    elif not going:
+                        found += [f"{k[0]!r} left over" for k in up]
+                        up[key] = (now, any(caption.startswith(f"{v}:") for v in flashed))
+        now += play.get("run_time") or 0.0
+    return found
+
+
+def _stack_labels(node: dict) -> list[str]:
+    """The labels the monotone stack's column shows, the top first ("stack" over them)."""
+    return [t for p in mobject_nodes(node) if (t := (p.get("text") or "").strip())][1:]
+
+
+def jumping_stacks(data: dict) -> list[str]:
+    """Issue 22: the monotone stack's column changing by labels its caption does not name,
+    as ``"'B waits on the stack': A went, b₁ came"``: the stack is read from its column,
+    and a vertex that leaves or comes back unsaid makes it jump (after a vertex met the
+    other chain, the bottom went and the old top came back under a caption that named only
+    the new one)."""
+    found, caption = [], ""
+    shown: list[str] = []
+    for play in data["plays"]:
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if node.get("name") != "stack:column":
+                continue
+            if anim.get("type") in OUTGOING:
+                shown = []
+                continue
+            new = _stack_labels(anim.get("target", node))
+            said = set(re.findall(r"\w+", caption))
+            went = [v for v in shown if v not in new and v not in said]
+            came = [v for v in new if v not in shown and v not in said]
+            if went or came:
+                found.append(f"{caption!r}: " + ", ".join(
+                    [*(f"{v} went" for v in went), *(f"{v} came" for v in came)]))
+            shown = new
+    return found
 
 
 def crowded_counts(data: dict) -> list[str]:

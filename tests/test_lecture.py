@@ -39,7 +39,9 @@ from tests.reading_rules import (
     crowded_kind_words,
     crowded_panel_labels,
     crowded_verdicts,
+    fleeting_kind_words,
     hidden_failures,
+    jumping_stacks,
     labels_on_claims,
     labels_under_faces,
     labels_under_test_triangles,
@@ -53,6 +55,7 @@ from tests.reading_rules import (
     small_texts,
     stale_endings,
     stale_lit_rows,
+    stray_kind_words,
     swept_outside_polygon,
     ticks_outside,
     unreadable_cues,
@@ -537,6 +540,11 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_under_tools(data) == [], chapter.slug
     # issue 22: the monotone sweep's kind word ("split") clear of every label and edge
     assert crowded_kind_words(data) == [], chapter.slug
+    # beside its own vertex (chapter 5's "start" for A stood nearer L), up while its caption
+    # is read; the stack's column changes only as its caption says
+    assert stray_kind_words(data) == [], chapter.slug
+    assert fleeting_kind_words(data) == [], chapter.slug
+    assert jumping_stacks(data) == [], chapter.slug
     # issue 22: gravity's hit is seen, no label under the hit ring or the ball's path
     assert labels_under_the_fall(data) == [], chapter.slug
     # issue 22: no label left on ear clipping's red test triangle, unless on a dark card

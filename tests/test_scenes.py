@@ -57,8 +57,10 @@ from tests.reading_rules import (
     crowded_notes,
     crowded_panel_labels,
     crowded_verdicts,
+    fleeting_kind_words,
     graph_nodes,
     hidden_failures,
+    jumping_stacks,
     labels_under_faces,
     labels_under_test_triangles,
     labels_under_the_fall,
@@ -72,6 +74,7 @@ from tests.reading_rules import (
     stale_call_lines,
     stale_endings,
     stale_lit_rows,
+    stray_kind_words,
     swept_outside_polygon,
     ticks_outside,
     unreadable_cues,
@@ -428,6 +431,12 @@ def test_kind_words_stand_clear_of_labels_and_edges(case):
     "split" …) stands in a clear place beside it: it overlapped B's label, and stood on
     edges, beside the dot at the line's height."""
     assert crowded_kind_words(graph(case).data) == [], case.id
+    # beside its own vertex, nearer it than any other (HolesSweep's "regular" for a₁ stood
+    # by B's label), up while its caption is read (it faded out in 0.3 s), and the stack's
+    # column changes only as its caption says (after the other chain, A went, b₁ came back)
+    assert stray_kind_words(graph(case).data) == [], case.id
+    assert fleeting_kind_words(graph(case).data) == [], case.id
+    assert jumping_stacks(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
