@@ -96,7 +96,10 @@ def drop(board: Board, beat: Drop) -> None:
     v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
     close = CloseUp.onto(board, v, hit)
     if close is not None:
-        board.play(beat, *close.zoom_in(), run_time=1.2)
+        # the words and roles change first: a marker recoloured as it fades would be two
+        # animations of one mobject in one play
+        board.play(beat, run_time=0.4)
+        again(board, beat, *close.zoom_in(), run_time=1.2)
         close.zoomed_in()
         v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
     ball, band = _ball(board, v), _band(board, [v, v])
