@@ -20,12 +20,6 @@ from metaphors.layout import Box, Obstacles, around, clear, rects_at, ring_edges
 
 #: 2.5 % of the frame's height: the gap a mark keeps (the reading rule asks for 2 %)
 MARK_GAP = 0.2
-#: how far a mark's box may stand from its claim and still seem to judge it (scene units),
-#: and the gap it keeps inside P there when no place straight across the claim is near
-#: (over the reading rule's 2 %)
-NEAR, NEAR_GAP = 0.6, 0.17
-#: the directions round a claim a mark tries when there is no room straight across it
-AROUND = tuple((float(np.cos(t)), float(np.sin(t))) for t in np.radians(np.arange(0, 360, 11.25)))
 #: how far along its claim a mark may stand (fractions of it, the middle first)
 ALONG = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)
 #: the distances from the claim tried, beyond the mark's own half size (scene units)
@@ -45,10 +39,7 @@ def mark_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment
     every edge and every label (twice that outside ``inside``), and off ``avoid`` (a shaded
     region) where it can be inside ``inside``: a mark just outside P seems to judge the edge
     it stands by, so a place inside P over the shading comes before any outside it; if there
-    is none, the place of those that keeps the most gap (:func:`metaphors.layout.around`).
-    A place so found farther than :data:`NEAR` from the claim (none straight across it
-    nearer) gives way to the first near it in any direction (:data:`AROUND`), inside P
-    before outside, if there is one."""
+    is none, the place of those that keeps the most gap (:func:`metaphors.layout.around`)."""
     a, b = np.asarray(claim[0], dtype=float)[:2], np.asarray(claim[1], dtype=float)[:2]
     along = b - a
     normal = np.array([-along[1], along[0]]) / max(float(np.linalg.norm(along)), 1e-9)
@@ -67,31 +58,11 @@ def mark_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment
     free = framed & (gap >= np.where(held, MARK_GAP, 2 * MARK_GAP))
     shaded = (shapely.intersects(boxes, avoid) if avoid is not None and not avoid.is_empty
               else np.zeros(len(centres), dtype=bool))
-    line = shapely.LineString([a, b])
-    if free.any():
-        # the order of :func:`around` is the first-fit order: nearest, middle first, left first
-        best = int(min(np.flatnonzero(free), key=lambda k: (not held[k], bool(shaded[k]), k)))
-    else:  # no clear place: the one that keeps the most gap
-        best = int(np.argmax(np.where(framed, gap, -1.0)))
-    if free.any() and shapely.distance(boxes[best], line) <= NEAR:
-        return np.array([*centres[best], 0.0])
-    # no room straight across the claim near it, and a mark far off seems to judge what it
-    # stands by (a ✓ under a short diagonal between two labels went 1.7 away, into the next
-    # piece): a place near the claim in any direction, inside P (:data:`NEAR_GAP` from
-    # every edge and label) before outside it
-    near_centres = around([a + t * along for t in ALONG], AROUND,
-                          [reach + away for away in AWAY if away <= NEAR])
-    rects = rects_at(near_centres, size)
-    boxes = shapely.box(rects[:, 0], rects[:, 1], rects[:, 2], rects[:, 3])
-    held = shapely.contains(inside, boxes)
-    near = (clear(near_centres, size, Obstacles(), 0.0,
-                  (left, bottom, left + within.width, bottom + within.height))
-            & (obstacles.gaps(rects) >= np.where(held, NEAR_GAP, 2 * MARK_GAP))
-            & (shapely.distance(boxes, line) <= NEAR))
-    if not near.any():
-        return np.array([*centres[best], 0.0])
-    return np.array([*near_centres[min(np.flatnonzero(near), key=lambda k: (not held[k], k))],
-                     0.0])
+    if not free.any():
+        return np.array([*centres[int(np.argmax(np.where(framed, gap, -1.0)))], 0.0])
+    # the order of :func:`around` is the first-fit order: nearest, middle first, left first
+    best = min(np.flatnonzero(free), key=lambda k: (not held[k], bool(shaded[k]), k))
+    return np.array([*centres[best], 0.0])
 
 
 def area_of(mobject: Mobject, moved: Callable[[np.ndarray], np.ndarray] | None = None) -> Area:

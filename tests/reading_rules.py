@@ -1682,38 +1682,3 @@ def short_falls(data: dict) -> list[str]:
             if fall < LEAST_FALL:
                 found.append(f"play {k} fall {fall:.2f}")
     return found
-
-
-# --- issue 22: a verdict stands beside the claim it judges --------------------------------------
-
-#: the farthest a run's ✓ or ✗ may stand from its claim (box to line): 7.5 % of the frame's
-#: height; farther off it seems to judge what it stands by
-FARTHEST_MARK = 0.6
-
-
-def far_verdicts(data: dict) -> list[str]:
-    """A run's verdict marks (``tick``, ``cross``) whose box comes in farther than
-    :data:`FARTHEST_MARK` from the claim they judge (the last drawn ``claim``), as
-    ``"play 144 tick: 1.68 from its claim"``: a ✓ for a short diagonal between two labels
-    stood 1.7 away in the next piece (divide and conquer, the overview)."""
-    from shapely.geometry import LineString
-    from shapely.geometry import box as area
-
-    def nodes(anim: dict) -> Iterator[tuple[str, dict]]:
-        if anim.get("mobject"):
-            yield anim["type"], anim["mobject"]
-        for child in anim.get("animations", ()):
-            yield from nodes(child)
-
-    claim = None
-    found = []
-    for k, play in enumerate(data["plays"]):
-        for kind, node in (pair for anim in play["animations"] for pair in nodes(anim)):
-            if node.get("name") == "claim" and len(node.get("points") or []) >= 2:
-                claim = LineString([node["points"][0][:2], node["points"][-1][:2]])
-            elif (node.get("name") in ("tick", "cross") and kind in INCOMING
-                  and claim is not None and _box_of(node) is not None):
-                gap = claim.distance(area(*_box_of(node)))
-                if gap > FARTHEST_MARK:
-                    found.append(f"play {k} {node['name']}: {gap:.2f} from its claim")
-    return found
