@@ -256,7 +256,7 @@ def gravity(polygon: Polygon) -> Diagonal:
             return _convex_fallback(polygon)
         tracing.note(
             "no-reflex-vertex",
-            reason=f"no reflex vertex: the ball drops from the straight vertex {v.label}",
+            reason=f"No reflex vertex: the ball drops from the straight vertex {v.label}",
             vertex=v.label,
         )
     return gravity_at(polygon, v)
@@ -267,8 +267,8 @@ def _convex_fallback(polygon: Polygon) -> Diagonal:
     t = triangle_at(polygon, leftmost_vertex(polygon))
     tracing.note(
         "no-reflex-vertex",
-        reason="strictly convex: no reflex or straight vertex, so the claim is "  # its own labels
-               f"{t.a.label}{t.c.label} around the left-most {t.b.label}",
+        reason="Strictly convex: every diagonal is inner, so claim "  # the piece's own labels
+               f"{t.a.label}{t.c.label}, cutting off the left-most {t.b.label}",
         diagonal=[t.a.label, t.c.label],
     )
     return claim(t.a, t.c)

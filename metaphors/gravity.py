@@ -13,6 +13,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from typing import Any
 
 import numpy as np
+import shapely
 from manim import (
     DOWN,
     Arrow,
@@ -31,11 +32,13 @@ from manim import (
 )
 from manim import Polygon as MPolygon
 
-from metaphors.board import Board, animate
+from metaphors.board import Board, Playable, animate
+from metaphors.drawing import Frame
 from metaphors.layout import METAPHOR
 from metaphors.performing import Performances, act, performs
-from metaphors.picture import again, turn_to
+from metaphors.picture import _UPRIGHT, _movers, again, turn_to
 from metaphors.tags import tag
+from rendering.turn import Turn
 from rendering.typeset import text
 from story.beats import Beat, beat_kind
 from story.states import BallDrop, BallSlide, Point, RubberBand, point
@@ -87,17 +90,28 @@ def gravity_turn(board: Board, beat: GravityTurn) -> None:
 
 
 def drop(board: Board, beat: Drop) -> None:
-    """A ball hangs from V on its band, falls straight down and hits the boundary."""
-    v = board.vertex(beat.drop.vertex)
-    hit = board.at(beat.drop.hit)
+    """A ball hangs from V on its band, falls straight down and hits the boundary. A fall
+    too short to be seen (:data:`FALL_LEAST`; 0.3 units on the counterexample) is shown in
+    a close-up: the picture zooms onto it first, and back once the ball has hit."""
+    v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
+    close = CloseUp.onto(board, v, hit)
+    if close is not None:
+        # the words and roles change first: a marker recoloured as it fades would be two
+        # animations of one mobject in one play
+        board.play(beat, run_time=0.4)
+        again(board, beat, *close.zoom_in(), run_time=1.2)
+        close.zoomed_in()
+        v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
     ball, band = _ball(board, v), _band(board, [v, v])
-    # the labels the fall would hide move aside first: the drop is short (0.3 units on the
-    # counterexample), and a label under the ball's path or the hit ring hid the very moment;
-    # they go back when the ball does (metaphors.picture.upright)
+    # the labels the fall would hide move aside first: a label under the ball's path or the
+    # hit ring hid the very moment; they go back when the ball does (metaphors.picture.upright)
     moves = board.clear_labels(*fall_shapes(v, hit), for_now=True)
     board.keep("band", band)
     board.keep("ball", ball)
-    board.play(beat, FadeIn(ball, scale=0.5), *moves, run_time=0.6)
+    if close is None:
+        board.play(beat, FadeIn(ball, scale=0.5), *moves, run_time=0.6)
+    else:
+        again(board, beat, FadeIn(ball, scale=0.5), *moves, run_time=0.6)
     board.scene.add(band)
     board.scene.bring_to_front(ball)
     again(board, beat, animate(ball, rate_func=rush_into).move_to(hit),
@@ -108,6 +122,132 @@ def drop(board: Board, beat: Drop) -> None:
     board.scene.bring_to_front(ball)
     again(board, beat, FadeIn(mark), Flash(hit, color=board.theme.argument, flash_radius=0.35),
            run_time=0.5)
+    if close is not None:
+        board.scene.wait(0.6 * beat.pace)  # the hit seen up close
+        again(board, beat, *close.zoom_out(), run_time=1.2)
+        close.done()
+
+
+#: the least fall, in scene units, drawn at its own size: 8 % of the frame's height (a shorter
+#: one is drawn in a close-up, :class:`CloseUp`); and the most a close-up zooms
+FALL_LEAST, ZOOM_MOST = 0.64, 4.0
+#: how far inside the board's box a vertex must stand, zoomed, to be shown in a close-up
+#: (its label beside it stays inside the box too)
+CLOSE_MARGIN = 0.45
+
+
+class CloseUp:
+    """The picture zoomed ``zoom`` times about ``pivot`` (the fall's middle), nothing leaving
+    the board's box: the part of P in the window that fills the box grows to fill it (its fill
+    and its edges, cut at the window), the rest fades, the vertices inside stay. The board's
+    frame follows, so :meth:`Board.at` maps onto the close-up until :meth:`done`."""
+
+    def __init__(self, board: Board, pivot: np.ndarray, zoom: float):
+        self.board, self.pivot, self.zoom = board, np.asarray(pivot, dtype=float), zoom
+        box = board.box
+        lo = np.array([box.x - box.width / 2, box.y - box.height / 2])
+        hi = np.array([box.x + box.width / 2, box.y + box.height / 2])
+        centre = self.pivot[:2]
+        window = shapely.box(*(centre + (lo - centre) / zoom), *(centre + (hi - centre) / zoom))
+        theme = board.theme
+        rings = board.outline_rings()
+        inside = shapely.Polygon([p[:2] for p in rings[0]],
+                                 [[p[:2] for p in r] for r in rings[1:]]).intersection(window)
+        parts: list[VMobject] = []
+        for piece in getattr(inside, "geoms", [inside]):
+            if isinstance(piece, shapely.Polygon) and piece.area > 0:
+                parts.append(MPolygon(*[(x, y, 0.0) for x, y in piece.exterior.coords[:-1]],
+                                      stroke_width=0, fill_color=theme.polygon_fill,
+                                      fill_opacity=theme.fill_opacity))
+        for ring in rings:
+            for a, b in zip(ring, [*ring[1:], ring[0]], strict=True):
+                cut = shapely.LineString([a[:2], b[:2]]).intersection(window)
+                for seg in getattr(cut, "geoms", [cut]):
+                    if isinstance(seg, shapely.LineString) and seg.length > 0:
+                        (x0, y0), (x1, y1) = seg.coords[0], seg.coords[-1]
+                        parts.append(Line((x0, y0, 0.0), (x1, y1, 0.0), color=theme.ink,
+                                          stroke_width=theme.stroke))
+        self.fragment = tag(VGroup(*parts), "idle", "close-up")
+        shrunk = (lo + CLOSE_MARGIN, hi - CLOSE_MARGIN)
+        self.shown: dict[str, Mobject] = {}
+        self.hidden: dict[str, Mobject] = {}
+        for label, marker in board.markers.items():
+            at = self.zoomed(board.vertex(label))
+            fits = bool(np.all(at[:2] >= shrunk[0]) and np.all(at[:2] <= shrunk[1]))
+            (self.shown if fits else self.hidden)[label] = marker
+        self.outline, self.frame = board.outline, board.frame
+        self.others = [m for m in _movers(board) if m is not board.outline
+                       and not any(m is marker for marker in board.markers.values())]
+
+    @classmethod
+    def onto(cls, board: Board, v: np.ndarray, hit: np.ndarray) -> CloseUp | None:
+        """The close-up onto the fall from ``v`` to ``hit``, None when it is long enough."""
+        fall = float(np.linalg.norm(hit - v))
+        if fall >= FALL_LEAST or fall < 1e-9:
+            return None
+        zoom = min(FALL_LEAST / fall, ZOOM_MOST)
+        if abs(board.frame.angle) < 1e-9 and abs(zoom * board.frame.zoom - 1) < 1e-6:
+            zoom *= 1.01  # a pure shift, which a frame cannot hold: a hair more zoom
+        return cls(board, (v + hit) / 2, zoom)
+
+    def zoomed(self, q: np.ndarray) -> np.ndarray:
+        return self.pivot + self.zoom * (np.asarray(q, dtype=float) - self.pivot)
+
+    def _frame(self) -> Frame:
+        """The board's frame followed by this zoom: one turn and zoom about its fixed point."""
+        old = self.frame
+        turn = np.radians(old.angle)
+        rot = np.array([[np.cos(turn), -np.sin(turn)], [np.sin(turn), np.cos(turn)]])
+        k, c, p = self.zoom, old.pivot[:2], self.pivot[:2]
+        # x ↦ p + k (c − p) + k z R (x − c), c the old frame's pivot: a turn and zoom about the
+        # point it keeps, f = (I − k z R)⁻¹ (p + k (c − p) − k z R c)
+        linear = k * old.zoom * rot
+        offset = p + k * (c - p) - linear @ c
+        fixed = np.linalg.solve(np.eye(2) - linear, offset)
+        return old.turned(old.angle, fixed, old.zoom * k)
+
+    def zoom_in(self) -> list[Playable]:
+        board = self.board
+        board.scene.add(self.fragment)
+        anims: list[Playable] = [Turn(self.fragment, 0.0, self.pivot, self.zoom),
+                                 FadeOut(self.outline)]
+        anims += [FadeOut(m) for m in (*self.hidden.values(), *self.others)]
+        anims += [animate(m).shift(self.zoomed(board.vertex(label)) - board.vertex(label))
+                  for label, m in self.shown.items()]
+        board.frame = self._frame()
+        board.outline = self.fragment
+        return anims
+
+    def _move_hidden(self, sign: float) -> None:
+        """The faded markers moved with the zoom (``sign`` 1) or back (−1), off screen: the
+        label clearing measures against every marker where the frame puts its vertex."""
+        for label, m in self.hidden.items():
+            q = self.frame.to_scene(self.board.where[label])
+            m.shift(sign * (self.zoomed(q) - q))
+
+    def zoomed_in(self) -> None:
+        """After the zoom in: the faded markers stand where the close-up puts them."""
+        self._move_hidden(1.0)
+
+    def zoom_out(self) -> list[Playable]:
+        board = self.board
+        self._move_hidden(-1.0)
+        anims: list[Playable] = [Turn(self.fragment, 0.0, self.pivot, 1 / self.zoom),
+                                 FadeIn(self.outline)]
+        anims += [FadeIn(m) for m in (*self.hidden.values(), *self.others)]
+        back = self.frame
+        for label, m in self.shown.items():
+            anims.append(animate(m).shift(back.to_scene(board.where[label])
+                                          - board.vertex(label)))
+        anims += [Turn(board.objects[key], 0.0, self.pivot, 1 / self.zoom, upright=_UPRIGHT)
+                  for key in ("ball", "band", "hit") if key in board.objects]
+        board.frame = back
+        return anims
+
+    def done(self) -> None:
+        """The picture is whole again: the close-up's fragment goes."""
+        self.board.outline = self.outline
+        self.board.scene.remove(self.fragment)
 
 
 #: the hit ring's radius, and the room a label keeps round it (the ball's radius beyond it)

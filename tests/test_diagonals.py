@@ -176,5 +176,5 @@ def test_the_convex_fallback_names_the_pieces_own_vertices():
     (note,) = log.find(kind="note")
     b = piece.labels[min(range(piece.n), key=lambda k: piece.points[k])]
     assert b != "B" and note.args["reason"].endswith(
-        f"so the claim is {claim.u.label}{claim.v.label} around the left-most {b}"), \
+        f"so claim {claim.u.label}{claim.v.label}, cutting off the left-most {b}"), \
         note.args["reason"]

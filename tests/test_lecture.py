@@ -52,6 +52,7 @@ from tests.reading_rules import (
     repeated_verdicts,
     replayed_beats,
     rushed_questions,
+    short_falls,
     small_texts,
     stale_endings,
     stale_lit_rows,
@@ -547,6 +548,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert jumping_stacks(data) == [], chapter.slug
     # issue 22: gravity's hit is seen, no label under the hit ring or the ball's path
     assert labels_under_the_fall(data) == [], chapter.slug
+    # and the ball is seen to fall: 4 % of the frame's height at least (a close-up zooms a
+    # short one, the counterexample's)
+    assert short_falls(data) == [], chapter.slug
     # issue 22: no label left on ear clipping's red test triangle, unless on a dark card
     assert labels_under_test_triangles(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P (found by its colour: chapter

@@ -70,6 +70,7 @@ from tests.reading_rules import (
     repeated_verdicts,
     replayed_beats,
     shapes_under_text,
+    short_falls,
     small_texts,
     stale_call_lines,
     stale_endings,
@@ -444,6 +445,8 @@ def test_no_label_is_under_the_balls_fall(case):
     """Issue 22: gravity's decisive moment is seen: no vertex label under the hit ring or
     the ball's path to it (on the counterexample E's label sat where the ball hit)."""
     assert labels_under_the_fall(graph(case).data) == [], case.id
+    # and the ball is seen to fall, 4 % of the frame's height at least
+    assert short_falls(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -456,9 +459,14 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
 
 
 def test_no_label_is_under_the_balls_fall_on_the_counterexample():
-    """The same on the counterexample, where the drop is shortest (0.3 units)."""
+    """The same on the counterexample, where the drop is shortest (0.3 units): drawn in a
+    close-up, the ball falls 8 % of the frame's height (it fell 3 %, 16 px at 480p)."""
     case = next(c for c in SCENES if c.id == "gravity.Gravity")
-    assert labels_under_the_fall(graph(case, "counterexample").data) == []
+    data = graph(case, "counterexample").data
+    assert labels_under_the_fall(data) == []
+    assert short_falls(data) == []
+    assert any(a.get("mobject", {}).get("name") == "close-up" for p in data["plays"]
+               for a in p["animations"])
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
