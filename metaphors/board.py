@@ -21,7 +21,7 @@ from manim.mobject.mobject import _AnimationBuilder
 from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import crossed_labels, measured_markers
+from metaphors.labels import crossed_labels, drawn_in, measured_markers
 from metaphors.layout import (
     METAPHOR,
     SUBTITLE_WIDTH,
@@ -119,7 +119,7 @@ class Board:
     # --- playing ----------------------------------------------------------------------------------
 
     def play(self, beat: Beat, *anims: Playable, run_time: float = 1.0,
-             together: bool = False) -> None:
+             together: bool = False, at_rest: bool = False) -> None:
         """Play a beat: first its words (subtitle, lit line, call line) change, briefly; then its
         own animations play with the roles on both sides, for the rest of the beat's time.
 
@@ -128,12 +128,15 @@ class Board:
         short play redraws only them; then they go to the bottom (:meth:`settle`), so the
         picture's play does not redraw them. Nothing overlaps the words, so their place in the
         drawing order does not show. ``together``: one play, the words with the picture (a
-        run's first beat in the lecture: the words do not come before what they speak of)."""
+        run's first beat in the lecture: the words do not come before what they speak of).
+        ``at_rest``: the run's ending, no call runs: every vertex label goes back to the ink
+        it was drawn in, on the board and in the panel (grey, "not in the current call", no
+        longer means anything, and labels of two colours would seem to mean two things)."""
         # A marker the beat already animates (a pulse) is recoloured after the play: two
         # animations of one mobject in one play would cancel the first.
         busy = {id(getattr(a, "mobject", None)) for a in anims}
-        recolour, after = self._recolour(beat.roles, busy)
-        action = [*anims, *self.panel.follow_roles(beat), *recolour]
+        recolour, after = self._recolour(beat.roles, busy, at_rest)
+        action = [*anims, *self.panel.follow_roles(beat, at_rest), *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
                  *(FadeOut(m) for m in self.leaving)]
         self.leaving = []
@@ -183,19 +186,23 @@ class Board:
                     bottom.append(mobject)
         self.scene.bring_to_back(*bottom)
 
-    def _recolour(self, roles: Mapping[str, str], busy: set[int]) -> tuple[list, list]:
-        """Animations for markers whose role changed, and (marker, colour) to set after."""
+    def _recolour(self, roles: Mapping[str, str], busy: set[int],
+                  at_rest: bool = False) -> tuple[list, list]:
+        """Animations for markers whose role changed, and (marker, colour) to set after;
+        ``at_rest``: every marker not in its ink goes back to it (:meth:`play`)."""
         anims, after = [], []
         for label, marker in self.markers.items():
             role = roles.get(label, "idle")
-            if self.roles.get(label, "idle") != role:
-                colour = self.theme.role_colour(role)
-                tag(marker, role)
+            if at_rest or self.roles.get(label, "idle") != role:
+                colour = self.theme.ink if at_rest else self.theme.role_colour(role)
+                if at_rest and drawn_in(marker, colour):
+                    continue
+                tag(marker, "idle" if at_rest else role)
                 if id(marker) in busy:
                     after.append((marker, colour))
                 else:
                     anims.append(marker.animate.set_color(colour))
-        self.roles = {k: v for k, v in roles.items() if k in self.markers}
+        self.roles = {} if at_rest else {k: v for k, v in roles.items() if k in self.markers}
         return anims, after
 
     def _subtitle(self, caption: str) -> list:

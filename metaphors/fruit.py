@@ -256,7 +256,7 @@ def _whole(board: Board, beat: Slice) -> None:
     board.play(ending_beat(beat, board.panel.pseudocode, beat.total),
                *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], FadeIn(result),
                *board.clear_labels(*pieces),
-               run_time=1.2)
+               run_time=1.2, at_rest=True)
     board.scene.wait(1.0)
 
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import numpy as np
-from manim import Dot, VGroup
+from manim import Dot, Mobject, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame
@@ -179,3 +179,8 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
 
 __all__ = ["MARGIN", "crossed_labels", "measured_markers", "outward", "place_labels",
            "place_ring_labels", "placed_vertex_markers"]
+
+
+def drawn_in(marker: Mobject, colour: str) -> bool:
+    """Whether every part of a vertex marker (its dot, its label) is drawn in ``colour``."""
+    return all(part.get_color().to_hex().lower() == colour.lower() for part in marker)

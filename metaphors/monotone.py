@@ -326,7 +326,7 @@ def _whole(board: Board, beat: Stack) -> None:
     # under its own caption, at full pace, its result row lit: the last piece's words are over
     board.play(ending_beat(beat, board.panel.pseudocode, len(whole), board.panel.run_call),
                *board.drop(*tints), *[FadeIn(t) for t in whole], *shown,
-               *board.clear_labels(*whole), run_time=1.2)
+               *board.clear_labels(*whole), run_time=1.2, at_rest=True)
     board.scene.wait(1.0)
 
 

@@ -34,6 +34,7 @@ from manim import (
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject
+from metaphors.labels import drawn_in
 from metaphors.layout import (
     PANEL_CALL_Y,
     PANEL_CODE,
@@ -235,10 +236,10 @@ class Panel:
         self.line_y = [row.get_y() - scale * d for row, d in zip(rows, offsets, strict=True)]
         return rows
 
-    def follow_roles(self, beat: Beat) -> list[Animation]:
+    def follow_roles(self, beat: Beat, at_rest: bool = False) -> list[Animation]:
         """Animations recolouring the panel's vertices to this beat's roles (none shown with
-        the source)."""
-        return self._recolour(beat.roles) if self.shows_polygon else []
+        the source); ``at_rest``: all back to their ink (:meth:`metaphors.board.Board.play`)."""
+        return self._recolour(beat.roles, at_rest) if self.shows_polygon else []
 
     def follow_text(self, beat: Beat) -> list[Animation]:
         """Animations moving the light to this beat's line and showing its call line (none if
@@ -251,15 +252,18 @@ class Panel:
             anims += self._call_line(beat.call)
         return anims
 
-    def _recolour(self, roles: Mapping[str, str]) -> list[Animation]:
+    def _recolour(self, roles: Mapping[str, str], at_rest: bool = False) -> list[Animation]:
         anims = []
         wanted = {label: roles.get(label, "idle") for label in self.markers}
         for label, role in wanted.items():
-            if self.roles.get(label, "idle") != role:
-                colour = self.theme.role_colour(role)
-                marker = tag(self.markers[label], role)
-                anims.append(marker.animate.set_color(colour))
-        self.roles = wanted
+            marker = self.markers[label]
+            if at_rest:
+                if not drawn_in(marker, self.theme.ink):
+                    anims.append(tag(marker, "idle").animate.set_color(self.theme.ink))
+            elif self.roles.get(label, "idle") != role:
+                marker = tag(marker, role)
+                anims.append(marker.animate.set_color(self.theme.role_colour(role)))
+        self.roles = {label: "idle" for label in self.markers} if at_rest else wanted
         return anims
 
     def _light_line(self, line: int | None) -> list[Animation]:

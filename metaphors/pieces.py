@@ -128,7 +128,7 @@ def split(board: Board, beat: Split) -> None:
         if finder is not None:
             board.scene.play(*board.drop("finder"), run_time=0.5)
         board.play(ending_beat(beat, board.panel.pseudocode, triangles, board.panel.run_call),
-                   *_whole(board, finder), run_time=1.2)
+                   *_whole(board, finder), run_time=1.2, at_rest=True)
 
 
 def _whole(board: Board, finder: Mobject | None) -> list[Playable]:

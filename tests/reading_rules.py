@@ -1924,3 +1924,31 @@ def short_falls(data: dict) -> list[str]:
             if fall < LEAST_FALL:
                 found.append(f"play {k} fall {fall:.2f}")
     return found
+
+
+# --- issue 22: a finished run's labels in one colour ------------------------------------------
+
+
+def mixed_ending_labels(data: dict) -> list[str]:
+    """The colours of the vertex labels, on the board and in the panel, of a scene that ends
+    on its whole triangulation, as ``["#8A93A3 A, B", "#E8ECF2 E"]``, when they are not all
+    the ink the labels are drawn in: once no call runs, grey ("not in the current call")
+    means nothing, and two colours of label would seem to sort the vertices in two kinds.
+    Judged on the scene's last picture (``final``); an empty list when it shows no
+    triangulation, or all its labels are in ink."""
+    final = data.get("final") or []
+    if not any(top.get("name") == "triangulation" for top in final):
+        return []
+    colours: dict[str, list[str]] = {}
+    for top in final:
+        name = top.get("name") or ""
+        parts = top.get("submobjects", ())
+        if not (name.startswith(("vertex:", "panel:")) and any(
+                part.get("type") == "Dot" for part in parts)):  # a marker: its dot, its label
+            continue
+        for part in parts:
+            if part.get("text"):
+                colours.setdefault(str(part.get("fill")).upper(), []).append(part["text"])
+    if set(colours) <= {_colour("ink")}:
+        return []
+    return [f"{colour} {', '.join(sorted(set(labels)))}" for colour, labels in sorted(colours.items())]

@@ -66,6 +66,7 @@ from tests.reading_rules import (
     labels_under_the_fall,
     labels_under_tools,
     leftover_verdicts,
+    mixed_ending_labels,
     notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
@@ -272,6 +273,8 @@ def test_the_whole_triangulation_comes_under_its_own_caption(case):
     assert stale_lit_rows(graph(case).data) == [], case.id
     # nor its call line: the run's own call with its result, not the last split's
     assert stale_call_lines(graph(case).data) == [], case.id
+    # nor the last step's label colours: every label in its ink, on the board and the panel
+    assert mixed_ending_labels(graph(case).data) == [], case.id
     # and no ✓ or ✗ of a step is left over on it
     assert leftover_verdicts(graph(case).data) == [], case.id
 
