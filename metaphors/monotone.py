@@ -154,7 +154,10 @@ def classify(board: Board, beat: Classify) -> None:
     line = _sweep_line(board, data.at[1])
     kind = tag(text(data.kind, font=theme.font, size=theme.label_size + 2,
                     colour=theme.role_colour(_kind_role(data.kind))), None, "kind")
-    place = _kind_place(board, kind, data.vertex, data.at[1])
+    # a summary's fast step ("Vertices 7–10: the same steps, faster") names no vertex: its
+    # word would flash by, too fast to read, so there is none
+    named = beat.caption.startswith(f"{data.vertex}:")
+    place = _kind_place(board, kind, data.vertex, data.at[1]) if named else None
     anims: list[FadeIn | Indicate | Transform | Create] = [Indicate(board.markers[data.vertex])]
     if place is not None:  # None: nowhere near enough, no word (the caption names the kind)
         anims.append(FadeIn(kind.move_to(place)))

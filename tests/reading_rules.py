@@ -1096,18 +1096,14 @@ def fleeting_kind_words(data: dict) -> list[str]:
     that names their vertex, ``"L: … a start vertex"``) has been read: up less than
     :data:`story.reading.LEAST_CUE` seconds, as ``"'start' up 0.28 s"`` (it faded out at
     once, while its caption stayed three seconds); or left over when the next comes in, as
-    ``"'start' left over"`` (one word at a time). A kind word of a summary's fast steps,
-    whose caption names no vertex first, may go as fast as its step. A word is known by its
-    text and box."""
+    ``"'start' left over"`` (one word at a time). A summary's fast steps, whose caption
+    names no vertex, show no words: each would flash by in a fifth of a second. A word is
+    known by its text and box."""
     from story.reading import LEAST_CUE
 
-    found, now, caption = [], 0.0, ""
-    up: dict[tuple, tuple[float, bool]] = {}  # (word, box) -> (since, its caption names its vertex)
+    found, now = [], 0.0
+    up: dict[tuple, float] = {}  # (word, box) -> since
     for play in data["plays"]:
-        caption = play.get("subcaption") or caption
-        flashed = {a["mobject"]["name"].removeprefix("vertex:") for a in play["animations"]
-                   if a.get("type") == "Indicate"
-                   and (a.get("mobject", {}).get("name") or "").startswith("vertex:")}
         for going in (True, False):  # what goes, then what comes
             for anim in play["animations"]:
                 if anim.get("type") not in (OUTGOING if going else INCOMING):
@@ -1117,12 +1113,12 @@ def fleeting_kind_words(data: dict) -> list[str]:
                         continue
                     key = (p.get("text"), tuple(p["box"]))
                     if going and key in up:
-                        since, named = up.pop(key)
-                        if named and now - since < LEAST_CUE - 1e-6:
+                        since = up.pop(key)
+                        if now - since < LEAST_CUE - 1e-6:
                             found.append(f"{key[0]!r} up {now - since:.2f} s")
                     elif not going:
                         found += [f"{k[0]!r} left over" for k in up]
-                        up[key] = (now, any(caption.startswith(f"{v}:") for v in flashed))
+                        up[key] = now
         now += play.get("run_time") or 0.0
     return found
 
