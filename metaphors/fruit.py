@@ -38,7 +38,7 @@ from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
 from story.beats import Beat, Hole, Point, beat_kind, point, points_of
-from story.storyboard import Reading, Walk, show
+from story.storyboard import Reading, Walk, call_line, call_roles, show
 from tracing import Event
 
 _DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
@@ -253,7 +253,7 @@ def _whole(board: Board, beat: Slice) -> None:
     board.keep("triangulation", VGroup(*pieces))
     # under its own caption, at full pace: the last slice's words are over; what the steps
     # left (prune and search's good part, its last diagonal and ✓) goes
-    board.play(ending_beat(beat, board.panel.pseudocode, beat.total),
+    board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call),
                *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], FadeIn(result),
                *board.clear_labels(*pieces),
                run_time=1.2)
@@ -407,10 +407,15 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
             return
         kind = LastSlice
     clipped.append(corners)
-    yield walk.call_beat(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
-                         call, ret, **_slice(corners, labels, points, clipped))
+    caption = f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices"
+    fields = _slice(corners, labels, points, clipped)
     if kind is Slice:
+        yield walk.call_beat(kind, caption, call, ret, **fields)
         walk.count_claim("slice")  # after its beat: the beat belongs to the slice it cuts
+    else:  # the run's own call: its result is said at the end, counted
+        # (metaphors.drawing.ending_beat), not here as index triples
+        yield walk.beat(kind, caption, call, call=call_line(call, None),
+                        roles=call_roles(call, ret), **fields)
 
 
 def _slice(corners: list[str], labels: list[str], points: list,

@@ -579,7 +579,10 @@ def stale_call_lines(data: dict) -> list[str]:
     call, as ``"play 177: 'split(P, 3, 1) → [P, P]'"``: the call line on screen then (the
     last one brought in since the run's polygon was drawn) is of a function the run called
     with other call lines too (a split, a piece's triangles), where the run's own call, made
-    once, says what the picture shows (``divide_and_conquer(P, gravity) → 11 triangles``)."""
+    once, says what the picture shows (``divide_and_conquer(P, gravity) → 11 triangles``);
+    and a call line there whose result is not the triangles counted (ear clipping's run
+    ended on ``triangulate(P, "ear-clipping-naive") → [[12, 7, 8], [0, 1, 12], …]``: index
+    triples, code a class does not read, where the picture shows the triangles)."""
     found = []
     said: list[str] = []
     for k, play in enumerate(data["plays"]):
@@ -592,9 +595,16 @@ def stale_call_lines(data: dict) -> list[str]:
                                for kind, node in tops):
             continue
         name = said[-1].split("(")[0]
-        if len({c for c in said if c.split("(")[0] == name}) > 1:
+        # a call said again with its result is the same call
+        if (len({c.split(" →")[0] for c in said if c.split("(")[0] == name}) > 1
+                or not _COUNTED_CALL.search(said[-1])):
             found.append(f"play {k}: {said[-1]!r}")
     return found
+
+
+#: the end of a run's call line under its whole triangulation: the triangles it gives,
+#: counted (``→ 11 triangles``), not their index triples (``→ [[12, 7, 8], [0, 1, 12], …]``)
+_COUNTED_CALL = re.compile(r"→\s*\d+\s*triangles$")
 
 
 def _result_rows() -> frozenset[str]:
