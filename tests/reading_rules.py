@@ -1649,3 +1649,99 @@ def labels_under_test_triangles(data: dict) -> list[str]:
                         found.setdefault(f"{vertex} {owner}",
                                          f"play {k} {vertex} under the {owner}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- issue 22: a label reads on whatever it stands over ---------------------------------------
+
+#: the least contrast (WCAG's ratio, 1 to 21) between a vertex label's colour and a fill it
+#: stands over: 3 : 1, WCAG's least for large text (a grey, red or green label on ear
+#: clipping's orange fruit is about 1.1 : 1, white on it 2.9 : 1)
+LEAST_CONTRAST = 3.0
+#: a halo behind a label's glyphs that lets it read on any fill: dark, opaque, this wide
+HALO_WIDTH = 4.0
+#: the filled things a label may stand over: the polygon (ear clipping's fruit), the slices.
+#: Not yet a whole triangulation's triangles: grey labels on their tints are 2.8 : 1 at the
+#: end of DivideAndConquer (G) and HolesSweep (c₁)
+_FILLED = ("polygon", "slice:")
+
+
+def _relative_luminance(colour: str) -> float:
+    """WCAG's relative luminance of a ``#rrggbb`` colour (its channels made linear)."""
+    def linear(c: float) -> float:
+        return c / 12.92 if c <= 0.03928 else ((c + 0.055) / 1.055) ** 2.4
+
+    r, g, b = (linear(int(colour.lstrip("#")[k:k + 2], 16) / 255) for k in (0, 2, 4))
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
+
+def contrast(a: str, b: str) -> float:
+    """WCAG's contrast ratio of two ``#rrggbb`` colours (1: the same; 21: black and white).
+
+    >>> round(contrast("#000000", "#ffffff"), 1), contrast("#8a93a3", "#8a93a3")
+    (21.0, 1.0)
+    """
+    light, dark = sorted((_relative_luminance(a), _relative_luminance(b)), reverse=True)
+    return (light + 0.05) / (dark + 0.05)
+
+
+def _over(fill: str, opacity: float, background: str) -> str:
+    """``fill`` at ``opacity`` over ``background``, as the screen shows it."""
+    return "#" + "".join(
+        f"{round(opacity * int(fill.lstrip('#')[k:k + 2], 16) + (1 - opacity) * int(background.lstrip('#')[k:k + 2], 16)):02x}"
+        for k in (0, 2, 4))
+
+
+def _one_colour(value) -> str | None:
+    return value if isinstance(value, str) else (value[0] if value else None)
+
+
+def _haloed(node: dict) -> bool:
+    """Whether a text node has a dark, opaque halo at least :data:`HALO_WIDTH` wide."""
+    halo = node.get("halo") or {}
+    colour = _one_colour(halo.get("stroke"))
+    return (colour is not None and _luminance(colour) < 0.15
+            and (halo.get("stroke_opacity") or 0) >= 0.99
+            and (halo.get("stroke_width") or 0) >= HALO_WIDTH)
+
+
+def labels_without_contrast(data: dict) -> list[str]:
+    """The vertex labels that stand over a fill (:data:`_FILLED`) they do not read on, as
+    ``"play 12 M on polygon 1.1 : 1"``: the contrast between the label's colour and the fill
+    as the screen shows it (over the background) is under :data:`LEAST_CONTRAST`, and the
+    label has no dark halo (:func:`_haloed`). A grey M, a red G or a green C on ear
+    clipping's orange fruit all but vanish. Each label and fill as
+    :func:`_shown_after_plays` follows them; each vertex is named once, where it first fails."""
+    from shapely.geometry import Polygon
+    from shapely.geometry import box as area
+
+    from metaphors.theme import THEME
+
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:", *_FILLED)):
+        fills = []
+        for name, node in shown.items():
+            colour = _one_colour(node.get("fill"))
+            if (not name.startswith(_FILLED) or colour is None
+                    or (node.get("fill_opacity") or 0) <= 0):
+                continue
+            rings = sorted((Polygon(p) for p in _paths(node) if Polygon(p).is_valid),
+                           key=lambda r: -r.area)
+            if not rings:
+                continue
+            shape = Polygon(rings[0].exterior, [r.exterior for r in rings[1:]])
+            fills.append((name.split("@")[0], shape,
+                          _over(colour, float(node["fill_opacity"]), THEME.background)))
+        for name, marker in shown.items():
+            if not name.startswith("vertex:"):
+                continue
+            vertex = name.removeprefix("vertex:")
+            for part in marker.get("submobjects", ()):
+                colour = _one_colour(part.get("fill"))
+                if (not part.get("box") or not (part.get("text") or "").strip()
+                        or colour is None or not drawn(part) or _haloed(part)):
+                    continue
+                for owner, shape, under in fills:
+                    ratio = contrast(colour, under)
+                    if ratio < LEAST_CONTRAST and shape.intersects(area(*part["box"])):
+                        found.setdefault(vertex, f"play {k} {vertex} on {owner} {ratio:.1f} : 1")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))

@@ -45,6 +45,7 @@ from tests.reading_rules import (
     labels_under_test_triangles,
     labels_under_the_fall,
     labels_under_tools,
+    labels_without_contrast,
     leftover_verdicts,
     notes_under_moving_tools,
     repeated_verdicts,
@@ -540,6 +541,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_under_the_fall(data) == [], chapter.slug
     # issue 22: no label left on ear clipping's red test triangle, unless on a dark card
     assert labels_under_test_triangles(data) == [], chapter.slug
+    # and every label reads on the fill it stands over (a grey M on the fruit's orange)
+    assert labels_without_contrast(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P
     assert water_outside_polygon(data) == [], chapter.slug
 

@@ -63,6 +63,7 @@ from tests.reading_rules import (
     labels_under_test_triangles,
     labels_under_the_fall,
     labels_under_tools,
+    labels_without_contrast,
     leftover_verdicts,
     notes_under_moving_tools,
     repeated_verdicts,
@@ -433,6 +434,14 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
     c₂), but for a label it cannot keep off (its vertex inside it), which is on a dark card;
     its edges cross no label (:func:`crossed_vertex_labels` follows it too)."""
     assert labels_under_test_triangles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_every_label_reads_on_what_it_stands_over(case):
+    """Issue 22: a vertex label over a fill (ear clipping's orange fruit, a slice) keeps a
+    contrast of 3 : 1 with it, or has a dark halo: grey,
+    red and green labels on the fruit (the keyhole's c₂, M beside K) all but vanished."""
+    assert labels_without_contrast(graph(case).data) == [], case.id
 
 
 def test_no_label_is_under_the_balls_fall_on_the_counterexample():
