@@ -881,11 +881,24 @@ LABEL_ROOM = 0.03
 LABEL_OWN = 1.2
 
 
+#: the least gap between two labels side by side (a space and more): nearer, they read as
+#: one word (the keyhole's a₂ and b₂, 0.05 apart: "a₂b₂")
+LABEL_WORDS = 0.1
+
+
+def _one_word(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+    """Whether box ``b`` stands just right of box ``a`` on its line (their heights overlap
+    by half the lower one's), less than :data:`LABEL_WORDS` from it."""
+    beside = min(a[3], b[3]) - max(a[1], b[1]) > min(a[3] - a[1], b[3] - b[1]) / 2
+    return beside and 0 <= b[0] - a[2] < LABEL_WORDS
+
+
 def crowded_panel_labels(data: dict) -> list[str]:
     """The labels of the panel's polygon that overlap another label or come within
     :data:`LABEL_ROOM` of its outline (an edge through a label misreads it), or that stand
     nearer another vertex's dot than their own (their box, or their centre by
-    :data:`LABEL_OWN`), as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``;
+    :data:`LABEL_OWN`), as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``; or that stand side by
+    side with another nearer than :data:`LABEL_WORDS` (``"a₂ b₂ one word"``: "a₂b₂");
     and the vertices left without a label (no room for one: ``"K unlabelled"``). Each run's
     panel (from its polygon's coming in) is judged alone."""
     found: list[str] = []
@@ -954,6 +967,8 @@ def _crowded(outline_node: dict, markers: dict[str, dict]) -> list[str]:
             found.append(f"{label} × edge")
         found += [f"{label} × {other}" for other, there in sorted(labels.items())
                   if other > label and shape.distance(there) < LABEL_ROOM]
+        found += [f"{label} {other} one word" for other, there in sorted(labels.items())
+                  if other != label and _one_word(shape.bounds, there.bounds)]
         nearest = min(dots, key=lambda k: (shape.distance(dots[k]), k))
         centre = shape.centroid
         closest = min(dots, key=lambda k: (centre.distance(dots[k]) * (
