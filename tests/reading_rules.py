@@ -1760,3 +1760,20 @@ def labels_without_contrast(data: dict) -> list[str]:
                     if ratio < LEAST_CONTRAST and shape.intersects(area(*part["box"])):
                         found.setdefault(vertex, f"play {k} {vertex} on {owner} {ratio:.1f} : 1")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- issue 22: labels named together read as labels ------------------------------------------
+
+#: a subscripted label run into a lower-case one (``a₂b₂``): it reads as one word
+_RUN_TOGETHER = re.compile(r"[a-z][₀-₉′″]+[a-z][₀-₉′″]*")
+
+
+def run_together_labels(data: dict) -> list[str]:
+    """The captions and texts on screen (not the call line: code) that write a subscripted
+    label straight before a lower-case one, as ``"'Slice a₂b₂H: 17 / 17 slices': a₂b₂"``:
+    "a₂b₂H" reads as one word, where "MAB" or "c₂F" read as the letters they are."""
+    found: dict[str, str] = {}
+    for text in _all_shown_texts(data, frozenset({"panel:call"})):
+        for match in _RUN_TOGETHER.finditer(text):
+            found.setdefault(text, f"{text!r}: {match[0]}")
+    return sorted(found.values())

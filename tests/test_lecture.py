@@ -50,6 +50,7 @@ from tests.reading_rules import (
     notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
+    run_together_labels,
     rushed_questions,
     small_texts,
     stale_endings,
@@ -543,6 +544,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_under_test_triangles(data) == [], chapter.slug
     # and every label reads on the fill it stands over (a grey M on the fruit's orange)
     assert labels_without_contrast(data) == [], chapter.slug
+    # and labels named together are spaced when subscripted ("a₂b₂H" read as one word)
+    assert run_together_labels(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P
     assert water_outside_polygon(data) == [], chapter.slug
 

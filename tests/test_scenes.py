@@ -68,6 +68,7 @@ from tests.reading_rules import (
     notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
+    run_together_labels,
     shapes_under_text,
     small_texts,
     stale_call_lines,
@@ -434,6 +435,19 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
     c₂), but for a label it cannot keep off (its vertex inside it), which is on a dark card;
     its edges cross no label (:func:`crossed_vertex_labels` follows it too)."""
     assert labels_under_test_triangles(graph(case).data) == [], case.id
+
+
+#: the scenes :func:`test_labels_named_together_read_as_labels` reads: ear clipping's. The
+#: monotone sweep's HolesSweep names its diagonals so too ("Diagonal b₁a₂"), left to it
+_SLICING = ("ear-clipping", "ear-clipping-naive", "prune-and-search")
+
+
+@pytest.mark.parametrize("case", _params(
+    [c for c in SCENES if c.cls is not None and algorithm_of(c.cls) in _SLICING]))
+def test_labels_named_together_read_as_labels(case):
+    """Issue 22: a caption naming a triangle of subscripted labels spaces them ("Slice
+    a₂ b₂ H"): "a₂b₂H" read as one word."""
+    assert run_together_labels(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
