@@ -39,6 +39,7 @@ from tests.reading_rules import (
     crowded_kind_words,
     crowded_panel_labels,
     crowded_verdicts,
+    crowded_vertex_labels,
     hidden_failures,
     labels_on_claims,
     labels_under_faces,
@@ -546,6 +547,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_without_contrast(data) == [], chapter.slug
     # and labels named together are spaced when subscripted ("a₂b₂H" read as one word)
     assert run_together_labels(data) == [], chapter.slug
+    # and the picture's labels stand apart (K stood 0.07 over M on the fruit)
+    assert crowded_vertex_labels(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P
     assert water_outside_polygon(data) == [], chapter.slug
 

@@ -57,6 +57,7 @@ from tests.reading_rules import (
     crowded_notes,
     crowded_panel_labels,
     crowded_verdicts,
+    crowded_vertex_labels,
     graph_nodes,
     hidden_failures,
     labels_under_faces,
@@ -435,6 +436,13 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
     c₂), but for a label it cannot keep off (its vertex inside it), which is on a dark card;
     its edges cross no label (:func:`crossed_vertex_labels` follows it too)."""
     assert labels_under_test_triangles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_pictures_labels_stand_apart(case):
+    """Issue 22: two vertex labels on the picture keep 1 % of the frame's height apart (on
+    the fruit, K stood 0.07 over M, moved there clear of the knife: they read as one)."""
+    assert crowded_vertex_labels(graph(case).data) == [], case.id
 
 
 #: the scenes :func:`test_labels_named_together_read_as_labels` reads: ear clipping's. The
