@@ -58,10 +58,46 @@ def mark_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segment
     free = framed & (gap >= np.where(held, MARK_GAP, 2 * MARK_GAP))
     shaded = (shapely.intersects(boxes, avoid) if avoid is not None and not avoid.is_empty
               else np.zeros(len(centres), dtype=bool))
+    if not (free & held).any():  # no room inside P across the claim: any way round it
+        inner = _inside_round(size, (a, b), obstacles, inside, within, reach)
+        if inner is not None:
+            return inner
     if not free.any():
         return np.array([*centres[int(np.argmax(np.where(framed, gap, -1.0)))], 0.0])
     # the order of :func:`around` is the first-fit order: nearest, middle first, left first
     best = min(np.flatnonzero(free), key=lambda k: (not held[k], bool(shaded[k]), k))
+    return np.array([*centres[best], 0.0])
+
+
+#: the farthest from its claim a mark goes round it to stand inside P (else it stands
+#: outside, across the claim: far off inside, it seems to judge something else)
+INSIDE_REACH = 0.6
+#: the directions tried round a claim's points when there is no room across it (every 15°)
+ROUND = tuple((float(np.cos(t)), float(np.sin(t))) for t in np.radians(np.arange(0, 360, 15)))
+
+
+def _inside_round(size: tuple[float, float], claim: tuple[np.ndarray, np.ndarray],
+                  obstacles: Obstacles, inside: shapely.Geometry, within: Box,
+                  reach: float) -> np.ndarray | None:
+    """The place inside ``inside``, :data:`MARK_GAP` clear of ``obstacles`` and in
+    ``within``, nearest the claim and at most :data:`INSIDE_REACH` from it, among places in
+    every direction (:data:`ROUND`) round its points (:data:`ALONG`); None if there is none. A short claim in a crowded corner (prune
+    and search's GB) has no room inside P straight across it, and its mark stood outside P,
+    1.8 from it, beside another edge."""
+    a, b = claim
+    points = [a + t * (b - a) for t in ALONG]
+    centres = around(points, ROUND, [reach + away for away in AWAY])
+    rects = rects_at(centres, size)
+    boxes = shapely.box(rects[:, 0], rects[:, 1], rects[:, 2], rects[:, 3])
+    left, bottom = within.x - within.width / 2, within.y - within.height / 2
+    line = shapely.LineString([a, b])
+    near = shapely.distance(boxes, line)
+    ok = (clear(centres, size, obstacles, MARK_GAP,
+                (left, bottom, left + within.width, bottom + within.height))
+          & shapely.contains(inside, boxes) & (near <= INSIDE_REACH))
+    if not ok.any():
+        return None
+    best = min(np.flatnonzero(ok), key=lambda k: (round(float(near[k]), 6), k))
     return np.array([*centres[best], 0.0])
 
 

@@ -1801,3 +1801,34 @@ def crowded_vertex_labels(data: dict) -> list[str]:
             if gap < LEAST_LABELS_APART:
                 found.setdefault((v, w), f"play {k} {v} {w} {gap:.2f}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- issue 22: a run's verdict stands by its claim -------------------------------------------
+
+#: the farthest a run's ✓ or ✗ may stand from the claim it judges (1/8 of the frame's height)
+FARTHEST_MARK = 1.0
+#: the names of a run's marks and of its claim
+_RUN_MARKS, _CLAIM = ("tick", "cross"), "claim"
+
+
+def far_verdicts(data: dict) -> list[str]:
+    """A run's ✓ or ✗ standing farther than :data:`FARTHEST_MARK` from the claim it judges
+    (the last claim drawn before it), as ``"play 115 tick 1.80 from its claim"``: so far
+    off, it seems to judge what it stands by (prune and search's ✓ for GB stood outside P
+    beside edge AB)."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    found, claim = [], None
+    for k, play in enumerate(data["plays"]):
+        records = [(kind, node) for a in play["animations"] for kind, node in _recorded(a)]
+        for _, node in records:
+            if node.get("name") == _CLAIM and len(node.get("points") or []) >= 2:
+                claim = LineString([node["points"][0][:2], node["points"][-1][:2]])
+        for kind, node in records:
+            box = _box_of(node) if node.get("name") in _RUN_MARKS else None
+            if kind in INCOMING and box is not None and claim is not None:
+                far = claim.distance(area(*box))
+                if far > FARTHEST_MARK:
+                    found.append(f"play {k} {node['name']} {far:.2f} from its claim")
+    return found

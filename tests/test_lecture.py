@@ -40,6 +40,7 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     crowded_vertex_labels,
+    far_verdicts,
     hidden_failures,
     labels_on_claims,
     labels_under_faces,
@@ -549,6 +550,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert run_together_labels(data) == [], chapter.slug
     # and the picture's labels stand apart (K stood 0.07 over M on the fruit)
     assert crowded_vertex_labels(data) == [], chapter.slug
+    # and a run's ✓ or ✗ stands by its claim (prune and search's ✓ for GB stood 1.8 off)
+    assert far_verdicts(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P
     assert water_outside_polygon(data) == [], chapter.slug
 

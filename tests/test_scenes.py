@@ -58,6 +58,7 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     crowded_vertex_labels,
+    far_verdicts,
     graph_nodes,
     hidden_failures,
     labels_under_faces,
@@ -436,6 +437,13 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
     c₂), but for a label it cannot keep off (its vertex inside it), which is on a dark card;
     its edges cross no label (:func:`crossed_vertex_labels` follows it too)."""
     assert labels_under_test_triangles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_runs_verdict_stands_by_its_claim(case):
+    """Issue 22: a run's ✓ or ✗ stands within 1/8 of the frame's height of its claim, inside
+    P when there is room round it (prune and search's ✓ for GB stood 1.8 off, outside P)."""
+    assert far_verdicts(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
