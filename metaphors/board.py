@@ -21,7 +21,7 @@ from manim.mobject.mobject import _AnimationBuilder
 from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import crossed_labels, drawn_in, measured_markers
+from metaphors.labels import MARGIN, crossed_labels, drawn_in, measured_markers
 from metaphors.layout import (
     METAPHOR,
     SUBTITLE_WIDTH,
@@ -234,14 +234,16 @@ class Board:
         rings = [list(path[:-1:4]) for path in paths]
         return sorted(rings, key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
 
-    def clear_labels(self, *lines: Mobject, for_now: bool = False) -> list[Playable]:
+    def clear_labels(self, *lines: Mobject, for_now: bool = False,
+                     apart: float = MARGIN) -> list[Playable]:
         """The moves, to play with ``lines`` (about to be drawn: a diagonal, a cut, the
         triangles of a triangulation), of the vertex labels they would cross: each to a clear
         place beside its vertex, measured against the outline's edges, the lines and
         triangles drawn and the other labels (:func:`metaphors.labels.crossed_labels`); a
         label the lines keep clear of stays. A move transforms the whole marker, so
         :meth:`play` recolours it after the play. ``for_now``: the lines go again soon (the
-        ball's fall), and :meth:`labels_back` puts the labels back where they stood."""
+        ball's fall), and :meth:`labels_back` puts the labels back where they stood.
+        ``apart``: the gap a moved label keeps from the other labels."""
         rings = [list(self.polygon.labels), *(list(h.labels) for h in self.holes)]
         drawn = [edge for ring in self.outline_rings() for edge in ring_edges(ring)]
         drawn += [edge for m in self.objects.values() if m not in lines for edge in _edges(m)]
@@ -249,7 +251,7 @@ class Board:
         moves: list[Playable] = []
         for label, centre in crossed_labels(rings, markers, drawn,
                                             [edge for line in lines for edge in _edges(line)],
-                                            self.theme.dot_radius).items():
+                                            self.theme.dot_radius, apart).items():
             moved = self.markers[label].copy()
             if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
                 self.moved_for_now.setdefault(

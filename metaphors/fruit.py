@@ -18,6 +18,7 @@ from manim import (
     FadeOut,
     Indicate,
     Line,
+    LineJointType,
     Mobject,
     Polygram,
     Rectangle,
@@ -38,7 +39,7 @@ from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
 from story.beats import Beat, Hole, Point, beat_kind, point, points_of
-from story.storyboard import Reading, Walk, show
+from story.storyboard import Reading, Walk, call_line, call_roles, show
 from tracing import Event
 
 _DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
@@ -79,8 +80,15 @@ def _fruit(board: Board, points: Sequence[Sequence[float]],
     return tag(MPolygon(*[board.at(p) for p in points], **style), "idle", "fruit")
 
 
+#: the width of the dark halo round every vertex label once the polygon is a fruit: a
+#: label over the fruit's orange reads (grey, red or green on it all but vanish, and even
+#: white is under 3 : 1), and the halo follows its label wherever it moves, in any colour
+LABEL_HALO = 6.0
+
+
 def _setup(board: Board, beat: Beat) -> None:
-    """The first time: the polygon turns into a fruit, a plate and a counter appear."""
+    """The first time: the polygon turns into a fruit, every label gets its dark halo
+    (:data:`LABEL_HALO`), a plate and a counter appear."""
     if "fruit" in board.objects:
         return
     theme = board.theme
@@ -89,14 +97,30 @@ def _setup(board: Board, beat: Beat) -> None:
                         fill_color=theme.plate, fill_opacity=0.12), None, "plate")
     plate.move_to((x, PLATE_Y, 0))
     fruit = _fruit(board, board.polygon.points, board.holes)
+    # every label on a dark halo (:data:`LABEL_HALO`), coming with the fruit
+    halos = [Transform(marker, _haloed(marker, theme.background))
+             for marker in board.markers.values()
+             if isinstance(marker, VGroup) and len(marker) > 1]
     slices = board.polygon.n + sum(len(h.points) + 2 for h in board.holes) - 2
     board.keep("plate", plate)
     board.keep("fruit", fruit)
     board.keep("counter", _counter(board, 0, getattr(beat, "total", slices)))
     board.scene.play(Transform(board.outline, fruit), FadeIn(plate),
-                     FadeIn(board.objects["counter"]), run_time=0.8 * beat.pace)
+                     FadeIn(board.objects["counter"]), *halos, run_time=0.8 * beat.pace)
     board.scene.remove(fruit)
     board.objects["fruit"] = board.outline
+
+
+def _haloed(marker: VGroup, colour: str) -> VGroup:
+    """A copy of a vertex's marker (its dot and label) whose label has a halo of ``colour``
+    :data:`LABEL_HALO` wide, drawn behind its glyphs (a background stroke: recolouring the
+    label, and moving it, keep it)."""
+    # round joins (a mitred halo spikes at M's and K's points): set on the label itself, as
+    # a transform to the copy does not carry them
+    marker[1].joint_type = LineJointType.ROUND
+    haloed = marker.copy()
+    haloed[1].set_stroke(colour, width=LABEL_HALO, background=True)
+    return haloed
 
 
 def _counter(board: Board, k: int, total: int) -> Mobject:
@@ -207,6 +231,11 @@ def keyhole(board: Board, beat: Keyhole) -> None:
     board.keep(f"keyhole:{beat.hole}", cut)
 
 
+#: the gap a label the knife moves aside keeps from the other labels: with the labels'
+#: least (0.05), M, pushed in under K, stood 0.07 below it and read as one with it
+LABEL_APART = 0.1
+
+
 def clip(board: Board, beat: Slice) -> None:
     """The knife cuts along the ear's diagonal; the slice goes to its place on the plate."""
     _setup(board, beat)
@@ -214,8 +243,8 @@ def clip(board: Board, beat: Slice) -> None:
     a, b, c = data.points
     knife = tag(Line(board.at(a), board.at(c), color=theme.knife, stroke_width=theme.stroke * 2),
                 "called", "knife")
-    board.play(beat, *board.drop(*_TEST), Create(knife), *board.clear_labels(knife),
-               run_time=0.6)
+    board.play(beat, *board.drop(*_TEST), Create(knife),
+               *board.clear_labels(knife, apart=LABEL_APART), run_time=0.6)
     piece = tag(MPolygon(*[board.at(p) for p in (a, b, c)], color=theme.rind,
                          stroke_width=theme.thin_stroke, fill_color=theme.fruit,
                          fill_opacity=0.9), "result", f"slice:{''.join(data.corners)}")
@@ -253,7 +282,7 @@ def _whole(board: Board, beat: Slice) -> None:
     board.keep("triangulation", VGroup(*pieces))
     # under its own caption, at full pace: the last slice's words are over; what the steps
     # left (prune and search's good part, its last diagonal and ✓) goes
-    board.play(ending_beat(beat, board.panel.pseudocode, beat.total),
+    board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call),
                *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], FadeIn(result),
                *board.clear_labels(*pieces),
                run_time=1.2, at_rest=True)
@@ -407,10 +436,26 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
             return
         kind = LastSlice
     clipped.append(corners)
-    yield walk.call_beat(kind, f"Slice {''.join(corners)}: {len(clipped)} / {len(labels) - 2} slices",
-                         call, ret, **_slice(corners, labels, points, clipped))
+    caption = f"Slice {triangle_name(corners)}: {len(clipped)} / {len(labels) - 2} slices"
+    fields = _slice(corners, labels, points, clipped)
     if kind is Slice:
+        yield walk.call_beat(kind, caption, call, ret, **fields)
         walk.count_claim("slice")  # after its beat: the beat belongs to the slice it cuts
+    else:  # the run's own call: its result is said at the end, counted
+        # (metaphors.drawing.ending_beat), not here as index triples
+        yield walk.beat(kind, caption, call, call=call_line(call, None),
+                        roles=call_roles(call, ret), **fields)
+
+
+def triangle_name(corners: Sequence[str]) -> str:
+    """A triangle named by its corners' labels: run together as geometry writes it
+    (``MAB``), or, when one has a subscript, a space between them (``a₂ b₂ H``: "a₂b₂H"
+    reads as one word).
+
+    >>> triangle_name(["M", "A", "B"]), triangle_name(["a₂", "b₂", "H"])
+    ('MAB', 'a₂ b₂ H')
+    """
+    return "".join(corners) if all(len(c) == 1 for c in corners) else " ".join(corners)
 
 
 def _slice(corners: list[str], labels: list[str], points: list,

@@ -20,7 +20,16 @@ from manim import Dot, Mobject, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame
-from metaphors.layout import Obstacles, Rect, Segment, around, first_clear, rects_at, ring_edges
+from metaphors.layout import (
+    Obstacles,
+    Rect,
+    Segment,
+    around,
+    clear,
+    first_clear,
+    rects_at,
+    ring_edges,
+)
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from story.beats import Hole
@@ -148,12 +157,13 @@ def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
 
 def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
                    drawn: Sequence[Segment], new: Sequence[Segment],
-                   dot: float = THEME.dot_radius) -> dict[str, np.ndarray]:
+                   dot: float = THEME.dot_radius, apart: float = MARGIN) -> dict[str, np.ndarray]:
     """The labels that the ``new`` segments come within :data:`MARGIN` of, each with a new
     centre: the first clear place round its vertex (:func:`place_ring_labels`' order: out
     along the bisector of its ring, each ring a list of labels, their dots where the markers
     stand now), clear of the segments ``drawn`` (the edges, the lines on the picture) and
-    ``new``, of the dots and of the other labels; a label with no clear place stays."""
+    ``new``, of the dots and of the other labels (``apart`` from those: more than
+    :data:`MARGIN` where labels crowd); a label with no clear place stays."""
     at = {name: np.asarray(m[0].get_center(), dtype=float)[:2] for name, m in markers.items()}
     boxes = {name: tuple(rects_at(m[1].get_center()[:2], (m[1].width, m[1].height))[0])
              for name, m in markers.items() if len(m) > 1}
@@ -170,7 +180,9 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
             d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])
             tried = around([at[name]], [_turned(d, turn) for turn in TURNS], RADII)
             others = [box for other, box in boxes.items() if other != name]
-            found = first_clear(tried, size, base.plus(boxes=others), MARGIN)
+            ok = (clear(tried, size, base, MARGIN)
+                  & clear(tried, size, Obstacles(boxes=others), apart))
+            found = int(np.argmax(ok)) if ok.any() else None
             if found is not None:
                 moved[name] = tried[found]
                 boxes[name] = tuple(rects_at(tried[found], size)[0])

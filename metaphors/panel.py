@@ -476,9 +476,18 @@ def _gap(rect: Rect, point: tuple[float, float]) -> float:
     return math.hypot(max(x0 - point[0], 0.0, point[0] - x1), max(y0 - point[1], 0.0, point[1] - y1))
 
 
+#: the least gap between two labels side by side on one line: more than a space, so that
+#: they read as two words (the keyhole's a₂ and b₂, 0.05 apart, read "a₂b₂")
+LABEL_WORD_GAP = 0.12
+
+
 def _apart(a: Rect, b: Rect) -> bool:
-    """Whether two labels' boxes keep :data:`LABEL_CLEARANCE` apart."""
-    return (a[2] + LABEL_CLEARANCE <= b[0] or b[2] + LABEL_CLEARANCE <= a[0]
+    """Whether two labels' boxes keep :data:`LABEL_CLEARANCE` apart, and
+    :data:`LABEL_WORD_GAP` when they stand side by side (their heights overlap by half the
+    lower one's)."""
+    beside = min(a[3], b[3]) - max(a[1], b[1]) > min(a[3] - a[1], b[3] - b[1]) / 2
+    across = LABEL_WORD_GAP if beside else LABEL_CLEARANCE
+    return (a[2] + across <= b[0] or b[2] + across <= a[0]
             or a[3] + LABEL_CLEARANCE <= b[1] or b[3] + LABEL_CLEARANCE <= a[1])
 
 

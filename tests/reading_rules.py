@@ -579,7 +579,10 @@ def stale_call_lines(data: dict) -> list[str]:
     call, as ``"play 177: 'split(P, 3, 1) → [P, P]'"``: the call line on screen then (the
     last one brought in since the run's polygon was drawn) is of a function the run called
     with other call lines too (a split, a piece's triangles), where the run's own call, made
-    once, says what the picture shows (``divide_and_conquer(P, gravity) → 11 triangles``)."""
+    once, says what the picture shows (``divide_and_conquer(P, gravity) → 11 triangles``);
+    and a call line there whose result is not the triangles counted (ear clipping's run
+    ended on ``triangulate(P, "ear-clipping-naive") → [[12, 7, 8], [0, 1, 12], …]``: index
+    triples, code a class does not read, where the picture shows the triangles)."""
     found = []
     said: list[str] = []
     for k, play in enumerate(data["plays"]):
@@ -592,9 +595,16 @@ def stale_call_lines(data: dict) -> list[str]:
                                for kind, node in tops):
             continue
         name = said[-1].split("(")[0]
-        if len({c for c in said if c.split("(")[0] == name}) > 1:
+        # a call said again with its result is the same call
+        if (len({c.split(" →")[0] for c in said if c.split("(")[0] == name}) > 1
+                or not _COUNTED_CALL.search(said[-1])):
             found.append(f"play {k}: {said[-1]!r}")
     return found
+
+
+#: the end of a run's call line under its whole triangulation: the triangles it gives,
+#: counted (``→ 11 triangles``), not their index triples (``→ [[12, 7, 8], [0, 1, 12], …]``)
+_COUNTED_CALL = re.compile(r"→\s*\d+\s*triangles$")
 
 
 def _result_rows() -> frozenset[str]:
@@ -881,11 +891,24 @@ LABEL_ROOM = 0.03
 LABEL_OWN = 1.2
 
 
+#: the least gap between two labels side by side (a space and more): nearer, they read as
+#: one word (the keyhole's a₂ and b₂, 0.05 apart: "a₂b₂")
+LABEL_WORDS = 0.1
+
+
+def _one_word(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+    """Whether box ``b`` stands just right of box ``a`` on its line (their heights overlap
+    by half the lower one's), less than :data:`LABEL_WORDS` from it."""
+    beside = min(a[3], b[3]) - max(a[1], b[1]) > min(a[3] - a[1], b[3] - b[1]) / 2
+    return beside and 0 <= b[0] - a[2] < LABEL_WORDS
+
+
 def crowded_panel_labels(data: dict) -> list[str]:
     """The labels of the panel's polygon that overlap another label or come within
     :data:`LABEL_ROOM` of its outline (an edge through a label misreads it), or that stand
     nearer another vertex's dot than their own (their box, or their centre by
-    :data:`LABEL_OWN`), as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``;
+    :data:`LABEL_OWN`), as ``"K × M"``, ``"K × edge"``, ``"K ~ J"``; or that stand side by
+    side with another nearer than :data:`LABEL_WORDS` (``"a₂ b₂ one word"``: "a₂b₂");
     and the vertices left without a label (no room for one: ``"K unlabelled"``). Each run's
     panel (from its polygon's coming in) is judged alone."""
     found: list[str] = []
@@ -954,6 +977,8 @@ def _crowded(outline_node: dict, markers: dict[str, dict]) -> list[str]:
             found.append(f"{label} × edge")
         found += [f"{label} × {other}" for other, there in sorted(labels.items())
                   if other > label and shape.distance(there) < LABEL_ROOM]
+        found += [f"{label} {other} one word" for other, there in sorted(labels.items())
+                  if other != label and _one_word(shape.bounds, there.bounds)]
         nearest = min(dots, key=lambda k: (shape.distance(dots[k]), k))
         centre = shape.centroid
         closest = min(dots, key=lambda k: (centre.distance(dots[k]) * (
@@ -1948,3 +1973,169 @@ def mixed_ending_labels(data: dict) -> list[str]:
     if set(colours) <= {_colour("ink")}:
         return []
     return [f"{colour} {', '.join(sorted(set(labels)))}" for colour, labels in sorted(colours.items())]
+# --- issue 22: a label reads on whatever it stands over ---------------------------------------
+
+#: the least contrast (WCAG's ratio, 1 to 21) between a vertex label's colour and a fill it
+#: stands over: 3 : 1, WCAG's least for large text (a grey, red or green label on ear
+#: clipping's orange fruit is about 1.1 : 1, white on it 2.9 : 1)
+LEAST_CONTRAST = 3.0
+#: a halo behind a label's glyphs that lets it read on any fill: dark, opaque, this wide
+HALO_WIDTH = 4.0
+#: the filled things a label may stand over: the polygon (ear clipping's fruit), the slices.
+#: Not yet a whole triangulation's triangles: grey labels on their tints are 2.8 : 1 at the
+#: end of DivideAndConquer (G) and HolesSweep (c₁)
+_FILLED = ("polygon", "slice:")
+
+
+def _relative_luminance(colour: str) -> float:
+    """WCAG's relative luminance of a ``#rrggbb`` colour (its channels made linear)."""
+    def linear(c: float) -> float:
+        return c / 12.92 if c <= 0.03928 else ((c + 0.055) / 1.055) ** 2.4
+
+    r, g, b = (linear(int(colour.lstrip("#")[k:k + 2], 16) / 255) for k in (0, 2, 4))
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
+
+def contrast(a: str, b: str) -> float:
+    """WCAG's contrast ratio of two ``#rrggbb`` colours (1: the same; 21: black and white).
+
+    >>> round(contrast("#000000", "#ffffff"), 1), contrast("#8a93a3", "#8a93a3")
+    (21.0, 1.0)
+    """
+    light, dark = sorted((_relative_luminance(a), _relative_luminance(b)), reverse=True)
+    return (light + 0.05) / (dark + 0.05)
+
+
+def _over(fill: str, opacity: float, background: str) -> str:
+    """``fill`` at ``opacity`` over ``background``, as the screen shows it."""
+    return "#" + "".join(
+        f"{round(opacity * int(fill.lstrip('#')[k:k + 2], 16) + (1 - opacity) * int(background.lstrip('#')[k:k + 2], 16)):02x}"
+        for k in (0, 2, 4))
+
+
+def _one_colour(value) -> str | None:
+    return value if isinstance(value, str) else (value[0] if value else None)
+
+
+def _haloed(node: dict) -> bool:
+    """Whether a text node has a dark, opaque halo at least :data:`HALO_WIDTH` wide."""
+    halo = node.get("halo") or {}
+    colour = _one_colour(halo.get("stroke"))
+    return (colour is not None and _luminance(colour) < 0.15
+            and (halo.get("stroke_opacity") or 0) >= 0.99
+            and (halo.get("stroke_width") or 0) >= HALO_WIDTH)
+
+
+def labels_without_contrast(data: dict) -> list[str]:
+    """The vertex labels that stand over a fill (:data:`_FILLED`) they do not read on, as
+    ``"play 12 M on polygon 1.1 : 1"``: the contrast between the label's colour and the fill
+    as the screen shows it (over the background) is under :data:`LEAST_CONTRAST`, and the
+    label has no dark halo (:func:`_haloed`). A grey M, a red G or a green C on ear
+    clipping's orange fruit all but vanish. Each label and fill as
+    :func:`_shown_after_plays` follows them; each vertex is named once, where it first fails."""
+    from shapely.geometry import Polygon
+    from shapely.geometry import box as area
+
+    from metaphors.theme import THEME
+
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:", *_FILLED)):
+        fills = []
+        for name, node in shown.items():
+            colour = _one_colour(node.get("fill"))
+            if (not name.startswith(_FILLED) or colour is None
+                    or (node.get("fill_opacity") or 0) <= 0):
+                continue
+            rings = sorted((Polygon(p) for p in _paths(node) if Polygon(p).is_valid),
+                           key=lambda r: -r.area)
+            if not rings:
+                continue
+            shape = Polygon(rings[0].exterior, [r.exterior for r in rings[1:]])
+            fills.append((name.split("@")[0], shape,
+                          _over(colour, float(node["fill_opacity"]), THEME.background)))
+        for name, marker in shown.items():
+            if not name.startswith("vertex:"):
+                continue
+            vertex = name.removeprefix("vertex:")
+            for part in marker.get("submobjects", ()):
+                colour = _one_colour(part.get("fill"))
+                if (not part.get("box") or not (part.get("text") or "").strip()
+                        or colour is None or not drawn(part) or _haloed(part)):
+                    continue
+                for owner, shape, under in fills:
+                    ratio = contrast(colour, under)
+                    if ratio < LEAST_CONTRAST and shape.intersects(area(*part["box"])):
+                        found.setdefault(vertex, f"play {k} {vertex} on {owner} {ratio:.1f} : 1")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- issue 22: labels named together read as labels ------------------------------------------
+
+#: a subscripted label run into a lower-case one (``a₂b₂``): it reads as one word
+_RUN_TOGETHER = re.compile(r"[a-z][₀-₉′″]+[a-z][₀-₉′″]*")
+
+
+def run_together_labels(data: dict) -> list[str]:
+    """The captions and texts on screen (not the call line: code) that write a subscripted
+    label straight before a lower-case one, as ``"'Slice a₂b₂H: 17 / 17 slices': a₂b₂"``:
+    "a₂b₂H" reads as one word, where "MAB" or "c₂F" read as the letters they are."""
+    found: dict[str, str] = {}
+    for text in _all_shown_texts(data, frozenset({"panel:call"})):
+        for match in _RUN_TOGETHER.finditer(text):
+            found.setdefault(text, f"{text!r}: {match[0]}")
+    return sorted(found.values())
+
+
+# --- issue 22: the picture's labels stand apart ------------------------------------------------
+
+#: the least gap between the labels of two vertices on the picture (1 % of the frame's
+#: height): nearer, they read as one (K stacked 0.07 over M on ear clipping's fruit)
+LEAST_LABELS_APART = 0.08
+
+
+def crowded_vertex_labels(data: dict) -> list[str]:
+    """The pairs of vertex labels on the picture nearer than :data:`LEAST_LABELS_APART`, as
+    ``"play 6 K M 0.07"``: each pair once, where it first is, the labels as
+    :func:`_shown_after_plays` follows them (a polygon coming in begins a new picture)."""
+    from shapely.geometry import box as area
+
+    found: dict[tuple[str, str], str] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:",)):
+        labels = {name.removeprefix("vertex:"): area(*boxes[0]) for name, marker in shown.items()
+                  if (boxes := list(_label_boxes(marker, direct=True)))}
+        for (v, a), (w, b) in itertools.combinations(sorted(labels.items()), 2):
+            gap = a.distance(b)
+            if gap < LEAST_LABELS_APART:
+                found.setdefault((v, w), f"play {k} {v} {w} {gap:.2f}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- issue 22: a run's verdict stands by its claim -------------------------------------------
+
+#: the farthest a run's ✓ or ✗ may stand from the claim it judges (1/8 of the frame's height)
+FARTHEST_MARK = 1.0
+#: the names of a run's marks and of its claim
+_RUN_MARKS, _CLAIM = ("tick", "cross"), "claim"
+
+
+def far_verdicts(data: dict) -> list[str]:
+    """A run's ✓ or ✗ standing farther than :data:`FARTHEST_MARK` from the claim it judges
+    (the last claim drawn before it), as ``"play 115 tick 1.80 from its claim"``: so far
+    off, it seems to judge what it stands by (prune and search's ✓ for GB stood outside P
+    beside edge AB)."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    found, claim = [], None
+    for k, play in enumerate(data["plays"]):
+        records = [(kind, node) for a in play["animations"] for kind, node in _recorded(a)]
+        for _, node in records:
+            if node.get("name") == _CLAIM and len(node.get("points") or []) >= 2:
+                claim = LineString([node["points"][0][:2], node["points"][-1][:2]])
+        for kind, node in records:
+            box = _box_of(node) if node.get("name") in _RUN_MARKS else None
+            if kind in INCOMING and box is not None and claim is not None:
+                far = claim.distance(area(*box))
+                if far > FARTHEST_MARK:
+                    found.append(f"play {k} {node['name']} {far:.2f} from its claim")
+    return found

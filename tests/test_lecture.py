@@ -39,6 +39,8 @@ from tests.reading_rules import (
     crowded_kind_words,
     crowded_panel_labels,
     crowded_verdicts,
+    crowded_vertex_labels,
+    far_verdicts,
     fleeting_kind_words,
     hidden_failures,
     jumping_stacks,
@@ -47,10 +49,12 @@ from tests.reading_rules import (
     labels_under_test_triangles,
     labels_under_the_fall,
     labels_under_tools,
+    labels_without_contrast,
     leftover_verdicts,
     notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
+    run_together_labels,
     rushed_questions,
     short_falls,
     small_texts,
@@ -553,6 +557,14 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert short_falls(data) == [], chapter.slug
     # issue 22: no label left on ear clipping's red test triangle, unless on a dark card
     assert labels_under_test_triangles(data) == [], chapter.slug
+    # and every label reads on the fill it stands over (a grey M on the fruit's orange)
+    assert labels_without_contrast(data) == [], chapter.slug
+    # and labels named together are spaced when subscripted ("a₂b₂H" read as one word)
+    assert run_together_labels(data) == [], chapter.slug
+    # and the picture's labels stand apart (K stood 0.07 over M on the fruit)
+    assert crowded_vertex_labels(data) == [], chapter.slug
+    # and a run's ✓ or ✗ stands by its claim (prune and search's ✓ for GB stood 1.8 off)
+    assert far_verdicts(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P (found by its colour: chapter
     # 2's analysis drew it as an unnamed region, 1.80 outside P before the fix)
     assert water_outside_polygon(data) == [], chapter.slug

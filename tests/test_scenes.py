@@ -57,6 +57,8 @@ from tests.reading_rules import (
     crowded_notes,
     crowded_panel_labels,
     crowded_verdicts,
+    crowded_vertex_labels,
+    far_verdicts,
     fleeting_kind_words,
     graph_nodes,
     hidden_failures,
@@ -65,11 +67,13 @@ from tests.reading_rules import (
     labels_under_test_triangles,
     labels_under_the_fall,
     labels_under_tools,
+    labels_without_contrast,
     leftover_verdicts,
     mixed_ending_labels,
     notes_under_moving_tools,
     repeated_verdicts,
     replayed_beats,
+    run_together_labels,
     shapes_under_text,
     short_falls,
     small_texts,
@@ -459,6 +463,41 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
     c₂), but for a label it cannot keep off (its vertex inside it), which is on a dark card;
     its edges cross no label (:func:`crossed_vertex_labels` follows it too)."""
     assert labels_under_test_triangles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_runs_verdict_stands_by_its_claim(case):
+    """Issue 22: a run's ✓ or ✗ stands within 1/8 of the frame's height of its claim, inside
+    P when there is room round it (prune and search's ✓ for GB stood 1.8 off, outside P)."""
+    assert far_verdicts(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_pictures_labels_stand_apart(case):
+    """Issue 22: two vertex labels on the picture keep 1 % of the frame's height apart (on
+    the fruit, K stood 0.07 over M, moved there clear of the knife: they read as one)."""
+    assert crowded_vertex_labels(graph(case).data) == [], case.id
+
+
+#: the scenes :func:`test_labels_named_together_read_as_labels` reads: ear clipping's. The
+#: monotone sweep's HolesSweep names its diagonals so too ("Diagonal b₁a₂"), left to it
+_SLICING = ("ear-clipping", "ear-clipping-naive", "prune-and-search")
+
+
+@pytest.mark.parametrize("case", _params(
+    [c for c in SCENES if c.cls is not None and algorithm_of(c.cls) in _SLICING]))
+def test_labels_named_together_read_as_labels(case):
+    """Issue 22: a caption naming a triangle of subscripted labels spaces them ("Slice
+    a₂ b₂ H"): "a₂b₂H" read as one word."""
+    assert run_together_labels(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_every_label_reads_on_what_it_stands_over(case):
+    """Issue 22: a vertex label over a fill (ear clipping's orange fruit, a slice) keeps a
+    contrast of 3 : 1 with it, or has a dark halo: grey,
+    red and green labels on the fruit (the keyhole's c₂, M beside K) all but vanished."""
+    assert labels_without_contrast(graph(case).data) == [], case.id
 
 
 def test_no_label_is_under_the_balls_fall_on_the_counterexample():

@@ -40,7 +40,7 @@ NAMED = 3
 
 # The fields of a mobject node in the order they are reported; any other field comes after.
 _MOBJECT_FIELDS = ("type", "name", "role", "stroke", "fill", "color", "stroke_opacity",
-                   "fill_opacity", "stroke_width", "text", "box", "points")
+                   "fill_opacity", "stroke_width", "halo", "text", "box", "points")
 _PLAY_FIELDS = ("run_time", "subcaption")
 
 

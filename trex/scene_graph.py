@@ -123,6 +123,10 @@ def mobject_graph(mobject: Mobject) -> dict[str, Any]:
         node["stroke_opacity"] = _number(mobject.get_stroke_opacity())
         node["fill_opacity"] = _number(mobject.get_fill_opacity())
         node["stroke_width"] = _number(mobject.get_stroke_width())
+        if mobject.get_stroke_width(background=True) > 0:  # a halo drawn behind the fill
+            node["halo"] = {"stroke": _hex(mobject.get_stroke_colors(background=True)),
+                            "stroke_opacity": _number(mobject.get_stroke_opacity(background=True)),
+                            "stroke_width": _number(mobject.get_stroke_width(background=True))}
     else:
         colour = mobject.__dict__.get("color")
         node["color"] = colour.to_hex() if colour is not None and hasattr(colour, "to_hex") else None
