@@ -40,6 +40,7 @@ from metaphors.tags import tag
 from rendering import typeset
 from story.beats import Beat, Hole, Point, beat_kind, point, points_of
 from story.storyboard import Reading, Walk, call_line, call_roles, show
+from story.words import named_together
 from tracing import Event
 
 _DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
@@ -436,7 +437,7 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
             return
         kind = LastSlice
     clipped.append(corners)
-    caption = f"Slice {triangle_name(corners)}: {len(clipped)} / {len(labels) - 2} slices"
+    caption = f"Slice {named_together(corners)}: {len(clipped)} / {len(labels) - 2} slices"
     fields = _slice(corners, labels, points, clipped)
     if kind is Slice:
         yield walk.call_beat(kind, caption, call, ret, **fields)
@@ -445,17 +446,6 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         # (metaphors.drawing.ending_beat), not here as index triples
         yield walk.beat(kind, caption, call, call=call_line(call, None),
                         roles=call_roles(call, ret), **fields)
-
-
-def triangle_name(corners: Sequence[str]) -> str:
-    """A triangle named by its corners' labels: run together as geometry writes it
-    (``MAB``), or, when one has a subscript, a space between them (``a₂ b₂ H``: "a₂b₂H"
-    reads as one word).
-
-    >>> triangle_name(["M", "A", "B"]), triangle_name(["a₂", "b₂", "H"])
-    ('MAB', 'a₂ b₂ H')
-    """
-    return "".join(corners) if all(len(c) == 1 for c in corners) else " ".join(corners)
 
 
 def _slice(corners: list[str], labels: list[str], points: list,

@@ -59,6 +59,7 @@ from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, Point, beat_kind, point, points_of
 from story.storyboard import Reading, Walk
+from story.words import named_together
 from tracing import Event
 
 #: the room between the stack's words (scene units)
@@ -438,7 +439,8 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     handler = walk.stack[-2].name if len(walk.stack) > 1 else ""
     why = (f"the split vertex {u} joins its helper {w}" if handler == "handle_split"
            else f"{u} takes over from the merge vertex {w}")
-    yield walk.call_beat(MonotoneDiagonal, f"Diagonal {u}{w}: {why}", call, ret, key_step=True,
+    yield walk.call_beat(MonotoneDiagonal, f"Diagonal {named_together((u, w))}: {why}", call,
+                         ret, key_step=True,
                          roles={u: "split" if handler == "handle_split" else "called", w: (
                         "argument" if handler == "handle_split" else "merge")},
                          labels=(u, w), points=(point(where[u]), point(where[w])))
@@ -496,7 +498,7 @@ def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     cut = _stacked(walk, walk.result_ints(ret))
     walk.memo("monotone.cut", list).append(cut)
     _shown(walk)[:] = before[:-1]
-    yield walk.call_beat(StackStep, f"Triangle {''.join(cut)} cut off: {before[-1]} leaves",
+    yield walk.call_beat(StackStep, f"Triangle {named_together(cut)} cut off: {before[-1]} leaves",
                          call, ret, roles={}, chain=before[:-1],
                          points=points_of(where[v] for v in before[:-1]), cut=cut,
                          triangle=points_of(where[v] for v in cut), depth=_depth(walk))

@@ -21,7 +21,18 @@ from collections.abc import Sequence
 
 from geometry.check import CheckResult
 
-__all__ = ["number", "said", "why_not_inner"]
+__all__ = ["named_together", "number", "said", "why_not_inner"]
+
+
+def named_together(labels: Sequence[str]) -> str:
+    """A diagonal or a triangle named by its corners' labels: run together as geometry
+    writes it (``MAB``), or, when one has a subscript, a space between them (``a₂ b₂ H``:
+    "a₂b₂H" reads as one word).
+
+    >>> named_together(["M", "A", "B"]), named_together(["a₂", "b₂", "H"])
+    ('MAB', 'a₂ b₂ H')
+    """
+    return "".join(labels) if all(len(c) == 1 for c in labels) else " ".join(labels)
 
 
 def number(value: float) -> str:

@@ -479,16 +479,10 @@ def test_the_pictures_labels_stand_apart(case):
     assert crowded_vertex_labels(graph(case).data) == [], case.id
 
 
-#: the scenes :func:`test_labels_named_together_read_as_labels` reads: ear clipping's. The
-#: monotone sweep's HolesSweep names its diagonals so too ("Diagonal b₁a₂"), left to it
-_SLICING = ("ear-clipping", "ear-clipping-naive", "prune-and-search")
-
-
-@pytest.mark.parametrize("case", _params(
-    [c for c in SCENES if c.cls is not None and algorithm_of(c.cls) in _SLICING]))
+@pytest.mark.parametrize("case", _params([c for c in SCENES if c.cls is not None]))
 def test_labels_named_together_read_as_labels(case):
-    """Issue 22: a caption naming a triangle of subscripted labels spaces them ("Slice
-    a₂ b₂ H"): "a₂b₂H" read as one word."""
+    """Issue 22: a caption naming a triangle or a diagonal of subscripted labels spaces
+    them ("Slice a₂ b₂ H", "Diagonal b₁ a₂"): "a₂b₂H" read as one word."""
     assert run_together_labels(graph(case).data) == [], case.id
 
 
