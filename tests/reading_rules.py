@@ -86,12 +86,20 @@ OUTGOING = {"FadeOut", "Uncreate", "Unwrite", "ShrinkToCenter"}
 INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter"}
 
 
+def _text_of(node: dict) -> str:
+    """A text node's text, or its lines' joined (a text wrapped to two lines is a group of
+    them, with no text of its own)."""
+    if node.get("text") is not None:
+        return node["text"]
+    return " ".join(t for part in node.get("submobjects", ()) if (t := _text_of(part)))
+
+
 def _played_texts(anim: dict, name: str) -> Iterator[tuple[str, str]]:
     """(animation type, text) of every text named ``name`` an animation (or its members)
-    plays."""
+    plays (a wrapped one's lines joined)."""
     mobject = anim.get("mobject") or {}
-    if mobject.get("name") == name and (mobject.get("text") or "").strip():
-        yield anim["type"], mobject["text"]
+    if mobject.get("name") == name and _text_of(mobject).strip():
+        yield anim["type"], _text_of(mobject)
     for child in anim.get("animations", ()):
         yield from _played_texts(child, name)
 
@@ -106,6 +114,25 @@ def crossfaded_texts(data: dict, name: str) -> list[str]:
         come = [text for kind, text in played if kind in INCOMING]
         if gone and come:
             found.append(f"play {k}: {gone[0]!r} → {come[0]!r}")
+    return found
+
+
+def refaded_texts(data: dict, name: str) -> list[str]:
+    """The plays that fade in a text named ``name`` saying what the one on screen says, as
+    ``"play 14: 'nearest_to(B, [D, E]) → D'"``: the line is cut and comes again, a flicker
+    (each of the water's, the hand's and the line's beats of one call did so with the call
+    line). A text faded out since may come back."""
+    found = []
+    shown: str | None = None
+    for k, play in enumerate(data["plays"]):
+        for kind, text in (pair for anim in play["animations"]
+                           for pair in _played_texts(anim, name)):
+            if kind in OUTGOING:
+                shown = None
+            elif kind in INCOMING:
+                if text == shown:
+                    found.append(f"play {k}: {text!r}")
+                shown = text
     return found
 
 
@@ -1386,9 +1413,10 @@ def labels_under_tools(data: dict) -> list[str]:
 # --- issue 22: a vertex label is read clear of the lines drawn ------------------------------------
 
 #: the board's drawn segments a vertex label must not meet: its outline's edges, the
-#: diagonals drawn on it and the triangles' edges (a piece done, the whole triangulation)
+#: diagonals drawn on it, the triangles' edges (a piece done, the whole triangulation) and a
+#: run's claim (Correct Scaling's BE ran through E's label)
 _SEGMENT_OWNERS = ("polygon", "analysis:polygon", "diagonal:", "triangle", "triangulation",
-                   "ear-triangle")
+                   "ear-triangle", "claim")
 #: the owners of which several are shown under one name (each piece's triangles)
 _MANY = ("triangle", "triangulation")
 

@@ -47,6 +47,7 @@ from tests.reading_rules import (
     labels_under_tools,
     leftover_verdicts,
     notes_under_moving_tools,
+    refaded_texts,
     repeated_verdicts,
     replayed_beats,
     rushed_questions,
@@ -488,6 +489,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert small_texts(data) == [], chapter.slug
     # issue 22 item 9: never two subtitles at once
     assert crossfaded_subtitles(data) == [], chapter.slug
+    # nor one cut and faded in again saying the same (a flicker)
+    assert refaded_texts(data, "subtitle") == [], chapter.slug
     # nor a text fading in over one fading out (the count where the black box stood; chapter
     # 2's analyses' title and legend, which go before the correction's come)
     assert crossfaded_overlaps(data) == [], chapter.slug

@@ -65,6 +65,7 @@ from tests.reading_rules import (
     labels_under_tools,
     leftover_verdicts,
     notes_under_moving_tools,
+    refaded_texts,
     repeated_verdicts,
     replayed_beats,
     shapes_under_text,
@@ -247,6 +248,18 @@ def test_never_two_call_lines_at_once(case):
     assert crossfaded_texts(graph(case).data, "panel:call") == [], case.id
     # nor over the pseudocode: a long result is cut short
     assert calls_over_code(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_text_on_screen_is_not_faded_in_again(case):
+    """Issue 22, frame by frame: a beat of the call on screen leaves its call line up; the
+    water's, the hand's and the line's beats each cut it and faded it in again (Scaling's
+    call line dimmed at 10.2 s, Rotation's five times). Nor does a subtitle or a title
+    flicker so."""
+    data = graph(case).data
+    flickers = {name: found for name in ("panel:call", "subtitle", "title")
+                if (found := refaded_texts(data, name))}
+    assert flickers == {}, case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
