@@ -1116,6 +1116,27 @@ def shapes_under_text(data: dict) -> list[str]:
     return sorted(found)
 
 
+#: the water's shapes that fill a region cut anew at each step (the walls', the shore's band)
+_FILLING = ("water", "flood")
+#: the animations that morph one shape into another corner to corner
+_MORPHS = {"Transform", "ReplacementTransform", "TransformFromCopy"}
+
+
+def morphed_water(data: dict) -> list[str]:
+    """The plays that take the water (:data:`_FILLING`) from one region to the next by a
+    morph, as ``"play 14: water"``: a Transform moves each corner of the first region to a
+    corner of the next, so that between two clipped regions it opens dry holes where both
+    are wet (Scaling with walls at 10.3 s: a dark box at B) and bends a rising band's
+    edge. Water that grows is cut anew in every frame."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            name = (anim.get("mobject") or {}).get("name")
+            if anim.get("type") in _MORPHS and name in _FILLING:
+                found.append(f"play {k}: {name}")
+    return found
+
+
 # --- issue 22 item 5 for the exercises: polygons a class can read --------------------------------
 
 #: the least angle at a vertex, inside or out, as drawn (degrees)

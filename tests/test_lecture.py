@@ -46,6 +46,7 @@ from tests.reading_rules import (
     labels_under_the_fall,
     labels_under_tools,
     leftover_verdicts,
+    morphed_water,
     notes_under_moving_tools,
     refaded_texts,
     repeated_verdicts,
@@ -541,6 +542,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert crowded_kind_words(data) == [], chapter.slug
     # issue 22: gravity's hit is seen, no label under the hit ring or the ball's path
     assert labels_under_the_fall(data) == [], chapter.slug
+    # water that grows is cut anew in every frame, not morphed (dry holes where it is wet)
+    assert morphed_water(data) == [], chapter.slug
     # issue 22: no label left on ear clipping's red test triangle, unless on a dark card
     assert labels_under_test_triangles(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P

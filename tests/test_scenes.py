@@ -64,6 +64,7 @@ from tests.reading_rules import (
     labels_under_the_fall,
     labels_under_tools,
     leftover_verdicts,
+    morphed_water,
     notes_under_moving_tools,
     refaded_texts,
     repeated_verdicts,
@@ -405,6 +406,9 @@ def test_the_picture_keeps_off_the_text(case):
     """Issue 22, no text over the picture: a growing shape (Scaling's spilled water) stays
     on the screen and off the subtitle's and the title's lines."""
     assert shapes_under_text(graph(case).data) == [], case.id
+    # and water that grows is cut anew in every frame, not morphed from one region to the
+    # next (the morph opened a dry box at B in Scaling with walls)
+    assert morphed_water(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
