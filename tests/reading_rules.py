@@ -1116,6 +1116,36 @@ def shapes_under_text(data: dict) -> list[str]:
     return sorted(found)
 
 
+#: the pieces of a moving tool's drawn line (:func:`metaphors.sweep.drawn_segment`)
+_TOOL_DRAWINGS = ("hand:", "sweep:")
+
+
+def red_after_the_pick(data: dict) -> list[str]:
+    """The tools (the clock hand, the sweep line) whose line is still red where it leaves P
+    when it goes, after it reached its pick, as ``"play 203: hand"``: what the tool passes
+    after its pick is no verdict, and red says "fails" (Correct Rotation's hand drew C–E red
+    across the notch of the mirror image as it turned on from its pick D). The line as
+    recorded when it goes: its pieces keep their first names, so a piece is read by colour."""
+    found = []
+    lit = False
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if (node.get("name") or "").startswith("lit:") and anim["type"] in INCOMING:
+                lit = True
+            parts = node.get("submobjects", ())
+            if not any((c.get("name") or "").startswith(_TOOL_DRAWINGS) for c in parts):
+                continue
+            if anim["type"] in INCOMING:
+                lit = False
+            elif anim["type"] in OUTGOING and lit and any(
+                    (n.get("stroke") or "").upper() == _REJECTED and n.get("points")
+                    and (n.get("stroke_opacity") or 0) > 0
+                    for c in parts for n in mobject_nodes(c)):
+                found.append(f"play {k}: {parts[0]['name'].split(':')[0]}")
+    return found
+
+
 #: the water's shapes that fill a region cut anew at each step (the walls', the shore's band)
 _FILLING = ("water", "flood")
 #: the animations that morph one shape into another corner to corner

@@ -48,6 +48,7 @@ from tests.reading_rules import (
     leftover_verdicts,
     morphed_water,
     notes_under_moving_tools,
+    red_after_the_pick,
     refaded_texts,
     repeated_verdicts,
     replayed_beats,
@@ -536,6 +537,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert crowded_panel_labels(data) == [], chapter.slug
     # no note under a moving tool, no vertex label under the clock's face
     assert notes_under_moving_tools(data) == [], chapter.slug
+    # and no tool red after its pick (red says "fails")
+    assert red_after_the_pick(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
     assert labels_under_tools(data) == [], chapter.slug
     # issue 22: the monotone sweep's kind word ("split") clear of every label and edge

@@ -66,6 +66,7 @@ from tests.reading_rules import (
     leftover_verdicts,
     morphed_water,
     notes_under_moving_tools,
+    red_after_the_pick,
     refaded_texts,
     repeated_verdicts,
     replayed_beats,
@@ -417,6 +418,9 @@ def test_no_note_is_under_a_moving_tool(case):
     ("outside P, inside T") is clear of the path the line or the hand still sweeps while the
     note is up, not only of where the tool stands when it is written."""
     assert notes_under_moving_tools(graph(case).data) == [], case.id
+    # nor is the tool red after its pick: red says "fails", and what it passes later is no
+    # verdict (Correct Rotation's hand drew C–E red on the mirror image)
+    assert red_after_the_pick(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
