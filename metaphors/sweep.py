@@ -62,6 +62,9 @@ EPS = 1e-6
 NOTE_GAP = 0.12
 #: the gap a tool's line leaves round a vertex label it would run through
 LABEL_GAP = 0.04
+#: a dashed tail of a tool's line beyond a vertex shorter than this is left out: one or two
+#: dashes next to the vertex's label read as a prime ("A′": the hand set to A, Rotation at 9 s)
+SHORTEST_TAIL = 0.4
 
 
 # --- plain geometry (any coordinates) ------------------------------------------------------------
@@ -145,6 +148,12 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
     # a gap where the line would run through a vertex label: the label stays readable
     labels = label_gaps(board)
     parts = {kind: around_labels(pieces, labels) for kind, pieces in parts.items()}
+    # nor one or two dashes left beside a vertex or a label's gap (they read as "A′")
+    corners = [board.vertex(label)[:2] for label in board.markers]
+    parts["outside"] = [(p, q) for p, q in parts["outside"] if math.dist(p, q) >= SHORTEST_TAIL
+                        or (min(math.dist(e, c) for e in (p, q) for c in corners) >= 0.1
+                            and (labels.is_empty
+                                 or shapely.LineString([p, q]).distance(labels) > 1e-3))]
     group = VGroup()
     for p, q in parts["inside"]:
         group.add(tag(Line(_3d(p), _3d(q), color=colour, stroke_width=theme.stroke),

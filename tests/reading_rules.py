@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import itertools
 import json
+import math
 import re
 from collections.abc import Iterator
 from itertools import pairwise
@@ -1143,6 +1144,41 @@ def red_after_the_pick(data: dict) -> list[str]:
                     and (n.get("stroke_opacity") or 0) > 0
                     for c in parts for n in mobject_nodes(c)):
                 found.append(f"play {k}: {parts[0]['name'].split(':')[0]}")
+    return found
+
+
+#: a tool's dashed tail shorter than this from a vertex reads as a mark on its label ("A′")
+SHORTEST_TAIL = 0.4
+
+
+def tails_beside_labels(data: dict) -> list[str]:
+    """The tools (the clock hand, the sweep line) whose dashed line ends in a tail shorter
+    than :data:`SHORTEST_TAIL` from a vertex, as ``"play 11: hand beside A"``: one or two
+    dashes beyond the vertex, next to its label, read as a prime ("A′", Rotation at 9 s,
+    the hand set to A). The line as it comes in, each piece's dashes told by its children."""
+    found = []
+    for k, shown in _shown_after_plays(data, ("vertex:",)):
+        play = data["plays"][k]
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            parts = node.get("submobjects", ())
+            if anim["type"] not in INCOMING or not any(
+                    (c.get("name") or "").startswith(_TOOL_DRAWINGS) for c in parts):
+                continue
+            dots = {name.removeprefix("vertex:"): _centre(dot) for name, marker in shown.items()
+                    for dot in marker.get("submobjects", ())[:1] if dot.get("points")}
+            for piece in parts:
+                if not (piece.get("name") or "").endswith(":outside"):
+                    continue
+                points = [p[:2] for n in mobject_nodes(piece) for p in n.get("points") or ()]
+                if not points:
+                    continue
+                ends = (points[0], points[-1])
+                if math.dist(*ends) >= SHORTEST_TAIL:
+                    continue
+                for label, at in dots.items():
+                    if min(math.dist(e, at) for e in ends) < 0.1:
+                        found.append(f"play {k}: {piece['name'].split(':')[0]} beside {label}")
     return found
 
 

@@ -56,6 +56,7 @@ from tests.reading_rules import (
     small_texts,
     stale_endings,
     stale_lit_rows,
+    tails_beside_labels,
     ticks_outside,
     unreadable_cues,
     unspoken_words,
@@ -541,6 +542,7 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert red_after_the_pick(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
     assert labels_under_tools(data) == [], chapter.slug
+    assert tails_beside_labels(data) == [], chapter.slug
     # issue 22: the monotone sweep's kind word ("split") clear of every label and edge
     assert crowded_kind_words(data) == [], chapter.slug
     # issue 22: gravity's hit is seen, no label under the hit ring or the ball's path

@@ -75,6 +75,7 @@ from tests.reading_rules import (
     stale_call_lines,
     stale_endings,
     stale_lit_rows,
+    tails_beside_labels,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
@@ -430,6 +431,8 @@ def test_no_label_is_under_the_clock_face(case):
     assert labels_under_faces(graph(case).data) == [], case.id
     # nor under the line of a tool where it stands: it leaves a gap round a label
     assert labels_under_tools(graph(case).data) == [], case.id
+    # nor does a dashed tail of one or two dashes beyond a vertex stand by its label ("A′")
+    assert tails_beside_labels(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
