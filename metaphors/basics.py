@@ -75,7 +75,8 @@ def claim(board: Board, beat: Claim) -> None:
     line = tag(Line(board.at(u), board.at(v), color=board.theme.argument,
                     stroke_width=board.theme.stroke * 1.5), "argument", "claim")
     board.keep("claim", line)
-    board.play(beat, Create(line), run_time=1.0)
+    # a label it would run through (Correct Scaling's E, on BE) steps aside as it is drawn
+    board.play(beat, Create(line), *board.clear_labels(line), run_time=1.0)
 
 
 def verdict(board: Board, beat: Verdict) -> None:

@@ -3,8 +3,8 @@ to A and let it turn — the first mark it passes is D (``rotation``). ``rotatio
 to C and turns the other way; ``rotation-correct`` moves the clock to C and sets it to B.
 
 The hand is drawn solid inside the polygon and dashed outside; the part outside the polygon
-but inside T is dashed red — when the hand reaches its first mark with that part, the claim
-will cross an edge. The angles and the order of the marks are the log's shape states (each
+but inside T is dashed red on the way to the first mark — when the hand reaches it with that
+part, the claim will cross an edge; turning on past it, the hand is red nowhere. The angles and the order of the marks are the log's shape states (each
 ``angle`` unsigned, from the start ``heading``); the way the hand turns is the way towards the
 candidates.
 """
@@ -84,7 +84,8 @@ def clock(board: Board, beat: Clock) -> None:
     hub = tag(Dot(centre, radius=theme.dot_radius * 1.4, color=theme.hand), "argument", "hub")
     dial = VGroup(face, twelve, *marks.values()).set_z_index(2)  # lit marks show over the hand
     axis = tag(Line(centre, tip, stroke_opacity=0), "argument", "hand")
-    hand = follower(board, axis, theme.hand, "hand").set_z_index(1)  # over the lit rings
+    picked = [False]  # set once the hand has passed its pick
+    hand = follower(board, axis, theme.hand, "hand", picked=picked).set_z_index(1)  # over the rings
     board.scene.add(axis)
     board.play(beat, FadeIn(dial), FadeIn(hand), FadeIn(hub), run_time=0.8)
 
@@ -101,6 +102,7 @@ def clock(board: Board, beat: Clock) -> None:
         colour = theme.result if k == 0 else theme.argument
         anims.append(tag(mark, "result" if k == 0 else "argument").animate.set_color(colour))
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
+        picked[0] = True
     hand.clear_updaters()
     board.scene.remove(axis)
     board.play(beat, *[FadeOut(m) for m in (dial, hand, hub, *lit)], run_time=0.5)

@@ -104,6 +104,8 @@ class Panel:
         self.lit: tuple[int, Rectangle, Mobject] | None = None
         self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
         self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
+        #: the text of the call line on screen (a beat of the same call leaves it up)
+        self.call_text = " "
         #: the call line being replaced, for the board to cut (see :meth:`cut_outgoing`)
         self.outgoing_call: Mobject | None = None
         #: whether the call line shows each beat's real call: a programmer's render does, the
@@ -314,6 +316,12 @@ class Panel:
         return [*anims, FadeIn(light), FadeIn(copy)]
 
     def _call_line(self, text: str) -> list[Animation]:
+        """The call line saying ``text``: none if it says so already (the water's, the
+        hand's and the line's beats of one call were each cut and faded in again, so that the
+        same line flickered two to six times)."""
+        if text == self.call_text:
+            return []
+        self.call_text = text
         new = tag(typeset.wrapped(text, font=self.theme.mono_font, size=20,
                                   colour=self.theme.ink, width=PANEL_CODE.width),
                   "called", "panel:call")

@@ -62,6 +62,9 @@ EPS = 1e-6
 NOTE_GAP = 0.12
 #: the gap a tool's line leaves round a vertex label it would run through
 LABEL_GAP = 0.04
+#: a dashed tail of a tool's line beyond a vertex shorter than this is left out: one or two
+#: dashes next to the vertex's label read as a prime ("A′": the hand set to A, Rotation at 9 s)
+SHORTEST_TAIL = 0.4
 
 
 # --- plain geometry (any coordinates) ------------------------------------------------------------
@@ -131,16 +134,26 @@ def outline(mobject):
 
 
 def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str, name: str,
-                  clip: shapely.Polygon | None = None) -> VGroup:
+                  clip: shapely.Polygon | None = None, astray: bool = True) -> VGroup:
     """The segment start–end (scene points): solid in the polygon, dashed outside it, dashed red
-    where it is outside the polygon but inside T. ``clip``: a shapely box to cut it to first."""
+    where it is outside the polygon but inside T. ``clip``: a shapely box to cut it to first.
+    ``astray`` False: the part outside P inside T dashed as the rest outside, not red (the
+    tool has found its pick: what it passes later is no verdict)."""
     theme = board.theme
     if clip is not None:
         start, end = _cut(start, end, clip)
     parts = split_segment(start, end, outline(board.outline), outline(board.objects.get("T")))
+    if not astray:
+        parts = {**parts, "outside": [*parts["outside"], *parts["astray"]], "astray": []}
     # a gap where the line would run through a vertex label: the label stays readable
     labels = label_gaps(board)
     parts = {kind: around_labels(pieces, labels) for kind, pieces in parts.items()}
+    # nor one or two dashes left beside a vertex or a label's gap (they read as "A′")
+    corners = [board.vertex(label)[:2] for label in board.markers]
+    parts["outside"] = [(p, q) for p, q in parts["outside"] if math.dist(p, q) >= SHORTEST_TAIL
+                        or (min(math.dist(e, c) for e in (p, q) for c in corners) >= 0.1
+                            and (labels.is_empty
+                                 or shapely.LineString([p, q]).distance(labels) > 1e-3))]
     group = VGroup()
     for p, q in parts["inside"]:
         group.add(tag(Line(_3d(p), _3d(q), color=colour, stroke_width=theme.stroke),
@@ -181,10 +194,14 @@ def around_labels(pieces: list[tuple[tuple, tuple]], labels: shapely.Geometry,
 
 
 def follower(board: Board, axis: Line, colour: str, name: str,
-             clip: shapely.Polygon | None = None) -> VGroup:
-    """The visible drawing of an (invisible) axis line: redrawn whenever the axis moves."""
+             clip: shapely.Polygon | None = None, picked: list[bool] | None = None) -> VGroup:
+    """The visible drawing of an (invisible) axis line: redrawn whenever the axis moves.
+    ``picked``: a flag the performer sets once the tool reached its pick; from then on no
+    part of the line is red (Correct Rotation's hand, turning on from its pick D to E on the
+    mirror image, drew C–E red across the notch, as if the correct rule failed)."""
     def draw() -> VGroup:
-        return drawn_segment(board, axis.get_start(), axis.get_end(), colour, name, clip)
+        return drawn_segment(board, axis.get_start(), axis.get_end(), colour, name, clip,
+                             astray=not (picked and picked[0]))
 
     drawing = draw()
     drawing.add_updater(lambda m: m.become(draw()))
@@ -317,7 +334,9 @@ def sweep(board: Board, beat: Sweep) -> None:
         board.polygon.labels.index(reached[0][1])])
     start, end, box = _long_line(board, through, direction)
     axis = tag(Line(start, end, stroke_opacity=0), "argument", "sweep")
-    drawing = follower(board, axis, board.theme.sweep, "sweep", clip=box).set_z_index(1)
+    picked = [False]  # set once the line has reached its pick
+    drawing = follower(board, axis, board.theme.sweep, "sweep", clip=box,
+                       picked=picked).set_z_index(1)
     origin = board.at(through)
     step = board.at((through[0] + normal[0], through[1] + normal[1])) - origin  # one unit, scene
     board.scene.add(axis)
@@ -335,6 +354,7 @@ def sweep(board: Board, beat: Sweep) -> None:
         kept, anims = light(board, label, k == 0, axis, box, ahead)
         lit += kept
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
+        picked[0] = True
     drawing.clear_updaters()
     board.scene.remove(axis)
     board.play(beat, FadeOut(drawing), *[FadeOut(r) for r in lit], run_time=0.5)

@@ -16,7 +16,6 @@ from manim import (
     FadeOut,
     Indicate,
     Mobject,
-    Transform,
     UpdateFromAlphaFunc,
     VMobject,
     config,
@@ -142,14 +141,31 @@ def walled_water(board: Board, beat: WalledWater) -> None:
     disk = tag(MPolygon(board.at(centre), board.at(centre)), "argument", "water")
     board.play(beat, FadeIn(disk), run_time=0.3)
     visible = dict(beat.visible)
+    radius = 0.0
     for state, reached in hits(states[1:]):
-        clipped = region.intersection(shapely.Point(centre).buffer(state.radius, 64))
-        grown = _region_mobject(board, clipped)
         seen = visible.get(reached, False)
         colour = board.theme.result if seen else board.theme.rejected
-        board.play(beat, Transform(disk, grown),
+
+        def wet(alpha: float, start: float = radius, end: float = state.radius):
+            return region.intersection(
+                shapely.Point(centre).buffer(max(start + (end - start) * alpha, 1e-9), 64))
+
+        board.play(beat, _filling(board, disk, wet, "water", centre),
                    Indicate(board.markers[reached], color=colour), run_time=1.2)
+        radius = state.radius
     board.play(beat, FadeOut(disk), run_time=0.5)
+
+
+def _filling(board: Board, shape: VMobject, region_at, name: str, at: Point
+             ) -> UpdateFromAlphaFunc:
+    """The water filling ``region_at(alpha)`` (polygon coordinates) in every frame: a
+    Transform from one clipped region to the next interpolates corner to corner, which
+    opened a dry hole in the water (Scaling with walls at 10.3 s: a dark box at B) and
+    bent the rising band round D."""
+    def update(mobject: Mobject, alpha: float) -> None:
+        mobject.become(_region_mobject(board, region_at(alpha), name, at))
+
+    return UpdateFromAlphaFunc(shape, update)
 
 
 def _region_mobject(board: Board, geometry: shapely.Geometry, name: str = "water",
@@ -182,15 +198,21 @@ def flood(board: Board, beat: Flood) -> None:
     band = _region_mobject(board, shapely.GeometryCollection(), "flood",
                            ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2))
     board.play(beat, FadeIn(band), run_time=0.3)
+    level = 0.0
+    middle = ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2)
     for state, reached in hits(states[1:]):
-        wet = inner.intersection(_strip(a, c, towards, state.level))
         drowned = board.markers[reached]
         is_last = state is states[-1]
         # going under is no failure: amber, as the clock's and the sweep's later candidates
         # (red means "fails", metaphors.theme's legend); the last one, the pick, green
         colour = board.theme.result if is_last else board.theme.argument
-        board.play(beat, Transform(band, _region_mobject(board, wet, "flood")),
+
+        def wet(alpha: float, start: float = level, end: float = state.level):
+            return inner.intersection(_strip(a, c, towards, start + (end - start) * alpha))
+
+        board.play(beat, _filling(board, band, wet, "flood", middle),
                    Indicate(drowned, color=colour), run_time=1.2)
+        level = state.level
     board.play(beat, FadeOut(band), run_time=0.5)
 
 

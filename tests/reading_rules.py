@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import itertools
 import json
+import math
 import re
 from collections.abc import Iterator
 from itertools import pairwise
@@ -86,12 +87,20 @@ OUTGOING = {"FadeOut", "Uncreate", "Unwrite", "ShrinkToCenter"}
 INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter"}
 
 
+def _text_of(node: dict) -> str:
+    """A text node's text, or its lines' joined (a text wrapped to two lines is a group of
+    them, with no text of its own)."""
+    if node.get("text") is not None:
+        return node["text"]
+    return " ".join(t for part in node.get("submobjects", ()) if (t := _text_of(part)))
+
+
 def _played_texts(anim: dict, name: str) -> Iterator[tuple[str, str]]:
     """(animation type, text) of every text named ``name`` an animation (or its members)
-    plays."""
+    plays (a wrapped one's lines joined)."""
     mobject = anim.get("mobject") or {}
-    if mobject.get("name") == name and (mobject.get("text") or "").strip():
-        yield anim["type"], mobject["text"]
+    if mobject.get("name") == name and _text_of(mobject).strip():
+        yield anim["type"], _text_of(mobject)
     for child in anim.get("animations", ()):
         yield from _played_texts(child, name)
 
@@ -106,6 +115,25 @@ def crossfaded_texts(data: dict, name: str) -> list[str]:
         come = [text for kind, text in played if kind in INCOMING]
         if gone and come:
             found.append(f"play {k}: {gone[0]!r} → {come[0]!r}")
+    return found
+
+
+def refaded_texts(data: dict, name: str) -> list[str]:
+    """The plays that fade in a text named ``name`` saying what the one on screen says, as
+    ``"play 14: 'nearest_to(B, [D, E]) → D'"``: the line is cut and comes again, a flicker
+    (each of the water's, the hand's and the line's beats of one call did so with the call
+    line). A text faded out since may come back."""
+    found = []
+    shown: str | None = None
+    for k, play in enumerate(data["plays"]):
+        for kind, text in (pair for anim in play["animations"]
+                           for pair in _played_texts(anim, name)):
+            if kind in OUTGOING:
+                shown = None
+            elif kind in INCOMING:
+                if text == shown:
+                    found.append(f"play {k}: {text!r}")
+                shown = text
     return found
 
 
@@ -1248,6 +1276,92 @@ def shapes_under_text(data: dict) -> list[str]:
     return sorted(found)
 
 
+#: the pieces of a moving tool's drawn line (:func:`metaphors.sweep.drawn_segment`)
+_TOOL_DRAWINGS = ("hand:", "sweep:")
+
+
+def red_after_the_pick(data: dict) -> list[str]:
+    """The tools (the clock hand, the sweep line) whose line is still red where it leaves P
+    when it goes, after it reached its pick, as ``"play 203: hand"``: what the tool passes
+    after its pick is no verdict, and red says "fails" (Correct Rotation's hand drew C–E red
+    across the notch of the mirror image as it turned on from its pick D). The line as
+    recorded when it goes: its pieces keep their first names, so a piece is read by colour."""
+    found = []
+    lit = False
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if (node.get("name") or "").startswith("lit:") and anim["type"] in INCOMING:
+                lit = True
+            parts = node.get("submobjects", ())
+            if not any((c.get("name") or "").startswith(_TOOL_DRAWINGS) for c in parts):
+                continue
+            if anim["type"] in INCOMING:
+                lit = False
+            elif anim["type"] in OUTGOING and lit and any(
+                    (n.get("stroke") or "").upper() == _REJECTED and n.get("points")
+                    and (n.get("stroke_opacity") or 0) > 0
+                    for c in parts for n in mobject_nodes(c)):
+                found.append(f"play {k}: {parts[0]['name'].split(':')[0]}")
+    return found
+
+
+#: a tool's dashed tail shorter than this from a vertex reads as a mark on its label ("A′")
+SHORTEST_TAIL = 0.4
+
+
+def tails_beside_labels(data: dict) -> list[str]:
+    """The tools (the clock hand, the sweep line) whose dashed line ends in a tail shorter
+    than :data:`SHORTEST_TAIL` from a vertex, as ``"play 11: hand beside A"``: one or two
+    dashes beyond the vertex, next to its label, read as a prime ("A′", Rotation at 9 s,
+    the hand set to A). The line as it comes in, each piece's dashes told by its children."""
+    found = []
+    for k, shown in _shown_after_plays(data, ("vertex:",)):
+        play = data["plays"][k]
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            parts = node.get("submobjects", ())
+            if anim["type"] not in INCOMING or not any(
+                    (c.get("name") or "").startswith(_TOOL_DRAWINGS) for c in parts):
+                continue
+            dots = {name.removeprefix("vertex:"): _centre(dot) for name, marker in shown.items()
+                    for dot in marker.get("submobjects", ())[:1] if dot.get("points")}
+            for piece in parts:
+                if not (piece.get("name") or "").endswith(":outside"):
+                    continue
+                points = [p[:2] for n in mobject_nodes(piece) for p in n.get("points") or ()]
+                if not points:
+                    continue
+                ends = (points[0], points[-1])
+                if math.dist(*ends) >= SHORTEST_TAIL:
+                    continue
+                for label, at in dots.items():
+                    if min(math.dist(e, at) for e in ends) < 0.1:
+                        found.append(f"play {k}: {piece['name'].split(':')[0]} beside {label}")
+    return found
+
+
+#: the water's shapes that fill a region cut anew at each step (the walls', the shore's band)
+_FILLING = ("water", "flood")
+#: the animations that morph one shape into another corner to corner
+_MORPHS = {"Transform", "ReplacementTransform", "TransformFromCopy"}
+
+
+def morphed_water(data: dict) -> list[str]:
+    """The plays that take the water (:data:`_FILLING`) from one region to the next by a
+    morph, as ``"play 14: water"``: a Transform moves each corner of the first region to a
+    corner of the next, so that between two clipped regions it opens dry holes where both
+    are wet (Scaling with walls at 10.3 s: a dark box at B) and bends a rising band's
+    edge. Water that grows is cut anew in every frame."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            name = (anim.get("mobject") or {}).get("name")
+            if anim.get("type") in _MORPHS and name in _FILLING:
+                found.append(f"play {k}: {name}")
+    return found
+
+
 # --- issue 22 item 5 for the exercises: polygons a class can read --------------------------------
 
 #: the least angle at a vertex, inside or out, as drawn (degrees)
@@ -1645,9 +1759,10 @@ def labels_under_tools(data: dict) -> list[str]:
 # --- issue 22: a vertex label is read clear of the lines drawn ------------------------------------
 
 #: the board's drawn segments a vertex label must not meet: its outline's edges, the
-#: diagonals drawn on it and the triangles' edges (a piece done, the whole triangulation)
+#: diagonals drawn on it, the triangles' edges (a piece done, the whole triangulation) and a
+#: run's claim (Correct Scaling's BE ran through E's label)
 _SEGMENT_OWNERS = ("polygon", "analysis:polygon", "diagonal:", "triangle", "triangulation",
-                   "ear-triangle")
+                   "ear-triangle", "claim")
 #: the owners of which several are shown under one name (each piece's triangles)
 _MANY = ("triangle", "triangulation")
 

@@ -51,7 +51,10 @@ from tests.reading_rules import (
     labels_under_tools,
     labels_without_contrast,
     leftover_verdicts,
+    morphed_water,
     notes_under_moving_tools,
+    red_after_the_pick,
+    refaded_texts,
     repeated_verdicts,
     replayed_beats,
     run_together_labels,
@@ -62,6 +65,7 @@ from tests.reading_rules import (
     stale_lit_rows,
     stray_kind_words,
     swept_outside_polygon,
+    tails_beside_labels,
     ticks_outside,
     unreadable_cues,
     unspoken_words,
@@ -497,6 +501,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert small_texts(data) == [], chapter.slug
     # issue 22 item 9: never two subtitles at once
     assert crossfaded_subtitles(data) == [], chapter.slug
+    # nor one cut and faded in again saying the same (a flicker)
+    assert refaded_texts(data, "subtitle") == [], chapter.slug
     # nor a text fading in over one fading out (the count where the black box stood; chapter
     # 2's analyses' title and legend, which go before the correction's come)
     assert crossfaded_overlaps(data) == [], chapter.slug
@@ -541,8 +547,11 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert crowded_panel_labels(data) == [], chapter.slug
     # no note under a moving tool, no vertex label under the clock's face
     assert notes_under_moving_tools(data) == [], chapter.slug
+    # and no tool red after its pick (red says "fails")
+    assert red_after_the_pick(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
     assert labels_under_tools(data) == [], chapter.slug
+    assert tails_beside_labels(data) == [], chapter.slug
     # issue 22: the monotone sweep's kind word ("split") clear of every label and edge
     assert crowded_kind_words(data) == [], chapter.slug
     # beside its own vertex (chapter 5's "start" for A stood nearer L), up while its caption
@@ -555,6 +564,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # and the ball is seen to fall: 4 % of the frame's height at least (a close-up zooms a
     # short one, the counterexample's)
     assert short_falls(data) == [], chapter.slug
+    # water that grows is cut anew in every frame, not morphed (dry holes where it is wet)
+    assert morphed_water(data) == [], chapter.slug
     # issue 22: no label left on ear clipping's red test triangle, unless on a dark card
     assert labels_under_test_triangles(data) == [], chapter.slug
     # and every label reads on the fill it stands over (a grey M on the fruit's orange)

@@ -70,7 +70,10 @@ from tests.reading_rules import (
     labels_without_contrast,
     leftover_verdicts,
     mixed_ending_labels,
+    morphed_water,
     notes_under_moving_tools,
+    red_after_the_pick,
+    refaded_texts,
     repeated_verdicts,
     replayed_beats,
     run_together_labels,
@@ -82,6 +85,7 @@ from tests.reading_rules import (
     stale_lit_rows,
     stray_kind_words,
     swept_outside_polygon,
+    tails_beside_labels,
     ticks_outside,
     unreadable_cues,
     unspoken_words,
@@ -261,6 +265,18 @@ def test_never_two_call_lines_at_once(case):
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
+def test_a_text_on_screen_is_not_faded_in_again(case):
+    """Issue 22, frame by frame: a beat of the call on screen leaves its call line up; the
+    water's, the hand's and the line's beats each cut it and faded it in again (Scaling's
+    call line dimmed at 10.2 s, Rotation's five times). Nor does a subtitle or a title
+    flicker so."""
+    data = graph(case).data
+    flickers = {name: found for name in ("panel:call", "subtitle", "title")
+                if (found := refaded_texts(data, name))}
+    assert flickers == {}, case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
 def test_slices_are_counted_one_by_one_up_to_the_whole_triangulation(case):
     """Issue 22 item 5: a slice counter runs 0, 1 … n − 2 and never jumps; the run ends on
     the whole triangulation drawn in P with its count."""
@@ -414,6 +430,9 @@ def test_the_picture_keeps_off_the_text(case):
     """Issue 22, no text over the picture: a growing shape (Scaling's spilled water) stays
     on the screen and off the subtitle's and the title's lines."""
     assert shapes_under_text(graph(case).data) == [], case.id
+    # and water that grows is cut anew in every frame, not morphed from one region to the
+    # next (the morph opened a dry box at B in Scaling with walls)
+    assert morphed_water(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -422,6 +441,9 @@ def test_no_note_is_under_a_moving_tool(case):
     ("outside P, inside T") is clear of the path the line or the hand still sweeps while the
     note is up, not only of where the tool stands when it is written."""
     assert notes_under_moving_tools(graph(case).data) == [], case.id
+    # nor is the tool red after its pick: red says "fails", and what it passes later is no
+    # verdict (Correct Rotation's hand drew C–E red on the mirror image)
+    assert red_after_the_pick(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -431,6 +453,8 @@ def test_no_label_is_under_the_clock_face(case):
     assert labels_under_faces(graph(case).data) == [], case.id
     # nor under the line of a tool where it stands: it leaves a gap round a label
     assert labels_under_tools(graph(case).data) == [], case.id
+    # nor does a dashed tail of one or two dashes beyond a vertex stand by its label ("A′")
+    assert tails_beside_labels(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
