@@ -25,6 +25,7 @@ from manim import (
     Indicate,
     Line,
     Mobject,
+    Rectangle,
     Transform,
     VGroup,
     VMobject,
@@ -139,7 +140,8 @@ CLOSE_MARGIN = 0.45
 class CloseUp:
     """The picture zoomed ``zoom`` times about ``pivot`` (the fall's middle), nothing leaving
     the board's box: the part of P in the window that fills the box grows to fill it (its fill
-    and its edges, cut at the window), the rest fades, the vertices inside stay. The board's
+    and its edges, cut at the window, framed by the box's edge while zoomed), the rest fades,
+    the vertices inside stay. The board's
     frame follows, so :meth:`Board.at` maps onto the close-up until :meth:`done`."""
 
     def __init__(self, board: Board, pivot: np.ndarray, zoom: float):
@@ -168,6 +170,11 @@ class CloseUp:
                         parts.append(Line((x0, y0, 0.0), (x1, y1, 0.0), color=theme.ink,
                                           stroke_width=theme.stroke))
         self.fragment = tag(VGroup(*parts), "idle", "close-up")
+        # the window's edge, while zoomed: P's fill cut square at the box reads as a close-up
+        # seen through a frame, not as a polygon with straight new sides
+        self.window = tag(Rectangle(width=box.width, height=box.height, color=theme.dial,
+                                    stroke_width=theme.thin_stroke).move_to((box.x, box.y, 0)),
+                          "idle", "close-up:window")
         shrunk = (lo + CLOSE_MARGIN, hi - CLOSE_MARGIN)
         self.shown: dict[str, Mobject] = {}
         self.hidden: dict[str, Mobject] = {}
@@ -210,7 +217,7 @@ class CloseUp:
         board = self.board
         board.scene.add(self.fragment)
         anims: list[Playable] = [Turn(self.fragment, 0.0, self.pivot, self.zoom),
-                                 FadeOut(self.outline)]
+                                 FadeOut(self.outline), FadeIn(self.window)]
         anims += [FadeOut(m) for m in (*self.hidden.values(), *self.others)]
         anims += [animate(m).shift(self.zoomed(board.vertex(label)) - board.vertex(label))
                   for label, m in self.shown.items()]
@@ -233,7 +240,7 @@ class CloseUp:
         board = self.board
         self._move_hidden(-1.0)
         anims: list[Playable] = [Turn(self.fragment, 0.0, self.pivot, 1 / self.zoom),
-                                 FadeIn(self.outline)]
+                                 FadeIn(self.outline), FadeOut(self.window)]
         anims += [FadeIn(m) for m in (*self.hidden.values(), *self.others)]
         back = self.frame
         for label, m in self.shown.items():

@@ -527,6 +527,11 @@ def test_no_label_is_under_the_balls_fall_on_the_counterexample():
     assert short_falls(data) == []
     assert any(a.get("mobject", {}).get("name") == "close-up" for p in data["plays"]
                for a in p["animations"])
+    # seen through a window: the box's edge comes with the zoom and goes with it (P's fill
+    # cut square at the box, unframed, read as a polygon with new straight sides)
+    window = [a["type"] for p in data["plays"] for a in p["animations"]
+              if a.get("mobject", {}).get("name") == "close-up:window"]
+    assert window == ["FadeIn", "FadeOut"]
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
