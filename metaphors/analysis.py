@@ -43,7 +43,7 @@ from manim import (
 from metaphors import catalog
 from metaphors.drawing import crossed_edge
 from metaphors.gravity import Drop, GravityTurn, Slide, Snag
-from metaphors.stage import BOX, Canvas, Stage, beside, path, place_name, region
+from metaphors.stage import BOX, OUTSIDE, Canvas, Stage, beside, path, place_name, region
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
@@ -264,7 +264,7 @@ def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
     at = stage.vertex(wrong.pick)
     stage.say(wrong.words(analysis.fails),
               ([Create(outside_tool), FadeIn(outside_area),
-                *stage.key(theme.rejected, "outside P, in T", "astray"),
+                *stage.key(theme.rejected, OUTSIDE, "astray"),
                 Flash(at, color=theme.rejected, flash_radius=0.45),
                 Indicate(stage.markers[wrong.pick], color=theme.rejected)], 1.6),
               ([], analysis.freeze))

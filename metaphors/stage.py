@@ -32,6 +32,9 @@ from rendering import typeset
 #: where the polygon goes: the left two thirds, the legend to its right
 BOX = Box(-1.0, -0.1, 8.0, 5.6)
 LEGEND = (3.6, 2.2)  # top left corner of the legend
+#: what red is in a wrong heuristic's pass and in its run: the one legend entry for both
+#: (its words narrow enough for the legend's column, from :data:`LEGEND` to the frame's margin)
+OUTSIDE = "outside P, in T"
 
 
 class Stage:
@@ -109,14 +112,9 @@ class Stage:
         return tag(words, None, "subtitle").move_to(subtitle_centre(words.height))
 
     def key(self, colour: str, words: str, name: str, opacity: float = 0.45) -> list:
-        """A legend entry (a swatch and its words) below the ones shown."""
-        theme = self.theme
+        """A legend entry (:func:`legend_entry`) below the ones shown."""
         x, y = LEGEND[0], LEGEND[1] - 0.55 * len(self.legend)
-        swatch = Square(0.3, color=colour, stroke_width=theme.thin_stroke, fill_color=colour,
-                        fill_opacity=opacity).move_to((x + 0.15, y, 0))
-        label = typeset.text(words, font=theme.font, size=theme.label_size, colour=theme.ink)
-        label.next_to(swatch, direction=np.array([1.0, 0, 0]), buff=0.18)
-        key = tag(VGroup(swatch, label), None, f"legend:{name}")
+        key = legend_entry(self.theme, colour, words, name, opacity).shift((x, y, 0))
         self.legend.append(key)
         return [FadeIn(key)]
 
@@ -130,6 +128,17 @@ class Stage:
     def forget_legend(self) -> list:
         gone, self.legend = self.legend, []
         return [FadeOut(m) for m in gone]
+
+
+def legend_entry(theme: Theme, colour: str, words: str, name: str, opacity: float = 0.45
+                 ) -> VGroup:
+    """A legend entry: a swatch of ``colour`` and its words to its right, the swatch's
+    left-middle at the origin (an analysis's legend, a run's "outside P, in T")."""
+    swatch = Square(0.3, color=colour, stroke_width=theme.thin_stroke, fill_color=colour,
+                    fill_opacity=opacity).move_to((0.15, 0, 0))
+    label = typeset.text(words, font=theme.font, size=theme.label_size, colour=theme.ink)
+    label.next_to(swatch, direction=np.array([1.0, 0, 0]), buff=0.18)
+    return tag(VGroup(swatch, label), None, f"legend:{name}")
 
 
 def _fitted(points, angle: float) -> Frame:

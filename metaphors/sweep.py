@@ -31,14 +31,20 @@ from manim import (
     Line,
     Mobject,
     VGroup,
-    config,
 )
 
 from metaphors.board import Board
-from metaphors.layout import METAPHOR, Obstacles, clear, next_to, rects_at, ring_edges
+from metaphors.layout import (
+    FRAME_AREA,
+    PANEL_CODE,
+    PANEL_LABELS,
+    PANEL_SOURCE,
+    SUBTITLE_TOP,
+    free_place,
+)
 from metaphors.performing import Performances, act, performs
+from metaphors.stage import OUTSIDE, legend_entry
 from metaphors.tags import tag
-from rendering.typeset import text
 from story.beats import beat_kind
 from story.reach import side_normal
 from story.refs import arg
@@ -57,9 +63,6 @@ class Sweep(Moving):
 
 #: How far inside/outside counts as "on the boundary" (scene units).
 EPS = 1e-6
-#: the gap kept between a note on the picture and a vertex label (a word's space and more):
-#: nearer, the two read as one text ("Doutside P, inside T")
-NOTE_GAP = 0.12
 #: the gap a tool's line leaves round a vertex label it would run through
 LABEL_GAP = 0.04
 #: a dashed tail of a tool's line beyond a vertex shorter than this is left out: one or two
@@ -214,10 +217,11 @@ def light(board: Board, label: str, first: bool, axis: Line,
     """A ring round a candidate the tool has just reached: green for the first, amber after.
 
     If the first one is reached by a part of the tool outside the polygon but inside T, that
-    part is traced over in red and named: the claim to come will cross an edge there.
-    ``ahead``: what the tool will still sweep over (scene coordinates) while the note is up;
-    the note keeps off it, so that no moving shape crosses a text.
-    Returns the new objects (to fade with the tool) and the animations.
+    part is traced over in red, and the legend says what red is (the analyses' entry,
+    :data:`metaphors.stage.OUTSIDE`), beside the picture (:func:`_legend_place`): the claim
+    to come will cross an edge there. ``ahead``: what the tool will still sweep over (scene
+    coordinates) while the legend is up; the legend keeps off it, so that no moving shape
+    crosses a text. Returns the new objects (to fade with the tool) and the animations.
     """
     theme = board.theme
     colour = theme.result if first else theme.argument
@@ -231,58 +235,46 @@ def light(board: Board, label: str, first: bool, axis: Line,
         p, q = _3d(piece[0]), _3d(piece[1])
         trace = tag(Line(p, q, color=theme.rejected, stroke_width=theme.stroke * 2),
                     "rejected", f"astray:{label}")
-        note = tag(text("outside P, inside T", font=theme.font, size=theme.label_size * 0.8,
-                        colour=theme.rejected), "rejected", "astray:note")
-        _place(board, note, (p + q) / 2, _tool(axis, clip), ahead)
-        kept += [trace, note]
-        anims += [Create(trace), FadeIn(note), Flash(at, color=theme.rejected, flash_radius=0.35)]
+        key = legend_entry(theme, theme.rejected, OUTSIDE, "astray")
+        left, top = _legend_place(board, key, _tool(axis, clip), ahead)
+        key.move_to((left + key.width / 2, top - key.height / 2, 0))
+        kept += [trace, key]
+        anims += [Create(trace), FadeIn(key), Flash(at, color=theme.rejected, flash_radius=0.35)]
     return kept, anims
 
 
-#: how far a note stands from the point it names (its side's or corner's gap), nearest first
-NOTE_AWAY = (0.12, 0.45, 0.8)
-#: the directions round that point a note is tried in: above first, then clockwise
-NOTE_SIDES = ((0, 1), (1, 1), (1, 0), (1, -1), (0, -1), (-1, -1), (-1, 0), (-1, 1))
+def _legend_place(board: Board, key: Mobject, tool: shapely.LineString,
+                  ahead: shapely.Geometry | None = None) -> tuple[float, float]:
+    """The left and top of the run's legend entry: the first free place
+    (:func:`metaphors.layout.free_place`) clear of the panel, the title, the subtitles, the
+    vertex labels, P's and T's fills and the tool, where it is now and where it will still
+    sweep (``ahead``: no moving shape crosses a text) — beside the picture's box (the box the
+    sweep line is drawn in) where it can, else anywhere off the picture; where nothing is
+    clear, the frame's top-left corner."""
+    picture = [g for g in (outline(board.outline), outline(board.objects.get("T")))
+               if g is not None]
+    moving = [tool.buffer(0.08), *([ahead] if ahead is not None else [])]
+    taken = shapely.union_all([*picture, *moving, *_beside(board)])
+    x0, y0, x1, y1 = shapely.union_all(picture).bounds if picture else (0, 0, 0, 0)
+    margin = 0.35  # the sweep line's margin round the polygon's box (:func:`_long_line`)
+    frame_box = shapely.box(x0 - margin, y0 - margin, x1 + margin, y1 + margin)
+    for around in (shapely.union(taken, frame_box), taken):
+        found = free_place(key.width, key.height, around)
+        if found is not None:
+            return found
+    return FRAME_AREA[0], FRAME_AREA[3]
 
 
-def _place(board: Board, note: Mobject, near: np.ndarray, tool: shapely.LineString,
-           ahead: shapely.Geometry | None = None) -> None:
-    """Put a note beside a point, in the first place round it (:data:`NOTE_SIDES`, nearest
-    :data:`NOTE_AWAY` first; :func:`metaphors.layout.next_to`) that is on screen, keeps
-    :data:`NOTE_GAP` from every vertex label (nearer, the two read as one text), half that
-    from what the tool will still sweep over (``ahead``: no moving shape crosses a text) and
-    is crossed by no edge (the polygon's, T's: a text an edge runs through is worse to read
-    than one over a fill) — of those, the one least over the polygon, T and the tool. Where
-    no place is all of these, the last wish goes first: edges, then the path ahead, then the
-    labels (:func:`metaphors.layout.clear`)."""
-    size = (note.width, note.height)
-    centres = next_to([near], NOTE_SIDES, NOTE_AWAY, size)
-    rects = rects_at(centres, size)
-    screen = (-config.frame_width / 2 + 0.1, -config.frame_height / 2,
-              METAPHOR.x + METAPHOR.width / 2 + 0.4, config.frame_height / 2)
-    shapes = [g for g in (outline(board.outline), outline(board.objects.get("T"))) if g is not None]
-    edges = [edge for g in shapes for ring in _rings(g) for edge in ring_edges(ring[:-1])]
-    labels = [_box(marker[-1]).bounds for marker in board.markers.values()]
-    wishes = [clear(centres, size, Obstacles(), 0.0, screen),
-              clear(centres, size, Obstacles(boxes=labels), NOTE_GAP),
-              clear(centres, size, Obstacles(shapes=[ahead] if ahead is not None else []),
-                    NOTE_GAP / 2),
-              clear(centres, size, Obstacles(segments=edges), 1e-6)]
-    busy = shapely.union_all([*shapes, tool.buffer(0.08)])
-    covered = np.round(shapely.area(shapely.intersection(
-        shapely.box(rects[:, 0], rects[:, 1], rects[:, 2], rects[:, 3]), busy)), 3)
-    for kept in range(len(wishes), -1, -1):
-        ok = np.logical_and.reduce([*wishes[:kept], np.ones(len(centres), dtype=bool)])
-        if ok.any():
-            best = min(np.flatnonzero(ok), key=lambda k: (covered[k], k))
-            note.move_to(_3d(centres[best]))
-            return
-
-
-def _rings(shape: shapely.Geometry) -> list[list[tuple[float, float]]]:
-    """The rings (outer and holes) of a polygon's every part, each closed."""
-    return [list(ring.coords) for part in shapely.get_parts(shape) if part.geom_type == "Polygon"
-            for ring in (part.exterior, *part.interiors)]
+def _beside(board: Board) -> list[shapely.Geometry]:
+    """What stands on screen beside the picture: its vertex labels (and dots), the panel's
+    whole column (its polygon's labels, its code, its call line: an entry among them read
+    as the panel's, "A ▪ outside P, in T"), the subtitles' band and the title's line (an
+    entry beside a short title read as part of it)."""
+    boxes = [_box(m) for m in board.markers.values()]
+    title = board.title.get_corner(np.array([-1, -1, 0]))[1]
+    panel = min(b.x - b.width / 2 for b in (PANEL_CODE, PANEL_LABELS, PANEL_SOURCE))
+    return [*boxes, shapely.box(panel, -4.5, 8.0, 4.5),
+            shapely.box(-8.0, -4.5, 8.0, SUBTITLE_TOP), shapely.box(-8.0, title, 8.0, 4.5)]
 
 
 def _box(mobject: Mobject) -> shapely.Polygon:

@@ -1025,6 +1025,19 @@ def _crowded(outline_node: dict, markers: dict[str, dict]) -> list[str]:
 LEAST_NOTE_GAP = 0.12
 #: the notes a metaphor writes beside what it points at, on the picture
 _NOTES = ("astray:note",)
+#: a legend's entries (a swatch and its words): a run's or an analysis's
+_LEGEND = "legend:"
+
+
+def _notes(node: dict) -> Iterator[tuple[str, tuple[float, float, float, float]]]:
+    """(text, box) of each note (:data:`_NOTES`) and legend entry (:data:`_LEGEND`, its
+    swatch and words) in a node and its parts."""
+    for part in mobject_nodes(node):
+        name = part.get("name") or ""
+        if name in _NOTES and part.get("box"):
+            yield part["text"], tuple(part["box"])
+        elif name.startswith(_LEGEND) and (box := _box_of(part)) is not None:
+            yield _text_of(part), box
 
 
 def _named_label_boxes(node: dict) -> Iterator[tuple[str, tuple[float, float, float, float]]]:
@@ -1050,9 +1063,8 @@ def crowded_notes(data: dict) -> list[str]:
     those of the polygon drawn last before the note (a scene of several runs draws several)."""
     found = []
     for anim, labels in _with_labels(data):
-        for part in mobject_nodes(anim.get("mobject", {})):
-            if part.get("name") in _NOTES and part.get("box"):
-                found += _touching(part, labels)
+        for words, box in _notes(anim.get("mobject", {})):
+            found += _touching({"text": words, "box": box}, labels)
     return sorted(set(found))
 
 
@@ -1255,10 +1267,47 @@ def calls_over_code(data: dict) -> list[str]:
 _GROWING = ("water",)
 
 
+#: the picture's fills a note or a legend must not stand over: P's and T's (a run's, an
+#: analysis's)
+_FILLS = ("polygon", "analysis:polygon", "T", "analysis:T")
+#: the most of a note's or a legend entry's box that may lie over the picture's fills (square
+#: units: a corner touching an edge's stroke, no more)
+MOST_TEXT_OVER_FILL = 1e-3
+
+
+def notes_over_fills(data: dict) -> list[str]:
+    """The notes (:data:`_NOTES`) and legend entries (:data:`_LEGEND`) that come in over P's
+    or T's fill (:data:`_FILLS`, the ones drawn last before them), as ``"play 13 'outside P,
+    inside T': 0.48 over the picture"``: issue 22, no text over the picture (the run's
+    "outside P, inside T" stood inside P, over its fill, beside the red piece it named)."""
+    from shapely.geometry import box as rectangle
+    from shapely.ops import unary_union
+
+    fills: dict[str, object] = {}
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _FILLS \
+                    and node.get("points"):
+                if node["name"] in _POLYGONS:
+                    fills = {}
+                fills[node["name"]] = _outline(node)
+            if anim.get("type") in OUTGOING or not fills:
+                continue
+            picture = unary_union([f for f in fills.values() if f is not None])
+            for words, box in _notes(node):
+                over = rectangle(*box).intersection(picture).area
+                if over > MOST_TEXT_OVER_FILL:
+                    found.append(f"play {k} {words!r}: {over:.2f} over the picture")
+    return found
+
+
 def shapes_under_text(data: dict) -> list[str]:
     """The growing shapes (:data:`_GROWING`) drawn under a subtitle or a title, or off the
     screen's edge, as ``"water under the subtitle"``: the picture keeps to its part of the
-    screen, so that no text is read over it."""
+    screen, so that no text is read over it; and the picture's fills under a note or a
+    legend (:func:`notes_over_fills`)."""
     texts = {(n["name"], tuple(n["box"])) for n in graph_nodes(data)
              if n.get("name") in ("subtitle", "title") and n.get("box")
              and (n.get("text") or "").strip()}
@@ -1273,7 +1322,7 @@ def shapes_under_text(data: dict) -> list[str]:
                   if _overlap(box, where)}
         if box[0] < -7.12 or box[2] > 7.12:
             found.add(f"{node['name']} off the screen")
-    return sorted(found)
+    return [*sorted(found), *notes_over_fills(data)]
 
 
 #: the pieces of a moving tool's drawn line (:func:`metaphors.sweep.drawn_segment`)
@@ -1502,12 +1551,11 @@ def notes_under_moving_tools(data: dict) -> list[str]:
                 x0, y0, x1, y1 = _box_of(node)
                 picture = rectangle(x0 - SWEEP_MARGIN, y0 - SWEEP_MARGIN, x1 + SWEEP_MARGIN,
                                     y1 + SWEEP_MARGIN)
-            for part in mobject_nodes(node):
-                if part.get("name") in _NOTES and part.get("box"):
-                    if anim.get("type") in OUTGOING:
-                        notes.pop(part["text"], None)
-                    else:
-                        notes[part["text"]] = (part["text"], tuple(part["box"]))
+            for words, box in _notes(node):
+                if anim.get("type") in OUTGOING:
+                    notes.pop(words, None)
+                else:
+                    notes[words] = (words, box)
             swept = None
             if name == "sweep" and "target" in anim and node.get("points"):
                 ends = [*_segment(node), *_segment(anim["target"])]

@@ -52,6 +52,7 @@ from tests.reading_rules import (
     labels_without_contrast,
     leftover_verdicts,
     morphed_water,
+    notes_over_fills,
     notes_under_moving_tools,
     red_after_the_pick,
     refaded_texts,
@@ -547,6 +548,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert crowded_panel_labels(data) == [], chapter.slug
     # no note under a moving tool, no vertex label under the clock's face
     assert notes_under_moving_tools(data) == [], chapter.slug
+    # issue 22: no note or legend entry over P's or T's fill
+    assert notes_over_fills(data) == [], chapter.slug
     # and no tool red after its pick (red says "fails")
     assert red_after_the_pick(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug

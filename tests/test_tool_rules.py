@@ -10,6 +10,7 @@ import math
 from tests.reading_rules import (
     labels_under_faces,
     labels_under_tools,
+    notes_over_fills,
     notes_under_moving_tools,
     swept_outside_polygon,
     water_outside_polygon,
@@ -58,6 +59,31 @@ def test_a_note_the_line_will_sweep_over_is_found():
     assert notes_under_moving_tools(crossed) == ["'outside P, inside T' under the sweep"]
     assert notes_under_moving_tools(beside) == notes_under_moving_tools(gone) \
         == notes_under_moving_tools(far) == []
+
+
+def test_a_note_or_a_legend_over_the_picture_is_found():
+    """Issue 22, no text over the picture: Translation's "outside P, inside T" stood inside P,
+    over its fill; a legend entry beside the picture, or a note gone before P comes, is not."""
+    seen = [{"type": "Create", "mobject": POLYGON}]
+    triangle = {"type": "Create", "mobject": {"name": "T", "type": "Polygon",
+                                              "points": _closed((4, 0), (6, 0), (4, 2))}}
+
+    def entry(kind: str, left: float, bottom: float) -> dict:
+        return {"type": kind, "mobject": {"name": "legend:astray", "submobjects": [
+            {"type": "Square", "points": _closed((left, bottom), (left + 0.3, bottom),
+                                                 (left + 0.3, bottom + 0.3),
+                                                 (left, bottom + 0.3))},
+            {"text": "outside P, in T", "box": [left + 0.48, bottom, left + 2.6, bottom + 0.3]}]}}
+
+    over = _graph(seen, [_note("FadeIn", [1.0, 1.0, 3.0, 1.5])])
+    assert notes_over_fills(over) == ["play 1 'outside P, inside T': 1.00 over the picture"]
+    # T's fill counts as the picture too
+    assert notes_over_fills(_graph(seen, [triangle], [entry("FadeIn", 4.1, 0.1)])) \
+        == ["play 2 'outside P, in T': 0.50 over the picture"]
+    assert notes_over_fills(_graph(seen, [triangle], [entry("FadeIn", -3.0, 5.0)])) == []
+    # going off over the picture is no text coming in over it; nor one before any picture
+    assert notes_over_fills(_graph(seen, [_note("FadeOut", [1.0, 1.0, 3.0, 1.5])])) == []
+    assert notes_over_fills(_graph([_note("FadeIn", [1.0, 1.0, 3.0, 1.5])])) == []
 
 
 def test_a_note_the_hand_will_turn_over_is_found():
