@@ -14,11 +14,9 @@ from collections.abc import Iterator, Mapping, Sequence
 
 import numpy as np
 from manim import (
-    DL,
     DOWN,
     ORIGIN,
     RIGHT,
-    UR,
     Create,
     DashedLine,
     Dot,
@@ -283,15 +281,10 @@ def _taken(board: Board) -> BaseGeometry:
     shapes: list[BaseGeometry] = [Region(corners)]
     panel = board.panel
     lights = PANEL_CODE if panel.shows_polygon else PANEL_SOURCE
-    shapes += [_box_of(m) for m in (*board.markers.values(), board.title, *panel.mobjects())]
+    shapes += [box(*area_of(m)) for m in (*board.markers.values(), board.title, *panel.mobjects())]
     shapes += [_rect(lights), _rect(Box(PANEL_CODE.x, PANEL_CALL_Y, PANEL_CODE.width, 0.4)),
                box(-8.0, -4.5, 8.0, SUBTITLE_TOP)]
     return unary_union(shapes)
-
-
-def _box_of(mobject: VMobject) -> BaseGeometry:
-    (x0, y0, _), (x1, y1, _) = mobject.get_corner(DL), mobject.get_corner(UR)
-    return box(x0, y0, x1, y1)
 
 
 def _rect(b: Box) -> BaseGeometry:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
 
-from manim import DL, DOWN, RIGHT, UR, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
+from manim import DOWN, RIGHT, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board, Playable
@@ -30,6 +30,7 @@ from metaphors.layout import (
     grid,
     subtitle_centre,
 )
+from metaphors.marks import area_of
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -209,11 +210,6 @@ def _finder_shape(board: Board, compact: bool) -> VGroup:
     return VGroup(box, mark, words)
 
 
-def _area(mobject: Mobject) -> Area:
-    (left, bottom, _), (right, top, _) = mobject.get_corner(DL), mobject.get_corner(UR)
-    return (float(left), float(bottom), float(right), float(top))
-
-
 def _taken(board: Board) -> list[Area]:
     """What the black box must keep clear of: the picture (outline, vertices and labels), the
     panel (a source's whole box, as its window of lines moves; else its polygon, labels and
@@ -221,11 +217,11 @@ def _taken(board: Board) -> list[Area]:
     reaches."""
     panel, theme = board.panel, board.theme
     # the pictures from further off: a box beside a label reads as part of its name
-    taken = [_grown(_area(m), PICTURE_GAP) for m in (board.outline, *board.markers.values())]
-    taken.append(_area(board.title))
+    taken = [_grown(area_of(m), PICTURE_GAP) for m in (board.outline, *board.markers.values())]
+    taken.append(area_of(board.title))
     if panel.shows_polygon:
-        taken += [_grown(_area(m), PICTURE_GAP) for m in (panel.outline, *panel.markers.values())]
-        taken.append(_area(panel.code))
+        taken += [_grown(area_of(m), PICTURE_GAP) for m in (panel.outline, *panel.markers.values())]
+        taken.append(area_of(panel.code))
     else:
         taken.append(_box_area(PANEL_SOURCE))
     if panel.shows_calls:

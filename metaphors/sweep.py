@@ -42,6 +42,7 @@ from metaphors.layout import (
     SUBTITLE_TOP,
     free_place,
 )
+from metaphors.marks import area_of
 from metaphors.performing import Performances, act, performs
 from metaphors.stage import OUTSIDE, legend_entry
 from metaphors.tags import tag
@@ -176,7 +177,7 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
 def label_gaps(board: Board) -> shapely.Geometry:
     """The vertex labels' boxes, each grown by :data:`LABEL_GAP`: where a tool's line leaves
     a gap (:func:`around_labels`)."""
-    return shapely.union_all([_box(marker[-1]).buffer(LABEL_GAP, join_style="mitre")
+    return shapely.union_all([shapely.box(*area_of(marker[-1])).buffer(LABEL_GAP, join_style="mitre")
                               for marker in board.markers.values()])
 
 
@@ -270,18 +271,11 @@ def _beside(board: Board) -> list[shapely.Geometry]:
     whole column (its polygon's labels, its code, its call line: an entry among them read
     as the panel's, "A ▪ outside P, in T"), the subtitles' band and the title's line (an
     entry beside a short title read as part of it)."""
-    boxes = [_box(m) for m in board.markers.values()]
+    boxes = [shapely.box(*area_of(m)) for m in board.markers.values()]
     title = board.title.get_corner(np.array([-1, -1, 0]))[1]
     panel = min(b.x - b.width / 2 for b in (PANEL_CODE, PANEL_LABELS, PANEL_SOURCE))
     return [*boxes, shapely.box(panel, -4.5, 8.0, 4.5),
             shapely.box(-8.0, -4.5, 8.0, SUBTITLE_TOP), shapely.box(-8.0, title, 8.0, 4.5)]
-
-
-def _box(mobject: Mobject) -> shapely.Polygon:
-    """A mobject's box on screen, as shapely."""
-    (x0, y0), (x1, y1) = mobject.get_corner(np.array([-1, -1, 0]))[:2], mobject.get_corner(
-        np.array([1, 1, 0]))[:2]
-    return shapely.box(x0, y0, x1, y1)
 
 
 def _tool(axis: Line, clip: shapely.Polygon | None = None) -> shapely.LineString:
