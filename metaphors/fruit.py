@@ -136,6 +136,21 @@ def _counter_text(board: Board, words: str, colour: str) -> Mobject:
     return text.move_to((board.frame.center[0], PLATE_Y + 0.68, 0))
 
 
+class Replace(Add):
+    """A cut inside a play: ``new`` is on screen from the play's first frame and ``old`` off
+    it then (the count: a fade from nothing left no count for its first frames, and taking
+    the old one off before the play left none while a caption before it was still read)."""
+
+    def __init__(self, new: Mobject, old: Mobject | None) -> None:
+        super().__init__(new)
+        self.old = old
+
+    def _setup_scene(self, scene: Any) -> None:
+        if scene is not None and self.old is not None:
+            scene.remove(self.old)
+        super()._setup_scene(scene)
+
+
 def ear_test(board: Board, beat: EarTest) -> None:
     """The vertex tested pulses; a vertex that is no ear shows why: its triangle, outlined in
     red, with the vertex inside it pulsing too (or, not convex, the triangle alone)."""
@@ -259,9 +274,9 @@ def clip(board: Board, beat: Slice) -> None:
     # the count is cut, not morphed (glyphs melting into each other read as other numbers)
     # nor faded in (a fade from nothing left no count in its first frames: at the fast
     # steps' pace, two frames of three): the old goes and the new is there in one frame
-    board.scene.remove(board.objects["counter"])
+    anims: list[Playable] = [Transform(piece, target), FadeOut(knife),
+                             Replace(counter, board.objects.get("counter"))]
     board.keep("counter", counter)
-    anims: list[Playable] = [Transform(piece, target), FadeOut(knife), Add(counter)]
     if data.rest:
         anims.append(Transform(board.outline, _fruit(board, data.rest)))
     else:
@@ -283,13 +298,14 @@ def _whole(board: Board, beat: Slice) -> None:
     n = board.polygon.n + sum(len(h.points) for h in board.holes)
     result = _counter_text(board, count_words(n, holes, beat.total), theme.result)
     # cut in where the last count stood (:func:`clip`): 11 / 11 is up until this replaces it
-    board.scene.remove(board.objects["counter"])
+    # (taken off here, it was gone while the last slice's caption was still read)
+    shown = Replace(result, board.objects.get("counter"))
     board.keep("counter", result)
     board.keep("triangulation", VGroup(*pieces))
     # under its own caption, at full pace: the last slice's words are over; what the steps
     # left (prune and search's good part, its last diagonal and ✓) goes
     board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call),
-               *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], Add(result),
+               *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], shown,
                *board.clear_labels(*pieces),
                run_time=1.2, at_rest=True)
     board.scene.wait(1.0)

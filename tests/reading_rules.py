@@ -84,8 +84,10 @@ def small_texts(data: dict) -> list[str]:
 
 #: the animations that take a mobject off the screen, and those that put one on
 OUTGOING = {"FadeOut", "Uncreate", "Unwrite", "ShrinkToCenter"}
-#: ``Add``: a cut, the mobject on screen from the play's first frame (ear clipping's counts)
-INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter", "Add"}
+#: ``Add``, ``Replace`` (:class:`metaphors.fruit.Replace`: the one it replaces goes in the
+#: same frame): a cut, the mobject on screen from the play's first frame (ear clipping's counts)
+INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter", "Add",
+            "Replace"}
 
 
 def _text_of(node: dict) -> str:
@@ -408,13 +410,16 @@ def broken_counts(data: dict) -> list[str]:
 
 
 def flickering_counts(data: dict) -> list[str]:
-    """The counts (``"3 / 11 slices"``, the whole count after them) that come in by a fade
-    where a count of their run stood, as ``"play 134: FadeIn '2 / 11 slices' after '1 / 11
-    slices'"``: the one before was cut (or faded out), and a fade starts from nothing, so for
-    its first frames no count is on screen (at the fast steps' pace, two frames of three at
-    -ql: the count flickered and was gone at 98 s in chapter 4). A count replacing a count is
-    cut in (``Add``) or turned into it (a transform); a run's first count may fade in. A run
-    starts where its polygon is drawn (``Create``) or its count starts again at 0."""
+    """The counts (``"3 / 11 slices"``, the whole count after them) that come in otherwise
+    than by a cut from the count of their run before them, as ``"play 134: FadeIn '2 / 11
+    slices' after '1 / 11 slices'"``: a fade starts from nothing, so for its first frames no
+    count is on screen (at the fast steps' pace, two frames of three at -ql: the count
+    flickered and was gone at 98 s in chapter 4), and an ``Add`` comes after the one before
+    was taken off unseen by the graph, maybe plays before (11 / 11 was taken off before the
+    wait that held its caption, gone for 1.6 s). A count replacing a count comes by
+    ``Replace`` (:class:`metaphors.fruit.Replace`: the old one off in the same frame); a
+    run's first count may fade in. A run starts where its polygon is drawn (``Create``) or
+    its count starts again at 0."""
     found = []
     before: str | None = None
     for k, play in enumerate(data["plays"]):
@@ -427,7 +432,7 @@ def flickering_counts(data: dict) -> list[str]:
             text = _text_of(node)
             if (m := _SLICES.search(text)) is not None and int(m[1]) == 0:
                 before = None
-            if before is not None and anim["type"] != "Add":
+            if before is not None and anim["type"] != "Replace":
                 found.append(f"play {k}: {anim['type']} {text!r} after {before!r}")
             before = text
     return found

@@ -25,17 +25,20 @@ P = {"name": "polygon", "type": "Polygon", "points": _closed((0, 0), (4, 0), (4,
 def test_a_count_faded_in_where_a_count_stood_is_found():
     start = [{"type": "Create", "mobject": P}, _count("FadeIn", 0)]
     faded = _graph(start, [_count("FadeIn", 1)], [_count("FadeIn", 2)], [_whole("FadeIn")])
-    cut = _graph(start, [_count("Add", 1)], [_count("Add", 2)], [_whole("Add")])
+    cut = _graph(start, [_count("Replace", 1)], [_count("Replace", 2)], [_whole("Replace")])
     assert flickering_counts(faded) == [
         "play 1: FadeIn '1 / 3 slices' after '0 / 3 slices'",
         "play 2: FadeIn '2 / 3 slices' after '1 / 3 slices'",
         "play 3: FadeIn 'n − 2 = 5 − 2 = 3 triangles' after '2 / 3 slices'"]
     assert flickering_counts(cut) == []
+    # an Add: the one before taken off unseen, maybe plays before (11 / 11 before its wait)
+    added = _graph(start, [_count("Add", 1)])
+    assert flickering_counts(added) == ["play 1: Add '1 / 3 slices' after '0 / 3 slices'"]
     # a count faded out and another faded in later: absent between two of its values
     gone = _graph(start, [{**_count("FadeOut", 0)}], [_count("FadeIn", 1)])
     assert flickering_counts(gone) == ["play 2: FadeIn '1 / 3 slices' after '0 / 3 slices'"]
     # a new run's first count may fade in
-    again = _graph(start, [_count("Add", 1)], [{"type": "Create", "mobject": P}],
+    again = _graph(start, [_count("Replace", 1)], [{"type": "Create", "mobject": P}],
                    [_count("FadeIn", 0)])
     assert flickering_counts(again) == []
 
