@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 from manim import (
+    Add,
     Create,
     Ellipse,
     FadeIn,
@@ -135,6 +136,21 @@ def _counter_text(board: Board, words: str, colour: str) -> Mobject:
     return text.move_to((board.frame.center[0], PLATE_Y + 0.68, 0))
 
 
+class Replace(Add):
+    """A cut inside a play: ``new`` is on screen from the play's first frame and ``old`` off
+    it then (the count: a fade from nothing left no count for its first frames, and taking
+    the old one off before the play left none while a caption before it was still read)."""
+
+    def __init__(self, new: Mobject, old: Mobject | None) -> None:
+        super().__init__(new)
+        self.old = old
+
+    def _setup_scene(self, scene: Any) -> None:
+        if scene is not None and self.old is not None:
+            scene.remove(self.old)
+        super()._setup_scene(scene)
+
+
 def ear_test(board: Board, beat: EarTest) -> None:
     """The vertex tested pulses; a vertex that is no ear shows why: its triangle, outlined in
     red, with the vertex inside it pulsing too (or, not convex, the triangle alone)."""
@@ -255,14 +271,17 @@ def clip(board: Board, beat: Slice) -> None:
         min(height, target.height))
     target.move_to((board.frame.center[0] + x, PLATE_Y, 0))
     counter = _counter(board, data.k, data.total)
-    # the count is cut, not morphed: glyphs melting into each other read as other numbers
-    board.scene.remove(board.objects["counter"])
+    # the count is cut, not morphed (glyphs melting into each other read as other numbers)
+    # nor faded in (a fade from nothing left no count in its first frames: at the fast
+    # steps' pace, two frames of three): the old goes and the new is there in one frame
+    anims: list[Playable] = [Transform(piece, target), FadeOut(knife),
+                             Replace(counter, board.objects.get("counter"))]
     board.keep("counter", counter)
-    anims = [Transform(piece, target), FadeOut(knife), FadeIn(counter)]
     if data.rest:
         anims.append(Transform(board.outline, _fruit(board, data.rest)))
     else:
         anims.append(FadeOut(board.outline))
+    anims += _good_shrinks(board, data.good)
     board.scene.add(piece)
     board.play(beat, *anims, run_time=1.0)
     board.keep(f"slice:{data.k}", piece)
@@ -278,13 +297,15 @@ def _whole(board: Board, beat: Slice) -> None:
     holes = len(board.holes)
     n = board.polygon.n + sum(len(h.points) for h in board.holes)
     result = _counter_text(board, count_words(n, holes, beat.total), theme.result)
-    board.scene.remove(board.objects["counter"])
+    # cut in where the last count stood (:func:`clip`): 11 / 11 is up until this replaces it
+    # (taken off here, it was gone while the last slice's caption was still read)
+    shown = Replace(result, board.objects.get("counter"))
     board.keep("counter", result)
     board.keep("triangulation", VGroup(*pieces))
     # under its own caption, at full pace: the last slice's words are over; what the steps
     # left (prune and search's good part, its last diagonal and ✓) goes
     board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call),
-               *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], FadeIn(result),
+               *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], shown,
                *board.clear_labels(*pieces),
                run_time=1.2, at_rest=True)
     board.scene.wait(1.0)
@@ -296,15 +317,32 @@ def _whole(board: Board, beat: Slice) -> None:
 _FOUND = ("claim", "verdict", "crossed", "crossing")
 
 
+def _good_region(board: Board, points: Sequence[Point]) -> MPolygon:
+    theme = board.theme
+    return tag(MPolygon(*[board.at(p) for p in points], color=theme.called,
+                        stroke_width=theme.stroke, fill_color=theme.called,
+                        fill_opacity=theme.piece_opacity), "called", "good")
+
+
+def _good_shrinks(board: Board, points: Sequence[Point]) -> list[Playable]:
+    """The good sub-polygon's tint after a slice: it shrinks with the fruit (the slice was
+    cut from it, :func:`geometry.prune_search.clip_middle_ear`), or goes with the slice
+    that leaves it only its cutting edge (the search goes on in the polygon round it). On
+    screen past that, it lay over fruit already on the plate, and over no fruit at all
+    once the last slice was cut."""
+    if "good" not in board.objects:
+        return []
+    if len(points) < 3:
+        return [*board.drop("good")]
+    return [Transform(board.objects["good"], _good_region(board, points))]
+
+
 def good(board: Board, beat: Good) -> None:
     """Prune and search: the good sub-polygon kept, tinted; the previous one fades, and so do
     the vertex found no ear (its red triangle) and the diagonal found and its ✓: the good
     part's edge is that diagonal now (left on screen, the next search's claim would take
     their keys and leave them behind, unturned)."""
-    theme = board.theme
-    region = tag(MPolygon(*[board.at(p) for p in beat.points], color=theme.called,
-                          stroke_width=theme.stroke, fill_color=theme.called,
-                          fill_opacity=theme.piece_opacity), "called", "good")
+    region = _good_region(board, beat.points)
     board.play(beat, *board.drop("good", *_TEST, *_FOUND), FadeIn(region), run_time=1.2)
     board.keep("good", region)
 
@@ -335,7 +373,10 @@ class EarTest(Beat):
 
 @beat_kind("clip")
 class Slice(Beat):
-    """Slice ``k`` of ``total`` cut off at ``corners``; ``rest`` is what is left of the fruit."""
+    """Slice ``k`` of ``total`` cut off at ``corners``; ``rest`` is what is left of the fruit;
+    ``good``, prune and search's good sub-polygon the slice was cut from, as it is left
+    (its points; fewer than three once only its cutting edge is left; empty in ear clipping,
+    or where the search is in the whole polygon)."""
 
     corners: tuple[str, ...]
     points: tuple[Point, ...]
@@ -343,6 +384,7 @@ class Slice(Beat):
     total: int
     rest: tuple[Point, ...]
     triangulation: tuple[tuple[Point, ...], ...]  # after the last slice, every slice's corners' points; else empty
+    good: tuple[Point, ...] = ()
 
 
 @beat_kind("last-slice")
@@ -439,6 +481,7 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     clipped.append(corners)
     caption = f"Slice {named_together(corners)}: {len(clipped)} / {len(labels) - 2} slices"
     fields = _slice(corners, labels, points, clipped)
+    fields["good"] = _good_left(walk)
     if kind is Slice:
         yield walk.call_beat(kind, caption, call, ret, **fields)
         walk.count_claim("slice")  # after its beat: the beat belongs to the slice it cuts
@@ -465,7 +508,18 @@ def _slice(corners: list[str], labels: list[str], points: list,
     }
 
 
+def _good_left(walk: Walk) -> tuple[Point, ...]:
+    """The points of the innermost good sub-polygon shown (:func:`read_good`) as the log
+    has it now, after a slice (it shrinks, ``change``): empty once it has exited, or when
+    none was shown (ear clipping; prune and search searching the whole polygon)."""
+    for key in reversed(walk.memo("fruit.good", list)):
+        if key in walk.live:
+            return points_of(walk.live[key].get("points", []))
+    return ()
+
+
 def read_good(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    walk.memo("fruit.good", list).append(walk.result_ref(ret))
     state = walk.entered_after(ret, walk.result_ref(ret))
     yield walk.call_beat(Good, "A good sub-polygon: one cut edge, about half the vertices; "
                          "its middle vertex is tested next", call, ret,

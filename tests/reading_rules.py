@@ -84,7 +84,10 @@ def small_texts(data: dict) -> list[str]:
 
 #: the animations that take a mobject off the screen, and those that put one on
 OUTGOING = {"FadeOut", "Uncreate", "Unwrite", "ShrinkToCenter"}
-INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter"}
+#: ``Add``, ``Replace`` (:class:`metaphors.fruit.Replace`: the one it replaces goes in the
+#: same frame): a cut, the mobject on screen from the play's first frame (ear clipping's counts)
+INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter", "Add",
+            "Replace"}
 
 
 def _text_of(node: dict) -> str:
@@ -403,6 +406,96 @@ def broken_counts(data: dict) -> list[str]:
     said = sum(int(m[1]) for text in shown if (m := _RESULT.search(text)) is not None)
     if drawn != said or drawn < sum(total for _, total, _ in runs):
         found.append(f"{drawn} triangles drawn, {said} said")
+    return found
+
+
+def flickering_counts(data: dict) -> list[str]:
+    """The counts (``"3 / 11 slices"``, the whole count after them) that come in otherwise
+    than by a cut from the count of their run before them, as ``"play 134: FadeIn '2 / 11
+    slices' after '1 / 11 slices'"``: a fade starts from nothing, so for its first frames no
+    count is on screen (at the fast steps' pace, two frames of three at -ql: the count
+    flickered and was gone at 98 s in chapter 4), and an ``Add`` comes after the one before
+    was taken off unseen by the graph, maybe plays before (11 / 11 was taken off before the
+    wait that held its caption, gone for 1.6 s). A count replacing a count comes by
+    ``Replace`` (:class:`metaphors.fruit.Replace`: the old one off in the same frame); a
+    run's first count may fade in. A run starts where its polygon is drawn (``Create``) or
+    its count starts again at 0."""
+    found = []
+    before: str | None = None
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if node.get("name") == "polygon" and anim["type"] == "Create":
+                before = None
+            if node.get("name") != "counter" or anim["type"] not in INCOMING:
+                continue
+            text = _text_of(node)
+            if (m := _SLICES.search(text)) is not None and int(m[1]) == 0:
+                before = None
+            if before is not None and anim["type"] != "Replace":
+                found.append(f"play {k}: {anim['type']} {text!r} after {before!r}")
+            before = text
+    return found
+
+
+#: the most of a good sub-polygon's tint that may lie off the fruit (square units: rounding)
+MOST_GOOD_OFF = 0.02
+
+
+def _region(node: dict):
+    """A drawn polygon's region (its rings: the largest, less the others)."""
+    from shapely.geometry import Polygon as Region
+
+    rings = sorted((Region(c).buffer(0) for c in _paths(node)), key=lambda r: -r.area)
+    if not rings:
+        return None
+    region = rings[0]
+    for hole in rings[1:]:
+        region = region.difference(hole)
+    return region
+
+
+def stale_good_parts(data: dict) -> list[str]:
+    """Prune and search's good sub-polygon (its tint, named ``good``) lying over no fruit
+    (the polygon as it stands: ear clipping's fruit shrinks as slices are cut), as ``"play
+    177: 1.23 off the fruit"`` or ``"play 177: over no fruit"``: the good part shrinks with
+    the fruit (the slices are cut from it) and goes when only its cutting edge is left; in
+    chapter 4 the tint A-B-G-H stayed while its slices lay on the plate and the fruit was
+    gone. Judged after each play where both were last seen the same way (a turn of the
+    picture leaves their places unknown until each is drawn again)."""
+    unknown = object()
+    fruit: object = None
+    good: object = None
+    found, said = [], ""  # each stale span once, at its first play
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name = node.get("name")
+            if name not in ("polygon", "good"):
+                continue
+            if name == "polygon" and anim["type"] == "Create":  # a run starts
+                good = None
+            if anim["type"] in OUTGOING:
+                shape = None
+            elif anim["type"] == "Turn":
+                shape = unknown
+            else:
+                shape = _region(anim.get("target") or node)
+            if name == "polygon":
+                fruit = shape
+            else:
+                good = shape
+        if good is None or good is unknown or fruit is unknown:
+            said = ""
+            continue
+        words = ""
+        if fruit is None:
+            words = "over no fruit"
+        elif (off := good.difference(fruit).area) > MOST_GOOD_OFF:  # type: ignore[attr-defined]
+            words = f"{off:.2f} off the fruit"
+        if words and words != said:
+            found.append(f"play {k}: {words}")
+        said = words
     return found
 
 

@@ -42,6 +42,7 @@ from tests.reading_rules import (
     crowded_vertex_labels,
     far_verdicts,
     fleeting_kind_words,
+    flickering_counts,
     hidden_failures,
     jumping_stacks,
     labels_on_claims,
@@ -63,6 +64,7 @@ from tests.reading_rules import (
     short_falls,
     small_texts,
     stale_endings,
+    stale_good_parts,
     stale_lit_rows,
     stray_kind_words,
     swept_outside_polygon,
@@ -527,6 +529,11 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert repeated_verdicts(data) == [], chapter.slug
     # issue 22 item 5: counters run 1 … n − 2 and end on the whole triangulation
     assert broken_counts(data) == [], chapter.slug
+    # and each count is cut in where the last stood, never faded in from nothing (chapter
+    # 4's "n / 11 slices" was gone at 98 s); prune and search's good part never outlives
+    # the fruit it tints (A-B-G-H stayed with every slice on the plate)
+    assert flickering_counts(data) == [], chapter.slug
+    assert stale_good_parts(data) == [], chapter.slug
     # issue 22: the whole triangulation comes under its own caption, not the last step's
     assert stale_endings(data) == [], chapter.slug
     assert stale_lit_rows(data) == [], chapter.slug

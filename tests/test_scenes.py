@@ -60,6 +60,7 @@ from tests.reading_rules import (
     crowded_vertex_labels,
     far_verdicts,
     fleeting_kind_words,
+    flickering_counts,
     graph_nodes,
     hidden_failures,
     jumping_stacks,
@@ -82,6 +83,7 @@ from tests.reading_rules import (
     small_texts,
     stale_call_lines,
     stale_endings,
+    stale_good_parts,
     stale_lit_rows,
     stray_kind_words,
     swept_outside_polygon,
@@ -281,6 +283,11 @@ def test_slices_are_counted_one_by_one_up_to_the_whole_triangulation(case):
     """Issue 22 item 5: a slice counter runs 0, 1 … n − 2 and never jumps; the run ends on
     the whole triangulation drawn in P with its count."""
     assert broken_counts(graph(case).data) == [], case.id
+    # and each count is cut in where the last stood, never faded in from nothing (the count
+    # was gone in the fast steps' first frames)
+    assert flickering_counts(graph(case).data) == [], case.id
+    # prune and search's good part lies on the fruit: it shrinks with it, never outlives it
+    assert stale_good_parts(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
