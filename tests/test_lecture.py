@@ -623,7 +623,7 @@ def test_ear_clipping_and_monotone_end_on_the_whole_triangulation(slug, runs):
     chapter = next(c for c in lecture_chapters() if c.slug == slug)
     data = build(_chapter_class(chapter).handed()).data
     said = [n["text"] for p in data["plays"] for a in p["animations"]
-            if a["type"] == "FadeIn" and (n := a["mobject"]).get("name") == "counter"
+            if a["type"] in ("FadeIn", "Replace") and (n := a["mobject"]).get("name") == "counter"
             and n["text"].endswith(" triangles")]
     assert len(said) == runs and all(s.startswith("n ") for s in said), said
     assert broken_counts(data) == []
