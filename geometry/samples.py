@@ -65,11 +65,14 @@ _COUNTEREXAMPLE: tuple[Point, ...] = ((0.3, 2.7), (6.5, 1.1), (3.9, 3.6), (4.5, 
 # 13 vertices, 5 reflex; triangle ABC at the left-most vertex B holds two candidates (G, H),
 # so every inner-diagonal heuristic has a choice to make; the sweep down meets a split vertex
 # (D) and two merge vertices (K, M). Drawn with room (issue 22): no angle under 15° (the
-# least is 29.7° at L), no vertex nearer an edge it is not on than 3 % of the frame's height
-# at the lecture's scale (the least is 7.8 %: tests/test_samples.py).
+# least is 35.5° at L), no vertex nearer an edge it is not on than 3 % of the frame's height
+# at the lecture's scale (the least is 7.4 %: tests/test_samples.py). Every algorithm's
+# triangles can be counted on screen: none is thinner than 1.5 % of the frame's height (the
+# least is prune and search's CDF, 2.0 %); G at (3, 5) lay 0.07 from ear clipping's BE and
+# M at (7, 11.5) 0.25 from H–L, so BEG and HLM were slivers a viewer could not see.
 _LECTURE: tuple[Point, ...] = (
-    (0, 6), (5, 0), (9, 2), (14, 1), (13, 5), (3, 5), (5, 7),
-    (12, 8), (14, 12), (9, 11), (9, 15), (7, 11.5), (5.5, 14),
+    (0, 6), (5, 0), (9, 2), (14, 1), (13, 5), (3.5, 5.5), (5, 7),
+    (12, 8), (14, 12), (9, 11), (9, 15), (6.5, 11.5), (5.5, 14),
 )  # fmt: skip
 
 # 8 vertices, 2 reflex; gravity hangs the ball at C, it falls onto FG, slides to G, and the

@@ -26,6 +26,7 @@ from geometry.samples import (
     sample_from_spec,
     sample_names,
 )
+from geometry.triangulate import ALGORITHMS, triangulate
 
 FIXED = [
     "counterexample", "counterexample-twin", "square", "triangle", "lecture", "two-ears",
@@ -246,6 +247,25 @@ def test_the_lecture_polygon_has_room():
         near = min(_distance_to_segment(pts[v], pts[e], pts[(e + 1) % n]) for e in range(n)
                    if v not in (e, (e + 1) % n))
         assert near * scale >= 0.03 * frame_height, (p.labels[v], near * scale / frame_height)
+
+
+@pytest.mark.parametrize("algorithm", ALGORITHMS)
+def test_every_triangle_of_the_lecture_polygon_can_be_seen(algorithm):
+    """Issue 22 item 5 (results drawn, n − 2 of them): each algorithm's triangles on the lecture
+    polygon are at least 1.5 % of the frame's height thick on screen (their least altitude),
+    so a class can count them; with G at (3, 5) ear clipping's BEG was 0.3 % (1.5 px at 480p)
+    and the whole triangulation showed 10 triangles."""
+    from metaphors.drawing import Frame
+    from metaphors.layout import METAPHOR
+
+    p = Polygon.from_points(make_sample("lecture"))
+    scale = Frame(p.points, METAPHOR.center, METAPHOR.width, METAPHOR.height).scale
+    for triangle in triangulate(p, algorithm).triangles:
+        a, b, c = (p.points[v] for v in triangle)
+        twice_area = abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+        thickness = twice_area / max(math.dist(a, b), math.dist(b, c), math.dist(c, a))
+        assert thickness * scale >= 0.015 * 8.0, (
+            "".join(p.labels[v] for v in triangle), thickness * scale / 8.0)
 
 
 def test_the_lecture_polygon_keeps_what_the_lecture_needs():
