@@ -29,6 +29,7 @@ from manim import (
     Transform,
     VGroup,
     VMobject,
+    linear,
     rush_into,
 )
 from manim import Polygon as MPolygon
@@ -41,6 +42,7 @@ from metaphors.picture import _UPRIGHT, _movers, again, turn_to
 from metaphors.tags import tag
 from rendering.turn import Turn
 from rendering.typeset import text
+from story.analysis import wraps
 from story.beats import Beat, beat_kind
 from story.states import BallDrop, BallSlide, Point, RubberBand, point
 from story.storyboard import Reading, Walk, read_pick, read_step
@@ -277,16 +279,37 @@ def _scene_point(mobject: Mobject) -> np.ndarray:
 
 
 def slide(board: Board, beat: Slide) -> None:
-    """The ball slides down the edge it hit to its lower end X; the band stretches behind it."""
-    ball, band = board.objects.get("ball"), board.objects.get("band")
+    """The ball slides down the edge it hit to its lower end X; the band stretches behind it,
+    taut at every moment: it wraps each vertex it meets (:func:`story.analysis.wraps`) the
+    moment its straight line would leave P, one play per piece of the slide."""
+    ball, band, mark = (board.objects.get(k) for k in ("ball", "band", "hit"))
     # it landed on a vertex: nothing to slide (the ball and band come together, from `drop`)
-    if ball is None or band is None or beat.slide is None:
+    if ball is None or band is None or mark is None or beat.slide is None:
         board.play(beat, run_time=0.8)
         return
-    x = board.at(beat.slide.to)
-    v = band.get_start()
-    board.play(beat, animate(ball, rate_func=rush_into).move_to(x),
-               Transform(band, _band(board, [v, x]), rate_func=rush_into), run_time=1.2)
+    x, v, hit = board.at(beat.slide.to), band.get_start(), mark.get_center()
+    pieces = wraps(_xy(v), _xy(hit), _xy(x), [_xy(board.vertex(k)) for k in board.where])
+    ends = [t for t, _ in pieces[1:]] + [1.0]
+    for k, ((start, corners), end) in enumerate(zip(pieces, ends, strict=True)):
+        wrapped = [np.array([*c, 0.0]) for c in corners]
+        # the band's new corner sits on its straight line yet: bent there, it does not move
+        band.set_points_as_corners([*wrapped, hit + start * (x - hit)])
+        to = hit + end * (x - hit)
+        anims = (animate(ball, rate_func=linear).move_to(to),
+                 Transform(band, _band(board, [*wrapped, to]), rate_func=linear))
+        seconds = max(SLIDE_SECONDS * (end - start), 0.1)
+        if k == 0:
+            board.play(beat, *anims, run_time=seconds)
+        else:
+            again(board, beat, *anims, run_time=seconds)
+
+
+#: the seconds of the ball's slide from the hit to X
+SLIDE_SECONDS = 1.2
+
+
+def _xy(p: np.ndarray) -> tuple[float, float]:
+    return (float(p[0]), float(p[1]))
 
 
 def snag(board: Board, beat: Snag) -> None:
@@ -304,7 +327,8 @@ def snag(board: Board, beat: Snag) -> None:
     hit = board.objects.get("hit")
     swept = None
     if hit is not None and len(corners) >= 2:
-        swept = tag(MPolygon(corners[0], _scene_point(hit), corners[-1], stroke_width=0,
+        # V, the hit, X and back by Y: what the band swept, never the part behind Y
+        swept = tag(MPolygon(corners[0], _scene_point(hit), *corners[:0:-1], stroke_width=0,
                              fill_color=theme.band, fill_opacity=0.18), "argument", "swept")
         swept.set_z_index(-1)
         board.play(beat, FadeIn(swept), run_time=0.7)
