@@ -42,7 +42,7 @@ from manim import (
 
 from metaphors import catalog
 from metaphors.drawing import crossed_edge
-from metaphors.gravity import Drop, GravityTurn, Slide, Snag
+from metaphors.gravity import RESTING, Drop, GravityTurn, Slide, Snag
 from metaphors.stage import BOX, OUTSIDE, Canvas, Stage, beside, path, place_name, region
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -370,7 +370,8 @@ def _band_moves(stage: Stage, right: Moment, analysis: Analysis, first: list) ->
     it fell along, then the region the band swept between that line and itself."""
     theme, band = stage.theme, right.swept
     ball = tag(Dot(stage.at(band.x), radius=0.12, color=theme.ball, stroke_color=theme.ink,
-                   stroke_width=1.5), "argument", "analysis:ball").set_z_index(5)
+                   stroke_width=1.5, fill_opacity=RESTING), "argument",  # X's dot shows
+               "analysis:ball").set_z_index(5)
     fell = path(stage, shapely.LineString([band.v, band.hit]), theme.band, theme.thin_stroke,
                 "analysis:fall", "argument").set_z_index(3)
     taut = path(stage, shapely.LineString(band.corners(1.0)), theme.band, theme.stroke * 1.3,
