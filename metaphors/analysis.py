@@ -18,7 +18,7 @@ takes to read.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TypeVar, cast
 
@@ -42,7 +42,7 @@ from manim import (
 
 from metaphors import catalog
 from metaphors.drawing import crossed_edge
-from metaphors.gravity import Drop, GravityTurn, Slide, Snag
+from metaphors.gravity import RESTING, Drop, GravityTurn, Slide, Snag
 from metaphors.stage import BOX, OUTSIDE, Canvas, Stage, beside, path, place_name, region
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -99,7 +99,6 @@ class Moment:
     mover: Beat | None
     motion: Motion | None
     band: Band | None
-    captions: Mapping[str, str]  # gravity's steps' captions by action (turn, drop, slide, snag)
     claim: Claim
     verdict: Verdict
     candidates: tuple[str, ...] = ()  # the vertices in T, as the run names them
@@ -116,6 +115,11 @@ class Moment:
     @property
     def swept(self) -> Band:
         return cast(Band, self.band)
+
+    def label_at(self, p: Sequence[float]) -> str:
+        """The label of the vertex at ``p``."""
+        return next(label for label, q in zip(self.labels, self.points, strict=True)
+                    if abs(q[0] - p[0]) < 1e-9 and abs(q[1] - p[1]) < 1e-9)
 
     @property
     def pick(self) -> str:
@@ -141,10 +145,10 @@ def moment_of(heuristic: str, beats: Sequence[Beat]) -> Moment:
     claim, verdict = _first(beats, Claim), _first(beats, Verdict)
     mover = next((b for b in beats if _target(b) is not None), None)
     found = motion(cast(Tool, _target(mover)), t.points) if mover and t else None  # mover: a target's
-    band, captions = _band(beats)
+    band = _band(beats)
     lit = next((b for b in beats if isinstance(b, Candidates)), None)
     return Moment(heuristic, shown.points, shown.labels, t.points if t else None, mover, found,
-                  band, captions, claim, verdict, tuple(lit.candidates) if lit else ())
+                  band, claim, verdict, tuple(lit.candidates) if lit else ())
 
 
 B = TypeVar("B", bound=Beat)
@@ -162,20 +166,19 @@ def _target(beat: Beat) -> Tool | None:
     return beat.at_pick() if isinstance(beat, Moving) else None
 
 
-def _band(beats: Sequence[Beat]) -> tuple[Band | None, dict[str, str]]:
+def _band(beats: Sequence[Beat]) -> Band | None:
     """Gravity's band from its turn, drop, slide and snag beats (None for another run)."""
     kinds = {b.action: b for b in reversed(beats)}  # the first of each
     turn, drop = _kind(kinds, GravityTurn), _kind(kinds, Drop)
     slide, snag = _kind(kinds, Slide), _kind(kinds, Snag)
     if drop is None or snag is None:
-        return None, {}
+        return None
     where = dict(zip(_first(beats, ShowPolygon).labels, _first(beats, ShowPolygon).points,
                      strict=True))
     hit = _xy(drop.drop.hit)
     x = _xy(slide.slide.to) if slide is not None and slide.slide else hit
     y = _xy(where[snag.snagged]) if snag.snagged in where else None
-    band = Band(_xy(where[drop.drop.vertex]), hit, x, y, turn.turn_picture if turn else 0.0)
-    return band, {b.action: b.caption for b in (turn, drop, slide, snag) if b is not None}
+    return Band(_xy(where[drop.drop.vertex]), hit, x, y, turn.turn_picture if turn else 0.0)
 
 
 def _xy(p: Sequence[float]) -> tuple[float, float]:
@@ -362,43 +365,28 @@ def halo(stage: Stage, mark) -> VMobject:
 
 
 def _band_moves(stage: Stage, right: Moment, analysis: Analysis, first: list) -> None:
-    """Gravity: the ball falls from V on its band, slides down to X; the band sweeps the
-    region between the drop line and itself, snagging Y."""
+    """Gravity: the run's end, told once — not its steps again (review r34: turn, fall,
+    slide and snag said and shown a second time): the ball at X on its taut band, the line
+    it fell along, then the region the band swept between that line and itself."""
     theme, band = stage.theme, right.swept
-    said = right.captions
-    arrow = _gravity_arrow(stage)
-    ball = tag(Dot(stage.at(band.v), radius=0.12, color=theme.ball, stroke_color=theme.ink,
-                   stroke_width=1.5), "argument", "analysis:ball").set_z_index(5)
-    string = tag(Line(stage.at(band.v), stage.at(band.v), color=theme.band,
-                      stroke_width=theme.stroke), "argument", "analysis:band").set_z_index(3)
-    stage.say(said.get("gravity-turn", "The polygon turns so that gravity points down"), (first + stage.appear() + [FadeIn(arrow), FadeIn(ball)], 1.5))
-    stage.scene.add(string)
-    stage.say(said["drop"], ([ball.animate.move_to(stage.at(band.hit)),
-                      string.animate.put_start_and_end_on(stage.at(band.v), stage.at(band.hit))],
-                     1.4))
-    snag_at = band.snag_time if band.snag_time is not None else 1.0
-
-    def draw(t: float) -> VGroup:
-        return VGroup(region(stage, band.swept(t), theme.band, 0.3, "swept"),
-                      path(stage, shapely.LineString(band.corners(t)), theme.band,
-                           theme.stroke * 1.3, "band"))
-
-    def slide_to(start: float, end: float):
-        def update(m, a):
-            t = start + (end - start) * a
-            m.become(draw(t))
-            ball.move_to(stage.at(band.ball(t)))
-        return UpdateFromAlphaFunc(drawing, update, rate_func=linear,
-                                   run_time=analysis.slow * max(end - start, 0.1))
-
-    drawing = tag(draw(0.0), "argument", "analysis:tool").set_z_index(1)
-    stage.say(said.get("slide", "It slides down"),
-              ([FadeOut(string), FadeIn(drawing), *stage.key(theme.band, "band swept", "band")],
-               0.3),
-              ([slide_to(0.0, snag_at)], analysis.slow * max(snag_at, 0.1)))
-    flash = [Flash(stage.at(band.y), color=theme.result, flash_radius=0.4)] if band.y else []
-    stage.say(said["snag"], (flash + ([slide_to(snag_at, 1.0)] if snag_at < 1.0 else []),
-                     analysis.slow * max(1.0 - snag_at, 0.1)))
+    ball = tag(Dot(stage.at(band.x), radius=0.12, color=theme.ball, stroke_color=theme.ink,
+                   stroke_width=1.5, fill_opacity=RESTING), "argument",  # X's dot shows
+               "analysis:ball").set_z_index(5)
+    fell = path(stage, shapely.LineString([band.v, band.hit]), theme.band, theme.thin_stroke,
+                "analysis:fall", "argument").set_z_index(3)
+    taut = path(stage, shapely.LineString(band.corners(1.0)), theme.band, theme.stroke * 1.3,
+                "analysis:band", "argument").set_z_index(3)
+    swept = tag(region(stage, band.swept(1.0), theme.band, 0.3, "swept"), "argument",
+                "analysis:swept").set_z_index(1)
+    v, x = (right.label_at(p) for p in (band.v, band.x))
+    shape = f"taut round {right.label_at(band.y)}" if band.y else "straight"
+    stage.say(f"The ball fell from {v} and slid to {x}; the band is {shape}",
+              (first + stage.appear() + [FadeIn(_gravity_arrow(stage)), FadeIn(fell),
+                                         FadeIn(taut), FadeIn(ball)], 1.5),
+              ([], analysis.freeze))
+    stage.say("On the way it swept the shaded part, between the fall and the band",
+              ([FadeIn(swept), *stage.key(theme.band, "band swept", "band")], 1.0),
+              ([], analysis.freeze))
 
 
 def _gravity_arrow(stage: Stage):

@@ -10,6 +10,7 @@ as :mod:`metaphors.picture` turns it, and turns back after the verdict.
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -27,8 +28,10 @@ from manim import (
     Mobject,
     Rectangle,
     Transform,
+    UpdateFromAlphaFunc,
     VGroup,
     VMobject,
+    linear,
     rush_into,
 )
 from manim import Polygon as MPolygon
@@ -41,6 +44,7 @@ from metaphors.picture import _UPRIGHT, _movers, again, turn_to
 from metaphors.tags import tag
 from rendering.turn import Turn
 from rendering.typeset import text
+from story.analysis import wraps
 from story.beats import Beat, beat_kind
 from story.states import BallDrop, BallSlide, Point, RubberBand, point
 from story.storyboard import Reading, Walk, read_pick, read_step
@@ -98,9 +102,10 @@ def drop(board: Board, beat: Drop) -> None:
     close = CloseUp.onto(board, v, hit)
     if close is not None:
         # the words and roles change first: a marker recoloured as it fades would be two
-        # animations of one mobject in one play
-        board.play(beat, run_time=0.4)
-        again(board, beat, *close.zoom_in(), run_time=1.2)
+        # animations of one mobject in one play; the words say what the zoom is for
+        zooming = replace(beat, caption=CLOSE_WORDS)
+        board.play(zooming, run_time=0.4)
+        again(board, zooming, *close.zoom_in(), run_time=1.2)
         close.zoomed_in()
         v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
     ball, band = _ball(board, v), _band(board, [v, v])
@@ -109,10 +114,7 @@ def drop(board: Board, beat: Drop) -> None:
     moves = board.clear_labels(*fall_shapes(v, hit), for_now=True)
     board.keep("band", band)
     board.keep("ball", ball)
-    if close is None:
-        board.play(beat, FadeIn(ball, scale=0.5), *moves, run_time=0.6)
-    else:
-        again(board, beat, FadeIn(ball, scale=0.5), *moves, run_time=0.6)
+    board.play(beat, FadeIn(ball, scale=0.5), *moves, run_time=0.6)
     board.scene.add(band)
     board.scene.bring_to_front(ball)
     again(board, beat, animate(ball, rate_func=rush_into).move_to(hit),
@@ -132,6 +134,8 @@ def drop(board: Board, beat: Drop) -> None:
 #: the least fall, in scene units, drawn at its own size: 8 % of the frame's height (a shorter
 #: one is drawn in a close-up, :class:`CloseUp`); and the most a close-up zooms
 FALL_LEAST, ZOOM_MOST = 0.64, 4.0
+#: what a close-up's caption says as it zooms in
+CLOSE_WORDS = "A close-up: the ball falls only a short way"
 #: how far inside the board's box a vertex must stand, zoomed, to be shown in a close-up
 #: (its label beside it stays inside the box too)
 CLOSE_MARGIN = 0.45
@@ -139,37 +143,21 @@ CLOSE_MARGIN = 0.45
 
 class CloseUp:
     """The picture zoomed ``zoom`` times about ``pivot`` (the fall's middle), nothing leaving
-    the board's box: the part of P in the window that fills the box grows to fill it (its fill
-    and its edges, cut at the window, framed by the box's edge while zoomed), the rest fades,
-    the vertices inside stay. The board's
-    frame follows, so :meth:`Board.at` maps onto the close-up until :meth:`done`."""
+    the board's box: one drawing of P stands in for its outline, redrawn at each frame as P
+    zoomed so far and cut at the box (its fill and its edges, framed by the box's edge while
+    zoomed) — never two copies crossfaded, nor a patch cut at another zoom (review r34: a
+    fill rectangle outside edge A–B); the vertices outside the box fade, those inside stay.
+    The board's frame follows, so :meth:`Board.at` maps onto the close-up until :meth:`done`."""
 
     def __init__(self, board: Board, pivot: np.ndarray, zoom: float):
         self.board, self.pivot, self.zoom = board, np.asarray(pivot, dtype=float), zoom
         box = board.box
         lo = np.array([box.x - box.width / 2, box.y - box.height / 2])
         hi = np.array([box.x + box.width / 2, box.y + box.height / 2])
-        centre = self.pivot[:2]
-        window = shapely.box(*(centre + (lo - centre) / zoom), *(centre + (hi - centre) / zoom))
+        self.box = shapely.box(*lo, *hi)
         theme = board.theme
-        rings = board.outline_rings()
-        inside = shapely.Polygon([p[:2] for p in rings[0]],
-                                 [[p[:2] for p in r] for r in rings[1:]]).intersection(window)
-        parts: list[VMobject] = []
-        for piece in getattr(inside, "geoms", [inside]):
-            if isinstance(piece, shapely.Polygon) and piece.area > 0:
-                parts.append(MPolygon(*[(x, y, 0.0) for x, y in piece.exterior.coords[:-1]],
-                                      stroke_width=0, fill_color=theme.polygon_fill,
-                                      fill_opacity=theme.fill_opacity))
-        for ring in rings:
-            for a, b in zip(ring, [*ring[1:], ring[0]], strict=True):
-                cut = shapely.LineString([a[:2], b[:2]]).intersection(window)
-                for seg in getattr(cut, "geoms", [cut]):
-                    if isinstance(seg, shapely.LineString) and seg.length > 0:
-                        (x0, y0), (x1, y1) = seg.coords[0], seg.coords[-1]
-                        parts.append(Line((x0, y0, 0.0), (x1, y1, 0.0), color=theme.ink,
-                                          stroke_width=theme.stroke))
-        self.fragment = tag(VGroup(*parts), "idle", "close-up")
+        self.rings = [[p[:2] for p in ring] for ring in board.outline_rings()]
+        self.fragment = self.drawn(1.0)
         # the window's edge, while zoomed: P's fill cut square at the box reads as a close-up
         # seen through a frame, not as a polygon with straight new sides
         self.window = tag(Rectangle(width=box.width, height=box.height, color=theme.dial,
@@ -185,6 +173,34 @@ class CloseUp:
         self.outline, self.frame = board.outline, board.frame
         self.others = [m for m in _movers(board) if m is not board.outline
                        and not any(m is marker for marker in board.markers.values())]
+
+    def drawn(self, scale: float) -> VGroup:
+        """P zoomed ``scale`` times about the pivot, cut at the board's box: its fill, then its
+        edges (at 1: the outline as drawn)."""
+        theme, centre = self.board.theme, self.pivot[:2]
+        rings = [[centre + scale * (np.asarray(p) - centre) for p in ring] for ring in self.rings]
+        inside = shapely.Polygon(rings[0], rings[1:]).intersection(self.box)
+        parts: list[VMobject] = []
+        for piece in shapely.get_parts(inside):
+            if isinstance(piece, shapely.Polygon) and piece.area > 0:
+                parts.append(MPolygon(*[(x, y, 0.0) for x, y in piece.exterior.coords[:-1]],
+                                      stroke_width=0, fill_color=theme.polygon_fill,
+                                      fill_opacity=theme.fill_opacity))
+        for ring in rings:
+            for a, b in zip(ring, [*ring[1:], ring[0]], strict=True):
+                cut = shapely.LineString([a, b]).intersection(self.box)
+                for seg in shapely.get_parts(cut):
+                    if isinstance(seg, shapely.LineString) and seg.length > 0:
+                        (x0, y0), (x1, y1) = seg.coords[0], seg.coords[-1]
+                        parts.append(Line((x0, y0, 0.0), (x1, y1, 0.0), color=theme.ink,
+                                          stroke_width=theme.stroke))
+        return tag(VGroup(*parts), "idle", "close-up")
+
+    def _zooming(self, start: float, end: float) -> UpdateFromAlphaFunc:
+        """The drawing of P zoomed from ``start`` to ``end`` times, linearly in the play's
+        (smoothed) time, as the markers and a :class:`Turn` move."""
+        return UpdateFromAlphaFunc(
+            self.fragment, lambda m, a: m.become(self.drawn(start + a * (end - start))))
 
     @classmethod
     def onto(cls, board: Board, v: np.ndarray, hit: np.ndarray) -> CloseUp | None:
@@ -215,9 +231,8 @@ class CloseUp:
 
     def zoom_in(self) -> list[Playable]:
         board = self.board
-        board.scene.add(self.fragment)
-        anims: list[Playable] = [Turn(self.fragment, 0.0, self.pivot, self.zoom),
-                                 FadeOut(self.outline), FadeIn(self.window)]
+        board.scene.replace(self.outline, self.fragment)  # the same picture, in its place
+        anims: list[Playable] = [self._zooming(1.0, self.zoom), FadeIn(self.window)]
         anims += [FadeOut(m) for m in (*self.hidden.values(), *self.others)]
         anims += [animate(m).shift(self.zoomed(board.vertex(label)) - board.vertex(label))
                   for label, m in self.shown.items()]
@@ -239,8 +254,7 @@ class CloseUp:
     def zoom_out(self) -> list[Playable]:
         board = self.board
         self._move_hidden(-1.0)
-        anims: list[Playable] = [Turn(self.fragment, 0.0, self.pivot, 1 / self.zoom),
-                                 FadeIn(self.outline), FadeOut(self.window)]
+        anims: list[Playable] = [self._zooming(self.zoom, 1.0), FadeOut(self.window)]
         anims += [FadeIn(m) for m in (*self.hidden.values(), *self.others)]
         back = self.frame
         for label, m in self.shown.items():
@@ -254,7 +268,7 @@ class CloseUp:
     def done(self) -> None:
         """The picture is whole again: the close-up's fragment goes."""
         self.board.outline = self.outline
-        self.board.scene.remove(self.fragment)
+        self.board.scene.replace(self.fragment, self.outline)
 
 
 #: the hit ring's radius, and the room a label keeps round it (the ball's radius beyond it)
@@ -277,16 +291,43 @@ def _scene_point(mobject: Mobject) -> np.ndarray:
 
 
 def slide(board: Board, beat: Slide) -> None:
-    """The ball slides down the edge it hit to its lower end X; the band stretches behind it."""
-    ball, band = board.objects.get("ball"), board.objects.get("band")
+    """The ball slides down the edge it hit to its lower end X; the band stretches behind it,
+    taut at every moment: it wraps each vertex it meets (:func:`story.analysis.wraps`) the
+    moment its straight line would leave P, one play per piece of the slide."""
+    ball, band, mark = (board.objects.get(k) for k in ("ball", "band", "hit"))
     # it landed on a vertex: nothing to slide (the ball and band come together, from `drop`)
-    if ball is None or band is None or beat.slide is None:
+    if ball is None or band is None or mark is None or beat.slide is None:
         board.play(beat, run_time=0.8)
         return
-    x = board.at(beat.slide.to)
-    v = band.get_start()
-    board.play(beat, animate(ball, rate_func=rush_into).move_to(x),
-               Transform(band, _band(board, [v, x]), rate_func=rush_into), run_time=1.2)
+    x, v, hit = board.at(beat.slide.to), band.get_start(), mark.get_center()
+    pieces = wraps(_xy(v), _xy(hit), _xy(x), [_xy(board.vertex(k)) for k in board.where])
+    ends = [t for t, _ in pieces[1:]] + [1.0]
+    for k, ((start, corners), end) in enumerate(zip(pieces, ends, strict=True)):
+        wrapped = [np.array([*c, 0.0]) for c in corners]
+        # the band's new corner sits on its straight line yet: bent there, it does not move
+        band.set_points_as_corners([*wrapped, hit + start * (x - hit)])
+        to = hit + end * (x - hit)
+        moving = animate(ball, rate_func=linear).move_to(to)
+        if k == len(pieces) - 1:  # it comes to rest on X: see-through, X's dot shows in it
+            moving = moving.set_fill(opacity=RESTING)
+        anims = (moving, Transform(band, _band(board, [*wrapped, to]), rate_func=linear))
+        seconds = max(SLIDE_SECONDS * (end - start), 0.1)
+        if k == 0:
+            board.play(beat, *anims, run_time=seconds)
+        else:
+            again(board, beat, *anims, run_time=seconds)
+    # the ball rests at X under X's dot and label: on top it hid the vertex it names
+    if beat.result in board.markers:
+        board.scene.bring_to_front(board.markers[beat.result])
+
+
+#: the seconds of the ball's slide from the hit to X, and the fill of the ball at rest on X
+#: (the ball hid the vertex it names: review r34, C at 66 s)
+SLIDE_SECONDS, RESTING = 1.2, 0.4
+
+
+def _xy(p: np.ndarray) -> tuple[float, float]:
+    return (float(p[0]), float(p[1]))
 
 
 def snag(board: Board, beat: Snag) -> None:
@@ -304,7 +345,8 @@ def snag(board: Board, beat: Snag) -> None:
     hit = board.objects.get("hit")
     swept = None
     if hit is not None and len(corners) >= 2:
-        swept = tag(MPolygon(corners[0], _scene_point(hit), corners[-1], stroke_width=0,
+        # V, the hit, X and back by Y: what the band swept, never the part behind Y
+        swept = tag(MPolygon(corners[0], _scene_point(hit), *corners[:0:-1], stroke_width=0,
                              fill_color=theme.band, fill_opacity=0.18), "argument", "swept")
         swept.set_z_index(-1)
         board.play(beat, FadeIn(swept), run_time=0.7)

@@ -339,3 +339,76 @@ class Band:
             corners.append(self.y)
         region = shapely.Polygon(corners)
         return region.buffer(0) if region.area > 1e-12 else shapely.GeometryCollection()
+
+
+# --- the band pulled taut ----------------------------------------------------------------------
+
+
+def _cross(o: Point, a: Point, b: Point) -> float:
+    return float((a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]))
+
+
+def _strictly_inside(p: Point, a: Point, b: Point, c: Point) -> bool:
+    """Whether ``p`` lies inside the triangle a-b-c, off its sides (by a relative hair)."""
+    hair = 1e-9 * max(abs(_cross(a, b, c)), 1e-12)
+    sides = (_cross(a, b, p), _cross(b, c, p), _cross(c, a, p))
+    return all(s > hair for s in sides) or all(s < -hair for s in sides)
+
+
+def taut(v: Point, hit: Point, ball: Point, points: Sequence[Point]) -> list[tuple[float, float]]:
+    """The rubber band from ``v`` to the ball, pulled taut round the ``points`` (the
+    polygon's vertices) it has swept: the ball slid from ``hit`` along an edge, so the band
+    swept the triangle v-hit-ball, and it wraps round the vertices inside it — the arc of
+    their convex hull (with v and the ball) from v to the ball on the hit's side. Never the
+    straight v-ball once a vertex stands in the way: that one runs outside P.
+
+    >>> taut((0, 0), (0, -4), (4, -4), [(1, -2), (9, 9)])  # (1, -2) is in the way
+    [(0.0, 0.0), (1.0, -2.0), (4.0, -4.0)]
+    >>> taut((0, 0), (0, -4), (1, -4), [(3, -2)])
+    [(0.0, 0.0), (1.0, -4.0)]
+    """
+    start, end = _pt(v), _pt(ball)
+    inside = [_pt(p) for p in points if _strictly_inside(p, v, hit, ball)]
+    if not inside:
+        return [start, end]
+    ring = [_pt(p) for p in shapely.MultiPoint([start, end, *inside]).convex_hull
+            .exterior.coords[:-1]]
+    i, j = ring.index(start), ring.index(end)
+    ahead = [ring[(i + k) % len(ring)] for k in range((j - i) % len(ring) + 1)]
+    back = [ring[(i - k) % len(ring)] for k in range((i - j) % len(ring) + 1)]
+    return ahead if len(ahead) > len(back) else back  # the other arc is the straight v-ball
+
+
+def wraps(v: Point, hit: Point, x: Point, points: Sequence[Point]
+          ) -> list[tuple[float, list[tuple[float, float]]]]:
+    """The band's slide from ``hit`` to ``x`` in pieces ``(t, corners)``: from the time
+    ``t`` (0 at the hit, 1 at X) it wraps the ``corners`` before its free end, the ball, up
+    to the next piece's time; each piece begins as the band's free end meets one more vertex
+    (the ball on the line through the last two corners).
+
+    >>> wraps((0, 0), (0, -4), (4, -4), [(1, -2)])
+    [(0.0, [(0.0, 0.0)]), (0.5, [(0.0, 0.0), (1.0, -2.0)])]
+    """
+    corners = taut(v, hit, x, points)[:-1]
+    (hx, hy), (xx, xy) = _pt(hit), _pt(x)
+    pieces = [(0.0, corners[:1])]
+    for k in range(1, len(corners)):
+        (ax, ay), (bx, by) = corners[k - 1], corners[k]
+        ex, ey, dx, dy = xx - hx, xy - hy, bx - ax, by - ay
+        denom = ex * dy - ey * dx
+        t = ((ax - hx) * dy - (ay - hy) * dx) / denom if abs(denom) > 1e-15 else pieces[-1][0]
+        pieces.append((min(1.0, max(pieces[-1][0], t)), corners[:k + 1]))
+    return pieces
+
+
+def band_at(pieces: Sequence[tuple[float, list[tuple[float, float]]]], hit: Point, x: Point,
+            t: float) -> list[tuple[float, float]]:
+    """The band drawn at time ``t`` of the slide (:func:`wraps`' ``pieces``): the corners it
+    wraps by then, and the ball, ``t`` of the way from ``hit`` to ``x``.
+
+    >>> band_at(wraps((0, 0), (0, -4), (4, -4), [(1, -2)]), (0, -4), (4, -4), 0.75)
+    [(0.0, 0.0), (1.0, -2.0), (3.0, -4.0)]
+    """
+    corners = next(c for start, c in reversed(pieces) if start <= t or start == 0.0)
+    (hx, hy), (xx, xy) = _pt(hit), _pt(x)
+    return [*corners, (hx + t * (xx - hx), hy + t * (xy - hy))]

@@ -528,12 +528,22 @@ _RUN_POLYGONS = ("polygon", "analysis:polygon")
 
 
 def _shape(node: dict) -> tuple[tuple[float, float], ...]:
-    """A drawn polygon's shape wherever and however large it is drawn: its corners over the
-    size of its box, rounded (a run and an analysis draw one polygon in different boxes)."""
+    """A drawn polygon's shape wherever, however large and however turned it is drawn: each
+    corner's edge over the perimeter and its turn (degrees), rounded, from the corner that
+    makes the least tuple (a run and an analysis draw one polygon in different boxes, and
+    gravity's analysis draws it turned as its run left it)."""
     corners = _corners(node)
-    x0, y0 = min(x for x, _ in corners), min(y for _, y in corners)
-    size = max(max(x for x, _ in corners) - x0, max(y for _, y in corners) - y0, 1e-9)
-    return tuple((round((x - x0) / size, 2), round((y - y0) / size, 2)) for x, y in corners)
+    n = len(corners)
+    edges = [math.dist(corners[k], corners[(k + 1) % n]) for k in range(n)]
+    perimeter = max(sum(edges), 1e-9)
+
+    def turn(k: int) -> float:
+        (ax, ay), (bx, by), (cx, cy) = corners[k - 1], corners[k], corners[(k + 1) % n]
+        return math.degrees(math.atan2((bx - ax) * (cy - by) - (by - ay) * (cx - bx),
+                                       (bx - ax) * (cx - bx) + (by - ay) * (cy - by)))
+
+    form = [(round(edges[k] / perimeter, 2), round(turn(k))) for k in range(n)]
+    return min(tuple(form[k:] + form[:k]) for k in range(n))
 
 
 #: a step's picture is what it brings on screen, wherever its run is drawn: an analysis that
@@ -619,21 +629,37 @@ def shown_steps(data: dict) -> list[Step]:
     return steps
 
 
+#: how many beats in a row, said again in order over one polygon, are its run told again
+#: (two are not: divide and conquer says "Split …" then "Find an inner diagonal …" per piece)
+TOLD_AGAIN = 3
+
+
 def replayed_beats(data: dict) -> list[str]:
     """Issue 22 item 4: the runs' beats shown twice, as ``"'caption' (section)"``. A run is a
     polygon drawn in a card's section; its beats are the captions said over it
     (:func:`shown_steps`). A beat is replayed when the same caption is said again over a
     polygon of the same shape in one section *and* the same picture is on screen at its
-    end (the run, or an analysis that plays it again). One step's caption said over each
+    end (the run, or an analysis that plays it again) — or when it ends
+    :data:`TOLD_AGAIN` captions in a row said again in that order over the same shape in
+    that section, however they are drawn: the run told again (review r34: gravity's "why
+    the band is always right" retold turn, fall, slide and snag word for word over its own
+    drawing of the polygon). One step's caption said over each
     piece of divide and conquer, each batch of a fast summary, or one claim of several
     heuristics on one polygon, is no replay: each time something else is on screen (another
     piece, another diagonal, another metaphor)."""
     seen: set[Step] = set()
-    found = []
+    told: set[tuple] = set()  # (section, shape, TOLD_AGAIN captions in a row)
+    found: list[str] = []
+    said: list[str] = []
     for step in shown_steps(data):
-        if step[1] is not None and step in seen:
-            found.append(f"{step[2]!r} ({step[0]})")
+        section, shape, caption, _ = step
+        said = [*said, caption][-TOLD_AGAIN:]
+        run = (section, shape, *said) if len(said) == TOLD_AGAIN else None
+        if shape is not None and (step in seen or run in told):
+            found.append(f"{caption!r} ({section})")
         seen.add(step)
+        if run is not None:
+            told.add(run)
     return found
 
 

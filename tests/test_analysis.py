@@ -247,7 +247,9 @@ def test_gravitys_band_is_shown_always_inside_the_polygon(gravity):
     polygon, _ = _frame_of(segment)
     shaded = _regions(_named(segment, "analysis:witness")[0])
     assert shaded.area > 0.5 and polygon.buffer(GRAPH_SLACK).covers(shaded)
-    assert "The rubber band snags H" in _captions(segment)
+    # the run's end, told once: not its steps said again (review r34 item 2)
+    assert "The ball fell from C and slid to G; the band is taut round H" in _captions(segment)
+    assert "The rubber band snags H" not in _captions(segment)
     assert not any("Why the band is always right" in c for c in _captions(plays))
 
 

@@ -839,3 +839,32 @@ def test_the_frame_card_names_the_candidates_its_figure_shows():
                            re.findall(r"\bcandidate,? (?:say )?([A-Z])\b", " ".join(texts.split()))]
     assert picked, "the frame card picks no candidate by name"
     assert [name for name, shown in picked if shown and name not in shown] == []
+
+
+def _told(captions, polygon, name: str) -> list[dict]:
+    """Plays that draw ``polygon`` (as ``name``) and say ``captions`` over it, each with a
+    mobject of its own, as a graph records them."""
+    corners = [[x, y, 0.0] for x, y in polygon for _ in range(4)]
+    plays = [{"animations": [{"type": "Create", "mobject": {"name": name, "points": corners}}]}]
+    return plays + [{"subcaption": c, "animations": [
+        {"type": "FadeIn", "mobject": {"name": f"{name}:{k}", "points": [[k, 0.0, 0.0]]}}]}
+        for k, c in enumerate(captions)]
+
+
+def test_a_run_told_again_over_another_drawing_is_a_replay():
+    """Review r34 item 2, the rule can fail: gravity's analysis told the run's turn, fall,
+    slide and snag again word for word over its own drawing of the polygon (turned, other
+    mobjects), which the same-picture test missed (main's rule found nothing in chapter 3).
+    Here by hand: a card, a run's four beats, then the four again over the polygon
+    turned a quarter."""
+    card = {"subcaption": "Gravity", "animations": [{"type": "Write", "mobject": {
+        "name": "card:title", "text": "Gravity"}}]}
+    square = [(0, 0), (4, 0), (4, 2), (1, 3)]
+    beats = ["Turn", "It falls", "It slides to G", "The band snags H"]
+    data = {"plays": [card, *_told(beats, square, "polygon"),
+                      *_told(beats, [(-y, x) for x, y in square], "analysis:polygon")]}
+    assert replayed_beats(data) == ["'It slides to G' (Gravity)",
+                                    "'The band snags H' (Gravity)"]
+    # the run's end told once in other words is no replay
+    data["plays"][-4:] = _told(["It slid to G, taut round H"], square, "analysis:polygon")[1:]
+    assert replayed_beats(data) == []
