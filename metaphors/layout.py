@@ -3,12 +3,16 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 import shapely
+from manim import DL, UR, Mobject
 from shapely.geometry.base import BaseGeometry
+
+from metaphors.theme import Theme
+from rendering.typeset import text
 
 
 @dataclass(frozen=True)
@@ -23,6 +27,12 @@ class Box:
     @property
     def center(self) -> tuple[float, float]:
         return (self.x, self.y)
+
+    @property
+    def rect(self) -> Rect:
+        """Its left, bottom, right and top."""
+        return (self.x - self.width / 2, self.y - self.height / 2, self.x + self.width / 2,
+                self.y + self.height / 2)
 
 
 TITLE_Y = 3.55
@@ -222,3 +232,74 @@ def free_place(width: float, height: float, taken: BaseGeometry, area: Rect = FR
     if k is None:
         return None
     return round(float(centres[k][0]) - width / 2, 6), round(float(centres[k][1]) + height / 2, 6)
+
+
+# --- what stands on screen: the areas a new text keeps clear of, each a Rect ---------------------
+# One home for them: the monotone stack and its count (metaphors.monotone), the black box
+# (metaphors.pieces) and the sweep's legend entry (metaphors.sweep) each compose what they need
+# and say why theirs differ.
+
+#: past every edge of the frame (14.2 × 8): a band across the frame, or a column or line to its
+#: edge, reaches this far, so that nothing is found beyond it
+BEYOND_FRAME: Rect = (-8.0, -4.5, 8.0, 4.5)
+
+
+def area_of(mobject: Mobject, moved: Callable[[np.ndarray], np.ndarray] | None = None) -> Rect:
+    """A mobject's box on screen (``moved``: where its centre goes; its size stays)."""
+    low, high = mobject.get_corner(DL), mobject.get_corner(UR)
+    centre = (low + high) / 2
+    shift = (moved(centre) - centre) if moved is not None else np.zeros(3)
+    return (float(low[0] + shift[0]), float(low[1] + shift[1]),
+            float(high[0] + shift[0]), float(high[1] + shift[1]))
+
+
+def areas_of(mobjects: Iterable[Mobject], grown_by: float = 0.0) -> list[Rect]:
+    """The boxes of ``mobjects`` (a picture's vertex markers, its outline …), each grown by
+    ``grown_by`` on every side.
+
+    >>> from manim import Square
+    >>> areas_of([Square(side_length=2.0)], grown_by=0.5)
+    [(-1.5, -1.5, 1.5, 1.5)]
+    """
+    return [(left - grown_by, bottom - grown_by, right + grown_by, top + grown_by)
+            for left, bottom, right, top in map(area_of, mobjects)]
+
+
+def title_area(title: Mobject, whole_line: bool = False) -> Rect:
+    """The title's box; ``whole_line``: its whole line, across the frame from the title's
+    bottom up."""
+    if not whole_line:
+        return area_of(title)
+    return (BEYOND_FRAME[0], area_of(title)[1], BEYOND_FRAME[2], BEYOND_FRAME[3])
+
+
+def panel_area(shows_polygon: bool) -> Rect:
+    """The box the panel's lights run over: its code's (:data:`PANEL_CODE`, the whole width
+    under its polygon), or a source's (:data:`PANEL_SOURCE`) where source takes the polygon's
+    place: the whole box, as its window of lines moves."""
+    return (PANEL_CODE if shows_polygon else PANEL_SOURCE).rect
+
+
+def panel_column() -> Rect:
+    """The panel's whole column: from the left of its widest part (its polygon's labels, its
+    code, a source) to the frame's right, top to bottom."""
+    left = min(b.rect[0] for b in (PANEL_CODE, PANEL_LABELS, PANEL_SOURCE))
+    return (left, BEYOND_FRAME[1], BEYOND_FRAME[2], BEYOND_FRAME[3])
+
+
+def call_line_area() -> Rect:
+    """The panel's call line (under its code, as wide), whatever call it says."""
+    return Box(PANEL_CODE.x, PANEL_CALL_Y, PANEL_CODE.width, 0.4).rect
+
+
+def subtitle_band(theme: Theme | None = None) -> Rect:
+    """The subtitles' band: across the frame up to :data:`SUBTITLE_TOP`, the highest two lines
+    of any subtitle reach. Given the ``theme``, the two lines measured: as wide as a subtitle
+    may be (:data:`SUBTITLE_WIDTH`), up to two lines of the tallest glyphs its captions have, a
+    line's gap apart (:func:`rendering.typeset.balanced`); 0.05 lower, for what must fit close
+    above the subtitles."""
+    if theme is None:
+        return (BEYOND_FRAME[0], BEYOND_FRAME[1], BEYOND_FRAME[2], SUBTITLE_TOP)
+    two_lines = 2 * text("(Ag)", font=theme.font, size=theme.caption_size).height + 0.1
+    top = subtitle_centre(two_lines)[1] + two_lines / 2
+    return (-SUBTITLE_WIDTH / 2, BEYOND_FRAME[1], SUBTITLE_WIDTH / 2, top)

@@ -18,10 +18,19 @@ from collections.abc import Callable, Iterable, Sequence
 
 import numpy as np
 import shapely
-from manim import DL, UR, Line, Mobject
+from manim import Line, Mobject
 
 from metaphors.board import Board
-from metaphors.layout import Box, Obstacles, around, clear, grid, rects_at, ring_edges
+from metaphors.layout import (
+    Box,
+    Obstacles,
+    area_of,
+    around,
+    clear,
+    grid,
+    rects_at,
+    ring_edges,
+)
 
 #: 2.5 % of the frame's height: the gap a mark keeps (the reading rule asks for 2 %)
 MARK_GAP = 0.2
@@ -128,15 +137,6 @@ def inside_spot(size: tuple[float, float], near: Point, obstacles: Obstacles,
         if ok.any():
             return centres[int(np.argmax(ok))]
     return None
-
-
-def area_of(mobject: Mobject, moved: Callable[[np.ndarray], np.ndarray] | None = None) -> Area:
-    """A mobject's box on screen (``moved``: where its centre goes; its size stays)."""
-    low, high = mobject.get_corner(DL), mobject.get_corner(UR)
-    centre = (low + high) / 2
-    shift = (moved(centre) - centre) if moved is not None else np.zeros(3)
-    return (float(low[0] + shift[0]), float(low[1] + shift[1]),
-            float(high[0] + shift[0]), float(high[1] + shift[1]))
 
 
 def board_spot(board: Board, mark: Mobject, line: Mobject,

@@ -37,20 +37,20 @@ from metaphors.board import Board
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
 from metaphors.layout import (
     FRAME_AREA,
-    PANEL_CALL_Y,
-    PANEL_CODE,
-    PANEL_SOURCE,
     SUBTITLE_TOP,
-    Box,
     Obstacles,
     Segment,
+    area_of,
+    areas_of,
+    call_line_area,
     clear,
     free_place,
     grid,
+    panel_area,
     rects_at,
     ring_edges,
+    subtitle_band,
 )
-from metaphors.marks import area_of
 from metaphors.performing import Performances, act, performs
 from metaphors.sweep import around_labels, label_gaps
 from metaphors.tags import tag
@@ -276,19 +276,16 @@ def _place(board: Board, depth: int) -> tuple[float, float, bool]:
 def _taken(board: Board) -> BaseGeometry:
     """What is on screen beside the stack: P's region, its markers (dots and labels), the
     title, the panel (its polygon, its code with the lights that run over its whole width,
-    its call line) and the subtitles' band."""
+    its call line) and the subtitles' band (:mod:`metaphors.layout`). Each as drawn, not grown
+    as the black box's (:mod:`metaphors.pieces`): :func:`metaphors.layout.free_place` keeps
+    its own clearance from all; and the panel by every box it shows and by the places that
+    its lights and call line come to through the run (the stack and the count are placed
+    once), whether or not the call line shows calls."""
     corners = [tuple(board.at(p)[:2]) for p in board.polygon.points]
-    shapes: list[BaseGeometry] = [Region(corners)]
     panel = board.panel
-    lights = PANEL_CODE if panel.shows_polygon else PANEL_SOURCE
-    shapes += [box(*area_of(m)) for m in (*board.markers.values(), board.title, *panel.mobjects())]
-    shapes += [_rect(lights), _rect(Box(PANEL_CODE.x, PANEL_CALL_Y, PANEL_CODE.width, 0.4)),
-               box(-8.0, -4.5, 8.0, SUBTITLE_TOP)]
-    return unary_union(shapes)
-
-
-def _rect(b: Box) -> BaseGeometry:
-    return box(b.x - b.width / 2, b.y - b.height / 2, b.x + b.width / 2, b.y + b.height / 2)
+    areas = [*areas_of((*board.markers.values(), board.title, *panel.mobjects())),
+             panel_area(panel.shows_polygon), call_line_area(), subtitle_band()]
+    return unary_union([Region(corners), *(box(*a) for a in areas)])
 
 
 def stack(board: Board, beat: Stack) -> None:

@@ -19,18 +19,18 @@ from metaphors.board import Board, Playable
 from metaphors.drawing import ending_beat, triangulation_pieces
 from metaphors.layout import (
     METAPHOR,
-    PANEL_CALL_Y,
-    PANEL_CODE,
     PANEL_POLYGON,
-    PANEL_SOURCE,
-    SUBTITLE_WIDTH,
-    Box,
     Obstacles,
+    Rect,
+    area_of,
+    areas_of,
+    call_line_area,
     first_clear,
     grid,
-    subtitle_centre,
+    panel_area,
+    subtitle_band,
+    title_area,
 )
-from metaphors.marks import area_of
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -178,8 +178,6 @@ FINDER_STEP = 0.05
 #: the frame's half width and half height (scene units)
 HALF_FRAME = (7.11, 4.0)
 
-Area = tuple[float, float, float, float]  # left, bottom, right, top
-
 
 def _finder(board: Board) -> VGroup:
     """The black box: a closed box with a question mark, and what it is asked; the words
@@ -210,39 +208,29 @@ def _finder_shape(board: Board, compact: bool) -> VGroup:
     return VGroup(box, mark, words)
 
 
-def _taken(board: Board) -> list[Area]:
+def _taken(board: Board) -> list[Rect]:
     """What the black box must keep clear of: the picture (outline, vertices and labels), the
     panel (a source's whole box, as its window of lines moves; else its polygon, labels and
     rows, and the call line if it shows), the title, and the highest a two-line subtitle
-    reaches."""
-    panel, theme = board.panel, board.theme
-    # the pictures from further off: a box beside a label reads as part of its name
-    taken = [_grown(area_of(m), PICTURE_GAP) for m in (board.outline, *board.markers.values())]
-    taken.append(area_of(board.title))
+    reaches (:mod:`metaphors.layout`). Unlike the monotone stack's (:mod:`metaphors.monotone`)
+    the pictures are grown by :data:`PICTURE_GAP`: the box stands nearest the picture, and a
+    box beside a label reads as part of its name; the rows by their ink, not the lights' width,
+    and the subtitle's two lines as measured, not :data:`metaphors.layout.SUBTITLE_TOP`: the
+    compact box fits under a source's rows, close over the subtitle, only so."""
+    panel = board.panel
+    taken = [*areas_of((board.outline, *board.markers.values()), PICTURE_GAP),
+             title_area(board.title)]
     if panel.shows_polygon:
-        taken += [_grown(area_of(m), PICTURE_GAP) for m in (panel.outline, *panel.markers.values())]
-        taken.append(area_of(panel.code))
+        taken += [*areas_of((panel.outline, *panel.markers.values()), PICTURE_GAP),
+                  area_of(panel.code)]
     else:
-        taken.append(_box_area(PANEL_SOURCE))
+        taken.append(panel_area(shows_polygon=False))
     if panel.shows_calls:
-        taken.append(_box_area(Box(PANEL_CODE.x, PANEL_CALL_Y, PANEL_CODE.width, 0.4)))
-    # two lines of the tallest glyphs a caption has, a line's gap apart (rendering.typeset.balanced)
-    two_lines = 2 * text("(Ag)", font=theme.font, size=theme.caption_size).height + 0.1
-    top = subtitle_centre(two_lines)[1] + two_lines / 2
-    taken.append((-SUBTITLE_WIDTH / 2, -HALF_FRAME[1], SUBTITLE_WIDTH / 2, top))
-    return taken
+        taken.append(call_line_area())
+    return [*taken, subtitle_band(board.theme)]
 
 
-def _grown(area: Area, by: float) -> Area:
-    return (area[0] - by, area[1] - by, area[2] + by, area[3] + by)
-
-
-def _box_area(box: Box) -> Area:
-    return (box.x - box.width / 2, box.y - box.height / 2, box.x + box.width / 2,
-            box.y + box.height / 2)
-
-
-def _place(finder: Mobject, taken: Sequence[Area],
+def _place(finder: Mobject, taken: Sequence[Rect],
            near: Sequence[float] = BESIDE) -> tuple[float, float] | None:
     """The centre nearest ``near`` (on a grid of :data:`FINDER_STEP`) where ``finder`` stays
     in the frame and :data:`FINDER_GAP` clear of every area ``taken``; None if none

@@ -22,8 +22,15 @@ from geometry.polygon import Polygon
 from metaphors.captions import whole_frames
 from metaphors.drawing import Frame, polygon_mobject
 from metaphors.labels import measured_markers
-from metaphors.layout import SUBTITLE_WIDTH, TITLE_Y, Box, ring_edges, subtitle_centre
-from metaphors.marks import area_of, mark_spot
+from metaphors.layout import (
+    SUBTITLE_WIDTH,
+    TITLE_Y,
+    Box,
+    area_of,
+    ring_edges,
+    subtitle_centre,
+)
+from metaphors.marks import mark_spot
 from metaphors.recorded import captions_of, mark_step
 from metaphors.tags import tag
 from metaphors.theme import Theme

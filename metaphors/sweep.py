@@ -36,13 +36,13 @@ from manim import (
 from metaphors.board import Board
 from metaphors.layout import (
     FRAME_AREA,
-    PANEL_CODE,
-    PANEL_LABELS,
-    PANEL_SOURCE,
-    SUBTITLE_TOP,
+    area_of,
+    areas_of,
     free_place,
+    panel_column,
+    subtitle_band,
+    title_area,
 )
-from metaphors.marks import area_of
 from metaphors.performing import Performances, act, performs
 from metaphors.stage import OUTSIDE, legend_entry
 from metaphors.tags import tag
@@ -267,15 +267,14 @@ def _legend_place(board: Board, key: Mobject, tool: shapely.LineString,
 
 
 def _beside(board: Board) -> list[shapely.Geometry]:
-    """What stands on screen beside the picture: its vertex labels (and dots), the panel's
-    whole column (its polygon's labels, its code, its call line: an entry among them read
-    as the panel's, "A ▪ outside P, in T"), the subtitles' band and the title's line (an
-    entry beside a short title read as part of it)."""
-    boxes = [shapely.box(*area_of(m)) for m in board.markers.values()]
-    title = board.title.get_corner(np.array([-1, -1, 0]))[1]
-    panel = min(b.x - b.width / 2 for b in (PANEL_CODE, PANEL_LABELS, PANEL_SOURCE))
-    return [*boxes, shapely.box(panel, -4.5, 8.0, 4.5),
-            shapely.box(-8.0, -4.5, 8.0, SUBTITLE_TOP), shapely.box(-8.0, title, 8.0, 4.5)]
+    """What stands on screen beside the picture (:mod:`metaphors.layout`): its vertex labels
+    (and dots), the panel's whole column, the subtitles' band and the title's whole line.
+    Wider than the monotone stack's (:mod:`metaphors.monotone`): an entry among the panel's
+    polygon labels, code and call line read as the panel's ("A ▪ outside P, in T"), and one
+    beside a short title as part of it."""
+    areas = [*areas_of(board.markers.values()), panel_column(), subtitle_band(),
+             title_area(board.title, whole_line=True)]
+    return [shapely.box(*a) for a in areas]
 
 
 def _tool(axis: Line, clip: shapely.Polygon | None = None) -> shapely.LineString:
