@@ -4,8 +4,8 @@ Each is computed from the geometry, as the runs are, in a card's figure box (``b
 centre, width and height), the card's words on the right:
 
 * ``monotone-pieces``: P cut into its y-monotone pieces by the sweep's diagonals (in the
-  green of inner diagonals), each piece tinted, the split and merge vertices marked in the
-  amber of what a step works with (never red: nothing here fails);
+  amber the run draws them in), each piece tinted, the split and merge vertices marked in
+  their kinds' colours, as the run marks them (never red: nothing here fails);
 * ``measured``: the sign tests the lecture's algorithms decide, counted in real runs on
   random polygons (:func:`story.sign_tests.measured`), against n on logarithmic axes, and
   dashed, the shapes of the bounds no run here measures (Tarjan and van Wyk's
@@ -105,8 +105,9 @@ def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
                           fill_color=theme.pieces[n % len(theme.pieces)],
                           fill_opacity=theme.done_opacity), None, "figure:piece")
              for n, piece in enumerate(cut.pieces)]
+    # amber, as the run draws them (its diagonals stay amber): one colour, one meaning
     lines = [tag(Line(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[w]),
-                      color=theme.result, stroke_width=theme.stroke * 1.5), "result",
+                      color=theme.argument, stroke_width=theme.stroke * 1.5), "argument",
                  "figure:diagonal") for u, w in cut.diagonals]
     kinked = [*cut.split, *cut.merge]
     # each kind in its colour, as the monotone run draws it (metaphors/theme.py's legend)

@@ -206,6 +206,56 @@ def test_the_monotone_sweep_never_gives_a_vertex_the_red_of_fails(scene):
     assert {"split", "merge"} <= roles
 
 
+def _legend() -> dict[str, str]:
+    """The theme's one legend: every colour it names (name → hex)."""
+    import dataclasses
+
+    from metaphors.theme import THEME
+
+    return {f.name: value for f in dataclasses.fields(THEME)
+            if isinstance(value := getattr(THEME, f.name), str) and value.startswith("#")}
+
+
+def test_a_vertex_colour_that_changes_meaning_is_found():
+    """The rule itself, on a hand-made graph with both defects the reviewer saw (r567): B
+    pulsed in manim's yellow, in no legend, and K, shown as a merge vertex, then blue."""
+    from metaphors.theme import THEME
+    from tests.reading_rules import shifting_vertex_colours
+
+    def recolour(label, colour):
+        return {"type": "_MethodAnimation", "mobject": {"name": f"vertex:{label}"},
+                "target": {"name": f"vertex:{label}", "stroke": colour}}
+
+    plays = [{"animations": [recolour("K", THEME.merge)]},
+             {"animations": [recolour("K", THEME.called),
+                             {"type": "Indicate", "color": "#FFFF00",
+                              "mobject": {"name": "vertex:B"}}]}]
+    found = shifting_vertex_colours({"plays": plays}, _legend(), ("split", "merge"),
+                                    THEME.called)
+    assert found == [f"play 1 K {THEME.called.upper()}: merge, then called",
+                     "play 1 B Indicate #FFFF00: in no legend"]
+
+
+@pytest.mark.parametrize("scene", _monotone_graphs())
+def test_every_vertex_keeps_one_colour_per_meaning(scene):
+    """Every colour a vertex is given, its pulses' too, is the legend's
+    (:mod:`metaphors.theme`), and a split or merge vertex never turns the blue of the vertex
+    looked at (r567: the fast run pulsed B, F and E yellow while the panel showed them blue;
+    K, a merge vertex, turned blue as it took over from M)."""
+    from metaphors.theme import THEME
+    from tests.reading_rules import shifting_vertex_colours
+    from tests.test_lecture import _chapter_class
+    from trex.snapshot import build
+
+    cls = scene if isinstance(scene, type) else _chapter_class(scene).handed()
+    data = build(cls).data
+    assert shifting_vertex_colours(data, _legend(), ("split", "merge"), THEME.called) == []
+    # not vacuous: the sweep's vertices pulse, in their colours
+    pulses = {a.get("color") for p in data["plays"] for a in p["animations"]
+              if a.get("type") == "Indicate"}
+    assert {THEME.called.upper(), THEME.merge.upper()} <= pulses
+
+
 # --- the lecture's steps (issue 22 item 5) ----------------------------------------------------------
 
 
