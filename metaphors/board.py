@@ -142,8 +142,8 @@ class Board:
         ``at_rest``: the run's ending, no call runs: every vertex label goes back to the ink
         it was drawn in, on the board and in the panel (grey, "not in the current call", no
         longer means anything, and labels of two colours would seem to mean two things).
-        ``least``: the seconds the beat takes at least, whatever its pace
-        (:meth:`shared_time`)."""
+        ``least``: the seconds the beat's picture takes at least, whatever its pace
+        (:meth:`shared_time`), after its words."""
         # A marker the beat already animates (a pulse) is recoloured after the play: two
         # animations of one mobject in one play would cancel the first.
         busy = {id(getattr(a, "mobject", None)) for a in anims}
@@ -152,20 +152,24 @@ class Board:
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
                  *(FadeOut(m) for m in self.leaving)]
         self.leaving = []
-        total = max(0.1, run_time * beat.pace, least)
+        paced = max(0.1, run_time * beat.pace)
+        lead = min(WORDS_TIME, paced / 2)
+        split = bool(words) and lead >= MIN_PLAY and not together
+        # ``least`` is the picture's own time: the words' lead, if any, comes before it
+        rest = max(paced - lead, least)
+        total = lead + rest if split else max(paced, least)
         # a new caption waits until the one before it has been read
         caption = self.captions.show(beat.caption, total) if beat.caption != self.caption else {}
         self._cut_outgoing()  # read: it goes before the next comes in (never crossfaded)
-        lead = min(WORDS_TIME, total / 2)
-        if words and lead >= MIN_PLAY and not together:
+        if split:
             for animation in words:
                 animation.mobject.set_z_index(WORDS_Z)
             self.scene.play(*words, run_time=lead, **caption)
             self.settle()
             if action:
-                self.scene.play(*action, run_time=total - lead)
+                self.scene.play(*action, run_time=rest)
             else:
-                self.scene.wait(whole_frames(total - lead))
+                self.scene.wait(whole_frames(rest))
         elif words or action:
             self.scene.play(*words, *action, run_time=total, **caption)
         for marker, colour in after:
