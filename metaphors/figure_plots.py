@@ -61,7 +61,7 @@ class Area:
 MARKS = ("dot", "square", "triangle")
 
 
-def point_mark(kind: str, colour: str, at: Point3 | Sequence[float], theme: Theme) -> Mobject:
+def point_mark(kind: str, colour: str, at: Point3, theme: Theme) -> Mobject:
     """One of :data:`MARKS` at ``at`` in ``colour`` (the plot's and its legend's)."""
     if kind == "dot":
         shape: Mobject = Dot(radius=0.07, color=colour)
