@@ -37,6 +37,7 @@ from metaphors.theme import THEME, Theme
 from rendering.layers import BACKDROP_Z, STILL_Z
 from rendering.typeset import balanced, glyphs, text
 from story.beats import Beat, Hole
+from story.reading import reading_time
 
 #: seconds the words of a beat take to change (at most half the beat)
 WORDS_TIME = 0.3
@@ -94,6 +95,8 @@ class Board:
         self.leaving: list[Mobject] = []
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
+        # how many of the run's beats each caption stands over (:meth:`shared_time`)
+        self.shares: dict[str, int] = {}
         # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood,
         # in the polygon's coordinates
         self.moved_for_now: dict[str, tuple[float, float]] = {}
@@ -118,8 +121,15 @@ class Board:
 
     # --- playing ----------------------------------------------------------------------------------
 
+    def shared_time(self, beat: Beat) -> float:
+        """The seconds each beat under ``beat``'s caption takes at least, so that together
+        they last as long as the caption takes to read: a summary's fast steps ("Vertices H,
+        B, G and F: the same steps, faster") share its reading time, each long enough to see
+        (at 0.2 s each they flashed by, then the screen stood still on the last for 2 s)."""
+        return reading_time(beat.caption) / max(1, self.shares.get(beat.caption, 1))
+
     def play(self, beat: Beat, *anims: Playable, run_time: float = 1.0,
-             together: bool = False, at_rest: bool = False) -> None:
+             together: bool = False, at_rest: bool = False, least: float = 0.0) -> None:
         """Play a beat: first its words (subtitle, lit line, call line) change, briefly; then its
         own animations play with the roles on both sides, for the rest of the beat's time.
 
@@ -131,7 +141,9 @@ class Board:
         run's first beat in the lecture: the words do not come before what they speak of).
         ``at_rest``: the run's ending, no call runs: every vertex label goes back to the ink
         it was drawn in, on the board and in the panel (grey, "not in the current call", no
-        longer means anything, and labels of two colours would seem to mean two things)."""
+        longer means anything, and labels of two colours would seem to mean two things).
+        ``least``: the seconds the beat's picture takes at least, whatever its pace
+        (:meth:`shared_time`), after its words."""
         # A marker the beat already animates (a pulse) is recoloured after the play: two
         # animations of one mobject in one play would cancel the first.
         busy = {id(getattr(a, "mobject", None)) for a in anims}
@@ -140,20 +152,24 @@ class Board:
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
                  *(FadeOut(m) for m in self.leaving)]
         self.leaving = []
-        total = max(0.1, run_time * beat.pace)
+        paced = max(0.1, run_time * beat.pace)
+        lead = min(WORDS_TIME, paced / 2)
+        split = bool(words) and lead >= MIN_PLAY and not together
+        # ``least`` is the picture's own time: the words' lead, if any, comes before it
+        rest = max(paced - lead, least)
+        total = lead + rest if split else max(paced, least)
         # a new caption waits until the one before it has been read
         caption = self.captions.show(beat.caption, total) if beat.caption != self.caption else {}
         self._cut_outgoing()  # read: it goes before the next comes in (never crossfaded)
-        lead = min(WORDS_TIME, total / 2)
-        if words and lead >= MIN_PLAY and not together:
+        if split:
             for animation in words:
                 animation.mobject.set_z_index(WORDS_Z)
             self.scene.play(*words, run_time=lead, **caption)
             self.settle()
             if action:
-                self.scene.play(*action, run_time=total - lead)
+                self.scene.play(*action, run_time=rest)
             else:
-                self.scene.wait(whole_frames(total - lead))
+                self.scene.wait(whole_frames(rest))
         elif words or action:
             self.scene.play(*words, *action, run_time=total, **caption)
         for marker, colour in after:

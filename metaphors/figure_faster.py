@@ -4,10 +4,12 @@ Each is computed from the geometry, as the runs are, in a card's figure box (``b
 centre, width and height), the card's words on the right:
 
 * ``monotone-pieces``: P cut into its y-monotone pieces by the sweep's diagonals (in the
-  green of inner diagonals), each piece tinted, the split and merge vertices marked in the
-  amber of what a step works with (never red: nothing here fails);
-* ``measured``: the sign tests the lecture's algorithms decide, counted in real runs on
-  random polygons (:func:`story.sign_tests.measured`), against n on logarithmic axes, and
+  amber the run draws them in), each piece tinted, the split and merge vertices marked in
+  their kinds' colours, as the run marks them (never red: nothing here fails);
+* ``measured``: the steps (sign tests: orientations and comparisons) the lecture's
+  algorithms take, counted in real runs on random polygons
+  (:func:`story.sign_tests.measured`), against n on logarithmic axes named in plain words,
+  each counted line with its own marks (two of them run together), and
   dashed, the shapes of the bounds no run here measures (Tarjan and van Wyk's
   n log log n, Chazelle's n), from the plot's corner (a bound has no constant); the
   legend says which lines were counted and which are bounds, not measured;
@@ -37,7 +39,7 @@ from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
 from metaphors.figure_caption import figure_caption
-from metaphors.figure_plots import Area, Series, line_plot
+from metaphors.figure_plots import MARKS, Area, Series, axis_names, line_plot, point_mark
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
@@ -105,8 +107,9 @@ def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
                           fill_color=theme.pieces[n % len(theme.pieces)],
                           fill_opacity=theme.done_opacity), None, "figure:piece")
              for n, piece in enumerate(cut.pieces)]
+    # amber, as the run draws them (its diagonals stay amber): one colour, one meaning
     lines = [tag(Line(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[w]),
-                      color=theme.result, stroke_width=theme.stroke * 1.5), "result",
+                      color=theme.argument, stroke_width=theme.stroke * 1.5), "argument",
                  "figure:diagonal") for u, w in cut.diagonals]
     kinked = [*cut.split, *cut.merge]
     # each kind in its colour, as the monotone run draws it (metaphors/theme.py's legend)
@@ -135,7 +138,8 @@ def measured_series(theme: Theme) -> list[Series]:
     bounds (dashed), their shapes only: a bound has no constant, so each starts in the
     plot's corner, at the first size and the decade below the least count."""
     lines = [Series(f"figure:measured:{name}", tuple(measured(name, n) for n in MEASURED_SIZES),
-                    theme.pieces[k % len(theme.pieces)]) for k, name in enumerate(MEASURED_RUNS)]
+                    theme.pieces[k % len(theme.pieces)], mark=MARKS[k % len(MARKS)])
+             for k, name in enumerate(MEASURED_RUNS)]
     first = MEASURED_SIZES[0]
     corner = 10.0 ** math.floor(math.log10(min(min(line.counts) for line in lines)))
     for k, (key, _, shape) in enumerate(BOUNDS, start=len(lines)):
@@ -145,30 +149,43 @@ def measured_series(theme: Theme) -> list[Series]:
     return lines
 
 
+#: what the plot's y axis counts, in plain words, and what one of them is (its caption)
+STEPS = "steps (geometric tests)"
+STEP = "a test: which side of a line a point is on, or which of two points is nearer"
+
+
 def _measured(theme: Theme, box: Box) -> list[Mobject]:
-    """The plot, its legend below it in two columns (what was counted, and the bounds), and
-    what a count is."""
+    """The plot with its axes named, its legend below it in two columns (what was counted,
+    each line's mark before its name, and the bounds), and what a step is."""
     (x, y), width, height = box
-    row, rows = 0.36, max(len(MEASURED_RUNS), len(BOUNDS)) + 1  # a header, then the lines
-    bottom = y - height / 2 + row * rows + 0.5  # the x axis, its ticks and the legend below
-    area = Area(x - width / 2 + 1.0, bottom, width - 1.15, y + height / 2 - 0.1 - bottom)
+    row, rows = 0.36, max(len(MEASURED_RUNS), len(BOUNDS)) + 2  # x's name, a header, the lines
+    # the x axis: its ticks, its name and the legend below it, in the box
+    bottom = y - height / 2 + row * rows
+    # the y axis's name over it, with what a count is: by the numbers it speaks of
+    area = Area(x - width / 2 + 1.0, bottom, width - 1.15, y + height / 2 - 0.45 - bottom)
     series = measured_series(theme)
     drawn, _ = line_plot(MEASURED_SIZES, series, area, theme, log=True)
+    drawn += axis_names(area, "vertices n",
+                        f"{STEPS}\neach a mean of {len(SEEDS)} random polygons", theme)
     counted, bounds = series[:len(MEASURED_RUNS)], series[len(MEASURED_RUNS):]
-    columns = ((("counted in our runs", theme.ink),
-                *[(spoken(name), s.colour) for name, s in zip(MEASURED_RUNS, counted, strict=True)]),
-               (("bounds, not measured", theme.ink),
-                *[(said, s.colour) for (_, said, _), s in zip(BOUNDS, bounds, strict=True)]))
+    columns = ((("counted in our runs", theme.ink, None),
+                *[(spoken(name), s.colour, s.mark)
+                  for name, s in zip(MEASURED_RUNS, counted, strict=True)]),
+               (("bounds, not measured", theme.ink, None),
+                *[(said, s.colour, None) for (_, said, _), s in zip(BOUNDS, bounds, strict=True)]))
     for column, rows_shown in enumerate(columns):
-        for k, (said, colour) in enumerate(rows_shown):
+        for k, (said, colour, mark) in enumerate(rows_shown):
+            left, at_y = x - width / 2 + column * 3.05, bottom - 0.62 - row * (k + 1)
+            if mark is not None:  # the line's mark, then its name
+                drawn.append(tag(point_mark(mark, colour, (left + 0.08, at_y, 0.0), theme),
+                                 None, "figure:key"))
+                left += 0.25
             # a size smaller than the ticks': two columns in the box
             text = typeset.text(said, font=theme.font, size=theme.label_size - 2,
                                 colour=colour)
-            text.move_to((x - width / 2 + column * 3.05, bottom - 0.62 - row * k, 0),
-                         aligned_edge=LEFT)
+            text.move_to((left, at_y, 0), aligned_edge=LEFT)
             drawn.append(tag(text, None, "figure:legend"))
-    words = [(f"sign tests, mean of {len(SEEDS)} random polygons", theme.ink)]
-    return [*drawn, figure_caption(box, theme, *words)]
+    return [*drawn, figure_caption(box, theme, (STEP, theme.ink))]
 
 
 # --- the constrained Delaunay circle -------------------------------------------------------------

@@ -11,6 +11,7 @@ joins them.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 from manim import (
@@ -33,12 +34,14 @@ from geometry.cdt import constrained_delaunay
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
+from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
 from metaphors import catalog
 from metaphors.analysis import Analysis, play_analysis
 from metaphors.countdown import countdown
 from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
 from metaphors.figures import Figure, figure_mobjects
+from metaphors.labels import measured_markers
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
@@ -58,6 +61,21 @@ from usercode.heuristic import load_user_heuristic
 CARD_WIDTH = 13.2
 #: a card with a figure: its title's height, and its words in the right half
 FIGURED_TITLE_Y, FIGURED_WORDS_X, FIGURED_WIDTH = 3.2, 3.35, 6.4
+#: the comparison's pictures: their centre's height and their height, under the name (3.2)
+#: and the count (the labels of P's top vertices keep clear of it), over the note (-3.55)
+COMPARE_Y, COMPARE_HEIGHT, COMPARE_COUNT_Y = -0.45, 4.6, 2.65
+
+
+def inner_edges(polygon, triangles: Sequence[TriangleIndices]) -> list[tuple[int, int]]:
+    """The triangles' sides that are no edge of P: the triangulation's diagonals.
+
+    >>> from geometry.polygon import Polygon
+    >>> inner_edges(Polygon.from_points([(0, 0), (1, 0), (1, 1), (0, 1)]), [(0, 1, 2), (0, 2, 3)])
+    [(0, 2)]
+    """
+    n = polygon.n
+    sides = {tuple(sorted((t[a], t[b]))) for t in triangles for a, b in ((0, 1), (1, 2), (0, 2))}
+    return sorted((i, j) for i, j in sides if (j - i) % n not in (1, n - 1))
 
 FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 #: an exercise's picture on the left, so its answer is written beside it, never over it
@@ -294,28 +312,42 @@ class LectureScene(TraceScene):
         ours = triangulate(polygon, compare.ours).triangles
         sides = ((-3.6, spoken(compare.ours, start=True), ours),
                  (3.6, spoken("cdt", start=True), constrained_delaunay(polygon)))
-        theme, captions = self.theme, captions_of(self)
         for x, name, triangles in sides:
-            frame = Frame(polygon.points, (x, -0.2), 6.0, 5.2)
-            outline = tag(polygon_mobject(polygon, frame, theme), "idle", f"compare:{name}")
-            label = tag(self.text(name, theme.caption_size), None, "compare:name")
-            label.move_to((x, 3.2, 0))
-            captions.hold()  # the caption before is read in its own step
-            mark_step(self, f"{name}: {len(triangles)} triangles", kind="compare")
-            self.play(FadeIn(label), Create(outline), run_time=0.6)
-            pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
-                                           theme), None, "compare:triangle")
-                      for k, t in enumerate(triangles)]
-            self.play(*[FadeIn(p) for p in pieces], run_time=1.2,
-                      **captions.show(f"{name}: {len(triangles)} triangles", 1.2))
+            self.compare_side(polygon, x, name, triangles)
         note = tag(self.text(f"Both: {polygon.n - 2} triangles for {polygon.n} vertices — "
-                             "different diagonals, both valid", theme.caption_size), None,
+                             "different diagonals, both valid", self.theme.caption_size), None,
                    "compare:note")
         note.move_to((0, -3.55, 0))
-        cue = captions.show(note.original_text, 0.5)
+        cue = captions_of(self).show(note.original_text, 0.5)
         mark_step(self, note.original_text, kind="compare")
         self.play(FadeIn(note), run_time=0.5, **cue)
         self.wait(compare.seconds)
+
+    def compare_side(self, polygon, x: float, name: str,
+                     triangles: Sequence[TriangleIndices]) -> None:
+        """One side of the comparison: its name, P with its vertex labels (the note says the
+        diagonals differ: the labels say which), then its triangles with their count under
+        the name, as the caption says it (the count was said 6 s before any was shown)."""
+        theme, captions = self.theme, captions_of(self)
+        frame = Frame(polygon.points, (x, COMPARE_Y), 6.0, COMPARE_HEIGHT)
+        outline = tag(polygon_mobject(polygon, frame, theme), "idle", f"compare:{name}")
+        label = tag(self.text(name, theme.caption_size), None, "compare:name")
+        label.move_to((x, 3.2, 0))
+        count = tag(self.text(f"{len(triangles)} triangles", theme.caption_size, theme.result),
+                    "result", "compare:count")
+        count.move_to((x, COMPARE_COUNT_Y, 0))
+        # over the triangles' fills, clear of their diagonals (the labels are placed first)
+        markers = [tag(m, "idle", f"compare:vertex:{v}").set_z_index(1) for v, m in
+                   measured_markers(polygon, (), frame, theme, inner_edges(polygon, triangles))]
+        said = f"{name}: {len(triangles)} triangles"
+        captions.hold()  # the caption before is read in its own step
+        mark_step(self, said, kind="compare")
+        self.play(FadeIn(label), Create(outline), *[FadeIn(m) for m in markers], run_time=0.6)
+        pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
+                                       theme), None, "compare:triangle")
+                  for k, t in enumerate(triangles)]
+        self.play(*[FadeIn(p) for p in pieces], FadeIn(count), run_time=1.2,
+                  **captions.show(said, 1.2))
 
     def play_quiz(self, quiz: Quiz) -> None:
         for exercise in make_exercises(quiz.count, quiz.seed):

@@ -157,7 +157,11 @@ def classify(board: Board, beat: Classify) -> None:
     # word would flash by, too fast to read, so there is none
     named = beat.caption.startswith(f"{data.vertex}:")
     place = _kind_place(board, kind, data.vertex, data.at[1]) if named else None
-    anims: list[FadeIn | Indicate | Transform | Create] = [Indicate(board.markers[data.vertex])]
+    # the pulse in the vertex's own colour (blue, the one looked at; cyan or pink, a split or
+    # merge vertex), as the panel shows it: manim's yellow pulse was read as a colour of its own
+    colour = theme.role_colour(_kind_role(data.kind))
+    anims: list[FadeIn | Indicate | Transform | Create] = [
+        Indicate(board.markers[data.vertex], color=colour)]
     if place is not None:  # None: nowhere near enough, no word (the caption names the kind)
         anims.append(FadeIn(kind.move_to(place)))
     if "sweep" in board.objects:
@@ -165,7 +169,8 @@ def classify(board: Board, beat: Classify) -> None:
     else:
         board.keep("sweep", line)
         anims.append(Create(line))
-    board.play(beat, *anims, run_time=0.8)
+    # a summary's steps share its caption's reading time: each seen, none flashing by
+    board.play(beat, *anims, run_time=0.8, least=0.0 if named else board.shared_time(beat))
     if place is not None:  # up while its caption is read: it goes with the next beat's words
         board.leaving.append(kind)
 
@@ -414,8 +419,14 @@ def _kind_role(kind: str) -> str:
     return kind if kind in ("split", "merge") else "called"
 
 
+def _kinds(walk: Walk) -> dict[str, str]:
+    """The kind each vertex was classified as so far (its label's)."""
+    return walk.memo("monotone.kinds", dict)
+
+
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, kind = walk.ref(call, "v"), walk.result_string(ret)
+    _kinds(walk)[v] = kind
     yield walk.call_beat(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
                          key_step=kind in ("split", "merge"), roles={v: _kind_role(kind)},
                          vertex=v, kind=kind, at=point(walk.root_points()[v]))
@@ -429,9 +440,11 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     handler = walk.stack[-2].name if len(walk.stack) > 1 else ""
     why = (f"the split vertex {u} joins its helper {w}" if handler == "handle_split"
            else f"{u} takes over from the merge vertex {w}")
+    # u keeps the colour of its kind: a merge vertex taking over (K from M) stays pink, not
+    # the blue a start vertex had (one colour, one meaning: metaphors/theme.py)
     yield walk.call_beat(MonotoneDiagonal, f"Diagonal {named_together((u, w))}: {why}", call,
                          ret, key_step=True,
-                         roles={u: "split" if handler == "handle_split" else "called", w: (
+                         roles={u: _kind_role(_kinds(walk).get(u, "")), w: (
                         "argument" if handler == "handle_split" else "merge")},
                          labels=(u, w), points=(point(where[u]), point(where[w])))
 

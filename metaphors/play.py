@@ -10,6 +10,7 @@ lasts until the run ends).
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Callable, Sequence
 from typing import Protocol, cast
 
@@ -47,6 +48,7 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded))
     board.panel.shows_calls = scene.call_line
+    board.shares = dict(Counter(beat.caption for beat in beats))
     board.panel.run_call = run_call(log)
     code = log.meta.get("code")
     rows = spoken_pseudocode(log)

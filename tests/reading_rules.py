@@ -2421,3 +2421,60 @@ def far_verdicts(data: dict) -> list[str]:
                 if far > FARTHEST_MARK:
                     found.append(f"play {k} {node['name']} {far:.2f} from its claim")
     return found
+
+
+# --- r567 item 1: a vertex's colour keeps its meaning ---------------------------------------------
+
+#: the marker names of a vertex: on the picture and on the panel's small map
+_VERTEX_MARKERS = ("vertex:", "panel:")
+
+
+def _vertex_label(node: dict) -> str | None:
+    """The label of a vertex marker node (``vertex:K``, ``panel:K``), else None."""
+    name = node.get("name") or ""
+    if name == "panel:call" or not name.startswith(_VERTEX_MARKERS):
+        return None
+    return name.split(":", 1)[1]
+
+
+def _given_colours(anim: dict) -> Iterator[tuple[str, str, str]]:
+    """(label, colour, how) for each colour an animation gives a vertex marker: the colour
+    of a pulse (``Indicate``: it shows while the pulse plays) or of a target's stroke."""
+    for child in anim.get("animations", ()):
+        yield from _given_colours(child)
+    label = _vertex_label(anim.get("mobject") or {})
+    if label is None:
+        return
+    if anim.get("color"):
+        yield label, anim["color"].upper(), anim["type"]
+    stroke = (anim.get("target") or {}).get("stroke")
+    if isinstance(stroke, str):
+        yield label, stroke.upper(), "target"
+
+
+def shifting_vertex_colours(data: dict, legend: dict[str, str], kinds: tuple[str, ...],
+                            called: str) -> list[str]:
+    """The colours a vertex is given against the one legend, as ``"play 33 B Indicate
+    #FFFF00: in no legend"`` or ``"play 27 K #4F8FF7: merge, then called"``: every colour
+    a vertex is given (a pulse's too) is one of ``legend``'s (name → colour, the theme's),
+    and a vertex shown as one of ``kinds`` (split, merge) is never given the ``called``
+    colour after it: it would seem another kind (K, a merge vertex, turned the blue of a
+    start vertex as it took over from M). A polygon coming in (its markers faded in) starts
+    afresh."""
+    colours = {c.upper(): name for name, c in legend.items()}
+    kind_colours = {legend[k].upper(): k for k in kinds}
+    found: list[str] = []
+    shown: dict[str, str] = {}  # vertex label -> the kind it was shown as
+    for k, play in enumerate(data["plays"]):
+        if any(a.get("type") == "FadeIn" and (a.get("mobject") or {}).get("name", "")
+               .startswith("vertex:") for a in play["animations"]):
+            shown.clear()
+        for anim in play["animations"]:
+            for label, colour, how in _given_colours(anim):
+                if colour not in colours:
+                    found.append(f"play {k} {label} {how} {colour}: in no legend")
+                elif colour == called.upper() and label in shown:
+                    found.append(f"play {k} {label} {colour}: {shown[label]}, then called")
+                elif colour in kind_colours:
+                    shown[label] = kind_colours[colour]
+    return list(dict.fromkeys(found))

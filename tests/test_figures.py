@@ -450,6 +450,17 @@ def test_the_measured_plot_draws_the_sign_tests_counted_in_real_runs():
     legend = [m.original_text for m in named(drawn, "figure:legend")]
     assert "bounds, not measured" in legend and "counted in our runs" in legend
     assert all(said in legend for _, said, _ in BOUNDS)
+    # the axes named in plain words, what a count is said by them (r567: unnamed, and
+    # "sign tests, mean of 3 random polygons" stood under the legend, far off)
+    (across,), (up,) = named(drawn, "figure:x-name"), named(drawn, "figure:y-name")
+    assert across.original_text == "vertices n" and up.original_text.startswith("steps (")
+    assert f"mean of {len(SEEDS)} random polygons" in up.original_text
+    assert "sign tests" not in label(drawn)
+    # each counted line wears its own marks, at each count, and its legend row the same:
+    # faster ear clipping and monotone partition run together from n = 40
+    points, keys = named(drawn, "figure:point"), named(drawn, "figure:key")
+    assert len(points) == len(MEASURED_RUNS) * len(MEASURED_SIZES) and len(keys) == len(MEASURED_RUNS)
+    assert len({type(m).__name__ for m in keys}) == len(MEASURED_RUNS)
     # divide and conquer does the most work at every size, and grows fastest
     dc, mono = plotted["divide-and-conquer"], plotted["monotone"]
     assert all(d > m for d, m in zip(dc, mono, strict=True)) and dc[-1] / dc[0] > mono[-1] / mono[0]

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import json
 
 import pytest
@@ -206,6 +207,83 @@ def test_the_monotone_sweep_never_gives_a_vertex_the_red_of_fails(scene):
     assert {"split", "merge"} <= roles
 
 
+@functools.cache
+def _graph(scene):
+    """The scene graph of a monotone scene or of the lecture's chapter (built once)."""
+    from tests.test_lecture import _chapter_class
+    from trex.snapshot import build
+
+    return build(scene if isinstance(scene, type) else _chapter_class(scene).handed()).data
+
+
+def test_a_summarys_fast_steps_each_last_long_enough_to_see():
+    """r567: under "Vertices H, B, G and F: the same steps, faster" each vertex was current
+    for 0.2 s, then the screen stood on the last one for 2 s. The steps share the caption's
+    reading time: each at least half a second, the caption's hold after them short."""
+    from story.reading import reading_time
+
+    data = _graph(_monotone_graphs()[1].values[0])
+    runs: dict[str, list[float]] = {}
+    caption = None
+    for play in data["plays"]:
+        caption = play.get("subcaption") or caption
+        pulsed = [a for a in play["animations"] if a.get("type") == "Indicate"
+                  and (a.get("mobject") or {}).get("name", "").startswith("vertex:")]
+        if caption and "the same steps, faster" in caption and pulsed:
+            runs.setdefault(caption, []).append(play["run_time"])
+    assert runs and all(len(steps) >= 2 for steps in runs.values())
+    for said, steps in runs.items():
+        assert min(steps) >= 0.5, (said, steps)
+        assert sum(steps) >= reading_time(said) - 0.5, (said, steps)  # no long hold after
+
+
+def _legend() -> dict[str, str]:
+    """The theme's one legend: every colour it names (name → hex)."""
+    import dataclasses
+
+    from metaphors.theme import THEME
+
+    return {f.name: value for f in dataclasses.fields(THEME)
+            if isinstance(value := getattr(THEME, f.name), str) and value.startswith("#")}
+
+
+def test_a_vertex_colour_that_changes_meaning_is_found():
+    """The rule itself, on a hand-made graph with both defects the reviewer saw (r567): B
+    pulsed in manim's yellow, in no legend, and K, shown as a merge vertex, then blue."""
+    from metaphors.theme import THEME
+    from tests.reading_rules import shifting_vertex_colours
+
+    def recolour(label, colour):
+        return {"type": "_MethodAnimation", "mobject": {"name": f"vertex:{label}"},
+                "target": {"name": f"vertex:{label}", "stroke": colour}}
+
+    plays = [{"animations": [recolour("K", THEME.merge)]},
+             {"animations": [recolour("K", THEME.called),
+                             {"type": "Indicate", "color": "#FFFF00",
+                              "mobject": {"name": "vertex:B"}}]}]
+    found = shifting_vertex_colours({"plays": plays}, _legend(), ("split", "merge"),
+                                    THEME.called)
+    assert found == [f"play 1 K {THEME.called.upper()}: merge, then called",
+                     "play 1 B Indicate #FFFF00: in no legend"]
+
+
+@pytest.mark.parametrize("scene", _monotone_graphs())
+def test_every_vertex_keeps_one_colour_per_meaning(scene):
+    """Every colour a vertex is given, its pulses' too, is the legend's
+    (:mod:`metaphors.theme`), and a split or merge vertex never turns the blue of the vertex
+    looked at (r567: the fast run pulsed B, F and E yellow while the panel showed them blue;
+    K, a merge vertex, turned blue as it took over from M)."""
+    from metaphors.theme import THEME
+    from tests.reading_rules import shifting_vertex_colours
+
+    data = _graph(scene)
+    assert shifting_vertex_colours(data, _legend(), ("split", "merge"), THEME.called) == []
+    # not vacuous: the sweep's vertices pulse, in their colours
+    pulses = {a.get("color") for p in data["plays"] for a in p["animations"]
+              if a.get("type") == "Indicate"}
+    assert {THEME.called.upper(), THEME.merge.upper()} <= pulses
+
+
 # --- the lecture's steps (issue 22 item 5) ----------------------------------------------------------
 
 
@@ -388,3 +466,23 @@ def test_pieces_that_are_triangles_already_are_counted_not_called_this_piece():
 
     captions = [b.caption for b in _lecture_beats() if isinstance(b, Stack)]
     assert captions == ["This piece is done: 8 triangles", *["3 pieces are triangles already"] * 3]
+
+
+def test_the_comparison_shows_each_count_with_its_picture_and_the_labels():
+    """r567: the captions said "Faster ear clipping: 11 triangles" and "Constrained
+    Delaunay: 11 triangles" while no count was on screen, and the two polygons had no labels
+    though the note says "different diagonals". Each count now comes with its triangles,
+    under the caption that says it, and each polygon's vertices are labelled."""
+    data = _graph(_monotone_graphs()[1].values[0])
+    said = [(k, p["subcaption"]) for k, p in enumerate(data["plays"])
+            if (p.get("subcaption") or "").startswith(("Faster ear clipping:",
+                                                          "Constrained Delaunay:"))]
+    assert [s for _, s in said] == ["Faster ear clipping: 11 triangles",
+                                    "Constrained Delaunay: 11 triangles"]
+    for k, _ in said:
+        counts = [a["mobject"].get("text") for a in data["plays"][k]["animations"]
+                  if (a.get("mobject") or {}).get("name") == "compare:count"]
+        assert counts == ["11 triangles"]
+        labels = {a["mobject"]["name"] for a in data["plays"][k - 1]["animations"]
+                  if (a.get("mobject") or {}).get("name", "").startswith("compare:vertex:")}
+        assert len(labels) == 13

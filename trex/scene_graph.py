@@ -46,7 +46,7 @@ from pathlib import Path
 from typing import Any, TypedDict, TypeGuard, cast
 
 import numpy as np
-from manim import Animation, AnimationGroup, Mobject, Scene, VMobject, tempconfig
+from manim import Animation, AnimationGroup, ManimColor, Mobject, Scene, VMobject, tempconfig
 from manim.renderer.cairo_renderer import CairoRenderer
 
 from tracing import JSON
@@ -169,6 +169,10 @@ def animation_graph(animation: Animation) -> dict[str, Any]:
         node["animations"] = [animation_graph(a) for a in animation.animations]
         return node
     node["mobject"] = mobject_graph(cast(Mobject, animation.mobject))  # Cairo's (not OpenGL)
+    # a pulse's colour (Indicate, Flash): it shows while the pulse plays, in no mobject
+    pulse = getattr(animation, "color", None)
+    if isinstance(pulse, str | ManimColor):
+        node["color"] = ManimColor(pulse).to_hex()
     target = getattr(animation, "target_mobject", None)
     if _has_content(target) and target is not animation.mobject:
         node["target"] = mobject_graph(target)

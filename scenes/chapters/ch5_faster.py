@@ -26,10 +26,12 @@ class Faster(LectureScene):
                 "practical.",
                 "Neither is implemented here: the dashed lines are bounds, not measurements."),
                  Figure("measured")),
+            # one sentence a bullet; libraries by their own names (Shapely, Mapbox's earcut)
             Card("Constrained Delaunay", (
-                "It keeps the polygon's edges; each triangle's circumcircle holds no vertex",
-                "seen from inside the triangle. Our reference here: GEOS, through shapely.",
-                "(earcut, another library, clips ears instead.)"),
+                "It keeps the polygon's edges, and each triangle's circumcircle holds no "
+                "vertex seen from inside the triangle.",
+                "Our reference here: GEOS, through Shapely.",
+                "Mapbox's earcut, another library, clips ears instead."),
                  Figure("delaunay-circle")),
             Compare(None),
         )
