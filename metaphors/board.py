@@ -92,6 +92,10 @@ class Board:
         # notes of a beat that stay up while its caption is read and go with the next beat's
         # words (the monotone sweep's kind word)
         self.leaving: list[Mobject] = []
+        # the keys of metaphor objects that only the beat which drew them speaks of (ear
+        # clipping's red test triangle): the next beat's words take them away, whatever
+        # metaphor plays it (left up, the triangle lay under the gravity step after it)
+        self.passing: dict[str, Mobject] = {}
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
         # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood,
@@ -140,6 +144,8 @@ class Board:
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
                  *(FadeOut(m) for m in self.leaving)]
         self.leaving = []
+        passed, self.passing = self.drop(*[key for key, m in self.passing.items()
+                                           if self.objects.get(key) is m]), {}
         total = max(0.1, run_time * beat.pace)
         # a new caption waits until the one before it has been read
         caption = self.captions.show(beat.caption, total) if beat.caption != self.caption else {}
@@ -148,14 +154,14 @@ class Board:
         if words and lead >= MIN_PLAY and not together:
             for animation in words:
                 animation.mobject.set_z_index(WORDS_Z)
-            self.scene.play(*words, run_time=lead, **caption)
+            self.scene.play(*words, *passed, run_time=lead, **caption)
             self.settle()
             if action:
                 self.scene.play(*action, run_time=total - lead)
             else:
                 self.scene.wait(whole_frames(total - lead))
-        elif words or action:
-            self.scene.play(*words, *action, run_time=total, **caption)
+        elif words or action or passed:
+            self.scene.play(*words, *passed, *action, run_time=total, **caption)
         for marker, colour in after:
             marker.set_color(colour)
         self.caption = beat.caption
@@ -273,6 +279,11 @@ class Board:
             moves.append(animate(self.markers[label]).become(back))
         self.moved_for_now = {}
         return moves
+
+    def passes(self, *keys: str) -> None:
+        """The objects kept under ``keys`` go with the next beat's words (:attr:`passing`),
+        unless taken away or replaced before."""
+        self.passing.update({key: self.objects[key] for key in keys if key in self.objects})
 
     def drop(self, *keys: str) -> list[FadeOut]:
         """Fade-outs for remembered objects."""
