@@ -164,8 +164,10 @@ def ear_test(board: Board, beat: EarTest) -> None:
     if beat.triangle:
         # the labels the triangle would lie over move clear of it first (a pulse and a
         # move of one marker in one play would cancel): a label on its red over the fruit's
-        # orange was hard to read, and its edge ran through the keyhole's c₂
-        moves = board.clear_labels(covering([board.at(p) for p in beat.triangle]))
+        # orange was hard to read, and its edge ran through the keyhole's c₂; apart from the
+        # others as the knife moves them (MAB's green moved M 0.07 under K)
+        moves = board.clear_labels(covering([board.at(p) for p in beat.triangle]),
+                                   apart=LABEL_APART)
         if moves:
             board.scene.play(*gone, *moves, run_time=max(0.1, 0.4 * beat.pace))
             gone = []

@@ -33,7 +33,7 @@ from manim import (
 )
 from manim import Polygon as MPolygon
 
-from metaphors.board import Board, Playable, animate
+from metaphors.board import Board, FadeInUnder, Playable, animate
 from metaphors.drawing import Frame
 from metaphors.layout import METAPHOR
 from metaphors.performing import Performances, act, performs
@@ -239,8 +239,10 @@ class CloseUp:
     def zoom_out(self) -> list[Playable]:
         board = self.board
         self._move_hidden(-1.0)
+        # under the labels the close-up kept: a fade in would put the fill over them
         anims: list[Playable] = [Turn(self.fragment, 0.0, self.pivot, 1 / self.zoom),
-                                 FadeIn(self.outline), FadeOut(self.window)]
+                                 FadeInUnder(self.outline, list(board.markers.values())),
+                                 FadeOut(self.window)]
         anims += [FadeIn(m) for m in (*self.hidden.values(), *self.others)]
         back = self.frame
         for label, m in self.shown.items():
