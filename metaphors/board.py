@@ -93,6 +93,10 @@ class Board:
         # notes of a beat that stay up while its caption is read and go with the next beat's
         # words (the monotone sweep's kind word)
         self.leaving: list[Mobject] = []
+        # the keys of metaphor objects that only the beat which drew them speaks of (ear
+        # clipping's red test triangle): the next beat's words take them away, whatever
+        # metaphor plays it (left up, the triangle lay under the gravity step after it)
+        self.passing: dict[str, Mobject] = {}
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
         # how many of the run's beats each caption stands over (:meth:`shared_time`)
@@ -152,6 +156,8 @@ class Board:
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
                  *(FadeOut(m) for m in self.leaving)]
         self.leaving = []
+        passed, self.passing = self.drop(*[key for key, m in self.passing.items()
+                                           if self.objects.get(key) is m]), {}
         paced = max(0.1, run_time * beat.pace)
         lead = min(WORDS_TIME, paced / 2)
         split = bool(words) and lead >= MIN_PLAY and not together
@@ -164,14 +170,14 @@ class Board:
         if split:
             for animation in words:
                 animation.mobject.set_z_index(WORDS_Z)
-            self.scene.play(*words, run_time=lead, **caption)
+            self.scene.play(*words, *passed, run_time=lead, **caption)
             self.settle()
             if action:
                 self.scene.play(*action, run_time=rest)
             else:
                 self.scene.wait(whole_frames(rest))
-        elif words or action:
-            self.scene.play(*words, *action, run_time=total, **caption)
+        elif words or action or passed:
+            self.scene.play(*words, *passed, *action, run_time=total, **caption)
         for marker, colour in after:
             marker.set_color(colour)
         self.caption = beat.caption
@@ -290,9 +296,35 @@ class Board:
         self.moved_for_now = {}
         return moves
 
+    def passes(self, *keys: str) -> None:
+        """The objects kept under ``keys`` go with the next beat's words (:attr:`passing`),
+        unless taken away or replaced before."""
+        self.passing.update({key: self.objects[key] for key in keys if key in self.objects})
+
     def drop(self, *keys: str) -> list[FadeOut]:
         """Fade-outs for remembered objects."""
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
+
+
+class FadeInUnder(FadeIn):
+    """A fade in that puts its mobject in the drawing order under the first of ``under`` on
+    screen, not over everything as a fade in does: the fruit faded back in after gravity's
+    close-up came over the labels of the vertices the close-up kept (M, H and G light orange
+    on its orange, their dark halos hidden)."""
+
+    def __init__(self, mobject: Mobject, under: Sequence[Mobject], **kwargs: Any) -> None:
+        super().__init__(mobject, **kwargs)
+        self.under = list(under)
+
+    def _setup_scene(self, scene: Any) -> None:
+        super()._setup_scene(scene)
+        if scene is None:
+            return
+        above = [k for k, m in enumerate(scene.mobjects)
+                 if any(m is other for other in self.under)]
+        if above and scene.mobjects.index(self.mobject) > above[0]:
+            scene.mobjects.remove(self.mobject)
+            scene.mobjects.insert(above[0], self.mobject)
 
 
 def _edges(mobject: Mobject) -> list[Segment]:

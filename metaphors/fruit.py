@@ -152,41 +152,58 @@ class Replace(Add):
 
 
 def ear_test(board: Board, beat: EarTest) -> None:
-    """The vertex tested pulses; a vertex that is no ear shows why: its triangle, outlined in
-    red, with the vertex inside it pulsing too (or, not convex, the triangle alone)."""
+    """The vertex tested pulses with its triangle: an ear's, empty, in the green of a correct
+    result, up until its slice takes it (:func:`clip`); a vertex that is no ear shows why,
+    its triangle in red with the vertex inside it pulsing too (or, not convex, the triangle
+    alone), up for its own step only (:attr:`Board.passing`: left up, it lay under the
+    gravity step's ✓ for the diagonal found next)."""
     _setup(board, beat)
     theme = board.theme
     colour = theme.result if beat.ear else theme.rejected
     gone = board.drop(*_TEST)
     if beat.triangle:
-        # the labels the red triangle would lie over move clear of it first (a pulse and a
+        # the labels the triangle would lie over move clear of it first (a pulse and a
         # move of one marker in one play would cancel): a label on its red over the fruit's
-        # orange was hard to read, and its edge ran through the keyhole's c₂
-        moves = board.clear_labels(covering([board.at(p) for p in beat.triangle]))
+        # orange was hard to read, and its edge ran through the keyhole's c₂; apart from the
+        # others as the knife moves them (MAB's green moved M 0.07 under K)
+        moves = board.clear_labels(covering([board.at(p) for p in beat.triangle]),
+                                   apart=LABEL_APART)
         if moves:
             board.scene.play(*gone, *moves, run_time=max(0.1, 0.4 * beat.pace))
             gone = []
     anims: list[Playable] = [*gone, Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
     if beat.triangle:
-        outline = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.rejected,
-                               stroke_width=theme.stroke * 1.5, stroke_opacity=0,
-                               fill_color=theme.rejected, fill_opacity=0), "rejected",
-                      "ear-triangle")
-        board.keep("ear-triangle", outline)
-        # under the vertices and their labels: the vertex inside it is what the caption
-        # names ("G lies in its triangle"), and a fade-in would put the triangle over it
-        board.scene.add(outline)
-        backing = _backing(board, covering(outline.get_vertices()))
-        if backing is not None:  # a label left on the red (its vertex inside): a dark card
-            board.keep("ear-backing", backing)
-            board.scene.add(backing)
-            anims.append(backing.animate.set_fill(opacity=BACKING_OPACITY))
-        board.scene.bring_to_front(*board.markers.values())
-        anims.append(outline.animate.set_fill(opacity=0.3).set_stroke(opacity=1.0))
+        anims += _test_triangle(board, beat.triangle, "result" if beat.ear else "rejected")
     if beat.inside:
         anims.append(Indicate(board.markers[unprimed(beat.inside)], color=theme.rejected,
                               scale_factor=1.6))
     board.play(beat, *anims, run_time=0.6 if beat.ear else 0.9)
+    if not beat.ear:
+        board.passes(*_TEST)
+
+
+def _test_triangle(board: Board, triangle: Sequence[Point], role: str) -> list[Playable]:
+    """The animations bringing in a tested vertex's triangle outlined and tinted in ``role``'s
+    colour (an ear's green, a vertex that is no ear's red), and a dark card under a label
+    left on it."""
+    theme = board.theme
+    colour = theme.role_colour(role)
+    outline = tag(MPolygon(*[board.at(p) for p in triangle], color=colour,
+                           stroke_width=theme.stroke * 1.5, stroke_opacity=0,
+                           fill_color=colour, fill_opacity=0), role, "ear-triangle")
+    board.keep("ear-triangle", outline)
+    # under the vertices and their labels: the vertex inside it is what the caption
+    # names ("G lies in its triangle"), and a fade-in would put the triangle over it
+    board.scene.add(outline)
+    anims: list[Playable] = []
+    backing = _backing(board, covering(outline.get_vertices()))
+    if backing is not None:  # a label left on the triangle (its vertex inside): a dark card
+        board.keep("ear-backing", backing)
+        board.scene.add(backing)
+        anims.append(backing.animate.set_fill(opacity=BACKING_OPACITY))
+    board.scene.bring_to_front(*board.markers.values())
+    anims.append(outline.animate.set_fill(opacity=0.3).set_stroke(opacity=1.0))
+    return anims
 
 
 #: the gap (scene units) between the lines that stand for a test triangle's inside
@@ -260,8 +277,8 @@ def clip(board: Board, beat: Slice) -> None:
     a, b, c = data.points
     knife = tag(Line(board.at(a), board.at(c), color=theme.knife, stroke_width=theme.stroke * 2),
                 "called", "knife")
-    board.play(beat, *board.drop(*_TEST), Create(knife),
-               *board.clear_labels(knife, apart=LABEL_APART), run_time=0.6)
+    # the ear's green triangle stays up while the knife cuts along its side
+    board.play(beat, Create(knife), *board.clear_labels(knife, apart=LABEL_APART), run_time=0.6)
     piece = tag(MPolygon(*[board.at(p) for p in (a, b, c)], color=theme.rind,
                          stroke_width=theme.thin_stroke, fill_color=theme.fruit,
                          fill_opacity=0.9), "result", f"slice:{''.join(data.corners)}")
@@ -274,13 +291,15 @@ def clip(board: Board, beat: Slice) -> None:
     # the count is cut, not morphed (glyphs melting into each other read as other numbers)
     # nor faded in (a fade from nothing left no count in its first frames: at the fast
     # steps' pace, two frames of three): the old goes and the new is there in one frame
-    anims: list[Playable] = [Transform(piece, target), FadeOut(knife),
+    # the ear's triangle goes as its slice is taken to the plate
+    anims: list[Playable] = [*board.drop(*_TEST), Transform(piece, target), FadeOut(knife),
                              Replace(counter, board.objects.get("counter"))]
     board.keep("counter", counter)
     if data.rest:
         anims.append(Transform(board.outline, _fruit(board, data.rest)))
-    else:
-        anims.append(FadeOut(board.outline))
+    else:  # the last slice: the keyhole cuts go (no fruit is left round them); the fruit's
+        # last triangle stays while its caption is read, until the whole triangulation
+        anims += board.drop(*[key for key in board.objects if key.startswith("keyhole:")])
     anims += _good_shrinks(board, data.good)
     board.scene.add(piece)
     board.play(beat, *anims, run_time=1.0)
@@ -305,7 +324,8 @@ def _whole(board: Board, beat: Slice) -> None:
     # under its own caption, at full pace: the last slice's words are over; what the steps
     # left (prune and search's good part, its last diagonal and ✓) goes
     board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call),
-               *board.drop("good", *_FOUND), *[FadeIn(p) for p in pieces], shown,
+               *board.drop("good", *_FOUND), FadeOut(board.outline),
+               *[FadeIn(p) for p in pieces], shown,
                *board.clear_labels(*pieces),
                run_time=1.2, at_rest=True)
     board.scene.wait(1.0)
@@ -362,7 +382,8 @@ class Keyhole(Beat):
 
 @beat_kind("ear-test")
 class EarTest(Beat):
-    """Is ``vertex`` an ear (``ear``)? If not, its ``triangle`` (points; empty for an ear) and
+    """Is ``vertex`` an ear (``ear``)? Its ``triangle`` (points: an ear's, empty, or the one
+    that shows why the vertex is not; empty when not found on the fruit) and, not an ear,
     the vertex ``inside`` it (None when the vertex is not convex)."""
 
     vertex: str
@@ -407,7 +428,8 @@ def unprimed(label: str) -> str:
 
 def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, ear = walk.ref(call, "v"), bool(ret.result)
-    why = None if ear else _not_an_ear(walk, v)
+    triangle = _triangle(walk, v)
+    why = None if ear or triangle is None else _why_not(triangle)
     if ear:
         caption = f"Is {v} an ear? yes: its triangle holds no other vertex"
     elif why is None:  # not found on the fruit as it stands (never seen): say it plainly
@@ -419,8 +441,9 @@ def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     roles = {unprimed(v): "result" if ear else "rejected"}
     if why is not None and why[1] is not None:
         roles[unprimed(why[1])] = "rejected"
+    shown = triangle[0] if triangle is not None and (ear or why is not None) else ()
     yield walk.call_beat(EarTest, caption, call, ret, roles=roles, vertex=v, ear=ear,
-                         triangle=points_of(why[0]) if why else (), inside=why[1] if why else None)
+                         triangle=points_of(shown), inside=why[1] if why else None)
 
 
 def _ring(walk: Walk) -> tuple[list[str], list]:
@@ -435,9 +458,14 @@ def _ring(walk: Walk) -> tuple[list[str], list]:
     return labels, points
 
 
-def _not_an_ear(walk: Walk, v: str) -> tuple[list, str | None] | None:
-    """Why ``v`` is no ear of the fruit as it stands: its triangle's points and a vertex in
-    the closed triangle, or None there when ``v`` is not convex; None if neither is found."""
+#: a vertex's triangle on the fruit as it stands: its corners' points, and the points of
+#: the fruit's other vertices, by label
+_Triangle = tuple[list, dict[str, Any]]
+
+
+def _triangle(walk: Walk, v: str) -> _Triangle | None:
+    """``v``'s triangle on the fruit as it stands (``v`` and its neighbours) and the fruit's
+    other vertices; None if ``v`` is not on it."""
     labels, points = _ring(walk)
     gone = {c[1] for c in walk.memo("fruit.clipped", list)}
     ring = [k for k, label in enumerate(labels) if label not in gone]
@@ -445,13 +473,18 @@ def _not_an_ear(walk: Walk, v: str) -> tuple[list, str | None] | None:
         return None
     at = ring.index(labels.index(v))
     corners = [ring[at - 1], ring[at], ring[(at + 1) % len(ring)]]
-    a, b, c = (points[k] for k in corners)
-    triangle = [a, b, c]
+    others = {labels[k]: points[k] for k in ring if k not in corners}
+    return [points[k] for k in corners], others
+
+
+def _why_not(triangle: _Triangle) -> tuple[list, str | None] | None:
+    """Why a vertex is no ear: its triangle's points and a vertex in the closed triangle, or
+    None there when the vertex is not convex; None if neither is found."""
+    (a, b, c), others = triangle
     if orient(a, b, c) <= 0:
-        return triangle, None
-    inside = next((labels[k] for k in ring
-                   if k not in corners and in_closed_triangle(points[k], a, b, c)), None)
-    return (triangle, inside) if inside is not None else None
+        return [a, b, c], None
+    inside = next((label for label, q in others.items() if in_closed_triangle(q, a, b, c)), None)
+    return ([a, b, c], inside) if inside is not None else None
 
 
 def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:

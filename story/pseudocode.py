@@ -72,7 +72,7 @@ class PseudocodeRow:
     def depth(self) -> int:
         """Its level of indentation (two spaces each).
 
-        >>> PseudocodeRow("    G = the good part").depth
+        >>> PseudocodeRow("    Q = the good part").depth
         2
         """
         return (len(self.text) - len(self.text.lstrip(" "))) // 2

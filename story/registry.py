@@ -342,14 +342,16 @@ _ENTRIES = (
     _triangulation("prune-and-search", metaphor="fruit",
                    idea="the good sub-polygons shrink",
                    pseudocode=(
-                       # G = P at first, good (no cutting edge: the chapter's card says so); one
-                       # row, room for the result's (at most 8 rows fit at the least size of text)
-                       PseudocodeRow("G = P (good); while P is more than a triangle:"),
-                       PseudocodeRow("  V = the middle vertex of G: an ear?", ("is_ear",)),
-                       PseudocodeRow("  yes: slice the ear V off, go on in G", ("clip_ear",)),
-                       PseudocodeRow("  no: find an inner diagonal V–W of G", ("diagonal_at",)),
+                       # Q = P at first, good (no cutting edge: the chapter's card says so); one
+                       # row, room for the result's (at most 8 rows fit at the least size of text).
+                       # Q, not G: G is a vertex of the lecture polygon, the one tested first
+                       # ("Is G an ear? no"), and a sub-polygon of the same name read as it
+                       PseudocodeRow("Q = P (good); while P is more than a triangle:"),
+                       PseudocodeRow("  V = the middle vertex of Q: an ear?", ("is_ear",)),
+                       PseudocodeRow("  yes: slice the ear V off, go on in Q", ("clip_ear",)),
+                       PseudocodeRow("  no: find an inner diagonal V–W of Q", ("diagonal_at",)),
                        PseudocodeRow("    (V convex: the sweep; else gravity)", ("sweep_at", "gravity_at")),
-                       PseudocodeRow("    G = the good part beyond V–W", ("good_subpolygon",)),
+                       PseudocodeRow("    Q = the good part beyond V–W", ("good_subpolygon",)),
                        PseudocodeRow("the triangle left is the last slice", ("prune-and-search",)),
                        _SLICES,
                    )),

@@ -11,6 +11,7 @@ import math
 import re
 from collections.abc import Iterator
 from itertools import pairwise
+from typing import Any
 
 from story.reading import readable
 
@@ -85,9 +86,10 @@ def small_texts(data: dict) -> list[str]:
 #: the animations that take a mobject off the screen, and those that put one on
 OUTGOING = {"FadeOut", "Uncreate", "Unwrite", "ShrinkToCenter"}
 #: ``Add``, ``Replace`` (:class:`metaphors.fruit.Replace`: the one it replaces goes in the
-#: same frame): a cut, the mobject on screen from the play's first frame (ear clipping's counts)
+#: same frame): a cut, the mobject on screen from the play's first frame (ear clipping's counts);
+#: ``FadeInUnder`` (:class:`metaphors.board.FadeInUnder`): a fade in under the labels
 INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter", "Add",
-            "Replace"}
+            "Replace", "FadeInUnder"}
 
 
 def _text_of(node: dict) -> str:
@@ -440,6 +442,8 @@ def flickering_counts(data: dict) -> list[str]:
 
 #: the most of a good sub-polygon's tint that may lie off the fruit (square units: rounding)
 MOST_GOOD_OFF = 0.02
+#: the names of ear clipping's keyhole cuts (:func:`metaphors.fruit.keyhole`)
+_KEYHOLE = "keyhole:"
 
 
 def _region(node: dict):
@@ -462,19 +466,24 @@ def stale_good_parts(data: dict) -> list[str]:
     the fruit (the slices are cut from it) and goes when only its cutting edge is left; in
     chapter 4 the tint A-B-G-H stayed while its slices lay on the plate and the fruit was
     gone. Judged after each play where both were last seen the same way (a turn of the
-    picture leaves their places unknown until each is drawn again)."""
+    picture leaves their places unknown until each is drawn again). Likewise a keyhole cut
+    (``keyhole:1``) left with no fruit round it, as ``"play 280: keyhole:1 over no fruit"``:
+    chapter 4's green c₁–F floated alone after the last slice."""
     unknown = object()
     fruit: object = None
     good: object = None
     found, said = [], ""  # each stale span once, at its first play
+    cuts: set[str] = set()  # the keyhole cuts shown
     for k, play in enumerate(data["plays"]):
         for anim in play["animations"]:
             node = anim.get("mobject") or {}
             name = node.get("name")
+            if (name or "").startswith(_KEYHOLE):
+                (cuts.discard if anim["type"] in OUTGOING else cuts.add)(name)
             if name not in ("polygon", "good"):
                 continue
             if name == "polygon" and anim["type"] == "Create":  # a run starts
-                good = None
+                good, cuts = None, set()
             if anim["type"] in OUTGOING:
                 shape = None
             elif anim["type"] == "Turn":
@@ -485,6 +494,9 @@ def stale_good_parts(data: dict) -> list[str]:
                 fruit = shape
             else:
                 good = shape
+        if fruit is None and cuts:
+            found.append(f"play {k}: {', '.join(sorted(cuts))} over no fruit")
+            cuts = set()  # each cut once
         if good is None or good is unknown or fruit is unknown:
             said = ""
             continue
@@ -801,7 +813,8 @@ def leftover_verdicts(data: dict) -> list[str]:
     """The plays that draw a run's whole triangulation while a verdict's ✓ or ✗ of one of
     its steps is still on screen, as ``"play 90: 2 ✓/✗ left"``: the diagonal it judged is
     an edge of the result now, and a mark left over (or left behind, unturned, when a later
-    claim took its place) reads as a claim on the triangulation."""
+    claim took its place) reads as a claim on the triangulation. And the red test triangles
+    left past their step (:func:`stale_test_triangles`)."""
     found = []
     shown = 0
     for k, play in enumerate(data["plays"]):
@@ -812,6 +825,35 @@ def leftover_verdicts(data: dict) -> list[str]:
         shown -= sum(1 for kind, name in tops if kind in OUTGOING and name in _VERDICT_MARKS)
         if shown > 0 and any(kind in INCOMING and name == "triangulation" for kind, name in tops):
             found.append(f"play {k}: {shown} ✓/✗ left")
+    return found + stale_test_triangles(data)
+
+
+#: ear clipping's test triangle (:func:`metaphors.fruit.ear_test`), red for a vertex that is no ear
+_TEST_TRIANGLE = "ear-triangle"
+
+
+def stale_test_triangles(data: dict) -> list[str]:
+    """The red test triangles of ear clipping ("Is G an ear? no") still on screen when a
+    later step's picture changes, as ``"play 95: red ear-triangle of play 93"``: the verdict
+    of its own step only, it is stale once the next caption is up and the picture moves on
+    (prune and search's H-G-F stayed red through the whole gravity step after it, under the
+    green ✓ for GB). A part of :func:`leftover_verdicts`."""
+    found = []
+    since, moved_on = -1, False  # the play the red triangle came in; a caption after it
+    for k, play in enumerate(data["plays"]):
+        if since >= 0 and play.get("subcaption"):
+            moved_on = True
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                if node.get("name") != _TEST_TRIANGLE:
+                    continue
+                if kind in OUTGOING:
+                    since, moved_on = -1, False
+                elif since < 0 and node.get("role") == "rejected":
+                    since = k
+        if since >= 0 and moved_on and not play.get("subcaption") and _draws_picture(play):
+            found.append(f"play {k}: red {_TEST_TRIANGLE} of play {since}")
+            since, moved_on = -1, False  # each triangle once
     return found
 
 
@@ -2313,28 +2355,18 @@ def labels_without_contrast(data: dict) -> list[str]:
     ``"play 12 M on polygon 1.1 : 1"``: the contrast between the label's colour and the fill
     as the screen shows it (over the background) is under :data:`LEAST_CONTRAST`, and the
     label has no dark halo (:func:`_haloed`). A grey M, a red G or a green C on ear
-    clipping's orange fruit all but vanish. Each label and fill as
+    clipping's orange fruit all but vanish. And the labels a fill is drawn over (it came in
+    after them, :func:`_layers`), as ``"play 105 M under polygon 1.4 : 1"``: seen through the
+    fill (a halo under it too), the label against the fill (chapter 4's M, H and G light
+    orange on the fruit faded back in after gravity's close-up). Each label and fill as
     :func:`_shown_after_plays` follows them; each vertex is named once, where it first fails."""
-    from shapely.geometry import Polygon
     from shapely.geometry import box as area
 
-    from metaphors.theme import THEME
-
     found: dict[str, str] = {}
+    layers = _layers(data)
     for k, shown in _shown_after_plays(data, ("vertex:", *_FILLED)):
-        fills = []
-        for name, node in shown.items():
-            colour = _one_colour(node.get("fill"))
-            if (not name.startswith(_FILLED) or colour is None
-                    or (node.get("fill_opacity") or 0) <= 0):
-                continue
-            rings = sorted((Polygon(p) for p in _paths(node) if Polygon(p).is_valid),
-                           key=lambda r: -r.area)
-            if not rings:
-                continue
-            shape = Polygon(rings[0].exterior, [r.exterior for r in rings[1:]])
-            fills.append((name.split("@")[0], shape,
-                          _over(colour, float(node["fill_opacity"]), THEME.background)))
+        fills = _fills(shown)
+        layer = next(layers)
         for name, marker in shown.items():
             if not name.startswith("vertex:"):
                 continue
@@ -2342,13 +2374,69 @@ def labels_without_contrast(data: dict) -> list[str]:
             for part in marker.get("submobjects", ()):
                 colour = _one_colour(part.get("fill"))
                 if (not part.get("box") or not (part.get("text") or "").strip()
-                        or colour is None or not drawn(part) or _haloed(part)):
+                        or colour is None or not drawn(part)):
                     continue
-                for owner, shape, under in fills:
-                    ratio = contrast(colour, under)
-                    if ratio < LEAST_CONTRAST and shape.intersects(area(*part["box"])):
-                        found.setdefault(vertex, f"play {k} {vertex} on {owner} {ratio:.1f} : 1")
+                for owner, shape, fill, under in fills:
+                    if not shape.intersects(area(*part["box"])):
+                        continue
+                    if layer.get(owner, 0) > layer.get(name, 0):  # the fill drawn over it
+                        ratio = contrast(_over(*fill, colour), under)
+                        words = f"{vertex} under {owner}"
+                    elif _haloed(part):
+                        continue
+                    else:
+                        ratio, words = contrast(colour, under), f"{vertex} on {owner}"
+                    if ratio < LEAST_CONTRAST:
+                        found.setdefault(vertex, f"play {k} {words} {ratio:.1f} : 1")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+def _fills(shown: dict[str, dict]) -> list[tuple[str, Any, tuple[str, float], str]]:
+    """The fills (:data:`_FILLED`) of what is shown: their names, shapes, colours and
+    opacities, and colours as the screen shows them over the background."""
+    from shapely.geometry import Polygon
+
+    from metaphors.theme import THEME
+
+    fills = []
+    for name, node in shown.items():
+        colour = _one_colour(node.get("fill"))
+        if not name.startswith(_FILLED) or colour is None or (node.get("fill_opacity") or 0) <= 0:
+            continue
+        rings = sorted((Polygon(p) for p in _paths(node) if Polygon(p).is_valid),
+                       key=lambda r: -r.area)
+        if not rings:
+            continue
+        shape = Polygon(rings[0].exterior, [r.exterior for r in rings[1:]])
+        opacity = float(node["fill_opacity"])
+        fills.append((name.split("@")[0], shape, (colour, opacity),
+                      _over(colour, opacity, THEME.background)))
+    return fills
+
+
+#: a fade in that puts its mobject under the labels, not over everything
+#: (:class:`metaphors.board.FadeInUnder`)
+_UNDER = "FadeInUnder"
+
+
+def _layers(data: dict) -> Iterator[dict[str, int]]:
+    """After each play, where each top mobject shown stands in the drawing order, by name
+    (higher: drawn over lower): a mobject coming in, or first recorded, goes over all there
+    are (as manim adds it), one faded in under (:data:`_UNDER`) under all; one going leaves."""
+    layer: dict[str, int] = {}
+    high = low = 0
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for kind, _, name in _ends(anim):
+                if kind in OUTGOING:
+                    layer.pop(name, None)
+                elif kind == _UNDER:
+                    low -= 1
+                    layer[name] = low
+                elif kind in INCOMING or name not in layer:
+                    high += 1
+                    layer[name] = high
+        yield layer
 
 
 # --- issue 22: labels named together read as labels ------------------------------------------
@@ -2478,3 +2566,49 @@ def shifting_vertex_colours(data: dict, legend: dict[str, str], kinds: tuple[str
                 elif colour in kind_colours:
                     shown[label] = kind_colours[colour]
     return list(dict.fromkeys(found))
+# --- a pseudocode's names read apart from the picture's labels ----------------------------------
+
+#: the pseudocode names of a polygon (not a vertex): a part a row names ("Q = P (good)", "Q =
+#: the good part beyond V–W", "T = triangle ABC", "divide P along d into P1 and P2")
+_POLYGON_NAME = re.compile(
+    r"(?<![\w′])([A-Z][0-9]*) = (?:P\b|the good part|triangle)|\binto ([A-Z][0-9]*) and ([A-Z][0-9]*)")
+
+
+def polygon_names(rows: list[str]) -> set[str]:
+    """The names ``rows`` of pseudocode give to polygons: P, the run's, and its parts'.
+
+    >>> sorted(polygon_names(["G = P (good); while P is more than a triangle:", "V = the vertex"]))
+    ['G', 'P']
+    """
+    found = {"P"}
+    for row in rows:
+        for match in _POLYGON_NAME.finditer(row):
+            found.update(name for name in match.groups() if name)
+    return found
+
+
+def placeholders_as_labels(data: dict) -> list[str]:
+    """The pseudocode names of polygons (:func:`polygon_names`) a run's panel shows that are
+    also the label of a vertex on its picture, as ``"play 87: G"``: prune and search's "G = P
+    (good)", "V = the middle vertex of G" read as vertex G, the one tested first ("Is G an ear?
+    no"). A name of a polygon is never a vertex the run substitutes for it. Each name once
+    per run (its polygon drawn begins one), at the first play showing both."""
+    found: list[str] = []
+    labels: set[str] = set()
+    rows: set[str] = set()
+    said: set[str] = set()
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            if anim.get("type") == "Create" and (anim.get("mobject") or {}).get("name") in _POLYGONS:
+                labels, rows, said = set(), set(), set()
+            for _, node in _recorded(anim):
+                for part in mobject_nodes(node):
+                    name = part.get("name") or ""
+                    if name.startswith("vertex:"):
+                        labels.add(name.removeprefix("vertex:"))
+                    elif name.startswith("code:") and (part.get("text") or "").strip():
+                        rows.add(part["text"].strip())
+        for name in sorted((polygon_names(sorted(rows)) & labels) - said):
+            found.append(f"play {k}: {name}")
+            said.add(name)
+    return found

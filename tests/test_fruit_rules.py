@@ -5,7 +5,14 @@ on the board with its slices on the plate and the fruit gone) and on the same gr
 
 from __future__ import annotations
 
-from tests.reading_rules import flickering_counts, stale_good_parts
+from tests.reading_rules import (
+    flickering_counts,
+    labels_without_contrast,
+    leftover_verdicts,
+    placeholders_as_labels,
+    polygon_names,
+    stale_good_parts,
+)
 from tests.test_tool_rules import _closed, _graph
 
 
@@ -76,3 +83,105 @@ def test_a_good_part_over_no_fruit_is_found():
                                                          "points": _closed(*good)}}],
                     [_good("FadeOut", *good), _good("FadeIn", (9, 9), (10, 9), (9, 10))])
     assert stale_good_parts(turned) == []
+
+
+# --- chapter 4, review r34: stale test triangles and keyhole cuts, labels under the fruit,
+# a sub-polygon named as a vertex ------------------------------------------------------------
+
+
+def _captioned(*plays: tuple[str, list[dict]]) -> dict:
+    return {"plays": [{"animations": anims, "run_time": 1.0, "subcaption": words}
+                      for words, anims in plays]}
+
+
+def _triangle(kind: str, role: str) -> dict:
+    return {"type": kind, "mobject": {"name": "ear-triangle", "role": role,
+                                      "points": _closed((0, 0), (1, 0), (0, 1))}}
+
+
+def test_a_red_test_triangle_left_past_its_step_is_found():
+    """Prune and search's "Is G an ear? no": its red H-G-F stayed through the gravity step."""
+    test = [("Is G an ear? no: G is not convex", []), ("", [_triangle("_MethodAnimation", "rejected")])]
+    turn = {"type": "FadeIn", "mobject": {"name": "gravity", "points": _closed((5, 5), (6, 5), (6, 6))}}
+    stale = _captioned(*test, ("Turn the polygon", []), ("", [turn]))
+    assert leftover_verdicts(stale) == ["play 3: red ear-triangle of play 1"]
+    mended = _captioned(*test, ("Turn the polygon", [_triangle("FadeOut", "rejected")]), ("", [turn]))
+    assert leftover_verdicts(mended) == []
+    # an ear's green triangle stays up through its slice: not a verdict left over
+    ear = _captioned(("Is A an ear? yes", []), ("", [_triangle("_MethodAnimation", "result")]),
+                     ("Slice MAB", []), ("", [turn]))
+    assert leftover_verdicts(ear) == []
+
+
+def _cut(kind: str) -> dict:
+    return {"type": kind, "mobject": {"name": "keyhole:1", "points": [[1, 1, 0], [1, 1, 0],
+                                                                      [2, 2, 0], [2, 2, 0]]}}
+
+
+def test_a_keyhole_cut_over_no_fruit_is_found():
+    """Chapter 4's c₁–F cut floated alone once the last slice had taken the fruit."""
+    start = [{"type": "Create", "mobject": P}, _cut("FadeIn")]
+    left = _graph(start, [_fruit("FadeOut", (0, 0), (4, 0), (4, 4))])
+    assert stale_good_parts(left) == ["play 1: keyhole:1 over no fruit"]
+    gone = _graph(start, [_fruit("FadeOut", (0, 0), (4, 0), (4, 4)), _cut("FadeOut")])
+    assert stale_good_parts(gone) == []
+
+
+def _label(kind: str) -> dict:
+    return {"type": kind, "mobject": {"name": "vertex:M", "submobjects": [
+        {"type": "Dot", "points": _closed((1, 1), (1.1, 1), (1.1, 1.1))},
+        {"type": "Text", "text": "M", "box": [1.2, 1.2, 1.5, 1.5], "fill": "#E8ECF2",
+         "fill_opacity": 1.0, "halo": {"stroke": "#10141C", "stroke_opacity": 1.0,
+                                       "stroke_width": 6.0}}]}}
+
+
+def _orange(kind: str) -> dict:
+    return {"type": kind, "mobject": {**P, "fill": "#F4A259", "fill_opacity": 0.75}}
+
+
+def test_a_label_the_fruit_came_over_is_found():
+    """After gravity's close-up the fruit faded back in over M, H and G: light orange on it."""
+    start = [{"type": "Create", "mobject": {**P, "fill": "#F4A259", "fill_opacity": 0.75}},
+             _label("FadeIn")]
+    assert labels_without_contrast(_graph(start)) == []  # a haloed ink label over the fruit
+    # the label moves back from the close-up as the fruit fades in
+    over = _graph(start, [_orange("FadeOut")], [_orange("FadeIn"), _label("_MethodAnimation")])
+    assert labels_without_contrast(over) == ["play 2 M under polygon 1.9 : 1"]
+    under = _graph(start, [_orange("FadeOut")],
+                   [_orange("FadeInUnder"), _label("_MethodAnimation")])
+    assert labels_without_contrast(under) == []
+
+
+def _rows(*texts: str) -> list[dict]:
+    return [{"type": "FadeIn", "mobject": {"name": f"code:{k}", "text": t}}
+            for k, t in enumerate(texts, start=1)]
+
+
+def test_a_sub_polygon_named_as_a_vertex_is_found():
+    """Prune and search's pseudocode named the good part G, and G was the vertex tested."""
+    marker = {"type": "FadeIn", "mobject": {"name": "vertex:G"}}
+    start = [{"type": "Create", "mobject": P}, marker]
+    named = _graph([*start, *_rows("G = P (good); while P is more than a triangle:",
+                                   "  V = the middle vertex of G: an ear?")])
+    assert placeholders_as_labels(named) == ["play 0: G"]
+    renamed = _graph([*start, *_rows("Q = P (good); while P is more than a triangle:",
+                                     "  V = the middle vertex of Q: an ear?")])
+    assert placeholders_as_labels(renamed) == []
+    # a vertex a row names by its label (the heuristics' "B = the left-most vertex") is the
+    # run's own vertex: not a polygon's name
+    assert placeholders_as_labels(_graph([*start, *_rows("G = the left-most vertex")])) == []
+
+
+def test_no_pseudocode_names_a_polygon_as_a_lecture_vertex():
+    """No built-in's pseudocode names a polygon (or a part of one) with a letter a vertex of
+    the lecture's polygons has: the lecture polygon's A–M, the keyhole sample's, the
+    heuristics' (the exercises are drawn on the counterexample's frame)."""
+    from geometry.io import read_any_polygon
+    from story.registry import entry, names
+
+    labels = {label for name in ("lecture", "keyhole", "counterexample", "gravity-snag")
+              for label in read_any_polygon(name).labels}
+    assert {"A", "M", "a₁", "d₂"} <= labels
+    clashes = {name: polygon_names([row.text for row in entry(name).pseudocode]) & labels
+               for name in names()}
+    assert {name: sorted(c) for name, c in clashes.items() if c} == {}

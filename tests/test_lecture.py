@@ -55,6 +55,7 @@ from tests.reading_rules import (
     morphed_water,
     notes_over_fills,
     notes_under_moving_tools,
+    placeholders_as_labels,
     red_after_the_pick,
     refaded_texts,
     repeated_verdicts,
@@ -580,6 +581,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_under_test_triangles(data) == [], chapter.slug
     # and every label reads on the fill it stands over (a grey M on the fruit's orange)
     assert labels_without_contrast(data) == [], chapter.slug
+    # and the pseudocode names no polygon with a label of the picture (chapter 4's
+    # good part "G", G the vertex tested)
+    assert placeholders_as_labels(data) == [], chapter.slug
     # and labels named together are spaced when subscripted ("a₂b₂H" read as one word)
     assert run_together_labels(data) == [], chapter.slug
     # and the picture's labels stand apart (K stood 0.07 over M on the fruit)

@@ -73,6 +73,7 @@ from tests.reading_rules import (
     mixed_ending_labels,
     morphed_water,
     notes_under_moving_tools,
+    placeholders_as_labels,
     red_after_the_pick,
     refaded_texts,
     repeated_verdicts,
@@ -523,6 +524,13 @@ def test_every_label_reads_on_what_it_stands_over(case):
     contrast of 3 : 1 with it, or has a dark halo: grey,
     red and green labels on the fruit (the keyhole's c₂, M beside K) all but vanished."""
     assert labels_without_contrast(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_pseudocode_name_of_a_polygon_is_a_vertex_label(case):
+    """Review r34: the panel's pseudocode names no polygon with a label on the picture (prune
+    and search's good part was "G", and G the vertex tested first)."""
+    assert placeholders_as_labels(graph(case).data) == [], case.id
 
 
 def test_no_label_is_under_the_balls_fall_on_the_counterexample():
