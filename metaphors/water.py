@@ -93,16 +93,25 @@ def _rise(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
 TEXT_CLEARANCE = 0.35
 
 
+def _triangle(board: Board, center: Point) -> shapely.Polygon:
+    """T on screen: B (where the water is spilled) and its two neighbours."""
+    points = board.polygon.points
+    k = points.index(tuple(center))
+    return shapely.Polygon([tuple(board.at(points[j])[:2])
+                            for j in (k - 1, k, (k + 1) % len(points))])
+
+
 def _disk(board: Board, center: Point, radius: float) -> MPolygon:
-    """The water's disk, cut where the picture's part of the screen ends: grown past the
-    polygon it would spill under the subtitle, the title or the panel (Scaling's second
-    radius reaches past B's side). Cut at the screen's edge, not the box's: a cut at B would
-    look like a wall."""
+    """The water's disk inside T, as the card draws it: the water is spilled to find T's
+    candidates, and the whole disk ran off the screen's left edge, was cut flat under the
+    title and lay over B's and E's labels (chapter 2 at 32.6 s). Also cut where the
+    picture's part of the screen ends (T reaches no further, but a polygon handed to the
+    lecture may be drawn larger)."""
     x, y = board.at(center)[:2]
     right = board.box.x + board.box.width / 2
     disk = shapely.Point(x, y).buffer(max(board.length(radius), 1e-3), 64).intersection(
         shapely.box(-config.frame_width / 2, SUBTITLE_Y + TEXT_CLEARANCE, right,
-                    TITLE_Y - TEXT_CLEARANCE))
+                    TITLE_Y - TEXT_CLEARANCE)).intersection(_triangle(board, center))
     corners = [(px, py, 0.0) for px, py in list(disk.exterior.coords)[:-1]] if isinstance(
         disk, shapely.Polygon) and not disk.is_empty else [(x, y, 0.0)] * 3
     return tag(MPolygon(*corners, color=board.theme.water, stroke_width=board.theme.thin_stroke,

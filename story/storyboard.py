@@ -344,6 +344,20 @@ class Walk:
             self.kept.add(id(beat))
         return beat
 
+    def closing_claim(self, beat: Beat) -> Beat:
+        """``beat`` (made after its claim's verdict: the split along the diagonal verified)
+        as a beat of that claim, not of the next: its pace and its summary are the claim's.
+        Counted with the next, chapter 1's split along diagonal 9 came under "Diagonal 10:
+        the same steps, faster" while 9's ✓ was still on screen."""
+        if self.claims == 0:
+            return beat
+        claims = self.claims - 1
+        closed = beat if id(beat) in self.kept else replace(
+            beat, pace=1.0 if claims < self.pacing.full else self.pacing.fast)
+        self.counted[id(closed)] = claims
+        self.counted_of[id(closed)] = {**self.of_noun, self.noun: self.of_noun[self.noun] - 1}
+        return closed
+
     def call_beat(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
                   key_step: bool = False, **fields: Any) -> Beat:
         """The beat of a returned call: its call line, and the call's roles unless ``fields``
@@ -470,7 +484,7 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
         beats.extend(_boxed(walk, made) if walk.black_box and walk.heuristic_polygon else made)
         walk.track(event)
     return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
-                      walk.noun, kept=[id(b) in walk.kept for b in beats],
+                      walk.noun, total=walk.claims, kept=[id(b) in walk.kept for b in beats],
                       numbers=[walk.counted_of.get(id(b), {}).get(walk.noun, 0) for b in beats],
                       names=walk.named.get(walk.noun, {}), order=tuple(walk.root_polygon()[0]))
 

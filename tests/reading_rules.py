@@ -2395,3 +2395,60 @@ def far_verdicts(data: dict) -> list[str]:
                 if far > FARTHEST_MARK:
                     found.append(f"play {k} {node['name']} {far:.2f} from its claim")
     return found
+
+
+# --- a fill never tints a vertex label: labels and dots are drawn over fills -----------------
+
+
+def _label_layers(marker: dict) -> list[tuple[tuple[float, float, float, float], float]]:
+    """(box, z-index) of each label text a vertex's marker shows (its own children)."""
+    return [(tuple(part["box"]), float(part.get("z", marker.get("z", 0))))
+            for part in marker.get("submobjects", ())
+            if part.get("box") and (part.get("text") or "").strip()]
+
+
+def _fill_shapes(node: dict) -> Iterator[tuple[object, float]]:
+    """(region, z-index) of each filled part of a node (not its texts)."""
+    from shapely.geometry import Polygon
+
+    for part in mobject_nodes(node):
+        if (part.get("fill_opacity") or 0) <= 0 or not part.get("points") or "text" in part:
+            continue
+        for ring in _paths(part):
+            shape = Polygon(ring)
+            if shape.is_valid and shape.area > 0:
+                yield shape, float(part.get("z", 0))
+
+
+def fills_over_labels(data: dict) -> list[str]:
+    """The fills drawn over a vertex label they cover, as ``"play 93 triangulation over M"``:
+    manim draws by z-index, then in the order mobjects came, so a fill that comes after a
+    label (a whole triangulation's triangles) at its z-index or above tints it (chapter 1's
+    M and G at 81.5 s). The labels as the plays leave them; a polygon coming in begins a new
+    picture. Each label and fill once, where it first covers."""
+    from shapely.geometry import box as area
+
+    labels: dict[str, tuple[list, int]] = {}  # vertex: (its label layers, when it came)
+    found: dict[tuple[str, str], str] = {}
+    came = 0
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            top = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and top.get("name") in _POLYGONS:
+                labels = {}
+            for kind, node in _recorded(anim):
+                name = node.get("name") or ""
+                came += 1
+                if kind in OUTGOING:
+                    labels.pop(name, None)
+                elif name.startswith("vertex:"):
+                    labels[name] = (_label_layers(node), labels.get(name, (None, came))[1])
+                elif kind in INCOMING:
+                    for shape, z in _fill_shapes(node):
+                        for vertex, (layers, when) in labels.items():
+                            if any((z, came) > (lz, when)
+                                   and shape.intersection(area(*box)).area > 1e-4
+                                   for box, lz in layers):
+                                found.setdefault((vertex, name), f"play {k} {name} over "
+                                                 f"{vertex.removeprefix('vertex:')}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
