@@ -125,7 +125,8 @@ def water(board: Board, beat: Water) -> None:
     board.play(beat, FadeIn(disk), run_time=0.5)
     radius = 0.0
     for k, (state, reached) in enumerate(hits(states[1:])):
-        colour = board.theme.result if k == 0 else board.theme.argument
+        # the first wetted is the pick, the claim to be (amber); the others stay candidates
+        colour = board.theme.argument if k == 0 else board.theme.candidate
         board.play(beat, _grow(board, disk, state.center, radius, state.radius),
                    Indicate(board.markers[reached], color=colour), run_time=1.2)
         radius = state.radius
@@ -212,9 +213,10 @@ def flood(board: Board, beat: Flood) -> None:
     for state, reached in hits(states[1:]):
         drowned = board.markers[reached]
         is_last = state is states[-1]
-        # going under is no failure: amber, as the clock's and the sweep's later candidates
-        # (red means "fails", metaphors.theme's legend); the last one, the pick, green
-        colour = board.theme.result if is_last else board.theme.argument
+        # going under is no failure: a candidate still, as the clock's and the sweep's later
+        # ones (red means "fails", metaphors.theme's legend); the last one, the pick, amber:
+        # the claim to be
+        colour = board.theme.argument if is_last else board.theme.candidate
 
         def wet(alpha: float, start: float = level, end: float = state.level):
             return inner.intersection(_strip(a, c, towards, start + (end - start) * alpha))
@@ -243,11 +245,13 @@ def _strip(a: Point, c: Point, towards: Point, level: float) -> shapely.Polygon:
 
 READS: Mapping[str, Reading] = {
     "nearest_to": read_step(
-        Water, "Water spilled at B spreads; the first candidate it wets is {result}", _spread),
+        Water, "Water spilled at B spreads; the first candidate it wets is {result}", _spread,
+        picks=True),
     "nearest_visible": read_step(
-        WalledWater, "Water that respects the walls reaches {result} first", _walled),
+        WalledWater, "Water that respects the walls reaches {result} first", _walled,
+        picks=True),
     "last_dry": read_step(
-        Flood, "Water rises from the shore AC; the last dry candidate is {result}", _rise),
+        Flood, "Water rises from the shore AC; the last dry candidate is {result}", _rise, picks=True),
 }
 PERFORMS: Performances = performs(act(Water, water), act(WalledWater, walled_water),
                                   act(Flood, flood))

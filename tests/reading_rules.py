@@ -2452,3 +2452,49 @@ def fills_over_labels(data: dict) -> list[str]:
                                 found.setdefault((vertex, name), f"play {k} {name} over "
                                                  f"{vertex.removeprefix('vertex:')}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- one legend: a candidate is neutral until it is picked, green only once judged ------------
+
+#: the caption that names a run's candidates, and the verdicts' first marks
+_CANDIDATES, _VERDICTS = "Candidates inside T:", ("✓", "✗")
+
+
+def _vertex_of(name: str, candidates: set[str]) -> str | None:
+    """The candidate a marker shows (the picture's ``vertex:E``, the panel's ``panel:E``)."""
+    vertex = name.partition(":")[2] if name.startswith(("vertex:", "panel:")) else ""
+    return vertex if vertex in candidates else None
+
+
+def shifting_colours(data: dict) -> list[str]:
+    """The candidates drawn in a claim's or a verdict's colour before their time, as ``"play
+    40 E green before a verdict"`` or ``"play 41 F amber, not picked"``: after a caption naming
+    T's candidates (:data:`_CANDIDATES`) and until the verdict, a candidate is green
+    (``result``) only once a ✓ judges it, and, under a caption naming the one picked (its
+    last word a candidate: a metaphor's step), amber (``argument``) only as that one or as
+    claimed (``Claim: BE …``); a step of one's own code ("Distance to C for D: 2.2") may
+    light its call's argument amber, as the legend says. Chapter 2 lit the
+    candidates green, then the first one wetted green and the one not hit amber, then the
+    claim amber: one colour, three meanings. Each vertex and fault once."""
+    found: dict[tuple[str, str], str] = {}
+    candidates: set[str] = set()
+    caption, judged = "", False
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        if (play.get("subcaption") or "").startswith(_CANDIDATES):
+            candidates = set(_named(caption.removeprefix(_CANDIDATES).strip().rstrip(".")))
+            judged = False
+        judged = judged or caption.startswith(_VERDICTS)
+        said = caption.removeprefix("Claim: ").replace(",", " ").replace(".", " ").split()
+        picked = said[-1] if caption and not caption.startswith("Claim:") else ""
+        claimed = said[0] if caption.startswith("Claim:") else ""
+        for _, node in (r for a in play["animations"] for r in _recorded(a)):
+            vertex = _vertex_of(node.get("name") or "", candidates)
+            if vertex is None or judged:
+                continue
+            if node.get("role") == "result":
+                found.setdefault((vertex, "green"), f"play {k} {vertex} green before a verdict")
+            elif (node.get("role") == "argument" and picked in candidates
+                  and vertex not in (picked, *claimed)):
+                found.setdefault((vertex, "amber"), f"play {k} {vertex} amber, not picked")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))

@@ -4,7 +4,7 @@ it tinted) and on the same graph mended."""
 
 from __future__ import annotations
 
-from tests.reading_rules import fills_over_labels
+from tests.reading_rules import fills_over_labels, shifting_colours
 from tests.test_tool_rules import POLYGON, _closed, _graph
 
 LABEL_M = {"name": "vertex:M", "submobjects": [{"type": "Dot"}, {"text": "M",
@@ -39,3 +39,34 @@ def test_a_label_over_the_fill_or_clear_of_it_passes():
 def test_a_fill_that_came_before_the_label_passes():
     graph = _graph([{"type": "FadeIn", "mobject": TRIANGLE}], [{"type": "FadeIn", "mobject": LABEL_M}])
     assert fills_over_labels(graph) == []
+
+
+def _marker(vertex: str, role: str, kind: str = "_MethodAnimation") -> dict:
+    return {"type": kind, "mobject": {"name": f"vertex:{vertex}", "role": role}}
+
+
+def _said(caption: str, *anims: dict) -> dict:
+    return {"animations": list(anims), "run_time": 1.0, "subcaption": caption}
+
+
+def test_a_candidate_in_a_claims_colour_before_its_time_is_found():
+    """Chapter 2's run: the candidates lit green, the first wetted green and the one not hit
+    amber, before any claim."""
+    plays = [_said("Candidates inside T: E, F", _marker("E", "result"), _marker("F", "result")),
+             _said("Water spilled at B spreads; the first candidate it wets is E",
+                   _marker("E", "result"), _marker("F", "argument")),
+             _said("Claim: BE is an inner diagonal", _marker("E", "argument")),
+             _said("✓ BE is an inner diagonal", _marker("E", "result"))]
+    assert shifting_colours({"plays": plays}) == [
+        "play 0 E green before a verdict", "play 0 F green before a verdict",
+        "play 1 F amber, not picked"]
+
+
+def test_candidates_neutral_the_pick_amber_and_green_once_judged_pass():
+    plays = [_said("Candidates inside T: E, F", _marker("E", "candidate"),
+                   _marker("F", "candidate")),
+             _said("Water spilled at B spreads; the first candidate it wets is E",
+                   _marker("E", "argument"), _marker("F", "candidate")),
+             _said("Claim: BE is an inner diagonal", _marker("E", "argument")),
+             _said("✓ BE is an inner diagonal", _marker("E", "result"))]
+    assert shifting_colours({"plays": plays}) == []

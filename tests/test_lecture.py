@@ -62,6 +62,7 @@ from tests.reading_rules import (
     replayed_beats,
     run_together_labels,
     rushed_questions,
+    shifting_colours,
     short_falls,
     small_texts,
     stale_endings,
@@ -595,6 +596,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert swept_outside_polygon(data) == [], chapter.slug
     # labels and dots over every fill: chapter 1's triangulation tinted M and G at 81.5 s
     assert fills_over_labels(data) == [], chapter.slug
+    # one legend: a candidate neutral until picked (amber), green only once judged (chapter
+    # 2 lit E and F green as candidates, E green as wetted first, F amber as not hit)
+    assert shifting_colours(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
