@@ -239,9 +239,9 @@ def tool_colour(theme: Theme, heuristic: str) -> str:
 def frame(stage: Stage, seen: Moment, analysis: Analysis) -> None:
     """The pass opens on the frame: the polygon, T and its candidates lit, said once."""
     theme = stage.theme
-    lit = [Indicate(stage.markers[c], color=theme.argument) for c in seen.candidates]
-    stage.say(seen.words(analysis.intro),
-              ([*stage.appear(), *stage.key(theme.swept, "swept", "swept")], 1.5),
+    lit = [Indicate(stage.markers[c], color=theme.candidate) for c in seen.candidates]
+    # no "swept" key yet: it comes with the first swept region (:func:`fails`)
+    stage.say(seen.words(analysis.intro), (stage.appear(), 1.5),
               (lit, 0.8), ([], analysis.freeze / 2))  # a moment to look at the polygon
 
 
@@ -253,9 +253,12 @@ def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
     colour = tool_colour(theme, wrong.heuristic)
     motion_anims, drawing = moving(stage, lambda t: tool_drawing(stage, m, t, colour),
                                    analysis.slow)
-    opening = [] if analysis.intro else [*stage.appear(),
-                                         *stage.key(theme.swept, "swept", "swept")]
-    stage.say(wrong.moving_beat.caption, ([*opening, FadeIn(drawing)], 1.5 if opening else 0.3),
+    opening = [] if analysis.intro else stage.appear()
+    # the "swept" key comes with the tool that sweeps, not before (it stood 8 s over a
+    # picture with nothing swept, chapter 2 at 41.6 s)
+    stage.say(wrong.moving_beat.caption, ([*opening, FadeIn(drawing),
+                                           *stage.key(theme.swept, "swept", "swept")],
+                                          1.5 if opening else 0.3),
               (motion_anims, analysis.slow),
               ([Indicate(stage.markers[wrong.pick], color=theme.argument)], 0.8),
               ([], analysis.freeze))  # frozen at the pick: the moment the argument is about
@@ -313,7 +316,7 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
     if right.band is not None:
         _band_moves(stage, right, analysis, first)
         witness = right.band.swept(1.0)
-        label = "swept"
+        label, covered = "swept", []
     else:
         m = right.moved
         colour = tool_colour(theme, right.heuristic)
@@ -324,9 +327,12 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
             analysis.slow)
         stage.say(right.moving_beat.caption, *out_then_in(first, 1.5), ([FadeIn(drawing)], 0.3),
                   (motion_anims, analysis.slow),
-                  ([Indicate(stage.markers[right.pick], color=theme.result)], 0.6))
+                  ([Indicate(stage.markers[right.pick], color=theme.argument)], 0.6))
         witness = m.witness()
         label = "still dry" if m.rising else "swept"
+        # the green witness covers what was swept: the blue key goes before it comes (it
+        # stayed with no blue left, chapter 2 at 145 and 210 s)
+        covered = [] if m.rising else stage.forget_key("swept")
     shaded = region(stage, witness, theme.result, 0.45, "analysis:witness",
                     "result").set_z_index(2)
     u, v = right.claim.labels
@@ -335,10 +341,10 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
     tick = tag(typeset.text("✓", font=theme.font, size=48, colour=theme.result), "result",
                "analysis:tick").set_z_index(4)
     beside(stage, tick, claim, witness)
-    stage.say(right.words(analysis.holds),
-              ([FadeIn(shaded), Create(claim), FadeIn(halo(stage, tick)), FadeIn(tick),
-                *stage.key(theme.result, f"{label}: in P", "witness")], 1.5),
-              ([], analysis.freeze))
+    shown = [FadeIn(shaded), Create(claim), FadeIn(halo(stage, tick)), FadeIn(tick),
+             *stage.key(theme.result, f"{label}: in P", "witness")]
+    gone = [(covered, 0.4)] if covered else []  # a play of its own: no text over a going one
+    stage.say(right.words(analysis.holds), *gone, (shown, 1.5), ([], analysis.freeze))
 
 
 def out_then_in(anims: Sequence[Animation], alone: float) -> list[tuple[list, float]]:

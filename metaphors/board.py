@@ -46,6 +46,12 @@ MIN_PLAY = 0.1
 #: z-index of the words while they change: above everything
 WORDS_Z = 10
 
+#: z-index of the vertex markers (dots and labels): over every fill and tool a performer
+#: draws after them (tints −1, the clock hand and the sweep line 1, the dial 2), which at
+#: their own z-index would tint a label (chapter 1's M and G under the triangulation) or
+#: run through it (chapter 2's clock hand through F)
+LABEL_Z = 5
+
 #: what a play takes: an animation, a mobject's ``.animate`` (its builder, or the mobject)
 Playable: TypeAlias = Animation | Mobject | _AnimationBuilder
 
@@ -74,7 +80,7 @@ class Board:
         self.outline = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
                            "polygon")
         self.markers: dict[str, Mobject] = {
-            label: tag(m, "idle", f"vertex:{label}")
+            label: tag(m, "idle", f"vertex:{label}").set_z_index(LABEL_Z)
             for label, m in measured_markers(self.polygon, self.holes, self.frame, theme)
         }
         self.where: dict[str, tuple[float, ...]] = {

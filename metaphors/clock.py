@@ -99,8 +99,9 @@ def clock(board: Board, beat: Clock) -> None:
                             ahead=_wedge(centre, axis.get_end(), sign * (last - turned)))
         lit += kept
         mark = marks[label]
-        colour = theme.result if k == 0 else theme.argument
-        anims.append(tag(mark, "result" if k == 0 else "argument").animate.set_color(colour))
+        # the first passed is the pick, the claim to be (amber); the others stay candidates
+        role = "argument" if k == 0 else "candidate"
+        anims.append(tag(mark, role).animate.set_color(theme.role_colour(role)))
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
         picked[0] = True
     hand.clear_updaters()
@@ -182,5 +183,6 @@ def _turn(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
 
 
 READS: Mapping[str, Reading] = {"first_hit_rotating": read_step(
-    Clock, "The clock hand turns; the first candidate it passes is {result}", _turn)}
+    Clock, "The clock hand turns; the first candidate it passes is {result}", _turn,
+    picks=True)}
 PERFORMS: Performances = performs(act(Clock, clock))

@@ -95,8 +95,11 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
         under, over, said = metaphor_parts(figure.heuristic, figure.polygon or polygon_spec,
                                            frame, theme, _bounds()) if polygon.n >= 4 else (
             [], [], "a triangle: no diagonal to find")
-        label = figure_caption(BOX, theme, (said, theme.ink))
-        return [shape, *under, label, vertices, *over]
+        # no words under a tool stopped at its pick: the card's bullets say what it picks,
+        # one at a time, and "the water from B wets D first" below the figure read as a
+        # subtitle beside them and gave the pick away before its bullet (chapter 2 at 16 s)
+        label = [] if over else [figure_caption(BOX, theme, (said, theme.ink))]
+        return [shape, *under, *label, vertices, *over]
     drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
              "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
     parts = drawn(figure, polygon, frame, theme)
@@ -171,8 +174,8 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
                           stroke_width=theme.thin_stroke, fill_color=theme.called,
                           fill_opacity=0.2), "called", "figure:T")
     inside = [v.index for v in candidates_in_triangle(polygon, t)]
-    dots = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.argument),
-                "argument", "figure:candidate") for k in inside]
+    dots = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.candidate),
+                "candidate", "figure:candidate") for k in inside]
     names = ", ".join(polygon.labels[k] for k in inside) or "none"
     words = f"T = {''.join(polygon.labels[k] for k in corners)}; candidates in T: {names}"
     # the words the card says first, on the picture: B convex, and a reflex vertex

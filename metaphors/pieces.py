@@ -55,11 +55,12 @@ def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     pieces = walk.result_refs(ret)
     entered = {target_of(e): state_of(e) for e in walk.log.events[ret.seq:]
                if e.kind == "enter" and e.target in pieces}
-    yield walk.call_beat(Split, "Split along the diagonal into two smaller polygons", call, ret,
-                         pieces=tuple(pieces),
-                         parent=walk.ref(call, "piece"),
-                         points=tuple(points_of(entered[k]["points"]) for k in pieces if k in entered),
-                         labels=tuple(tuple(entered[k]["labels"]) for k in pieces if k in entered))
+    # the split closes the claim of the diagonal it splits along (one step at a time)
+    yield walk.closing_claim(walk.call_beat(
+        Split, "Split along the diagonal into two smaller polygons", call, ret,
+        pieces=tuple(pieces), parent=walk.ref(call, "piece"),
+        points=tuple(points_of(entered[k]["points"]) for k in pieces if k in entered),
+        labels=tuple(tuple(entered[k]["labels"]) for k in pieces if k in entered)))
 
 
 def _tint_colour(board: Board, labels: Sequence[str], avoid: set[str]) -> str:

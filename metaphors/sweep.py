@@ -225,10 +225,12 @@ def light(board: Board, label: str, first: bool, axis: Line,
     crosses a text. Returns the new objects (to fade with the tool) and the animations.
     """
     theme = board.theme
-    colour = theme.result if first else theme.argument
+    # the first touched is the pick, the claim to be (amber); the others stay candidates
+    role = "argument" if first else "candidate"
+    colour = theme.role_colour(role)
     at = board.vertex(label)
     ring = tag(Circle(radius=0.13, color=colour, stroke_width=theme.stroke).move_to(at),
-               "result" if first else "argument", f"lit:{label}")
+               role, f"lit:{label}")
     kept = [ring]
     anims: list[Animation] = [FadeIn(ring, scale=1.6), Indicate(board.markers[label], color=colour)]
     piece = _astray_at(board, axis, clip, at) if first else None
@@ -378,5 +380,6 @@ def _move(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
 
 
 READS: Mapping[str, Reading] = {"first_hit_sweeping": read_step(
-    Sweep, "The line sweeps across T; the first candidate it touches is {result}", _move)}
+    Sweep, "The line sweeps across T; the first candidate it touches is {result}", _move,
+    picks=True)}
 PERFORMS: Performances = performs(act(Sweep, sweep))

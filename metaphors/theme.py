@@ -16,6 +16,8 @@ result        green       what a call gives; a correct claim; a triangulation's 
 rejected      red         fails: a wrong claim, its part outside P, the crossed edge,
                           a vertex inside a triangle that is not an ear — never a kind
 idle          grey        everything not in the current call
+candidate     pink        a vertex in T a heuristic may pick: neutral, neither claimed
+                          nor judged (the one it picks turns amber, the claim to be)
 split         cyan        a split vertex of the monotone sweep (a kind, not a verdict)
 merge         magenta     a merge vertex of the monotone sweep (a kind, not a verdict)
 stack         yellow      the monotone stack: the chain waiting to be triangulated
@@ -58,6 +60,9 @@ class Theme:
     result: str = "#4cc46b"
     rejected: str = "#ef4b4b"
     idle: str = "#8a93a3"
+    #: the candidates in T: one neutral colour, never a verdict's (amber, green and red are
+    #: the claim's, chapter 2 lit them in all three)
+    candidate: str = "#f59fd6"
     split: str = "#3ad6e0"  # a split vertex: a kind of vertex, never a verdict's red or green
     merge: str = "#f06fe0"  # a merge vertex: likewise
     stack: str = "#ffe45c"  # the monotone stack's waiting chain

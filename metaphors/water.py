@@ -93,16 +93,25 @@ def _rise(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
 TEXT_CLEARANCE = 0.35
 
 
+def _triangle(board: Board, center: Point) -> shapely.Polygon:
+    """T on screen: B (where the water is spilled) and its two neighbours."""
+    points = board.polygon.points
+    k = points.index(tuple(center))
+    return shapely.Polygon([tuple(board.at(points[j])[:2])
+                            for j in (k - 1, k, (k + 1) % len(points))])
+
+
 def _disk(board: Board, center: Point, radius: float) -> MPolygon:
-    """The water's disk, cut where the picture's part of the screen ends: grown past the
-    polygon it would spill under the subtitle, the title or the panel (Scaling's second
-    radius reaches past B's side). Cut at the screen's edge, not the box's: a cut at B would
-    look like a wall."""
+    """The water's disk inside T, as the card draws it: the water is spilled to find T's
+    candidates, and the whole disk ran off the screen's left edge, was cut flat under the
+    title and lay over B's and E's labels (chapter 2 at 32.6 s). Also cut where the
+    picture's part of the screen ends (T reaches no further, but a polygon handed to the
+    lecture may be drawn larger)."""
     x, y = board.at(center)[:2]
     right = board.box.x + board.box.width / 2
     disk = shapely.Point(x, y).buffer(max(board.length(radius), 1e-3), 64).intersection(
         shapely.box(-config.frame_width / 2, SUBTITLE_Y + TEXT_CLEARANCE, right,
-                    TITLE_Y - TEXT_CLEARANCE))
+                    TITLE_Y - TEXT_CLEARANCE)).intersection(_triangle(board, center))
     corners = [(px, py, 0.0) for px, py in list(disk.exterior.coords)[:-1]] if isinstance(
         disk, shapely.Polygon) and not disk.is_empty else [(x, y, 0.0)] * 3
     return tag(MPolygon(*corners, color=board.theme.water, stroke_width=board.theme.thin_stroke,
@@ -116,7 +125,8 @@ def water(board: Board, beat: Water) -> None:
     board.play(beat, FadeIn(disk), run_time=0.5)
     radius = 0.0
     for k, (state, reached) in enumerate(hits(states[1:])):
-        colour = board.theme.result if k == 0 else board.theme.argument
+        # the first wetted is the pick, the claim to be (amber); the others stay candidates
+        colour = board.theme.argument if k == 0 else board.theme.candidate
         board.play(beat, _grow(board, disk, state.center, radius, state.radius),
                    Indicate(board.markers[reached], color=colour), run_time=1.2)
         radius = state.radius
@@ -203,9 +213,10 @@ def flood(board: Board, beat: Flood) -> None:
     for state, reached in hits(states[1:]):
         drowned = board.markers[reached]
         is_last = state is states[-1]
-        # going under is no failure: amber, as the clock's and the sweep's later candidates
-        # (red means "fails", metaphors.theme's legend); the last one, the pick, green
-        colour = board.theme.result if is_last else board.theme.argument
+        # going under is no failure: a candidate still, as the clock's and the sweep's later
+        # ones (red means "fails", metaphors.theme's legend); the last one, the pick, amber:
+        # the claim to be
+        colour = board.theme.argument if is_last else board.theme.candidate
 
         def wet(alpha: float, start: float = level, end: float = state.level):
             return inner.intersection(_strip(a, c, towards, start + (end - start) * alpha))
@@ -234,11 +245,13 @@ def _strip(a: Point, c: Point, towards: Point, level: float) -> shapely.Polygon:
 
 READS: Mapping[str, Reading] = {
     "nearest_to": read_step(
-        Water, "Water spilled at B spreads; the first candidate it wets is {result}", _spread),
+        Water, "Water spilled at B spreads; the first candidate it wets is {result}", _spread,
+        picks=True),
     "nearest_visible": read_step(
-        WalledWater, "Water that respects the walls reaches {result} first", _walled),
+        WalledWater, "Water that respects the walls reaches {result} first", _walled,
+        picks=True),
     "last_dry": read_step(
-        Flood, "Water rises from the shore AC; the last dry candidate is {result}", _rise),
+        Flood, "Water rises from the shore AC; the last dry candidate is {result}", _rise, picks=True),
 }
 PERFORMS: Performances = performs(act(Water, water), act(WalledWater, walled_water),
                                   act(Flood, flood))

@@ -52,7 +52,7 @@ def readable(caption: str, seconds: float) -> bool:
 def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: str,
                kept: Sequence[bool] = (), numbers: Sequence[int] = (),
                names: Mapping[int, str] = MappingProxyType({}),
-               order: Sequence[str] = ()) -> list[Beat]:
+               order: Sequence[str] = (), total: int | None = None) -> list[Beat]:
     """The beats with the captions of repeated claims replaced by summaries.
 
     ``claims[k]`` is how many claims were counted when beat ``k`` was made (beat ``k``
@@ -66,7 +66,9 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
     are all ``noun``s; prune and search counts its diagonals too, not as slices).
     ``names[c]``: the label on screen of claim ``c`` (a vertex's letter): a summary whose
     claims all have one names them by it (:func:`_named_summary`, ``order`` the labels'
-    order a range means), for the picture never shows their numbers.
+    order a range means), for the picture never shows their numbers. ``total``: the claims
+    of the whole run (default ``claims[-1]``), the count at which the run's end is kept (a
+    beat closing the last claim, counted with it, is not the end).
 
     A summary covers one unbroken run of fast beats (:func:`_fast_runs`): a key step ends
     it, and the fast beats after it get a summary of their own that names only the claims
@@ -89,7 +91,7 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
         return []
     out = list(beats)
     said = list(numbers) or list(claims)
-    for run in _fast_runs(beats, claims, full, kept):
+    for run in _fast_runs(beats, claims, full, kept, total):
         if len(run) < 2:
             continue  # one beat: its own caption says more than a summary of it
         first, last = said[run[0]] + 1, said[run[-1]] + 1
@@ -102,11 +104,11 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
 
 
 def _fast_runs(beats: Sequence[Beat], claims: Sequence[int], full: int,
-               kept: Sequence[bool]) -> list[list[int]]:
+               kept: Sequence[bool], total: int | None = None) -> list[list[int]]:
     """The indices of the beats that go under summaries, in unbroken runs: consecutive fast
     beats of at most :data:`SUMMARY_CLAIMS` claims, counted from the run's first. A beat kept
     as it is (a key step, the run's end, a failing verdict and after) ends a run."""
-    last = claims[-1]
+    last = claims[-1] if total is None else total
     keep = list(kept) or [False] * len(beats)
     runs: list[list[int]] = []
     failed, open_run = False, False

@@ -197,6 +197,20 @@ def call_roles(call: Event, ret: Event | None) -> dict[str, str]:
     return roles
 
 
+def pick_roles(call: Event, ret: Event) -> dict[str, str]:
+    """A heuristic's step that picks one of T's candidates: its first input (B, or T) is
+    called, the candidates stay candidates (neutral), and what it picks is amber, the claim to
+    be, until the verdict makes it green or red: one legend for the whole chapter (chapter 2
+    lit the candidates amber, the pick green and the candidates not hit amber, then the
+    claim amber)."""
+    found = [k for v in (call.args or {}).values() for k in refs(v) if not is_polygon_key(k)]
+    roles = {k: "candidate" for k in refs((call.args or {}).get("candidates"))}
+    if found and found[0] not in roles:
+        roles[found[0]] = "called"
+    roles.update({k: "argument" for k in refs(ret.result)})
+    return roles
+
+
 # --- the walk ------------------------------------------------------------------------------------
 
 
@@ -344,6 +358,20 @@ class Walk:
             self.kept.add(id(beat))
         return beat
 
+    def closing_claim(self, beat: Beat) -> Beat:
+        """``beat`` (made after its claim's verdict: the split along the diagonal verified)
+        as a beat of that claim, not of the next: its pace and its summary are the claim's.
+        Counted with the next, chapter 1's split along diagonal 9 came under "Diagonal 10:
+        the same steps, faster" while 9's ✓ was still on screen."""
+        if self.claims == 0:
+            return beat
+        claims = self.claims - 1
+        closed = beat if id(beat) in self.kept else replace(
+            beat, pace=1.0 if claims < self.pacing.full else self.pacing.fast)
+        self.counted[id(closed)] = claims
+        self.counted_of[id(closed)] = {**self.of_noun, self.noun: self.of_noun[self.noun] - 1}
+        return closed
+
     def call_beat(self, beat_type: type[Beat], caption: str, call: Event, ret: Event, /,
                   key_step: bool = False, **fields: Any) -> Beat:
         """The beat of a returned call: its call line, and the call's roles unless ``fields``
@@ -470,7 +498,7 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
         beats.extend(_boxed(walk, made) if walk.black_box and walk.heuristic_polygon else made)
         walk.track(event)
     return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
-                      walk.noun, kept=[id(b) in walk.kept for b in beats],
+                      walk.noun, total=walk.claims, kept=[id(b) in walk.kept for b in beats],
                       numbers=[walk.counted_of.get(id(b), {}).get(walk.noun, 0) for b in beats],
                       names=walk.named.get(walk.noun, {}), order=tuple(walk.root_polygon()[0]))
 
@@ -551,7 +579,10 @@ def _read_candidates(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     found = [show(v) for v in result_list(ret)]
     caption = (f"Candidates inside T: {', '.join(found)}" if found
                else f"No vertex inside T: {_outer_corners(walk, call)} is an inner diagonal")
-    yield walk.call_beat(Candidates, caption, call, ret, candidates=tuple(found))
+    # neutral: a candidate is neither claimed nor judged (green is a verdict's)
+    yield walk.call_beat(Candidates, caption, call, ret, candidates=tuple(found),
+                         roles={**call_roles(call, None),
+                                **{k: "candidate" for k in refs(ret.result)}})
 
 
 def _outer_corners(walk: Walk, call: Event) -> str:
@@ -610,14 +641,19 @@ def _claim_polygon(walk: Walk) -> Polygon | None:
 
 
 def read_step(kind: type[Beat], caption: str,
-              fields: Callable[[Walk, Event, Event], dict[str, Any]]) -> Reading:
+              fields: Callable[[Walk, Event, Event], dict[str, Any]], *,
+              picks: bool = False) -> Reading:
     """The reading of a metaphor's step: one beat of ``kind``, its ``caption`` naming the
-    call's result (``{result}``), its own fields from ``fields(walk, call, ret)``."""
+    call's result (``{result}``), its own fields from ``fields(walk, call, ret)``. ``picks``:
+    the step picks one of T's candidates, in their roles (:func:`pick_roles`)."""
 
     def read(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         result = show(ret.result)
+        made = fields(walk, call, ret)
+        if picks:
+            made["roles"] = pick_roles(call, ret)
         yield walk.call_beat(kind, caption.format(result=result), call, ret, result=result,
-                             **fields(walk, call, ret))
+                             **made)
 
     return read
 

@@ -2612,3 +2612,104 @@ def placeholders_as_labels(data: dict) -> list[str]:
             found.append(f"play {k}: {name}")
             said.add(name)
     return found
+# --- a fill never tints a vertex label: labels and dots are drawn over fills -----------------
+
+
+def _label_layers(marker: dict) -> list[tuple[tuple[float, float, float, float], float]]:
+    """(box, z-index) of each label text a vertex's marker shows (its own children)."""
+    return [(tuple(part["box"]), float(part.get("z", marker.get("z", 0))))
+            for part in marker.get("submobjects", ())
+            if part.get("box") and (part.get("text") or "").strip()]
+
+
+def _fill_shapes(node: dict) -> Iterator[tuple[object, float]]:
+    """(region, z-index) of each filled part of a node (not its texts)."""
+    from shapely.geometry import Polygon
+
+    for part in mobject_nodes(node):
+        if (part.get("fill_opacity") or 0) <= 0 or not part.get("points") or "text" in part:
+            continue
+        for ring in _paths(part):
+            shape = Polygon(ring)
+            if shape.is_valid and shape.area > 0:
+                yield shape, float(part.get("z", 0))
+
+
+def fills_over_labels(data: dict) -> list[str]:
+    """The fills drawn over a vertex label they cover, as ``"play 93 triangulation over M"``:
+    manim draws by z-index, then in the order mobjects came, so a fill that comes after a
+    label (a whole triangulation's triangles) at its z-index or above tints it (chapter 1's
+    M and G at 81.5 s). The labels as the plays leave them; a polygon coming in begins a new
+    picture. Each label and fill once, where it first covers."""
+    from shapely.geometry import box as area
+
+    labels: dict[str, tuple[list, int]] = {}  # vertex: (its label layers, when it came)
+    found: dict[tuple[str, str], str] = {}
+    came = 0
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            top = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and top.get("name") in _POLYGONS:
+                labels = {}
+            for kind, node in _recorded(anim):
+                name = node.get("name") or ""
+                came += 1
+                if kind in OUTGOING:
+                    labels.pop(name, None)
+                elif name.startswith("vertex:"):
+                    labels[name] = (_label_layers(node), labels.get(name, (None, came))[1])
+                elif kind in INCOMING:
+                    for shape, z in _fill_shapes(node):
+                        for vertex, (layers, when) in labels.items():
+                            if any((z, came) > (lz, when)
+                                   and shape.intersection(area(*box)).area > 1e-4
+                                   for box, lz in layers):
+                                found.setdefault((vertex, name), f"play {k} {name} over "
+                                                 f"{vertex.removeprefix('vertex:')}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- one legend: a candidate is neutral until it is picked, green only once judged ------------
+
+#: the caption that names a run's candidates, and the verdicts' first marks
+_CANDIDATES, _VERDICTS = "Candidates inside T:", ("✓", "✗")
+
+
+def _vertex_of(name: str, candidates: set[str]) -> str | None:
+    """The candidate a marker shows (the picture's ``vertex:E``, the panel's ``panel:E``)."""
+    vertex = name.partition(":")[2] if name.startswith(("vertex:", "panel:")) else ""
+    return vertex if vertex in candidates else None
+
+
+def shifting_colours(data: dict) -> list[str]:
+    """The candidates drawn in a claim's or a verdict's colour before their time, as ``"play
+    40 E green before a verdict"`` or ``"play 41 F amber, not picked"``: after a caption naming
+    T's candidates (:data:`_CANDIDATES`) and until the verdict, a candidate is green
+    (``result``) only once a ✓ judges it, and, under a caption naming the one picked (its
+    last word a candidate: a metaphor's step), amber (``argument``) only as that one or as
+    claimed (``Claim: BE …``); a step of one's own code ("Distance to C for D: 2.2") may
+    light its call's argument amber, as the legend says. Chapter 2 lit the
+    candidates green, then the first one wetted green and the one not hit amber, then the
+    claim amber: one colour, three meanings. Each vertex and fault once."""
+    found: dict[tuple[str, str], str] = {}
+    candidates: set[str] = set()
+    caption, judged = "", False
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        if (play.get("subcaption") or "").startswith(_CANDIDATES):
+            candidates = set(_named(caption.removeprefix(_CANDIDATES).strip().rstrip(".")))
+            judged = False
+        judged = judged or caption.startswith(_VERDICTS)
+        said = caption.removeprefix("Claim: ").replace(",", " ").replace(".", " ").split()
+        picked = said[-1] if caption and not caption.startswith("Claim:") else ""
+        claimed = said[0] if caption.startswith("Claim:") else ""
+        for _, node in (r for a in play["animations"] for r in _recorded(a)):
+            vertex = _vertex_of(node.get("name") or "", candidates)
+            if vertex is None or judged:
+                continue
+            if node.get("role") == "result":
+                found.setdefault((vertex, "green"), f"play {k} {vertex} green before a verdict")
+            elif (node.get("role") == "argument" and picked in candidates
+                  and vertex not in (picked, *claimed)):
+                found.setdefault((vertex, "amber"), f"play {k} {vertex} amber, not picked")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))

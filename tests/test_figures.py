@@ -94,8 +94,16 @@ def test_a_metaphor_is_drawn_stopped_at_its_pick_without_the_red(heuristic, colo
     from metaphors.theme import THEME
 
     p = read_polygon("counterexample")
+    from metaphors.drawing import Frame
+    from metaphors.figure_metaphors import metaphor_parts
+    from metaphors.figures import FIGURE_CENTER, FIGURE_HEIGHT, FIGURE_WIDTH
+
     drawn = figure_mobjects(Figure("metaphor", "counterexample", heuristic=heuristic), "x")
-    assert label(drawn) == said
+    # the words are the bullets' (one at a time), not a line under the figure beside them
+    assert not named(drawn, "figure:label")
+    frame = Frame(read_polygon("counterexample").points, FIGURE_CENTER, FIGURE_WIDTH,
+                  FIGURE_HEIGHT)
+    assert metaphor_parts(heuristic, "counterexample", frame, THEME)[2] == said
     (tool,) = named(drawn, "figure:tool")
     parts = {m.name: m for m in tool.submobjects}
     assert parts["swept"].submobjects  # a region, not the empty placeholder

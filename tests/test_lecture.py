@@ -41,6 +41,7 @@ from tests.reading_rules import (
     crowded_verdicts,
     crowded_vertex_labels,
     far_verdicts,
+    fills_over_labels,
     fleeting_kind_words,
     flickering_counts,
     hidden_failures,
@@ -62,6 +63,7 @@ from tests.reading_rules import (
     replayed_beats,
     run_together_labels,
     rushed_questions,
+    shifting_colours,
     short_falls,
     small_texts,
     stale_endings,
@@ -596,6 +598,11 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # a swept region's part outside P is shown red, or not at all: chapter 2's cards shaded
     # it in the swept blue (1.05, 0.84 and 1.03 outside P)
     assert swept_outside_polygon(data) == [], chapter.slug
+    # labels and dots over every fill: chapter 1's triangulation tinted M and G at 81.5 s
+    assert fills_over_labels(data) == [], chapter.slug
+    # one legend: a candidate neutral until picked (amber), green only once judged (chapter
+    # 2 lit E and F green as candidates, E green as wetted first, F amber as not hit)
+    assert shifting_colours(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():

@@ -130,6 +130,8 @@ def mobject_graph(mobject: Mobject) -> dict[str, Any]:
     else:
         colour = mobject.__dict__.get("color")
         node["color"] = colour.to_hex() if colour is not None and hasattr(colour, "to_hex") else None
+    if mobject.z_index:  # drawn above (or below) what came later: the drawing order
+        node["z"] = _number(mobject.z_index)
     text = _text_of(mobject)
     if text is not None:
         node["text"] = text
