@@ -331,9 +331,10 @@ class LectureScene(TraceScene):
         cue = captions.show(exercise.question, 0.8)
         mark_step(self, exercise.question, kind="question")
         self.play(*[FadeIn(m) for m in picture], run_time=0.8, **cue)
-        clock, running = countdown(think, COUNTDOWN_AT, self.theme)
+        clock, seconds = countdown(think, COUNTDOWN_AT, self.theme)
         self.add(clock)
-        self.play(running)
+        for second in seconds:
+            self.play(second)
         self.remove(clock)
         answer = f"{exercise.answer}: {exercise.reason}"
         cue = captions.show(answer, 1.2)

@@ -2395,3 +2395,48 @@ def far_verdicts(data: dict) -> list[str]:
                 if far > FARTHEST_MARK:
                     found.append(f"play {k} {node['name']} {far:.2f} from its claim")
     return found
+
+
+# --- the exercises' countdown: one number a second ----------------------------------------------
+
+#: one frame at the lecture's lowest quality (15 fps): how far a number's time may be off 1 s
+ONE_FRAME = 1 / 15
+
+
+def _countdown_number(play: dict) -> str | None:
+    """The number the countdown shows as this play starts (None: no countdown in it)."""
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if node.get("name") == "countdown":
+            return next((n["text"] for n in mobject_nodes(node) if n.get("text")), None)
+    return None
+
+
+def uneven_countdowns(data: dict) -> list[str]:
+    """The countdowns whose numbers are not each up for one second (± :data:`ONE_FRAME`) in
+    order down to 1, as ``"play 8: 15 up 15.00 s"``: one eased play for the whole wait kept
+    "15" and "1" up for 3.7 s each and rushed the others by. A number's time is the run time
+    of the plays it is shown in (the graph cannot see a rate function, so each second is a
+    play of its own)."""
+    found = []
+    numbers: list[tuple[int, str, float]] = []  # (first play, number, seconds up), this countdown
+
+    def check() -> None:
+        expected = [str(k) for k in range(len(numbers), 0, -1)]
+        if numbers and [n for _, n, _ in numbers] != expected:
+            found.append(f"play {numbers[0][0]}: counts {', '.join(n for _, n, _ in numbers)}")
+        found.extend(f"play {k}: {n} up {t:.2f} s" for k, n, t in numbers
+                     if abs(t - 1.0) > ONE_FRAME)
+        numbers.clear()
+
+    for k, play in enumerate(data["plays"]):
+        number = _countdown_number(play)
+        if number is None:
+            check()
+        elif numbers and numbers[-1][1] == number:
+            first, _, up = numbers[-1]
+            numbers[-1] = (first, number, up + play["run_time"])
+        else:
+            numbers.append((k, number, play["run_time"]))
+    check()
+    return found

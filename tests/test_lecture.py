@@ -70,6 +70,7 @@ from tests.reading_rules import (
     swept_outside_polygon,
     tails_beside_labels,
     ticks_outside,
+    uneven_countdowns,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
@@ -520,6 +521,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert unspoken_words(data) == [], chapter.slug
     # issue 22 item 6: time to think, and the answer beside the picture, not over it
     assert rushed_questions(data) == [], chapter.slug
+    # and the countdown ticks once a second, each number up 1 s (it was eased: 15 and 1 stayed
+    # 3.7 s each, the rest rushed by)
+    assert uneven_countdowns(data) == [], chapter.slug
     assert answers_over_pictures(data) == [], chapter.slug
     # issue 22 items 5 and 6: an exercise's polygon has room, its labels clear of each other
     # and of the edges, as drawn
