@@ -11,6 +11,7 @@ joins them.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 
 from manim import (
@@ -26,6 +27,7 @@ from manim import (
     Flash,
     Line,
     VGroup,
+    VMobject,
     Write,
 )
 
@@ -42,7 +44,7 @@ from metaphors.figures import Figure, figure_mobjects
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
-from metaphors.stills import still_mobjects
+from metaphors.stills import MARKERS_AT, answer_front, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
@@ -64,6 +66,12 @@ FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 QUIZ_BOX = ((-2.7, -0.1), 7.4, 5.6)
 ANSWER_AT, ANSWER_WIDTH = (4.25, -0.3, 0), 4.6
 COUNTDOWN_AT = (4.25, 1.6, 0)
+#: the space before a number (a no-break space there keeps it on its word's line)
+_NUMBER = re.compile(r" (?=\d)")
+#: the colour of each pick's front, as its metaphor draws it (:mod:`metaphors.theme`)
+_FRONT_COLOUR = {"scaling": "water", "scaling-correct": "water", "rotation": "hand",
+                 "rotation-ccw": "hand", "rotation-correct": "hand", "translation": "sweep",
+                 "translation-correct": "sweep"}
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
 
 
@@ -339,23 +347,23 @@ class LectureScene(TraceScene):
         answer = f"{exercise.answer}: {exercise.reason}"
         cue = captions.show(answer, 1.2)
         mark_step(self, answer, kind="answer")
-        self.play(*self.answer_animations(exercise), run_time=1.2, **cue)
+        self.play(*self.answer_animations(exercise, picture[MARKERS_AT]), run_time=1.2, **cue)
         self.wait(3.0)
 
-    def answer_animations(self, exercise: Exercise) -> list:
+    def answer_animations(self, exercise: Exercise, markers: VGroup) -> list:
+        """The answer's text beside the picture, and on the picture what it says: a pick's
+        vertex in green (its dot and its label, ``markers`` the picture's) with the
+        metaphor's front reaching it; each diagonal named, green or red, a crossed edge red."""
         theme, polygon = self.theme, exercise.polygon
         frame = Frame(polygon.points, *QUIZ_BOX)
-        text = tag(typeset.wrapped(f"Answer: {exercise.answer} — {exercise.reason}",
-                                   size=theme.caption_size, colour=theme.result,
+        # a number keeps to the word before it: "25.5" stood alone on the answer's last line
+        said = _NUMBER.sub("\u00a0", f"Answer: {exercise.answer} — {exercise.reason}")
+        text = tag(typeset.wrapped(said, size=theme.caption_size, colour=theme.result,
                                    font=theme.font, width=ANSWER_WIDTH), "result", "answer")
         text.move_to(ANSWER_AT)
         anims: list[Animation] = [FadeIn(text)]
         if exercise.kind == "pick":
-            label = exercise.answer.strip().split()[0]
-            if label in polygon.labels:
-                at = frame.to_scene(polygon.points[polygon.label_of(label)])
-                dot = tag(Dot(at, radius=0.13, color=theme.result), "result", "pick")
-                anims.append(FadeIn(dot, scale=2.5))
+            anims += self._picked(exercise, frame, markers)
         for i, j in exercise.options or self._claimed(exercise):
             verdict = is_inner_diagonal(polygon, i, j)
             colour = theme.result if verdict.ok else theme.rejected
@@ -365,6 +373,20 @@ class LectureScene(TraceScene):
                                     "result" if verdict.ok else "rejected", "answer:diagonal")))
             anims += self._crossing(verdict, polygon, frame)
         return anims
+
+    def _picked(self, exercise: Exercise, frame: Frame, markers: VGroup) -> list[Animation]:
+        """The pick in green, label and all (its label stayed amber beside a green dot), and
+        the front that reached it first, in its metaphor's colour."""
+        theme, polygon = self.theme, exercise.polygon
+        pick = polygon.label_of(exercise.answer)
+        at = frame.to_scene(polygon.points[pick])
+        dot = tag(Dot(at, radius=0.13, color=theme.result), "result", "pick")
+        colour = getattr(theme, _FRONT_COLOUR[exercise.heuristic or ""])
+        fronts = [tag(VMobject(stroke_color=colour, stroke_width=theme.stroke)
+                      .set_points_as_corners(frame.many(line)), None, "answer:front")
+                  for line in answer_front(exercise)]
+        return [*[Create(f) for f in fronts], FadeIn(dot, scale=2.5),
+                tag(markers[pick], "result").animate.set_color(theme.result)]
 
     def _crossing(self, verdict, polygon, frame: Frame) -> list:
         """A rejected diagonal's crossed edge, thick in red (the answer's text names it), and a

@@ -4,9 +4,10 @@ Three kinds, mixed in turn:
 
 ``pick``
     "Which vertex does Rotation pick?" — the answer is the label of D from
-    :func:`geometry.diagonals.find_diagonal`; the reason quotes the metaphor's own numbers
-    computed from the run's log (the water's radius, the clock hand's angle, the sweep's
-    offset: :mod:`story.reach`).
+    :func:`geometry.diagonals.find_diagonal`; the reason tells the order in which the
+    metaphor reaches the candidates, computed from the run's log (:mod:`story.reach`), with
+    the clock hand's angles (a length, in the polygon's units, would mean nothing on screen);
+    the answer draws the metaphor's front as it reaches the pick (:func:`front`).
 ``claim``
     "Is the claim of Scaling an inner diagonal?" (a wrong heuristic) — yes or no from
     :func:`geometry.check.is_inner_diagonal`, with its reason. Yes and no alternate in a
@@ -56,7 +57,8 @@ from story.refs import call_of, state_of, target_of
 from story.registry import heuristics, spoken, wrong
 from story.words import why_not_inner
 
-__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "front_gap", "make_exercises"]
+__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "front", "front_gap",
+           "make_exercises"]
 
 KINDS = ("pick", "claim", "inner")
 #: (generator, smallest n, largest n): shapes whose T often holds several candidates.
@@ -82,22 +84,21 @@ MIN_CLEARANCE = 0.045
 #: screen, its labels crowded (the lecture polygon's rule, issue 22 item 5)
 MIN_ANGLE = 15.0
 
-#: each rule's story as a reason tells it: its lead, what its number means at the pick (the
-#: ``{v}`` in it), and the number's form; the other candidates come after it as "E at 3.6"
-_STORY = {
-    "scaling": ("the water spilled at B reaches", "{v} from B", "{:.1f}"),
-    "rotation": ("the clock hand at B, set to A, passes", "after turning {v}", "{:.1f}°"),
-    "rotation-ccw": ("the clock hand at B, set to C, turning back, passes",
-                     "after turning {v}", "{:.1f}°"),
-    "rotation-correct": ("the clock hand at C, set to B, passes", "after turning {v}",
-                         "{:.1f}°"),
-    "translation": ("the vertical line swept rightwards from B reaches", "{v} right of B",
-                    "{:.1f}"),
-    "translation-correct": ("the line parallel to AC, swept from B, reaches",
-                            "{v} from B", "{:.1f}"),
-    "scaling-correct": ("the water rising from the shore AC wets", "at height {v} above AC",
-                        "{:.1f}"),
+#: each rule's story as a reason tells it: its lead, and what its number means at the pick
+#: (the ``{v}`` in it, an angle) or None: a length is left unsaid (the class cannot measure it
+#: on screen, and "15.1 from B" in the polygon's units meant nothing to it); the other
+#: candidates come after the pick as "E at 36.0°", or by name alone
+_STORY: dict[str, tuple[str, str | None]] = {
+    "scaling": ("the water spilled at B reaches", None),
+    "rotation": ("the clock hand at B, set to A, passes", "after turning {v}"),
+    "rotation-ccw": ("the clock hand at B, set to C, turning back, passes", "after turning {v}"),
+    "rotation-correct": ("the clock hand at C, set to B, passes", "after turning {v}"),
+    "translation": ("the vertical line swept rightwards from B reaches", None),
+    "translation-correct": ("the line parallel to AC, swept from B, reaches", None),
+    "scaling-correct": ("the water rising from the shore AC wets", None),
 }
+#: how a value prints: an angle in degrees to a tenth; two values printed alike are a tie
+_PRINTED = "{:.1f}"
 #: Heuristics that pick a candidate of T by a rule a student can apply by hand: those whose
 #: metaphor's story is told above, in the registry's order.
 PICKABLE = tuple(name for name in heuristics() if name in _STORY)
@@ -294,23 +295,24 @@ def _reached(polygon: Polygon, heuristic: str) -> tuple[int, list[tuple[str, flo
 
 
 def _pick_reason(heuristic: str, steps: list[tuple[str, float]]) -> str | None:
-    """"the water spilled at B reaches D first: 2.8 from B, before E at 3.6" (each number
-    said with what it measures); None when the deciding two values would print alike (the
-    tie rule would be the real reason)."""
-    lead, measure, fmt = _STORY[heuristic]
-    shown = [(label, fmt.format(value)) for label, value in steps]
+    """"the clock hand at B, set to A, passes D first: after turning 15.1°, before E at
+    25.5°" (an angle said with what it measures), "the water spilled at B reaches D first,
+    before E" (a length left unsaid); None when the deciding two values would print alike
+    (the tie rule would be the real reason)."""
+    lead, measure = _STORY[heuristic]
+    printed = [_PRINTED.format(value) for _, value in steps]
+    labels = [label for label, _ in steps]
     if heuristic == "scaling-correct":  # the last candidate reached is the pick
-        if shown[-1][1] == shown[-2][1]:
+        if printed[-1] == printed[-2]:
             return None
-        wet = [f"{label} {measure.format(v=v) if k == 0 else f'at {v}'}"
-               for k, (label, v) in enumerate(shown[:-1])]
-        last, v = shown[-1]
-        return f"{lead} {_and(wet)} before {last} at {v}, so {last} stays dry longest"
-    if shown[0][1] == shown[1][1]:
+        return f"{lead} {_and(labels[:-1])} before {labels[-1]}, so {labels[-1]} stays dry longest"
+    if printed[0] == printed[1]:
         return None
-    (first, v), rest = shown[0], shown[1:]
-    others = _and([f"{label} at {value}" for label, value in rest])
-    return f"{lead} {first} first: {measure.format(v=v)}, before {others}"
+    if measure is None:
+        return f"{lead} {labels[0]} first, before {_and(labels[1:])}"
+    others = _and([f"{label} at {value}°" for label, value in zip(labels[1:], printed[1:],
+                                                                   strict=True)])
+    return f"{lead} {labels[0]} first: {measure.format(v=printed[0] + '°')}, before {others}"
 
 
 def _off_line(q: Point, u: Point, v: Point) -> float:
@@ -337,6 +339,47 @@ def front_gap(polygon: Polygon, triangle: tuple[int, int, int], candidates: Iter
         "scaling-correct": lambda q: abs(_off_line(q, a, c) - _off_line(at, a, c)),
     }
     return min((gap[heuristic](pts[k]) for k in candidates if k != d), default=math.inf)
+
+
+def _lines_of(shape) -> list[list[Point]]:
+    """The polylines of a shapely intersection (a line, several, or a mix with points)."""
+    parts = getattr(shape, "geoms", [shape])
+    return [[(x, y) for x, y, *_ in part.coords] for part in parts
+            if isinstance(part, LineString) and part.length > 0]
+
+
+def front(polygon: Polygon, triangle: tuple[int, int, int], heuristic: str,
+          d: int) -> list[list[Point]]:
+    """The metaphor's front as it reaches the pick ``d``, inside T (in P's units): what the
+    answer draws, so that it shows what its reason says (review r567: "the line parallel to
+    AC, swept from B, reaches E first" was said over a picture with no line). The water's
+    circle about B; the clock hand from B (from C), through the pick; the vertical sweep; the
+    line parallel to AC (the rising water's shore too)."""
+    pts = polygon.points
+    a, b, c = (pts[k] for k in triangle)
+    at, region = pts[d], Region([a, b, c])
+    reach = 2 * max(math.dist(a, b), math.dist(b, c), math.dist(a, c))  # past T's far side
+
+    def through(u: Point) -> LineString:
+        k = reach / math.hypot(*u)
+        return LineString([(at[0] - k * u[0], at[1] - k * u[1]),
+                           (at[0] + k * u[0], at[1] + k * u[1])])
+
+    def ray(centre: Point) -> LineString:
+        k = reach / math.dist(centre, at)
+        return LineString([centre, (centre[0] + k * (at[0] - centre[0]),
+                                    centre[1] + k * (at[1] - centre[1]))])
+
+    shapes: dict[str, Callable[[], LineString]] = {
+        "scaling": lambda: ShapelyPoint(b).buffer(math.dist(b, at), 64).exterior,
+        "rotation": lambda: ray(b),
+        "rotation-ccw": lambda: ray(b),
+        "rotation-correct": lambda: ray(c),
+        "translation": lambda: through((0.0, 1.0)),
+        "translation-correct": lambda: through((c[0] - a[0], c[1] - a[1])),
+        "scaling-correct": lambda: through((c[0] - a[0], c[1] - a[1])),
+    }
+    return _lines_of(shapes[heuristic]().intersection(region))
 
 
 def _pick(number: int, heuristic: str) -> Callable[[_Frame], Exercise | None]:

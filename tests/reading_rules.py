@@ -2440,3 +2440,22 @@ def uneven_countdowns(data: dict) -> list[str]:
             numbers.append((k, number, play["run_time"]))
     check()
     return found
+
+
+# --- an exercise's answer: no number alone on a line -------------------------------------------
+
+_LONE_NUMBER = re.compile(r"[\d.,°%\s]+")
+
+
+def lone_numbers(data: dict) -> list[str]:
+    """The answers' lines that hold a number alone, as ``"play 9: 25.5"``: read by itself,
+    "25.5" under "before D at" is a figure with no words (review r567)."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for node in mobject_nodes(anim.get("mobject") or {}):
+                if node.get("name") != "answer":
+                    continue
+                found += [f"play {k}: {n['text']}" for n in mobject_nodes(node)
+                          if n.get("text") and _LONE_NUMBER.fullmatch(n["text"])]
+    return found

@@ -57,12 +57,15 @@ def test_a_picks_reason_says_what_its_numbers_are():
 
     steps = [("D", 15.12), ("E", 25.54), ("F", 30.0)]
     said = {h: _pick_reason(h, steps) for h in PICKABLE}
-    assert said["scaling"] == "the water spilled at B reaches D first: 15.1 from B, before E " \
-        "at 25.5 and F at 30.0"
+    # a length is left unsaid: in the polygon's units it meant nothing to a class (review r567:
+    # "15.1 from B, before D at 25.5")
+    assert said["scaling"] == "the water spilled at B reaches D first, before E and F"
+    assert said["translation-correct"] == "the line parallel to AC, swept from B, reaches D " \
+        "first, before E and F"
     assert said["rotation"] == "the clock hand at B, set to A, passes D first: after turning " \
         "15.1°, before E at 25.5° and F at 30.0°"
-    assert said["scaling-correct"] == "the water rising from the shore AC wets D at height " \
-        "15.1 above AC and E at 25.5 before F at 30.0, so F stays dry longest"
+    assert said["scaling-correct"] == "the water rising from the shore AC wets D and E before " \
+        "F, so F stays dry longest"
     assert all(said_numbers(r) == [] for r in said.values()), said
     # the rule fails on the old reasons, numbers in brackets with no meaning
     assert said_numbers("the line parallel to AC, swept from B, reaches E (after 15.1) before "
@@ -84,7 +87,7 @@ def check_entry(number, question, spec, picture, answer, reason) -> str:
         assert heuristic in PICKABLE
         claim = find_diagonal(p, heuristic)
         assert claim.u.label == "B" and answer == claim.v.label
-        assert (f" {answer} first: " in reason  # the reason says the winner's number first
+        assert (f" {answer} first" in reason  # the reason names the winner first
                 or reason.endswith(f"so {answer} stays dry longest"))
         assert said_numbers(reason) == [], reason
         return "pick"

@@ -52,6 +52,7 @@ from tests.reading_rules import (
     labels_under_tools,
     labels_without_contrast,
     leftover_verdicts,
+    lone_numbers,
     morphed_water,
     notes_over_fills,
     notes_under_moving_tools,
@@ -524,6 +525,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # and the countdown ticks once a second, each number up 1 s (it was eased: 15 and 1 stayed
     # 3.7 s each, the rest rushed by)
     assert uneven_countdowns(data) == [], chapter.slug
+    # an answer's number keeps to its words ("25.5" stood alone on the answer's last line)
+    assert lone_numbers(data) == [], chapter.slug
     assert answers_over_pictures(data) == [], chapter.slug
     # issue 22 items 5 and 6: an exercise's polygon has room, its labels clear of each other
     # and of the edges, as drawn
