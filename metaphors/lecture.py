@@ -48,7 +48,7 @@ from metaphors.stills import MARKERS_AT, answer_front, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
-from story.exercises import Exercise, make_exercises
+from story.exercises import Exercise, crossed_edges, make_exercises
 from story.hunt import hunt
 from story.registry import spoken
 from story.runs import record_user_run
@@ -371,7 +371,7 @@ class LectureScene(TraceScene):
                                          frame.to_scene(polygon.points[j]), color=colour,
                                          stroke_width=theme.stroke * 1.5),
                                     "result" if verdict.ok else "rejected", "answer:diagonal")))
-            anims += self._crossing(verdict, polygon, frame)
+            anims += self._crossing(verdict, polygon, (i, j), frame)
         return anims
 
     def _picked(self, exercise: Exercise, frame: Frame, markers: VGroup) -> list[Animation]:
@@ -388,20 +388,18 @@ class LectureScene(TraceScene):
         return [*[Create(f) for f in fronts], FadeIn(dot, scale=2.5),
                 tag(markers[pick], "result").animate.set_color(theme.result)]
 
-    def _crossing(self, verdict, polygon, frame: Frame) -> list:
-        """A rejected diagonal's crossed edge, thick in red (the answer's text names it), and a
-        flash where it is crossed."""
+    def _crossing(self, verdict, polygon, pair: tuple[int, int], frame: Frame) -> list:
+        """A rejected diagonal's crossed edges, thick in red (the answer's text names them:
+        :func:`story.exercises.crossed_edges`), and a flash where each is crossed."""
         if verdict.edge is None:
             return []
         theme = self.theme
-        u, v = verdict.edge
-        name = f"edge:{polygon.labels[u]}–{polygon.labels[v]}"
-        edge = crossed_edge(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[v]),
-                            name, theme)
-        anims: list[Animation] = [Create(edge)]
-        if verdict.point is not None:
-            anims.append(Flash(frame.to_scene(verdict.point), color=theme.rejected,
-                               flash_radius=0.45))
+        anims: list[Animation] = []
+        for (u, v), point in crossed_edges(polygon, *pair):
+            name = f"edge:{polygon.labels[u]}–{polygon.labels[v]}"
+            anims += [Create(crossed_edge(frame.to_scene(polygon.points[u]),
+                                          frame.to_scene(polygon.points[v]), name, theme)),
+                      Flash(frame.to_scene(point), color=theme.rejected, flash_radius=0.45)]
         return anims
 
     @staticmethod

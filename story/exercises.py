@@ -44,12 +44,18 @@ from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon as Region
 
 import tracing
-from geometry.check import is_inner_diagonal
+from geometry.check import CheckResult, is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.polygon import Polygon
-from geometry.predicates import Point
+from geometry.predicates import (
+    Contact,
+    Point,
+    intersection_point,
+    segment_contact,
+    squared_distance,
+)
 from geometry.samples import sample_from_spec
 from story.hunt import in_general_position
 from story.reach import reach_of
@@ -57,7 +63,7 @@ from story.refs import call_of, state_of, target_of
 from story.registry import heuristics, spoken, wrong
 from story.words import why_not_inner
 
-__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "front", "front_gap",
+__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "crossed_edges", "front", "front_gap",
            "make_exercises"]
 
 KINDS = ("pick", "claim", "inner")
@@ -396,6 +402,29 @@ def _pick(number: int, heuristic: str) -> Callable[[_Frame], Exercise | None]:
     return build
 
 
+def crossed_edges(polygon: Polygon, i: int, j: int) -> list[tuple[tuple[int, int], Point]]:
+    """Every edge the segment from vertex ``i`` to ``j`` crosses (at a point inside both),
+    with where, in order from ``i``: a diagonal that leaves P and comes back crosses
+    several, and the class sees each (review r567: "AC crosses edge L–M" was said, and only
+    L–M flashed, of AC's three crossings)."""
+    a, b = polygon.points[i], polygon.points[j]
+    found = []
+    for k, m in polygon.edges():
+        c, d = polygon.points[k], polygon.points[m]
+        if not {i, j} & {k, m} and segment_contact(a, b, c, d) is Contact.PROPER:
+            found.append(((k, m), intersection_point(a, b, c, d)))
+    return sorted(found, key=lambda hit: squared_distance(a, hit[1]))
+
+
+def _not_inner(polygon: Polygon, i: int, j: int, verdict: CheckResult) -> str:
+    """Why the diagonal from ``i`` to ``j`` is not inner, naming every edge it crosses."""
+    name = _label(polygon, i, j)
+    edges = ["–".join(polygon.labels[k] for k in edge) for edge, _ in crossed_edges(polygon, i, j)]
+    if verdict.code != "crosses" or len(edges) < 2:
+        return why_not_inner(verdict, polygon.labels, name)
+    return f"{name} crosses edges {_and(edges)}"
+
+
 def _claim(number: int, heuristics: list[str], wanted: bool) -> Callable[[_Frame], Exercise | None]:
     def build(frame: _Frame) -> Exercise | None:
         p = frame.polygon
@@ -407,7 +436,7 @@ def _claim(number: int, heuristics: list[str], wanted: bool) -> Callable[[_Frame
                 continue
             name, said = claim.name, spoken(heuristic)
             answer = f"{'yes' if verdict.ok else 'no'} ({said} claims {name})"
-            reason = why_not_inner(verdict, p.labels, name) if not verdict.ok else _inside(
+            reason = _not_inner(p, *claim.pair, verdict) if not verdict.ok else _inside(
                 p, *claim.pair)
             question = f"Is the claim of {said} an inner diagonal?"
             return _exercise(number, "claim", frame, heuristic, question, answer, reason)
@@ -434,8 +463,8 @@ def _inner(number: int) -> Callable[[_Frame], Exercise | None]:
             return None  # one that looks, on screen, other than it is
         names = [_label(p, *pair) for pair in options]
         yes = [n for n, v in zip(names, verdicts, strict=True) if v.ok]
-        reasons = [why_not_inner(v, p.labels, n)
-                   for n, v in zip(names, verdicts, strict=True) if not v.ok]
+        reasons = [_not_inner(p, *pair, v)
+                   for pair, v in zip(options, verdicts, strict=True) if not v.ok]
         reasons.append(f"{_and(yes)} {'runs' if len(yes) == 1 else 'run'} inside the polygon")
         question = f"Which of these diagonals are inner: {', '.join(names)}?"
         return _exercise(number, "inner", frame, None, question, ", ".join(yes),
