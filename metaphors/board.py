@@ -181,7 +181,8 @@ class Board:
         for z, mobjects in layers:
             for mobject in mobjects:
                 if mobject in self.scene.mobjects:
-                    if mobject.z_index != z:
+                    # a part too: a pseudocode row typeset anew came in on top (panel._rename)
+                    if any(m.z_index != z for m in mobject.get_family()):
                         mobject.set_z_index(z)
                     bottom.append(mobject)
         self.scene.bring_to_back(*bottom)
@@ -218,7 +219,7 @@ class Board:
         """Take the subtitle and the call line being replaced off the screen at once (a cut):
         two of them are never up together, as a crossfade would show them."""
         old, self.outgoing = self.outgoing, None
-        for gone in (old, self.panel.cut_outgoing()):  # the call line likewise
+        for gone in (old, *self.panel.cut_outgoing()):  # the call line likewise
             if gone is not None:
                 self.scene.remove(gone)
 

@@ -2459,3 +2459,32 @@ def lone_numbers(data: dict) -> list[str]:
                 found += [f"play {k}: {n['text']}" for n in mobject_nodes(node)
                           if n.get("text") and _LONE_NUMBER.fullmatch(n["text"])]
     return found
+
+
+# --- a run's pseudocode does not give its claim away -------------------------------------------
+
+_CLAIM_CAPTION = re.compile(r"Claim: ([A-Z]+) is an inner diagonal")
+
+
+def _code_rows(play: dict) -> Iterator[str]:
+    """The texts of the pseudocode rows a play brings in."""
+    for anim in play["animations"]:
+        if anim["type"] in INCOMING:
+            for node in mobject_nodes(anim.get("mobject") or {}):
+                if str(node.get("name", "")).startswith("code:") and node.get("text"):
+                    yield node["text"]
+
+
+def claims_given_away(data: dict) -> list[str]:
+    """A run's claim named by a pseudocode row shown before the run makes it, as
+    ``"play 75: 'claim BE' before play 91's claim"``: "E = the candidate nearest to C" and
+    "claim BE" stood in the panel before the distances were computed (review r567)."""
+    found, shown = [], []
+    for k, play in enumerate(data["plays"]):
+        claimed = _CLAIM_CAPTION.fullmatch(play.get("subcaption") or "")
+        if claimed:
+            found += [f"play {at}: {text!r} before play {k}'s claim" for at, text in shown
+                      if claimed[1] in re.findall(r"\b[A-Z]+\b", text)]
+            shown = []
+        shown += [(k, text) for text in _code_rows(play)]
+    return found

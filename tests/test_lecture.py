@@ -31,6 +31,7 @@ from tests.reading_rules import (
     bare_ticks,
     broken_counts,
     broken_summaries,
+    claims_given_away,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -527,6 +528,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert uneven_countdowns(data) == [], chapter.slug
     # an answer's number keeps to its words ("25.5" stood alone on the answer's last line)
     assert lone_numbers(data) == [], chapter.slug
+    # a run's pseudocode names its pick once picked ("claim BE" stood there from the start)
+    assert claims_given_away(data) == [], chapter.slug
     assert answers_over_pictures(data) == [], chapter.slug
     # issue 22 items 5 and 6: an exercise's polygon has room, its labels clear of each other
     # and of the edges, as drawn
