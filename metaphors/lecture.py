@@ -26,6 +26,7 @@ from manim import (
     FadeOut,
     Flash,
     Line,
+    Mobject,
     VGroup,
     VMobject,
     Write,
@@ -83,6 +84,10 @@ class Card:
     title: str
     lines: tuple[str, ...] = ()
     figure: Figure | None = None  # its idea drawn on the left, the words on the right
+    #: per line, a figure whose claims (and crossed edges) come in with that line, in place
+    #: of the last line's: each claim drawn when its words say it, one at a time (review
+    #: r567: two green claims drawn from the start read as one path); None: none
+    line_figures: tuple[Figure | None, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -258,11 +263,24 @@ class LectureScene(TraceScene):
             self.play(Write(title), *[FadeIn(m) for m in figure], run_time=0.8, **cue)
         else:
             self.play(Write(title), run_time=0.8, **cue)
-        for line, words in zip(lines, card.lines, strict=True):
+        shown: list[Mobject] = []  # the last line's claims
+        for k, (line, words) in enumerate(zip(lines, card.lines, strict=True)):
             cue = captions.show(words, 0.5)
             self.mark_card_line(words, card)
-            self.play(FadeIn(line, shift=UP * 0.1), run_time=0.5, **cue)
+            claims = self._line_claims(card, k)
+            going = [FadeOut(m) for m in shown] if claims else []
+            self.play(FadeIn(line, shift=UP * 0.1), *going, *[Create(m) for m in claims],
+                      run_time=0.5 if not claims else 1.0, **cue)
+            shown = claims or shown
         captions.hold()
+
+    def _line_claims(self, card: Card, k: int) -> list[Mobject]:
+        """The claims (and crossed edges) of line ``k``'s figure, if it has one."""
+        figure = card.line_figures[k] if k < len(card.line_figures) else None
+        if figure is None:
+            return []
+        return [m for m in figure_mobjects(figure, self.lecture_polygon(), self.theme)
+                if m.name == "figure:claim" or m.name.startswith("figure:edge:")]
 
     def play_run(self, run: Run, log=None) -> None:
         """The run played as the metaphor scenes play it (``log``: its log, if already
