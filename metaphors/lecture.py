@@ -400,7 +400,7 @@ class LectureScene(TraceScene):
         at = frame.to_scene(polygon.points[pick])
         dot = tag(Dot(at, radius=0.13, color=theme.result), "result", "pick")
         colour = getattr(theme, _FRONT_COLOUR[exercise.heuristic or ""])
-        fronts = [tag(VMobject(stroke_color=colour, stroke_width=theme.stroke)
+        fronts = [tag(VMobject(stroke_color=colour, stroke_width=theme.stroke * 1.5)
                       .set_points_as_corners(frame.many(line)), None, "answer:front")
                   for line in answer_front(exercise)]
         return [*[Create(f) for f in fronts], FadeIn(dot, scale=2.5),
