@@ -26,7 +26,6 @@ from manim import (
     FadeOut,
     Flash,
     Line,
-    Mobject,
     VGroup,
     VMobject,
     Write,
@@ -263,7 +262,7 @@ class LectureScene(TraceScene):
             self.play(Write(title), *[FadeIn(m) for m in figure], run_time=0.8, **cue)
         else:
             self.play(Write(title), run_time=0.8, **cue)
-        shown: list[Mobject] = []  # the last line's claims
+        shown: list[VMobject] = []  # the last line's claims
         for k, (line, words) in enumerate(zip(lines, card.lines, strict=True)):
             cue = captions.show(words, 0.5)
             self.mark_card_line(words, card)
@@ -274,13 +273,14 @@ class LectureScene(TraceScene):
             shown = claims or shown
         captions.hold()
 
-    def _line_claims(self, card: Card, k: int) -> list[Mobject]:
+    def _line_claims(self, card: Card, k: int) -> list[VMobject]:
         """The claims (and crossed edges) of line ``k``'s figure, if it has one."""
         figure = card.line_figures[k] if k < len(card.line_figures) else None
         if figure is None:
             return []
         return [m for m in figure_mobjects(figure, self.lecture_polygon(), self.theme)
-                if m.name == "figure:claim" or m.name.startswith("figure:edge:")]
+                if isinstance(m, VMobject)
+                and (m.name == "figure:claim" or m.name.startswith("figure:edge:"))]
 
     def play_run(self, run: Run, log=None) -> None:
         """The run played as the metaphor scenes play it (``log``: its log, if already

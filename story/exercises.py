@@ -42,6 +42,7 @@ from dataclasses import dataclass, field
 from shapely.geometry import LineString
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon as Region
+from shapely.geometry.base import BaseGeometry
 
 import tracing
 from geometry.check import CheckResult, is_inner_diagonal
@@ -347,7 +348,7 @@ def front_gap(polygon: Polygon, triangle: tuple[int, int, int], candidates: Iter
     return min((gap[heuristic](pts[k]) for k in candidates if k != d), default=math.inf)
 
 
-def _lines_of(shape) -> list[list[Point]]:
+def _lines_of(shape: BaseGeometry) -> list[list[Point]]:
     """The polylines of a shapely intersection (a line, several, or a mix with points)."""
     parts = getattr(shape, "geoms", [shape])
     return [[(x, y) for x, y, *_ in part.coords] for part in parts
