@@ -181,8 +181,7 @@ class Board:
         for z, mobjects in layers:
             for mobject in mobjects:
                 if mobject in self.scene.mobjects:
-                    # a part too: a pseudocode row typeset anew came in on top (panel._rename)
-                    if any(m.z_index != z for m in mobject.get_family()):
+                    if mobject.z_index != z:
                         mobject.set_z_index(z)
                     bottom.append(mobject)
         self.scene.bring_to_back(*bottom)

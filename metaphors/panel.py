@@ -298,13 +298,13 @@ class Panel:
 
     def _rename(self, beat: Beat) -> list[Animation]:
         """From the beat that picks the vertex on: the rows that name it in its place, each
-        typeset anew where the old one stood (the old one cut, the new one fading in); a lit
-        row that changed is lit again, its old light cut too (:meth:`cut_outgoing`)."""
+        typeset anew where the old one stood (a cut); a lit row that changed is lit again,
+        its old light and copy cut too (:meth:`cut_outgoing`). No animation: none is
+        returned (a list, as the panel's other steps give)."""
         if self.later is None or beat.seq < self.later[0]:
             return []
         rows, self.later = self.later[1], None
         font, size = self.theme.font, self.theme.pseudocode_size
-        anims: list[Animation] = []
         for k, (old, new) in enumerate(zip(self.pseudocode, rows, strict=True)):
             if old.text == new.text:
                 continue
@@ -314,13 +314,14 @@ class Panel:
             shown = self.code[k]
             row.move_to((shown.get_left()[0], self.line_y[k] + self.code_scale
                          * _baseline_offset(row, font, size), 0), aligned_edge=LEFT)
-            # the old row is cut (out of the code, off the screen), never crossfaded
+            # a cut, in place: never crossfaded over the old one, and the code stays in the
+            # still layer (no play redraws it in every frame: tests/test_redraw.py)
+            row.set_z_index(shown.z_index)
             self.code.submobjects[k] = row
-            anims.append(FadeIn(row))
             if self.lit is not None and self.lit[0] == k:  # its lit copy says the old text
                 self.outgoing_lit, self.lit = list(self.lit[1:]), None
         self.pseudocode = rows
-        return anims
+        return []
 
     def _light_row(self, index: int | None) -> list[Animation]:
         """Light pseudocode row ``index``: a light fades in behind it and a copy of the row
