@@ -53,7 +53,9 @@ def polygon(board: Board, beat: ShowPolygon) -> None:
 
 def pick(board: Board, beat: Pick) -> None:
     marker = board.markers[beat.vertex]
-    board.play(beat, Indicate(marker, color=board.theme.result), run_time=1.0)
+    # in the colour it keeps (the left-most vertex's blue, a reflex vertex's green)
+    colour = board.theme.role_colour(beat.roles.get(beat.vertex, "result"))
+    board.play(beat, Indicate(marker, color=colour), run_time=1.0)
 
 
 def triangle(board: Board, beat: ShowTriangle) -> None:

@@ -246,7 +246,7 @@ class Board:
         """Take the subtitle and the call line being replaced off the screen at once (a cut):
         two of them are never up together, as a crossfade would show them."""
         old, self.outgoing = self.outgoing, None
-        for gone in (old, self.panel.cut_outgoing()):  # the call line likewise
+        for gone in (old, *self.panel.cut_outgoing()):  # the call line likewise
             if gone is not None:
                 self.scene.remove(gone)
 

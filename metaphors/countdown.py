@@ -1,12 +1,16 @@
-"""The exercises' countdown: a ring that empties and the seconds left, in one animation.
+"""The exercises' countdown: a ring that empties and the seconds left, one play a second.
 
-One play for the whole wait (not one per second), so the scene graph stays small and the
-question's caption is the only one on screen while the class thinks.
+Each second is a play of its own, at a constant rate: the number on screen is the play's, for
+exactly one second, and the scene graph says so (one play for the whole wait eased the ring
+and its numbers with the play's default smooth rate: "15" stayed 3.7 s, "14" to "2" rushed
+by at half a second each, and "1" stayed 3.7 s).
 """
 
 from __future__ import annotations
 
-from manim import TAU, Arc, Mobject, UpdateFromAlphaFunc, VGroup, VMobject
+from collections.abc import Iterator
+
+from manim import TAU, Arc, Mobject, UpdateFromAlphaFunc, VGroup, VMobject, linear
 
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
@@ -29,21 +33,27 @@ def _digit(k: int, at: tuple[float, float, float], theme: Theme) -> VMobject:
 
 
 def countdown(seconds: int, at: tuple[float, float, float],
-              theme: Theme = THEME) -> tuple[VGroup, UpdateFromAlphaFunc]:
-    """The countdown mobject (full ring, ``seconds`` shown) and the animation that runs it
-    down to 1 over ``seconds`` seconds; the caller adds the mobject and plays the animation.
+              theme: Theme = THEME) -> tuple[VGroup, Iterator[UpdateFromAlphaFunc]]:
+    """The countdown mobject (full ring, ``seconds`` shown) and its seconds: ``seconds``
+    animations of one second each, at a constant rate, to be played in turn; the caller adds
+    the mobject and plays each as it comes.
 
-    The digits are typeset once, up front: a frame only swaps which one is shown.
+    Each second shows its number from its first frame: the iterator puts it up before it
+    hands over the second's animation (so that the scene graph, written before the play,
+    holds it). The digits are typeset once, up front: a second only swaps which one is shown.
     """
     digits = [_digit(k, at, theme) for k in range(seconds, 0, -1)]
-    shown = tag(VGroup(_ring(1.0, at, theme), digits[0].copy()), None, "countdown")
+    shown = tag(VGroup(_ring(1.0, at, theme), digits[0]), None, "countdown")
 
-    def update(group: Mobject, alpha: float) -> None:
-        left = min(int(alpha * seconds), seconds - 1)
-        group.submobjects[0].become(_ring(1.0 - alpha, at, theme))
-        group.submobjects[1].become(digits[left])
+    def second(left: int) -> UpdateFromAlphaFunc:
+        def update(group: Mobject, alpha: float) -> None:
+            group.submobjects[0].become(_ring((left - alpha) / seconds, at, theme))
 
-    return shown, UpdateFromAlphaFunc(shown, update, run_time=seconds)
+        # the number itself, not its glyphs copied onto the last (the graph reads its text)
+        shown[1] = digits[seconds - left]
+        return UpdateFromAlphaFunc(shown, update, run_time=1.0, rate_func=linear)
+
+    return shown, (second(left) for left in range(seconds, 0, -1))
 
 
 __all__ = ["RING_RADIUS", "countdown"]

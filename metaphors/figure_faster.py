@@ -55,6 +55,8 @@ MEASURED_RUNS = ("divide-and-conquer", "ear-clipping", "monotone")
 #: the bounds drawn for comparison, never run: (their key, their name on screen, their shape)
 BOUNDS = (("tarjan-van-wyk", "O(n log log n)", lambda n: n * math.log2(math.log2(n))),
           ("chazelle", "O(n)", float))
+#: the recap's rows of triangulations: from under the card's title to the frame's foot
+THREE_TOP, THREE_BOTTOM = 2.7, -3.75
 #: the recap's triangulations and the time bound each card says
 RECAPPED = (("divide-and-conquer", "O(n²)"), ("ear-clipping", "O(n²)"),
             ("monotone", "O(n log n)"))
@@ -277,14 +279,16 @@ def recap_triangulations(polygon: Polygon) -> list[tuple[str, str, tuple[Triangl
 
 def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
     """A row per algorithm: its triangulation of P, its name and its bound beside it; the
-    rows take the box and the room of its caption (there is none: the words are beside)."""
-    (x, y), width, height = box
-    top, bottom = y + height / 2 + 0.1, y - height / 2 - 0.45
+    rows take the frame's height under the title, the box's and the room of its caption
+    (there is none: the words are beside), so that the lower half is not left empty (review
+    r567: all of it stood in the top 55 %)."""
+    (x, _), width, _ = box
+    top, bottom = THREE_TOP, THREE_BOTTOM
     row = (top - bottom) / len(RECAPPED)
     drawn: list[Mobject] = []
     for k, (name, bound, triangles) in enumerate(recap_triangulations(polygon)):
         at_y = top - row * (k + 0.5)
-        frame = Frame(polygon.points, (x - width / 2 + 1.1, at_y), 2.2, row - 0.15)
+        frame = Frame(polygon.points, (x - width / 2 + 1.4, at_y), 2.8, row - 0.2)
         drawn.append(tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"))
         drawn += [tag(triangle_mobject(polygon, t, frame, theme.pieces[j % len(theme.pieces)],
                                        theme), "result", f"figure:triangle:{name}")
@@ -294,7 +298,7 @@ def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
                 (spoken(name, start=True), theme.ink, theme.label_size + 2),
                 (f"{bound}, {count}", theme.idle, theme.label_size))):
             text = typeset.text(words, font=theme.font, size=size, colour=colour)
-            text.move_to((x - width / 2 + 2.5, at_y + 0.22 - 0.44 * j, 0), aligned_edge=LEFT)
+            text.move_to((x - width / 2 + 3.1, at_y + 0.22 - 0.44 * j, 0), aligned_edge=LEFT)
             drawn.append(tag(text, None, "figure:legend"))
     return drawn
 

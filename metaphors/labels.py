@@ -14,6 +14,7 @@ exercises, read by a class with no run to explain them, place theirs here.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from itertools import pairwise
 
 import numpy as np
 from manim import Dot, Mobject, VGroup
@@ -102,14 +103,19 @@ def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tup
 
 
 def placed_vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME,
-                          diagonals: Sequence[tuple[int, int]] = ()) -> VGroup:
+                          diagonals: Sequence[tuple[int, int]] = (),
+                          lines: Sequence[Sequence[tuple[float, float]]] = ()) -> VGroup:
     """A dot and a label per vertex, as :func:`metaphors.drawing.vertex_markers` draws them,
-    each label placed by :func:`place_labels` (clear of the edges and of ``diagonals``, pairs
-    of vertex indices drawn on the picture)."""
+    each label placed by :func:`place_labels` (clear of the edges, of ``diagonals``, pairs
+    of vertex indices drawn on the picture, and of ``lines``, polylines in P's units drawn
+    on it too)."""
     corners = frame.many(polygon.points)
     texts = [typeset.text(label, font=theme.font, size=theme.label_size, colour=theme.ink)
              for label in polygon.labels]
     segments = [(corners[i], corners[j]) for i, j in diagonals]
+    for line in lines:
+        drawn = frame.many(list(line))
+        segments += list(pairwise(drawn))
     centres = place_labels(corners, [(t.width, t.height) for t in texts], segments,
                            theme.dot_radius)
     group = VGroup()

@@ -11,6 +11,7 @@ joins them.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
@@ -27,6 +28,7 @@ from manim import (
     Flash,
     Line,
     VGroup,
+    VMobject,
     Write,
 )
 
@@ -45,11 +47,11 @@ from metaphors.labels import measured_markers
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
-from metaphors.stills import still_mobjects
+from metaphors.stills import MARKERS_AT, answer_front, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
-from story.exercises import Exercise, make_exercises
+from story.exercises import Exercise, crossed_edges, make_exercises
 from story.hunt import hunt
 from story.registry import spoken
 from story.runs import record_user_run
@@ -82,6 +84,12 @@ FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 QUIZ_BOX = ((-2.7, -0.1), 7.4, 5.6)
 ANSWER_AT, ANSWER_WIDTH = (4.25, -0.3, 0), 4.6
 COUNTDOWN_AT = (4.25, 1.6, 0)
+#: the space before a number (a no-break space there keeps it on its word's line)
+_NUMBER = re.compile(r" (?=\d)")
+#: the colour of each pick's front, as its metaphor draws it (:mod:`metaphors.theme`)
+_FRONT_COLOUR = {"scaling": "water", "scaling-correct": "water", "rotation": "hand",
+                 "rotation-ccw": "hand", "rotation-correct": "hand", "translation": "sweep",
+                 "translation-correct": "sweep"}
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
 
 
@@ -93,6 +101,10 @@ class Card:
     title: str
     lines: tuple[str, ...] = ()
     figure: Figure | None = None  # its idea drawn on the left, the words on the right
+    #: per line, a figure whose claims (and crossed edges) come in with that line, in place
+    #: of the last line's: each claim drawn when its words say it, one at a time (review
+    #: r567: two green claims drawn from the start read as one path); None: none
+    line_figures: tuple[Figure | None, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -268,11 +280,25 @@ class LectureScene(TraceScene):
             self.play(Write(title), *[FadeIn(m) for m in figure], run_time=0.8, **cue)
         else:
             self.play(Write(title), run_time=0.8, **cue)
-        for line, words in zip(lines, card.lines, strict=True):
+        shown: list[VMobject] = []  # the last line's claims
+        for k, (line, words) in enumerate(zip(lines, card.lines, strict=True)):
             cue = captions.show(words, 0.5)
             self.mark_card_line(words, card)
-            self.play(FadeIn(line, shift=UP * 0.1), run_time=0.5, **cue)
+            claims = self._line_claims(card, k)
+            going = [FadeOut(m) for m in shown] if claims else []
+            self.play(FadeIn(line, shift=UP * 0.1), *going, *[Create(m) for m in claims],
+                      run_time=0.5 if not claims else 1.0, **cue)
+            shown = claims or shown
         captions.hold()
+
+    def _line_claims(self, card: Card, k: int) -> list[VMobject]:
+        """The claims (and crossed edges) of line ``k``'s figure, if it has one."""
+        figure = card.line_figures[k] if k < len(card.line_figures) else None
+        if figure is None:
+            return []
+        return [m for m in figure_mobjects(figure, self.lecture_polygon(), self.theme)
+                if isinstance(m, VMobject)
+                and (m.name == "figure:claim" or m.name.startswith("figure:edge:"))]
 
     def play_run(self, run: Run, log=None) -> None:
         """The run played as the metaphor scenes play it (``log``: its log, if already
@@ -363,30 +389,31 @@ class LectureScene(TraceScene):
         cue = captions.show(exercise.question, 0.8)
         mark_step(self, exercise.question, kind="question")
         self.play(*[FadeIn(m) for m in picture], run_time=0.8, **cue)
-        clock, running = countdown(think, COUNTDOWN_AT, self.theme)
+        clock, seconds = countdown(think, COUNTDOWN_AT, self.theme)
         self.add(clock)
-        self.play(running)
+        for second in seconds:
+            self.play(second)
         self.remove(clock)
         answer = f"{exercise.answer}: {exercise.reason}"
         cue = captions.show(answer, 1.2)
         mark_step(self, answer, kind="answer")
-        self.play(*self.answer_animations(exercise), run_time=1.2, **cue)
+        self.play(*self.answer_animations(exercise, picture[MARKERS_AT]), run_time=1.2, **cue)
         self.wait(3.0)
 
-    def answer_animations(self, exercise: Exercise) -> list:
+    def answer_animations(self, exercise: Exercise, markers: VGroup) -> list:
+        """The answer's text beside the picture, and on the picture what it says: a pick's
+        vertex in green (its dot and its label, ``markers`` the picture's) with the
+        metaphor's front reaching it; each diagonal named, green or red, a crossed edge red."""
         theme, polygon = self.theme, exercise.polygon
         frame = Frame(polygon.points, *QUIZ_BOX)
-        text = tag(typeset.wrapped(f"Answer: {exercise.answer} — {exercise.reason}",
-                                   size=theme.caption_size, colour=theme.result,
+        # a number keeps to the word before it: "25.5" stood alone on the answer's last line
+        said = _NUMBER.sub("\u00a0", f"Answer: {exercise.answer} — {exercise.reason}")
+        text = tag(typeset.wrapped(said, size=theme.caption_size, colour=theme.result,
                                    font=theme.font, width=ANSWER_WIDTH), "result", "answer")
         text.move_to(ANSWER_AT)
         anims: list[Animation] = [FadeIn(text)]
         if exercise.kind == "pick":
-            label = exercise.answer.strip().split()[0]
-            if label in polygon.labels:
-                at = frame.to_scene(polygon.points[polygon.label_of(label)])
-                dot = tag(Dot(at, radius=0.13, color=theme.result), "result", "pick")
-                anims.append(FadeIn(dot, scale=2.5))
+            anims += self._picked(exercise, frame, markers)
         for i, j in exercise.options or self._claimed(exercise):
             verdict = is_inner_diagonal(polygon, i, j)
             colour = theme.result if verdict.ok else theme.rejected
@@ -394,23 +421,35 @@ class LectureScene(TraceScene):
                                          frame.to_scene(polygon.points[j]), color=colour,
                                          stroke_width=theme.stroke * 1.5),
                                     "result" if verdict.ok else "rejected", "answer:diagonal")))
-            anims += self._crossing(verdict, polygon, frame)
+            anims += self._crossing(verdict, polygon, (i, j), frame)
         return anims
 
-    def _crossing(self, verdict, polygon, frame: Frame) -> list:
-        """A rejected diagonal's crossed edge, thick in red (the answer's text names it), and a
-        flash where it is crossed."""
+    def _picked(self, exercise: Exercise, frame: Frame, markers: VGroup) -> list[Animation]:
+        """The pick in green, label and all (its label stayed amber beside a green dot), and
+        the front that reached it first, in its metaphor's colour."""
+        theme, polygon = self.theme, exercise.polygon
+        pick = polygon.label_of(exercise.answer)
+        at = frame.to_scene(polygon.points[pick])
+        dot = tag(Dot(at, radius=0.13, color=theme.result), "result", "pick")
+        colour = getattr(theme, _FRONT_COLOUR[exercise.heuristic or ""])
+        fronts = [tag(VMobject(stroke_color=colour, stroke_width=theme.stroke * 1.5)
+                      .set_points_as_corners(frame.many(line)), None, "answer:front")
+                  for line in answer_front(exercise)]
+        return [*[Create(f) for f in fronts], FadeIn(dot, scale=2.5),
+                tag(markers[pick], "result").animate.set_color(theme.result)]
+
+    def _crossing(self, verdict, polygon, pair: tuple[int, int], frame: Frame) -> list:
+        """A rejected diagonal's crossed edges, thick in red (the answer's text names them:
+        :func:`story.exercises.crossed_edges`), and a flash where each is crossed."""
         if verdict.edge is None:
             return []
         theme = self.theme
-        u, v = verdict.edge
-        name = f"edge:{polygon.labels[u]}–{polygon.labels[v]}"
-        edge = crossed_edge(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[v]),
-                            name, theme)
-        anims: list[Animation] = [Create(edge)]
-        if verdict.point is not None:
-            anims.append(Flash(frame.to_scene(verdict.point), color=theme.rejected,
-                               flash_radius=0.45))
+        anims: list[Animation] = []
+        for (u, v), point in crossed_edges(polygon, *pair):
+            name = f"edge:{polygon.labels[u]}–{polygon.labels[v]}"
+            anims += [Create(crossed_edge(frame.to_scene(polygon.points[u]),
+                                          frame.to_scene(polygon.points[v]), name, theme)),
+                      Flash(frame.to_scene(point), color=theme.rejected, flash_radius=0.45)]
         return anims
 
     @staticmethod

@@ -90,6 +90,9 @@ class Panel:
         self.mode = SOURCE
         self.code_lines = source_of(shown) if shown else ()
         self.pseudocode: tuple[PseudocodeRow, ...] = ()
+        #: (seq, rows): the rows from the beat of that seq on (:meth:`show_pseudocode`)
+        self.later: tuple[int, tuple[PseudocodeRow, ...]] | None = None
+        self.code_scale = 1.0  # how much the pseudocode's rows were shrunk to fit
         # the source: its rows, the window of lines shown (None: all of them), and each
         # shown line's row mobjects and the middle of their slots
         self.rows: tuple[Row, ...] = ()
@@ -108,6 +111,8 @@ class Panel:
         self.call_text = " "
         #: the call line being replaced, for the board to cut (see :meth:`cut_outgoing`)
         self.outgoing_call: Mobject | None = None
+        #: the light and lit copy of a row typeset anew, likewise (see :meth:`_rename`)
+        self.outgoing_lit: list[Mobject] = []
         #: whether the call line shows each beat's real call: a programmer's render does, the
         #: lecture does not (issue 22: no code in the lecture; see TraceScene.call_line)
         self.shows_calls = True
@@ -122,11 +127,15 @@ class Panel:
         self.code_lines = tuple((int(number), str(text)) for number, text in code)
         self.code = self._code_block()
 
-    def show_pseudocode(self, rows) -> None:
+    def show_pseudocode(self, rows, later: tuple[int, tuple[PseudocodeRow, ...]] | None = None
+                        ) -> None:
         """Show these pseudocode rows (:class:`story.pseudocode.PseudocodeRow`) instead of the source
-        (before the panel is on screen); each beat's ``row`` then lights one of them."""
+        (before the panel is on screen); each beat's ``row`` then lights one of them.
+        ``later``: from the beat of this seq on, these rows instead (the run has picked the
+        vertex they name: :func:`story.storyboard.staged_pseudocode`)."""
         self.mode = PSEUDOCODE
         self.pseudocode = tuple(rows)
+        self.later = later
         self.code = self._pseudocode_block()
 
     @property
@@ -233,6 +242,7 @@ class Panel:
         scale = min(1.0, PANEL_CODE.height / height, PANEL_CODE.width / rows.width)
         if scale < 1.0:
             rows.scale(scale)
+        self.code_scale = scale
         rows.move_to((PANEL_CODE.x, PANEL_CODE.y, 0))
         self.light_height = PSEUDOCODE_PITCH * scale - 0.04
         self.line_y = [row.get_y() - scale * d for row, d in zip(rows, offsets, strict=True)]
@@ -247,7 +257,7 @@ class Panel:
         """Animations moving the light to this beat's line and showing its call line (none if
         neither changes)."""
         if self.mode == PSEUDOCODE:
-            anims = self._light_row(beat.row)
+            anims = [*self._rename(beat), *self._light_row(beat.row)]
         else:
             anims = self._light_line(beat.line)
         if beat.call is not None and self.shows_calls:
@@ -285,6 +295,33 @@ class Panel:
         copy = tag(VGroup(*[tag(row.copy().set_color(self.theme.ink), "called", row.name)
                             for row in rows]), "called", rows[0].name)
         return [*anims, *self._relight(index, light, copy)]
+
+    def _rename(self, beat: Beat) -> list[Animation]:
+        """From the beat that picks the vertex on: the rows that name it in its place, each
+        typeset anew where the old one stood (a cut); a lit row that changed is lit again,
+        its old light and copy cut too (:meth:`cut_outgoing`). No animation: none is
+        returned (a list, as the panel's other steps give)."""
+        if self.later is None or beat.seq < self.later[0]:
+            return []
+        rows, self.later = self.later[1], None
+        font, size = self.theme.font, self.theme.pseudocode_size
+        for k, (old, new) in enumerate(zip(self.pseudocode, rows, strict=True)):
+            if old.text == new.text:
+                continue
+            row = tag(typeset.text(new.text.strip() or " ", font=font, size=size,
+                                   colour=self.theme.idle), "idle", f"code:{k + 1}")
+            row.scale(self.code_scale)
+            shown = self.code[k]
+            row.move_to((shown.get_left()[0], self.line_y[k] + self.code_scale
+                         * _baseline_offset(row, font, size), 0), aligned_edge=LEFT)
+            # a cut, in place: never crossfaded over the old one, and the code stays in the
+            # still layer (no play redraws it in every frame: tests/test_redraw.py)
+            row.set_z_index(shown.z_index)
+            self.code.submobjects[k] = row
+            if self.lit is not None and self.lit[0] == k:  # its lit copy says the old text
+                self.outgoing_lit, self.lit = list(self.lit[1:]), None
+        self.pseudocode = rows
+        return []
 
     def _light_row(self, index: int | None) -> list[Animation]:
         """Light pseudocode row ``index``: a light fades in behind it and a copy of the row
@@ -331,10 +368,13 @@ class Panel:
         self.outgoing_call, self.call = self.call, new
         return [FadeIn(new)]
 
-    def cut_outgoing(self) -> Mobject | None:
-        """The call line being replaced, once (the board takes it off the screen at once)."""
-        old, self.outgoing_call = self.outgoing_call, None
-        return old
+    def cut_outgoing(self) -> list[Mobject]:
+        """The call line being replaced and a renamed row's old light, once (the board takes
+        them off the screen at once)."""
+        gone = [*([self.outgoing_call] if self.outgoing_call is not None else []),
+                *self.outgoing_lit]
+        self.outgoing_call, self.outgoing_lit = None, []
+        return gone
 
 
 def _note(lines: int, where: str) -> str:

@@ -21,7 +21,7 @@ from metaphors.recorded import Recorded, captions_of, mark_step
 from story.beats import Beat, ShowPolygon
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
-from story.storyboard import run_call, spoken_pseudocode
+from story.storyboard import run_call, staged_pseudocode
 from tracing import Log
 
 #: widest title (scene units) before it is shrunk to fit the frame
@@ -51,9 +51,9 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     board.shares = dict(Counter(beat.caption for beat in beats))
     board.panel.run_call = run_call(log)
     code = log.meta.get("code")
-    rows = spoken_pseudocode(log)
+    rows, picked, named = staged_pseudocode(log)
     if scene.panel == PSEUDOCODE and rows:
-        board.panel.show_pseudocode(rows)
+        board.panel.show_pseudocode(rows, None if picked is None else (picked, named))
     elif code:
         board.panel.show_code(code)
     if board.title.width > TITLE_WIDTH:

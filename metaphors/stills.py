@@ -17,7 +17,7 @@ from metaphors.labels import placed_vertex_markers
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from rendering.typeset import FlatText
-from story.exercises import Exercise
+from story.exercises import Exercise, front
 
 TITLE_Y, LEGEND_Y = 3.45, -3.6
 BOX_CENTER, BOX_WIDTH, BOX_HEIGHT = (0.0, -0.1), 12.4, 5.6
@@ -47,7 +47,8 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME,
     ]
     # labels placed by measuring, clear of the edges, of T's AC and of every diagonal the
     # question names or the answer draws: a class reads them with no run to explain them
-    markers = placed_vertex_markers(p, frame, theme, diagonals=drawn_diagonals(exercise))
+    markers = placed_vertex_markers(p, frame, theme, diagonals=drawn_diagonals(exercise),
+                                    lines=answer_front(exercise))
     for k in (a, b, c):
         markers[k].set_color(theme.called)
     for k in exercise.candidates:
@@ -65,6 +66,10 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME,
     return [polygon_mobject(p, frame, theme), t, *options, markers, title, legend]
 
 
+#: where :func:`still_mobjects` puts the vertices' markers (dot and label each) in its list
+MARKERS_AT = -3
+
+
 def drawn_diagonals(exercise: Exercise) -> tuple[tuple[int, int], ...]:
     """The diagonals the still and the answer draw on the polygon: T's AC, the options, the
     claim asked about."""
@@ -72,6 +77,16 @@ def drawn_diagonals(exercise: Exercise) -> tuple[tuple[int, int], ...]:
     claimed = ((find_diagonal(exercise.polygon, exercise.heuristic).pair,)
                if exercise.kind == "claim" and exercise.heuristic else ())
     return ((a, c), *exercise.options, *claimed)
+
+
+def answer_front(exercise: Exercise) -> list[list[tuple[float, float]]]:
+    """The front the answer of a pick draws (:func:`story.exercises.front`; none for the
+    other kinds): the still's labels are placed clear of it."""
+    if exercise.kind != "pick" or exercise.heuristic is None \
+            or exercise.answer not in exercise.polygon.labels:
+        return []  # not a pick, or a made-up one with no answer yet
+    pick = exercise.polygon.label_of(exercise.answer)
+    return front(exercise.polygon, exercise.triangle, exercise.heuristic, pick)
 
 
 class ExerciseStill(Scene):

@@ -4,9 +4,10 @@ Three kinds, mixed in turn:
 
 ``pick``
     "Which vertex does Rotation pick?" — the answer is the label of D from
-    :func:`geometry.diagonals.find_diagonal`; the reason quotes the metaphor's own numbers
-    computed from the run's log (the water's radius, the clock hand's angle, the sweep's
-    offset: :mod:`story.reach`).
+    :func:`geometry.diagonals.find_diagonal`; the reason tells the order in which the
+    metaphor reaches the candidates, computed from the run's log (:mod:`story.reach`), with
+    the clock hand's angles (a length, in the polygon's units, would mean nothing on screen);
+    the answer draws the metaphor's front as it reaches the pick (:func:`front`).
 ``claim``
     "Is the claim of Scaling an inner diagonal?" (a wrong heuristic) — yes or no from
     :func:`geometry.check.is_inner_diagonal`, with its reason. Yes and no alternate in a
@@ -41,14 +42,21 @@ from dataclasses import dataclass, field
 from shapely.geometry import LineString
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon as Region
+from shapely.geometry.base import BaseGeometry
 
 import tracing
-from geometry.check import is_inner_diagonal
+from geometry.check import CheckResult, is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.errors import GeometryError
 from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.polygon import Polygon
-from geometry.predicates import Point
+from geometry.predicates import (
+    Contact,
+    Point,
+    intersection_point,
+    segment_contact,
+    squared_distance,
+)
 from geometry.samples import sample_from_spec
 from story.hunt import in_general_position
 from story.reach import reach_of
@@ -56,7 +64,8 @@ from story.refs import call_of, state_of, target_of
 from story.registry import heuristics, spoken, wrong
 from story.words import why_not_inner
 
-__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "front_gap", "make_exercises"]
+__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "crossed_edges", "front", "front_gap",
+           "make_exercises"]
 
 KINDS = ("pick", "claim", "inner")
 #: (generator, smallest n, largest n): shapes whose T often holds several candidates.
@@ -82,22 +91,21 @@ MIN_CLEARANCE = 0.045
 #: screen, its labels crowded (the lecture polygon's rule, issue 22 item 5)
 MIN_ANGLE = 15.0
 
-#: each rule's story as a reason tells it: its lead, what its number means at the pick (the
-#: ``{v}`` in it), and the number's form; the other candidates come after it as "E at 3.6"
-_STORY = {
-    "scaling": ("the water spilled at B reaches", "{v} from B", "{:.1f}"),
-    "rotation": ("the clock hand at B, set to A, passes", "after turning {v}", "{:.1f}°"),
-    "rotation-ccw": ("the clock hand at B, set to C, turning back, passes",
-                     "after turning {v}", "{:.1f}°"),
-    "rotation-correct": ("the clock hand at C, set to B, passes", "after turning {v}",
-                         "{:.1f}°"),
-    "translation": ("the vertical line swept rightwards from B reaches", "{v} right of B",
-                    "{:.1f}"),
-    "translation-correct": ("the line parallel to AC, swept from B, reaches",
-                            "{v} from B", "{:.1f}"),
-    "scaling-correct": ("the water rising from the shore AC wets", "at height {v} above AC",
-                        "{:.1f}"),
+#: each rule's story as a reason tells it: its lead, and what its number means at the pick
+#: (the ``{v}`` in it, an angle) or None: a length is left unsaid (the class cannot measure it
+#: on screen, and "15.1 from B" in the polygon's units meant nothing to it); the other
+#: candidates come after the pick as "E at 36.0°", or by name alone
+_STORY: dict[str, tuple[str, str | None]] = {
+    "scaling": ("the water spilled at B reaches", None),
+    "rotation": ("the clock hand at B, set to A, passes", "after turning {v}"),
+    "rotation-ccw": ("the clock hand at B, set to C, turning back, passes", "after turning {v}"),
+    "rotation-correct": ("the clock hand at C, set to B, passes", "after turning {v}"),
+    "translation": ("the vertical line swept rightwards from B reaches", None),
+    "translation-correct": ("the line parallel to AC, swept from B, reaches", None),
+    "scaling-correct": ("the water rising from the shore AC wets", None),
 }
+#: how a value prints: an angle in degrees to a tenth; two values printed alike are a tie
+_PRINTED = "{:.1f}"
 #: Heuristics that pick a candidate of T by a rule a student can apply by hand: those whose
 #: metaphor's story is told above, in the registry's order.
 PICKABLE = tuple(name for name in heuristics() if name in _STORY)
@@ -294,23 +302,24 @@ def _reached(polygon: Polygon, heuristic: str) -> tuple[int, list[tuple[str, flo
 
 
 def _pick_reason(heuristic: str, steps: list[tuple[str, float]]) -> str | None:
-    """"the water spilled at B reaches D first: 2.8 from B, before E at 3.6" (each number
-    said with what it measures); None when the deciding two values would print alike (the
-    tie rule would be the real reason)."""
-    lead, measure, fmt = _STORY[heuristic]
-    shown = [(label, fmt.format(value)) for label, value in steps]
+    """"the clock hand at B, set to A, passes D first: after turning 15.1°, before E at
+    25.5°" (an angle said with what it measures), "the water spilled at B reaches D first,
+    before E" (a length left unsaid); None when the deciding two values would print alike
+    (the tie rule would be the real reason)."""
+    lead, measure = _STORY[heuristic]
+    printed = [_PRINTED.format(value) for _, value in steps]
+    labels = [label for label, _ in steps]
     if heuristic == "scaling-correct":  # the last candidate reached is the pick
-        if shown[-1][1] == shown[-2][1]:
+        if printed[-1] == printed[-2]:
             return None
-        wet = [f"{label} {measure.format(v=v) if k == 0 else f'at {v}'}"
-               for k, (label, v) in enumerate(shown[:-1])]
-        last, v = shown[-1]
-        return f"{lead} {_and(wet)} before {last} at {v}, so {last} stays dry longest"
-    if shown[0][1] == shown[1][1]:
+        return f"{lead} {_and(labels[:-1])} before {labels[-1]}, so {labels[-1]} stays dry longest"
+    if printed[0] == printed[1]:
         return None
-    (first, v), rest = shown[0], shown[1:]
-    others = _and([f"{label} at {value}" for label, value in rest])
-    return f"{lead} {first} first: {measure.format(v=v)}, before {others}"
+    if measure is None:
+        return f"{lead} {labels[0]} first, before {_and(labels[1:])}"
+    others = _and([f"{label} at {value}°" for label, value in zip(labels[1:], printed[1:],
+                                                                   strict=True)])
+    return f"{lead} {labels[0]} first: {measure.format(v=printed[0] + '°')}, before {others}"
 
 
 def _off_line(q: Point, u: Point, v: Point) -> float:
@@ -339,6 +348,47 @@ def front_gap(polygon: Polygon, triangle: tuple[int, int, int], candidates: Iter
     return min((gap[heuristic](pts[k]) for k in candidates if k != d), default=math.inf)
 
 
+def _lines_of(shape: BaseGeometry) -> list[list[Point]]:
+    """The polylines of a shapely intersection (a line, several, or a mix with points)."""
+    parts = getattr(shape, "geoms", [shape])
+    return [[(x, y) for x, y, *_ in part.coords] for part in parts
+            if isinstance(part, LineString) and part.length > 0]
+
+
+def front(polygon: Polygon, triangle: tuple[int, int, int], heuristic: str,
+          d: int) -> list[list[Point]]:
+    """The metaphor's front as it reaches the pick ``d``, inside T (in P's units): what the
+    answer draws, so that it shows what its reason says (review r567: "the line parallel to
+    AC, swept from B, reaches E first" was said over a picture with no line). The water's
+    circle about B; the clock hand from B (from C), through the pick; the vertical sweep; the
+    line parallel to AC (the rising water's shore too)."""
+    pts = polygon.points
+    a, b, c = (pts[k] for k in triangle)
+    at, region = pts[d], Region([a, b, c])
+    reach = 2 * max(math.dist(a, b), math.dist(b, c), math.dist(a, c))  # past T's far side
+
+    def through(u: Point) -> LineString:
+        k = reach / math.hypot(*u)
+        return LineString([(at[0] - k * u[0], at[1] - k * u[1]),
+                           (at[0] + k * u[0], at[1] + k * u[1])])
+
+    def ray(centre: Point) -> LineString:
+        k = reach / math.dist(centre, at)
+        return LineString([centre, (centre[0] + k * (at[0] - centre[0]),
+                                    centre[1] + k * (at[1] - centre[1]))])
+
+    shapes: dict[str, Callable[[], LineString]] = {
+        "scaling": lambda: ShapelyPoint(b).buffer(math.dist(b, at), 64).exterior,
+        "rotation": lambda: ray(b),
+        "rotation-ccw": lambda: ray(b),
+        "rotation-correct": lambda: ray(c),
+        "translation": lambda: through((0.0, 1.0)),
+        "translation-correct": lambda: through((c[0] - a[0], c[1] - a[1])),
+        "scaling-correct": lambda: through((c[0] - a[0], c[1] - a[1])),
+    }
+    return _lines_of(shapes[heuristic]().intersection(region))
+
+
 def _pick(number: int, heuristic: str) -> Callable[[_Frame], Exercise | None]:
     def build(frame: _Frame) -> Exercise | None:
         d, steps = _reached(frame.polygon, heuristic)
@@ -353,6 +403,29 @@ def _pick(number: int, heuristic: str) -> Callable[[_Frame], Exercise | None]:
     return build
 
 
+def crossed_edges(polygon: Polygon, i: int, j: int) -> list[tuple[tuple[int, int], Point]]:
+    """Every edge the segment from vertex ``i`` to ``j`` crosses (at a point inside both),
+    with where, in order from ``i``: a diagonal that leaves P and comes back crosses
+    several, and the class sees each (review r567: "AC crosses edge L–M" was said, and only
+    L–M flashed, of AC's three crossings)."""
+    a, b = polygon.points[i], polygon.points[j]
+    found = []
+    for k, m in polygon.edges():
+        c, d = polygon.points[k], polygon.points[m]
+        if not {i, j} & {k, m} and segment_contact(a, b, c, d) is Contact.PROPER:
+            found.append(((k, m), intersection_point(a, b, c, d)))
+    return sorted(found, key=lambda hit: squared_distance(a, hit[1]))
+
+
+def _not_inner(polygon: Polygon, i: int, j: int, verdict: CheckResult) -> str:
+    """Why the diagonal from ``i`` to ``j`` is not inner, naming every edge it crosses."""
+    name = _label(polygon, i, j)
+    edges = ["–".join(polygon.labels[k] for k in edge) for edge, _ in crossed_edges(polygon, i, j)]
+    if verdict.code != "crosses" or len(edges) < 2:
+        return why_not_inner(verdict, polygon.labels, name)
+    return f"{name} crosses edges {_and(edges)}"
+
+
 def _claim(number: int, heuristics: list[str], wanted: bool) -> Callable[[_Frame], Exercise | None]:
     def build(frame: _Frame) -> Exercise | None:
         p = frame.polygon
@@ -364,7 +437,7 @@ def _claim(number: int, heuristics: list[str], wanted: bool) -> Callable[[_Frame
                 continue
             name, said = claim.name, spoken(heuristic)
             answer = f"{'yes' if verdict.ok else 'no'} ({said} claims {name})"
-            reason = why_not_inner(verdict, p.labels, name) if not verdict.ok else _inside(
+            reason = _not_inner(p, *claim.pair, verdict) if not verdict.ok else _inside(
                 p, *claim.pair)
             question = f"Is the claim of {said} an inner diagonal?"
             return _exercise(number, "claim", frame, heuristic, question, answer, reason)
@@ -391,8 +464,8 @@ def _inner(number: int) -> Callable[[_Frame], Exercise | None]:
             return None  # one that looks, on screen, other than it is
         names = [_label(p, *pair) for pair in options]
         yes = [n for n, v in zip(names, verdicts, strict=True) if v.ok]
-        reasons = [why_not_inner(v, p.labels, n)
-                   for n, v in zip(names, verdicts, strict=True) if not v.ok]
+        reasons = [_not_inner(p, *pair, v)
+                   for pair, v in zip(options, verdicts, strict=True) if not v.ok]
         reasons.append(f"{_and(yes)} {'runs' if len(yes) == 1 else 'run'} inside the polygon")
         question = f"Which of these diagonals are inner: {', '.join(names)}?"
         return _exercise(number, "inner", frame, None, question, ", ".join(yes),

@@ -461,13 +461,54 @@ def run_vertices(log: Log) -> dict[str, str]:
     return {k: next(iter(v)) for k, v in sorted(given.items()) if len(v) == 1}
 
 
+def _labels_shown(log: Log) -> tuple[str, ...]:
+    return tuple(next((state_of(e)["labels"] for e in log.events
+                       if e.kind == "enter" and is_polygon_key(e.target)), ()))
+
+
 def spoken_pseudocode(log: Log) -> tuple[PseudocodeRow, ...]:
-    """The pseudocode the panel shows for a log: :func:`pseudocode_of`, its placeholders
-    naming the run's own vertices where the picture has a vertex of that name
-    (:func:`story.pseudocode.named`)."""
-    labels = next((state_of(e)["labels"] for e in log.events
-                   if e.kind == "enter" and is_polygon_key(e.target)), ())
-    return named(pseudocode_of(log), run_vertices(log), labels)
+    """The pseudocode the panel shows for a log once the run has picked its vertices:
+    :func:`pseudocode_of`, its placeholders naming the run's own vertices where the picture
+    has a vertex of that name (:func:`story.pseudocode.named`)."""
+    return named(pseudocode_of(log), run_vertices(log), _labels_shown(log))
+
+
+#: letters for the pick before it is made, when the picture has a vertex D: the first of
+#: them neither on screen nor in the pseudocode stands for it
+_UNKNOWNS = "XYZWQRSU"
+
+
+def staged_pseudocode(log: Log) -> tuple[tuple[PseudocodeRow, ...], int | None,
+                                         tuple[PseudocodeRow, ...]]:
+    """The pseudocode before the run picks its D, the seq of the event that picks it (None:
+    none does), and after (:func:`spoken_pseudocode`). Before, the rows say the placeholder,
+    not the vertex the run will pick (review r567: "E = the candidate nearest to C" and
+    "claim BE" stood on screen before the distances were computed); a placeholder that is
+    also a vertex on screen is another letter then (the screen's D is not the rule's D)."""
+    after, rows, labels = spoken_pseudocode(log), pseudocode_of(log), _labels_shown(log)
+    seq = _picked_at(log, run_vertices(log))
+    if seq is None:
+        return after, None, after
+    vertices = {k: v for k, v in run_vertices(log).items() if k != "D"}
+    used = set(labels) | {c for row in rows for c in row.text if c.isupper()}
+    vertices["D"] = next(c for c in _UNKNOWNS if c not in used) if "D" in labels else "D"
+    return named(rows, vertices, labels), seq, after
+
+
+def _picked_at(log: Log, vertices: Mapping[str, str]) -> int | None:
+    """The seq of the event that gives the run's D its vertex: the return of its ``pick``, or
+    the claim of BD (a heuristic of one's own); None if the run gives D none."""
+    d, b = vertices.get("D"), vertices.get("B")
+    if d is None:
+        return None
+    for e in log.events:
+        if e.kind == "return" and _PLACEHOLDERS.get(e.name) == "D":
+            return e.seq
+        if e.kind == "call" and e.name == "claim":
+            ends = [k for v in (e.args or {}).values() for k in refs(v)]
+            if ends == [b, d]:
+                return e.seq
+    return None
 
 
 def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = None,
@@ -561,8 +602,9 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
 # --- the frame: left-most vertex, candidates, claim and verdict ----------------------------------
 
 
-def read_pick(caption: str, none_caption: str | None = None) -> Reading:
-    """The reading of a call that picks a vertex (its result), or finds none."""
+def read_pick(caption: str, none_caption: str | None = None, role: str | None = None) -> Reading:
+    """The reading of a call that picks a vertex (its result), or finds none; ``role``: the
+    vertex's role, if not the call's (a result's green)."""
 
     def read(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         if ret.result is None:
@@ -570,7 +612,11 @@ def read_pick(caption: str, none_caption: str | None = None) -> Reading:
                 yield walk.call_beat(Note, none_caption, call, ret)
             return
         vertex = show(ret.result)
-        yield walk.call_beat(Pick, caption.format(result=vertex), call, ret, vertex=vertex)
+        roles = call_roles(call, ret)
+        if role is not None:
+            roles.update({k: role for k in refs(ret.result)})
+        yield walk.call_beat(Pick, caption.format(result=vertex), call, ret, vertex=vertex,
+                             roles=roles)
 
     return read
 
@@ -665,7 +711,9 @@ def _read_nothing(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
 
 
 FRAME_READS: Mapping[str, Reading] = MappingProxyType({
-    "leftmost_vertex": read_pick("{result} is the left-most vertex (lowest on ties): convex"),
+    # B in blue, T's corner as T is drawn (review r567: B green, the answer's colour)
+    "leftmost_vertex": read_pick("{result} is the left-most vertex (lowest on ties): convex",
+                                 role="called"),
     "triangle_at": _read_nothing,
     "candidates_in_triangle": _read_candidates,
     "claim": _read_claim,

@@ -2713,3 +2713,94 @@ def shifting_colours(data: dict) -> list[str]:
                   and vertex not in (picked, *claimed)):
                 found.setdefault((vertex, "amber"), f"play {k} {vertex} amber, not picked")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+# --- the exercises' countdown: one number a second ----------------------------------------------
+
+#: one frame at the lecture's lowest quality (15 fps): how far a number's time may be off 1 s
+ONE_FRAME = 1 / 15
+
+
+def _countdown_number(play: dict) -> str | None:
+    """The number the countdown shows as this play starts (None: no countdown in it)."""
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if node.get("name") == "countdown":
+            return next((n["text"] for n in mobject_nodes(node) if n.get("text")), None)
+    return None
+
+
+def uneven_countdowns(data: dict) -> list[str]:
+    """The countdowns whose numbers are not each up for one second (± :data:`ONE_FRAME`) in
+    order down to 1, as ``"play 8: 15 up 15.00 s"``: one eased play for the whole wait kept
+    "15" and "1" up for 3.7 s each and rushed the others by. A number's time is the run time
+    of the plays it is shown in (the graph cannot see a rate function, so each second is a
+    play of its own)."""
+    found = []
+    numbers: list[tuple[int, str, float]] = []  # (first play, number, seconds up), this countdown
+
+    def check() -> None:
+        expected = [str(k) for k in range(len(numbers), 0, -1)]
+        if numbers and [n for _, n, _ in numbers] != expected:
+            found.append(f"play {numbers[0][0]}: counts {', '.join(n for _, n, _ in numbers)}")
+        found.extend(f"play {k}: {n} up {t:.2f} s" for k, n, t in numbers
+                     if abs(t - 1.0) > ONE_FRAME)
+        numbers.clear()
+
+    for k, play in enumerate(data["plays"]):
+        number = _countdown_number(play)
+        if number is None:
+            check()
+        elif numbers and numbers[-1][1] == number:
+            first, _, up = numbers[-1]
+            numbers[-1] = (first, number, up + play["run_time"])
+        else:
+            numbers.append((k, number, play["run_time"]))
+    check()
+    return found
+
+
+# --- an exercise's answer: no number alone on a line -------------------------------------------
+
+_LONE_NUMBER = re.compile(r"[\d.,°%\s]+")
+
+
+def lone_numbers(data: dict) -> list[str]:
+    """The answers' lines that hold a number alone, as ``"play 9: 25.5"``: read by itself,
+    "25.5" under "before D at" is a figure with no words (review r567)."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for node in mobject_nodes(anim.get("mobject") or {}):
+                if node.get("name") != "answer":
+                    continue
+                found += [f"play {k}: {n['text']}" for n in mobject_nodes(node)
+                          if n.get("text") and _LONE_NUMBER.fullmatch(n["text"])]
+    return found
+
+
+# --- a run's pseudocode does not give its claim away -------------------------------------------
+
+_CLAIM_CAPTION = re.compile(r"Claim: ([A-Z]+) is an inner diagonal")
+
+
+def _code_rows(play: dict) -> Iterator[str]:
+    """The texts of the pseudocode rows a play brings in."""
+    for anim in play["animations"]:
+        if anim["type"] in INCOMING:
+            for node in mobject_nodes(anim.get("mobject") or {}):
+                if str(node.get("name", "")).startswith("code:") and node.get("text"):
+                    yield node["text"]
+
+
+def claims_given_away(data: dict) -> list[str]:
+    """A run's claim named by a pseudocode row shown before the run makes it, as
+    ``"play 75: 'claim BE' before play 91's claim"``: "E = the candidate nearest to C" and
+    "claim BE" stood in the panel before the distances were computed (review r567)."""
+    found, shown = [], []
+    for k, play in enumerate(data["plays"]):
+        claimed = _CLAIM_CAPTION.fullmatch(play.get("subcaption") or "")
+        if claimed:
+            found += [f"play {at}: {text!r} before play {k}'s claim" for at, text in shown
+                      if claimed[1] in re.findall(r"\b[A-Z]+\b", text)]
+            shown = []
+        shown += [(k, text) for text in _code_rows(play)]
+    return found

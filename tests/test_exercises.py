@@ -57,12 +57,15 @@ def test_a_picks_reason_says_what_its_numbers_are():
 
     steps = [("D", 15.12), ("E", 25.54), ("F", 30.0)]
     said = {h: _pick_reason(h, steps) for h in PICKABLE}
-    assert said["scaling"] == "the water spilled at B reaches D first: 15.1 from B, before E " \
-        "at 25.5 and F at 30.0"
+    # a length is left unsaid: in the polygon's units it meant nothing to a class (review r567:
+    # "15.1 from B, before D at 25.5")
+    assert said["scaling"] == "the water spilled at B reaches D first, before E and F"
+    assert said["translation-correct"] == "the line parallel to AC, swept from B, reaches D " \
+        "first, before E and F"
     assert said["rotation"] == "the clock hand at B, set to A, passes D first: after turning " \
         "15.1°, before E at 25.5° and F at 30.0°"
-    assert said["scaling-correct"] == "the water rising from the shore AC wets D at height " \
-        "15.1 above AC and E at 25.5 before F at 30.0, so F stays dry longest"
+    assert said["scaling-correct"] == "the water rising from the shore AC wets D and E before " \
+        "F, so F stays dry longest"
     assert all(said_numbers(r) == [] for r in said.values()), said
     # the rule fails on the old reasons, numbers in brackets with no meaning
     assert said_numbers("the line parallel to AC, swept from B, reaches E (after 15.1) before "
@@ -84,7 +87,7 @@ def check_entry(number, question, spec, picture, answer, reason) -> str:
         assert heuristic in PICKABLE
         claim = find_diagonal(p, heuristic)
         assert claim.u.label == "B" and answer == claim.v.label
-        assert (f" {answer} first: " in reason  # the reason says the winner's number first
+        assert (f" {answer} first" in reason  # the reason names the winner first
                 or reason.endswith(f"so {answer} stays dry longest"))
         assert said_numbers(reason) == [], reason
         return "pick"
@@ -95,8 +98,8 @@ def check_entry(number, question, spec, picture, answer, reason) -> str:
         verdict = is_inner_diagonal(p, *claim.pair)
         expected = "yes" if verdict else "no"
         assert answer == f"{expected} ({m[1]} claims {claim.name})"
-        if not verdict:  # the crossed edge by name, no coordinates
-            assert reason == why_not_inner(verdict, p.labels, claim.name)
+        if not verdict:  # the crossed edges by name, no coordinates
+            assert_why_not(p, claim.name, verdict, reason)
         return "claim"
     m = re.fullmatch(r"Which of these diagonals are inner: (.+)\?", question)
     assert m, question
@@ -108,8 +111,24 @@ def check_entry(number, question, spec, picture, answer, reason) -> str:
     for o in options:
         verdict = is_inner_diagonal(p, _index(p, o[0]), _index(p, o[1]))
         if not verdict:
-            assert why_not_inner(verdict, p.labels, o) in reason
+            assert_why_not(p, o, verdict, reason)
     return "inner"
+
+
+def assert_why_not(p, name: str, verdict, reason: str) -> None:
+    """The reason says why ``name`` is not inner: every edge it crosses, by name (review
+    r567: of AC's three crossings, only L–M was said), or the vertex it meets."""
+    from shapely.geometry import LineString
+
+    if verdict.code != "crosses":
+        assert why_not_inner(verdict, p.labels, name) in reason
+        return
+    i, j = _index(p, name[0]), _index(p, name[1])
+    claim = LineString([p.points[i], p.points[j]])
+    crossed = [f"{p.labels[k]}–{p.labels[m]}" for k, m in p.edges() if not {i, j} & {k, m}
+               and claim.crosses(LineString([p.points[k], p.points[m]]))]
+    assert crossed and f"{name} crosses edge" in reason, reason
+    assert all(edge in reason for edge in crossed), (crossed, reason)
 
 
 @pytest.fixture(scope="module")
@@ -299,3 +318,15 @@ def test_a_pick_is_not_a_near_tie_on_screen():
                     d = e.polygon.label_of(e.answer)
                     assert front_gap(e.polygon, e.triangle, e.candidates, e.heuristic, d) >= \
                         MIN_CLEARANCE * _scale(e.polygon), (seed, e.spec)
+
+
+def test_a_diagonal_that_crosses_several_edges_names_each():
+    """The lecture's third exercise: AC leaves P through L–M, comes back through F–G and
+    leaves again through E–F; the answer said "AC crosses edge L–M" alone (review r567)."""
+    e = make_exercises(3, 2022)[2]
+    assert e.kind == "inner"
+    assert "AC crosses edges L–M, F–G and E–F" in e.reason, e.reason
+    # the old reason fails the rule
+    with pytest.raises(AssertionError):
+        assert_why_not(e.polygon, "AC", is_inner_diagonal(e.polygon, *e.options[0]),
+                       "AC crosses edge L–M; BF and BM run inside the polygon")

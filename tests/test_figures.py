@@ -566,8 +566,11 @@ def test_the_recap_draws_each_algorithm_s_own_triangulation_with_the_bound_its_c
                            chapter.scene_class)
     card = next(s for s in cls.__new__(cls).chapter_segments()
                 if isinstance(s, Card) and s.figure == Figure("three-triangulations"))
-    for line, (_, bound) in zip(card.lines, RECAPPED, strict=True):
+    for line, (name, bound) in zip(card.lines, RECAPPED, strict=True):
         assert line.rstrip(".").endswith(bound) or f"{bound}." in line
+        # and by the name its picture's legend gives it ("Faster ear clipping" in the legend
+        # was "Ear clipping with ear status kept" in the words, review r567)
+        assert line.startswith(spoken(name, start=True)), line
 
 
 @pytest.mark.parametrize("kind", ["monotone-pieces", "measured", "delaunay-circle",

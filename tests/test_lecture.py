@@ -31,6 +31,7 @@ from tests.reading_rules import (
     bare_ticks,
     broken_counts,
     broken_summaries,
+    claims_given_away,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -53,6 +54,7 @@ from tests.reading_rules import (
     labels_under_tools,
     labels_without_contrast,
     leftover_verdicts,
+    lone_numbers,
     morphed_water,
     notes_over_fills,
     notes_under_moving_tools,
@@ -73,6 +75,7 @@ from tests.reading_rules import (
     swept_outside_polygon,
     tails_beside_labels,
     ticks_outside,
+    uneven_countdowns,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
@@ -523,6 +526,13 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert unspoken_words(data) == [], chapter.slug
     # issue 22 item 6: time to think, and the answer beside the picture, not over it
     assert rushed_questions(data) == [], chapter.slug
+    # and the countdown ticks once a second, each number up 1 s (it was eased: 15 and 1 stayed
+    # 3.7 s each, the rest rushed by)
+    assert uneven_countdowns(data) == [], chapter.slug
+    # an answer's number keeps to its words ("25.5" stood alone on the answer's last line)
+    assert lone_numbers(data) == [], chapter.slug
+    # a run's pseudocode names its pick once picked ("claim BE" stood there from the start)
+    assert claims_given_away(data) == [], chapter.slug
     assert answers_over_pictures(data) == [], chapter.slug
     # issue 22 items 5 and 6: an exercise's polygon has room, its labels clear of each other
     # and of the edges, as drawn

@@ -46,15 +46,23 @@ class Recap(LectureScene):
                 f"{_names(FAILING, first=True)} all claim {wrong_claim}.",
                 f"{why}: one polygon of five vertices defeats all three.",
                 "Their motion leaves P before it reaches the vertex it picks."),
-                Figure("claims", POLYGON, heuristics=FAILING)),
+                Figure("claims", POLYGON, heuristics=()),
+                line_figures=(Figure("claims", POLYGON, heuristics=FAILING),)),
             Card("Recap: the rules that hold", (
                 f"{_names(HOLDING)} claim {right_claim}, inside P.",
                 "Their motion stays inside T until it meets the first candidate.",
                 f"Gravity claims {gravity_claim}: its ball and band never leave P."),
-                Figure("claims", POLYGON, heuristics=(*HOLDING, "gravity"))),
+                # P alone, then each claim with the line that says it, one at a time: BE
+                # and EC both hug B–C and would read as one path
+                Figure("claims", POLYGON, heuristics=()),
+                line_figures=(Figure("claims", POLYGON, heuristics=HOLDING), None,
+                              Figure("claims", POLYGON, heuristics=("gravity",)))),
             Card("Recap: the algorithms", (
-                "Divide and conquer: O(n) per diagonal, n − 3 diagonals: O(n²).",
-                "Ear clipping with ear status kept: O(n²).",
-                "Monotone pieces and a stack: O(n log n). Chazelle: O(n), not practical."),
+                # each named as its picture's legend names it (one name for one method)
+                f"{spoken('divide-and-conquer', start=True)}: O(n) per diagonal, "
+                "n − 3 diagonals: O(n²).",
+                f"{spoken('ear-clipping', start=True)}, each vertex's ear status kept: O(n²).",
+                f"{spoken('monotone', start=True)}, each piece cut with a stack: O(n log n). "
+                "Chazelle: O(n), not practical."),
                 Figure("three-triangulations")),
         )
