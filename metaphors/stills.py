@@ -3,7 +3,7 @@ candidates lit, the diagonals a question names dashed, the question as a title l
 
 A still is a one-frame Scene (nothing is played), rendered with ``format=png``.
 Colours come from the theme: T and its corners in the *called* colour, candidates in the
-*argument* colour, the named diagonals *idle*.
+*candidate* colour (the legend's neutral one, as in the runs), the named diagonals *idle*.
 """
 
 from __future__ import annotations
@@ -52,7 +52,7 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME,
     for k in (a, b, c):
         markers[k].set_color(theme.called)
     for k in exercise.candidates:
-        markers[k].set_color(theme.argument)
+        markers[k].set_color(theme.candidate)
         markers[k][0].scale(1.5)
     title = _text(exercise.title, theme.caption_size + 4, theme.ink, theme)
     title.move_to((0, TITLE_Y, 0))
@@ -60,7 +60,7 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME,
     legend = VGroup(
         _text(f"T = {''.join(p.labels[k] for k in (a, b, c))}", theme.label_size, theme.called,
               theme),
-        _text(f"candidates in T: {names}", theme.label_size, theme.argument, theme),
+        _text(f"candidates in T: {names}", theme.label_size, theme.candidate, theme),
     ).arrange(buff=0.6)
     legend.move_to((center[0], LEGEND_Y, 0))
     return [polygon_mobject(p, frame, theme), t, *options, markers, title, legend]
