@@ -2395,3 +2395,51 @@ def far_verdicts(data: dict) -> list[str]:
                 if far > FARTHEST_MARK:
                     found.append(f"play {k} {node['name']} {far:.2f} from its claim")
     return found
+
+
+# --- a vertex label stands clear of its polygon's edges -----------------------------------------
+
+#: the least gap between a vertex label and an edge of the polygon it names a vertex of
+#: (1.5 % of the frame's height): nearer, the letter reads as sitting on the line (chapter 2's
+#: K on edge L–K, M on edge A–M)
+LEAST_LABEL_EDGE_GAP = 0.12
+#: each picture's polygon and the names of its vertex labels: a run's or an analysis's board
+#: (a marker a vertex), a card's figure (a group of markers, the holes' one by one)
+_LABELLED = ((("polygon", "analysis:polygon"), ("vertex:",)),
+             (("figure:polygon",), ("figure:vertices", "figure:hole-vertex")))
+
+
+def _marker_labels(name: str, node: dict) -> Iterator[tuple[str, tuple[float, float, float, float]]]:
+    """(text, box) of each vertex label a marker node (a dot and a label) or a group of them
+    (a figure's) shows."""
+    markers = node.get("submobjects", ()) if name == "figure:vertices" else [node]
+    for marker in markers:
+        for part in marker.get("submobjects", ()):
+            if part.get("box") and (part.get("text") or "").strip():
+                yield part["text"], tuple(part["box"])
+
+
+def labels_on_edges(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> list[str]:
+    """The vertex labels nearer than ``margin`` to an edge of the polygon drawn in the same
+    picture (or crossed by it), as ``"play 3 K 0.03 from figure:polygon"``: each label and
+    polygon once, at the first play that shows it so, the labels and the outline as
+    :func:`_shown_after_plays` follows them (a thing faded out is gone, a polygon coming in
+    begins a new picture). A letter on a line reads as part of it, or names the wrong vertex."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    found: dict[tuple[str, str], str] = {}
+    for polygons, labels in _LABELLED:
+        for k, shown in _shown_after_plays(data, (*polygons, *labels), many=labels[1:]):
+            outlines = [(name, LineString(s)) for name, node in shown.items()
+                        if name in polygons for s in _segments(node)]
+            for name, node in shown.items():
+                if not name.startswith(labels):
+                    continue
+                for text, box in _marker_labels(name, node):
+                    for owner, edge in outlines:
+                        gap = edge.distance(area(*box))
+                        if gap < margin - 1e-9:
+                            found.setdefault((text, owner),
+                                             f"play {k} {text} {gap:.2f} from {owner}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
