@@ -28,8 +28,8 @@ from metaphors.layout import (
     Obstacles,
     Rect,
     Segment,
-    around,
     clear,
+    dot_gaps,
     rects_at,
     ring_edges,
 )
@@ -63,25 +63,25 @@ def outward(before: np.ndarray, at: np.ndarray, after: np.ndarray) -> np.ndarray
     return -s / np.linalg.norm(s) if convex else s / np.linalg.norm(s)
 
 
-def _turned(d: np.ndarray, degrees: float) -> np.ndarray:
-    t = np.radians(degrees)
-    return np.array([np.cos(t) * d[0] - np.sin(t) * d[1], np.sin(t) * d[0] + np.cos(t) * d[1]])
-
-
 def places_round(at: np.ndarray, away: np.ndarray, size: tuple[float, float]) -> np.ndarray:
     """The centres a label ``size`` may take round its vertex ``at``, nearest first (its box's
     nearest side :data:`GAPS` away), then nearest the direction ``away`` (:data:`TURNS`)."""
-    return around([at], [_turned(away, turn) for turn in TURNS], GAPS, size=size)
+    t = np.radians(TURNS)
+    units = np.column_stack([np.cos(t) * away[0] - np.sin(t) * away[1],
+                             np.sin(t) * away[0] + np.cos(t) * away[1]])
+    # as :func:`metaphors.layout.around` puts them, at once: the box's reach along each way
+    reach = np.abs(units) @ (np.asarray(size, dtype=float) / 2)
+    steps = np.asarray(GAPS)[:, None] + reach[None, :]
+    return (np.asarray(at, dtype=float)[:2] + steps[..., None] * units[None]).reshape(-1, 2)
 
 
 def _own(centres: np.ndarray, size: tuple[float, float], k: int,
          dots: Sequence[np.ndarray]) -> np.ndarray:
     """Which label boxes stand nearer their own dot (``dots[k]``) than any other: a label
     midway between two dots names neither."""
-    boxes = shapely.box(*rects_at(centres, size).T)
-    near = [shapely.distance(boxes, shapely.Point(*np.asarray(p, float)[:2])) for p in dots]
-    others = np.min([d for j, d in enumerate(near) if j != k], axis=0, initial=np.inf)
-    return np.asarray(near[k] < others, dtype=bool)
+    near = dot_gaps(rects_at(centres, size), [(float(p[0]), float(p[1]), 0.0) for p in dots])
+    others = np.delete(near, k, axis=1).min(axis=1, initial=np.inf)
+    return np.asarray(near[:, k] < others, dtype=bool)
 
 
 def best_place(centres: np.ndarray, size: tuple[float, float], obstacles: Obstacles,
@@ -91,11 +91,15 @@ def best_place(centres: np.ndarray, size: tuple[float, float], obstacles: Obstac
     ``margin`` clear of ``obstacles`` (and ``own``: nearer its own dot) whose box is not
     ``inside`` (the polygon's region: a label outside reads on the background, not over a
     fill), else the first clear one, else the one with the widest gap."""
-    gaps = obstacles.gaps(rects_at(centres, size))
-    ok = clear(centres, size, obstacles, margin, FRAME_AREA) & (
-        np.ones(len(centres), bool) if own is None else own)
+    rects = rects_at(centres, size)
+    gaps = obstacles.gaps(rects)
+    left, bottom, right, top = FRAME_AREA
+    ok = ((gaps >= margin - 1e-9) & (rects[:, 0] >= left) & (rects[:, 1] >= bottom)
+          & (rects[:, 2] <= right) & (rects[:, 3] <= top))
+    if own is not None:
+        ok &= own
     if inside is not None and ok.any():
-        outside = ok & ~shapely.intersects(shapely.box(*rects_at(centres, size).T), inside)
+        outside = ok & ~shapely.intersects(shapely.box(*rects.T), inside)
         if outside.any():
             return int(np.argmax(outside))
     return int(np.argmax(ok)) if ok.any() else int(np.argmax(gaps))
@@ -168,8 +172,7 @@ def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
 def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
                    drawn: Sequence[Segment], new: Sequence[Segment],
                    dot: float = THEME.dot_radius, apart: float = MARGIN) -> dict[str, np.ndarray]:
-    """The labels that the ``new`` segments come within :data:`EDGE_MARGIN` of (a cut along
-    them may become an edge: the fruit's), each with a new
+    """The labels that the ``new`` segments come within :data:`MARGIN` of, each with a new
     centre: the first place round its vertex (:func:`places_round`: out along the bisector
     of its ring, each ring a list of labels, their dots where the markers stand now)
     :data:`EDGE_MARGIN` clear of the segments ``drawn`` (the edges, the lines on the
@@ -186,7 +189,7 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
     moved: dict[str, np.ndarray] = {}
     for ring in rings:
         for i, name in enumerate(ring):
-            if name not in boxes or lines.gaps(np.array([boxes[name]]))[0] >= EDGE_MARGIN:
+            if name not in boxes or lines.gaps(np.array([boxes[name]]))[0] >= MARGIN:
                 continue
             size = (boxes[name][2] - boxes[name][0], boxes[name][3] - boxes[name][1])
             d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])
