@@ -176,9 +176,9 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
     centre: the first place round its vertex (:func:`places_round`: out along the bisector
     of its ring, each ring a list of labels, their dots where the markers stand now)
     :data:`EDGE_MARGIN` clear of the segments ``drawn`` (the edges, the lines on the
-    picture) and ``new`` and of the dots, else the first :data:`MARGIN` clear; and clear of
-    the other labels (``apart`` from those: more than :data:`MARGIN` where labels crowd); a
-    label with no clear place stays."""
+    picture) and ``new``, of the dots and of the other labels, else the first :data:`MARGIN`
+    clear of those and ``apart`` from the other labels (more than :data:`MARGIN` where labels
+    crowd); a label with no clear place stays."""
     at = {name: np.asarray(m[0].get_center(), dtype=float)[:2] for name, m in markers.items()}
     boxes = {name: tuple(rects_at(m[1].get_center()[:2], (m[1].width, m[1].height))[0])
              for name, m in markers.items() if len(m) > 1}
@@ -194,11 +194,11 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
             size = (boxes[name][2] - boxes[name][0], boxes[name][3] - boxes[name][1])
             d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])
             tried = places_round(at[name], d, size)
-            others = clear(tried, size, Obstacles(boxes=[box for other, box in boxes.items()
-                                                          if other != name]), apart)
-            ok = clear(tried, size, base, EDGE_MARGIN) & others
+            others = Obstacles(boxes=[box for other, box in boxes.items() if other != name])
+            ok = (clear(tried, size, base, EDGE_MARGIN)
+                  & clear(tried, size, others, max(apart, EDGE_MARGIN)))
             if not ok.any():
-                ok = clear(tried, size, base, MARGIN) & others
+                ok = clear(tried, size, base, MARGIN) & clear(tried, size, others, apart)
             if ok.any():
                 moved[name] = tried[int(np.argmax(ok))]
                 boxes[name] = tuple(rects_at(moved[name], size)[0])
