@@ -84,6 +84,21 @@ def _own(centres: np.ndarray, size: tuple[float, float], k: int,
     return np.asarray(near[:, k] < others, dtype=bool)
 
 
+def _seen(centres: np.ndarray, at: np.ndarray, edges: Sequence[Segment]) -> np.ndarray:
+    """Which centres the vertex ``at`` sees: the line to each crosses none of ``edges``
+    except at ``at`` itself (a label across an edge, however clear of it, names what lies
+    beyond it: chapter 4's G stood 0.5 off, outside edge B–C)."""
+    away = [(a, b) for a, b in edges
+            if min(np.linalg.norm(np.asarray(a)[:2] - at), np.linalg.norm(np.asarray(b)[:2] - at))
+            > 1e-9]
+    if not away:
+        return np.ones(len(centres), dtype=bool)
+    walls = shapely.union_all([shapely.LineString([np.asarray(a)[:2], np.asarray(b)[:2]])
+                               for a, b in away])
+    rays = shapely.linestrings(np.stack([np.broadcast_to(at, centres.shape), centres], axis=1))
+    return ~np.asarray(shapely.intersects(rays, walls), dtype=bool)
+
+
 def best_place(centres: np.ndarray, size: tuple[float, float], obstacles: Obstacles,
                margin: float, inside: shapely.Geometry | None = None,
                own: np.ndarray | None = None) -> int:
@@ -119,8 +134,9 @@ def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tup
     its holes': ``sizes`` runs over their vertices in that order): the nearest place round
     its vertex, nearest its outward bisector, outside the polygon if one is free there
     (:func:`best_place`), :data:`EDGE_MARGIN` clear of every ring's edges, every segment of
-    ``segments`` (lines the picture draws), every dot and every label placed before, and
-    nearer its own dot than any other. Deterministic."""
+    ``segments`` (lines the picture draws), every dot and every label placed before,
+    nearer its own dot than any other, and seen from it across no edge or line
+    (:func:`_seen`). Deterministic."""
     pts = [[np.asarray(c, dtype=float)[:2] for c in ring] for ring in rings]
     dots = [p for ring in pts for p in ring]
     edges: list[Segment] = [edge for ring in pts for edge in ring_edges(ring)]
@@ -132,8 +148,9 @@ def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tup
     for k, (ring, i) in enumerate([(r, i) for r in pts for i in range(len(r))]):
         away = outward(ring[i - 1], ring[i], ring[(i + 1) % len(ring)])
         tried = places_round(ring[i], away, sizes[k])
+        mine = _own(tried, sizes[k], k, dots) & _seen(tried, ring[i], edges)
         centre = tried[best_place(tried, sizes[k], base.plus(boxes=placed), EDGE_MARGIN,
-                                  region, _own(tried, sizes[k], k, dots))]
+                                  region, mine)]
         placed.append(tuple(rects_at(centre, sizes[k])[0]))
         centres.append(centre)
     return centres
