@@ -245,12 +245,9 @@ def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
                   theme.ink)]
     else:
         words = [(f"the circle of {name} holds no other vertex", theme.ink)]
-    # the labels clear of the triangles' edges too: G stood where three of them meet
-    sides = [(t[k], t[(k + 1) % 3]) for t in constrained_delaunay(polygon) for k in range(3)]
-    vertices = tag(placed_vertex_markers(polygon, frame, theme, sides), "idle",
-                   "figure:vertices")
     return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *edges,
-            chosen, ring, vertices, *marks, figure_caption(box, theme, *words)]
+            chosen, ring, tag(placed_vertex_markers(polygon, frame, theme), "idle",
+                              "figure:vertices"), *marks, figure_caption(box, theme, *words)]
 
 
 # --- the recap: three triangulations -------------------------------------------------------------
