@@ -70,7 +70,7 @@ class Board:
 
     def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
                  theme: Theme = THEME, box: Box = METAPHOR, holes=(), *,
-                 captions: CaptionTrack):
+                 captions: CaptionTrack, claims: Sequence[tuple[str, str]] = ()):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
@@ -79,9 +79,14 @@ class Board:
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
         self.outline = tag(polygon_mobject(self.polygon, self.frame, theme, self.holes), "idle",
                            "polygon")
+        # the labels clear of the claims the run will draw (``claims``: pairs of labels), as
+        # of the edges: a label moved off a claim drawn on a turned picture would turn back
+        # upright beside it, not where it was placed
+        pairs = [(self.polygon.labels.index(u), self.polygon.labels.index(v))
+                 for u, v in claims if u in self.polygon.labels and v in self.polygon.labels]
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}").set_z_index(LABEL_Z)
-            for label, m in measured_markers(self.polygon, self.holes, self.frame, theme)
+            for label, m in measured_markers(self.polygon, self.holes, self.frame, theme, pairs)
         }
         self.where: dict[str, tuple[float, ...]] = {
             label: p for label, p in zip(labels, self.polygon.points, strict=True)}

@@ -37,9 +37,10 @@ from geometry.monotone_pieces import monotone_pieces
 from geometry.polygon import Polygon
 from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
-from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, vertex_markers
+from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_plots import MARKS, Area, Series, axis_names, line_plot, point_mark
+from metaphors.labels import placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
@@ -128,7 +129,7 @@ def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
     else:
         words = [("P is y-monotone already: one piece", theme.ink)]
     return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *tints,
-            *lines, tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices"),
+            *lines, tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices"),
             *marks, figure_caption(box, theme, *words)]
 
 
@@ -264,8 +265,8 @@ def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
     else:
         words = [(f"the circle of {name} holds no other vertex", theme.ink)]
     return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *edges,
-            chosen, ring, tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices"),
-            *marks, figure_caption(box, theme, *words)]
+            chosen, ring, tag(placed_vertex_markers(polygon, frame, theme), "idle",
+                              "figure:vertices"), *marks, figure_caption(box, theme, *words)]
 
 
 # --- the recap: three triangulations -------------------------------------------------------------

@@ -40,10 +40,11 @@ from geometry.polygon import Polygon
 from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
 from metaphors import figure_faster, method_figures
-from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject, vertex_markers
+from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_metaphors import metaphor_parts
 from metaphors.figure_plots import Area, Series, line_plot
+from metaphors.labels import placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
@@ -90,7 +91,7 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     polygon = read_polygon(figure.polygon or polygon_spec)
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
-    vertices = tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
+    vertices = tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
     if figure.kind == "metaphor":  # its run is read from the polygon's spec, not the polygon
         under, over, said = metaphor_parts(figure.heuristic, figure.polygon or polygon_spec,
                                            frame, theme, _bounds()) if polygon.n >= 4 else (
@@ -203,7 +204,7 @@ def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
     shown = typeset.text(word.capitalize(), font=theme.font, size=theme.label_size,
                          colour=theme.ink)
     outline = [frame.to_scene(p)[:2] for p in polygon.points]
-    labels = [_box(marker[1]) for marker in vertex_markers(polygon, frame, theme)]
+    labels = [_box(marker[1]) for marker in placed_vertex_markers(polygon, frame, theme)]
     for side in (DOWN, UP, LEFT, RIGHT, DL, DR, UL, UR):
         for gap in (0.3, 0.55, 0.8):  # beyond the ring, then further out
             shown.move_to(at + side * (gap + (shown.width if side[0] else shown.height) / 2))

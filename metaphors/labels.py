@@ -1,14 +1,16 @@
-"""Vertex labels placed by measuring: each outside its vertex along the angle's bisector,
-turned or pushed further out until it touches no edge, no dot and no label placed before.
+"""Vertex labels placed by measuring: every label of a drawn polygon (a run's board, an
+analysis's stage, a card's figure, an exercise) in the nearest free place round its vertex,
+outside the polygon where it can stand there, clear of every edge, every dot and every label
+placed before by :data:`EDGE_MARGIN`, the outward bisector of its angle tried first.
 
 :func:`metaphors.drawing.vertex_markers` puts a label a fixed step away from the polygon's
-centre, which crowds the labels of a needle or a notch and can lay one on an edge; the
-exercises, read by a class with no run to explain them, place theirs here.
+centre, which crowds the labels of a needle or a notch and can lay one on an edge (chapter
+2's K on edge L–K, M on edge A–M).
 
 >>> corners = [np.array(p, dtype=float) for p in [(0, 0), (4, 0), (4, 3), (0, 3)]]
 >>> at = place_labels(corners, [(0.2, 0.2)] * 4, [])
 >>> [tuple(round(float(c), 2) for c in p) for p in at]  # out along each corner's bisector
-[(-0.18, -0.18), (4.18, -0.18), (4.18, 3.18), (-0.18, 3.18)]
+[(-0.23, -0.23), (4.23, -0.23), (4.23, 3.23), (-0.23, 3.23)]
 """
 
 from __future__ import annotations
@@ -17,17 +19,18 @@ from collections.abc import Sequence
 from itertools import pairwise
 
 import numpy as np
+import shapely
 from manim import Dot, Mobject, VGroup
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame
 from metaphors.layout import (
+    FRAME_AREA,
     Obstacles,
     Rect,
     Segment,
-    around,
     clear,
-    first_clear,
+    dot_gaps,
     rects_at,
     ring_edges,
 )
@@ -35,13 +38,17 @@ from metaphors.theme import THEME, Theme
 from rendering import typeset
 from story.beats import Hole
 
-#: the least gap (scene units) between a label and an edge, a dot or another label
+#: the least gap (scene units) a moved label keeps from a line drawn later (a diagonal), a
+#: dot or another label
 MARGIN = 0.05
-#: the first distance tried from the vertex to the label's centre, and the farthest
-NEAREST, FARTHEST, STEP = 0.26, 0.62, 0.04
-#: the turns tried away from the bisector (degrees), nearest first
-TURNS = (0, 20, -20, 40, -40, 60, -60, 90, -90, 120, -120, 150, -150)
-
+#: the least gap between a placed label and an edge of its polygon, a dot or another label:
+#: 1.5 % of the frame's height (8 units); nearer, the letter reads as sitting on the line
+EDGE_MARGIN = 0.12
+#: the gaps tried between a vertex and its label's box (the side nearest it), nearest first:
+#: from just clear of the dot (:data:`metaphors.theme.Theme.dot_radius` and a margin) out
+GAPS = tuple(round(0.18 + 0.03 * i, 6) for i in range(15))
+#: the turns tried away from the outward bisector (degrees), nearest first: every 15°
+TURNS = tuple(sorted(range(-180, 180, 15), key=lambda t: (abs(t), -t)))
 
 
 def outward(before: np.ndarray, at: np.ndarray, after: np.ndarray) -> np.ndarray:
@@ -57,46 +64,94 @@ def outward(before: np.ndarray, at: np.ndarray, after: np.ndarray) -> np.ndarray
     return -s / np.linalg.norm(s) if convex else s / np.linalg.norm(s)
 
 
-def _turned(d: np.ndarray, degrees: float) -> np.ndarray:
-    t = np.radians(degrees)
-    return np.array([np.cos(t) * d[0] - np.sin(t) * d[1], np.sin(t) * d[0] + np.cos(t) * d[1]])
+def places_round(at: np.ndarray, away: np.ndarray, size: tuple[float, float]) -> np.ndarray:
+    """The centres a label ``size`` may take round its vertex ``at``, nearest first (its box's
+    nearest side :data:`GAPS` away), then nearest the direction ``away`` (:data:`TURNS`)."""
+    t = np.radians(TURNS)
+    units = np.column_stack([np.cos(t) * away[0] - np.sin(t) * away[1],
+                             np.sin(t) * away[0] + np.cos(t) * away[1]])
+    # as :func:`metaphors.layout.around` puts them, at once: the box's reach along each way
+    reach = np.abs(units) @ (np.asarray(size, dtype=float) / 2)
+    steps = np.asarray(GAPS)[:, None] + reach[None, :]
+    return (np.asarray(at, dtype=float)[:2] + steps[..., None] * units[None]).reshape(-1, 2)
 
 
-#: the distances tried from a vertex to its label's centre, nearest first
-RADII = tuple(round(NEAREST + STEP * i, 6) for i in range(round((FARTHEST - NEAREST) / STEP) + 1))
+def _own(centres: np.ndarray, size: tuple[float, float], k: int,
+         dots: Sequence[np.ndarray]) -> np.ndarray:
+    """Which label boxes stand nearer their own dot (``dots[k]``) than any other: a label
+    midway between two dots names neither."""
+    near = dot_gaps(rects_at(centres, size), [(float(p[0]), float(p[1]), 0.0) for p in dots])
+    others = np.delete(near, k, axis=1).min(axis=1, initial=np.inf)
+    return np.asarray(near[:, k] < others, dtype=bool)
+
+
+def _seen(centres: np.ndarray, at: np.ndarray, edges: Sequence[Segment]) -> np.ndarray:
+    """Which centres the vertex ``at`` sees: the line to each crosses none of ``edges``
+    except at ``at`` itself (a label across an edge, however clear of it, names what lies
+    beyond it: chapter 4's G stood 0.5 off, outside edge B–C)."""
+    away = [(a, b) for a, b in edges
+            if min(np.linalg.norm(np.asarray(a)[:2] - at), np.linalg.norm(np.asarray(b)[:2] - at))
+            > 1e-9]
+    if not away:
+        return np.ones(len(centres), dtype=bool)
+    walls = shapely.union_all([shapely.LineString([np.asarray(a)[:2], np.asarray(b)[:2]])
+                               for a, b in away])
+    rays = shapely.linestrings(np.stack([np.broadcast_to(at, centres.shape), centres], axis=1))
+    return ~np.asarray(shapely.intersects(rays, walls), dtype=bool)
+
+
+def best_place(centres: np.ndarray, size: tuple[float, float], obstacles: Obstacles,
+               margin: float, inside: shapely.Geometry | None = None,
+               own: np.ndarray | None = None) -> int:
+    """The index of the place to take among ``centres`` (in order of preference): the first
+    ``margin`` clear of ``obstacles`` (and ``own``: nearer its own dot) whose box is not
+    ``inside`` (the polygon's region: a label outside reads on the background, not over a
+    fill), else the first clear one, else the one with the widest gap."""
+    rects = rects_at(centres, size)
+    gaps = obstacles.gaps(rects)
+    left, bottom, right, top = FRAME_AREA
+    ok = ((gaps >= margin - 1e-9) & (rects[:, 0] >= left) & (rects[:, 1] >= bottom)
+          & (rects[:, 2] <= right) & (rects[:, 3] <= top))
+    if own is not None:
+        ok &= own
+    if inside is not None and ok.any():
+        outside = ok & ~shapely.intersects(shapely.box(*rects.T), inside)
+        if outside.any():
+            return int(np.argmax(outside))
+    return int(np.argmax(ok)) if ok.any() else int(np.argmax(gaps))
 
 
 def place_labels(corners: Sequence[np.ndarray], sizes: Sequence[tuple[float, float]],
                  segments: Sequence[Segment], dot: float = THEME.dot_radius) -> list[np.ndarray]:
-    """The centre of each corner's label (``sizes``: each label's width and height): the
-    nearest to its corner, and then to its bisector, that keeps :data:`MARGIN` from every
-    edge of the polygon, every segment of ``segments`` (diagonals drawn), every dot and every
-    label placed before; the bisector's nearest place if none does. Deterministic."""
+    """The centre of each corner's label (``sizes``: each label's width and height), as
+    :func:`place_ring_labels` places them on a polygon of one ring. Deterministic."""
     return place_ring_labels([corners], sizes, segments, dot)
 
 
 def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tuple[float, float]],
-                      segments: Sequence[Segment], dot: float = THEME.dot_radius,
-                      first: Sequence[np.ndarray] | None = None) -> list[np.ndarray]:
-    """:func:`place_labels` for a polygon of several rings (its outer ring, then its holes':
-    ``sizes`` and ``first`` run over their vertices in that order): each label clear of every
-    ring's edges and dots. ``first``: a place to try for each label before the measured ones
-    (where a label has always stood, if it is clear); the first of those if none is."""
+                      segments: Sequence[Segment], dot: float = THEME.dot_radius
+                      ) -> list[np.ndarray]:
+    """The centre of each vertex's label on a polygon of several rings (its outer ring, then
+    its holes': ``sizes`` runs over their vertices in that order): the nearest place round
+    its vertex, nearest its outward bisector, outside the polygon if one is free there
+    (:func:`best_place`), :data:`EDGE_MARGIN` clear of every ring's edges, every segment of
+    ``segments`` (lines the picture draws), every dot and every label placed before,
+    nearer its own dot than any other, and seen from it across no edge or line
+    (:func:`_seen`). Deterministic."""
     pts = [[np.asarray(c, dtype=float)[:2] for c in ring] for ring in rings]
+    dots = [p for ring in pts for p in ring]
     edges: list[Segment] = [edge for ring in pts for edge in ring_edges(ring)]
     edges += [(np.asarray(a, dtype=float)[:2], np.asarray(b, dtype=float)[:2]) for a, b in segments]
-    base = Obstacles(segments=edges, dots=[(float(p[0]), float(p[1]), dot)
-                                           for ring in pts for p in ring])
+    base = Obstacles(segments=edges, dots=[(float(p[0]), float(p[1]), dot) for p in dots])
+    region = shapely.Polygon(pts[0], pts[1:]) if len(pts[0]) >= 3 else None
     placed: list[Rect] = []
     centres = []
     for k, (ring, i) in enumerate([(r, i) for r in pts for i in range(len(r))]):
-        d = outward(ring[i - 1], ring[i], ring[(i + 1) % len(ring)])
-        tried = around([ring[i]], [_turned(d, turn) for turn in TURNS], RADII)
-        if first is not None:
-            tried = np.vstack([np.asarray(first[k], dtype=float)[:2], tried])
-        found = first_clear(tried, sizes[k], base.plus(boxes=placed), MARGIN)
-        centre = tried[found] if found is not None else (
-            tried[0] if first is not None else ring[i] + d * NEAREST)
+        away = outward(ring[i - 1], ring[i], ring[(i + 1) % len(ring)])
+        tried = places_round(ring[i], away, sizes[k])
+        mine = _own(tried, sizes[k], k, dots) & _seen(tried, ring[i], edges)
+        centre = tried[best_place(tried, sizes[k], base.plus(boxes=placed), EDGE_MARGIN,
+                                  region, mine)]
         placed.append(tuple(rects_at(centre, sizes[k])[0]))
         centres.append(centre)
     return centres
@@ -105,54 +160,30 @@ def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tup
 def placed_vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME,
                           diagonals: Sequence[tuple[int, int]] = (),
                           lines: Sequence[Sequence[tuple[float, float]]] = ()) -> VGroup:
-    """A dot and a label per vertex, as :func:`metaphors.drawing.vertex_markers` draws them,
-    each label placed by :func:`place_labels` (clear of the edges, of ``diagonals``, pairs
-    of vertex indices drawn on the picture, and of ``lines``, polylines in P's units drawn
-    on it too)."""
-    corners = frame.many(polygon.points)
-    texts = [typeset.text(label, font=theme.font, size=theme.label_size, colour=theme.ink)
-             for label in polygon.labels]
-    segments = [(corners[i], corners[j]) for i, j in diagonals]
-    for line in lines:
-        drawn = frame.many(list(line))
-        segments += list(pairwise(drawn))
-    centres = place_labels(corners, [(t.width, t.height) for t in texts], segments,
-                           theme.dot_radius)
-    group = VGroup()
-    for at, text, centre in zip(corners, texts, centres, strict=True):
-        text.move_to((centre[0], centre[1], 0.0))
-        group.add(VGroup(Dot(at, radius=theme.dot_radius, color=theme.ink), text))
-    return group
+    """A dot and a label per vertex, in the polygon's order (:func:`measured_markers`), clear
+    of ``diagonals`` (pairs of vertex indices drawn on the picture) and of ``lines``
+    (polylines in P's units drawn on it too: an answer's line)."""
+    segments = [segment for line in lines for segment in pairwise(frame.many(list(line)))]
+    return VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, diagonals,
+                                                    segments)))
 
 
 def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
-                     theme: Theme = THEME, diagonals: Sequence[tuple[int, int]] = ()
-                     ) -> list[tuple[str, VGroup]]:
-    """(label, dot and label) for every vertex of the board's polygon and of its holes, each
-    label where :func:`metaphors.drawing.vertex_markers` and
-    :func:`metaphors.drawing.hole_markers` put it (a fixed step away from its ring's centre)
-    if that is clear, else in the first clear place round its vertex
-    (:func:`place_ring_labels`): an edge through a label reads as part of the line. Likewise
-    clear of ``diagonals`` (pairs of the polygon's vertex indices: the claims a picture will
-    draw, which its labels are placed before)."""
+                     theme: Theme = THEME, diagonals: Sequence[tuple[int, int]] = (),
+                     lines: Sequence[Segment] = ()) -> list[tuple[str, VGroup]]:
+    """(label, dot and label) for every vertex of the polygon and of its holes, each label
+    where :func:`place_ring_labels` puts it: clear of the edges, of ``diagonals`` (pairs of
+    the polygon's vertex indices: the claims a picture will draw, which its labels are
+    placed before) and of ``lines`` (on screen: a keyhole's bridges)."""
     rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
     names = [*polygon.labels, *(label for h in holes for label in h.labels)]
     # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % high
-    steps = [(0.32, theme.label_size)] * polygon.n + [
-        (0.3, theme.label_size + 4)] * (len(names) - polygon.n)
+    sizes = [theme.label_size] * polygon.n + [theme.label_size + 4] * (len(names) - polygon.n)
     texts = [typeset.text(name, font=theme.font, size=size, colour=theme.ink)
-             for name, (_, size) in zip(names, steps, strict=True)]
-    first: list[np.ndarray] = []
-    for ring in rings:
-        centre = np.mean(ring, axis=0)
-        for point in ring:
-            away = (point - centre)[:2]
-            norm = float(np.linalg.norm(away))
-            first.append(point[:2] + (away / norm if norm > 1e-9 else np.array([0.0, -1.0]))
-                         * steps[len(first)][0])
-    segments = [(rings[0][i], rings[0][j]) for i, j in diagonals]
+             for name, size in zip(names, sizes, strict=True)]
+    segments = [*((rings[0][i], rings[0][j]) for i, j in diagonals), *lines]
     centres = place_ring_labels(rings, [(t.width, t.height) for t in texts], segments,
-                                theme.dot_radius, first=first)
+                                theme.dot_radius)
     points = [point for ring in rings for point in ring]
     markers = []
     for name, at, text, centre in zip(names, points, texts, centres, strict=True):
@@ -165,11 +196,12 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
                    drawn: Sequence[Segment], new: Sequence[Segment],
                    dot: float = THEME.dot_radius, apart: float = MARGIN) -> dict[str, np.ndarray]:
     """The labels that the ``new`` segments come within :data:`MARGIN` of, each with a new
-    centre: the first clear place round its vertex (:func:`place_ring_labels`' order: out
-    along the bisector of its ring, each ring a list of labels, their dots where the markers
-    stand now), clear of the segments ``drawn`` (the edges, the lines on the picture) and
-    ``new``, of the dots and of the other labels (``apart`` from those: more than
-    :data:`MARGIN` where labels crowd); a label with no clear place stays."""
+    centre: the first place round its vertex (:func:`places_round`: out along the bisector
+    of its ring, each ring a list of labels, their dots where the markers stand now)
+    :data:`EDGE_MARGIN` clear of the segments ``drawn`` (the edges, the lines on the
+    picture) and ``new``, of the dots and of the other labels, else the first :data:`MARGIN`
+    clear of those and ``apart`` from the other labels (more than :data:`MARGIN` where labels
+    crowd); a label with no clear place stays."""
     at = {name: np.asarray(m[0].get_center(), dtype=float)[:2] for name, m in markers.items()}
     boxes = {name: tuple(rects_at(m[1].get_center()[:2], (m[1].width, m[1].height))[0])
              for name, m in markers.items() if len(m) > 1}
@@ -184,19 +216,20 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
                 continue
             size = (boxes[name][2] - boxes[name][0], boxes[name][3] - boxes[name][1])
             d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])
-            tried = around([at[name]], [_turned(d, turn) for turn in TURNS], RADII)
-            others = [box for other, box in boxes.items() if other != name]
-            ok = (clear(tried, size, base, MARGIN)
-                  & clear(tried, size, Obstacles(boxes=others), apart))
-            found = int(np.argmax(ok)) if ok.any() else None
-            if found is not None:
-                moved[name] = tried[found]
-                boxes[name] = tuple(rects_at(tried[found], size)[0])
+            tried = places_round(at[name], d, size)
+            others = Obstacles(boxes=[box for other, box in boxes.items() if other != name])
+            ok = (clear(tried, size, base, EDGE_MARGIN)
+                  & clear(tried, size, others, max(apart, EDGE_MARGIN)))
+            if not ok.any():
+                ok = clear(tried, size, base, MARGIN) & clear(tried, size, others, apart)
+            if ok.any():
+                moved[name] = tried[int(np.argmax(ok))]
+                boxes[name] = tuple(rects_at(moved[name], size)[0])
     return moved
 
 
-__all__ = ["MARGIN", "crossed_labels", "measured_markers", "outward", "place_labels",
-           "place_ring_labels", "placed_vertex_markers"]
+__all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "measured_markers", "outward",
+           "place_labels", "place_ring_labels", "placed_vertex_markers", "places_round"]
 
 
 def drawn_in(marker: Mobject, colour: str) -> bool:

@@ -157,6 +157,9 @@ def board_spot(board: Board, mark: Mobject, line: Mobject,
               if key.startswith("diagonal:") and isinstance(m, Line)]
     labels = [area_of(part, moved) for marker in board.markers.values()
               for part in marker.submobjects]
+    # and where the labels moved off the ball's way will come back to (the picture upright)
+    labels += [area_of(board.markers[label][1].copy().move_to(board.at(place)), moved)
+               for label, place in board.moved_for_now.items()]
     inside = shapely.Polygon([p[:2] for p in rings[0]], [[p[:2] for p in r] for r in rings[1:]])
     spot, scale = scaled_spot((mark.width, mark.height),
                               (end(line.get_start()), end(line.get_end())), edges, labels,

@@ -16,7 +16,7 @@ from collections.abc import Callable, Sequence
 from itertools import pairwise
 
 import numpy as np
-from manim import Dot, Line, Mobject, VMobject
+from manim import Dot, Line, Mobject, VGroup, VMobject
 from manim import Polygon as MPolygon
 
 from geometry import gravity as gravity_steps
@@ -36,11 +36,10 @@ from geometry.prune_search import (
 from metaphors.drawing import (
     Frame,
     crossed_edge,
-    hole_markers,
     polygon_mobject,
-    vertex_markers,
 )
 from metaphors.figure_caption import figure_caption
+from metaphors.labels import measured_markers, placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from story.beats import Hole
@@ -77,7 +76,7 @@ def method_figure(kind: str, polygon_spec: str, heuristic: str, box: Box,
         "gravity": _gravity, "prune": _prune, "rule": _rule}
     frame, under, over = drawn[kind](polygon, heuristic, box, theme)
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
-    dots = tag(vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
+    dots = tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
     return [shape, *under, dots, *over]
 
 
@@ -239,7 +238,7 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
     if not isinstance(polygon_read, PolygonWithHoles):
         frame = Frame(polygon_read.points, *box)
         return [tag(polygon_mobject(polygon_read, frame, theme), "idle", "figure:polygon"),
-                tag(vertex_markers(polygon_read, frame, theme), "idle", "figure:vertices"),
+                tag(placed_vertex_markers(polygon_read, frame, theme), "idle", "figure:vertices"),
                 figure_caption(box, theme, ("no hole: nothing to cut", theme.ink))]
     starts, pts, labels = polygon_read.starts, polygon_read.points, polygon_read.labels
     outer = Polygon.from_points(pts[:starts[1]])  # ring 0: labelled as in the polygon read
@@ -250,9 +249,12 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
     ring = bridge_holes(polygon_read)
     drawn += [_line(frame, pts[p], pts[m], theme.result, theme.stroke * 1.6, "result",
                     f"figure:bridge:{labels[p]}–{labels[m]}") for p, m in ring.bridges]
-    drawn.append(tag(vertex_markers(outer, frame, theme), "idle", "figure:vertices"))
-    drawn += [tag(marker, "idle", "figure:hole-vertex") for _, marker in
-              hole_markers(holes, frame, theme)]
+    # every label clear of the bridges too: a cut through d₂ reads as ending there
+    markers = measured_markers(outer, holes, frame, theme, lines=[
+        (frame.to_scene(pts[p]), frame.to_scene(pts[m])) for p, m in ring.bridges])
+    drawn.append(tag(VGroup(*(m for _, m in markers[:outer.n])), "idle", "figure:vertices"))
+    drawn += [tag(marker, "idle", f"figure:hole-vertex:{label}")
+              for label, marker in markers[outer.n:]]
     drawn += [_dot(frame, pts[p], theme.argument, "argument", "figure:candidate")
               for p, _ in ring.bridges]
     cuts = ", ".join(f"{labels[p]}{labels[m]}" for p, m in ring.bridges)

@@ -18,7 +18,7 @@ from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.layout import Box
 from metaphors.recorded import Recorded, captions_of, mark_step
-from story.beats import Beat, ShowPolygon
+from story.beats import Beat, Claim, ShowPolygon
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
 from story.storyboard import run_call, staged_pseudocode
@@ -46,7 +46,8 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     holes = first.holes if isinstance(first, ShowPolygon) else ()
     recorded = cast(Recorded, scene)  # every BoardScene is Recorded (TraceScene, the player's)
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
-                  scene.metaphor_box, holes, captions=captions_of(recorded))
+                  scene.metaphor_box, holes, captions=captions_of(recorded),
+                  claims=[beat.labels for beat in beats if isinstance(beat, Claim)])
     board.panel.shows_calls = scene.call_line
     board.shares = dict(Counter(beat.caption for beat in beats))
     board.panel.run_call = run_call(log)

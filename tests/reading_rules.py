@@ -2804,3 +2804,67 @@ def claims_given_away(data: dict) -> list[str]:
             shown = []
         shown += [(k, text) for text in _code_rows(play)]
     return found
+# --- a vertex label stands clear of its polygon's edges -----------------------------------------
+
+#: the least gap between a vertex label and an edge of the polygon it names a vertex of
+#: (1.5 % of the frame's height): nearer, the letter reads as sitting on the line (chapter 2's
+#: K on edge L–K, M on edge A–M)
+LEAST_LABEL_EDGE_GAP = 0.12
+#: each picture's polygon and the names of its vertex labels: a run's or an analysis's board
+#: (a marker a vertex), a card's figure (a group of markers, the holes' one by one)
+_LABELLED = ((("polygon", "analysis:polygon"), ("vertex:",)),
+             (("figure:polygon",), ("figure:vertices", "figure:hole-vertex")))
+
+
+def _marker_labels(name: str, node: dict) -> Iterator[tuple[str, tuple[float, float, float, float]]]:
+    """(text, box) of each vertex label a marker node (a dot and a label) or a group of them
+    (a figure's) shows."""
+    markers = node.get("submobjects", ()) if name == "figure:vertices" else [node]
+    for marker in markers:
+        for part in marker.get("submobjects", ()):
+            if part.get("box") and (part.get("text") or "").strip():
+                yield part["text"], tuple(part["box"])
+
+
+def _opening(play: dict, polygons: tuple[str, ...]) -> list | None:
+    """The points of a picture's polygon that a play brings in with no turn (a picture
+    opening: a run's board, a stage, a card's figure), None if it brings none in (a close-up
+    fading the turned polygon back in does not open one)."""
+    if any(a.get("type") == "Turn" for a in play["animations"]):
+        return None
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if anim.get("type") in INCOMING and node.get("name") in polygons and node.get("points"):
+            return node["points"]
+    return None
+
+
+def labels_on_edges(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> list[str]:
+    """The vertex labels nearer than ``margin`` to an edge of the polygon drawn in the same
+    picture (or crossed by it), as ``"play 3 K 0.03 from figure:polygon"``: each label and
+    polygon once, at the first play that shows it so, the labels as :func:`_shown_after_plays`
+    follows them. A letter on a line reads as part of it, or names the wrong vertex. The
+    polygon as its picture opened it (:func:`_opening`), where the labels were placed for it:
+    once turned (gravity's labels stay upright) or cut (the fruit's slices) it is left to
+    :func:`crossed_vertex_labels`, until it stands as it opened again."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    found: dict[tuple[str, str], str] = {}
+    for polygons, labels in _LABELLED:
+        opened: list | None = None
+        for k, shown in _shown_after_plays(data, (*polygons, *labels), many=labels[1:]):
+            opened = _opening(data["plays"][k], polygons) or opened
+            outlines = [(name, LineString(s)) for name, node in shown.items()
+                        if name in polygons and node.get("points") == opened
+                        for s in _segments(node)]
+            for name, node in shown.items():
+                if not name.startswith(labels):
+                    continue
+                for text, box in _marker_labels(name, node):
+                    for owner, edge in outlines:
+                        gap = edge.distance(area(*box))
+                        if gap < margin - 1e-9:
+                            found.setdefault((text, owner),
+                                             f"play {k} {text} {gap:.2f} from {owner}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))

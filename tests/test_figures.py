@@ -774,3 +774,26 @@ def test_a_caption_over_its_figure_is_caught():
     assert caption_problems(play(0.0)) == []
     assert any("not below the figure" in p for p in caption_problems(play(GAP + 0.3)))
     assert any("out of the frame" in p for p in caption_problems(play(-1.5)))
+
+
+def test_labels_on_edges_finds_the_old_fixed_step_labels_on_the_lecture_polygon():
+    """The rule can fail: the lecture polygon's figure with its labels a fixed step from the
+    centre (the old :func:`metaphors.drawing.vertex_markers`) has K on edge L–K; placed by
+    measuring (:func:`metaphors.labels.placed_vertex_markers`) every label keeps clear."""
+    from metaphors.drawing import polygon_mobject, vertex_markers
+    from metaphors.labels import placed_vertex_markers
+    from tests.reading_rules import labels_on_edges
+    from trex.scene_graph import mobject_graph
+
+    p = read_polygon("lecture")
+    frame = Frame(p.points, *BOX)
+
+    def shown(markers):
+        return {"plays": [{"animations": [
+            {"type": "FadeIn", "mobject": {**mobject_graph(m), "name": name}}
+            for m, name in ((polygon_mobject(p, frame), "figure:polygon"),
+                            (markers, "figure:vertices"))]}]}
+
+    old = labels_on_edges(shown(vertex_markers(p, frame)))
+    assert any(f.startswith("play 0 K 0.0") for f in old), old
+    assert labels_on_edges(shown(placed_vertex_markers(p, frame))) == []

@@ -48,6 +48,7 @@ from tests.reading_rules import (
     hidden_failures,
     jumping_stacks,
     labels_on_claims,
+    labels_on_edges,
     labels_under_faces,
     labels_under_test_triangles,
     labels_under_the_fall,
@@ -600,6 +601,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert run_together_labels(data) == [], chapter.slug
     # and the picture's labels stand apart (K stood 0.07 over M on the fruit)
     assert crowded_vertex_labels(data) == [], chapter.slug
+    # and each clear of its polygon's edges by 1.5 % of the frame's height (K on edge L–K)
+    assert labels_on_edges(data) == [], chapter.slug
     # and a run's ✓ or ✗ stands by its claim (prune and search's ✓ for GB stood 1.8 off)
     assert far_verdicts(data) == [], chapter.slug
     # issue 22 item 4: the correction's rising water inside P (found by its colour: chapter

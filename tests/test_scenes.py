@@ -64,6 +64,7 @@ from tests.reading_rules import (
     graph_nodes,
     hidden_failures,
     jumping_stacks,
+    labels_on_edges,
     labels_under_faces,
     labels_under_test_triangles,
     labels_under_the_fall,
@@ -509,6 +510,13 @@ def test_the_pictures_labels_stand_apart(case):
     """Issue 22: two vertex labels on the picture keep 1 % of the frame's height apart (on
     the fruit, K stood 0.07 over M, moved there clear of the knife: they read as one)."""
     assert crowded_vertex_labels(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_vertex_label_keeps_clear_of_its_polygons_edges(case):
+    """A vertex label stands 1.5 % of the frame's height clear of every edge of the polygon
+    it names a vertex of (chapter 2's K stood on edge L–K, M on A–M)."""
+    assert labels_on_edges(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params([c for c in SCENES if c.cls is not None]))
