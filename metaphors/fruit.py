@@ -367,7 +367,8 @@ def _whole(board: Board, beat: Slice) -> None:
     back = _markers_back(board)
     # under its own caption, at full pace: the last slice's words are over; what the steps
     # left (prune and search's good part, its last diagonal and ✓) goes
-    board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call),
+    board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call,
+                           holes),
                *board.drop("good", *_FOUND), FadeOut(board.outline),
                *[FadeIn(p) for p in pieces], shown, *[FadeIn(m) for m in back],
                *_placed(board.clear_labels(*pieces), back),
