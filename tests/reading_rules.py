@@ -2896,13 +2896,20 @@ def stray_vertex_markers(data: dict) -> list[str]:
     Ear clipping's sliced-off ear tips stayed up, dots and labels floating round the
     shrinking fruit (chapter 4 at 98 s: E, F, D, C, I and J above the turned fruit). The
     markers and polygons as :func:`_shown_after_plays` follows them (a turn makes both
-    unknown until recorded again); none is judged while no polygon is known."""
+    unknown until recorded again); none is judged while no polygon is known, or one turned
+    is not known again (a divide and conquer's outline, turned back upright, is recorded
+    again only when it next changes)."""
     found: dict[str, str] = {}
+    turned: set[str] = set()
     for k, shown in _shown_after_plays(data, ("vertex:", *_MARKED), many=_MARKED[2:],
                                        by_corners=True):
+        for anim in data["plays"][k]["animations"]:
+            for kind, _, name in _ends(anim):
+                if name.startswith(_MARKED):
+                    (turned.add if kind == "Turn" else turned.discard)(name)
         corners = [end for name, node in shown.items() if name.startswith(_MARKED)
                    for segment in _segments(node) for end in segment]
-        if not corners:
+        if not corners or turned:
             continue
         for name, marker in shown.items():
             dot = _dot_centre(marker) if name.startswith("vertex:") else None
