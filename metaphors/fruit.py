@@ -323,7 +323,7 @@ def _sliced_off(board: Board, rest: Sequence[Point], plate: np.ndarray) -> list[
     return [FadeOut(board.off[label], target_position=plate, scale=0.5) for label in gone]
 
 
-def _markers_back(board: Board) -> list[VGroup]:
+def _markers_back(board: Board) -> list[Mobject]:
     """The sliced-off markers back on the board (:func:`_sliced_off`), at their vertices (the
     picture may have turned and zoomed since they went) and in the ink of the ending, still
     off screen: to come in with the whole triangulation."""
@@ -343,8 +343,9 @@ def _placed(moves: list[Playable], unseen: Sequence[Mobject]) -> list[Playable]:
     in one play would cancel one of them)."""
     kept: list[Playable] = []
     for move in moves:
-        if isinstance(move, Transform) and any(move.mobject is m for m in unseen):
-            move.mobject.become(move.target_mobject)
+        marker = next((m for m in unseen if getattr(move, "mobject", None) is m), None)
+        if isinstance(move, Transform) and marker is not None:
+            marker.become(move.target_mobject)
         else:
             kept.append(move)
     return kept
