@@ -242,18 +242,19 @@ class Restack(Animation):
 
     def __init__(self, old: VGroup, new: VGroup, **kwargs) -> None:
         super().__init__(old, rate_func=linear, **kwargs)
-        self.target_mobject = new
+        self.old, self.target_mobject = old, new
+        #: per word of ``new``: the word on screen, where it starts and ends, whether it came
+        self.words: list[tuple[VMobject, VMobject, VMobject, bool]] = []
 
     def begin(self) -> None:
-        old, new = self.mobject, self.target_mobject
-        before = {word.name: word for word in old}
-        old.remove(*(word for word in old if word.name not in {w.name for w in new}))
-        self.words = []  # (the word on screen, where it starts, where it ends, whether it came)
+        new: VGroup = self.target_mobject
+        before = {word.name: word for word in self.old}
+        self.old.remove(*(word for word in self.old if word.name not in {w.name for w in new}))
         for word in new:
             came = word.name not in before
             shown = word.copy().set_opacity(0) if came else before[word.name]
             self.words.append((shown, shown.copy(), word, came))
-        old.submobjects = [shown for shown, *_ in self.words]  # in the new column's order
+        self.old.submobjects = [shown for shown, *_ in self.words]  # in the new column's order
         super().begin()
 
     def interpolate_mobject(self, alpha: float) -> None:
@@ -268,7 +269,7 @@ class Restack(Animation):
 def _restack(board: Board, column: VGroup) -> list:
     """The stack's column rewritten as ``column`` (:class:`Restack`), or brought in."""
     old = board.objects.get("stack:column")
-    if old is None:
+    if not isinstance(old, VGroup):
         board.keep("stack:column", column)
         return [FadeIn(column)]
     return [Restack(old, column)]
