@@ -115,6 +115,10 @@ class Board:
         # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood,
         # in the polygon's coordinates
         self.moved_for_now: dict[str, tuple[float, float]] = {}
+        # the markers of vertices a metaphor took off the picture for a while (ear clipping's
+        # sliced-off ear tips), by label: out of :attr:`markers`, so that no recolouring,
+        # label move or turn brings them back on screen before the metaphor does
+        self.off: dict[str, Mobject] = {}
 
     # --- coordinates -----------------------------------------------------------------------------
 
@@ -277,7 +281,9 @@ class Board:
         :meth:`play` recolours it after the play. ``for_now``: the lines go again soon (the
         ball's fall), and :meth:`labels_back` puts the labels back where they stood.
         ``apart``: the gap a moved label keeps from the other labels."""
-        rings = [list(self.polygon.labels), *(list(h.labels) for h in self.holes)]
+        # the vertices on the picture (not those taken off it, :attr:`off`), in ring order
+        rings = [[label for label in ring if label in self.markers]
+                 for ring in (self.polygon.labels, *(h.labels for h in self.holes))]
         drawn = [edge for ring in self.outline_rings() for edge in ring_edges(ring)]
         drawn += [edge for m in self.objects.values() if m not in lines for edge in _edges(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}

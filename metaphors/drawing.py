@@ -156,18 +156,26 @@ def triangulation_pieces(triangles: Sequence[Sequence[Sequence[float]]], at: Any
     return shown
 
 
-def whole_caption(triangles: int) -> str:
+def whole_caption(triangles: int, holes: int = 0) -> str:
     """The caption over a run's ending, the whole triangulation drawn: the step before it
     (a split, a slice, a stack) is over, and its caption would no longer say what is on
-    screen."""
-    return f"The whole triangulation: {triangles} triangles"
+    screen. With ``holes``, it says what the count's h is (:func:`count_words`: "n + 2h − 2"
+    stood under the triangulation with h said nowhere).
+
+    >>> whole_caption(17, 2)
+    'The whole triangulation: 17 triangles, with h = 2 holes'
+    """
+    if not holes:
+        return f"The whole triangulation: {triangles} triangles"
+    return (f"The whole triangulation: {triangles} triangles, "
+            f"with h = {holes} hole{'s' if holes > 1 else ''}")
 
 
 B = TypeVar("B", bound=Beat)
 
 
 def ending_beat(beat: B, pseudocode: Sequence[PseudocodeRow], triangles: int,
-                run_call: str | None = None) -> B:
+                run_call: str | None = None, holes: int = 0) -> B:
     """The beat of a run's ending, after its last step ``beat``: the whole triangulation's
     caption (:func:`whole_caption`), at full pace, and the pseudocode's row saying the result
     lit (:func:`story.pseudocode.result_row`), not the last step's row, which no longer says
@@ -193,7 +201,7 @@ def ending_beat(beat: B, pseudocode: Sequence[PseudocodeRow], triangles: int,
     row = result_row(pseudocode)
     # the result kept on one line (no-break spaces): "→ 11" and "triangles" are one thing
     call = beat.call if run_call is None else f"{run_call} →\u00a0{triangles}\u00a0triangles"
-    return replace(beat, caption=whole_caption(triangles), pace=1.0,
+    return replace(beat, caption=whole_caption(triangles, holes), pace=1.0,
                    row=beat.row if row is None else row, call=call)
 
 

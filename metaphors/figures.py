@@ -337,15 +337,50 @@ def _ear(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[M
     return [*drawn, figure_caption(BOX, theme, ("; ".join(said) or "a triangle", theme.ink))]
 
 
+#: the ears of P drawn faint (the two that do not overlap drawn strong over them)
+FAINT_EAR_OPACITY = 0.12
+
+
 def _ears(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:
-    """Every ear of P: a convex vertex V whose V−1 V+1 is an inner diagonal, its triangle
-    shaded."""
+    """Every ear of P (a convex vertex V whose V−1 V+1 is an inner diagonal) faint, and two
+    ears that do not overlap (:func:`_two_ears`) strong over them: the theorem the card
+    states. All seven in one green overlapped (E and F, I and J), and no two were seen
+    to be the two the card speaks of."""
     n, ears = polygon.n, _ears_of(polygon)
-    shaded = [tag(triangle_mobject(polygon, ((v - 1) % n, v, (v + 1) % n), frame,
-                                   theme.result, theme), "result", "figure:ear")
-              for v in ears]
+
+    def triangle(v: int, opacity: float, width: float, name: str) -> Mobject:
+        drawn = triangle_mobject(polygon, ((v - 1) % n, v, (v + 1) % n), frame, theme.result,
+                                 theme)
+        drawn.set_fill(opacity=opacity).set_stroke(width=width)
+        return tag(drawn, "result", name)
+
+    faint = [triangle(v, FAINT_EAR_OPACITY, theme.thin_stroke, "figure:ear") for v in ears]
+    two = _two_ears(polygon, ears)
+    strong = [triangle(v, theme.fill_opacity + 0.2, theme.stroke, "figure:two-ears")
+              for v in two]
     names = ", ".join(polygon.labels[v] for v in ears) or "none (a triangle)"
-    return [*shaded, figure_caption(BOX, theme, (f"the ears of P: {names}", theme.result))]
+    lines = [(f"the ears of P: {names}", theme.ink)]
+    if two:
+        lines.append((f"two that do not overlap: {' and '.join(polygon.labels[v] for v in two)}",
+                      theme.result))
+    return [*faint, *strong, figure_caption(BOX, theme, *lines)]
+
+
+def _two_ears(polygon: Polygon, ears: list[int]) -> tuple[int, ...]:
+    """Two of ``ears`` whose triangles do not overlap (Meisters: a polygon of more than three
+    vertices has two), the pair seen best: sharing no corner if any pair does, then the
+    smaller of the two the largest; none if no two are found (a triangle)."""
+    from shapely.geometry import Polygon as Region
+
+    n, pts = polygon.n, polygon.points
+    corners = {v: {(v - 1) % n, v, (v + 1) % n} for v in ears}
+    regions = {v: Region([pts[k] for k in ((v - 1) % n, v, (v + 1) % n)]) for v in ears}
+    apart = [(u, v) for u in ears for v in ears if u < v
+             and regions[u].intersection(regions[v]).area <= 1e-9 * regions[u].area]
+    if not apart:
+        return ()
+    return max(apart, key=lambda pair: (not corners[pair[0]] & corners[pair[1]],
+                                        min(regions[v].area for v in pair)))
 
 
 @functools.cache  # the same runs for every build of the chapter in one process

@@ -297,6 +297,7 @@ def clip(board: Board, beat: Slice) -> None:
     board.keep("counter", counter)
     if data.rest:
         anims.append(Transform(board.outline, _fruit(board, data.rest)))
+        anims += _sliced_off(board, data.rest, target.get_center())
     else:  # the last slice: the keyhole cuts go (no fruit is left round them); the fruit's
         # last triangle stays while its caption is read, until the whole triangulation
         anims += board.drop(*[key for key in board.objects if key.startswith("keyhole:")])
@@ -306,6 +307,48 @@ def clip(board: Board, beat: Slice) -> None:
     board.keep(f"slice:{data.k}", piece)
     if data.triangulation:
         _whole(board, beat)
+
+
+def _sliced_off(board: Board, rest: Sequence[Point], plate: np.ndarray) -> list[Playable]:
+    """The markers of the vertices the slice takes off the fruit (none of ``rest``'s points,
+    what is left: a keyhole's vertex stays while a copy of it is on the ring), fading as
+    they go with the slice to ``plate``: left up, they floated round the shrinking fruit,
+    and turned with it. Kept aside (:attr:`Board.off`) for the whole triangulation."""
+    left = {(round(x, 9), round(y, 9)) for x, y in rest}
+    gone = [label for label in board.markers
+            if tuple(round(c, 9) for c in board.where[label]) not in left]
+    for label in gone:
+        board.off[label] = board.markers.pop(label)
+        board.roles.pop(label, None)
+    return [FadeOut(board.off[label], target_position=plate, scale=0.5) for label in gone]
+
+
+def _markers_back(board: Board) -> list[Mobject]:
+    """The sliced-off markers back on the board (:func:`_sliced_off`), at their vertices (the
+    picture may have turned and zoomed since they went) and in the ink of the ending, still
+    off screen: to come in with the whole triangulation."""
+    back = []
+    for label, marker in sorted(board.off.items()):
+        marker.shift(board.vertex(label) - marker[0].get_center())
+        marker.set_color(board.theme.ink)
+        board.markers[label] = tag(marker, "idle")
+        back.append(marker)
+    board.off = {}
+    return back
+
+
+def _placed(moves: list[Playable], unseen: Sequence[Mobject]) -> list[Playable]:
+    """``moves`` (:meth:`Board.clear_labels`' transforms) but those of the ``unseen`` markers,
+    which are made at once (they fade in where they stand: a fade in and a move of one marker
+    in one play would cancel one of them)."""
+    kept: list[Playable] = []
+    for move in moves:
+        marker = next((m for m in unseen if getattr(move, "mobject", None) is m), None)
+        if isinstance(move, Transform) and marker is not None:
+            marker.become(move.target_mobject)
+        else:
+            kept.append(move)
+    return kept
 
 
 def _whole(board: Board, beat: Slice) -> None:
@@ -321,12 +364,15 @@ def _whole(board: Board, beat: Slice) -> None:
     shown = Replace(result, board.objects.get("counter"))
     board.keep("counter", result)
     board.keep("triangulation", VGroup(*pieces))
+    # every vertex is one again: the sliced-off ones come back with the triangles
+    back = _markers_back(board)
     # under its own caption, at full pace: the last slice's words are over; what the steps
     # left (prune and search's good part, its last diagonal and ✓) goes
-    board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call),
+    board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call,
+                           holes),
                *board.drop("good", *_FOUND), FadeOut(board.outline),
-               *[FadeIn(p) for p in pieces], shown,
-               *board.clear_labels(*pieces),
+               *[FadeIn(p) for p in pieces], shown, *[FadeIn(m) for m in back],
+               *_placed(board.clear_labels(*pieces), back),
                run_time=1.2, at_rest=True)
     board.scene.wait(1.0)
 

@@ -1996,13 +1996,14 @@ def _ends(anim: dict) -> Iterator[tuple[str, dict, str]]:
         yield from _ends(child)
 
 
-def _shown_after_plays(data: dict, names: tuple[str, ...], many: tuple[str, ...] = ()
-                       ) -> Iterator[tuple[int, dict[str, dict]]]:
+def _shown_after_plays(data: dict, names: tuple[str, ...], many: tuple[str, ...] = (),
+                       by_corners: bool = False) -> Iterator[tuple[int, dict[str, dict]]]:
     """After each play ``k``, the things on screen whose names start with one of ``names``,
     by name, as the play leaves them: a thing faded out is gone, and one a turn moves is
     unknown until it is recorded again (a turn records where it starts, not where it leaves
     the thing). A polygon coming in begins a new picture. Of the ``many`` shown under one
-    name (each piece's triangles), each is told by where it starts."""
+    name (each piece's triangles), each is told by where it starts, or ``by_corners``, by
+    all its points (two triangles of a fan start at one corner)."""
     shown: dict[str, dict] = {}
     for k, play in enumerate(data["plays"]):
         for anim in play["animations"]:
@@ -2013,7 +2014,7 @@ def _shown_after_plays(data: dict, names: tuple[str, ...], many: tuple[str, ...]
                 for part in mobject_nodes(node):
                     name = named if part is node else part.get("name") or ""
                     if many and name.startswith(many) and part.get("points"):
-                        name += f"@{part['points'][0]}"
+                        name += f"@{part['points'] if by_corners else part['points'][0]}"
                     if name.startswith(names):
                         if kind in OUTGOING or kind == "Turn":
                             shown.pop(name, None)
@@ -2868,6 +2869,55 @@ def labels_on_edges(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> list[st
                         if gap < margin - 1e-9:
                             found.setdefault((text, owner),
                                              f"play {k} {text} {gap:.2f} from {owner}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- review s34 item 9: a vertex marker goes with its vertex ---------------------------------
+
+#: what a board's vertex markers stand on: its outline (ear clipping's fruit, as it shrinks
+#: slice by slice), an analysis's polygon, and the triangles of a result (several under one
+#: name)
+_MARKED = ("polygon", "analysis:polygon", "triangle", "triangulation")
+#: how far a marker's dot may stand from the corner it marks (the graph's rounding)
+MARKER_AT_CORNER = 0.02
+
+
+def _dot_centre(marker: dict) -> tuple[float, float] | None:
+    """The centre of a vertex marker's dot (its first part's points), None if it has none."""
+    parts = marker.get("submobjects") or ()
+    points = parts[0].get("points") if parts else None
+    if not points:
+        return None
+    return (sum(p[0] for p in points) / len(points), sum(p[1] for p in points) / len(points))
+
+
+def stray_vertex_markers(data: dict) -> list[str]:
+    """The board's vertex markers on screen whose dot stands at no corner of a polygon drawn
+    (:data:`_MARKED`), as ``"play 17 A"``: each once, at the first play that leaves it so.
+    Ear clipping's sliced-off ear tips stayed up, dots and labels floating round the
+    shrinking fruit (chapter 4 at 98 s: E, F, D, C, I and J above the turned fruit). The
+    markers and polygons as :func:`_shown_after_plays` follows them (a turn makes both
+    unknown until recorded again); none is judged while no polygon is known, or one turned
+    is not known again (a divide and conquer's outline, turned back upright, is recorded
+    again only when it next changes)."""
+    found: dict[str, str] = {}
+    turned: set[str] = set()
+    for k, shown in _shown_after_plays(data, ("vertex:", *_MARKED), many=_MARKED[2:],
+                                       by_corners=True):
+        for anim in data["plays"][k]["animations"]:
+            for kind, _, name in _ends(anim):
+                if name.startswith(_MARKED):
+                    (turned.add if kind == "Turn" else turned.discard)(name)
+        corners = [end for name, node in shown.items() if name.startswith(_MARKED)
+                   for segment in _segments(node) for end in segment]
+        if not corners or turned:
+            continue
+        for name, marker in shown.items():
+            dot = _dot_centre(marker) if name.startswith("vertex:") else None
+            if dot is None or name in found:
+                continue
+            if all(math.dist(dot, corner) > MARKER_AT_CORNER for corner in corners):
+                found[name] = f"play {k} {name.removeprefix('vertex:')}"
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
 
 

@@ -11,6 +11,7 @@ analysis caption on screen long enough to read.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -54,8 +55,10 @@ def test_a_wrong_heuristics_sweep_leaves_the_polygon_inside_t(wrong):
     assert lies_inside(astray, t) and shape(points).intersection(astray).area < 1e-6
     # the part outside P holds the stretch of BD beyond the crossed edge, next to D
     beyond = shapely.LineString([seen.verdict.point, points[seen.labels.index("D")]])
-    # the water is a 256-gon inscribed in its circle: D, on the circle, lies up to 1e-4 off it
-    assert astray.buffer(1e-4).covers(beyond)
+    # the water is a 256-gon inscribed in its circle: D, on the circle, lies off it by up to
+    # the polygon's sagitta, r (1 − cos(π / 256))
+    radius = math.dist(points[seen.labels.index("B")], points[seen.labels.index("D")])
+    assert astray.buffer(1e-6 + radius * (1 - math.cos(math.pi / 256))).covers(beyond)
 
 
 @pytest.mark.parametrize("wrong", WRONG)

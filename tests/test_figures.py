@@ -49,7 +49,20 @@ def test_the_ears_are_the_convex_vertices_whose_neighbours_see_each_other():
             and is_inner_diagonal(p, (v - 1) % n, (v + 1) % n)]
     drawn = figure_mobjects(Figure("ears"), "lecture")
     assert len(ears) >= 2 and len(named(drawn, "figure:ear")) == len(ears)
-    assert label(drawn) == f"the ears of P: {', '.join(ears)}"
+    assert label(drawn).startswith(f"the ears of P: {', '.join(ears)} ")
+
+
+def test_the_ears_card_draws_two_ears_that_do_not_overlap():
+    """Review s34: the card says "two ears that do not overlap"; all seven ears in one green
+    overlapped (E and F, I and J). Two of them are drawn strong, named, and do not overlap."""
+    from shapely.geometry import Polygon as Region
+
+    drawn = figure_mobjects(Figure("ears"), "lecture")
+    two = [Region([tuple(p[:2]) for p in t.get_vertices()])
+           for t in named(drawn, "figure:two-ears")]
+    assert len(two) == 2 and two[0].intersection(two[1]).area < 1e-6
+    said = label(drawn).partition("two that do not overlap: ")[2]
+    assert len(said.split(" and ")) == 2
 
 
 def test_claims_are_green_when_inner_and_red_with_their_crossed_edge():

@@ -12,6 +12,7 @@ from tests.reading_rules import (
     placeholders_as_labels,
     polygon_names,
     stale_good_parts,
+    stray_vertex_markers,
 )
 from tests.test_tool_rules import _closed, _graph
 
@@ -185,3 +186,38 @@ def test_no_pseudocode_names_a_polygon_as_a_lecture_vertex():
     clashes = {name: polygon_names([row.text for row in entry(name).pseudocode]) & labels
                for name in names()}
     assert {name: sorted(c) for name, c in clashes.items() if c} == {}
+
+
+# --- chapter 4, review s34: a sliced-off vertex goes with its slice --------------------------
+
+
+def _marker(kind: str, label: str, at: tuple[float, float]) -> dict:
+    """A vertex marker as the graph writes it: a dot (points round ``at``) and a label."""
+    x, y = at
+    dot = [[x + dx, y + dy, 0.0] for dx, dy in ((0.06, 0), (0, 0.06), (-0.06, 0), (0, -0.06))]
+    return {"type": kind, "mobject": {"name": f"vertex:{label}", "type": "VGroup", "submobjects": [
+        {"type": "Dot", "points": dot}, {"type": "FlatText", "text": label,
+                                         "box": [x + 0.1, y + 0.1, x + 0.3, y + 0.3]}]}}
+
+
+def test_a_marker_left_by_its_sliced_off_vertex_is_found():
+    whole = ((0, 0), (4, 0), (4, 4), (2, 5), (0, 4))
+    left = ((0, 0), (4, 0), (2, 5), (0, 4))  # the fruit once the slice at (4, 4) is cut
+    start = [{"type": "Create", "mobject": P},
+             *[_marker("FadeIn", "ABCDE"[k], p) for k, p in enumerate(whole)]]
+    # the slice cut, the fruit shrinks, C's marker stays up (chapter 4 at 98 s)
+    stale = _graph(start, [_fruit("Transform", *left, start=whole)], [_marker("Indicate", "D",
+                                                                              (2, 5))])
+    assert stray_vertex_markers(stale) == ["play 1 C"]
+    # mended: C's marker goes with its slice, and comes back with the whole triangulation
+    pieces = [{"type": "FadeIn", "mobject": {"name": "triangulation", "type": "Polygon",
+                                             "points": _closed(*t)}}
+              for t in (((0, 0), (4, 0), (2, 5)), ((4, 0), (4, 4), (2, 5)),
+                        ((0, 0), (2, 5), (0, 4)))]
+    mended = _graph(start, [_fruit("Transform", *left, start=whole),
+                            _marker("FadeOut", "C", (4, 4))],
+                    [_fruit("FadeOut", *left), *pieces, _marker("FadeIn", "C", (4, 4))])
+    assert stray_vertex_markers(mended) == []
+    # a turn of the picture leaves the places unknown: not judged until drawn again
+    turned = _graph(start, [{"type": "Turn", "mobject": P}], [_marker("Indicate", "C", (9, 9))])
+    assert stray_vertex_markers(turned) == []

@@ -73,6 +73,7 @@ from tests.reading_rules import (
     stale_good_parts,
     stale_lit_rows,
     stray_kind_words,
+    stray_vertex_markers,
     swept_outside_polygon,
     tails_beside_labels,
     ticks_outside,
@@ -624,6 +625,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # one legend: a candidate neutral until picked (amber), green only once judged (chapter
     # 2 lit E and F green as candidates, E green as wetted first, F amber as not hit)
     assert shifting_colours(data) == [], chapter.slug
+    # review s34: a vertex marker stands on a corner of what is drawn (ear clipping's
+    # sliced-off ear tips floated round the shrinking fruit)
+    assert stray_vertex_markers(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():

@@ -88,6 +88,7 @@ from tests.reading_rules import (
     stale_good_parts,
     stale_lit_rows,
     stray_kind_words,
+    stray_vertex_markers,
     swept_outside_polygon,
     tails_beside_labels,
     ticks_outside,
@@ -532,6 +533,14 @@ def test_every_label_reads_on_what_it_stands_over(case):
     contrast of 3 : 1 with it, or has a dark halo: grey,
     red and green labels on the fruit (the keyhole's c₂, M beside K) all but vanished."""
     assert labels_without_contrast(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_vertex_marker_stands_on_what_is_drawn(case):
+    """Review s34: every vertex marker on the picture marks a corner of a polygon drawn:
+    ear clipping's sliced-off ear tips went with their slices, not left floating round the
+    shrinking fruit (they come back with the whole triangulation)."""
+    assert stray_vertex_markers(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
