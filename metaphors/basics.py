@@ -67,7 +67,9 @@ def triangle(board: Board, beat: ShowTriangle) -> None:
 
 
 def candidates(board: Board, beat: Candidates) -> None:
-    board.play(beat, *[Indicate(board.markers[c], color=board.theme.argument, scale_factor=1.4)
+    # in the candidates' own colour, as the legend and the panel show them: amber is the
+    # claim's (review s567: a run of one's own pulsed them amber beside the panel's pink)
+    board.play(beat, *[Indicate(board.markers[c], color=board.theme.candidate, scale_factor=1.4)
                        for c in beat.candidates], run_time=1.0)
 
 

@@ -223,11 +223,24 @@ def circumcircle(polygon: Polygon, triangle: TriangleIndices) -> Circumcircle:
     return Circumcircle(triangle, centre, r2, inside)
 
 
+#: a vertex this share of the radius inside a circle reads as inside it: M stood 5 % inside the
+#: circle of DFG, its dot on the line (review s567)
+CLEARLY_INSIDE = 0.1
+
+
+def clearly_inside(polygon: Polygon, circle: Circumcircle) -> tuple[int, ...]:
+    """The vertices inside ``circle`` by at least :data:`CLEARLY_INSIDE` of its radius."""
+    (x, y), r = (float(v) for v in circle.centre), circle.radius
+    return tuple(k for k in circle.inside
+                 if math.dist((x, y), polygon.points[k]) <= r * (1 - CLEARLY_INSIDE))
+
+
 def shown_circle(polygon: Polygon) -> Circumcircle:
     """The circle the figure draws: of the triangles whose circle stays near P (within a
-    quarter of P's size of its box), the one with the most vertices inside it — the
-    constrained triangulation's point: they are hidden from the triangle — then the
-    smallest; if no circle stays near P, the smallest."""
+    quarter of P's size of its box), the one with the most vertices clearly inside it
+    (:func:`clearly_inside`), then the most inside it — the constrained triangulation's
+    point: they are hidden from the triangle — then the smallest; if no circle stays near P,
+    the smallest."""
     circles = [circumcircle(polygon, t) for t in constrained_delaunay(polygon)]
     xs, ys = [p[0] for p in polygon.points], [p[1] for p in polygon.points]
     room = max(max(xs) - min(xs), max(ys) - min(ys)) / 4
@@ -240,33 +253,56 @@ def shown_circle(polygon: Polygon) -> Circumcircle:
     fitting = [c for c in circles if near(c)]
     if not fitting:
         return min(circles, key=lambda c: c.radius2)
-    return max(fitting, key=lambda c: (len(c.inside), -c.radius2))
+    return max(fitting, key=lambda c: (len(clearly_inside(polygon, c)), len(c.inside),
+                                       -c.radius2))
+
+
+#: the points of the circle given to the labels' placement as a line to keep clear of
+CIRCLE_CORNERS = 96
 
 
 def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
+    """P's constrained Delaunay triangles, the shown triangle (:func:`shown_circle`) green
+    with its circle, and the vertices inside the circle marked amber; the labels are placed
+    clear of the triangles' sides and of the circle too (review s567: "K" stood on the
+    circle, "G" on edge G–C), and a vertex only just inside the circle, its mark on the
+    line, is said to be so."""
     circle = shown_circle(polygon)
     (cx, cy), r = (float(v) for v in circle.centre), circle.radius
     frame = Frame([*polygon.points, (cx - r, cy - r), (cx + r, cy + r)], *box)
+    triangles = constrained_delaunay(polygon)
     edges = [tag(triangle_mobject(polygon, t, frame, theme.idle, theme).set_fill(opacity=0),
-                 None, "figure:triangle") for t in constrained_delaunay(polygon)]
+                 None, "figure:triangle") for t in triangles]
     chosen = tag(triangle_mobject(polygon, circle.triangle, frame, theme.result, theme),
                  "result", "figure:delaunay")
     ring = tag(Circle(radius=r * frame.scale, color=theme.result, stroke_width=theme.stroke)
                .move_to(frame.to_scene((cx, cy))), "result", "figure:circumcircle")
     marks = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.argument),
                  "argument", "figure:hidden") for k in circle.inside]
-    name = "".join(polygon.labels[k] for k in circle.triangle)
-    if circle.inside:
-        inside = _names([polygon.labels[k] for k in circle.inside])
-        verb = "lies" if len(circle.inside) == 1 else "lie"
-        words = [(f"{inside} {verb} in the circle of {name},", theme.argument),
-                 (f"but P's edges hide {'it' if verb == 'lies' else 'them'} from {name}",
-                  theme.ink)]
-    else:
-        words = [(f"the circle of {name} holds no other vertex", theme.ink)]
+    sides = [(t[k], t[(k + 1) % 3]) for t in triangles for k in range(3)]
+    rim = [(cx + r * math.cos(a), cy + r * math.sin(a))
+           for a in (2 * math.pi * k / CIRCLE_CORNERS for k in range(CIRCLE_CORNERS + 1))]
+    vertices = tag(placed_vertex_markers(polygon, frame, theme, sides, [rim]), "idle",
+                   "figure:vertices")
     return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *edges,
-            chosen, ring, tag(placed_vertex_markers(polygon, frame, theme), "idle",
-                              "figure:vertices"), *marks, figure_caption(box, theme, *words)]
+            chosen, ring, vertices, *marks,
+            figure_caption(box, theme, *_circle_words(polygon, circle, theme))]
+
+
+def _circle_words(polygon: Polygon, circle: Circumcircle,
+                  theme: Theme) -> list[tuple[str, str]]:
+    """What the Delaunay figure says: the vertices in the circle (those only just inside it
+    said so), and that P's edges hide them from the triangle."""
+    name = "".join(polygon.labels[k] for k in circle.triangle)
+    if not circle.inside:
+        return [(f"the circle of {name} holds no other vertex", theme.ink)]
+    clear = clearly_inside(polygon, circle)
+    # a vertex only just inside said so where it is named: two rows, as the caption has room
+    inside = _names([polygon.labels[k] + ("" if k in clear else " (just)")
+                     for k in circle.inside])
+    one = len(circle.inside) == 1
+    return [(f"{inside} {'lies' if one else 'lie'} in {name}'s circle,", theme.argument),
+            (f"but P's edges hide {'it' if one else 'them'} from {name}", theme.ink)]
 
 
 # --- the recap: three triangulations -------------------------------------------------------------
@@ -305,5 +341,5 @@ def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
 
 
 __all__ = ["BOUNDS", "KINDS", "MEASURED_RUNS", "MEASURED_SIZES", "RECAPPED", "Circumcircle",
-           "Partition", "circumcircle", "figure_mobjects", "measured_series",
+           "Partition", "circumcircle", "clearly_inside", "figure_mobjects", "measured_series",
            "monotone_partition", "recap_triangulations", "shown_circle"]

@@ -280,25 +280,36 @@ class LectureScene(TraceScene):
             self.play(Write(title), *[FadeIn(m) for m in figure], run_time=0.8, **cue)
         else:
             self.play(Write(title), run_time=0.8, **cue)
-        shown: list[VMobject] = []  # the last line's claims
-        for k, (line, words) in enumerate(zip(lines, card.lines, strict=True)):
+        shown: list[VMobject] = []  # the last figure's claims and crossed edges
+        for line, words, (claims, edges) in zip(lines, card.lines, self._line_claims(card),
+                                                strict=True):
             cue = captions.show(words, 0.5)
             self.mark_card_line(words, card)
-            claims = self._line_claims(card, k)
             going = [FadeOut(m) for m in shown] if claims else []
-            self.play(FadeIn(line, shift=UP * 0.1), *going, *[Create(m) for m in claims],
-                      run_time=0.5 if not claims else 1.0, **cue)
-            shown = claims or shown
+            coming = [*claims, *edges]
+            self.play(FadeIn(line, shift=UP * 0.1), *going, *[Create(m) for m in coming],
+                      run_time=0.5 if not coming else 1.0, **cue)
+            shown = [*(claims or shown), *edges]
         captions.hold()
 
-    def _line_claims(self, card: Card, k: int) -> list[VMobject]:
-        """The claims (and crossed edges) of line ``k``'s figure, if it has one."""
-        figure = card.line_figures[k] if k < len(card.line_figures) else None
-        if figure is None:
-            return []
-        return [m for m in figure_mobjects(figure, self.lecture_polygon(), self.theme)
-                if isinstance(m, VMobject)
-                and (m.name == "figure:claim" or m.name.startswith("figure:edge:"))]
+    def _line_claims(self, card: Card) -> list[tuple[list[VMobject], list[VMobject]]]:
+        """Per line: the claims its figure brings (in place of the last figure's), and the
+        crossed edges its words name. A crossed edge comes with the first line from its
+        figure's on (before the next figure's) that names it, else with its claim: drawn
+        with the claim, E–A was red 5.5 s before the caption said so (review s567)."""
+        plan: list[tuple[list[VMobject], list[VMobject]]] = [([], []) for _ in card.lines]
+        figures = [(k, f) for k, f in enumerate(card.line_figures[:len(card.lines)])
+                   if f is not None]
+        ends = [*(j for j, _ in figures[1:]), len(card.lines)][:len(figures)]
+        for (k, figure), until in zip(figures, ends, strict=True):
+            for m in figure_mobjects(figure, self.lecture_polygon(), self.theme):
+                if isinstance(m, VMobject) and m.name == "figure:claim":
+                    plan[k][0].append(m)
+                elif isinstance(m, VMobject) and m.name.startswith("figure:edge:"):
+                    edge = m.name.removeprefix("figure:edge:")
+                    said = next((j for j in range(k, until) if edge in card.lines[j]), k)
+                    plan[said][1].append(m)
+        return plan
 
     def play_run(self, run: Run, log=None) -> None:
         """The run played as the metaphor scenes play it (``log``: its log, if already

@@ -223,7 +223,8 @@ def _rule(polygon: Polygon, heuristic: str, box: Box,
                                   f"figure:edge:{polygon.labels[u]}–{polygon.labels[w]}", theme))
     said = "an inner diagonal" if verdict.ok else "not inner"
     words = f"On this P the rule claims {polygon.labels[i]}{polygon.labels[j]}: {said}"
-    over = [_dot(frame, polygon.points[d.index], theme.argument, "argument", "figure:candidate")
+    # the candidates in their own colour, as the exercises' cards show them: amber is a claim's
+    over = [_dot(frame, polygon.points[d.index], theme.candidate, "candidate", "figure:candidate")
             for d in candidates_in_triangle(polygon, t)]
     return frame, under, [*over, figure_caption(box, theme, (words, colour))]
 

@@ -17,6 +17,7 @@ from manim import (
     DOWN,
     ORIGIN,
     RIGHT,
+    Animation,
     Create,
     DashedLine,
     Dot,
@@ -26,6 +27,8 @@ from manim import (
     Transform,
     VGroup,
     VMobject,
+    linear,
+    smooth,
 )
 from manim import Polygon as MPolygon
 from shapely.geometry import Polygon as Region
@@ -203,7 +206,7 @@ def stack_step(board: Board, beat: StackStep) -> None:
     theme = board.theme
     chain = tag(_chain(board, beat.points), None, "stack:chain")
     column = tag(_column(board, beat.chain, beat.depth), None, "stack:column")
-    anims: list = [_replace(board, "stack:chain", chain), _replace(board, "stack:column", column)]
+    anims: list = [_replace(board, "stack:chain", chain), *_restack(board, column)]
     if beat.triangle:
         cut = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.ink,
                            stroke_width=theme.thin_stroke, fill_color=theme.stack,
@@ -224,6 +227,54 @@ def _replace(board: Board, key: str, new: VMobject) -> Transform | FadeIn:
     return FadeIn(new)
 
 
+#: the share of a stack change that the words coming onto it wait, invisible, for the words
+#: moving down to clear their row (a row's height is a word's and :data:`STACK_BUFF`)
+COMING_AFTER = 0.75
+
+
+class Restack(Animation):
+    """The stack's column (``old``, on screen) rewritten as ``new`` word by word, each word
+    paired by its name (its label): one that stays moves to its new row, one that leaves
+    goes at once (a cut), one that comes fades in once the moves have cleared its row. One
+    Transform of the whole column paired its words by place, so that a leaving label faded
+    over the "stack" heading (review s567). The column on screen stays ``old``, turned into
+    ``new`` (its target, as a scene graph reads it)."""
+
+    def __init__(self, old: VGroup, new: VGroup, **kwargs) -> None:
+        super().__init__(old, rate_func=linear, **kwargs)
+        self.old, self.target_mobject = old, new
+        #: per word of ``new``: the word on screen, where it starts and ends, whether it came
+        self.words: list[tuple[VMobject, VMobject, VMobject, bool]] = []
+
+    def begin(self) -> None:
+        new: VGroup = self.target_mobject
+        before = {word.name: word for word in self.old}
+        self.old.remove(*(word for word in self.old if word.name not in {w.name for w in new}))
+        for word in new:
+            came = word.name not in before
+            shown = word.copy().set_opacity(0) if came else before[word.name]
+            self.words.append((shown, shown.copy(), word, came))
+        self.old.submobjects = [shown for shown, *_ in self.words]  # in the new column's order
+        super().begin()
+
+    def interpolate_mobject(self, alpha: float) -> None:
+        for shown, start, end, came in self.words:
+            t = smooth(max(0.0, (alpha - COMING_AFTER) / (1 - COMING_AFTER)) if came else alpha)
+            for part, a, b in zip(shown.family_members_with_points(),
+                                  start.family_members_with_points(),
+                                  end.family_members_with_points(), strict=True):
+                part.interpolate(a, b, t)
+
+
+def _restack(board: Board, column: VGroup) -> list:
+    """The stack's column rewritten as ``column`` (:class:`Restack`), or brought in."""
+    old = board.objects.get("stack:column")
+    if not isinstance(old, VGroup):
+        board.keep("stack:column", column)
+        return [FadeIn(column)]
+    return [Restack(old, column)]
+
+
 def _chain(board: Board, points: Sequence[Point]) -> VMobject:
     """The waiting chain: a thick line through its vertices, a large dot when one waits."""
     theme = board.theme
@@ -239,8 +290,10 @@ def _words(board: Board, chain: Sequence[str]) -> list[VMobject]:
     """The stack's words: "stack", then its labels, the top first."""
     theme = board.theme
     size = theme.label_size + 4  # "stack" has no capital: a line of it still ≥ 2.5 % high
-    return [text(word, font=theme.font, size=size, colour=theme.stack)
-            for word in ("stack", *reversed(chain))]
+    # each named, so that a change of the stack moves each word to its new row
+    return [tag(text(word, font=theme.font, size=size, colour=theme.stack), None,
+                f"stack:{name}")
+            for word, name in (("stack", "heading"), *((c, c) for c in reversed(chain)))]
 
 
 def _column(board: Board, chain: Sequence[str], depth: int) -> VGroup:

@@ -2702,15 +2702,16 @@ def shifting_colours(data: dict) -> list[str]:
             judged = False
         judged = judged or caption.startswith(_VERDICTS)
         said = caption.removeprefix("Claim: ").replace(",", " ").replace(".", " ").split()
-        picked = said[-1] if caption and not caption.startswith("Claim:") else ""
+        # the caption naming the candidates picks none of them, though its last word is one
+        picked = said[-1] if caption and not caption.startswith(("Claim:", _CANDIDATES)) else ""
         claimed = said[0] if caption.startswith("Claim:") else ""
-        for _, node in (r for a in play["animations"] for r in _recorded(a)):
+        for role, node in (r for a in play["animations"] for r in _shown_roles(a)):
             vertex = _vertex_of(node.get("name") or "", candidates)
             if vertex is None or judged:
                 continue
-            if node.get("role") == "result":
+            if role == "result":
                 found.setdefault((vertex, "green"), f"play {k} {vertex} green before a verdict")
-            elif (node.get("role") == "argument" and picked in candidates
+            elif (role == "argument" and (picked in candidates or not picked)
                   and vertex not in (picked, *claimed)):
                 found.setdefault((vertex, "amber"), f"play {k} {vertex} amber, not picked")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
@@ -2918,3 +2919,17 @@ def stray_vertex_markers(data: dict) -> list[str]:
             if all(math.dist(dot, corner) > MARKER_AT_CORNER for corner in corners):
                 found[name] = f"play {k} {name.removeprefix('vertex:')}"
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+def _shown_roles(anim: dict) -> Iterator[tuple[str | None, dict]]:
+    """(the role it is shown in, node) of every top mobject an animation (or its members)
+    has (:func:`_recorded`), and of every pulse's mobject (Indicate), in the role whose colour
+    the pulse lights it in: a run of one's own pulsed the candidates amber, the claim's colour,
+    while the panel showed them pink (review s567), and a pulse's colour is in no mobject."""
+    for _, node in _recorded(anim):
+        yield node.get("role"), node
+    roles = {_colour(role): role for role in ("result", "argument")}
+    pulses = [anim, *anim.get("animations", ())]
+    for pulse in pulses:
+        if "color" in pulse and "mobject" in pulse:
+            yield roles.get(str(pulse["color"]).upper()), pulse["mobject"]

@@ -551,6 +551,53 @@ def test_the_delaunay_figure_draws_the_circle_of_one_triangle_and_what_it_holds(
     assert name in caption and all(p.labels[k] in caption for k in circle.inside)
 
 
+def labels_on_lines(markers, ring, triangles) -> list[str]:
+    """The vertex labels of the Delaunay figure nearer than the labels' margin
+    (:data:`metaphors.labels.EDGE_MARGIN`) to its circle or to a triangle's side, as
+    ``"K × circle"``, ``"G × triangle"``."""
+    import shapely
+
+    from metaphors.labels import EDGE_MARGIN
+
+    circle = shapely.Point(ring.get_center()[:2]).buffer(ring.width / 2, 256).exterior
+    sides = [shapely.LinearRing([v[:2] for v in t.get_vertices()]) for t in triangles]
+    found = []
+    for marker in markers:
+        text = marker[1]
+        box = shapely.box(*text.get_corner([-1, -1, 0])[:2], *text.get_corner([1, 1, 0])[:2])
+        name = text.original_text
+        found += [f"{name} × circle"] * (box.distance(circle) < EDGE_MARGIN - 1e-6)
+        found += [f"{name} × triangle"] * any(box.distance(s) < EDGE_MARGIN - 1e-6
+                                               for s in sides)
+    return found
+
+
+def test_the_delaunay_figure_s_labels_keep_clear_of_its_circle_and_triangles():
+    """Review s567: "K" stood on the circle, "G" on edge G–C and "F" touched the circle: the
+    labels were placed clear of P's edges only (the old placement, below, is seen)."""
+    import math
+
+    from metaphors.figure_faster import shown_circle
+    from metaphors.labels import placed_vertex_markers
+    from metaphors.theme import THEME
+
+    drawn = figure_mobjects(Figure("delaunay-circle"), "lecture")
+    (ring,) = named(drawn, "figure:circumcircle")
+    triangles = named(drawn, "figure:triangle")
+    (vertices,) = named(drawn, "figure:vertices")
+    assert labels_on_lines(vertices, ring, triangles) == []
+    p = read_polygon("lecture")
+    circle = shown_circle(p)
+    (cx, cy), r = (float(v) for v in circle.centre), circle.radius
+    frame = Frame([*p.points, (cx - r, cy - r), (cx + r, cy + r)], *BOX)
+    old = placed_vertex_markers(p, frame, THEME)
+    assert {"K × circle", "G × triangle"} <= set(labels_on_lines(old, ring, triangles))
+    # and M, whose mark sits on the line, is said to be only just inside
+    near = [p.labels[k] for k in circle.inside
+            if r - math.dist((cx, cy), p.points[k]) < 0.1 * r]
+    assert all(f"{v} (just)" in label(drawn) for v in near)
+
+
 def test_the_recap_draws_each_algorithm_s_own_triangulation_with_the_bound_its_card_says():
     from pathlib import Path
 

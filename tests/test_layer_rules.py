@@ -70,3 +70,24 @@ def test_candidates_neutral_the_pick_amber_and_green_once_judged_pass():
              _said("Claim: BE is an inner diagonal", _marker("E", "argument")),
              _said("✓ BE is an inner diagonal", _marker("E", "result"))]
     assert shifting_colours({"plays": plays}) == []
+
+
+def _pulse(vertex: str, colour: str) -> dict:
+    return {"type": "Indicate", "color": colour,
+            "mobject": {"name": f"vertex:{vertex}", "role": "candidate"}}
+
+
+def test_candidates_pulsed_in_the_claims_amber_are_found():
+    """Review s567: a run of one's own pulsed its candidates amber ("Candidates inside T: D,
+    E", the claim's colour) while the panel showed them pink; the pulse's colour is in the
+    animation, not in its mobject. Pulsed pink, they pass."""
+    from metaphors.theme import THEME
+
+    def plays(colour: str) -> list[dict]:
+        return [_said("Candidates inside T: D, E", _pulse("D", colour), _pulse("E", colour)),
+                _said("Distance to C for D: 2.2", _marker("D", "argument")),
+                _said("Claim: BE is an inner diagonal", _marker("E", "argument"))]
+
+    assert shifting_colours({"plays": plays(THEME.argument)}) == [
+        "play 0 D amber, not picked", "play 0 E amber, not picked"]
+    assert shifting_colours({"plays": plays(THEME.candidate)}) == []

@@ -64,3 +64,37 @@ def test_early_claims_sees_the_old_card():
 def test_each_line_of_a_claims_card_is_a_sentence(card):
     """Each line is its own caption: none ends half-way through a sentence."""
     assert all(line.rstrip().endswith((".", "?", "!")) for line in card.lines), card.title
+
+
+def early_edges(card: Card, plan) -> list[str]:
+    """The crossed edges a card draws red before its words name them, as ``"line 0: E–A"``
+    (``plan``: per line, the claims and crossed edges it brings, as
+    :meth:`metaphors.lecture.LectureScene._line_claims` gives them)."""
+    return [f"line {k}: {edge.name.removeprefix('figure:edge:')}"
+            for k, (line, (_, edges)) in enumerate(zip(card.lines, plan, strict=True))
+            for edge in edges if edge.name.removeprefix("figure:edge:") not in line]
+
+
+def _plan(card: Card):
+    scene = Recap.__new__(Recap)
+    scene.lecture_polygon = lambda: "lecture"  # type: ignore[method-assign]  # the cards name their own polygon
+    return scene._line_claims(card)
+
+
+@pytest.mark.parametrize("card", _claims_figures(), ids=lambda c: c.title)
+def test_a_crossed_edge_turns_red_when_its_words_name_it(card):
+    """Review s567: E–A was thick red from the moment BD was drawn, 5.5 s before "BD crosses
+    edge E–A" was said."""
+    plan = _plan(card)
+    assert early_edges(card, plan) == [], card.title
+    drawn = [e for _, edges in plan for e in edges]
+    assert all(e.name.startswith("figure:edge:") for e in drawn)
+
+
+def test_early_edges_sees_the_edge_drawn_with_its_claim():
+    """The old plan: the crossed edge came with the claim, on the line before its name."""
+    card = next(c for c in _claims_figures() if "fail" in c.title)
+    plan = _plan(card)
+    moved = [(claims, [e for _, es in plan for e in es] if k == 0 else [])
+             for k, (claims, _) in enumerate(plan)]
+    assert early_edges(card, moved) == ["line 0: E–A"]
