@@ -323,26 +323,6 @@ class Board:
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
 
 
-class FadeInUnder(FadeIn):
-    """A fade in that puts its mobject in the drawing order under the first of ``under`` on
-    screen, not over everything as a fade in does: the fruit faded back in after gravity's
-    close-up came over the labels of the vertices the close-up kept (M, H and G light orange
-    on its orange, their dark halos hidden)."""
-
-    def __init__(self, mobject: Mobject, under: Sequence[Mobject], **kwargs: Any) -> None:
-        super().__init__(mobject, **kwargs)
-        self.under = list(under)
-
-    def _setup_scene(self, scene: Any) -> None:
-        super()._setup_scene(scene)
-        if scene is None:
-            return
-        above = [k for k, m in enumerate(scene.mobjects)
-                 if any(m is other for other in self.under)]
-        if above and scene.mobjects.index(self.mobject) > above[0]:
-            scene.mobjects.remove(self.mobject)
-            scene.mobjects.insert(above[0], self.mobject)
-
 
 def _edges(mobject: Mobject) -> list[Segment]:
     """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""

@@ -86,10 +86,9 @@ def small_texts(data: dict) -> list[str]:
 #: the animations that take a mobject off the screen, and those that put one on
 OUTGOING = {"FadeOut", "Uncreate", "Unwrite", "ShrinkToCenter"}
 #: ``Add``, ``Replace`` (:class:`metaphors.fruit.Replace`: the one it replaces goes in the
-#: same frame): a cut, the mobject on screen from the play's first frame (ear clipping's counts);
-#: ``FadeInUnder`` (:class:`metaphors.board.FadeInUnder`): a fade in under the labels
+#: same frame): a cut, the mobject on screen from the play's first frame (ear clipping's counts)
 INCOMING = {"FadeIn", "Write", "Create", "AddTextLetterByLetter", "GrowFromCenter", "Add",
-            "Replace", "FadeInUnder"}
+            "Replace"}
 
 
 def _text_of(node: dict) -> str:
@@ -2415,25 +2414,17 @@ def _fills(shown: dict[str, dict]) -> list[tuple[str, Any, tuple[str, float], st
     return fills
 
 
-#: a fade in that puts its mobject under the labels, not over everything
-#: (:class:`metaphors.board.FadeInUnder`)
-_UNDER = "FadeInUnder"
-
-
 def _layers(data: dict) -> Iterator[dict[str, int]]:
     """After each play, where each top mobject shown stands in the drawing order, by name
     (higher: drawn over lower): a mobject coming in, or first recorded, goes over all there
-    are (as manim adds it), one faded in under (:data:`_UNDER`) under all; one going leaves."""
+    are (as manim adds it); one going leaves."""
     layer: dict[str, int] = {}
-    high = low = 0
+    high = 0
     for play in data["plays"]:
         for anim in play["animations"]:
             for kind, _, name in _ends(anim):
                 if kind in OUTGOING:
                     layer.pop(name, None)
-                elif kind == _UNDER:
-                    low -= 1
-                    layer[name] = low
                 elif kind in INCOMING or name not in layer:
                     high += 1
                     layer[name] = high

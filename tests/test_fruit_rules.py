@@ -148,9 +148,6 @@ def test_a_label_the_fruit_came_over_is_found():
     # the label moves back from the close-up as the fruit fades in
     over = _graph(start, [_orange("FadeOut")], [_orange("FadeIn"), _label("_MethodAnimation")])
     assert labels_without_contrast(over) == ["play 2 M under polygon 1.9 : 1"]
-    under = _graph(start, [_orange("FadeOut")],
-                   [_orange("FadeInUnder"), _label("_MethodAnimation")])
-    assert labels_without_contrast(under) == []
 
 
 def _rows(*texts: str) -> list[dict]:
