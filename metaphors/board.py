@@ -323,7 +323,6 @@ class Board:
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
 
 
-
 def _edges(mobject: Mobject) -> list[Segment]:
     """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""
     if isinstance(mobject, Line):

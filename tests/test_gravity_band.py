@@ -1,5 +1,7 @@
-"""The rubber band is always inside P (review r34 item 1): sampled through the slide as
-:func:`metaphors.gravity.slide` draws it, its segments never leave the polygon. The old
+"""The rubber band is always inside P (review r34 item 1): sampled through the slide from the
+pieces :func:`story.analysis.wraps` gives (the pieces :func:`metaphors.gravity.slide` plays,
+one play each, the ball moving linearly; :func:`story.analysis.band_at` is the band at a time
+of them, not read from the scene), its segments never leave the polygon. The old
 drawing, the band straight from V to the ball until the snag beat bent it, crossed edge A–H
 of the lecture's polygon and lay outside P for two seconds."""
 
