@@ -110,8 +110,9 @@ class Board:
         self.passing: dict[str, Mobject] = {}
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
-        # how many of the run's beats each caption stands over (:meth:`shared_time`)
-        self.shares: dict[str, int] = {}
+        # how many beats the caption of the beat being played stands over, in its unbroken
+        # stretch of beats (:meth:`shared_time`; set by :func:`metaphors.play.play_beats`)
+        self.share = 1
         # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood,
         # in the polygon's coordinates
         self.moved_for_now: dict[str, tuple[float, float]] = {}
@@ -144,8 +145,11 @@ class Board:
         """The seconds each beat under ``beat``'s caption takes at least, so that together
         they last as long as the caption takes to read: a summary's fast steps ("Vertices H,
         B, G and F: the same steps, faster") share its reading time, each long enough to see
-        (at 0.2 s each they flashed by, then the screen stood still on the last for 2 s)."""
-        return reading_time(beat.caption) / max(1, self.shares.get(beat.caption, 1))
+        (at 0.2 s each they flashed by, then the screen stood still on the last for 2 s).
+        Only the beats of its own stretch share it: the same words said again later are
+        read again (counted over the whole run, each step of a summary whose caption came
+        back was cut short by the beats of the other)."""
+        return reading_time(beat.caption) / max(1, self.share)
 
     def play(self, beat: Beat, *anims: Playable, run_time: float = 1.0,
              together: bool = False, at_rest: bool = False, least: float = 0.0) -> None:

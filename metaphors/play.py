@@ -10,8 +10,8 @@ lasts until the run ends).
 
 from __future__ import annotations
 
-from collections import Counter
 from collections.abc import Callable, Sequence
+from itertools import groupby
 from typing import Protocol, cast
 
 from metaphors.board import Board
@@ -49,7 +49,6 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
                   scene.metaphor_box, holes, captions=captions_of(recorded),
                   claims=[beat.labels for beat in beats if isinstance(beat, Claim)])
     board.panel.shows_calls = scene.call_line
-    board.shares = dict(Counter(beat.caption for beat in beats))
     board.panel.run_call = run_call(log)
     code = log.meta.get("code")
     rows, picked, named = staged_pseudocode(log)
@@ -62,11 +61,28 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     return board
 
 
+def stretches(beats: Sequence[Beat]) -> list[int]:
+    """For each beat, how many beats its caption stands over: the unbroken stretch of
+    beats with that caption it is one of (a summary's fast steps), not every beat of the
+    run that says the same words.
+
+    >>> from story.beats import Note
+    >>> stretches([Note(caption=c, seq=k) for k, c in enumerate("aabba")])
+    [2, 2, 2, 2, 1]
+    """
+    counts: list[int] = []
+    for _, group in groupby(beats, key=lambda beat: beat.caption):
+        n = len(list(group))
+        counts.extend([n] * n)
+    return counts
+
+
 def play_beats(board: Board, beats: Sequence[Beat],
                after: Callable[[int, Beat], None] | None = None) -> Board:
     """Perform each beat on the board (``after(k, beat)`` once each is played, k from 1),
     then close it. Each beat is a step of the video (:func:`metaphors.recorded.mark_step`)."""
-    for k, beat in enumerate(beats, start=1):
+    for k, (beat, share) in enumerate(zip(beats, stretches(beats), strict=True), start=1):
+        board.share = share  # the beats its caption stands over (Board.shared_time)
         if beat.caption != board.caption:
             board.captions.hold()  # the caption before is read in its own step
         mark_step(cast(Recorded, board.scene), beat.caption, beat.call, beat.action)  # board_for's

@@ -496,13 +496,15 @@ def staged_pseudocode(log: Log) -> tuple[tuple[PseudocodeRow, ...], int | None,
 
 
 def _picked_at(log: Log, vertices: Mapping[str, str]) -> int | None:
-    """The seq of the event that gives the run's D its vertex: the return of its ``pick``, or
-    the claim of BD (a heuristic of one's own); None if the run gives D none."""
+    """The seq of the event that gives the run's D its vertex: the return of its ``pick``
+    that names it, or the claim of BD (a heuristic of one's own); None if the run gives D
+    none. A return that names no vertex (a pick that found none, or raised) picks nothing:
+    taken for the pick, it put the run's D in the pseudocode before the run had chosen it."""
     d, b = vertices.get("D"), vertices.get("B")
     if d is None:
         return None
     for e in log.events:
-        if e.kind == "return" and _PLACEHOLDERS.get(e.name) == "D":
+        if e.kind == "return" and _PLACEHOLDERS.get(e.name) == "D" and refs(e.result) == [d]:
             return e.seq
         if e.kind == "call" and e.name == "claim":
             ends = [k for v in (e.args or {}).values() for k in refs(v)]

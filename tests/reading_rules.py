@@ -2924,3 +2924,50 @@ def _shown_roles(anim: dict) -> Iterator[tuple[str | None, dict]]:
     for pulse in pulses:
         if "color" in pulse and "mobject" in pulse:
             yield roles.get(str(pulse["color"]).upper()), pulse["mobject"]
+
+
+# --- a triangulation drawn large enough to see, its words clear of it ----------------------------
+
+#: the frame's height (scene units): what a triangle's height is a share of
+FRAME_HEIGHT = 8.0
+#: 4 % of the frame's height: the least height of a triangle of a whole triangulation drawn
+#: alone (the polygon scene's counterexample: BEC, 3 % framed 9 × 5, read as a line)
+LEAST_TRIANGLE = 0.04
+#: the least gap between a text on the picture's screen (a title, a count) and the picture:
+#: its polygon's region and its vertex labels (2.5 % of the frame's height)
+LEAST_WORDS_GAP = 0.2
+
+
+def _altitude(a: tuple[float, float], b: tuple[float, float], c: tuple[float, float]) -> float:
+    """A triangle's shortest height: twice its area over its longest side."""
+    area2 = abs((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]))
+    return area2 / max(math.dist(a, b), math.dist(b, c), math.dist(c, a))
+
+
+def thinnest_triangle(data: dict) -> float | None:
+    """The least height, as a share of the frame's height, of the triangles of the whole
+    triangulation on screen at the end (its ``triangulation`` nodes, as drawn); None if
+    there is none."""
+    heights = [_altitude(*corners[:3]) for node in data.get("final", ())
+               for part in mobject_nodes(node) if part.get("name") == "triangulation"
+               for corners in [_corners(part)] if len(corners) == 3]
+    return min(heights) / FRAME_HEIGHT if heights else None
+
+
+def words_on_the_picture(data: dict, gap: float = LEAST_WORDS_GAP) -> list[str]:
+    """The texts on screen at the end that are no vertex label and come nearer than ``gap``
+    to the picture (a drawn polygon's region, a vertex label), as ``"n − 2 = 5 − 2 = 3
+    triangles: 0.05 from polygon"``: a picture framed larger must leave its title and count
+    room."""
+    from shapely.geometry import Polygon as Region
+    from shapely.geometry import box
+
+    final = list(data.get("final", ()))
+    picture = [(n["name"], Region(_corners(n))) for top in final for n in mobject_nodes(top)
+               if n.get("name") in _POLYGONS and len(n.get("points", ())) >= 12]
+    picture += [(n["name"], box(*b)) for top in final for n in mobject_nodes(top)
+                if (n.get("name") or "").startswith("vertex:") for b in _label_boxes(n)]
+    words = [(top["text"], box(*top["box"])) for top in final
+             if top.get("box") and (top.get("text") or "").strip()]
+    return [f"{said}: {shape.distance(region):.2f} from {name}" for said, shape in words
+            for name, region in picture if shape.distance(region) < gap]

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import json
+from dataclasses import replace
 
 import pytest
 from hypothesis import given, settings
@@ -222,19 +223,52 @@ def test_a_summarys_fast_steps_each_last_long_enough_to_see():
     reading time: each at least half a second, the caption's hold after them short."""
     from story.reading import reading_time
 
-    data = _graph(_monotone_graphs()[1].values[0])
-    runs: dict[str, list[float]] = {}
-    caption = None
-    for play in data["plays"]:
-        caption = play.get("subcaption") or caption
-        pulsed = [a for a in play["animations"] if a.get("type") == "Indicate"
-                  and (a.get("mobject") or {}).get("name", "").startswith("vertex:")]
-        if caption and "the same steps, faster" in caption and pulsed:
-            runs.setdefault(caption, []).append(play["run_time"])
-    assert runs and all(len(steps) >= 2 for steps in runs.values())
-    for said, steps in runs.items():
+    runs = _fast_steps(_graph(_monotone_graphs()[1].values[0]))
+    assert runs and all(len(steps) >= 2 for _, steps in runs)
+    for said, steps in runs:
         assert min(steps) >= 0.5, (said, steps)
         assert sum(steps) >= reading_time(said) - 0.5, (said, steps)  # no long hold after
+
+
+def _fast_steps(data) -> list[tuple[str, list[float]]]:
+    """Each stretch of a summary's fast steps (one caption, shown once): its caption and the
+    run times of the plays that pulse a vertex under it."""
+    runs: list[tuple[str, list[float]]] = []
+    for play in data["plays"]:
+        if play.get("subcaption"):
+            runs.append((play["subcaption"], []))
+        pulsed = [a for a in play["animations"] if a.get("type") == "Indicate"
+                  and (a.get("mobject") or {}).get("name", "").startswith("vertex:")]
+        if runs and "the same steps, faster" in runs[-1][0] and pulsed:
+            runs[-1][1].append(play["run_time"])
+    return [(said, steps) for said, steps in runs if steps]
+
+
+def test_a_summary_said_again_later_shares_its_time_only_within_its_own_stretch():
+    """Board.shares counted a caption over the whole run: a summary whose words came back
+    later (here the lecture's last one, "Vertices E and C", reworded as the first) had each
+    step of its first stretch cut to its reading time over all six steps (0.45 s, and 1.8 s
+    for a caption of 2.7 s). Each stretch shares its caption's reading time among its own."""
+    from metaphors.scene import TraceScene
+    from story.reading import reading_time
+    from trex.snapshot import build
+
+    class SaidTwice(TraceScene):
+        algorithm = "monotone"
+        polygon = "lecture"
+
+        def beats(self, log):
+            beats = super().beats(log)
+            first, last = (next(b.caption for b in order if "faster" in b.caption)
+                           for order in (beats, beats[::-1]))
+            assert first != last  # two summaries, each its own stretch
+            return [replace(b, caption=first) if b.caption == last else b for b in beats]
+
+    runs = _fast_steps(build(SaidTwice.handed()).data)
+    assert [len(steps) for _, steps in runs] == [4, 2] and runs[0][0] == runs[1][0]
+    for said, steps in runs:
+        assert min(steps) >= 0.5, (said, steps)
+        assert sum(steps) >= reading_time(said) - 0.5, (said, steps)
 
 
 def _legend() -> dict[str, str]:

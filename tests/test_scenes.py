@@ -27,6 +27,7 @@ import inspect
 import re
 import sys
 from collections.abc import Iterator
+from copy import deepcopy
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -45,6 +46,7 @@ from story.spec import RunSpec
 from story.storyboard import run_vertices
 from tests.reading_rules import (
     LEAST_LINE,
+    LEAST_TRIANGLE,
     broken_counts,
     broken_summaries,
     calls_over_code,
@@ -91,11 +93,13 @@ from tests.reading_rules import (
     stray_vertex_markers,
     swept_outside_polygon,
     tails_beside_labels,
+    thinnest_triangle,
     ticks_outside,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
     words_before_pictures,
+    words_on_the_picture,
 )
 from tests.test_pseudocode import (
     EXAMPLE,
@@ -923,3 +927,35 @@ def _walk_animation(node: dict) -> Iterator[dict]:
         yield from _walk(node["mobject"])
     for child in node.get("animations", ()):
         yield from _walk_animation(child)
+
+
+POLYGON_SCENE = next(c for c in SCENES if c.id == "polygon.PolygonScene")
+
+
+def test_the_polygon_scenes_thinnest_triangle_is_seen_and_its_words_clear_of_it():
+    """The counterexample cut into triangles: BEC stood 2.9 % of the frame high (framed 9 × 5
+    about the centre), a line more than a triangle. Framed as large as its title and count
+    leave room for, it stands at least 4 % high, and the words keep clear of the picture."""
+    data = graph(POLYGON_SCENE).data
+    thinnest = thinnest_triangle(data)
+    assert thinnest is not None and thinnest >= LEAST_TRIANGLE, thinnest
+    assert words_on_the_picture(data) == []
+
+
+def test_words_on_the_picture_are_found():
+    """The rule can fail: the polygon scene's count moved onto its picture's middle, and its
+    title moved to start just after the label A (0.1 from it)."""
+    data = deepcopy(graph(POLYGON_SCENE).data)
+    nodes_ = [n for top in data["final"] for n in _walk(top)]
+    count = next(n for n in nodes_ if n.get("name") == "counter")
+    title = next(n for n in nodes_ if n.get("type") == "GlyphText")
+    polygon = next(n for n in nodes_ if n.get("name") == "polygon")
+    label = next(p["box"] for n in nodes_ if n.get("name") == "vertex:A"
+                 for p in n["submobjects"] if p.get("text") == "A")
+    xs, ys = ([p[k] for p in polygon["points"]] for k in (0, 1))
+    x, y = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+    count["box"] = [x - 1.0, y - 0.17, x + 1.0, y + 0.17]
+    title["box"] = [label[2] + 0.1, label[1], label[2] + 8.85, label[1] + 0.35]
+    found = words_on_the_picture(data)
+    assert f"{count['text']}: 0.00 from polygon" in found, found
+    assert f"{title['text']}: 0.10 from vertex:A" in found, found

@@ -4,6 +4,7 @@ heuristic of one's own's captions — and the words rule of item 10 able to fail
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -14,7 +15,13 @@ from geometry.polygon import Polygon
 from geometry.samples import make_sample
 from story.registry import REGISTRY, SPOKEN, entry, spoken
 from story.runs import record_user_run
-from story.storyboard import pseudocode_of, run_vertices, spoken_pseudocode, storyboard
+from story.storyboard import (
+    pseudocode_of,
+    run_vertices,
+    spoken_pseudocode,
+    staged_pseudocode,
+    storyboard,
+)
 from tests.reading_rules import unspoken_words
 from usercode.heuristic import load_user_heuristic, run_heuristic
 
@@ -57,6 +64,32 @@ def test_the_pseudocode_names_the_vertex_the_run_picked():
 def test_the_pseudocode_keeps_its_placeholders_when_the_run_agrees():
     log = _log("scaling", "counterexample")  # picks D: nothing to rename
     assert spoken_pseudocode(log) == pseudocode_of(log)
+
+
+def _with_an_empty_pick_first(log: tracing.Log) -> tracing.Log:
+    """The log with a call of ``pick`` that returns no vertex (None, as a pick that finds no
+    candidate) just before the run's own pick; every seq, and each event's call, renumbered."""
+    at = next(e.seq for e in log.events if e.kind == "call" and e.name == "pick")
+    call = log.events[at]
+    back = next(e for e in log.events if e.kind == "return" and e.call == at)
+    extra = [replace(call, seq=-2), replace(back, seq=-1, call=-2, result=None)]
+    events = [*log.events[:at], *extra, *log.events[at:]]
+    seqs = {e.seq: k for k, e in enumerate(events)}
+    return tracing.Log(dict(log.meta), [
+        replace(e, seq=k, call=None if e.call is None else seqs[e.call])
+        for k, e in enumerate(events)])
+
+
+def test_the_pseudocode_names_the_pick_only_once_the_pick_returns_it():
+    """The placeholder D became the run's vertex at the first return of ``pick``, whatever it
+    returned: a pick that found nothing, before the real one, put "D = the candidate
+    nearest to C" with the run's D on screen before the run had chosen it."""
+    log = _with_an_empty_pick_first(_log("scaling", "counterexample"))
+    returns = [e for e in log.events if e.kind == "return" and e.name == "pick"]
+    assert [e.result for e in returns][:1] == [None] and len(returns) == 2  # the empty one first
+    assert run_vertices(log)["D"] == "D"  # the run's pick is still D
+    _, picked, _ = staged_pseudocode(log)
+    assert picked == returns[1].seq, (picked, [e.seq for e in returns])
 
 
 def test_a_heuristic_of_ones_own_is_captioned_in_words():
