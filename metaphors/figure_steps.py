@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 
-from manim import Animation, FadeIn, Mobject, UpdateFromAlphaFunc, linear
+from manim import Animation, FadeIn, Mobject, UpdateFromAlphaFunc, linear, smooth
 
 #: seconds a growing part takes to come in (the water spreading, the hand turning)
 GROW = 2.0
@@ -52,4 +52,11 @@ def coming(part: Mobject) -> tuple[Animation, float]:
                                run_time=GROW), GROW
 
 
-__all__ = ["GROW", "comes_with", "coming", "grows", "steps"]
+def done_by(share: float) -> Callable[[float], float]:
+    """A rate function that ends at ``share`` of its play (0 < share ≤ 1), then holds: a
+    card's line fades in in its usual time while a part of its figure grows on for longer
+    (stretched to the whole play, the line stood faint for 2 s)."""
+    return lambda t: smooth(min(1.0, t / share))
+
+
+__all__ = ["GROW", "comes_with", "coming", "done_by", "grows", "steps"]

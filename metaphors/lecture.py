@@ -289,9 +289,11 @@ class LectureScene(TraceScene):
             self.mark_card_line(words, card)
             going = [FadeOut(m) for m in shown] if claims else []
             coming = [*claims, *edges]
-            self.play(FadeIn(line, shift=UP * 0.1), *going, *[Create(m) for m in coming],
-                      *[anim for anim, _ in drawn],
-                      run_time=max(0.5 if not coming else 1.0, grown), **cue)
+            usual = 0.5 if not coming else 1.0
+            run_time = max(usual, grown)
+            self.play(FadeIn(line, shift=UP * 0.1, rate_func=figure_steps.done_by(
+                usual / run_time)), *going, *[Create(m) for m in coming],
+                      *[anim for anim, _ in drawn], run_time=run_time, **cue)
             shown = [*(claims or shown), *edges]
         captions.hold()
 

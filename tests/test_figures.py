@@ -196,7 +196,7 @@ def test_prune_draws_an_inner_diagonal_that_keeps_at_most_half_and_one():
                                                                        "figure:smaller"))
     assert smaller <= good // 2 + 1
     g, v, _ = prune_rounds(p)[0]
-    marked = named(drawn, "figure:candidate")[0].get_center()
+    marked = named(drawn, "figure:step")[0].get_center()
     assert on_screen(Frame(p.points, *BOX), p.points[v]) == (round(marked[0], 6),
                                                             round(marked[1], 6))
     assert g.vertex_at(g.middle()).index == v
