@@ -41,6 +41,7 @@ from manim import (
 )
 
 from metaphors import catalog
+from metaphors.captions import whole_frames
 from metaphors.drawing import crossed_edge
 from metaphors.gravity import RESTING, Drop, GravityTurn, Slide, Snag
 from metaphors.stage import BOX, OUTSIDE, Canvas, Stage, beside, path, place_name, region
@@ -236,13 +237,23 @@ def tool_colour(theme: Theme, heuristic: str) -> str:
         metaphor or "", theme.band)
 
 
+def light(stage: Stage, label: str, role: str) -> Animation:
+    """Vertex ``label``'s marker turned to ``role``'s colour, and kept in it: a candidate
+    pink from the frame on, the pick amber once reached, green once its claim holds, as a
+    run's markers are (a pulse alone left D and E grey the 8.5 s the water spread)."""
+    marker = tag(stage.markers[label], role, f"vertex:{label}")
+    return cast(Animation, marker.animate.set_color(stage.theme.role_colour(role)))
+
+
 def frame(stage: Stage, seen: Moment, analysis: Analysis) -> None:
     """The pass opens on the frame: the polygon, T and its candidates lit, said once."""
-    theme = stage.theme
-    lit = [Indicate(stage.markers[c], color=theme.candidate) for c in seen.candidates]
     # no "swept" key yet: it comes with the first swept region (:func:`fails`)
-    stage.say(seen.words(analysis.intro), (stage.appear(), 1.5),
-              (lit, 0.8), ([], analysis.freeze / 2))  # a moment to look at the polygon
+    stage.say(seen.words(analysis.intro), (stage.appear(), 1.5))
+    # lit once on screen: a marker fading in is recorded white, not yet a candidate
+    if seen.candidates:
+        stage.scene.play(*[light(stage, c, "candidate") for c in seen.candidates],
+                         run_time=0.8)
+    stage.scene.wait(whole_frames(analysis.freeze / 2))  # a moment to look at the polygon
 
 
 def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
@@ -260,7 +271,7 @@ def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
                                            *stage.key(theme.swept, "swept", "swept")],
                                           1.5 if opening else 0.3),
               (motion_anims, analysis.slow),
-              ([Indicate(stage.markers[wrong.pick], color=theme.argument)], 0.8),
+              ([light(stage, wrong.pick, "argument")], 0.8),
               ([], analysis.freeze))  # frozen at the pick: the moment the argument is about
     stray = split(m.tool(1.0), stage.polygon.points, m.triangle)["astray"]
     outside_tool = path(stage, stray, theme.rejected, theme.stroke * 2.4, "analysis:astray",
@@ -327,7 +338,7 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
             analysis.slow)
         stage.say(right.moving_beat.caption, *out_then_in(first, 1.5), ([FadeIn(drawing)], 0.3),
                   (motion_anims, analysis.slow),
-                  ([Indicate(stage.markers[right.pick], color=theme.argument)], 0.6))
+                  ([light(stage, right.pick, "argument")], 0.6))
         witness = m.witness()
         label = "still dry" if m.rising else "swept"
         # the green witness covers what was swept: the blue key goes before it comes (it
@@ -341,7 +352,9 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
     tick = tag(typeset.text("✓", font=theme.font, size=48, colour=theme.result), "result",
                "analysis:tick").set_z_index(4)
     beside(stage, tick, claim, witness)
-    shown = [FadeIn(shaded), Create(claim), FadeIn(halo(stage, tick)), FadeIn(tick),
+    # the pick green with its claim, judged (a band's run lit no pick)
+    judged = [light(stage, right.pick, "result")] if right.band is None else []
+    shown = [FadeIn(shaded), Create(claim), FadeIn(halo(stage, tick)), FadeIn(tick), *judged,
              *stage.key(theme.result, f"{label}: in P", "witness")]
     gone = [(covered, 0.4)] if covered else []  # a play of its own: no text over a going one
     stage.say(right.words(analysis.holds), *gone, (shown, 1.5), ([], analysis.freeze))
@@ -425,8 +438,10 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
         frame(stage, first, analysis)
     cleared = fails(stage, first, analysis)
     # the correction's first appearance in the chapter: named with its picture
+    # the wrong pick is a candidate again, for the correction to pick among
+    again = [light(stage, first.pick, "candidate")] if first.pick in first.candidates else []
     holds(stage, right, analysis, [
-        *[FadeOut(m) for m in cleared], *stage.forget_key("astray"),
+        *[FadeOut(m) for m in cleared], *stage.forget_key("astray"), *again,
         *stage.retitle(f"{name}: the correction, {spoken(known.correction, first=True)}")])
 
 

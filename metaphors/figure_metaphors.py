@@ -22,6 +22,7 @@ from manim import Polygon as MPolygon
 
 from metaphors.analysis import moment, tool_colour, tool_drawing
 from metaphors.drawing import Frame
+from metaphors.figure_steps import comes_with, grows
 from metaphors.stage import region
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -62,16 +63,27 @@ def metaphor_parts(heuristic: str, polygon_spec: str, frame: Frame, theme: Theme
                      stroke_width=theme.thin_stroke, fill_opacity=0), "called", "figure:T")
     if seen.motion is None:  # a polygon handed to the lecture may leave T empty
         return [t], [], "no candidate in T: AC is the diagonal"
-    sheet = Sheet(frame, theme)
-    tool = tag(tool_drawing(sheet, seen.motion, 1.0, tool_colour(theme, heuristic)),
-               "argument", "figure:tool")
-    _swept_inside(tool, sheet, seen.motion.swept(1.0), seen.points)
-    if within is not None:
-        _clip_beyond(tool, within)
+    sheet, motion = Sheet(frame, theme), seen.motion
+
+    def drawn_at(time: float) -> VGroup:
+        """The tool at ``time`` (0 at B, 1 at its pick) and what it has swept so far."""
+        tool = tag(tool_drawing(sheet, motion, time, tool_colour(theme, heuristic)),
+                   "argument", "figure:tool")
+        _swept_inside(tool, sheet, motion.swept(time), seen.points)
+        if within is not None:
+            _clip_beyond(tool, within)
+        return tool
+
+    # the tool moves with the card's first line, which says how it moves; the pick turns
+    # amber with the line that names it (both stood there with the title, before any bullet
+    # said them: chapter 2 at 16 s); the candidates, pink, with the title, as T
+    tool = grows(comes_with(drawn_at(1.0), ""), drawn_at)
     where = dict(zip(seen.labels, seen.points, strict=True))
-    pick = tag(Dot(frame.to_scene(where[seen.pick]), radius=0.11, color=theme.argument),
-               "argument", "figure:candidate")
-    return [t, tool], [pick], SAID[metaphor].format(pick=seen.pick)
+    marks = [tag(Dot(frame.to_scene(where[c]), radius=0.11, color=theme.candidate),
+                 "candidate", "figure:candidate") for c in seen.candidates]
+    pick = comes_with(tag(Dot(frame.to_scene(where[seen.pick]), radius=0.11,
+                              color=theme.argument), "argument", "figure:pick"), seen.pick)
+    return [t, tool], [*marks, pick], SAID[metaphor].format(pick=seen.pick)
 
 
 def _swept_inside(tool: VGroup, sheet: Sheet, swept: shapely.Geometry,

@@ -44,6 +44,7 @@ from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mob
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_metaphors import metaphor_parts
 from metaphors.figure_plots import Area, Series, line_plot
+from metaphors.figure_steps import comes_with
 from metaphors.labels import placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
@@ -179,11 +180,22 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
                 "candidate", "figure:candidate") for k in inside]
     names = ", ".join(polygon.labels[k] for k in inside) or "none"
     words = f"T = {''.join(polygon.labels[k] for k in corners)}; candidates in T: {names}"
-    # the words the card says first, on the picture: B convex, and a reflex vertex
+    # the words the card says, on the picture, each with the line that says it: B convex,
+    # and a reflex vertex (:func:`ringed_reflex`)
     kinds = [*_vertex_word(polygon, frame, theme, t.b.index, "convex"),
              *next((w for v in _reflex(polygon)
                     if (w := _vertex_word(polygon, frame, theme, v, "reflex"))), [])]
     return [shaded, *dots, *kinds, figure_caption(BOX, theme, (words, theme.ink))]
+
+
+def ringed_reflex(polygon_spec: str, theme: Theme = THEME) -> str | None:
+    """The label of the reflex vertex a ``frame`` figure of ``polygon_spec`` rings (the
+    first with room for its word), None if it rings none: the card's line that says what
+    the ring marks names it."""
+    polygon = read_polygon(polygon_spec)
+    frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
+    return next((polygon.labels[v] for v in _reflex(polygon)
+                 if _vertex_word(polygon, frame, theme, v, "reflex")), None)
 
 
 def _reflex(polygon: Polygon) -> list[int]:
@@ -213,7 +225,8 @@ def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
                     _overlap(box, other) for other in labels):
                 ring = Circle(radius=0.17, color=theme.ink,
                               stroke_width=theme.thin_stroke).move_to(at)
-                return [tag(VGroup(ring, shown), None, f"figure:{word}")]
+                # with the card's line that says the word
+                return [comes_with(tag(VGroup(ring, shown), None, f"figure:{word}"), word)]
     return []
 
 
@@ -409,4 +422,4 @@ def _growth(theme: Theme) -> list[Mobject]:
 
 
 __all__ = ["FIGURE_CENTER", "FIGURE_HEIGHT", "FIGURE_WIDTH", "GROWTH_RUNS", "GROWTH_SIZES",
-           "KINDS", "Figure", "ear_tests", "figure_mobjects"]
+           "KINDS", "Figure", "ear_tests", "figure_mobjects", "ringed_reflex"]

@@ -38,7 +38,7 @@ from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
 from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
-from metaphors import catalog
+from metaphors import catalog, figure_steps
 from metaphors.analysis import Analysis, play_analysis
 from metaphors.countdown import countdown
 from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
@@ -273,22 +273,27 @@ class LectureScene(TraceScene):
             column = VGroup(*lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
             column.move_to((FIGURED_WORDS_X, -0.3, 0))
         title.set_x(0)
+        # the figure's parts, each with the words that say it (the title: the rest)
+        parts = figure_steps.steps(figure_mobjects(card.figure, self.lecture_polygon(),
+                                                   self.theme) if card.figure else [],
+                                   card.lines)
         cue = captions.show(card.title, 0.8)  # the caption before is read in its own step
         self.mark_card_line(None, card)
-        if card.figure is not None:
-            figure = figure_mobjects(card.figure, self.lecture_polygon(), self.theme)
-            self.play(Write(title), *[FadeIn(m) for m in figure], run_time=0.8, **cue)
-        else:
-            self.play(Write(title), run_time=0.8, **cue)
+        self.play(Write(title), *[FadeIn(m) for m in parts[0]], run_time=0.8, **cue)
         shown: list[VMobject] = []  # the last figure's claims and crossed edges
-        for line, words, (claims, edges) in zip(lines, card.lines, self._line_claims(card),
-                                                strict=True):
-            cue = captions.show(words, 0.5)
+        for line, words, (claims, edges), said in zip(lines, card.lines, self._line_claims(card),
+                                                      parts[1:], strict=True):
+            drawn = [figure_steps.coming(m) for m in said]
+            grown = max((seconds for _, seconds in drawn), default=0.0)
+            cue = captions.show(words, max(0.5, grown))
             self.mark_card_line(words, card)
             going = [FadeOut(m) for m in shown] if claims else []
             coming = [*claims, *edges]
-            self.play(FadeIn(line, shift=UP * 0.1), *going, *[Create(m) for m in coming],
-                      run_time=0.5 if not coming else 1.0, **cue)
+            usual = 0.5 if not coming else 1.0
+            run_time = max(usual, grown)
+            self.play(FadeIn(line, shift=UP * 0.1, rate_func=figure_steps.done_by(
+                usual / run_time)), *going, *[Create(m) for m in coming],
+                      *[anim for anim, _ in drawn], run_time=run_time, **cue)
             shown = [*(claims or shown), *edges]
         captions.hold()
 

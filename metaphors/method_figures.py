@@ -4,9 +4,10 @@ cut of a hole, and a rule of one's own on P (issue 22 item 7).
 Each is computed by the geometry the runs use (:mod:`geometry.gravity`,
 :mod:`geometry.prune_search`, :mod:`geometry.bridges`, :mod:`usercode.heuristic`), nothing
 placed by hand, and drawn into the box :mod:`metaphors.figures` hands over. Colours keep
-their one meaning: the vertex a step works on amber (*argument*), a good sub-polygon in the
-pieces' tints, an inner diagonal or a bridge green (*result*), a wrong claim red with the
-edge it crosses.
+their one meaning: the vertex a step works on amber (*argument*, ``figure:step``: gravity's
+V, prune and search's middle vertex, a hole's right-most vertex — none of them a candidate
+in T, which only a rule's figure marks, pink), a good sub-polygon in the pieces' tints, an
+inner diagonal or a bridge green (*result*), a wrong claim red with the edge it crosses.
 """
 
 from __future__ import annotations
@@ -119,7 +120,7 @@ def _gravity(polygon: Polygon, heuristic: str, box: Box,
     snag = f"Y = {y.label}" if y else "the band straight"
     words = f"V = {v.label}, X = {x.label}, {snag}: claim {v.label}{end.label}"
     return frame, [fall, slide, tag(band, "argument", "figure:band"), claim], [
-        _dot(frame, v.point, theme.argument, "argument", "figure:candidate"), ball,
+        _dot(frame, v.point, theme.argument, "argument", "figure:step"), ball,
         figure_caption(box, theme, (words, theme.result))]
 
 
@@ -183,7 +184,7 @@ def _prune(polygon: Polygon, heuristic: str, box: Box,
                                       stroke_width=theme.thin_stroke, fill_color=theme.result,
                                       fill_opacity=theme.fill_opacity), "result", "figure:ear"))
             words += f"; there the middle {labels[e]} is an ear"
-    over = [_dot(frame, pts[v], theme.argument, "argument", "figure:candidate"),
+    over = [_dot(frame, pts[v], theme.argument, "argument", "figure:step"),
             figure_caption(box, theme, (words, theme.ink))]
     return frame, under, over
 
@@ -256,7 +257,7 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
     drawn.append(tag(VGroup(*(m for _, m in markers[:outer.n])), "idle", "figure:vertices"))
     drawn += [tag(marker, "idle", f"figure:hole-vertex:{label}")
               for label, marker in markers[outer.n:]]
-    drawn += [_dot(frame, pts[p], theme.argument, "argument", "figure:candidate")
+    drawn += [_dot(frame, pts[p], theme.argument, "argument", "figure:step")
               for p, _ in ring.bridges]
     cuts = ", ".join(f"{labels[p]}{labels[m]}" for p, m in ring.bridges)
     size = len(ring.walk())

@@ -256,7 +256,8 @@ def find(board: Board, beat: FindDiagonal) -> None:
         board.keep("finder", finder)
         anims = [FadeIn(finder, shift=0.2 * DOWN)]
     else:
-        anims = [Indicate(finder[1], color=theme.argument, scale_factor=1.3)]
+        # asked again: its "?" pulses in the black box's own blue (amber is a pick's)
+        anims = [Indicate(finder[1], color=theme.called, scale_factor=1.3)]
     piece = board.objects.get(f"piece:{beat.piece}", board.outline)
     anims.append(piece.animate.set_fill(theme.called, opacity=theme.active_opacity))
     board.play(beat, *anims, run_time=1.2)

@@ -64,7 +64,10 @@ class Theme:
     #: the claim's, chapter 2 lit them in all three)
     candidate: str = "#f59fd6"
     split: str = "#3ad6e0"  # a split vertex: a kind of vertex, never a verdict's red or green
-    merge: str = "#f06fe0"  # a merge vertex: likewise
+    #: a merge vertex: likewise; a vivid magenta, far from the candidates' pale pink (chapter
+    #: 2; CIE76 ΔE 61, hue 22° apart — the old #f06fe0 was 33 and 14°) and from the sweep
+    #: line's lilac it is drawn beside in chapter 5 (ΔE 52, was 28)
+    merge: str = "#ff4dff"
     stack: str = "#ffe45c"  # the monotone stack's waiting chain
     ink: str = DEFAULT_INK
     polygon_fill: str = "#2a3a55"

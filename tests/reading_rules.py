@@ -2971,3 +2971,76 @@ def words_on_the_picture(data: dict, gap: float = LEAST_WORDS_GAP) -> list[str]:
              if top.get("box") and (top.get("text") or "").strip()]
     return [f"{said}: {shape.distance(region):.2f} from {name}" for said, shape in words
             for name, region in picture if shape.distance(region) < gap]
+# --- one legend in every pass: the candidates kept pink, the pick amber with its words ---------
+
+#: a caption naming T's candidates: a run's ("Candidates inside T: E, F"), an analysis's
+#: ("… defeats all three heuristics. Candidates: D, E.", "… Candidates in T: D, E.")
+_NAMED_CANDIDATES = re.compile(r"Candidates(?: inside T| in T)?: ([A-Z][^.]*)\.?$")
+
+
+def named_candidates(caption: str | None) -> list[str]:
+    """The candidates ``caption`` names (none if it names none)."""
+    found = _NAMED_CANDIDATES.search(caption or "")
+    return _named(found[1]) if found else []
+
+
+def _kept_candidates(anim: dict, candidate: str) -> Iterator[str]:
+    """The picture's vertices (``vertex:K``) an animation (or its members) keeps in the
+    candidate colour: recoloured to it (a target's stroke), or pulsed in it while its role
+    is the candidate's (a run's board sets the colour it pulses in after the pulse)."""
+    for child in anim.get("animations", ()):
+        yield from _kept_candidates(child, candidate)
+    node = anim.get("mobject") or {}
+    name = node.get("name") or ""
+    if not name.startswith("vertex:"):
+        return
+    stroke = (anim.get("target") or {}).get("stroke")
+    pulsed = str(anim.get("color") or "").upper() == candidate and node.get("role") == "candidate"
+    if pulsed or (isinstance(stroke, str) and stroke.upper() == candidate):
+        yield name.removeprefix("vertex:")
+
+
+def unmarked_candidates(data: dict) -> list[str]:
+    """The candidates a caption names that the plays under it do not keep in the candidate
+    colour, as ``"play 41 D: not kept pink"``: chapter 2's analyses pulsed D and E pink for
+    0.8 s, then left them grey the 8.5 s the tool moved towards them, where a run keeps
+    them pink until one is picked."""
+    candidate = _colour("candidate")
+    found: list[str] = []
+    named: list[str] = []
+    at, kept = 0, set()
+    for k, play in enumerate([*data["plays"], {"subcaption": "end", "animations": []}]):
+        if play.get("subcaption"):
+            found += [f"play {at} {v}: not kept pink" for v in named if v not in kept]
+            named, at, kept = named_candidates(play["subcaption"]), k, set()
+        kept.update(v for anim in play["animations"] for v in _kept_candidates(anim, candidate))
+    return found
+
+
+#: the marks a card's figure sets on a vertex T holds: a candidate (pink) and the pick its
+#: tool reaches (amber, the claim to be)
+_FIGURE_MARKS = ("figure:candidate", "figure:pick")
+
+
+def amber_figure_marks(data: dict) -> list[str]:
+    """A card's figure marking a vertex amber before the words say it, as ``"play 9:
+    figure:candidate amber with the title 'Scaling: spilled water'"``, or a candidate's mark
+    in the pick's amber or a verdict's green, as ``"play 9: figure:candidate amber"``: the
+    water card showed D amber (its pick) with its title, 3 s before the line "The first
+    candidate it wets is D"; gravity's, prune and search's and the keyhole's cards named the
+    vertex a step works on a candidate, amber."""
+    found: list[str] = []
+    for k, play in enumerate(data["plays"]):
+        titles = [a for a in play["animations"]
+                  if a["type"] in INCOMING and (a.get("mobject") or {}).get("name") == "card:title"]
+        for anim in play["animations"]:
+            if anim["type"] not in INCOMING | {"UpdateFromAlphaFunc"}:
+                continue
+            node = anim.get("mobject") or {}
+            name, role = node.get("name") or "", node.get("role")
+            if name == "figure:candidate" and role in ("argument", "result"):
+                found.append(f"play {k}: {name} {'amber' if role == 'argument' else 'green'}")
+            if name in _FIGURE_MARKS and role == "argument" and titles:
+                said = play.get("subcaption") or "?"  # the card's title, said as it comes
+                found.append(f"play {k}: {name} amber with the title {said!r}")
+    return found

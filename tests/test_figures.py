@@ -124,11 +124,15 @@ def test_a_metaphor_is_drawn_stopped_at_its_pick_without_the_red(heuristic, colo
     assert parts["tool"][0].get_stroke_color() == ManimColor(getattr(THEME, colour))
     colours = {m.get_fill_color().to_hex().lower() for m in tool.family_members_with_points()}
     assert THEME.rejected not in colours
-    # the pick is marked over its vertex, where the run says the tool stops
-    (pick,) = named(drawn, "figure:candidate")
+    # the pick is marked over its vertex, where the run says the tool stops, amber, and
+    # over the candidates' pink marks (D and E)
+    (pick,) = named(drawn, "figure:pick")
     d = figure_frame(p).to_scene(p.points[p.labels.index("D")])
     assert abs(pick.get_center() - d).max() < 1e-6
     assert drawn[-1] is pick  # over the vertices' dots
+    assert pick.get_color() == ManimColor(THEME.argument)
+    marks = named(drawn, "figure:candidate")
+    assert len(marks) == 2 and {m.get_color() for m in marks} == {ManimColor(THEME.candidate)}
 
 
 def figure_frame(p):
@@ -192,7 +196,7 @@ def test_prune_draws_an_inner_diagonal_that_keeps_at_most_half_and_one():
                                                                        "figure:smaller"))
     assert smaller <= good // 2 + 1
     g, v, _ = prune_rounds(p)[0]
-    marked = named(drawn, "figure:candidate")[0].get_center()
+    marked = named(drawn, "figure:step")[0].get_center()
     assert on_screen(Frame(p.points, *BOX), p.points[v]) == (round(marked[0], 6),
                                                             round(marked[1], 6))
     assert g.vertex_at(g.middle()).index == v

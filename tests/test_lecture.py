@@ -27,6 +27,7 @@ import srt
 from click.testing import CliRunner
 
 from tests.reading_rules import (
+    amber_figure_marks,
     answers_over_pictures,
     bare_ticks,
     broken_counts,
@@ -78,6 +79,7 @@ from tests.reading_rules import (
     tails_beside_labels,
     ticks_outside,
     uneven_countdowns,
+    unmarked_candidates,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
@@ -625,6 +627,11 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # one legend: a candidate neutral until picked (amber), green only once judged (chapter
     # 2 lit E and F green as candidates, E green as wetted first, F amber as not hit)
     assert shifting_colours(data) == [], chapter.slug
+    # and kept pink in every pass (chapter 2's analyses pulsed D and E for 0.8 s, then left
+    # them grey while the tool moved), a card's pick amber only with the line naming it
+    # (the water card's D amber with its title) and no candidate's mark amber
+    assert unmarked_candidates(data) == [], chapter.slug
+    assert amber_figure_marks(data) == [], chapter.slug
     # review s34: a vertex marker stands on a corner of what is drawn (ear clipping's
     # sliced-off ear tips floated round the shrinking fruit)
     assert stray_vertex_markers(data) == [], chapter.slug

@@ -9,7 +9,7 @@ edge flashes and is named, and its correction runs on the same polygon, inside P
 Run: ``manim -pql scenes/chapters/ch2_heuristics.py``; the whole lecture: ``trex lecture``.
 """
 
-from metaphors.figures import Figure
+from metaphors.figures import Figure, ringed_reflex
 from metaphors.lecture import Analysis, Card, LectureScene, Run
 from story.registry import SPOKEN, entry, spoken
 from story.runs import working_example
@@ -83,8 +83,13 @@ class Heuristics(LectureScene):
     )
 
     def chapter_segments(self) -> tuple:
+        # the figure rings a reflex vertex: a line says what the ring marks, as it comes in
+        # (it stood unspoken of beside "Convex", chapter 2 at 2 s)
+        reflex = ringed_reflex(self.lecture_polygon())
         frame = Card("The frame every heuristic shares", (
             "B: the left-most vertex (lowest on ties) — always convex: P lies to its right.",
+            *([f"{reflex} is reflex: the angle inside P there is more than 180°."]
+              if reflex else []),
             "A and C: its neighbours; T = triangle ABC.",
             # the figure's own names: its D is a reflex vertex outside T, its candidates G, H
             "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate, "

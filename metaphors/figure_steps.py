@@ -1,0 +1,62 @@
+"""A card's figure drawn step by step with its lines: a part waits for the words that say it.
+
+A figure (:mod:`metaphors.figures`) is computed whole, but a part of it may wait for the
+card's line that speaks of it (:func:`comes_with`): a metaphor's pick is amber only once a
+line names it, the frame's "Reflex" ring once a line says what reflex is. A part may also
+grow as it comes in (:func:`grows`): the water spreads from B as its line says it does.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Sequence
+
+from manim import Animation, FadeIn, Mobject, UpdateFromAlphaFunc, linear, smooth
+
+#: seconds a growing part takes to come in (the water spreading, the hand turning)
+GROW = 2.0
+
+
+def comes_with(part: Mobject, word: str) -> Mobject:
+    """``part``, to come in with the first line of its card naming ``word`` (a whole word,
+    case kept: "D" is not "d"); "" the card's first line. Returns it."""
+    vars(part)["trex_with"] = word
+    return part
+
+
+def grows(part: Mobject, drawn_at: Callable[[float], Mobject]) -> Mobject:
+    """``part`` (``drawn_at(1.0)``), to come in drawn as ``drawn_at(t)`` while t runs from 0
+    to 1. Returns it."""
+    vars(part)["trex_grow"] = drawn_at
+    return part
+
+
+def steps(parts: Sequence[Mobject], lines: Sequence[str]) -> list[list[Mobject]]:
+    """``parts`` by when they come in: the first list with the card's title, then one per
+    line of ``lines``; a part whose word no line names comes with the title."""
+    shown: list[list[Mobject]] = [[] for _ in range(len(lines) + 1)]
+    for part in parts:
+        word = vars(part).get("trex_with")
+        said = (k + 1 for k, line in enumerate(lines)
+                if word == "" or re.search(rf"(?<!\w){re.escape(str(word))}(?!\w)", line))
+        shown[0 if word is None else next(said, 0)].append(part)
+    return shown
+
+
+def coming(part: Mobject) -> tuple[Animation, float]:
+    """The animation that brings ``part`` in, and its seconds (0: as long as the play)."""
+    drawn_at = vars(part).get("trex_grow")
+    if drawn_at is None:
+        return FadeIn(part), 0.0
+    return UpdateFromAlphaFunc(part, lambda m, a: m.become(drawn_at(a)), rate_func=linear,
+                               run_time=GROW), GROW
+
+
+def done_by(share: float) -> Callable[[float], float]:
+    """A rate function that ends at ``share`` of its play (0 < share ≤ 1), then holds: a
+    card's line fades in in its usual time while a part of its figure grows on for longer
+    (stretched to the whole play, the line stood faint for 2 s)."""
+    return lambda t: smooth(min(1.0, t / share))
+
+
+__all__ = ["GROW", "comes_with", "coming", "done_by", "grows", "steps"]
