@@ -2971,6 +2971,8 @@ def words_on_the_picture(data: dict, gap: float = LEAST_WORDS_GAP) -> list[str]:
              if top.get("box") and (top.get("text") or "").strip()]
     return [f"{said}: {shape.distance(region):.2f} from {name}" for said, shape in words
             for name, region in picture if shape.distance(region) < gap]
+
+
 # --- one legend in every pass: the candidates kept pink, the pick amber with its words ---------
 
 #: a caption naming T's candidates: a run's ("Candidates inside T: E, F"), an analysis's
