@@ -49,6 +49,7 @@ from tests.reading_rules import (
     jumping_stacks,
     labels_on_claims,
     labels_on_edges,
+    labels_struck_by_the_sweep,
     labels_under_faces,
     labels_under_test_triangles,
     labels_under_the_fall,
@@ -82,6 +83,7 @@ from tests.reading_rules import (
     unspoken_words,
     water_outside_polygon,
     words_before_pictures,
+    words_over_the_picture,
 )
 from trex import assemble, chapter_pool, lecture_command
 from trex.cli import main
@@ -591,6 +593,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # is read; the stack's column changes only as its caption says
     assert stray_kind_words(data) == [], chapter.slug
     assert fleeting_kind_words(data) == [], chapter.slug
+    # review s35: and off P's fill ("merge" beside M and "split" beside D stood on it), and
+    # the sweep line clear of every label (at 28 s its dashes ran up to M's and K's letters)
+    assert words_over_the_picture(data) == [], chapter.slug
+    assert labels_struck_by_the_sweep(data) == [], chapter.slug
     assert jumping_stacks(data) == [], chapter.slug
     # issue 22: gravity's hit is seen, no label under the hit ring or the ball's path
     assert labels_under_the_fall(data) == [], chapter.slug
