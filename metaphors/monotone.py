@@ -53,6 +53,7 @@ from metaphors.layout import (
     rects_at,
     ring_edges,
     subtitle_band,
+    title_area,
 )
 from metaphors.performing import Performances, act, performs
 from metaphors.sweep import around_labels, label_gaps
@@ -194,14 +195,16 @@ def classify(board: Board, beat: Classify) -> None:
 def _kind_key(board: Board, kind: str, sweep: VGroup) -> VGroup | None:
     """The legend entry of a split or merge vertex (a dot in its colour, "merge vertex"), in
     the first free place beside the picture (:func:`metaphors.layout.free_place`, clear of
-    what the stack keeps clear of, :func:`_taken`, and of the sweep line), None if none is."""
+    what the stack keeps clear of, :func:`_taken`, of the sweep line and of the title's whole
+    line: beside a short title it reads as part of it), None if none is."""
     theme = board.theme
     colour = theme.role_colour(_kind_role(kind))
     words = text(f"{kind} vertex", font=theme.font, size=theme.label_size + 2, colour=theme.ink)
     swatch = tag(Dot(radius=theme.dot_radius * 1.8, color=colour), kind, "legend:swatch")
     key = tag(VGroup(swatch, words.next_to(swatch, RIGHT, buff=0.15)), None, "legend:kind")
     drawn = [box(*area_of(piece)) for piece in sweep.submobjects]
-    found = free_place(key.width, key.height, unary_union([_taken(board), *drawn]))
+    title = box(*title_area(board.title, whole_line=True))
+    found = free_place(key.width, key.height, unary_union([_taken(board), title, *drawn]))
     if found is None:
         return None
     left, top = found
