@@ -2949,7 +2949,8 @@ def texts_over_the_picture(data: dict) -> list[str]:
     interior of the polygon of their picture (:data:`_INTERIORS`, the one drawn last) by more
     than :data:`MOST_TEXT_OVER_FILL`, as ``"play 19 'merge' 0.26 over P"`` or ``"play 9 G
     0.05 over P"``: each text at each place once, as it comes in or moves there (review s35:
-    "merge", "split", G and M stood on chapter 5's fill)."""
+    "merge", "split", G and M stood on chapter 5's fill). A polygon with holes is read as one
+    outline (:func:`_outline`): a hole's labels, in the hole, may be found over P."""
     from shapely.geometry import box as rectangle
 
     picture = None
