@@ -14,7 +14,8 @@ centre, width and height), the card's words on the right:
   n log log n, Chazelle's n), from the plot's corner (a bound has no constant); the
   legend says which lines were counted and which are bounds, not measured;
 * ``delaunay-circle``: P's constrained Delaunay triangulation with one triangle's
-  circumcircle, the vertices inside it (none of them seen from inside the triangle) marked;
+  circumcircle, every vertex clearly inside or outside it, those inside (none of them seen
+  from inside the triangle) marked;
 * ``three-triangulations``: P as divide and conquer, faster ear clipping and monotone
   partition triangulate it, each with its bound: three different triangulations side by
   side (each alone is the end of a run, or the overview's figure; together they are new).
@@ -27,7 +28,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
-from manim import LEFT, Circle, Dot, Line, Mobject
+import shapely
+from manim import LEFT, Circle, Dot, Line, Mobject, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.cdt import constrained_delaunay
@@ -40,7 +42,8 @@ from geometry.triangulate import triangulate
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_plots import MARKS, Area, Series, axis_names, line_plot, point_mark
-from metaphors.labels import placed_vertex_markers
+from metaphors.labels import EDGE_MARGIN, placed_vertex_markers
+from metaphors.layout import area_of
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
@@ -223,24 +226,40 @@ def circumcircle(polygon: Polygon, triangle: TriangleIndices) -> Circumcircle:
     return Circumcircle(triangle, centre, r2, inside)
 
 
-#: a vertex this share of the radius inside a circle reads as inside it: M stood 5 % inside the
-#: circle of DFG, its dot on the line (review s567)
-CLEARLY_INSIDE = 0.1
+#: the share of its radius by which every vertex of P stands clear of the circle drawn,
+#: inside it or outside: M stood 5 % inside the circle of DFG, its dot on the line, read as
+#: neither in nor out (review s567, s35)
+CLEAR_OF_RIM = 0.15
+
+
+def _off_rim(polygon: Polygon, circle: Circumcircle) -> list[float]:
+    """How far each vertex not on the circle stands from its rim, a share of its radius
+    (negative inside)."""
+    (x, y), r = (float(v) for v in circle.centre), circle.radius
+    return [math.dist((x, y), p) / r - 1 for k, p in enumerate(polygon.points)
+            if k not in circle.triangle]
 
 
 def clearly_inside(polygon: Polygon, circle: Circumcircle) -> tuple[int, ...]:
-    """The vertices inside ``circle`` by at least :data:`CLEARLY_INSIDE` of its radius."""
+    """The vertices inside ``circle`` by at least :data:`CLEAR_OF_RIM` of its radius."""
     (x, y), r = (float(v) for v in circle.centre), circle.radius
     return tuple(k for k in circle.inside
-                 if math.dist((x, y), polygon.points[k]) <= r * (1 - CLEARLY_INSIDE))
+                 if math.dist((x, y), polygon.points[k]) <= r * (1 - CLEAR_OF_RIM))
 
 
-def shown_circle(polygon: Polygon) -> Circumcircle:
-    """The circle the figure draws: of the triangles whose circle stays near P (within a
-    quarter of P's size of its box), the one with the most vertices clearly inside it
-    (:func:`clearly_inside`), then the most inside it — the constrained triangulation's
-    point: they are hidden from the triangle — then the smallest; if no circle stays near P,
-    the smallest."""
+def clear_of_rim(polygon: Polygon, circle: Circumcircle) -> bool:
+    """Whether every vertex stands :data:`CLEAR_OF_RIM` inside or outside ``circle``."""
+    return all(abs(d) >= CLEAR_OF_RIM - 1e-9 for d in _off_rim(polygon, circle))
+
+
+def ranked_circles(polygon: Polygon) -> list[Circumcircle]:
+    """The circles the figure may draw, the best first: of the triangles whose circle stays
+    near P (within a quarter of P's size of its box), those with every vertex clearly inside
+    or outside (:func:`clear_of_rim`; if none is, all of them), the one with the most
+    vertices inside it — the constrained triangulation's point: they are hidden from the
+    triangle — then the one lying most over P (an empty circle in the midst of P's vertices
+    shows what it keeps out; one mostly off P, as BCG's, shows little); if no circle stays
+    near P, the smallest first."""
     circles = [circumcircle(polygon, t) for t in constrained_delaunay(polygon)]
     xs, ys = [p[0] for p in polygon.points], [p[1] for p in polygon.points]
     room = max(max(xs) - min(xs), max(ys) - min(ys)) / 4
@@ -252,24 +271,76 @@ def shown_circle(polygon: Polygon) -> Circumcircle:
 
     fitting = [c for c in circles if near(c)]
     if not fitting:
-        return min(circles, key=lambda c: c.radius2)
-    return max(fitting, key=lambda c: (len(clearly_inside(polygon, c)), len(c.inside),
-                                       -c.radius2))
+        return sorted(circles, key=lambda c: c.radius2)
+    clear = [c for c in fitting if clear_of_rim(polygon, c)] or fitting
+    region = shapely.Polygon(polygon.points)
+
+    def over_p(c: Circumcircle) -> float:
+        disk = shapely.Point(*(float(v) for v in c.centre)).buffer(c.radius, 64)
+        return float(disk.intersection(region).area / disk.area)
+
+    return sorted(clear, key=lambda c: (len(clearly_inside(polygon, c)), len(c.inside),
+                                        over_p(c)), reverse=True)
 
 
 #: the points of the circle given to the labels' placement as a line to keep clear of
 CIRCLE_CORNERS = 96
 
 
-def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
-    """P's constrained Delaunay triangles, the shown triangle (:func:`shown_circle`) green
-    with its circle, and the vertices inside the circle marked amber; the labels are placed
-    clear of the triangles' sides and of the circle too (review s567: "K" stood on the
-    circle, "G" on edge G–C), and a vertex only just inside the circle, its mark on the
-    line, is said to be so."""
-    circle = shown_circle(polygon)
+@dataclass(frozen=True)
+class CircleFigure:
+    """A circle drawn in the figure's box: its frame, the triangulation's sides (vertex
+    indices), its rim (P's units) and the vertex markers placed clear of both."""
+
+    circle: Circumcircle
+    frame: Frame
+    sides: tuple[tuple[int, int], ...]
+    markers: VGroup
+
+
+def circle_figure(polygon: Polygon, circle: Circumcircle, theme: Theme, box: Box) -> CircleFigure:
+    """The frame and the labels of ``circle``'s figure: the labels clear of the triangles'
+    sides and of the circle too (review s567: "K" stood on the circle, "G" on edge G–C)."""
     (cx, cy), r = (float(v) for v in circle.centre), circle.radius
     frame = Frame([*polygon.points, (cx - r, cy - r), (cx + r, cy + r)], *box)
+    sides = tuple((t[k], t[(k + 1) % 3]) for t in constrained_delaunay(polygon) for k in range(3))
+    rim = [(cx + r * math.cos(a), cy + r * math.sin(a))
+           for a in (2 * math.pi * k / CIRCLE_CORNERS for k in range(CIRCLE_CORNERS + 1))]
+    markers = placed_vertex_markers(polygon, frame, theme, sides, [rim])
+    return CircleFigure(circle, frame, sides, markers)
+
+
+def _labels_clear(polygon: Polygon, figure: CircleFigure) -> bool:
+    """Whether every label of ``figure`` found a place :data:`metaphors.labels.EDGE_MARGIN`
+    clear of its circle and of every side (HKM's circle ran along M's label)."""
+    (cx, cy), r = (float(v) for v in figure.circle.centre), figure.circle.radius
+    scene = figure.frame
+    rim = shapely.Point(*scene.to_scene((cx, cy))[:2]).buffer(r * scene.scale, 256).exterior
+    lines = shapely.union_all([rim, *(shapely.LineString([scene.to_scene(polygon.points[u])[:2],
+                                                          scene.to_scene(polygon.points[w])[:2]])
+                                      for u, w in figure.sides)])
+    return all(shapely.box(*area_of(marker[1])).distance(lines) >= EDGE_MARGIN - 1e-6
+               for marker in figure.markers)
+
+
+def shown_circle(polygon: Polygon, theme: Theme, box: Box) -> CircleFigure:
+    """The figure's circle: the best of :func:`ranked_circles` whose labels all stand clear of
+    its lines (:func:`_labels_clear`), else the best."""
+    figures = (circle_figure(polygon, c, theme, box) for c in ranked_circles(polygon))
+    first = next(figures)
+    if _labels_clear(polygon, first):
+        return first
+    return next((f for f in figures if _labels_clear(polygon, f)), first)
+
+
+def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
+    """P's constrained Delaunay triangles, the shown triangle (:func:`shown_circle`) green
+    with its circle, and the vertices inside the circle marked amber, the labels clear of
+    the lines (:func:`circle_figure`); a vertex only just inside the circle, its mark on the
+    line, is said to be so (where no circle keeps every vertex clear of it)."""
+    shown = shown_circle(polygon, theme, box)
+    circle, frame = shown.circle, shown.frame
+    (cx, cy), r = (float(v) for v in circle.centre), circle.radius
     triangles = constrained_delaunay(polygon)
     edges = [tag(triangle_mobject(polygon, t, frame, theme.idle, theme).set_fill(opacity=0),
                  None, "figure:triangle") for t in triangles]
@@ -279,11 +350,7 @@ def _circle(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
                .move_to(frame.to_scene((cx, cy))), "result", "figure:circumcircle")
     marks = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.argument),
                  "argument", "figure:hidden") for k in circle.inside]
-    sides = [(t[k], t[(k + 1) % 3]) for t in triangles for k in range(3)]
-    rim = [(cx + r * math.cos(a), cy + r * math.sin(a))
-           for a in (2 * math.pi * k / CIRCLE_CORNERS for k in range(CIRCLE_CORNERS + 1))]
-    vertices = tag(placed_vertex_markers(polygon, frame, theme, sides, [rim]), "idle",
-                   "figure:vertices")
+    vertices = tag(shown.markers, "idle", "figure:vertices")
     return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *edges,
             chosen, ring, vertices, *marks,
             figure_caption(box, theme, *_circle_words(polygon, circle, theme))]
@@ -340,6 +407,7 @@ def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
     return drawn
 
 
-__all__ = ["BOUNDS", "KINDS", "MEASURED_RUNS", "MEASURED_SIZES", "RECAPPED", "Circumcircle",
-           "Partition", "circumcircle", "clearly_inside", "figure_mobjects", "measured_series",
-           "monotone_partition", "recap_triangulations", "shown_circle"]
+__all__ = ["BOUNDS", "KINDS", "MEASURED_RUNS", "MEASURED_SIZES", "RECAPPED", "CircleFigure",
+           "Circumcircle", "Partition", "circle_figure", "circumcircle", "clear_of_rim",
+           "clearly_inside", "figure_mobjects", "measured_series", "monotone_partition",
+           "ranked_circles", "recap_triangulations", "shown_circle"]

@@ -53,6 +53,7 @@ from metaphors.layout import (
     rects_at,
     ring_edges,
     subtitle_band,
+    title_area,
 )
 from metaphors.performing import Performances, act, performs
 from metaphors.sweep import around_labels, label_gaps
@@ -70,6 +71,10 @@ STACK_BUFF = 0.12
 COUNT_GAP = 0.35
 #: the sweep line's length (scene units), centred on the picture
 SWEEP_WIDTH = 5.8
+#: the gap the sweep line leaves round every vertex label (scene units): the tools' 0.04
+#: let its dashes run up to M's and K's letters at their height, read as struck through
+#: (chapter 5 at 28 s); 0.12, a label's gap from its edges (:data:`metaphors.labels.EDGE_MARGIN`)
+SWEEP_LABEL_GAP = 0.12
 #: the gaps a kind word ("split", "merge" …) keeps from every label, dot and line, the
 #: largest that fits (scene units): nearer than 0.12 to a label, the two read as one word
 #: ("Gregular"); 0.18 keeps 0.12 diagonally off a label's corner too
@@ -88,12 +93,13 @@ _PLACES: weakref.WeakKeyDictionary[Board, tuple[float, float, bool]] = (
 
 
 def _sweep_line(board: Board, y: float) -> VGroup:
-    """The dotted sweep line at ``y`` (P's coordinates), with a gap round every vertex label
-    it would run through (:func:`metaphors.sweep.label_gaps`): it may cross its own vertex's
-    dot, never a label."""
+    """The dotted sweep line at ``y`` (P's coordinates), with a gap of
+    :data:`SWEEP_LABEL_GAP` round every vertex label it would run through
+    (:func:`metaphors.sweep.label_gaps`), under the labels (:data:`metaphors.board.LABEL_Z`):
+    it may cross its own vertex's dot, never a label."""
     theme = board.theme
     x0, at = _sweep_span(board, y)
-    labels = label_gaps(board)
+    labels = label_gaps(board, SWEEP_LABEL_GAP)
     group = VGroup(*[tag(DashedLine((p[0], p[1], 0), (q[0], q[1], 0), color=theme.sweep,
                                     stroke_width=theme.thin_stroke), "called", "sweep:line")
                      for p, q in around_labels([((x0, at), (x0 + SWEEP_WIDTH, at))], labels)])
@@ -113,8 +119,8 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     :func:`metaphors.layout.grid`, measured from the dot to the word's box) within
     :data:`KIND_REACH` that keeps every other vertex's dot :data:`KIND_OWN` times as far, and a
     gap of :data:`KIND_GAPS` from every vertex label and dot, every edge and diagonal drawn, the
-    sweep line at ``y``, the title and the panel, on screen above the subtitle; None where there
-    is none (the caption names the kind)."""
+    sweep line at ``y``, the title and the panel, outside P, on screen above the subtitle; None
+    where there is none (the caption names the kind)."""
     theme = board.theme
     dot = board.markers[vertex][0].get_center()[:2]
     size = (float(kind.width), float(kind.height))
@@ -138,7 +144,10 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
                        dots=[(*m[0].get_center()[:2], 0.0) for v, m in board.markers.items()
                              if v != vertex])
     ours = clear(centres, size, others, KIND_OWN * own)
-    obstacles = Obstacles(boxes=boxes, segments=edges, dots=dots)
+    # P's region too: a word over P's fill is text over the picture (review s35: "merge" stood
+    # on the fill beside M, "split" beside D); outside P, the edges' gap keeps it off them
+    region = Region([p[:2] for p in rings[0]], [[p[:2] for p in ring] for ring in rings[1:]])
+    obstacles = Obstacles(boxes=boxes, segments=edges, dots=dots, shapes=[region])
     within = (FRAME_AREA[0], SUBTITLE_TOP, FRAME_AREA[2], FRAME_AREA[3])
     free = [ours & clear(centres, size, obstacles, gap, within) for gap in KIND_GAPS]
     for most in KIND_REACH:
@@ -165,8 +174,13 @@ def classify(board: Board, beat: Classify) -> None:
     colour = theme.role_colour(_kind_role(data.kind))
     anims: list[FadeIn | Indicate | Transform | Create] = [
         Indicate(board.markers[data.vertex], color=colour)]
-    if place is not None:  # None: nowhere near enough, no word (the caption names the kind)
-        anims.append(FadeIn(kind.move_to(place)))
+    shown: VMobject | None = kind.move_to(place) if place is not None else None
+    if shown is None and named and _kind_role(data.kind) != "called":
+        # no room beside it off P's fill (M and K in their notches): the kind's colour said
+        # beside the picture, as a legend entry, the vertex lit in that colour
+        shown = _kind_key(board, data.kind, line)
+    if shown is not None:  # None: no room, no word (the caption names the kind)
+        anims.append(FadeIn(shown))
     if "sweep" in board.objects:
         anims.append(Transform(board.objects["sweep"], line))
     else:
@@ -174,8 +188,27 @@ def classify(board: Board, beat: Classify) -> None:
         anims.append(Create(line))
     # a summary's steps share its caption's reading time: each seen, none flashing by
     board.play(beat, *anims, run_time=0.8, least=0.0 if named else board.shared_time(beat))
-    if place is not None:  # up while its caption is read: it goes with the next beat's words
-        board.leaving.append(kind)
+    if shown is not None:  # up while its caption is read: it goes with the next beat's words
+        board.leaving.append(shown)
+
+
+def _kind_key(board: Board, kind: str, sweep: VGroup) -> VGroup | None:
+    """The legend entry of a split or merge vertex (a dot in its colour, "merge vertex"), in
+    the first free place beside the picture (:func:`metaphors.layout.free_place`, clear of
+    what the stack keeps clear of, :func:`_taken`, of the sweep line and of the title's whole
+    line: beside a short title it reads as part of it), None if none is."""
+    theme = board.theme
+    colour = theme.role_colour(_kind_role(kind))
+    words = text(f"{kind} vertex", font=theme.font, size=theme.label_size + 2, colour=theme.ink)
+    swatch = tag(Dot(radius=theme.dot_radius * 1.8, color=colour), kind, "legend:swatch")
+    key = tag(VGroup(swatch, words.next_to(swatch, RIGHT, buff=0.15)), None, "legend:kind")
+    drawn = [box(*area_of(piece)) for piece in sweep.submobjects]
+    title = box(*title_area(board.title, whole_line=True))
+    found = free_place(key.width, key.height, unary_union([_taken(board), title, *drawn]))
+    if found is None:
+        return None
+    left, top = found
+    return key.move_to((left + key.width / 2, top - key.height / 2, 0))
 
 
 def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:

@@ -174,10 +174,10 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
     return group
 
 
-def label_gaps(board: Board) -> shapely.Geometry:
-    """The vertex labels' boxes, each grown by :data:`LABEL_GAP`: where a tool's line leaves
-    a gap (:func:`around_labels`)."""
-    return shapely.union_all([shapely.box(*area_of(marker[-1])).buffer(LABEL_GAP, join_style="mitre")
+def label_gaps(board: Board, gap: float = LABEL_GAP) -> shapely.Geometry:
+    """The vertex labels' boxes, each grown by ``gap``: where a tool's line leaves a gap
+    (:func:`around_labels`)."""
+    return shapely.union_all([shapely.box(*area_of(marker[-1])).buffer(gap, join_style="mitre")
                               for marker in board.markers.values()])
 
 

@@ -3046,3 +3046,79 @@ def amber_figure_marks(data: dict) -> list[str]:
                 said = play.get("subcaption") or "?"  # the card's title, said as it comes
                 found.append(f"play {k}: {name} amber with the title {said!r}")
     return found
+# --- review s35: chapter 5's kind words and labels off P's fill, its sweep clear of labels ------
+
+#: the pictures' polygons whose interior a word or a label must keep off: a run's board, an
+#: analysis's stage, a card's figure
+_INTERIORS = ("polygon", "analysis:polygon", "figure:polygon")
+
+
+def _picture_texts(node: dict) -> Iterator[tuple[str, tuple[float, float, float, float]]]:
+    """(what it says, box) of each kind word (:data:`_KIND_WORDS`) and vertex label (a board's
+    ``vertex:`` markers, a figure's ``figure:vertices``) in a node and its parts."""
+    for part in mobject_nodes(node):
+        name = part.get("name") or ""
+        if name in _KIND_WORDS and part.get("box"):
+            yield repr(part["text"]), tuple(part["box"])
+        elif name.startswith("vertex:") or name == "figure:vertices":
+            yield from _marker_labels(name, part)
+
+
+def texts_over_the_picture(data: dict) -> list[str]:
+    """The kind words and vertex labels (:func:`_picture_texts`) whose box lies over the
+    interior of the polygon of their picture (:data:`_INTERIORS`, the one drawn last) by more
+    than :data:`MOST_TEXT_OVER_FILL`, as ``"play 19 'merge' 0.26 over P"`` or ``"play 9 G
+    0.05 over P"``: each text at each place once, as it comes in or moves there (review s35:
+    "merge", "split", G and M stood on chapter 5's fill). A polygon with holes is read as one
+    outline (:func:`_outline`): a hole's labels, in the hole, may be found over P."""
+    from shapely.geometry import box as rectangle
+
+    picture = None
+    found: dict[tuple[str, tuple[float, ...]], str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                if kind in INCOMING and node.get("name") in _INTERIORS and node.get("points"):
+                    picture = _outline(node)
+                if kind in OUTGOING or picture is None:
+                    continue
+                for said, box in _picture_texts(node):
+                    over = rectangle(*box).intersection(picture).area
+                    if over > MOST_TEXT_OVER_FILL:
+                        found.setdefault((said, box), f"play {k} {said} {over:.2f} over P")
+    return sorted(set(found.values()), key=lambda s: (int(s.split()[1]), s))
+
+
+def words_over_the_picture(data: dict) -> list[str]:
+    """:func:`texts_over_the_picture` of the kind words only (each quoted)."""
+    return [found for found in texts_over_the_picture(data) if found.split()[2][0] == "'"]
+
+
+#: the least gap the monotone sweep line (:data:`_TOOL_LINES`) leaves round a vertex label: at
+#: 0.04 its dashes ran up to M's and K's letters at their height, read as struck through
+LEAST_SWEEP_GAP = 0.1
+
+
+def labels_struck_by_the_sweep(data: dict) -> list[str]:
+    """The vertex labels the monotone sweep line's dashes come nearer than
+    :data:`LEAST_SWEEP_GAP` to, where the line is recorded (as it comes, and each place a
+    Transform moves it to), as ``"the sweep 0.04 from M"``: each label once, at its least
+    gap; the labels are those of the polygon drawn last."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as rectangle
+
+    least: dict[str, float] = {}
+    for anim, labels in _with_labels(data):
+        for key in ("mobject", "target"):
+            for line in mobject_nodes(anim.get(key) or {}):
+                if line.get("name") not in _TOOL_LINES:
+                    continue
+                for dash in mobject_nodes(line):
+                    if len(dash.get("points", ())) < 2 or (dash.get("stroke_opacity") or 0) == 0:
+                        continue
+                    drawn = LineString([p[:2] for p in dash["points"]])
+                    for v, box in labels.items():
+                        gap = drawn.distance(rectangle(*box))
+                        if gap < LEAST_SWEEP_GAP - 1e-3:
+                            least[v] = min(gap, least.get(v, gap))
+    return [f"the sweep {gap:.2f} from {v}" for v, gap in sorted(least.items())]

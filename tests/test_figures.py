@@ -533,12 +533,11 @@ def test_the_delaunay_figure_draws_the_circle_of_one_triangle_and_what_it_holds(
 
     from geometry.cdt import constrained_delaunay
     from metaphors.figure_faster import shown_circle
+    from metaphors.theme import THEME
 
     p = read_polygon("lecture")
-    circle = shown_circle(p)
+    circle = shown_circle(p, THEME, BOX).circle
     assert circle.triangle in constrained_delaunay(p)
-    # the lecture's polygon shows the point of "seen from inside": vertices in the circle
-    assert circle.inside
     drawn = figure_mobjects(Figure("delaunay-circle"), "lecture")
     (ring,) = named(drawn, "figure:circumcircle")
     (chosen,) = named(drawn, "figure:delaunay")
@@ -576,12 +575,11 @@ def labels_on_lines(markers, ring, triangles) -> list[str]:
     return found
 
 
-def test_the_delaunay_figure_s_labels_keep_clear_of_its_circle_and_triangles():
+def test_the_delaunay_figure_s_labels_keep_clear_of_its_circle_and_triangles(monkeypatch):
     """Review s567: "K" stood on the circle, "G" on edge G–C and "F" touched the circle: the
-    labels were placed clear of P's edges only (the old placement, below, is seen)."""
-    import math
-
-    from metaphors.figure_faster import shown_circle
+    labels were placed clear of P's edges only (the old placement, below, is seen); and a
+    circle whose labels find no clear place is passed over (HKM's ran along M's label)."""
+    import metaphors.figure_faster as faster
     from metaphors.labels import placed_vertex_markers
     from metaphors.theme import THEME
 
@@ -590,16 +588,59 @@ def test_the_delaunay_figure_s_labels_keep_clear_of_its_circle_and_triangles():
     triangles = named(drawn, "figure:triangle")
     (vertices,) = named(drawn, "figure:vertices")
     assert labels_on_lines(vertices, ring, triangles) == []
-    p = read_polygon("lecture")
-    circle = shown_circle(p)
-    (cx, cy), r = (float(v) for v in circle.centre), circle.radius
-    frame = Frame([*p.points, (cx - r, cy - r), (cx + r, cy + r)], *BOX)
-    old = placed_vertex_markers(p, frame, THEME)
-    assert {"K × circle", "G × triangle"} <= set(labels_on_lines(old, ring, triangles))
-    # and M, whose mark sits on the line, is said to be only just inside
-    near = [p.labels[k] for k in circle.inside
-            if r - math.dist((cx, cy), p.points[k]) < 0.1 * r]
-    assert all(f"{v} (just)" in label(drawn) for v in near)
+    # the circle of DFG, drawn before review s35, its labels placed clear of edges only
+    monkeypatch.setattr(faster, "clear_of_rim", lambda polygon, circle: True)
+    monkeypatch.setattr(faster, "_labels_clear", lambda polygon, figure: True)
+    old_figure = figure_mobjects(Figure("delaunay-circle"), "lecture")
+    (old_ring,) = named(old_figure, "figure:circumcircle")
+    circle = faster.shown_circle(read_polygon("lecture"), THEME, BOX)
+    old = placed_vertex_markers(read_polygon("lecture"), circle.frame, THEME)
+    assert {"K × circle", "G × triangle"} <= set(labels_on_lines(old, old_ring, triangles))
+    # and M, whose mark sat on the line, was said to be only just inside
+    assert "M (just)" in label(old_figure)
+    # HKM's circle (the best that keeps every vertex clear) ran along M's label
+    monkeypatch.undo()
+    monkeypatch.setattr(faster, "_labels_clear", lambda polygon, figure: True)
+    hkm = figure_mobjects(Figure("delaunay-circle"), "lecture")
+    (hkm_ring,) = named(hkm, "figure:circumcircle")
+    assert "M × circle" in labels_on_lines(named(hkm, "figure:vertices")[0], hkm_ring,
+                                           named(hkm, "figure:triangle"))
+
+
+def dots_near_the_rim(drawn) -> list[str]:
+    """The vertex dots of the Delaunay figure, off its triangle, nearer its circle than
+    :data:`metaphors.figure_faster.CLEAR_OF_RIM` of its radius, as ``"M 0.05 inside"``: a dot
+    on the line is read as neither in nor out."""
+    import numpy as np
+
+    from metaphors.figure_faster import CLEAR_OF_RIM
+
+    (ring,) = named(drawn, "figure:circumcircle")
+    (chosen,) = named(drawn, "figure:delaunay")
+    (vertices,) = named(drawn, "figure:vertices")
+    centre, r = ring.get_center(), ring.width / 2
+    corners = chosen.get_vertices()
+    found = []
+    for marker in vertices:
+        at = marker[0].get_center()
+        if min(np.linalg.norm(at - c) for c in corners) < 1e-3:
+            continue
+        off = float(np.linalg.norm(at - centre)) / r - 1
+        if abs(off) < CLEAR_OF_RIM:
+            found.append(f"{marker[1].original_text} {abs(off):.2f} "
+                         f"{'inside' if off < 0 else 'outside'}")
+    return found
+
+
+def test_the_delaunay_figure_s_vertices_stand_clear_inside_or_outside_its_circle(monkeypatch):
+    """Review s35: M's dot lay on the circle of DFG, 5 % of its radius inside; every vertex
+    shown stands 15 % of the radius in or out (the old choice, forced below, is seen)."""
+    import metaphors.figure_faster as faster
+
+    assert dots_near_the_rim(figure_mobjects(Figure("delaunay-circle"), "lecture")) == []
+    monkeypatch.setattr(faster, "clear_of_rim", lambda polygon, circle: True)
+    assert dots_near_the_rim(figure_mobjects(Figure("delaunay-circle"), "lecture")) == [
+        "M 0.05 inside"]
 
 
 def test_the_recap_draws_each_algorithm_s_own_triangulation_with_the_bound_its_card_says():

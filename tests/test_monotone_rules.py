@@ -5,6 +5,8 @@ on the same graph mended."""
 
 from __future__ import annotations
 
+from itertools import pairwise
+
 from tests.reading_rules import fleeting_kind_words, jumping_stacks, stray_kind_words
 
 
@@ -85,3 +87,55 @@ def test_a_stack_that_changes_unsaid_is_found():
                            "A is done: b₁ and B wait on the stack", 1.0))
     assert jumping_stacks(jumped) == ["'B waits on the stack': A went, b₁ came"]
     assert jumping_stacks(said) == []
+
+
+def _square(name: str, x0: float, y0: float, x1: float, y1: float) -> dict:
+    """A closed polygon node, each side a curve of four points (as manim writes it)."""
+    corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)]
+    points = [[*(p if k < 2 else q), 0.0] for p, q in pairwise(corners)
+              for k in range(4)]
+    return {"name": name, "type": "Polygon", "points": points}
+
+
+def test_a_kind_word_or_a_label_over_the_polygon_s_fill_is_found():
+    """Review s35: "merge" beside M and "split" beside D stood on P's fill, and so did the
+    labels G and M; a word outside P, off its fill, is not found."""
+    from tests.reading_rules import texts_over_the_picture, words_over_the_picture
+
+    polygon = {"type": "FadeIn", "mobject": _square("polygon", -1.0, -2.0, 2.0, 2.0)}
+    inside = _graph(([polygon, *SHOWN], None, 1.0),
+                    ([_kind("FadeIn", [0.2, 0.5, 1.0, 0.8], "merge")], "M: merge", 1.0))
+    outside = _graph(([polygon], None, 1.0),
+                     ([_kind("FadeIn", [2.2, 0.5, 3.0, 0.8], "merge")], "M: merge", 1.0))
+    # A's label stands at x −0.35 … −0.15, inside the square from −1; L's inside too
+    assert words_over_the_picture(inside) == ["play 1 'merge' 0.24 over P"]
+    assert texts_over_the_picture(inside) == ["play 0 A 0.04 over P", "play 0 L 0.04 over P",
+                                              "play 1 'merge' 0.24 over P"]
+    assert texts_over_the_picture(outside) == []
+
+
+def _sweep(*dashes: tuple[float, float, float]) -> dict:
+    """The monotone sweep line: its dashes, each (left, right, height)."""
+    return {"name": "sweep", "type": "VGroup", "submobjects": [
+        {"name": "sweep:line", "type": "DashedLine", "stroke_opacity": 1.0,
+         "points": [[x0, y, 0.0], [x1, y, 0.0]]} for x0, x1, y in dashes]}
+
+
+def test_a_sweep_line_that_runs_up_to_a_label_is_found():
+    """Chapter 5 at 28 s: the sweep's dashes stopped 0.04 short of M's and K's letters, at
+    their height, and read as striking them through; 0.12 off, they do not."""
+    from tests.reading_rules import labels_struck_by_the_sweep
+
+    # A's label: x −0.35 … −0.15, y −0.1 … 0.1
+    near = _graph((SHOWN[:1], None, 1.0),
+                  ([{"type": "Create", "mobject": _sweep((-2.0, -0.39, 0.0), (-0.11, 2.0, 0.0))}],
+                   None, 1.0))
+    moved = _graph((SHOWN[:1], None, 1.0),
+                   ([{"type": "Transform", "mobject": _sweep((-2.0, 2.0, 1.0)),
+                      "target": _sweep((-2.0, -0.39, 0.0), (-0.11, 2.0, 0.0))}], None, 1.0))
+    clear = _graph((SHOWN[:1], None, 1.0),
+                   ([{"type": "Create", "mobject": _sweep((-2.0, -0.47, 0.0), (-0.03, 2.0, 0.0))}],
+                    None, 1.0))
+    assert labels_struck_by_the_sweep(near) == ["the sweep 0.04 from A"]
+    assert labels_struck_by_the_sweep(moved) == ["the sweep 0.04 from A"]
+    assert labels_struck_by_the_sweep(clear) == []
