@@ -3046,6 +3046,8 @@ def amber_figure_marks(data: dict) -> list[str]:
                 said = play.get("subcaption") or "?"  # the card's title, said as it comes
                 found.append(f"play {k}: {name} amber with the title {said!r}")
     return found
+
+
 # --- review s35: chapter 5's kind words and labels off P's fill, its sweep clear of labels ------
 
 #: the pictures' polygons whose interior a word or a label must keep off: a run's board, an
