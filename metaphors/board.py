@@ -14,20 +14,18 @@ from typing import Any, TypeAlias
 
 import numpy as np
 import shapely
-from manim import Animation, FadeIn, FadeOut, Line, Mobject, Scene, Transform, VGroup
-from manim import Polygon as MPolygon
+from manim import Animation, FadeIn, FadeOut, Mobject, Scene, Transform, VGroup
 from manim.mobject.mobject import _AnimationBuilder
 
 from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import MARGIN, crossed_labels, drawn_in, measured_markers
+from metaphors.labels import MARGIN, crossed_labels, drawn_edges, drawn_in, measured_markers
 from metaphors.layout import (
     METAPHOR,
     SUBTITLE_WIDTH,
     TITLE_Y,
     Box,
-    Segment,
     ring_edges,
     subtitle_centre,
 )
@@ -285,11 +283,12 @@ class Board:
         rings = [[label for label in ring if label in self.markers]
                  for ring in (self.polygon.labels, *(h.labels for h in self.holes))]
         drawn = [edge for ring in self.outline_rings() for edge in ring_edges(ring)]
-        drawn += [edge for m in self.objects.values() if m not in lines for edge in _edges(m)]
+        drawn += [edge for m in self.objects.values() if m not in lines
+                  for edge in drawn_edges(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
         moves: list[Playable] = []
         for label, centre in crossed_labels(rings, markers, drawn,
-                                            [edge for line in lines for edge in _edges(line)],
+                                            [edge for line in lines for edge in drawn_edges(line)],
                                             self.theme.dot_radius, apart).items():
             moved = self.markers[label].copy()
             if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
@@ -321,14 +320,3 @@ class Board:
     def drop(self, *keys: str) -> list[FadeOut]:
         """Fade-outs for remembered objects."""
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
-
-
-def _edges(mobject: Mobject) -> list[Segment]:
-    """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""
-    if isinstance(mobject, Line):
-        return [(mobject.get_start(), mobject.get_end())]
-    if isinstance(mobject, MPolygon):
-        return ring_edges(list(mobject.get_vertices()))
-    if isinstance(mobject, VGroup):
-        return [edge for part in mobject.submobjects for edge in _edges(part)]
-    return []

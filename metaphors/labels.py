@@ -20,7 +20,8 @@ from itertools import pairwise
 
 import numpy as np
 import shapely
-from manim import Dot, Mobject, VGroup
+from manim import Dot, Line, Mobject, VGroup
+from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame
@@ -228,8 +229,20 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
     return moved
 
 
-__all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "measured_markers", "outward",
-           "place_labels", "place_ring_labels", "placed_vertex_markers", "places_round"]
+def drawn_edges(mobject: Mobject) -> list[Segment]:
+    """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""
+    if isinstance(mobject, Line):
+        return [(mobject.get_start(), mobject.get_end())]
+    if isinstance(mobject, MPolygon):
+        return ring_edges(list(mobject.get_vertices()))
+    if isinstance(mobject, VGroup):
+        return [edge for part in mobject.submobjects for edge in drawn_edges(part)]
+    return []
+
+
+__all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "drawn_edges",
+           "measured_markers", "outward", "place_labels", "place_ring_labels",
+           "placed_vertex_markers", "places_round"]
 
 
 def drawn_in(marker: Mobject, colour: str) -> bool:

@@ -2924,3 +2924,55 @@ def _shown_roles(anim: dict) -> Iterator[tuple[str | None, dict]]:
     for pulse in pulses:
         if "color" in pulse and "mobject" in pulse:
             yield roles.get(str(pulse["color"]).upper()), pulse["mobject"]
+
+
+# --- over3 item 1: a label with no room outside P stands inside one piece of the fill ------------
+
+#: the fills that cut P into pieces of their own colour: a card's triangles and halves, a run's
+#: pieces and triangles, the whole triangulation (several under one name)
+_CUT_FILLS = ("figure:triangle", "figure:half", "piece:", "triangle:", "triangulation")
+#: the lines drawn over P's fill that divide it: a card's diagonals
+_CUT_LINES = ("figure:inner-diagonal", "figure:diagonal")
+
+
+def _label_texts(name: str, node: dict) -> Iterator[tuple[str, tuple[float, float, float, float]]]:
+    """(text, box) of each label a board's marker or a card's group of markers shows."""
+    if name.startswith("vertex:"):
+        yield from ((name.removeprefix("vertex:"), box) for box in _label_boxes(node, direct=True))
+    else:
+        yield from _marker_labels("figure:vertices", node)
+
+
+def labels_across_fills(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> list[str]:
+    """The vertex labels over a fill that reach within ``margin`` of one of its sides or of a
+    line that divides it (:data:`_CUT_FILLS`, :data:`_CUT_LINES`), as ``"play 3 G on
+    figure:triangle"``: a label inside P, where it has no room outside (M in its notch), reads
+    only inside one piece of one colour, off its sides (chapter 1's triangulation card: G on
+    its triangles' side B–E). Each label and fill once, at the first play that shows it so,
+    as :func:`_shown_after_plays` follows them; a label outside every fill is
+    :func:`labels_on_edges`' to judge."""
+    from shapely.geometry import LineString, Polygon
+    from shapely.geometry import box as area
+
+    found: dict[tuple[str, str], str] = {}
+    owners = ("vertex:", "figure:vertices", *_CUT_FILLS, *_CUT_LINES)
+    for k, shown in _shown_after_plays(data, owners, many=_CUT_FILLS, by_corners=True):
+        fills = [(name.partition("@")[0], Polygon(ring).buffer(0))
+                 for name, node in shown.items() if name.startswith(_CUT_FILLS)
+                 for part in mobject_nodes(node) if (part.get("fill_opacity") or 0) > 0
+                 for ring in _paths(part)]
+        lines = [(name, LineString(s)) for name, node in shown.items()
+                 if name.startswith(_CUT_LINES) for s in _segments(node)]
+        for name, node in shown.items():
+            if not name.startswith(("vertex:", "figure:vertices")):
+                continue
+            for text, box in _label_texts(name, node):
+                label = area(*box)
+                over = [(owner, shape) for owner, shape in fills
+                        if shape.intersection(label).area > 1e-4]
+                near = [owner for owner, shape in over if shape.exterior.distance(label) < margin]
+                if over:
+                    near += [owner for owner, line in lines if line.distance(label) < margin]
+                for owner in near:
+                    found.setdefault((text, owner), f"play {k} {text} on {owner}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
