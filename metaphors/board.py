@@ -20,7 +20,13 @@ from manim.mobject.mobject import _AnimationBuilder
 from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import MARGIN, crossed_labels, drawn_edges, drawn_in, measured_markers
+from metaphors.labels import (
+    MARGIN,
+    crossed_labels,
+    drawn_edges,
+    measured_markers,
+    new_colour,
+)
 from metaphors.layout import (
     METAPHOR,
     SUBTITLE_WIDTH,
@@ -108,6 +114,9 @@ class Board:
         self.passing: dict[str, Mobject] = {}
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
+        # the labels of the part of P the current call runs on (divide and conquer's piece,
+        # :func:`metaphors.labels.new_colour`): None, all of P
+        self.focus: frozenset[str] | None = None
         # how many of the run's beats each caption stands over (:meth:`shared_time`)
         self.shares: dict[str, int] = {}
         # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood,
@@ -165,7 +174,7 @@ class Board:
         # animations of one mobject in one play would cancel the first.
         busy = {id(getattr(a, "mobject", None)) for a in anims}
         recolour, after = self._recolour(beat.roles, busy, at_rest)
-        action = [*anims, *self.panel.follow_roles(beat, at_rest), *recolour]
+        action = [*anims, *self.panel.follow_roles(beat, at_rest, self.focus), *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
                  *(FadeOut(m) for m in self.leaving)]
         self.leaving = []
@@ -228,16 +237,18 @@ class Board:
         anims, after = [], []
         for label, marker in self.markers.items():
             role = roles.get(label, "idle")
-            if at_rest or self.roles.get(label, "idle") != role:
-                colour = self.theme.ink if at_rest else self.theme.role_colour(role)
-                if at_rest and drawn_in(marker, colour):
-                    continue
-                tag(marker, "idle" if at_rest else role)
-                if id(marker) in busy:
-                    after.append((marker, colour))
-                else:
-                    anims.append(marker.animate.set_color(colour))
+            colour = new_colour(marker, label, role, self.roles.get(label, "idle"), self.theme,
+                                self.focus, at_rest)
+            if colour is None:
+                continue
+            tag(marker, "idle" if at_rest else role)
+            if id(marker) in busy:
+                after.append((marker, colour))
+            else:
+                anims.append(marker.animate.set_color(colour))
         self.roles = {} if at_rest else {k: v for k, v in roles.items() if k in self.markers}
+        if at_rest:
+            self.focus = None
         return anims, after
 
     def _subtitle(self, caption: str) -> list:

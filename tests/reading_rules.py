@@ -2976,3 +2976,37 @@ def labels_across_fills(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> lis
                 for owner in near:
                     found.setdefault((text, owner), f"play {k} {text} on {owner}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- over3 item 2: a vertex turned grey is said to be what grey means, where first seen ----------
+
+
+def unexplained_grey(data: dict) -> list[str]:
+    """The first vertex labels a play turns grey (``idle``: "not in the current call") when
+    no caption up to it has said what grey means (a caption with "grey" in it), as ``"play
+    33 A grey, unsaid"``: chapter 1's divide and conquer left the ends of each diagonal grey
+    after the split, then greyed the vertices not in the smaller polygon, and never said
+    why. The board's and the panel's markers; one finding, the first."""
+    grey, said = _colour("idle"), False
+    for k, play in enumerate(data["plays"]):
+        said = said or "grey" in (play.get("subcaption") or "").lower()
+        for kind, node in _recorded_all(play):
+            name = node.get("name") or ""
+            if (kind != "_MethodAnimation" or not name.startswith(("vertex:", "panel:"))
+                    or (node.get("fill") or "").upper() != grey):
+                continue
+            return [] if said else [f"play {k} {name.partition(':')[2]} grey, unsaid"]
+    return []
+
+
+def _recorded_all(play: dict) -> Iterator[tuple[str, dict]]:
+    """(the animation's type, target) of every animation of a play that has a target, its
+    members' too."""
+    def walk(anim: dict) -> Iterator[tuple[str, dict]]:
+        if "target" in anim:
+            yield anim["type"], anim["target"]
+        for child in anim.get("animations", ()):
+            yield from walk(child)
+
+    for anim in play["animations"]:
+        yield from walk(anim)

@@ -79,6 +79,7 @@ from tests.reading_rules import (
     tails_beside_labels,
     ticks_outside,
     uneven_countdowns,
+    unexplained_grey,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
@@ -767,8 +768,11 @@ def test_the_overview_poses_the_problem_with_a_black_box():
                                                  if n.get("text")]
     assert not [w for w in words if "gravity" in w.lower() or "ball" in w.lower()]
     cues = [c["text"] for c in data["cues"]]
-    asked = cues.count("Find an inner diagonal of this polygon")
+    asked = sum(c.startswith("Find an inner diagonal of this polygon") for c in cues)
     assert asked >= 4 and sum(c.startswith("Out comes ") for c in cues) == asked
+    # over3 item 2: the vertices not in the polygon asked about are grey, said once, where
+    # first seen (the ends of each diagonal stayed grey after the split, never explained)
+    assert sum("grey" in c for c in cues) == 1 and unexplained_grey(data) == []
     counters = [n["text"] for n in graph_nodes(data) if n.get("name") == "counter"]
     assert counters and counters[-1] == "n − 2 = 13 − 2\n= 11 triangles"
     assert sum(p["run_time"] for p in data["plays"]) >= 75
