@@ -3010,3 +3010,55 @@ def _recorded_all(play: dict) -> Iterator[tuple[str, dict]]:
 
     for anim in play["animations"]:
         yield from walk(anim)
+
+
+# --- over3 items 3 and 4: the band bends under its words; no label touches the ball --------------
+
+
+def early_snags(data: dict) -> list[str]:
+    """The plays that draw gravity's band with a corner at a vertex (three corners or more)
+    while the caption up does not say it snags, as ``"play 26 band bent under 'It slides
+    down the edge to G'"``: chapter 3's band bent at H 1.2 s before "The rubber band snags
+    H" was said. A band going (faded out) is not drawn anew."""
+    found, caption = [], ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        if "snag" in caption:
+            continue
+        for kind, node in _recorded_all_nodes(play):
+            if kind not in OUTGOING and node.get("name") == "band" and len(_segments(node)) >= 2:
+                found.append(f"play {k} band bent under {caption!r}")
+                break
+    return found
+
+
+def _recorded_all_nodes(play: dict) -> Iterator[tuple[str, dict]]:
+    """(the animation's type, node) of every mobject and target of a play's animations."""
+    for anim in play["animations"]:
+        yield from _recorded(anim)
+
+
+#: the least gap between a vertex label and gravity's ball (its stroke's width, about)
+LEAST_BALL_GAP = 0.03
+
+
+def labels_on_the_ball(data: dict, margin: float = LEAST_BALL_GAP) -> list[str]:
+    """The vertex labels nearer than ``margin`` to gravity's ball where a play leaves it, as
+    ``"play 70 C 0.00 from the ball"`` (each label once): the counterexample's C touched
+    the ball at rest on C. The ball's box is its points'; the labels and the ball as
+    :func:`_shown_after_plays` follows them."""
+    from shapely.geometry import box as area
+
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:", "ball")):
+        ball = shown.get("ball")
+        if not ball or not ball.get("points"):
+            continue
+        xs, ys = [p[0] for p in ball["points"]], [p[1] for p in ball["points"]]
+        disk = area(min(xs), min(ys), max(xs), max(ys))
+        for name, marker in shown.items():
+            for box in _label_boxes(marker, direct=True) if name.startswith("vertex:") else ():
+                gap = disk.distance(area(*box))
+                if gap < margin and name not in found:
+                    found[name] = f"play {k} {name.removeprefix('vertex:')} {gap:.2f} from the ball"
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
