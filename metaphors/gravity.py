@@ -327,7 +327,7 @@ def slide(board: Board, beat: Slide) -> None:
         board.scene.bring_to_front(board.markers[beat.result])
 
 
-def _stretching(board: Board, band: VMobject, pieces: Sequence, hit: Point, x: Point,
+def _stretching(board: Board, band: Mobject, pieces: Sequence, hit: Point, x: Point,
                 span: tuple[float, float]) -> UpdateFromAlphaFunc:
     """The band drawn, in every frame of a piece of the slide (``span``: its times), as
     :func:`story.analysis.band_at` has it then: one computation of the band, drawn and tested
