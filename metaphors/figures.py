@@ -126,10 +126,13 @@ def _vertices(polygon: Polygon, frame: Frame, theme: Theme, parts: list[Mobject]
 
 def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
                    theme: Theme) -> list[Mobject]:
-    """P cut into its n − 2 triangles (ear clipping's), the count, and one of its inner
-    diagonals drawn in green, the one seen best to be inside (long, and far from the other
-    vertices: their product the most): the card names that idea first (issue 22 item 2)."""
-    triangles = triangulate(polygon, "ear-clipping").triangles
+    """P cut into its n − 2 triangles (divide and conquer's with ``figure.heuristic``, as
+    chapter 1's run ends on them), the count, and one of its inner diagonals drawn in green,
+    the one seen best to be inside (long, and far from the other vertices: their product the
+    most): the card names that idea first (issue 22 item 2). Ear clipping's fanned P's
+    triangles from B: G, which has no room outside P, found none inside one triangle either,
+    and its label stood by H."""
+    triangles = triangulate(polygon, "divide-and-conquer", figure.heuristic).triangles
     pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
                                    theme), "result", "figure:triangle")
               for k, t in enumerate(triangles)]

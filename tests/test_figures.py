@@ -866,6 +866,9 @@ def test_a_card_s_labels_stand_inside_one_piece_of_its_fill(kind):
     one piece of the figure's fill, off the lines that cut it. The rule can fail: the same
     figure with its labels placed as before, clear of P's edges only, had G on the
     triangulation's side B–E, M by the diagonal BM and G on the diagonal DG's half."""
+    from manim import DL, UR
+    from shapely.geometry import Point, box
+
     from metaphors.labels import placed_vertex_markers
     from tests.reading_rules import labels_across_fills
     from trex.scene_graph import mobject_graph
@@ -881,3 +884,11 @@ def test_a_card_s_labels_stand_inside_one_piece_of_its_fill(kind):
     before = [old if m.name == "figure:vertices" else m for m in drawn]
     assert any(" G on " in f for f in labels_across_fills(shown(before))), kind
     assert labels_across_fills(shown(drawn)) == [], kind
+    # and each label nearer its own dot than any other (ear clipping's fan left G no place
+    # inside one triangle, and its label went by H)
+    markers = next(m for m in drawn if m.name == "figure:vertices")
+    dots = [Point(*marker[0].get_center()[:2]) for marker in markers]
+    for k, marker in enumerate(markers):
+        label = box(*marker[1].get_corner(DL)[:2], *marker[1].get_corner(UR)[:2])
+        gaps = [label.distance(dot) for dot in dots]
+        assert gaps[k] < min(g for j, g in enumerate(gaps) if j != k), (kind, p.labels[k])
