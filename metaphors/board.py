@@ -14,20 +14,24 @@ from typing import Any, TypeAlias
 
 import numpy as np
 import shapely
-from manim import Animation, FadeIn, FadeOut, Line, Mobject, Scene, Transform, VGroup
-from manim import Polygon as MPolygon
+from manim import Animation, FadeIn, FadeOut, Mobject, Scene, Transform, VGroup
 from manim.mobject.mobject import _AnimationBuilder
 
 from geometry.polygon import Polygon
 from metaphors.captions import CaptionTrack, whole_frames
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import MARGIN, crossed_labels, drawn_in, measured_markers
+from metaphors.labels import (
+    MARGIN,
+    crossed_labels,
+    drawn_edges,
+    measured_markers,
+    new_colour,
+)
 from metaphors.layout import (
     METAPHOR,
     SUBTITLE_WIDTH,
     TITLE_Y,
     Box,
-    Segment,
     ring_edges,
     subtitle_centre,
 )
@@ -110,6 +114,9 @@ class Board:
         self.passing: dict[str, Mobject] = {}
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
+        # the labels of the part of P the current call runs on (divide and conquer's piece,
+        # :func:`metaphors.labels.new_colour`): None, all of P
+        self.focus: frozenset[str] | None = None
         # how many beats the caption of the beat being played stands over, in its unbroken
         # stretch of beats (:meth:`shared_time`; set by :func:`metaphors.play.play_beats`)
         self.share = 1
@@ -171,7 +178,7 @@ class Board:
         # animations of one mobject in one play would cancel the first.
         busy = {id(getattr(a, "mobject", None)) for a in anims}
         recolour, after = self._recolour(beat.roles, busy, at_rest)
-        action = [*anims, *self.panel.follow_roles(beat, at_rest), *recolour]
+        action = [*anims, *self.panel.follow_roles(beat, at_rest, self.focus), *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
                  *(FadeOut(m) for m in self.leaving)]
         self.leaving = []
@@ -234,16 +241,18 @@ class Board:
         anims, after = [], []
         for label, marker in self.markers.items():
             role = roles.get(label, "idle")
-            if at_rest or self.roles.get(label, "idle") != role:
-                colour = self.theme.ink if at_rest else self.theme.role_colour(role)
-                if at_rest and drawn_in(marker, colour):
-                    continue
-                tag(marker, "idle" if at_rest else role)
-                if id(marker) in busy:
-                    after.append((marker, colour))
-                else:
-                    anims.append(marker.animate.set_color(colour))
+            colour = new_colour(marker, label, role, self.roles.get(label, "idle"), self.theme,
+                                self.focus, at_rest)
+            if colour is None:
+                continue
+            tag(marker, "idle" if at_rest else role)
+            if id(marker) in busy:
+                after.append((marker, colour))
+            else:
+                anims.append(marker.animate.set_color(colour))
         self.roles = {} if at_rest else {k: v for k, v in roles.items() if k in self.markers}
+        if at_rest:
+            self.focus = None
         return anims, after
 
     def _subtitle(self, caption: str) -> list:
@@ -289,11 +298,12 @@ class Board:
         rings = [[label for label in ring if label in self.markers]
                  for ring in (self.polygon.labels, *(h.labels for h in self.holes))]
         drawn = [edge for ring in self.outline_rings() for edge in ring_edges(ring)]
-        drawn += [edge for m in self.objects.values() if m not in lines for edge in _edges(m)]
+        drawn += [edge for m in self.objects.values() if m not in lines
+                  for edge in drawn_edges(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
         moves: list[Playable] = []
         for label, centre in crossed_labels(rings, markers, drawn,
-                                            [edge for line in lines for edge in _edges(line)],
+                                            [edge for line in lines for edge in drawn_edges(line)],
                                             self.theme.dot_radius, apart).items():
             moved = self.markers[label].copy()
             if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
@@ -325,14 +335,3 @@ class Board:
     def drop(self, *keys: str) -> list[FadeOut]:
         """Fade-outs for remembered objects."""
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
-
-
-def _edges(mobject: Mobject) -> list[Segment]:
-    """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""
-    if isinstance(mobject, Line):
-        return [(mobject.get_start(), mobject.get_end())]
-    if isinstance(mobject, MPolygon):
-        return ring_edges(list(mobject.get_vertices()))
-    if isinstance(mobject, VGroup):
-        return [edge for part in mobject.submobjects for edge in _edges(part)]
-    return []

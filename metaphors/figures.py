@@ -45,7 +45,7 @@ from metaphors.figure_caption import figure_caption
 from metaphors.figure_metaphors import metaphor_parts
 from metaphors.figure_plots import Area, Series, line_plot
 from metaphors.figure_steps import comes_with
-from metaphors.labels import placed_vertex_markers
+from metaphors.labels import drawn_edges, measured_markers, placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
@@ -92,8 +92,8 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     polygon = read_polygon(figure.polygon or polygon_spec)
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
-    vertices = tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
-    if figure.kind == "metaphor":  # its run is read from the polygon's spec, not the polygon
+    if figure.kind == "metaphor":
+        vertices = tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices")  # its run is read from the polygon's spec, not the polygon
         under, over, said = metaphor_parts(figure.heuristic, figure.polygon or polygon_spec,
                                            frame, theme, _bounds()) if polygon.n >= 4 else (
             [], [], "a triangle: no diagonal to find")
@@ -105,17 +105,35 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
              "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
     parts = drawn(figure, polygon, frame, theme)
+    vertices = _vertices(polygon, frame, theme, parts)
     # marks on a vertex go over its dot; fills go under the dots and labels
     marks = [m for m in parts if m.name == "figure:candidate"]
     return [shape, *[m for m in parts if m not in marks], vertices, *marks]
 
 
+#: the parts whose lines cut P's fill: a label across one stands on two colours, or on the
+#: line (chapter 1's G stood on the triangulation's side B–E, M beside the diagonal BM)
+_CUTTING = ("figure:triangle", "figure:inner-diagonal", "figure:diagonal")
+
+
+def _vertices(polygon: Polygon, frame: Frame, theme: Theme, parts: list[Mobject]) -> Mobject:
+    """The vertex markers, each label clear of the lines the figure cuts P with
+    (:data:`_CUTTING`) as of its edges: one that has no room outside P (M in its notch)
+    stands inside one piece of the fill, off its sides."""
+    lines = [edge for m in parts if m.name in _CUTTING for edge in drawn_edges(m)]
+    return tag(VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, lines=lines))),
+               "idle", "figure:vertices")
+
+
 def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
                    theme: Theme) -> list[Mobject]:
-    """P cut into its n − 2 triangles (ear clipping's), the count, and one of its inner
-    diagonals drawn in green, the one seen best to be inside (long, and far from the other
-    vertices: their product the most): the card names that idea first (issue 22 item 2)."""
-    triangles = triangulate(polygon, "ear-clipping").triangles
+    """P cut into its n − 2 triangles (divide and conquer's with ``figure.heuristic``, as
+    chapter 1's run ends on them), the count, and one of its inner diagonals drawn in green,
+    the one seen best to be inside (long, and far from the other vertices: their product the
+    most): the card names that idea first (issue 22 item 2). Ear clipping's fanned P's
+    triangles from B: G, which has no room outside P, found none inside one triangle either,
+    and its label stood by H."""
+    triangles = triangulate(polygon, "divide-and-conquer", figure.heuristic).triangles
     pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
                                    theme), "result", "figure:triangle")
               for k, t in enumerate(triangles)]

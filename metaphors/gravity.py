@@ -9,6 +9,7 @@ as :mod:`metaphors.picture` turns it, and turns back after the verdict.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
 from typing import Any
@@ -44,16 +45,20 @@ from metaphors.picture import _UPRIGHT, _movers, again, turn_to
 from metaphors.tags import tag
 from rendering.turn import Turn
 from rendering.typeset import text
-from story.analysis import wraps
+from story.analysis import band_at, wraps
 from story.beats import Beat, beat_kind
 from story.states import BallDrop, BallSlide, Point, RubberBand, point
 from story.storyboard import Reading, Walk, read_pick, read_step
 from tracing import Event
 
+#: the ball's radius, and the room a label keeps from the ball at rest (its stroke, and a gap
+#: that reads as apart: :data:`metaphors.labels.MARGIN`)
+BALL_RADIUS, BALL_ROOM = 0.12, 0.06
+
 
 def _ball(board: Board, at: np.ndarray) -> Dot:
     theme = board.theme
-    return tag(Dot(at, radius=0.12, color=theme.ball, stroke_color=theme.ink, stroke_width=1.5),
+    return tag(Dot(at, radius=BALL_RADIUS, color=theme.ball, stroke_color=theme.ink, stroke_width=1.5),
                "argument", "ball")
 
 
@@ -279,11 +284,9 @@ def fall_shapes(v: np.ndarray, hit: np.ndarray) -> tuple[Mobject, ...]:
     """What the ball's fall covers, as lines a label must keep clear of
     (:meth:`Board.clear_labels`): its path from V to the hit, widened by the ball on either
     side, and a square round the hit ring with its diagonals (a label inside it is covered)."""
-    r = HIT_RADIUS + HIT_ROOM
-    side = np.array([0.12 + 0.04, 0.0, 0.0])
-    corners = [hit + np.array([dx, dy, 0.0]) for dx, dy in ((-r, -r), (r, -r), (r, r), (-r, r))]
-    return (Line(v - side, hit - side), Line(v + side, hit + side), MPolygon(*corners),
-            Line(corners[0], corners[2]), Line(corners[1], corners[3]))
+    side = np.array([BALL_RADIUS + 0.04, 0.0, 0.0])
+    return (Line(v - side, hit - side), Line(v + side, hit + side),
+            *_square(hit, HIT_RADIUS + HIT_ROOM))
 
 
 def _scene_point(mobject: Mobject) -> np.ndarray:
@@ -293,32 +296,66 @@ def _scene_point(mobject: Mobject) -> np.ndarray:
 def slide(board: Board, beat: Slide) -> None:
     """The ball slides down the edge it hit to its lower end X; the band stretches behind it,
     taut at every moment: it wraps each vertex it meets (:func:`story.analysis.wraps`) the
-    moment its straight line would leave P, one play per piece of the slide."""
+    moment its straight line would leave P, one play per piece of the slide, drawn in every
+    frame as :func:`story.analysis.band_at` has it (what tests/test_gravity_band.py samples).
+    From the first vertex it wraps the caption says the band snags it: the bend came 1.2 s
+    before its words (chapter 3 at 28.3 s), and waits for them now."""
     ball, band, mark = (board.objects.get(k) for k in ("ball", "band", "hit"))
     # it landed on a vertex: nothing to slide (the ball and band come together, from `drop`)
     if ball is None or band is None or mark is None or beat.slide is None:
         board.play(beat, run_time=0.8)
         return
-    x, v, hit = board.at(beat.slide.to), band.get_start(), mark.get_center()
-    pieces = wraps(_xy(v), _xy(hit), _xy(x), [_xy(board.vertex(k)) for k in board.where])
+    # in P's units, as the log has them: the band's corners are P's vertices, exactly
+    v, hit, x = (board.frame.from_scene(band.get_start()),
+                 board.frame.from_scene(mark.get_center()), beat.slide.to)
+    pieces = wraps(v, hit, x, list(board.where.values()))
     ends = [t for t, _ in pieces[1:]] + [1.0]
     for k, ((start, corners), end) in enumerate(zip(pieces, ends, strict=True)):
-        wrapped = [np.array([*c, 0.0]) for c in corners]
-        # the band's new corner sits on its straight line yet: bent there, it does not move
-        band.set_points_as_corners([*wrapped, hit + start * (x - hit)])
-        to = hit + end * (x - hit)
+        to = board.at(band_at(pieces, hit, x, end)[-1])
         moving = animate(ball, rate_func=linear).move_to(to)
+        moves: list[Playable] = []
         if k == len(pieces) - 1:  # it comes to rest on X: see-through, X's dot shows in it
             moving = moving.set_fill(opacity=RESTING)
-        anims = (moving, Transform(band, _band(board, [*wrapped, to]), rate_func=linear))
-        seconds = max(SLIDE_SECONDS * (end - start), 0.1)
-        if k == 0:
-            board.play(beat, *anims, run_time=seconds)
-        else:
-            again(board, beat, *anims, run_time=seconds)
+            # and X's label moves off it (the counterexample's C touched it), back with it
+            moves = board.clear_labels(*ball_shapes(to), for_now=True)
+        anims = (moving, _stretching(board, band, pieces, hit, x, (start, end)), *moves)
+        said = beat if k == 0 else replace(beat, caption=f"The rubber band snags "
+                                                         f"{_label_at(board, corners[1])}")
+        board.play(said, *anims, run_time=max(SLIDE_SECONDS * (end - start), 0.1))
     # the ball rests at X under X's dot and label: on top it hid the vertex it names
     if beat.result in board.markers:
         board.scene.bring_to_front(board.markers[beat.result])
+
+
+def _stretching(board: Board, band: Mobject, pieces: Sequence, hit: Point, x: Point,
+                span: tuple[float, float]) -> UpdateFromAlphaFunc:
+    """The band drawn, in every frame of a piece of the slide (``span``: its times), as
+    :func:`story.analysis.band_at` has it then: one computation of the band, drawn and tested
+    (a Transform between its ends bent the band off its taut shape as the corners moved)."""
+    start, end = span
+
+    def draw(mobject: Mobject, alpha: float) -> None:
+        corners = band_at(pieces, hit, x, start + alpha * (end - start))
+        mobject.set_points_as_corners([board.at(c) for c in corners])
+
+    return UpdateFromAlphaFunc(band, draw, rate_func=linear)
+
+
+def _label_at(board: Board, p: Point) -> str:
+    """The label of the vertex at ``p`` (P's units)."""
+    return min(board.where, key=lambda k: math.dist(board.where[k], p))
+
+
+def ball_shapes(at: np.ndarray) -> tuple[Mobject, ...]:
+    """A square round the ball at rest on ``at`` with its diagonals, as lines a label must
+    keep clear of (:meth:`Board.clear_labels`): a label inside the square is covered."""
+    return _square(at, BALL_RADIUS + BALL_ROOM)
+
+
+def _square(at: np.ndarray, r: float) -> tuple[Mobject, ...]:
+    """A square of half side ``r`` round ``at``, and its diagonals."""
+    corners = [at + np.array([dx, dy, 0.0]) for dx, dy in ((-r, -r), (r, -r), (r, r), (-r, r))]
+    return (MPolygon(*corners), Line(corners[0], corners[2]), Line(corners[1], corners[3]))
 
 
 #: the seconds of the ball's slide from the hit to X, and the fill of the ball at rest on X

@@ -20,7 +20,8 @@ from itertools import pairwise
 
 import numpy as np
 import shapely
-from manim import Dot, Mobject, VGroup
+from manim import Dot, Line, Mobject, VGroup
+from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame
@@ -228,8 +229,38 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
     return moved
 
 
-__all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "measured_markers", "outward",
-           "place_labels", "place_ring_labels", "placed_vertex_markers", "places_round"]
+def drawn_edges(mobject: Mobject) -> list[Segment]:
+    """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""
+    if isinstance(mobject, Line):
+        return [(mobject.get_start(), mobject.get_end())]
+    if isinstance(mobject, MPolygon):
+        return ring_edges(list(mobject.get_vertices()))
+    if isinstance(mobject, VGroup):
+        return [edge for part in mobject.submobjects for edge in drawn_edges(part)]
+    return []
+
+
+__all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "drawn_edges",
+           "measured_markers", "new_colour", "outward", "place_labels", "place_ring_labels",
+           "placed_vertex_markers", "places_round"]
+
+
+def new_colour(marker: Mobject, label: str, role: str, was: str, theme: Theme,
+               focus: frozenset[str] | None, at_rest: bool = False) -> str | None:
+    """The colour a vertex marker changes to for ``role`` (it was in role ``was``), None if it
+    stays as drawn. ``at_rest``: its ink. ``focus``: the labels of the part of P the call runs
+    on (divide and conquer's piece): an idle vertex in it is in its ink, one outside it grey,
+    so that grey says "not in this polygon"; None (all of P): a marker changes only with its
+    role, and an idle one that never had another stays in the ink it was drawn in."""
+    if at_rest:
+        colour = theme.ink
+    elif focus is not None and role == "idle":
+        colour = theme.ink if label in focus else theme.idle
+    elif focus is None and was == role:
+        return None
+    else:
+        colour = theme.role_colour(role)
+    return None if (at_rest or focus is not None) and drawn_in(marker, colour) else colour
 
 
 def drawn_in(marker: Mobject, colour: str) -> bool:

@@ -34,7 +34,7 @@ from manim import (
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import drawn_in
+from metaphors.labels import new_colour
 from metaphors.layout import (
     PANEL_CALL_Y,
     PANEL_CODE,
@@ -248,10 +248,13 @@ class Panel:
         self.line_y = [row.get_y() - scale * d for row, d in zip(rows, offsets, strict=True)]
         return rows
 
-    def follow_roles(self, beat: Beat, at_rest: bool = False) -> list[Animation]:
+    def follow_roles(self, beat: Beat, at_rest: bool = False,
+                     focus: frozenset[str] | None = None) -> list[Animation]:
         """Animations recolouring the panel's vertices to this beat's roles (none shown with
-        the source); ``at_rest``: all back to their ink (:meth:`metaphors.board.Board.play`)."""
-        return self._recolour(beat.roles, at_rest) if self.shows_polygon else []
+        the source); ``at_rest``: all back to their ink (:meth:`metaphors.board.Board.play`);
+        ``focus``: the part of P the call runs on, as the board's
+        (:func:`metaphors.labels.new_colour`)."""
+        return self._recolour(beat.roles, at_rest, focus) if self.shows_polygon else []
 
     def follow_text(self, beat: Beat) -> list[Animation]:
         """Animations moving the light to this beat's line and showing its call line (none if
@@ -264,17 +267,16 @@ class Panel:
             anims += self._call_line(beat.call)
         return anims
 
-    def _recolour(self, roles: Mapping[str, str], at_rest: bool = False) -> list[Animation]:
+    def _recolour(self, roles: Mapping[str, str], at_rest: bool = False,
+                  focus: frozenset[str] | None = None) -> list[Animation]:
         anims = []
         wanted = {label: roles.get(label, "idle") for label in self.markers}
         for label, role in wanted.items():
             marker = self.markers[label]
-            if at_rest:
-                if not drawn_in(marker, self.theme.ink):
-                    anims.append(tag(marker, "idle").animate.set_color(self.theme.ink))
-            elif self.roles.get(label, "idle") != role:
-                marker = tag(marker, role)
-                anims.append(marker.animate.set_color(self.theme.role_colour(role)))
+            colour = new_colour(marker, label, role, self.roles.get(label, "idle"), self.theme,
+                                focus, at_rest)
+            if colour is not None:
+                anims.append(tag(marker, "idle" if at_rest else role).animate.set_color(colour))
         self.roles = {label: "idle" for label in self.markers} if at_rest else wanted
         return anims
 

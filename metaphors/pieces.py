@@ -11,6 +11,7 @@ by the frame every run shares (:mod:`metaphors.basics`).
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import replace
 
 from manim import DOWN, RIGHT, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
@@ -246,8 +247,15 @@ def _place(finder: Mobject, taken: Sequence[Rect],
     return (round(float(centres[k][0]), 6), round(float(centres[k][1]), 6))
 
 
+#: what the first question on a smaller polygon says of the colours it brings: the labels
+#: of the vertices not in it turn grey (:func:`metaphors.labels.new_colour`)
+GREY_SAID = "Find an inner diagonal of this polygon: grey vertices are not in it"
+
+
 def find(board: Board, beat: FindDiagonal) -> None:
-    """The piece worked on lights up, and the black box is asked for its inner diagonal."""
+    """The piece worked on lights up, its vertices in their ink and the others grey (said
+    the first time: grey, "not in the current call", drawn and never explained read as a
+    leftover), and the black box is asked for its inner diagonal."""
     theme = board.theme
     finder = board.objects.get("finder")
     anims: list[Playable]
@@ -260,6 +268,11 @@ def find(board: Board, beat: FindDiagonal) -> None:
         anims = [Indicate(finder[1], color=theme.called, scale_factor=1.3)]
     piece = board.objects.get(f"piece:{beat.piece}", board.outline)
     anims.append(piece.animate.set_fill(theme.called, opacity=theme.active_opacity))
+    every = frozenset(board.markers)
+    focus = every if piece is board.outline else frozenset(_labels(piece))
+    if (board.focus is None or board.focus >= every) and not focus >= every:
+        beat = replace(beat, caption=GREY_SAID)
+    board.focus = focus
     board.play(beat, *anims, run_time=1.2)
 
 

@@ -173,7 +173,6 @@ def crossfaded_overlaps(data: dict) -> list[str]:
     return found
 
 
-
 def words_before_pictures(data: dict) -> list[str]:
     """Issue 22: the runs whose first subtitle comes up in a play before the one that writes
     their title and draws their picture (the words a second ahead of what they speak of), as
@@ -1964,6 +1963,8 @@ def labels_under_tools(data: dict) -> list[str]:
                           if line.intersects(rectangle(x0 + 0.005, y0 + 0.005, x1 - 0.005,
                                                        y1 - 0.005))}
     return sorted(found)
+
+
 # --- issue 22: a vertex label is read clear of the lines drawn ------------------------------------
 
 #: the board's drawn segments a vertex label must not meet: its outline's edges, the
@@ -2297,6 +2298,8 @@ def mixed_ending_labels(data: dict) -> list[str]:
     if set(colours) <= {_colour("ink")}:
         return []
     return [f"{colour} {', '.join(sorted(set(labels)))}" for colour, labels in sorted(colours.items())]
+
+
 # --- issue 22: a label reads on whatever it stands over ---------------------------------------
 
 #: the least contrast (WCAG's ratio, 1 to 21) between a vertex label's colour and a fill it
@@ -2558,6 +2561,8 @@ def shifting_vertex_colours(data: dict, legend: dict[str, str], kinds: tuple[str
                 elif colour in kind_colours:
                     shown[label] = kind_colours[colour]
     return list(dict.fromkeys(found))
+
+
 # --- a pseudocode's names read apart from the picture's labels ----------------------------------
 
 #: the pseudocode names of a polygon (not a vertex): a part a row names ("Q = P (good)", "Q =
@@ -2706,6 +2711,8 @@ def shifting_colours(data: dict) -> list[str]:
                   and vertex not in (picked, *claimed)):
                 found.setdefault((vertex, "amber"), f"play {k} {vertex} amber, not picked")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
 # --- the exercises' countdown: one number a second ----------------------------------------------
 
 #: one frame at the lecture's lowest quality (15 fps): how far a number's time may be off 1 s
@@ -2797,6 +2804,8 @@ def claims_given_away(data: dict) -> list[str]:
             shown = []
         shown += [(k, text) for text in _code_rows(play)]
     return found
+
+
 # --- a vertex label stands clear of its polygon's edges -----------------------------------------
 
 #: the least gap between a vertex label and an edge of the polygon it names a vertex of
@@ -3124,3 +3133,141 @@ def labels_struck_by_the_sweep(data: dict) -> list[str]:
                         if gap < LEAST_SWEEP_GAP - 1e-3:
                             least[v] = min(gap, least.get(v, gap))
     return [f"the sweep {gap:.2f} from {v}" for v, gap in sorted(least.items())]
+
+
+# --- over3 item 1: a label with no room outside P stands inside one piece of the fill ------------
+
+#: the fills that cut P into pieces of their own colour: a card's triangles and halves, a run's
+#: pieces and triangles, the whole triangulation (several under one name)
+_CUT_FILLS = ("figure:triangle", "figure:half", "piece:", "triangle:", "triangulation")
+#: the lines drawn over P's fill that divide it: a card's diagonals
+_CUT_LINES = ("figure:inner-diagonal", "figure:diagonal")
+
+
+def _label_texts(name: str, node: dict) -> Iterator[tuple[str, tuple[float, float, float, float]]]:
+    """(text, box) of each label a board's marker or a card's group of markers shows."""
+    if name.startswith("vertex:"):
+        yield from ((name.removeprefix("vertex:"), box) for box in _label_boxes(node, direct=True))
+    else:
+        yield from _marker_labels("figure:vertices", node)
+
+
+def labels_across_fills(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> list[str]:
+    """The vertex labels over a fill that reach within ``margin`` of one of its sides or of a
+    line that divides it (:data:`_CUT_FILLS`, :data:`_CUT_LINES`), as ``"play 3 G on
+    figure:triangle"``: a label inside P, where it has no room outside (M in its notch), reads
+    only inside one piece of one colour, off its sides (chapter 1's triangulation card: G on
+    its triangles' side B–E). Each label and fill once, at the first play that shows it so,
+    as :func:`_shown_after_plays` follows them; a label outside every fill is
+    :func:`labels_on_edges`' to judge."""
+    from shapely.geometry import LineString, Polygon
+    from shapely.geometry import box as area
+
+    found: dict[tuple[str, str], str] = {}
+    owners = ("vertex:", "figure:vertices", *_CUT_FILLS, *_CUT_LINES)
+    for k, shown in _shown_after_plays(data, owners, many=_CUT_FILLS, by_corners=True):
+        fills = [(name.partition("@")[0], Polygon(ring).buffer(0))
+                 for name, node in shown.items() if name.startswith(_CUT_FILLS)
+                 for part in mobject_nodes(node) if (part.get("fill_opacity") or 0) > 0
+                 for ring in _paths(part)]
+        lines = [(name, LineString(s)) for name, node in shown.items()
+                 if name.startswith(_CUT_LINES) for s in _segments(node)]
+        for name, node in shown.items():
+            if not name.startswith(("vertex:", "figure:vertices")):
+                continue
+            for text, box in _label_texts(name, node):
+                label = area(*box)
+                over = [(owner, shape) for owner, shape in fills
+                        if shape.intersection(label).area > 1e-4]
+                near = [owner for owner, shape in over if shape.exterior.distance(label) < margin]
+                if over:
+                    near += [owner for owner, line in lines if line.distance(label) < margin]
+                for owner in near:
+                    found.setdefault((text, owner), f"play {k} {text} on {owner}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- over3 item 2: a vertex turned grey is said to be what grey means, where first seen ----------
+
+
+def unexplained_grey(data: dict) -> list[str]:
+    """The first vertex labels a play turns grey (``idle``: "not in the current call") when
+    no caption up to it has said what grey means (a caption with "grey" in it), as ``"play
+    33 A grey, unsaid"``: chapter 1's divide and conquer left the ends of each diagonal grey
+    after the split, then greyed the vertices not in the smaller polygon, and never said
+    why. The board's and the panel's markers; one finding, the first."""
+    grey, said = _colour("idle"), False
+    for k, play in enumerate(data["plays"]):
+        said = said or "grey" in (play.get("subcaption") or "").lower()
+        for kind, node in _recorded_all(play):
+            name = node.get("name") or ""
+            if (kind != "_MethodAnimation" or not name.startswith(("vertex:", "panel:"))
+                    or (node.get("fill") or "").upper() != grey):
+                continue
+            return [] if said else [f"play {k} {name.partition(':')[2]} grey, unsaid"]
+    return []
+
+
+def _recorded_all(play: dict) -> Iterator[tuple[str, dict]]:
+    """(the animation's type, target) of every animation of a play that has a target, its
+    members' too."""
+    def walk(anim: dict) -> Iterator[tuple[str, dict]]:
+        if "target" in anim:
+            yield anim["type"], anim["target"]
+        for child in anim.get("animations", ()):
+            yield from walk(child)
+
+    for anim in play["animations"]:
+        yield from walk(anim)
+
+
+# --- over3 items 3 and 4: the band bends under its words; no label touches the ball --------------
+
+
+def early_snags(data: dict) -> list[str]:
+    """The plays that draw gravity's band with a corner at a vertex (three corners or more)
+    while the caption up does not say it snags, as ``"play 26 band bent under 'It slides
+    down the edge to G'"``: chapter 3's band bent at H 1.2 s before "The rubber band snags
+    H" was said. A band going (faded out) is not drawn anew."""
+    found, caption = [], ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        if "snag" in caption:
+            continue
+        for kind, node in _recorded_all_nodes(play):
+            if kind not in OUTGOING and node.get("name") == "band" and len(_segments(node)) >= 2:
+                found.append(f"play {k} band bent under {caption!r}")
+                break
+    return found
+
+
+def _recorded_all_nodes(play: dict) -> Iterator[tuple[str, dict]]:
+    """(the animation's type, node) of every mobject and target of a play's animations."""
+    for anim in play["animations"]:
+        yield from _recorded(anim)
+
+
+#: the least gap between a vertex label and gravity's ball (its stroke's width, about)
+LEAST_BALL_GAP = 0.03
+
+
+def labels_on_the_ball(data: dict, margin: float = LEAST_BALL_GAP) -> list[str]:
+    """The vertex labels nearer than ``margin`` to gravity's ball where a play leaves it, as
+    ``"play 70 C 0.00 from the ball"`` (each label once): the counterexample's C touched
+    the ball at rest on C. The ball's box is its points'; the labels and the ball as
+    :func:`_shown_after_plays` follows them."""
+    from shapely.geometry import box as area
+
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:", "ball")):
+        ball = shown.get("ball")
+        if not ball or not ball.get("points"):
+            continue
+        xs, ys = [p[0] for p in ball["points"]], [p[1] for p in ball["points"]]
+        disk = area(min(xs), min(ys), max(xs), max(ys))
+        for name, marker in shown.items():
+            for box in _label_boxes(marker, direct=True) if name.startswith("vertex:") else ():
+                gap = disk.distance(area(*box))
+                if gap < margin and name not in found:
+                    found[name] = f"play {k} {name.removeprefix('vertex:')} {gap:.2f} from the ball"
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))

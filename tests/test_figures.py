@@ -13,6 +13,7 @@ from geometry.polygon import Polygon
 from geometry.predicates import orient
 from metaphors.drawing import Frame
 from metaphors.figures import BOX, KINDS, Figure, ear_tests, figure_mobjects
+from metaphors.tags import tag
 from usercode.heuristic import run_heuristic
 
 
@@ -902,3 +903,37 @@ def test_labels_on_edges_finds_the_old_fixed_step_labels_on_the_lecture_polygon(
     old = labels_on_edges(shown(vertex_markers(p, frame)))
     assert any(f.startswith("play 0 K 0.0") for f in old), old
     assert labels_on_edges(shown(placed_vertex_markers(p, frame))) == []
+
+
+@pytest.mark.parametrize("kind", ["triangulation", "diagonal"])
+def test_a_card_s_labels_stand_inside_one_piece_of_its_fill(kind):
+    """Over3 item 1: a label with no room outside P (M in its notch, G in its) stands inside
+    one piece of the figure's fill, off the lines that cut it. The rule can fail: the same
+    figure with its labels placed as before, clear of P's edges only, had G on the
+    triangulation's side B–E, M by the diagonal BM and G on the diagonal DG's half."""
+    from manim import DL, UR
+    from shapely.geometry import Point, box
+
+    from metaphors.labels import placed_vertex_markers
+    from tests.reading_rules import labels_across_fills
+    from trex.scene_graph import mobject_graph
+
+    drawn = figure_mobjects(Figure(kind), "lecture")
+
+    def shown(parts):
+        return {"plays": [{"animations": [{"type": "FadeIn", "mobject": mobject_graph(m)}
+                                          for m in parts]}]}
+
+    p = read_polygon("lecture")
+    old = tag(placed_vertex_markers(p, Frame(p.points, *BOX)), "idle", "figure:vertices")
+    before = [old if m.name == "figure:vertices" else m for m in drawn]
+    assert any(" G on " in f for f in labels_across_fills(shown(before))), kind
+    assert labels_across_fills(shown(drawn)) == [], kind
+    # and each label nearer its own dot than any other (ear clipping's fan left G no place
+    # inside one triangle, and its label went by H)
+    markers = next(m for m in drawn if m.name == "figure:vertices")
+    dots = [Point(*marker[0].get_center()[:2]) for marker in markers]
+    for k, marker in enumerate(markers):
+        label = box(*marker[1].get_corner(DL)[:2], *marker[1].get_corner(UR)[:2])
+        gaps = [label.distance(dot) for dot in dots]
+        assert gaps[k] < min(g for j, g in enumerate(gaps) if j != k), (kind, p.labels[k])

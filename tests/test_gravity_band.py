@@ -1,9 +1,10 @@
 """The rubber band is always inside P (review r34 item 1): sampled through the slide from the
-pieces :func:`story.analysis.wraps` gives (the pieces :func:`metaphors.gravity.slide` plays,
-one play each, the ball moving linearly; :func:`story.analysis.band_at` is the band at a time
-of them, not read from the scene), its segments never leave the polygon. The old
-drawing, the band straight from V to the ball until the snag beat bent it, crossed edge A–H
-of the lecture's polygon and lay outside P for two seconds."""
+pieces :func:`story.analysis.wraps` gives, as :func:`story.analysis.band_at` has it at each
+time, its segments never leave the polygon. :func:`metaphors.gravity.slide` draws the band
+in every frame from these two (one play per piece, the ball moving linearly), so what is
+sampled here is what is drawn. The old drawing, the band straight from V to the ball until
+the snag beat bent it, crossed edge A–H of the lecture's polygon and lay outside P for two
+seconds."""
 
 import pytest
 import shapely

@@ -91,3 +91,18 @@ def test_candidates_pulsed_in_the_claims_amber_are_found():
     assert shifting_colours({"plays": plays(THEME.argument)}) == [
         "play 0 D amber, not picked", "play 0 E amber, not picked"]
     assert shifting_colours({"plays": plays(THEME.candidate)}) == []
+
+
+def test_a_vertex_turned_grey_unsaid_is_found_and_said_passes():
+    """Over3 item 2: chapter 1's split left the diagonal's ends grey, never explained."""
+    from tests.reading_rules import unexplained_grey
+
+    def greyed(caption: str) -> dict:
+        target = {"name": "vertex:D", "fill": "#8A93A3"}
+        return _said(caption, {"type": "_MethodAnimation",
+                               "mobject": {"name": "vertex:D"}, "target": target})
+
+    split = "Split along the diagonal into two smaller polygons"
+    assert unexplained_grey({"plays": [greyed(split)]}) == ["play 0 D grey, unsaid"]
+    said = "Find an inner diagonal of this polygon: grey vertices are not in it"
+    assert unexplained_grey({"plays": [_said(said), greyed(split)]}) == []
