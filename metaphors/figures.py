@@ -203,7 +203,11 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
     kinds = [*_vertex_word(polygon, frame, theme, t.b.index, "convex"),
              *next((w for v in _reflex(polygon)
                     if (w := _vertex_word(polygon, frame, theme, v, "reflex"))), [])]
-    return [shaded, *dots, *kinds, figure_caption(BOX, theme, (words, theme.ink))]
+    # T with the line that names it, the candidates with the one that speaks of them (on a
+    # card that says neither, with its title)
+    caption = figure_caption(BOX, theme, (words, theme.ink))
+    return [comes_with(shaded, "T"), *(comes_with(d, "candidate") for d in dots), *kinds,
+            comes_with(caption, "candidate")]
 
 
 def ringed_reflex(polygon_spec: str, theme: Theme = THEME) -> str | None:
