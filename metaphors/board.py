@@ -84,6 +84,7 @@ class Board:
         # upright beside it, not where it was placed
         pairs = [(self.polygon.labels.index(u), self.polygon.labels.index(v))
                  for u, v in claims if u in self.polygon.labels and v in self.polygon.labels]
+        self.claim_pairs = pairs  # placed again clear of them when the picture turns
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}").set_z_index(LABEL_Z)
             for label, m in measured_markers(self.polygon, self.holes, self.frame, theme, pairs)
@@ -119,6 +120,9 @@ class Board:
         # sliced-off ear tips), by label: out of :attr:`markers`, so that no recolouring,
         # label move or turn brings them back on screen before the metaphor does
         self.off: dict[str, Mobject] = {}
+        # where each label stood beside its dot, upright, before the picture turned: it comes
+        # back there when the picture turns upright (:func:`metaphors.picture.turn_to`)
+        self.home: dict[str, np.ndarray] = {}
 
     # --- coordinates -----------------------------------------------------------------------------
 
@@ -285,11 +289,11 @@ class Board:
         rings = [[label for label in ring if label in self.markers]
                  for ring in (self.polygon.labels, *(h.labels for h in self.holes))]
         drawn = [edge for ring in self.outline_rings() for edge in ring_edges(ring)]
-        drawn += [edge for m in self.objects.values() if m not in lines for edge in _edges(m)]
+        drawn += [edge for m in self.objects.values() if m not in lines for edge in edges_of(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
         moves: list[Playable] = []
         for label, centre in crossed_labels(rings, markers, drawn,
-                                            [edge for line in lines for edge in _edges(line)],
+                                            [edge for line in lines for edge in edges_of(line)],
                                             self.theme.dot_radius, apart).items():
             moved = self.markers[label].copy()
             if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
@@ -323,12 +327,12 @@ class Board:
         return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
 
 
-def _edges(mobject: Mobject) -> list[Segment]:
+def edges_of(mobject: Mobject) -> list[Segment]:
     """The straight lines a drawn line or polygon (a triangle, a group of them) shows."""
     if isinstance(mobject, Line):
         return [(mobject.get_start(), mobject.get_end())]
     if isinstance(mobject, MPolygon):
         return ring_edges(list(mobject.get_vertices()))
     if isinstance(mobject, VGroup):
-        return [edge for part in mobject.submobjects for edge in _edges(part)]
+        return [edge for part in mobject.submobjects for edge in edges_of(part)]
     return []
