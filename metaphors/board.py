@@ -70,7 +70,8 @@ class Board:
 
     def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
                  theme: Theme = THEME, box: Box = METAPHOR, holes=(), *,
-                 captions: CaptionTrack, claims: Sequence[tuple[str, str]] = ()):
+                 captions: CaptionTrack, claims: Sequence[tuple[str, str]] = (),
+                 cuts: Sequence[Sequence[Sequence[float]]] = ()):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
@@ -85,9 +86,14 @@ class Board:
         pairs = [(self.polygon.labels.index(u), self.polygon.labels.index(v))
                  for u, v in claims if u in self.polygon.labels and v in self.polygon.labels]
         self.claim_pairs = pairs  # placed again clear of them when the picture turns
+        # and of the lines the run will cut (``cuts``, two points each: a keyhole's), so that
+        # no cut moves a label: moved by each keyhole as it was cut, c₂ stood in three places
+        # in two steps, and c₁ and d₂ jumped with it
+        lines = [(self.frame.to_scene(a), self.frame.to_scene(b)) for a, b in cuts]
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}").set_z_index(LABEL_Z)
-            for label, m in measured_markers(self.polygon, self.holes, self.frame, theme, pairs)
+            for label, m in measured_markers(self.polygon, self.holes, self.frame, theme, pairs,
+                                             lines)
         }
         self.where: dict[str, tuple[float, ...]] = {
             label: p for label, p in zip(labels, self.polygon.points, strict=True)}

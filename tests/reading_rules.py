@@ -2924,3 +2924,33 @@ def _shown_roles(anim: dict) -> Iterator[tuple[str | None, dict]]:
     for pulse in pulses:
         if "color" in pulse and "mobject" in pulse:
             yield roles.get(str(pulse["color"]).upper()), pulse["mobject"]
+
+
+# --- a keyhole's cut moves no label ---------------------------------------------------------------
+
+
+def labels_moved_by_cuts(data: dict) -> list[str]:
+    """The vertex labels that move in a play a keyhole's cut comes in (``keyhole:N``), their
+    dot where it stood, as ``"play 217 keyhole:1 moves c₁"``: a label stays put unless its
+    vertex moves, and the cuts a run will make are known before its first picture (the
+    labels are placed clear of them). Moved aside by each cut as it came, chapter 4's c₁, c₂
+    and d₂ jumped between the two keyhole steps. The markers are as
+    :func:`_shown_after_plays` follows them."""
+    found = []
+    before: dict[str, dict] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:",)):
+        cuts = [name for anim in data["plays"][k]["animations"] for kind, _, name in _ends(anim)
+                if kind in INCOMING and name.startswith("keyhole:")]
+        for name, marker in shown.items() if cuts else ():
+            old = before.get(name)
+            if old is None or _dot_centre(old) != _dot_centre(marker):
+                continue
+            if _rounded_boxes(old) != _rounded_boxes(marker):
+                found.append(f"play {k} {cuts[0]} moves {name.removeprefix('vertex:')}")
+        before = dict(shown)
+    return found
+
+
+def _rounded_boxes(marker: dict) -> list[tuple[float, ...]]:
+    """A marker's label boxes (:func:`_label_boxes`) to the thousandth."""
+    return [tuple(round(v, 3) for v in box) for box in _label_boxes(marker, direct=True)]

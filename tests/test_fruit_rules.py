@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from tests.reading_rules import (
     flickering_counts,
+    labels_moved_by_cuts,
     labels_without_contrast,
     leftover_verdicts,
     placeholders_as_labels,
@@ -218,3 +219,21 @@ def test_a_marker_left_by_its_sliced_off_vertex_is_found():
     # a turn of the picture leaves the places unknown: not judged until drawn again
     turned = _graph(start, [{"type": "Turn", "mobject": P}], [_marker("Indicate", "C", (9, 9))])
     assert stray_vertex_markers(turned) == []
+
+
+def _c1(kind: str, box: list[float]) -> dict:
+    return {"type": kind, "mobject": {"name": "vertex:c₁", "type": "VGroup", "submobjects": [
+        {"type": "Dot", "points": [[1.0, 1.0, 0.0]]}, {"type": "FlatText", "text": "c₁", "box": box}]}}
+
+
+def test_a_label_a_keyhole_cut_moves_is_found():
+    """Chapter 4: the second keyhole's cut moved c₁ (its dot where it stood) aside."""
+    start = [{"type": "Create", "mobject": P}, _c1("FadeIn", [1.1, 1.1, 1.4, 1.3])]
+    cut = {"type": "FadeIn", "mobject": {"name": "keyhole:1", "points": _closed((1, 1), (4, 2))}}
+    moved = _graph(start, [cut, _c1("Transform", [1.1, 0.6, 1.4, 0.8])])
+    assert labels_moved_by_cuts(moved) == ["play 1 keyhole:1 moves c₁"]
+    # placed clear of the cut from the start: it stays
+    assert labels_moved_by_cuts(_graph(start, [cut])) == []
+    # moved aside by a later line (a knife), not a cut
+    knife = {"type": "Create", "mobject": {"name": "knife", "points": _closed((1, 1), (4, 2))}}
+    assert labels_moved_by_cuts(_graph(start, [knife, _c1("Transform", [1.1, 0.6, 1.4, 0.8])])) == []

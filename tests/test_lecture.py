@@ -47,6 +47,7 @@ from tests.reading_rules import (
     flickering_counts,
     hidden_failures,
     jumping_stacks,
+    labels_moved_by_cuts,
     labels_on_claims,
     labels_on_edges,
     labels_under_faces,
@@ -599,6 +600,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_under_test_triangles(data) == [], chapter.slug
     # and every label reads on the fill it stands over (a grey M on the fruit's orange)
     assert labels_without_contrast(data) == [], chapter.slug
+    # and no keyhole's cut moves a label (c₁, c₂ and d₂ jumped at the second keyhole)
+    assert labels_moved_by_cuts(data) == [], chapter.slug
     # and the pseudocode names no polygon with a label of the picture (chapter 4's
     # good part "G", G the vertex tested)
     assert placeholders_as_labels(data) == [], chapter.slug
