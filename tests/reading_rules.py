@@ -2954,3 +2954,29 @@ def labels_moved_by_cuts(data: dict) -> list[str]:
 def _rounded_boxes(marker: dict) -> list[tuple[float, ...]]:
     """A marker's label boxes (:func:`_label_boxes`) to the thousandth."""
     return [tuple(round(v, 3) for v in box) for box in _label_boxes(marker, direct=True)]
+
+
+# --- a keyhole's cut reads on the fruit ------------------------------------------------------------
+
+
+def faint_cuts(data: dict) -> list[str]:
+    """The keyhole cuts (``keyhole:N``) drawn in a colour under :data:`LEAST_CONTRAST` against
+    the fill they cross (ear clipping's fruit, as the screen shows it), as ``"play 213
+    keyhole:2 on polygon 1.1 : 1"``: chapter 4's cuts, in the rind's olive on the orange
+    fruit (1.1 : 1), all but vanished, and the slicing that goes round them had nothing to go
+    round. Each cut once, where it first fails."""
+    from shapely.geometry import LineString
+
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, (_KEYHOLE, *_FILLED)):
+        fills = _fills(shown)
+        for name, node in shown.items():
+            colour = _one_colour(node.get("stroke"))
+            if not name.startswith(_KEYHOLE) or colour is None or name in found:
+                continue
+            cut = [LineString(s) for s in _segments(node)]
+            for owner, shape, _, under in fills:
+                ratio = contrast(colour, under)
+                if any(shape.intersects(line) for line in cut) and ratio < LEAST_CONTRAST:
+                    found[name] = f"play {k} {name} on {owner} {ratio:.1f} : 1"
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))

@@ -6,6 +6,7 @@ on the board with its slices on the plate and the fruit gone) and on the same gr
 from __future__ import annotations
 
 from tests.reading_rules import (
+    faint_cuts,
     flickering_counts,
     labels_moved_by_cuts,
     labels_without_contrast,
@@ -127,6 +128,20 @@ def test_a_keyhole_cut_over_no_fruit_is_found():
     assert stale_good_parts(left) == ["play 1: keyhole:1 over no fruit"]
     gone = _graph(start, [_fruit("FadeOut", (0, 0), (4, 0), (4, 4)), _cut("FadeOut")])
     assert stale_good_parts(gone) == []
+
+
+def test_a_keyhole_cut_faint_on_the_fruit_is_found():
+    """Chapter 4's cuts, the rind's olive on the orange fruit (1.1 : 1), all but vanished."""
+    from metaphors.theme import THEME
+
+    fruit = {"type": "Create", "mobject": {**P, "fill": THEME.fruit, "fill_opacity": 0.75}}
+
+    def cut(colour: str) -> dict:
+        return {"type": "FadeIn", "mobject": {"name": "keyhole:1", "stroke": colour,
+                                              "points": _closed((1, 1), (2, 2))[:4]}}
+
+    assert faint_cuts(_graph([fruit], [cut(THEME.rind)])) == ["play 1 keyhole:1 on polygon 1.1 : 1"]
+    assert faint_cuts(_graph([fruit], [cut(THEME.background)])) == []
 
 
 def _label(kind: str) -> dict:

@@ -41,6 +41,7 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     crowded_vertex_labels,
+    faint_cuts,
     far_verdicts,
     fills_over_labels,
     fleeting_kind_words,
@@ -602,6 +603,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_without_contrast(data) == [], chapter.slug
     # and no keyhole's cut moves a label (c₁, c₂ and d₂ jumped at the second keyhole)
     assert labels_moved_by_cuts(data) == [], chapter.slug
+    # and every keyhole cut reads on the fruit (the rind's olive on its orange: 1.1 : 1)
+    assert faint_cuts(data) == [], chapter.slug
     # and the pseudocode names no polygon with a label of the picture (chapter 4's
     # good part "G", G the vertex tested)
     assert placeholders_as_labels(data) == [], chapter.slug
