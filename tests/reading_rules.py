@@ -2980,3 +2980,24 @@ def faint_cuts(data: dict) -> list[str]:
                 if any(shape.intersects(line) for line in cut) and ratio < LEAST_CONTRAST:
                     found[name] = f"play {k} {name} on {owner} {ratio:.1f} : 1"
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- a plot's numbers are said ---------------------------------------------------------------------
+
+#: a card's plot: its axes, and the names that say what their numbers are
+_AXES, _AXIS_NAMES = "figure:axis", ("figure:x-name", "figure:y-name")
+
+
+def unnamed_axes(data: dict) -> list[str]:
+    """The plays that leave a card's plot (:data:`_AXES`) on screen without both its axes
+    named (:data:`_AXIS_NAMES`), as ``"play 190 figure:y-name missing"``: chapter 4's "How
+    fast" showed 10, 60 and 235 and never said that they were vertices and ear tests. Each
+    name once, where it is first missed."""
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, (_AXES, *_AXIS_NAMES)):
+        if _AXES not in shown:
+            continue
+        for name in _AXIS_NAMES:
+            if name not in shown:
+                found.setdefault(name, f"play {k} {name} missing")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))

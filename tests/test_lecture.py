@@ -80,6 +80,7 @@ from tests.reading_rules import (
     tails_beside_labels,
     ticks_outside,
     uneven_countdowns,
+    unnamed_axes,
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
@@ -605,6 +606,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_moved_by_cuts(data) == [], chapter.slug
     # and every keyhole cut reads on the fruit (the rind's olive on its orange: 1.1 : 1)
     assert faint_cuts(data) == [], chapter.slug
+    # a card's plot says what its numbers are: both axes named (chapter 4's "How fast")
+    assert unnamed_axes(data) == [], chapter.slug
     # and the pseudocode names no polygon with a label of the picture (chapter 4's
     # good part "G", G the vertex tested)
     assert placeholders_as_labels(data) == [], chapter.slug
