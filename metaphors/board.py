@@ -298,9 +298,12 @@ class Board:
         drawn += [edge for m in self.objects.values() if m not in lines for edge in edges_of(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
         moves: list[Playable] = []
+        outline = [[p[:2] for p in ring] for ring in self.outline_rings()]
+        # (made valid: a keyhole's ring runs both ways along its cut)
+        fill = shapely.make_valid(shapely.Polygon(outline[0], outline[1:])) if outline else None
         for label, centre in crossed_labels(rings, markers, drawn,
                                             [edge for line in lines for edge in edges_of(line)],
-                                            self.theme.dot_radius, apart).items():
+                                            self.theme.dot_radius, apart, fill).items():
             moved = self.markers[label].copy()
             if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
                 self.moved_for_now.setdefault(

@@ -32,9 +32,9 @@ from manim import (
 
 from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
-from metaphors.board import Board, Playable
+from metaphors.board import Board, Playable, edges_of
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
-from metaphors.labels import MARGIN
+from metaphors.labels import MARGIN, off_the_fill
 from metaphors.layout import Obstacles, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
@@ -304,6 +304,7 @@ def clip(board: Board, beat: Slice) -> None:
     if data.rest:
         anims.append(Transform(board.outline, _fruit(board, data.rest)))
         anims += _sliced_off(board, data.rest, target.get_center())
+        anims += _labels_off_fruit(board, data.rest)
     else:  # the last slice: the keyhole cuts go (no fruit is left round them); the fruit's
         # last triangle stays while its caption is read, until the whole triangulation
         anims += board.drop(*[key for key in board.objects if key.startswith("keyhole:")])
@@ -327,6 +328,26 @@ def _sliced_off(board: Board, rest: Sequence[Point], plate: np.ndarray) -> list[
         board.off[label] = board.markers.pop(label)
         board.roles.pop(label, None)
     return [FadeOut(board.off[label], target_position=plate, scale=0.5) for label in gone]
+
+
+def _labels_off_fruit(board: Board, rest: Sequence[Point]) -> list[Playable]:
+    """The moves, with a slice, of the labels left over the fruit (``rest``: what is left of
+    it) that find room outside it now (:func:`metaphors.labels.off_the_fill`), clear of the
+    lines on the picture (the keyhole cuts, the good part's edge): a hole's label stood on
+    the orange, on its dark halo, while the hole had no room for it, and stayed there once
+    the slices round its vertex had left the dark all round it (chapter 4's a₂ and b₂)."""
+    labels = {name: (m[0].get_center(), tuple(rects_at(m[1].get_center()[:2],
+                                                        (m[1].width, m[1].height))[0]))
+              for name, m in board.markers.items() if isinstance(m, VGroup) and len(m) > 1}
+    lines = [edge for m in board.objects.values() if m is not board.outline
+             for edge in edges_of(m)]
+    moves: list[Playable] = []
+    for name, centre in off_the_fill([board.at(p) for p in rest], labels, lines,
+                                     board.theme.dot_radius).items():
+        moved = board.markers[name].copy()
+        moved[1].move_to((centre[0], centre[1], 0.0))
+        moves.append(Transform(board.markers[name], moved))
+    return moves
 
 
 def _markers_back(board: Board) -> list[Mobject]:

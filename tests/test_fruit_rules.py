@@ -9,6 +9,7 @@ from tests.reading_rules import (
     faint_cuts,
     flickering_counts,
     labels_moved_by_cuts,
+    labels_on_the_fruit_with_room,
     labels_without_contrast,
     leftover_verdicts,
     placeholders_as_labels,
@@ -252,3 +253,23 @@ def test_a_label_a_keyhole_cut_moves_is_found():
     # moved aside by a later line (a knife), not a cut
     knife = {"type": "Create", "mobject": {"name": "knife", "points": _closed((1, 1), (4, 2))}}
     assert labels_moved_by_cuts(_graph(start, [knife, _c1("Transform", [1.1, 0.6, 1.4, 0.8])])) == []
+
+
+def test_a_label_on_the_fruit_with_room_off_it_is_found():
+    """Chapter 4's a₂ stayed on the orange once the slices had cut the fruit away round it."""
+    from metaphors.theme import THEME
+
+    def fruit(*corners: tuple[float, float]) -> dict:
+        return {"type": "Create", "mobject": {"name": "polygon", "fill": THEME.fruit,
+                                              "fill_opacity": 0.75, "points": _closed(*corners)}}
+
+    # a₂'s vertex (1, 1) on the fruit's corner, its label just inside the fruit
+    label = _c1("FadeIn", [1.1, 1.1, 1.4, 1.3])
+    sliced = _graph([fruit((1, 1), (4, 1), (4, 4), (1, 4)), label])
+    assert labels_on_the_fruit_with_room(sliced) == ["play 0 c₁ on the fruit, room off it"]
+    # off the fruit, below its corner: nothing to find
+    below = _graph([fruit((1, 1), (4, 1), (4, 4), (1, 4)), _c1("FadeIn", [0.6, 0.6, 0.9, 0.8])])
+    assert labels_on_the_fruit_with_room(below) == []
+    # a hole's vertex in a fruit all round it, the hole too small: no room off it
+    whole = _graph([fruit((-3, -3), (5, -3), (5, 5), (-3, 5)), label])
+    assert labels_on_the_fruit_with_room(whole) == []

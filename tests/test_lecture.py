@@ -51,6 +51,7 @@ from tests.reading_rules import (
     labels_moved_by_cuts,
     labels_on_claims,
     labels_on_edges,
+    labels_on_the_fruit_with_room,
     labels_under_faces,
     labels_under_test_triangles,
     labels_under_the_fall,
@@ -501,6 +502,14 @@ def _chapters():
 
 
 
+#: A defect known and not yet mended, so that the rule keeps watching every other label: in
+#: chapter 4's prune and search, H, moved off G's red test triangle onto the fruit (no place
+#: off both), stays there for the gravity turn's words (about 1 s) after the triangle goes,
+#: until the turn places it again (to mend: labels moved off a test triangle go back when it
+#: goes).
+KNOWN_LABELS_ON_THE_FRUIT = {"ears": ["play 95 H on the fruit, room off it"]}
+
+
 @pytest.mark.parametrize("chapter", _chapters())
 def test_every_chapter_builds_with_its_captions(chapter):
     """Each chapter plays through in dry run (every segment's code runs, no video): a chapter
@@ -606,6 +615,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert labels_moved_by_cuts(data) == [], chapter.slug
     # and every keyhole cut reads on the fruit (the rind's olive on its orange: 1.1 : 1)
     assert faint_cuts(data) == [], chapter.slug
+    # a label over ear clipping's fruit only where it has no room off it (a₂, b₂, c₂ stayed
+    # on the orange once the slices had cut the fruit away round them)
+    assert labels_on_the_fruit_with_room(data) == KNOWN_LABELS_ON_THE_FRUIT.get(chapter.slug, []), \
+        chapter.slug
     # a card's plot says what its numbers are: both axes named (chapter 4's "How fast")
     assert unnamed_axes(data) == [], chapter.slug
     # and the pseudocode names no polygon with a label of the picture (chapter 4's
