@@ -106,9 +106,7 @@ def best_place(centres: np.ndarray, size: tuple[float, float], obstacles: Obstac
     """The index of the place to take among ``centres`` (in order of preference): the first
     ``margin`` clear of ``obstacles`` (and ``own``: nearer its own dot) whose box is not
     ``inside`` (the polygon's region: a label outside reads on the background, not over a
-    fill), else the first clear one, else the one with the widest gap of those ``own``
-    allows (a place across an edge names what lies beyond it: on the fruit turned for
-    prune and search's HA, the notch's M stood over edge K–H), else of all."""
+    fill), else the first clear one, else the one with the widest gap."""
     rects = rects_at(centres, size)
     gaps = obstacles.gaps(rects)
     left, bottom, right, top = FRAME_AREA
@@ -120,11 +118,7 @@ def best_place(centres: np.ndarray, size: tuple[float, float], obstacles: Obstac
         outside = ok & ~shapely.intersects(shapely.box(*rects.T), inside)
         if outside.any():
             return int(np.argmax(outside))
-    if ok.any():
-        return int(np.argmax(ok))
-    if own is not None and own.any():
-        return int(np.argmax(np.where(own, gaps, -np.inf)))
-    return int(np.argmax(gaps))
+    return int(np.argmax(ok)) if ok.any() else int(np.argmax(gaps))
 
 
 def place_labels(corners: Sequence[np.ndarray], sizes: Sequence[tuple[float, float]],
@@ -293,9 +287,16 @@ def off_the_fill(ring: Sequence[np.ndarray], labels: Mapping[str, tuple[np.ndarr
     return moved
 
 
+def seen_from(at: np.ndarray, centre: np.ndarray, edges: Sequence[Segment]) -> bool:
+    """Whether a label centred at ``centre`` is seen from its vertex ``at`` across none of
+    ``edges`` (:func:`_seen`)."""
+    return bool(_seen(np.asarray([centre[:2]], dtype=float), np.asarray(at, dtype=float)[:2],
+                      edges)[0])
+
+
 __all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "measured_markers",
            "off_the_fill", "outward", "place_labels", "place_ring_labels",
-           "placed_vertex_markers", "places_round"]
+           "placed_vertex_markers", "places_round", "seen_from"]
 
 
 def drawn_in(marker: Mobject, colour: str) -> bool:

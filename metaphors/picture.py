@@ -15,7 +15,7 @@ from manim import Circle, Mobject, VGroup
 
 from metaphors.board import Board, Playable, edges_of
 from metaphors.drawing import Frame
-from metaphors.labels import place_ring_labels
+from metaphors.labels import place_ring_labels, seen_from
 from metaphors.layout import ring_edges
 from metaphors.marks import board_spot
 from rendering.turn import Turn
@@ -117,7 +117,12 @@ def _label_places(board: Board, new: Frame,
                                  for ring in rings for name in ring],
                                 segments, board.theme.dot_radius)
     names = [name for ring in rings for name in ring]
-    return {name: np.array([c[0], c[1], 0.0]) for name, c in zip(names, centres, strict=True)}
+    edges = [edge for ring in rings for edge in
+             ring_edges([new.to_scene(board.where[name]) for name in ring])]
+    # a label with no place its dot sees (across an edge, it names what lies beyond: the
+    # turned fruit's notch M stood over edge K–H) turns with the picture, as it stood
+    return {name: np.array([c[0], c[1], 0.0]) for name, c in zip(names, centres, strict=True)
+            if seen_from(new.to_scene(board.where[name]), c, edges)}
 
 
 def _upright(frame: Frame) -> bool:
