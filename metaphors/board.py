@@ -74,7 +74,8 @@ class Board:
 
     def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
                  theme: Theme = THEME, box: Box = METAPHOR, holes=(), *,
-                 captions: CaptionTrack, claims: Sequence[tuple[str, str]] = ()):
+                 captions: CaptionTrack, claims: Sequence[tuple[str, str]] = (),
+                 cuts: Sequence[Sequence[Sequence[float]]] = ()):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
@@ -88,9 +89,15 @@ class Board:
         # upright beside it, not where it was placed
         pairs = [(self.polygon.labels.index(u), self.polygon.labels.index(v))
                  for u, v in claims if u in self.polygon.labels and v in self.polygon.labels]
+        self.claim_pairs = pairs  # placed again clear of them when the picture turns
+        # and of the lines the run will cut (``cuts``, two points each: a keyhole's), so that
+        # no cut moves a label: moved by each keyhole as it was cut, c₂ stood in three places
+        # in two steps, and c₁ and d₂ jumped with it
+        lines = [(self.frame.to_scene(a), self.frame.to_scene(b)) for a, b in cuts]
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}").set_z_index(LABEL_Z)
-            for label, m in measured_markers(self.polygon, self.holes, self.frame, theme, pairs)
+            for label, m in measured_markers(self.polygon, self.holes, self.frame, theme, pairs,
+                                             lines)
         }
         self.where: dict[str, tuple[float, ...]] = {
             label: p for label, p in zip(labels, self.polygon.points, strict=True)}
@@ -127,6 +134,9 @@ class Board:
         # sliced-off ear tips), by label: out of :attr:`markers`, so that no recolouring,
         # label move or turn brings them back on screen before the metaphor does
         self.off: dict[str, Mobject] = {}
+        # where each label stood beside its dot, upright, before the picture turned: it comes
+        # back there when the picture turns upright (:func:`metaphors.picture.turn_to`)
+        self.home: dict[str, np.ndarray] = {}
 
     # --- coordinates -----------------------------------------------------------------------------
 
@@ -302,9 +312,12 @@ class Board:
                   for edge in drawn_edges(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
         moves: list[Playable] = []
+        outline = [[p[:2] for p in ring] for ring in self.outline_rings()]
+        # (made valid: a keyhole's ring runs both ways along its cut)
+        fill = shapely.make_valid(shapely.Polygon(outline[0], outline[1:])) if outline else None
         for label, centre in crossed_labels(rings, markers, drawn,
                                             [edge for line in lines for edge in drawn_edges(line)],
-                                            self.theme.dot_radius, apart).items():
+                                            self.theme.dot_radius, apart, fill).items():
             moved = self.markers[label].copy()
             if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
                 self.moved_for_now.setdefault(

@@ -43,7 +43,7 @@ from metaphors import figure_faster, method_figures
 from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_metaphors import metaphor_parts
-from metaphors.figure_plots import Area, Series, line_plot
+from metaphors.figure_plots import Area, Series, axis_names, line_plot
 from metaphors.figure_steps import comes_with
 from metaphors.labels import drawn_edges, measured_markers, placed_vertex_markers
 from metaphors.tags import tag
@@ -58,6 +58,7 @@ KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims"
          *method_figures.KINDS, *figure_faster.KINDS)
 #: the growth plot: each algorithm's ear tests, counted in its log, on random polygons
 GROWTH_SIZES = (10, 20, 30, 40, 50, 60)
+GROWTH_SEEDS = (1, 2, 3)
 GROWTH_RUNS = (("ear-clipping-naive", "naive"), ("ear-clipping", "ear status kept"),
                ("prune-and-search", "prune and search"))
 
@@ -421,26 +422,36 @@ def _two_ears(polygon: Polygon, ears: list[int]) -> tuple[int, ...]:
 @functools.cache  # the same runs for every build of the chapter in one process
 def ear_tests(algorithm: str, n: int) -> int:
     """How many vertices ``algorithm`` tests for an ear on random polygons of ``n``
-    vertices (``random-2opt:n:SEED``, seeds 1 to 3), counted in their logs, on average."""
-    runs = [run_logged(algorithm, f"random-2opt:{n}:{seed}") for seed in (1, 2, 3)]
+    vertices (``random-2opt:n:SEED``, :data:`GROWTH_SEEDS`), counted in their logs, on
+    average."""
+    runs = [run_logged(algorithm, f"random-2opt:{n}:{seed}") for seed in GROWTH_SEEDS]
     return round(sum(len(log.find(kind="call", name="is_ear")) for log in runs) / len(runs))
 
 
+#: what the growth plot's y axis counts, in the taught words (the runs' captions ask "Is A an
+#: ear?"), and what the legend's numbers are: unsaid, "235" and "10" read as the same thing
+EAR_TESTS = f"ear tests (is V an ear?)\neach a mean of {len(GROWTH_SEEDS)} random polygons"
+GROWTH_WORDS = f"The number by each name: its ear tests at n = {GROWTH_SIZES[-1]}"
+
+
 def _growth(theme: Theme) -> list[Mobject]:
-    """Ear tests against n for the three ear clippers: measured, not asymptotic."""
+    """Ear tests against n for the three ear clippers: measured, not asymptotic; the axes
+    named (:data:`EAR_TESTS`: room left for the names below and above the plot), and what
+    the legend's numbers are (:data:`GROWTH_WORDS`)."""
     left, bottom = FIGURE_CENTER[0] - FIGURE_WIDTH / 2 + 0.6, FIGURE_CENTER[1] - FIGURE_HEIGHT / 2
-    area = Area(left, bottom, FIGURE_WIDTH - 1.0, FIGURE_HEIGHT - 0.4)
+    area = Area(left, bottom + 0.55, FIGURE_WIDTH - 1.0, FIGURE_HEIGHT - 1.3)
     series = [Series(f"figure:growth:{name}", tuple(ear_tests(name, n) for n in GROWTH_SIZES),
                      theme.pieces[k % len(theme.pieces)]) for k, (name, _) in enumerate(GROWTH_RUNS)]
     drawn, _ = line_plot(GROWTH_SIZES, series, area, theme)
+    drawn += axis_names(area, "vertices n", EAR_TESTS, theme)
     for k, ((_, said), line) in enumerate(zip(GROWTH_RUNS, series, strict=True)):
         label = typeset.text(f"{said}: {line.counts[-1]}", font=theme.font,
                              size=theme.label_size, colour=line.colour)
         # the legend in the plot's top left, which the rising lines leave empty
-        label.move_to((left + 0.3, bottom + area.height - 0.2 - 0.42 * k, 0), aligned_edge=LEFT)
+        label.move_to((left + 0.3, area.bottom + area.height - 0.2 - 0.42 * k, 0),
+                      aligned_edge=LEFT)
         drawn.append(tag(label, None, "figure:legend"))
-    words = "ear tests (mean of 3 polygons) by n"
-    return [*drawn, figure_caption(BOX, theme, (words, theme.ink))]
+    return [*drawn, figure_caption(BOX, theme, (GROWTH_WORDS, theme.ink))]
 
 
 __all__ = ["FIGURE_CENTER", "FIGURE_HEIGHT", "FIGURE_WIDTH", "GROWTH_RUNS", "GROWTH_SIZES",

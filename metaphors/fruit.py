@@ -32,9 +32,9 @@ from manim import (
 
 from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
-from metaphors.board import Board, Playable
+from metaphors.board import Board, Playable, edges_of
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
-from metaphors.labels import MARGIN
+from metaphors.labels import MARGIN, off_the_fill
 from metaphors.layout import Obstacles, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
@@ -250,15 +250,21 @@ def _backing(board: Board, lines: VGroup) -> VGroup | None:
     return tag(cards, None, "ear-backing") if len(cards) else None
 
 
+#: a keyhole cut's width (of the theme's stroke): a slit, narrower than the knife that cut it
+CUT_WIDTH = 1.6
+
+
 def keyhole(board: Board, beat: Keyhole) -> None:
     """A hole opens to the rind: the knife cuts from the hole's vertex P to M, and the cut
-    stays, a dark slit, for the slicing to go round."""
+    stays, a dark slit (:data:`CUT_WIDTH`), for the slicing to go round."""
     _setup(board, beat)
     theme = board.theme
     p, m = (board.at(q) for q in beat.points)
     knife = tag(Line(p, m, color=theme.knife, stroke_width=theme.stroke * 2), "called", "knife")
-    cut = tag(Line(p, m, color=theme.rind, stroke_width=theme.stroke * 1.4), "result",
-              f"keyhole:{beat.hole}")
+    # the background seen through the fruit, as through its holes (5.4 : 1 on the orange;
+    # the rind's olive was 1.1 : 1, and the c₁–F cut all but vanished)
+    cut = tag(Line(p, m, color=theme.background, stroke_width=theme.stroke * CUT_WIDTH),
+              "result", f"keyhole:{beat.hole}")
     board.play(beat, Create(knife), Indicate(board.markers[beat.corners[0]], color=theme.result),
                run_time=0.8)
     board.play(beat, FadeOut(knife), FadeIn(cut), *board.clear_labels(cut), run_time=0.5)
@@ -298,6 +304,7 @@ def clip(board: Board, beat: Slice) -> None:
     if data.rest:
         anims.append(Transform(board.outline, _fruit(board, data.rest)))
         anims += _sliced_off(board, data.rest, target.get_center())
+        anims += _labels_off_fruit(board, data.rest)
     else:  # the last slice: the keyhole cuts go (no fruit is left round them); the fruit's
         # last triangle stays while its caption is read, until the whole triangulation
         anims += board.drop(*[key for key in board.objects if key.startswith("keyhole:")])
@@ -321,6 +328,26 @@ def _sliced_off(board: Board, rest: Sequence[Point], plate: np.ndarray) -> list[
         board.off[label] = board.markers.pop(label)
         board.roles.pop(label, None)
     return [FadeOut(board.off[label], target_position=plate, scale=0.5) for label in gone]
+
+
+def _labels_off_fruit(board: Board, rest: Sequence[Point]) -> list[Playable]:
+    """The moves, with a slice, of the labels left over the fruit (``rest``: what is left of
+    it) that find room outside it now (:func:`metaphors.labels.off_the_fill`), clear of the
+    lines on the picture (the keyhole cuts, the good part's edge): a hole's label stood on
+    the orange, on its dark halo, while the hole had no room for it, and stayed there once
+    the slices round its vertex had left the dark all round it (chapter 4's a₂ and b₂)."""
+    labels = {name: (m[0].get_center(), tuple(rects_at(m[1].get_center()[:2],
+                                                        (m[1].width, m[1].height))[0]))
+              for name, m in board.markers.items() if isinstance(m, VGroup) and len(m) > 1}
+    lines = [edge for m in board.objects.values() if m is not board.outline
+             for edge in edges_of(m)]
+    moves: list[Playable] = []
+    for name, centre in off_the_fill([board.at(p) for p in rest], labels, lines,
+                                     board.theme.dot_radius).items():
+        moved = board.markers[name].copy()
+        moved[1].move_to((centre[0], centre[1], 0.0))
+        moves.append(Transform(board.markers[name], moved))
+    return moves
 
 
 def _markers_back(board: Board) -> list[Mobject]:

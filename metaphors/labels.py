@@ -15,7 +15,7 @@ centre, which crowds the labels of a needle or a notch and can lay one on an edg
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from itertools import pairwise
 
 import numpy as np
@@ -195,14 +195,17 @@ def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
 
 def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
                    drawn: Sequence[Segment], new: Sequence[Segment],
-                   dot: float = THEME.dot_radius, apart: float = MARGIN) -> dict[str, np.ndarray]:
+                   dot: float = THEME.dot_radius, apart: float = MARGIN,
+                   fill: shapely.Geometry | None = None) -> dict[str, np.ndarray]:
     """The labels that the ``new`` segments come within :data:`MARGIN` of, each with a new
     centre: the first place round its vertex (:func:`places_round`: out along the bisector
     of its ring, each ring a list of labels, their dots where the markers stand now)
     :data:`EDGE_MARGIN` clear of the segments ``drawn`` (the edges, the lines on the
     picture) and ``new``, of the dots and of the other labels, else the first :data:`MARGIN`
     clear of those and ``apart`` from the other labels (more than :data:`MARGIN` where labels
-    crowd); a label with no clear place stays."""
+    crowd); of the places each asks, one off ``fill`` (the polygon's region: ear clipping's
+    fruit) first, as :func:`best_place` prefers (moved off a test triangle, the keyhole's
+    a₂ went from its hole onto the orange); a label with no clear place stays."""
     at = {name: np.asarray(m[0].get_center(), dtype=float)[:2] for name, m in markers.items()}
     boxes = {name: tuple(rects_at(m[1].get_center()[:2], (m[1].width, m[1].height))[0])
              for name, m in markers.items() if len(m) > 1}
@@ -219,10 +222,11 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
             d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])
             tried = places_round(at[name], d, size)
             others = Obstacles(boxes=[box for other, box in boxes.items() if other != name])
-            ok = (clear(tried, size, base, EDGE_MARGIN)
-                  & clear(tried, size, others, max(apart, EDGE_MARGIN)))
+            ok = _off(tried, size, fill, clear(tried, size, base, EDGE_MARGIN)
+                      & clear(tried, size, others, max(apart, EDGE_MARGIN)))
             if not ok.any():
-                ok = clear(tried, size, base, MARGIN) & clear(tried, size, others, apart)
+                ok = _off(tried, size, fill,
+                          clear(tried, size, base, MARGIN) & clear(tried, size, others, apart))
             if ok.any():
                 moved[name] = tried[int(np.argmax(ok))]
                 boxes[name] = tuple(rects_at(moved[name], size)[0])
@@ -240,9 +244,72 @@ def drawn_edges(mobject: Mobject) -> list[Segment]:
     return []
 
 
+def _off(centres: np.ndarray, size: tuple[float, float], fill: shapely.Geometry | None,
+         ok: np.ndarray) -> np.ndarray:
+    """``ok``, kept to the places whose boxes are off ``fill`` if any of them is."""
+    if fill is None or not ok.any():
+        return ok
+    rects = rects_at(centres, size)
+    off = ok & ~shapely.intersects(shapely.box(*rects.T), fill)
+    return off if off.any() else ok
+
+
+def off_the_fill(ring: Sequence[np.ndarray], labels: Mapping[str, tuple[np.ndarray, Rect]],
+                 segments: Sequence[Segment], dot: float = THEME.dot_radius
+                 ) -> dict[str, np.ndarray]:
+    """The labels (``labels``: each one's vertex and box) that stand over the region
+    ``ring`` bounds, each with a new centre: the first place round its vertex
+    (:func:`places_round`, out along its bisector on ``ring``) wholly outside the region,
+    :data:`EDGE_MARGIN` clear of its edges, of ``segments``, of the dots and of the other
+    labels, nearer its own dot than any other and seen from it (:func:`_seen`), in the
+    frame. A label with no such place stays; so does one whose vertex is not on ``ring``.
+
+    Ear clipping's fruit shrinks as its slices go: a hole's label, over the fruit while the
+    hole had no room for it, finds room outside once the slices round its vertex are cut.
+
+    >>> square = [np.array(p, dtype=float) for p in [(0, 0), (4, 0), (4, 3), (0, 3)]]
+    >>> moved = off_the_fill(square, {"A": (square[0], (0.1, 0.1, 0.3, 0.3))}, [])
+    >>> [round(float(c), 2) for c in moved["A"]]  # out along the corner's bisector
+    [-0.23, -0.23]
+    """
+    pts = [np.asarray(p, dtype=float)[:2] for p in ring]
+    # made valid: a keyhole's ring runs both ways along its cut
+    region = shapely.make_valid(shapely.Polygon(pts)) if len(pts) >= 3 else None
+    if region is None or region.is_empty:
+        return {}
+    edges = [*ring_edges(pts), *segments]
+    dots = [np.asarray(at, dtype=float)[:2] for at, _ in labels.values()]
+    boxes = {name: box for name, (_, box) in labels.items()}
+    moved: dict[str, np.ndarray] = {}
+    for k, (name, (_, box)) in enumerate(labels.items()):
+        i = next((j for j, p in enumerate(pts) if np.linalg.norm(p - dots[k]) < 1e-6), None)
+        if i is None or not shapely.intersects(shapely.box(*box), region):
+            continue
+        size = (box[2] - box[0], box[3] - box[1])
+        tried = places_round(dots[k], outward(pts[i - 1], pts[i], pts[(i + 1) % len(pts)]), size)
+        others = Obstacles(segments=edges, dots=[(float(p[0]), float(p[1]), dot) for p in dots],
+                           boxes=[b for other, b in boxes.items() if other != name])
+        rects = rects_at(tried, size)
+        ok = (clear(tried, size, others, EDGE_MARGIN, FRAME_AREA)
+              & ~shapely.intersects(shapely.box(*rects.T), region)
+              & _own(tried, size, k, dots) & _seen(tried, dots[k], edges))
+        if ok.any():
+            moved[name] = tried[int(np.argmax(ok))]
+            boxes[name] = tuple(rects[int(np.argmax(ok))])
+    return moved
+
+
+def seen_from(at: np.ndarray, centre: np.ndarray, edges: Sequence[Segment]) -> bool:
+    """Whether a label centred at ``centre`` is seen from its vertex ``at`` across none of
+    ``edges`` (:func:`_seen`)."""
+    return bool(_seen(np.asarray([centre[:2]], dtype=float), np.asarray(at, dtype=float)[:2],
+                      edges)[0])
+
+
 __all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "drawn_edges",
-           "measured_markers", "new_colour", "outward", "place_labels", "place_ring_labels",
-           "placed_vertex_markers", "places_round"]
+           "measured_markers", "new_colour", "off_the_fill", "outward", "place_labels",
+           "place_ring_labels", "placed_vertex_markers", "places_round", "seen_from"]
+
 
 
 def new_colour(marker: Mobject, label: str, role: str, was: str, theme: Theme,

@@ -14,7 +14,7 @@ the same way every time.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 
 import numpy as np
 import shapely
@@ -139,14 +139,22 @@ def inside_spot(size: tuple[float, float], near: Point, obstacles: Obstacles,
     return None
 
 
+def _area_at(mobject: Mobject, centre: np.ndarray) -> Area:
+    """``mobject``'s box, its centre at ``centre``."""
+    box = rects_at(np.asarray(centre, dtype=float)[:2], (mobject.width, mobject.height))[0]
+    return (float(box[0]), float(box[1]), float(box[2]), float(box[3]))
+
+
 def board_spot(board: Board, mark: Mobject, line: Mobject,
-               moved: Callable[[np.ndarray], np.ndarray] | None = None) -> np.ndarray:
+               moved: Callable[[np.ndarray], np.ndarray] | None = None,
+               placed: Mapping[str, np.ndarray] | None = None) -> np.ndarray:
     """Where a run's verdict ``mark`` on the claim ``line`` goes on its board (:func:`mark_spot`):
     clear of the outline's edges (its holes' too: the largest ring is the outer one), the
     diagonals drawn and the vertex labels; the mark made smaller if only that fits it inside
     the outline (:func:`scaled_spot`).
     ``moved``: where each point of the picture ends (a turn under way: the mark keeps its
-    size), None: as it is."""
+    size), None: as it is. ``placed``: the centres the turn puts the vertex labels at
+    (:func:`metaphors.picture.turn_to` places them again for the turned picture)."""
     def end(p: np.ndarray) -> np.ndarray:
         return moved(p) if moved is not None else p
 
@@ -155,8 +163,11 @@ def board_spot(board: Board, mark: Mobject, line: Mobject,
     edges = [edge for ring in rings for edge in ring_edges(ring)]
     edges += [(end(m.get_start()), end(m.get_end())) for key, m in board.objects.items()
               if key.startswith("diagonal:") and isinstance(m, Line)]
-    labels = [area_of(part, moved) for marker in board.markers.values()
-              for part in marker.submobjects]
+    placed = placed or {}
+    labels = [area_of(part, moved) for name, marker in board.markers.items()
+              for part in marker.submobjects[:1 if name in placed else None]]
+    # a label placed again: its own size, at its new place
+    labels += [_area_at(board.markers[name][1], at) for name, at in placed.items()]
     # and where the labels moved off the ball's way will come back to (the picture upright)
     labels += [area_of(board.markers[label][1].copy().move_to(board.at(place)), moved)
                for label, place in board.moved_for_now.items()]

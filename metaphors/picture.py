@@ -8,11 +8,15 @@ keeps mapping polygon points onto the turned picture.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
-from manim import Circle, Mobject
+from manim import Circle, Mobject, VGroup
 
-from metaphors.board import Board, Playable
+from metaphors.board import Board, Playable, edges_of
+from metaphors.drawing import Frame
+from metaphors.labels import place_ring_labels, seen_from
+from metaphors.layout import ring_edges
 from metaphors.marks import board_spot
 from rendering.turn import Turn
 from rendering.typeset import FlatText
@@ -49,24 +53,81 @@ def _movers(board: Board) -> list[Mobject]:
 
 def turn_to(board: Board, angle: float) -> list[Turn]:
     """Animations turning the picture to ``angle`` degrees (absolute; 0 is upright), and the
-    board's frame with it. Labels, dots and the ball keep their size and stay upright."""
+    board's frame with it. Labels, dots and the ball keep their size and stay upright; each
+    label goes to its place on the turned picture (:func:`_label_places`)."""
     old = board.frame
     new = old.turned(angle, board.box.center, _fit_zoom(board, angle))
     delta = new.angle - old.angle
     k = new.zoom / old.zoom
     if abs(delta) < 1e-9 and abs(k - 1) < 1e-9:
         return []
-    turns = {id(m): Turn(m, math.radians(delta), board.box.center, k, upright=_UPRIGHT)
+    pivot = np.asarray(board.box.center, dtype=float)
+
+    probe = Turn(Mobject(), math.radians(delta), pivot, k)
+    placed = _label_places(board, new, lambda p: _turned(probe, p))
+    # the dot turns with the picture, its label goes to its new place as it does
+    moves = {id(board.markers[name][1]): at - probe.end_centre(board.markers[name][1])
+             for name, at in placed.items()}
+    turns = {id(m): Turn(m, math.radians(delta), pivot, k, upright=_UPRIGHT, moves=moves)
              for m in _movers(board)}
     line, mark = board.objects.get("claim"), board.objects.get("verdict")
     if line is not None and mark is not None and id(mark) in turns:
-        # the mark placed again for the turned picture: its labels keep upright, so a place
-        # clear of them before the turn need not be after it
+        # the mark placed again for the turned picture, clear of the labels' new places
         turn = turns[id(mark)]
-        spot = board_spot(board, mark, line, moved=lambda p: _turned(turn, p))
+        spot = board_spot(board, mark, line, moved=lambda p: _turned(turn, p), placed=placed)
         turn.shift = spot - turn.end_centre(mark)
     board.frame = new
     return list(turns.values())
+
+
+def _label_places(board: Board, new: Frame,
+                  moved: Callable[[np.ndarray], np.ndarray]) -> dict[str, np.ndarray]:
+    """The centre of every vertex label on the picture turned to the frame ``new`` (``moved``:
+    where a point of the picture goes): turned upright, back where it stood beside its dot
+    before the picture turned (:attr:`Board.home`: a label stays put on the picture it was
+    placed for); turned, placed again on the picture as it will stand
+    (:func:`metaphors.labels.place_ring_labels`: its outline, the lines drawn on it and the
+    claims still to come). Kept upright and carried round with the turn, the labels of a
+    thin fruit shrunk by a zoom stood inside it (chapter 4's M and G) and left its ✓ no room.
+    The labels moved off the ball's way for now are placed too: they do not go back."""
+    markers = {name: m for name, m in board.markers.items()
+               if isinstance(m, VGroup) and len(m) > 1}
+    if _upright(board.frame):
+        board.home = {name: m[1].get_center() - m[0].get_center() for name, m in markers.items()}
+    for name in markers:
+        board.moved_for_now.pop(name, None)
+    if _upright(new) and board.home:
+        home, board.home = board.home, {}
+        return {name: new.to_scene(board.where[name]) + home[name]
+                for name in markers if name in home}
+    rings = [[name for name in ring if name in markers]
+             for ring in (board.polygon.labels, *(h.labels for h in board.holes))]
+    rings = [ring for ring in rings if ring]
+    drawn = [edge for ring in board.outline_rings() for edge in ring_edges(ring)]
+    drawn += [edge for m in _movers(board) if m is not board.outline
+              and not any(m is marker for marker in markers.values()) for edge in edges_of(m)]
+    segments = [(moved(np.asarray(a, dtype=float)), moved(np.asarray(b, dtype=float)))
+                for a, b in drawn]
+    points = board.polygon.points
+    segments += [(new.to_scene(points[i]), new.to_scene(points[j])) for i, j in board.claim_pairs
+                 if board.polygon.labels[i] in markers and board.polygon.labels[j] in markers]
+    centres = place_ring_labels([[new.to_scene(board.where[name]) for name in ring]
+                                 for ring in rings],
+                                [(markers[name][1].width, markers[name][1].height)
+                                 for ring in rings for name in ring],
+                                segments, board.theme.dot_radius)
+    names = [name for ring in rings for name in ring]
+    edges = [edge for ring in rings for edge in
+             ring_edges([new.to_scene(board.where[name]) for name in ring])]
+    # a label with no place its dot sees (across an edge, it names what lies beyond: the
+    # turned fruit's notch M stood over edge K–H) turns with the picture, as it stood
+    return {name: np.array([c[0], c[1], 0.0]) for name, c in zip(names, centres, strict=True)
+            if seen_from(new.to_scene(board.where[name]), c, edges)}
+
+
+def _upright(frame: Frame) -> bool:
+    """Whether ``frame`` is the picture as first drawn: not turned, not zoomed."""
+    return abs(frame.angle) < 1e-9 and abs(frame.zoom - 1.0) < 1e-9
 
 
 def _turned(turn: Turn, point: np.ndarray) -> np.ndarray:

@@ -16,6 +16,7 @@ from typing import Protocol, cast
 
 from metaphors.board import Board
 from metaphors.catalog import perform
+from metaphors.fruit import Keyhole
 from metaphors.layout import Box
 from metaphors.recorded import Recorded, captions_of, mark_step
 from story.beats import Beat, Claim, ShowPolygon
@@ -47,7 +48,8 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     recorded = cast(Recorded, scene)  # every BoardScene is Recorded (TraceScene, the player's)
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded),
-                  claims=[beat.labels for beat in beats if isinstance(beat, Claim)])
+                  claims=[beat.labels for beat in beats if isinstance(beat, Claim)],
+                  cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)])
     board.panel.shows_calls = scene.call_line
     board.panel.run_call = run_call(log)
     code = log.meta.get("code")

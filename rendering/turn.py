@@ -10,7 +10,7 @@ orientation: they move with their centre.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from typing import cast
 
 import numpy as np
@@ -21,7 +21,9 @@ class Turn(Animation):
     """Turn ``mobject`` by ``angle`` radians about ``pivot`` and zoom it by ``zoom``.
 
     ``upright`` parts only move with their centre; ``shift`` moves the whole mobject by this
-    much more, in step with the turn (it ends ``shift`` away from the plain turn).
+    much more, in step with the turn (it ends ``shift`` away from the plain turn), and
+    ``moves`` (by ``id``) an upright part by this much more again (a vertex's label going to
+    its place on the turned picture as its dot turns).
 
     Examples
     --------
@@ -36,16 +38,21 @@ class Turn(Animation):
     """
 
     def __init__(self, mobject: Mobject, angle: float, pivot, zoom: float = 1.0,
-                 upright: tuple[type, ...] = (), shift=(0.0, 0.0, 0.0), **kwargs):
+                 upright: tuple[type, ...] = (), shift=(0.0, 0.0, 0.0),
+                 moves: Mapping[int, np.ndarray] | None = None, **kwargs):
         self.angle, self.zoom, self.upright = float(angle), float(zoom), upright
         self.pivot = np.asarray(pivot, dtype=float)[:2]
         self.shift = np.asarray(shift, dtype=float)
+        self.moves = dict(moves or {})
         super().__init__(mobject, **kwargs)
 
     def begin(self) -> None:
-        # (part, its starting points, the centre it moves with: None if it turns itself)
-        self._parts = [(part, part.points.copy(), centre)
-                       for part, centre in _parts(cast(Mobject, self.mobject), self.upright, None)]  # Cairo's
+        # (part, its starting points, the centre it moves with: None if it turns itself, and
+        # the move of the upright part it is in)
+        none = np.zeros(3)
+        self._parts = [(part, part.points.copy(), centre, self.moves.get(owner, none))
+                       for part, centre, owner in _parts(cast(Mobject, self.mobject),
+                                                         self.upright, None, 0)]
         super().begin()
 
     def create_starting_mobject(self) -> Mobject:
@@ -54,13 +61,13 @@ class Turn(Animation):
     def interpolate_mobject(self, alpha: float) -> None:
         alpha = self.rate_func(alpha)
         turn = self.matrix(alpha)
-        for part, start, centre in self._parts:
+        for part, start, centre, move in self._parts:
             points = start.copy()
             if centre is None:
                 points[:, :2] = (start[:, :2] - self.pivot) @ turn.T + self.pivot
             else:
                 points[:, :2] += (centre - self.pivot) @ turn.T + self.pivot - centre
-            points += alpha * self.shift
+            points += alpha * (self.shift + move)
             part.points = points
 
     def matrix(self, alpha: float) -> np.ndarray:
@@ -76,12 +83,13 @@ class Turn(Animation):
         return np.array([*turned, centre[2]])
 
 
-def _parts(mobject: Mobject, upright: tuple[type, ...],
-           centre: np.ndarray | None) -> Iterator[tuple[Mobject, np.ndarray | None]]:
-    """Each family member with its points, and the centre of the upright part it is in."""
+def _parts(mobject: Mobject, upright: tuple[type, ...], centre: np.ndarray | None,
+           owner: int) -> Iterator[tuple[Mobject, np.ndarray | None, int]]:
+    """Each family member with its points, the centre of the upright part it is in and that
+    part's ``id`` (0 outside one)."""
     if centre is None and isinstance(mobject, upright):
-        centre = mobject.get_center()[:2]
+        centre, owner = mobject.get_center()[:2], id(mobject)
     if len(mobject.points):
-        yield mobject, centre
+        yield mobject, centre, owner
     for child in mobject.submobjects:
-        yield from _parts(child, upright, centre)
+        yield from _parts(child, upright, centre, owner)

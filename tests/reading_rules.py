@@ -3271,3 +3271,162 @@ def labels_on_the_ball(data: dict, margin: float = LEAST_BALL_GAP) -> list[str]:
                 if gap < margin and name not in found:
                     found[name] = f"play {k} {name.removeprefix('vertex:')} {gap:.2f} from the ball"
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+# --- a keyhole's cut moves no label ---------------------------------------------------------------
+
+
+def labels_moved_by_cuts(data: dict) -> list[str]:
+    """The vertex labels that move in a play a keyhole's cut comes in (``keyhole:N``), their
+    dot where it stood, as ``"play 217 keyhole:1 moves c₁"``: a label stays put unless its
+    vertex moves, and the cuts a run will make are known before its first picture (the
+    labels are placed clear of them). Moved aside by each cut as it came, chapter 4's c₁, c₂
+    and d₂ jumped between the two keyhole steps. The markers are as
+    :func:`_shown_after_plays` follows them."""
+    found = []
+    before: dict[str, dict] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:",)):
+        cuts = [name for anim in data["plays"][k]["animations"] for kind, _, name in _ends(anim)
+                if kind in INCOMING and name.startswith("keyhole:")]
+        for name, marker in shown.items() if cuts else ():
+            old = before.get(name)
+            if old is None or _dot_centre(old) != _dot_centre(marker):
+                continue
+            if _rounded_boxes(old) != _rounded_boxes(marker):
+                found.append(f"play {k} {cuts[0]} moves {name.removeprefix('vertex:')}")
+        before = dict(shown)
+    return found
+
+
+def _rounded_boxes(marker: dict) -> list[tuple[float, ...]]:
+    """A marker's label boxes (:func:`_label_boxes`) to the thousandth."""
+    return [tuple(round(v, 3) for v in box) for box in _label_boxes(marker, direct=True)]
+
+
+# --- a keyhole's cut reads on the fruit ------------------------------------------------------------
+
+
+def faint_cuts(data: dict) -> list[str]:
+    """The keyhole cuts (``keyhole:N``) drawn in a colour under :data:`LEAST_CONTRAST` against
+    the fill they cross (ear clipping's fruit, as the screen shows it), as ``"play 213
+    keyhole:2 on polygon 1.1 : 1"``: chapter 4's cuts, in the rind's olive on the orange
+    fruit (1.1 : 1), all but vanished, and the slicing that goes round them had nothing to go
+    round. Each cut once, where it first fails."""
+    from shapely.geometry import LineString
+
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, (_KEYHOLE, *_FILLED)):
+        fills = _fills(shown)
+        for name, node in shown.items():
+            colour = _one_colour(node.get("stroke"))
+            if not name.startswith(_KEYHOLE) or colour is None or name in found:
+                continue
+            cut = [LineString(s) for s in _segments(node)]
+            for owner, shape, _, under in fills:
+                ratio = contrast(colour, under)
+                if any(shape.intersects(line) for line in cut) and ratio < LEAST_CONTRAST:
+                    found[name] = f"play {k} {name} on {owner} {ratio:.1f} : 1"
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- a plot's numbers are said ---------------------------------------------------------------------
+
+#: a card's plot: its axes, and the names that say what their numbers are
+_AXES, _AXIS_NAMES = "figure:axis", ("figure:x-name", "figure:y-name")
+
+
+def unnamed_axes(data: dict) -> list[str]:
+    """The plays that leave a card's plot (:data:`_AXES`) on screen without both its axes
+    named (:data:`_AXIS_NAMES`), as ``"play 190 figure:y-name missing"``: chapter 4's "How
+    fast" showed 10, 60 and 235 and never said that they were vertices and ear tests. Each
+    name once, where it is first missed."""
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, (_AXES, *_AXIS_NAMES)):
+        if _AXES not in shown:
+            continue
+        for name in _AXIS_NAMES:
+            if name not in shown:
+                found.setdefault(name, f"play {k} {name} missing")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- a label off the fruit where it has room ----------------------------------------------------
+
+#: how far (scene units) a label's box may stand from its dot, looked for a place off the fruit
+ROOM_REACH = 0.6
+#: the gap such a place keeps from every edge, cut, dot and other label (labels.py's least)
+ROOM_GAP = 0.12
+
+
+def labels_on_the_fruit_with_room(data: dict) -> list[str]:
+    """The vertex labels over ear clipping's fruit (the polygon filled in the fruit's
+    orange) that have room beside their vertex off it, as ``"play 260 a₂ on the fruit,
+    room off it"``: a place for the label's box within :data:`ROOM_REACH` of its dot, wholly
+    off the fruit and any test triangle shown (or drawn in the next two plays),
+    :data:`ROOM_GAP` clear of the fruit's edges, the keyhole cuts, the dots
+    and the other labels, nearer its own dot than any other, seen from its dot across no
+    edge. A hole's label stands on the orange (on its dark halo) while the hole has no room
+    for it; left there once the slices round its vertex had cut the fruit away (chapter 4's
+    a₂), it covered the fruit for nothing. The markers and the fruit as
+    :func:`_shown_after_plays` follows them; each vertex once, where first found."""
+    import shapely
+
+    from metaphors.theme import THEME
+
+    found: dict[str, str] = {}
+    states = [(k, dict(shown)) for k, shown in
+              _shown_after_plays(data, ("vertex:", "polygon", _KEYHOLE, *_TEST_TRIANGLES))]
+    for at, (k, shown) in enumerate(states):
+        # the labels move off a test triangle before it comes in (its words' play between)
+        then = [n for _, later in states[at + 1:at + 3] for n in later.items()]
+        fruit = [shape for owner, shape, (colour, _), _ in _fills(shown)
+                 if owner == "polygon" and colour.lower() == THEME.fruit.lower()]
+        if not fruit:
+            continue
+        # a place on a test triangle is none (labels_under_test_triangles)
+        taken = shapely.union_all([fruit[0], *(shapely.Polygon(_corners(n))
+                                               for name, n in (*shown.items(), *then)
+                                               if name.startswith(_TEST_TRIANGLES)
+                                               and len(n.get("points") or []) >= 12)])
+        lines = [s for name, n in shown.items() if name.startswith((_KEYHOLE, "polygon"))
+                 for s in _segments(n)]
+        walls = shapely.union_all([shapely.LineString(s) for s in lines]) if lines else None
+        markers = {name.removeprefix("vertex:"): (_dot_centre(m), list(_label_boxes(m, direct=True)))
+                   for name, m in shown.items() if name.startswith("vertex:")}
+        for vertex, (dot, boxes) in markers.items():
+            if dot is None or not boxes or vertex in found:
+                continue
+            if not fruit[0].intersects(shapely.box(*boxes[0])):
+                continue
+            others = [b for v, (_, bs) in markers.items() if v != vertex for b in bs]
+            dots = [d for v, (d, _) in markers.items() if v != vertex and d is not None]
+            if _room_off(dot, boxes[0], taken, walls, others, dots):
+                found[vertex] = f"play {k} {vertex} on the fruit, room off it"
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+def _room_off(dot, box, fruit, walls, others, dots) -> bool:
+    """Whether a box the size of ``box`` has a place round ``dot`` as
+    :func:`labels_on_the_fruit_with_room` asks."""
+    import numpy as np
+    import shapely
+
+    w, h = box[2] - box[0], box[3] - box[1]
+    reach = ROOM_REACH + max(w, h) / 2
+    xs = np.arange(dot[0] - reach, dot[0] + reach + 1e-9, 0.05)
+    ys = np.arange(dot[1] - reach, dot[1] + reach + 1e-9, 0.05)
+    cx, cy = (a.ravel() for a in np.meshgrid(xs, ys))
+    boxes = shapely.box(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
+    here = shapely.Point(dot)
+    ok = (shapely.distance(boxes, here) <= ROOM_REACH) & (shapely.distance(boxes, here) >= ROOM_GAP)
+    ok &= ~shapely.intersects(boxes, fruit)
+    if walls is not None:
+        ok &= shapely.distance(boxes, walls) >= ROOM_GAP
+        rays = shapely.linestrings(np.stack([np.broadcast_to(dot, (len(cx), 2)),
+                                             np.column_stack([cx, cy])], axis=1))
+        # seen from its dot: the way to it meets no edge away from the dot itself
+        ok &= ~shapely.intersects(rays, walls.difference(here.buffer(1e-3)))
+    for other in others:
+        ok &= shapely.distance(boxes, shapely.box(*other)) >= ROOM_GAP
+    for d in dots:
+        near = shapely.distance(boxes, shapely.Point(d))
+        ok &= (near >= ROOM_GAP) & (near > shapely.distance(boxes, here))
+    return bool(ok.any())

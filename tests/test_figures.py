@@ -89,6 +89,23 @@ def test_the_growth_plot_counts_ear_tests_in_the_logs():
     assert ear_tests("ear-clipping-naive", 60) > ear_tests("prune-and-search", 60)
 
 
+def test_the_growth_plot_says_what_its_numbers_are():
+    """Chapter 4's "How fast": 10, 60 and 235 were never said to be vertices and ear tests."""
+    from metaphors.figures import GROWTH_SIZES
+    from tests.reading_rules import unnamed_axes
+
+    drawn = figure_mobjects(Figure("growth"), "lecture")
+    (across,), (up,) = named(drawn, "figure:x-name"), named(drawn, "figure:y-name")
+    assert across.original_text == "vertices n" and "ear tests (is V an ear?)" in up.original_text
+    assert f"ear tests at n = {GROWTH_SIZES[-1]}" in label(drawn)
+    shown = {"plays": [{"animations": [{"type": "FadeIn", "mobject": {"name": m.name}}
+                                       for m in drawn]}]}
+    assert unnamed_axes(shown) == []
+    unnamed = {"plays": [{"animations": [{"type": "FadeIn", "mobject": {"name": m.name}}
+                                         for m in drawn if not m.name.endswith("-name")]}]}
+    assert unnamed_axes(unnamed) == ["play 0 figure:x-name missing", "play 0 figure:y-name missing"]
+
+
 def test_an_unknown_kind_is_refused():
     with pytest.raises(ValueError, match="a figure is one of"):
         Figure("pie")

@@ -6,7 +6,10 @@ on the board with its slices on the plate and the fruit gone) and on the same gr
 from __future__ import annotations
 
 from tests.reading_rules import (
+    faint_cuts,
     flickering_counts,
+    labels_moved_by_cuts,
+    labels_on_the_fruit_with_room,
     labels_without_contrast,
     leftover_verdicts,
     placeholders_as_labels,
@@ -128,6 +131,20 @@ def test_a_keyhole_cut_over_no_fruit_is_found():
     assert stale_good_parts(gone) == []
 
 
+def test_a_keyhole_cut_faint_on_the_fruit_is_found():
+    """Chapter 4's cuts, the rind's olive on the orange fruit (1.1 : 1), all but vanished."""
+    from metaphors.theme import THEME
+
+    fruit = {"type": "Create", "mobject": {**P, "fill": THEME.fruit, "fill_opacity": 0.75}}
+
+    def cut(colour: str) -> dict:
+        return {"type": "FadeIn", "mobject": {"name": "keyhole:1", "stroke": colour,
+                                              "points": _closed((1, 1), (2, 2))[:4]}}
+
+    assert faint_cuts(_graph([fruit], [cut(THEME.rind)])) == ["play 1 keyhole:1 on polygon 1.1 : 1"]
+    assert faint_cuts(_graph([fruit], [cut(THEME.background)])) == []
+
+
 def _label(kind: str) -> dict:
     return {"type": kind, "mobject": {"name": "vertex:M", "submobjects": [
         {"type": "Dot", "points": _closed((1, 1), (1.1, 1), (1.1, 1.1))},
@@ -218,3 +235,41 @@ def test_a_marker_left_by_its_sliced_off_vertex_is_found():
     # a turn of the picture leaves the places unknown: not judged until drawn again
     turned = _graph(start, [{"type": "Turn", "mobject": P}], [_marker("Indicate", "C", (9, 9))])
     assert stray_vertex_markers(turned) == []
+
+
+def _c1(kind: str, box: list[float]) -> dict:
+    return {"type": kind, "mobject": {"name": "vertex:c₁", "type": "VGroup", "submobjects": [
+        {"type": "Dot", "points": [[1.0, 1.0, 0.0]]}, {"type": "FlatText", "text": "c₁", "box": box}]}}
+
+
+def test_a_label_a_keyhole_cut_moves_is_found():
+    """Chapter 4: the second keyhole's cut moved c₁ (its dot where it stood) aside."""
+    start = [{"type": "Create", "mobject": P}, _c1("FadeIn", [1.1, 1.1, 1.4, 1.3])]
+    cut = {"type": "FadeIn", "mobject": {"name": "keyhole:1", "points": _closed((1, 1), (4, 2))}}
+    moved = _graph(start, [cut, _c1("Transform", [1.1, 0.6, 1.4, 0.8])])
+    assert labels_moved_by_cuts(moved) == ["play 1 keyhole:1 moves c₁"]
+    # placed clear of the cut from the start: it stays
+    assert labels_moved_by_cuts(_graph(start, [cut])) == []
+    # moved aside by a later line (a knife), not a cut
+    knife = {"type": "Create", "mobject": {"name": "knife", "points": _closed((1, 1), (4, 2))}}
+    assert labels_moved_by_cuts(_graph(start, [knife, _c1("Transform", [1.1, 0.6, 1.4, 0.8])])) == []
+
+
+def test_a_label_on_the_fruit_with_room_off_it_is_found():
+    """Chapter 4's a₂ stayed on the orange once the slices had cut the fruit away round it."""
+    from metaphors.theme import THEME
+
+    def fruit(*corners: tuple[float, float]) -> dict:
+        return {"type": "Create", "mobject": {"name": "polygon", "fill": THEME.fruit,
+                                              "fill_opacity": 0.75, "points": _closed(*corners)}}
+
+    # a₂'s vertex (1, 1) on the fruit's corner, its label just inside the fruit
+    label = _c1("FadeIn", [1.1, 1.1, 1.4, 1.3])
+    sliced = _graph([fruit((1, 1), (4, 1), (4, 4), (1, 4)), label])
+    assert labels_on_the_fruit_with_room(sliced) == ["play 0 c₁ on the fruit, room off it"]
+    # off the fruit, below its corner: nothing to find
+    below = _graph([fruit((1, 1), (4, 1), (4, 4), (1, 4)), _c1("FadeIn", [0.6, 0.6, 0.9, 0.8])])
+    assert labels_on_the_fruit_with_room(below) == []
+    # a hole's vertex in a fruit all round it, the hole too small: no room off it
+    whole = _graph([fruit((-3, -3), (5, -3), (5, 5), (-3, 5)), label])
+    assert labels_on_the_fruit_with_room(whole) == []
