@@ -32,9 +32,9 @@ from manim import (
 
 from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
-from metaphors.board import Board, Playable, edges_of
+from metaphors.board import Board, Playable
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
-from metaphors.labels import MARGIN, off_the_fill
+from metaphors.labels import MARGIN, drawn_edges, off_the_fill
 from metaphors.layout import Obstacles, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
@@ -340,7 +340,7 @@ def _labels_off_fruit(board: Board, rest: Sequence[Point]) -> list[Playable]:
                                                         (m[1].width, m[1].height))[0]))
               for name, m in board.markers.items() if isinstance(m, VGroup) and len(m) > 1}
     lines = [edge for m in board.objects.values() if m is not board.outline
-             for edge in edges_of(m)]
+             for edge in drawn_edges(m)]
     moves: list[Playable] = []
     for name, centre in off_the_fill([board.at(p) for p in rest], labels, lines,
                                      board.theme.dot_radius).items():

@@ -13,9 +13,9 @@ from collections.abc import Callable
 import numpy as np
 from manim import Circle, Mobject, VGroup
 
-from metaphors.board import Board, Playable, edges_of
+from metaphors.board import Board, Playable
 from metaphors.drawing import Frame
-from metaphors.labels import place_ring_labels, seen_from
+from metaphors.labels import drawn_edges, place_ring_labels, seen_from
 from metaphors.layout import ring_edges
 from metaphors.marks import board_spot
 from rendering.turn import Turn
@@ -105,7 +105,7 @@ def _label_places(board: Board, new: Frame,
     rings = [ring for ring in rings if ring]
     drawn = [edge for ring in board.outline_rings() for edge in ring_edges(ring)]
     drawn += [edge for m in _movers(board) if m is not board.outline
-              and not any(m is marker for marker in markers.values()) for edge in edges_of(m)]
+              and not any(m is marker for marker in markers.values()) for edge in drawn_edges(m)]
     segments = [(moved(np.asarray(a, dtype=float)), moved(np.asarray(b, dtype=float)))
                 for a, b in drawn]
     points = board.polygon.points
