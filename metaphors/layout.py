@@ -305,21 +305,22 @@ def panel_column() -> Rect:
     return (left, BEYOND_FRAME[1], BEYOND_FRAME[2], BEYOND_FRAME[3])
 
 
-#: how far one line of the call line (monospace, its brackets and descenders) reaches above
-#: :data:`PANEL_CALL_Y`
-CALL_LINE_REACH = 0.14
+#: how far the call line reaches above :data:`PANEL_CALL_Y` (monospace, its brackets and
+#: descenders), on one line and wrapped to two (centred on it)
+CALL_LINE_REACH = {1: 0.14, 2: 0.315}
 
 
-def code_floor(calls: bool) -> float:
-    """The lowest the panel's code may reach: 0.035 above its call line, as one line, where
-    the call line shows calls (a code reaching so low keeps its call line to one line:
-    :meth:`metaphors.panel.Panel._call_line`), else 0.1 above the subtitles' two lines
-    (:data:`SUBTITLE_TOP`).
+def code_floor(calls: bool, call_lines: int = 2) -> float:
+    """The lowest the panel's code may reach: 0.035 above its call line of ``call_lines``
+    lines where the call line shows calls (a code reaching below a call's two lines keeps
+    its call line to one: :meth:`metaphors.panel.Panel._call_line`), else 0.1 above the
+    subtitles' two lines (:data:`SUBTITLE_TOP`).
 
-    >>> code_floor(True), code_floor(False)
-    (-2.475, -2.85)
+    >>> code_floor(True), code_floor(True, call_lines=1), code_floor(False)
+    (-2.3, -2.475, -2.85)
     """
-    return round(PANEL_CALL_Y + CALL_LINE_REACH + 0.035 if calls else SUBTITLE_TOP + 0.1, 6)
+    reach = CALL_LINE_REACH[call_lines]
+    return round(PANEL_CALL_Y + reach + 0.035 if calls else SUBTITLE_TOP + 0.1, 6)
 
 
 def call_line_area() -> Rect:

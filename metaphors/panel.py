@@ -391,7 +391,7 @@ class Panel:
             return []
         self.call_text = text
         font, width = self.theme.mono_font, PANEL_CODE.width
-        if self.code_box.rect[1] < PANEL_CODE.rect[1] - 1e-9:
+        if self.code_box.rect[1] < code_floor(True) - 1e-9:
             # the code reaches down to where a call's second line would stand: one line, cut
             new = typeset.text(_one_line(text, font, 20, width), font=font, size=20,
                                colour=self.theme.ink)
@@ -461,23 +461,25 @@ def _baseline_offset(row, font: str, size: float) -> float:
 
 def code_box(rows: int, calls: bool) -> tuple[Box, float]:
     """The box ``rows`` pseudocode rows take and their pitch: :data:`PANEL_CODE` when they fit
-    it at :data:`PSEUDOCODE_PITCH`; else from its top down to :func:`code_floor`, a pitch as
-    close as they need (no closer than :data:`PSEUDOCODE_LEAST_PITCH`); else higher than
-    its top (the panel's polygon makes room: :meth:`Panel._draw_polygon`).
+    it at :data:`PSEUDOCODE_PITCH`; else from its top down to :func:`code_floor` (above a
+    call line of two lines, or, if the rows need it, of one), a pitch as close as they need
+    (no closer than :data:`PSEUDOCODE_LEAST_PITCH`); else higher than its top (the panel's
+    polygon makes room: :meth:`Panel._draw_polygon`).
 
     >>> code_box(6, calls=True)[0] == PANEL_CODE, code_box(6, calls=True)[1]
     (True, 0.34)
-    >>> box, pitch = code_box(10, calls=False)
-    >>> round(pitch, 4), round(box.rect[1], 3), round(box.rect[3], 3)
-    (0.3175, -2.85, 0.325)
-    >>> box, pitch = code_box(10, calls=True)
-    >>> round(pitch, 4), round(box.rect[1], 3), round(box.rect[3], 3)
-    (0.28, -2.475, 0.325)
+    >>> def rows_in(rows, calls):
+    ...     box, pitch = code_box(rows, calls)
+    ...     return round(pitch, 4), round(box.rect[1], 3), round(box.rect[3], 3)
+    >>> rows_in(10, calls=False), rows_in(8, calls=True), rows_in(10, calls=True)
+    ((0.3175, -2.85, 0.325), (0.3281, -2.3, 0.325), (0.28, -2.475, 0.325))
     """
     if rows * PSEUDOCODE_PITCH <= PANEL_CODE.height + 1e-9:
         return PANEL_CODE, PSEUDOCODE_PITCH
     left, _, right, top = PANEL_CODE.rect
-    bottom = code_floor(calls)
+    floors = [code_floor(True), code_floor(True, call_lines=1)] if calls else [code_floor(False)]
+    bottom = next((f for f in floors if (top - f) / rows >= PSEUDOCODE_LEAST_PITCH - 1e-9),
+                  floors[-1])
     pitch = max(PSEUDOCODE_LEAST_PITCH, min(PSEUDOCODE_PITCH, (top - bottom) / rows))
     top = max(top, bottom + rows * pitch)
     return Box((left + right) / 2, (top + bottom) / 2, right - left, top - bottom), pitch
