@@ -84,6 +84,10 @@ def test_a_long_pseudocode_keeps_its_size_and_its_rows_apart(calls):
     assert min(caps) >= LEAST_LINE
     boxes = sorted((row.get_bottom()[1], row.get_top()[1]) for row in panel.code)
     assert all(upper[0] > lower[1] for lower, upper in pairwise(boxes))  # rows apart
-    assert boxes[0][0] >= code_floor(calls)  # the last row (no descenders) above the floor
+    assert boxes[0][0] >= panel.code_box.rect[1] >= code_floor(calls, 1)  # the last row above
+    if calls:  # the code reaches below a call's two lines: a long call keeps to one, cut
+        panel._call_line("triangulate_monotone_piece(P, [A, B, C, D, E, F]) → [ABC, ACD, ADE]")
+        assert panel.call.original_text.endswith("…")
+        assert panel.call.get_top()[1] < panel.code.get_bottom()[1]
     assert panel.code.get_left()[0] >= PANEL_CODE.rect[0] - 1e-6
     assert panel.code.get_right()[0] <= PANEL_CODE.rect[2] + 1e-6
