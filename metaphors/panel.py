@@ -251,8 +251,9 @@ class Panel:
         """The pseudocode rows in the theme's font, indented by level, each placed by its
         baseline, at their size: never shrunk to fit a height (only a row wider than the
         panel is, which the reading rules then report). Rows that fit :data:`PANEL_CODE` one
-        every :data:`PSEUDOCODE_PITCH` are centred in it; more reach down to
-        :func:`code_floor`, closer (down to :data:`PSEUDOCODE_LEAST_PITCH`), then up."""
+        every :data:`PSEUDOCODE_PITCH` are centred in it; more reach from its top down to
+        :func:`code_floor`, closer (down to :data:`PSEUDOCODE_LEAST_PITCH`), then up
+        (:func:`code_box`)."""
         font, size = self.theme.font, self.theme.pseudocode_size
         rows = VGroup(*[
             tag(typeset.text(step.text.strip() or " ", font=font, size=size,
@@ -270,11 +271,11 @@ class Panel:
         if scale < 1.0:
             rows.scale(scale)
         self.code_scale = scale
-        # the block's lines, not its ink, centred in the box: its first line's middle half a
-        # pitch under the box's top
+        # the block's lines, not its ink, centred in the box (its ink is higher where its
+        # last row has no descenders)
         first_line = rows[0].get_y() - scale * offsets[0]
-        top = self.code_box.y + self.code_box.height / 2
-        rows.shift((self.code_box.x - rows.get_x(), top - scale * pitch / 2 - first_line, 0))
+        middle = self.code_box.y + scale * pitch * (len(rows) - 1) / 2
+        rows.shift((self.code_box.x - rows.get_x(), middle - first_line, 0))
         self.light_height = pitch * scale - 0.04
         self.line_y = [row.get_y() - scale * d for row, d in zip(rows, offsets, strict=True)]
         return rows
@@ -482,6 +483,7 @@ def code_box(rows: int, calls: bool) -> tuple[Box, float]:
                   floors[-1])
     pitch = max(PSEUDOCODE_LEAST_PITCH, min(PSEUDOCODE_PITCH, (top - bottom) / rows))
     top = max(top, bottom + rows * pitch)
+    bottom = top - rows * pitch  # the rows' own slots, from the top: no more
     return Box((left + right) / 2, (top + bottom) / 2, right - left, top - bottom), pitch
 
 
