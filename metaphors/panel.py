@@ -392,6 +392,7 @@ class Panel:
             return []
         self.call_text = text
         font, width = self.theme.mono_font, PANEL_CODE.width
+        new: Mobject
         if self.code_box.rect[1] < code_floor(True) - 1e-9:
             # the code reaches down to where a call's second line would stand: one line, cut
             new = typeset.text(_one_line(text, font, 20, width), font=font, size=20,
