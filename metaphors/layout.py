@@ -40,7 +40,9 @@ METAPHOR = Box(-3.45, -0.05, 5.6, 5.6)
 # the panel's polygon leaves room for its vertex labels (up to 0.47 outside it) below the title
 # and above the code
 PANEL_POLYGON = Box(3.6, 1.82, 4.6, 2.0)
-PANEL_CODE = Box(3.6, -0.95, 6.2, 2.55)
+#: where the panel's pseudocode stands (its lights run across it), 0.2 to 6.8 across: as wide
+#: as the frame's margin lets it, for rows at their size (the monotone sweep's widest, 6.4)
+PANEL_CODE = Box(3.5, -0.95, 6.6, 2.55)
 #: where the labels of the panel's polygon may stand: round it, under the title (its bottom
 #: 3.35) and over the code (its top 0.33), each 0.05 clear
 PANEL_LABELS = Box(3.6, 1.84, 5.8, 2.92)
@@ -301,6 +303,24 @@ def panel_column() -> Rect:
     code, a source) to the frame's right, top to bottom."""
     left = min(b.rect[0] for b in (PANEL_CODE, PANEL_LABELS, PANEL_SOURCE))
     return (left, BEYOND_FRAME[1], BEYOND_FRAME[2], BEYOND_FRAME[3])
+
+
+#: how far the call line reaches above :data:`PANEL_CALL_Y` (monospace, its brackets and
+#: descenders), on one line and wrapped to two (centred on it)
+CALL_LINE_REACH = {1: 0.14, 2: 0.315}
+
+
+def code_floor(calls: bool, call_lines: int = 2) -> float:
+    """The lowest the panel's code may reach: 0.035 above its call line of ``call_lines``
+    lines where the call line shows calls (a code reaching below a call's two lines keeps
+    its call line to one: :meth:`metaphors.panel.Panel._call_line`), else 0.1 above the
+    subtitles' two lines (:data:`SUBTITLE_TOP`).
+
+    >>> code_floor(True), code_floor(True, call_lines=1), code_floor(False)
+    (-2.3, -2.475, -2.85)
+    """
+    reach = CALL_LINE_REACH[call_lines]
+    return round(PANEL_CALL_Y + reach + 0.035 if calls else SUBTITLE_TOP + 0.1, 6)
 
 
 def call_line_area() -> Rect:

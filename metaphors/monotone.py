@@ -49,7 +49,6 @@ from metaphors.layout import (
     clear,
     free_place,
     grid,
-    panel_area,
     rects_at,
     ring_edges,
     subtitle_band,
@@ -163,7 +162,9 @@ def classify(board: Board, beat: Classify) -> None:
     it (:func:`_kind_place`), until the next beat's words come."""
     theme, data = board.theme, beat
     line = _sweep_line(board, data.at[1])
-    kind = tag(text(data.kind, font=theme.font, size=theme.label_size + 2,
+    # lower-case words ("merge": no letter above the x-height): four sizes up from the
+    # labels keeps them 2.5 % of the frame high, as the holes' labels are
+    kind = tag(text(data.kind, font=theme.font, size=theme.label_size + 4,
                     colour=theme.role_colour(_kind_role(data.kind))), None, "kind")
     # a summary's fast step ("Vertices 7–10: the same steps, faster") names no vertex: its
     # word would flash by, too fast to read, so there is none
@@ -375,7 +376,7 @@ def _taken(board: Board) -> BaseGeometry:
     corners = [tuple(board.at(p)[:2]) for p in board.polygon.points]
     panel = board.panel
     areas = [*areas_of((*board.markers.values(), board.title, *panel.mobjects())),
-             panel_area(panel.shows_polygon), call_line_area(), subtitle_band()]
+             panel.lit_area(), call_line_area(), subtitle_band()]
     return unary_union([Region(corners), *(box(*a) for a in areas)])
 
 

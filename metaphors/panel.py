@@ -46,6 +46,8 @@ from metaphors.layout import (
     Rect,
     around,
     clear,
+    code_floor,
+    panel_area,
     ring_edges,
 )
 from metaphors.listing import Row, Window, listing_rows, window_for
@@ -60,6 +62,12 @@ from story.pseudocode import PSEUDOCODE, SOURCE, PseudocodeRow
 #: the distance between the pseudocode's rows (scene units; less when more rows than fit are
 #: shown): 4.25 % of the frame's height, for rows of the theme's ``pseudocode_size``
 PSEUDOCODE_PITCH = 0.34
+#: the least distance between them: the font's size (rows set solid), at which a row's
+#: descenders keep 0.02 from the next row's brackets (a row's ink is 0.26 high at most). Rows
+#: are never shrunk to fit (their capitals would be under 2.5 % of the frame): a long
+#: pseudocode reaches lower, into the room the call line leaves, closer, then higher, its
+#: polygon shorter (the holes' sweep, 10 rows over a call line, fits at this pitch)
+PSEUDOCODE_LEAST_PITCH = 0.28
 #: how far a pseudocode row moves right for each level (two leading spaces) of indentation
 PSEUDOCODE_INDENT = 0.3
 #: the source's monospace size: its shortest row (``else:``, ``tests += 1``) is 0.23 units
@@ -77,16 +85,12 @@ class Panel:
 
     def __init__(self, points, labels, shown: str | None, theme: Theme = THEME, holes=()):
         self.theme = theme
-        polygon = Polygon(tuple(map(tuple, points)), tuple(labels), tuple(range(len(labels))))
-        self.frame = Frame(polygon.points, PANEL_POLYGON.center, PANEL_POLYGON.width,
-                           PANEL_POLYGON.height)
-        self.outline = tag(polygon_mobject(polygon, self.frame, theme, holes), "idle",
-                           "panel:polygon")
-        self.outline.set_fill(opacity=0.12)
-        self.markers = {
-            label: tag(m, "idle", f"panel:{label}")
-            for label, m in panel_markers(polygon, holes, self.frame, theme)
-        }
+        self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
+                               tuple(range(len(labels))))
+        self.holes = holes
+        self._draw_polygon(0.0)
+        #: the box the pseudocode's rows and lights take (:meth:`_pseudocode_block`)
+        self.code_box = PANEL_CODE
         self.mode = SOURCE
         self.code_lines = source_of(shown) if shown else ()
         self.pseudocode: tuple[PseudocodeRow, ...] = ()
@@ -137,6 +141,27 @@ class Panel:
         self.pseudocode = tuple(rows)
         self.later = later
         self.code = self._pseudocode_block()
+        if self.code_box.rect[3] > PANEL_CODE.rect[3] + 1e-9:  # the rows need the room
+            self._draw_polygon(self.code_box.rect[3] - PANEL_CODE.rect[3])
+
+    def _draw_polygon(self, raised: float) -> None:
+        """The panel's polygon and its markers, in :data:`PANEL_POLYGON` with its bottom (and
+        its labels' area's) ``raised`` by so much: the room a long pseudocode takes."""
+        box, area = (Box(b.x, b.y + raised / 2, b.width, b.height - raised)
+                     for b in (PANEL_POLYGON, PANEL_LABELS))
+        self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
+        self.outline = tag(polygon_mobject(self.polygon, self.frame, self.theme, self.holes),
+                           "idle", "panel:polygon")
+        self.outline.set_fill(opacity=0.12)
+        self.markers = {
+            label: tag(m, "idle", f"panel:{label}")
+            for label, m in panel_markers(self.polygon, self.holes, self.frame, self.theme, area)
+        }
+
+    def lit_area(self) -> Rect:
+        """The box the panel's lights run over: its pseudocode's (:attr:`code_box`, the whole
+        width under its polygon), or the source's (:func:`metaphors.layout.panel_area`)."""
+        return self.code_box.rect if self.shows_polygon else panel_area(False)
 
     @property
     def shows_polygon(self) -> bool:
@@ -223,8 +248,12 @@ class Panel:
         return VGroup(*parts)
 
     def _pseudocode_block(self) -> VGroup:
-        """The pseudocode rows in the theme's font, one every :data:`PSEUDOCODE_PITCH` (less
-        if they would not fit), indented by level, each placed by its baseline."""
+        """The pseudocode rows in the theme's font, indented by level, each placed by its
+        baseline, at their size: never shrunk to fit a height (only a row wider than the
+        panel is, which the reading rules then report). Rows that fit :data:`PANEL_CODE` one
+        every :data:`PSEUDOCODE_PITCH` are centred in it; more reach from its top down to
+        :func:`code_floor`, closer (down to :data:`PSEUDOCODE_LEAST_PITCH`), then up
+        (:func:`code_box`)."""
         font, size = self.theme.font, self.theme.pseudocode_size
         rows = VGroup(*[
             tag(typeset.text(step.text.strip() or " ", font=font, size=size,
@@ -233,18 +262,21 @@ class Panel:
         ])
         if not len(rows):
             return rows
+        self.code_box, pitch = code_box(len(rows), self.shows_calls)
         offsets = [_baseline_offset(row, font, size) for row in rows]
         for k, (row, step) in enumerate(zip(rows, self.pseudocode, strict=True)):
-            row.move_to((PSEUDOCODE_INDENT * step.depth, -k * PSEUDOCODE_PITCH, 0),
-                        aligned_edge=LEFT)
+            row.move_to((PSEUDOCODE_INDENT * step.depth, -k * pitch, 0), aligned_edge=LEFT)
             row.shift((0, offsets[k], 0))
-        height = len(rows) * PSEUDOCODE_PITCH
-        scale = min(1.0, PANEL_CODE.height / height, PANEL_CODE.width / rows.width)
+        scale = min(1.0, self.code_box.width / rows.width)
         if scale < 1.0:
             rows.scale(scale)
         self.code_scale = scale
-        rows.move_to((PANEL_CODE.x, PANEL_CODE.y, 0))
-        self.light_height = PSEUDOCODE_PITCH * scale - 0.04
+        # the block's lines, not its ink, centred in the box (its ink is higher where its
+        # last row has no descenders)
+        first_line = rows[0].get_y() - scale * offsets[0]
+        middle = self.code_box.y + scale * pitch * (len(rows) - 1) / 2
+        rows.shift((self.code_box.x - rows.get_x(), middle - first_line, 0))
+        self.light_height = pitch * scale - 0.04
         self.line_y = [row.get_y() - scale * d for row, d in zip(rows, offsets, strict=True)]
         return rows
 
@@ -335,7 +367,7 @@ class Panel:
             return []
         row = self.code[index]
         # rows to light: the pseudocode is shown, and with it the lights' height
-        light = self._light(cast(float, self.light_height), self.line_y[index], PANEL_CODE)
+        light = self._light(cast(float, self.light_height), self.line_y[index], self.code_box)
         copy = tag(row.copy().set_color(self.theme.ink), "called", row.name)
         return self._relight(index, light, copy)
 
@@ -361,9 +393,15 @@ class Panel:
         if text == self.call_text:
             return []
         self.call_text = text
-        new = tag(typeset.wrapped(text, font=self.theme.mono_font, size=20,
-                                  colour=self.theme.ink, width=PANEL_CODE.width),
-                  "called", "panel:call")
+        font, width = self.theme.mono_font, PANEL_CODE.width
+        new: Mobject
+        if self.code_box.rect[1] < code_floor(True) - 1e-9:
+            # the code reaches down to where a call's second line would stand: one line, cut
+            new = typeset.text(_one_line(text, font, 20, width), font=font, size=20,
+                               colour=self.theme.ink)
+        else:
+            new = typeset.wrapped(text, font=font, size=20, colour=self.theme.ink, width=width)
+        new = tag(new, "called", "panel:call")
         new.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         # the old one is cut, not faded out: two calls fading through each other in one
         # place are unreadable (issue 22: never two texts over each other)
@@ -388,6 +426,21 @@ def _note(lines: int, where: str) -> str:
     return f"⋮ {lines} line{'s' if lines != 1 else ''} {where}" if lines else ""
 
 
+def _one_line(text: str, font: str, size: float, width: float) -> str:
+    """``text`` cut at its end, with an ellipsis, to fit ``width`` at ``size``.
+
+    >>> _one_line("nearest_to(B, [D, E]) → D", "DejaVu Sans Mono", 20, 9.0)
+    'nearest_to(B, [D, E]) → D'
+    >>> _one_line("nearest_to(B, [D, E]) → D", "DejaVu Sans Mono", 20, 2.5)
+    'nearest_to(B,…'
+    """
+    cut = text
+    while len(cut) > 1 and typeset.natural_width(
+            cut if cut == text else cut + "…", font, size) > width:
+        cut = cut[:-1].rstrip()
+    return cut if cut == text else cut + "…"
+
+
 def _ink_left(string: str, font: str, size: float) -> float:
     """How far right of where its first cell starts a text's ink starts, less the same for
     ``M``: placed by their ink, monospace rows would be out of line by their first glyphs'
@@ -408,6 +461,33 @@ def _baseline_offset(row, font: str, size: float) -> float:
     with_bar = typeset.outline(row.original_text + " |", font, float(size))
     own = typeset.outline(row.original_text, font, float(size))
     return float(with_bar[0][1] - own[0][1]) if len(with_bar) and len(own) else 0.0
+
+
+def code_box(rows: int, calls: bool) -> tuple[Box, float]:
+    """The box ``rows`` pseudocode rows take and their pitch: :data:`PANEL_CODE` when they fit
+    it at :data:`PSEUDOCODE_PITCH`; else from its top down to :func:`code_floor` (above a
+    call line of two lines, or, if the rows need it, of one), a pitch as close as they need
+    (no closer than :data:`PSEUDOCODE_LEAST_PITCH`); else higher than its top (the panel's
+    polygon makes room: :meth:`Panel._draw_polygon`).
+
+    >>> code_box(6, calls=True)[0] == PANEL_CODE, code_box(6, calls=True)[1]
+    (True, 0.34)
+    >>> def rows_in(rows, calls):
+    ...     box, pitch = code_box(rows, calls)
+    ...     return round(pitch, 4), round(box.rect[1], 3), round(box.rect[3], 3)
+    >>> rows_in(10, calls=False), rows_in(8, calls=True), rows_in(10, calls=True)
+    ((0.3175, -2.85, 0.325), (0.3281, -2.3, 0.325), (0.28, -2.475, 0.325))
+    """
+    if rows * PSEUDOCODE_PITCH <= PANEL_CODE.height + 1e-9:
+        return PANEL_CODE, PSEUDOCODE_PITCH
+    left, _, right, top = PANEL_CODE.rect
+    floors = [code_floor(True), code_floor(True, call_lines=1)] if calls else [code_floor(False)]
+    bottom = next((f for f in floors if (top - f) / rows >= PSEUDOCODE_LEAST_PITCH - 1e-9),
+                  floors[-1])
+    pitch = max(PSEUDOCODE_LEAST_PITCH, min(PSEUDOCODE_PITCH, (top - bottom) / rows))
+    top = max(top, bottom + rows * pitch)
+    bottom = top - rows * pitch  # the rows' own slots, from the top: no more
+    return Box((left + right) / 2, (top + bottom) / 2, right - left, top - bottom), pitch
 
 
 # --- the panel polygon's labels: each clear of the outline, the dots and the other labels -------

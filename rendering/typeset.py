@@ -54,7 +54,25 @@ _SVG = "{http://www.w3.org/2000/svg}"
 _HREF = "{http://www.w3.org/1999/xlink}href"
 
 
-class FlatText(VMobject):
+class Lettered:
+    """A text that knows how tall its letters stand, as drawn: what a viewer reads its size by
+    (not its box, which holds descenders, and for several lines the gaps between them).
+    :func:`text` and :func:`glyphs` measure it as they typeset (:func:`letter_height`)."""
+
+    #: its letters' height and its ink's height as typeset (0: not measured)
+    set_letters = 0.0
+    set_height = 0.0
+    height: float  # the ink's height now (manim's Mobject)
+
+    def cap_height(self) -> float | None:
+        """Its letters' height now: as typeset, scaled with the text since (None: not
+        measured). The scene graph writes it (``cap``, docs/scene-graph.md)."""
+        if self.set_height <= 0:
+            return None
+        return self.set_letters * self.height / self.set_height
+
+
+class FlatText(Lettered, VMobject):
     """A line of text as one ``VMobject``: the outline of manim's ``Text`` with its glyphs
     merged into one path. ``original_text`` is the string (scene-graph snapshots read it)."""
 
@@ -67,7 +85,7 @@ class FlatText(VMobject):
             self.set_points(points)
 
 
-class GlyphText(VGroup):
+class GlyphText(Lettered, VGroup):
     """A line of text as a group of glyphs, as manim's ``Text`` is, so that ``Write`` writes
     it glyph after glyph. For the few texts that are written (titles); the same outline as
     :class:`FlatText`, cut where one glyph ends and the next begins."""
@@ -86,14 +104,62 @@ def text(string: str, *, size: float, colour: str | None = None, font: str = DEF
     """A :class:`FlatText` of ``string`` in ``font`` at ``size`` (manim's ``font_size``), filled
     with ``colour`` (default: the theme's ink); shrunk to ``width`` if it is wider."""
     points = outline(string, font, float(size), slant, weight)
-    return _fit(FlatText(string, points.copy(), color=colour or DEFAULT_INK), width)
+    flat = _measured(FlatText(string, points.copy(), color=colour or DEFAULT_INK),
+                     font, float(size), slant, weight)
+    return _fit(flat, width)
 
 
 def glyphs(string: str, *, size: float, colour: str | None = None, font: str = DEFAULT_FONT,
            slant: str = NORMAL, weight: str = NORMAL, width: float | None = None) -> GlyphText:
     """A :class:`GlyphText` of ``string``: for text that is written with ``Write``."""
-    points, ends = _typeset(string, font, float(size), slant, weight)
-    return _fit(GlyphText(string, points.copy(), ends, colour or DEFAULT_INK), width)
+    points, ends, _ = _typeset(string, font, float(size), slant, weight)
+    written = _measured(GlyphText(string, points.copy(), ends, colour or DEFAULT_INK),
+                        font, float(size), slant, weight)
+    return _fit(written, width)
+
+
+def _measured(mobject, font: str, size: float, slant: str, weight: str):
+    """The text, told its letters' height and its ink's height as typeset."""
+    mobject.set_letters = letter_height(mobject.original_text, font, size, slant, weight)
+    mobject.set_height = mobject.height if mobject.has_points() or mobject.submobjects else 0.0
+    return mobject
+
+
+#: the letter whose height is a font's capitals' height
+CAPITAL = "H"
+
+
+def letter_height(string: str, font: str = DEFAULT_FONT, size: float = 48.0,
+                  slant: str = NORMAL, weight: str = NORMAL) -> float:
+    """How tall the letters of ``string`` stand, set in ``font`` at ``size``: the height of
+    its ink above the baseline, no more than a capital's (:data:`CAPITAL`: an ``f`` or a
+    bracket reaching above the capitals does not make a text read larger). Its capitals'
+    height, then, or its tallest glyphs' where they are shorter (``a₂``, ``ears``: the
+    x-height; a ``✓``, which stands off the baseline: its own). A text of several lines: its
+    shortest line's. What a viewer reads its size by: no descenders, no gaps between lines.
+
+    >>> capital = letter_height("H", size=20)
+    >>> letter_height("B = the left-most vertex (lowest on ties)", size=20) == capital
+    True
+    >>> round(letter_height("a₂", size=26) / letter_height("A", size=26), 2)  # the x-height
+    0.77
+    >>> letter_height("n − 2 = 13 − 2\\n= 11 triangles", size=26) == letter_height("H", size=26)
+    True
+    """
+    capital = _above_baseline(CAPITAL, font, size, slant, weight) or 0.0
+    heights = [_above_baseline(line, font, size, slant, weight)
+               for line in string.split("\n") if line.strip()]
+    return min([capital, *(h for h in heights if h is not None)])
+
+
+def _above_baseline(line: str, font: str, size: float, slant: str, weight: str) -> float | None:
+    """The height of the part of one line's ink above its baseline (None: a line typeset by
+    ``Text``, whose baseline this module does not read)."""
+    points, _, baseline = _typeset(line, font, size, slant, weight)
+    if baseline is None or not len(points):
+        return None
+    ys = points[:, 1]
+    return float(ys.max() - max(baseline, ys.min()))
 
 
 _OPERATORS = frozenset("−+·×=")
@@ -191,7 +257,7 @@ def outline(string: str, font: str, size: float, slant: str = NORMAL,
 
 
 def _typeset(string: str, font: str, size: float, slant: str,
-             weight: str) -> tuple[np.ndarray, tuple[int, ...]]:
+             weight: str) -> tuple[np.ndarray, tuple[int, ...], float | None]:
     """:func:`_layout` at the pixel size of the current configuration."""
     return _layout(string, font, size, slant, weight, config["pixel_width"],
                    config["pixel_height"])
@@ -206,18 +272,21 @@ def forget() -> None:
 
 @lru_cache(maxsize=4096)
 def _layout(string: str, font: str, size: float, slant: str, weight: str, width: int,
-            height: int) -> tuple[np.ndarray, tuple[int, ...]]:
-    """(points, ends): the outline and the index where each glyph's points end. ``width`` and
-    ``height`` are the pixel size Pango lays the text out in (it wraps at the width)."""
+            height: int) -> tuple[np.ndarray, tuple[int, ...], float | None]:
+    """(points, ends, baseline): the outline, the index where each glyph's points end, and the
+    height of the baseline in the outline's units (None: typeset by ``Text``, which does not
+    say). ``width`` and ``height`` are the pixel size Pango lays the text out in (it wraps at
+    the width)."""
     placed = None
     if "\n" not in string and "\t" not in string:
         placed = _placed_glyphs(_svg(string, font, size, slant, weight, width, height))
+    baseline: float | None = None
     if placed is None:
         points, ends = _from_text(string, font, size, slant, weight)
     else:
-        points, ends = _compose(placed)
+        points, ends, baseline = _compose(placed)
     points.setflags(write=False)
-    return points, ends
+    return points, ends, baseline
 
 
 # --- the fast path: Pango's SVG, glyphs read once ---------------------------------------------------
@@ -361,15 +430,18 @@ def _closed(points: np.ndarray) -> np.ndarray:
     return np.concatenate(out)
 
 
-def _compose(glyphs: list[tuple[str, float, float]]) -> tuple[np.ndarray, tuple[int, ...]]:
+def _compose(glyphs: list[tuple[str, float, float]]
+             ) -> tuple[np.ndarray, tuple[int, ...], float | None]:
     """The glyphs moved into place, then ``Text``'s transform: y up, centred, scaled to manim
-    units; and where each glyph's points end."""
+    units; where each glyph's points end; and the line's baseline, transformed alike (a glyph
+    is placed by its origin, on the baseline: one line's glyphs share its height)."""
     points, ends = _joined([_glyph(d) + np.array([x, y, 0.0]) for d, x, y in glyphs])
     if not ends:
-        return points, ends
+        return points, ends, None
     points = points * (1.0, -1.0, 0.0)
     centre = (points.min(axis=0) + points.max(axis=0)) / 2
-    return (points - centre) * TEXT_MOB_SCALE_FACTOR, ends
+    baseline = (-glyphs[0][2] - centre[1]) * TEXT_MOB_SCALE_FACTOR
+    return (points - centre) * TEXT_MOB_SCALE_FACTOR, ends, float(baseline)
 
 
 def _from_text(string: str, font: str, size: float, slant: str, weight: str

@@ -5,7 +5,7 @@ A *scene graph* lists every ``play`` call of a scene in order (``wait`` is a pla
 run time and its mobjects. A mobject is written as its type, its role (``trex_role``, set
 by :func:`metaphors.panel.tag`), its name, stroke and fill colours as hex (with opacities
 and stroke width), and its points rounded to 1e-3; a ``Text`` is written as its string and
-its bounding box instead of its glyphs; submobjects follow recursively. The mobjects on
+its bounding box instead of its glyphs (and its letters' height, ``cap``, if it says it); submobjects follow recursively. The mobjects on
 screen when the scene ends close the graph (``final``), and the subtitles of its ``.srt``
 follow (``cues``). The document is versioned
 (``"schema": "trex-scene-graph/1"``, :mod:`trex.graph_format`); docs/scene-graph.md
@@ -97,11 +97,22 @@ def _text_of(mobject: Mobject) -> str | None:
     return None
 
 
+def _letters(mobject: Mobject, node: dict[str, Any]) -> None:
+    """A text that says how tall its letters stand as drawn (a ``cap_height()`` method, as
+    :class:`rendering.typeset.FlatText` has) has it written as ``cap``: what a viewer reads
+    its size by, which its box, holding descenders and the gaps between lines, is not."""
+    measure = getattr(mobject, "cap_height", None)
+    height = measure() if callable(measure) else None
+    if isinstance(height, int | float):
+        node["cap"] = _number(height)
+
+
 def mobject_graph(mobject: Mobject) -> dict[str, Any]:
     """A mobject as plain data: type, role, name, colours, rounded points, submobjects.
 
     Text-like mobjects (anything with an ``original_text`` or ``tex_string``) are written
-    as their string and rounded bounding box; their glyphs are left out.
+    as their string and rounded bounding box (and, where the text says it, its letters'
+    height: :func:`_letters`); their glyphs are left out.
 
     Examples
     --------
@@ -138,6 +149,7 @@ def mobject_graph(mobject: Mobject) -> dict[str, Any]:
         if mobject.has_points() or mobject.submobjects:
             low, high = mobject.get_corner((-1, -1, 0)), mobject.get_corner((1, 1, 0))
             node["box"] = [_number(v) for v in (*low[:2], *high[:2])]
+            _letters(mobject, node)
         else:
             node["box"] = None
         return node
