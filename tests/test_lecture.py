@@ -906,8 +906,9 @@ def test_a_run_played_again_is_a_replay_and_one_step_per_piece_is_not():
         "2 × '✗ BD is not an inner diagonal: BD crosses edge E–A' (Scaling)"]
     overview = next(c for c in lecture_chapters() if c.slug == "overview")
     steps = shown_steps(build(_chapter_class(overview).handed()).data)
+    # (the second ask also says what grey means: the same question, not the same words)
     asked = [s for s in steps if s[2] == "Find an inner diagonal of this polygon"]
-    assert len(asked) >= 4 and len({s[:3] for s in asked}) < len(asked)  # same words …
+    assert len(asked) >= 3 and len({s[:3] for s in asked}) < len(asked)  # same words …
     assert len(set(asked)) == len(asked)  # … over another piece each time
 
 
