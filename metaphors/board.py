@@ -10,6 +10,7 @@ been read (:mod:`metaphors.captions`).
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from dataclasses import replace
 from typing import Any, TypeAlias
 
 import numpy as np
@@ -55,6 +56,9 @@ WORDS_Z = 10
 #: their own z-index would tint a label (chapter 1's M and G under the triangulation) or
 #: run through it (chapter 2's clock hand through F)
 LABEL_Z = 5
+
+#: how near (scene units) a point of a metaphor object comes to a vertex to be drawn from it
+HELD = 1e-3
 
 #: what a play takes: an animation, a mobject's ``.animate`` (its builder, or the mobject)
 Playable: TypeAlias = Animation | Mobject | _AnimationBuilder
@@ -187,6 +191,7 @@ class Board:
         # A marker the beat already animates (a pulse) is recoloured after the play: two
         # animations of one mobject in one play would cancel the first.
         busy = {id(getattr(a, "mobject", None)) for a in anims}
+        beat = replace(beat, roles=self.held_roles(beat.roles))
         recolour, after = self._recolour(beat.roles, busy, at_rest)
         action = [*anims, *self.panel.follow_roles(beat, at_rest, self.focus), *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
@@ -243,6 +248,29 @@ class Board:
                         mobject.set_z_index(z)
                     bottom.append(mobject)
         self.scene.bring_to_back(*bottom)
+
+    def held_roles(self, roles: Mapping[str, str]) -> Mapping[str, str]:
+        """``roles``, and the object the call ran on (blue) kept so while a tool or a claim
+        drawn from its vertex stays on the picture (:meth:`held`): the call's work on it is
+        still seen (gravity's band hanging from C while the ball slides, T drawn round B,
+        the vertex it was built on). Before, the vertex lapsed as the step after it named it
+        no more, and went grey, blue again, in a second."""
+        lapsed = {label for label, was in self.roles.items()
+                  if was == "called" and roles.get(label, "idle") == "idle"}
+        kept = lapsed & self.held()
+        return {**roles, **dict.fromkeys(kept, "called")} if kept else roles
+
+    def held(self) -> set[str]:
+        """The labels of the vertices a metaphor object on the picture (not one going with
+        the next words, :attr:`passing`) has a point on: a band's anchor, a triangle's corner."""
+        going = {id(m) for m in self.passing.values()}
+        points = [m.get_all_points() for m in self.objects.values() if id(m) not in going]
+        points = [p[:, :2] for p in points if len(p)]
+        if not points:
+            return set()
+        drawn = np.concatenate(points)
+        return {label for label in self.markers
+                if np.min(np.linalg.norm(drawn - self.vertex(label)[:2], axis=1)) < HELD}
 
     def _recolour(self, roles: Mapping[str, str], busy: set[int],
                   at_rest: bool = False) -> tuple[list, list]:

@@ -317,17 +317,23 @@ def new_colour(marker: Mobject, label: str, role: str, was: str, theme: Theme,
     """The colour a vertex marker changes to for ``role`` (it was in role ``was``), None if it
     stays as drawn. ``at_rest``: its ink. ``focus``: the labels of the part of P the call runs
     on (divide and conquer's piece): an idle vertex in it is in its ink, one outside it grey,
-    so that grey says "not in this polygon"; None (all of P): a marker changes only with its
-    role, and an idle one that never had another stays in the ink it was drawn in."""
+    so that grey says "not in this polygon" (as chapter 1 says it); None (all of P): a
+    marker changes only with its role, and an idle one is in the ink it was drawn in, like
+    those never in a call. Grey there told apart "was in a call" from "never was", which no
+    caption says: B, C, A, L and B went grey in chapters 2 to 6 while the picture still
+    used them (gravity's band hung from C), blue or green again a second later."""
     if at_rest:
         colour = theme.ink
-    elif focus is not None and role == "idle":
-        colour = theme.ink if label in focus else theme.idle
+    elif role == "idle":
+        if focus is None and was == role:
+            return None
+        colour = theme.idle if focus is not None and label not in focus else theme.ink
     elif focus is None and was == role:
         return None
     else:
         colour = theme.role_colour(role)
-    return None if (at_rest or focus is not None) and drawn_in(marker, colour) else colour
+    kept = at_rest or focus is not None or role == "idle"
+    return None if kept and drawn_in(marker, colour) else colour
 
 
 def drawn_in(marker: Mobject, colour: str) -> bool:

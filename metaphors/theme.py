@@ -15,7 +15,9 @@ argument      amber       a call's other inputs while it runs; a diagonal being 
 result        green       what a call gives; a correct claim; a triangulation's count
 rejected      red         fails: a wrong claim, its part outside P, the crossed edge,
                           a vertex inside a triangle that is not an ear — never a kind
-idle          grey        everything not in the current call
+idle          grey        everything not in the current call: the code's rows; a vertex
+                          outside the piece divide and conquer works on (said in
+                          chapter 1); elsewhere a vertex out of the call is in its ink
 candidate     pink        a vertex in T a heuristic may pick: neutral, neither claimed
                           nor judged (the one it picks turns amber, the claim to be)
 split         cyan        a split vertex of the monotone sweep (a kind, not a verdict)

@@ -686,6 +686,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # no label touches the ball (the counterexample's C at rest under it)
     assert early_snags(data) == [], chapter.slug
     assert labels_on_the_ball(data) == [], chapter.slug
+    # grey: a vertex greyed only where a caption has said what grey means (chapters 2 to 6
+    # greyed B, C, A, L and B for a second, unsaid: gravity's C while the band hung from it)
+    assert unexplained_grey(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
@@ -797,6 +800,29 @@ def test_a_card_with_a_figure_is_not_text_alone():
     alone, total = text_only_seconds(build(TwoCards.handed()).data)
     # the first card counts, from its title's coming to its going; the second does not
     assert 1.3 <= alone < total / 2
+
+
+@pytest.mark.parametrize("slug, label", [("heuristics", "B"), ("gravity", "C"),
+                                         ("exercises", "B")])
+def test_the_vertex_a_tool_or_claim_is_drawn_from_keeps_its_colour(slug, label):
+    """Grey: the vertex a call runs on keeps its blue while what is drawn from it stays (T
+    round B, gravity's band hanging from C), until its claim is judged: B went grey as T was
+    drawn round it, C while the band hung from it and the ball slid, blue again a second
+    later. Its recolours up to the verdict: none to its ink or grey."""
+    from metaphors.theme import THEME
+    from tests.reading_rules import _recorded_all
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    chapter = next(c for c in lecture_chapters() if c.slug == slug)
+    data = build(_chapter_class(chapter).handed()).data
+    colours = [(node.get("fill") or "").upper() for play in data["plays"]
+               for kind, node in _recorded_all(play)
+               if kind == "_MethodAnimation" and node.get("name") == f"vertex:{label}"]
+    verdicts = {THEME.result.upper(), THEME.rejected.upper()}
+    first = next(k for k, colour in enumerate(colours) if colour in verdicts)
+    lapsed = {THEME.ink.upper(), THEME.idle.upper()} & set(colours[:first])
+    assert not lapsed, (slug, label, colours[:first + 1])
 
 
 def test_the_overview_poses_the_problem_with_a_black_box():
