@@ -150,7 +150,10 @@ def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
                                stroke_width=theme.stroke * 1.6), "result",
                           "figure:inner-diagonal"))
     count = f"n = {n}: {len(triangles)} triangles, {len(cuts)} inner diagonals"
-    return [*pieces, *marked, figure_caption(BOX, theme, (count, theme.result))]
+    # the green diagonal and the count naming inner diagonals with the line that says what
+    # an inner one is (before: from the title, the diagonal unexplained for 9 s)
+    return [*pieces, *(comes_with(m, "inner") for m in marked),
+            comes_with(figure_caption(BOX, theme, (count, theme.result)), "inner")]
 
 
 def _diagonal(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list[Mobject]:

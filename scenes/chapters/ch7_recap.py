@@ -43,7 +43,7 @@ class Recap(LectureScene):
         assert all(_claim(h) == (right_claim, "") for h in HOLDING), "the holding rules differ"
         return (
             Card("Recap: the rules that fail", (
-                f"{_names(FAILING, first=True)} all claim {wrong_claim}.",
+                f"{_names(FAILING, first=True)} all claim {wrong_claim}, which is not inner.",
                 f"{why}: one polygon of five vertices defeats all three.",
                 "Their motion leaves P before it reaches the vertex it picks."),
                 Figure("claims", POLYGON, heuristics=()),
