@@ -24,6 +24,13 @@ def comes_with(part: Mobject, word: str) -> Mobject:
     return part
 
 
+def said_only(part: Mobject, word: str) -> Mobject:
+    """``part``, as :func:`comes_with`, but left out of a card none of whose lines names
+    ``word`` (the frame card's "is BG inner?" line, drawn only where a line asks it)."""
+    vars(part)["trex_only_said"] = True
+    return comes_with(part, word)
+
+
 def grows(part: Mobject, drawn_at: Callable[[float], Mobject]) -> Mobject:
     """``part`` (``drawn_at(1.0)``), to come in drawn as ``drawn_at(t)`` while t runs from 0
     to 1. Returns it."""
@@ -33,13 +40,17 @@ def grows(part: Mobject, drawn_at: Callable[[float], Mobject]) -> Mobject:
 
 def steps(parts: Sequence[Mobject], lines: Sequence[str]) -> list[list[Mobject]]:
     """``parts`` by when they come in: the first list with the card's title, then one per
-    line of ``lines``; a part whose word no line names comes with the title."""
+    line of ``lines``; a part whose word no line names comes with the title (unless it is
+    :func:`said_only`)."""
     shown: list[list[Mobject]] = [[] for _ in range(len(lines) + 1)]
     for part in parts:
         word = vars(part).get("trex_with")
         said = (k + 1 for k, line in enumerate(lines)
                 if word == "" or re.search(rf"(?<!\w){re.escape(str(word))}(?!\w)", line))
-        shown[0 if word is None else next(said, 0)].append(part)
+        at = 0 if word is None else next(said, None)
+        if at is None and vars(part).get("trex_only_said"):
+            continue
+        shown[at or 0].append(part)
     return shown
 
 
@@ -59,4 +70,4 @@ def done_by(share: float) -> Callable[[float], float]:
     return lambda t: smooth(min(1.0, t / share))
 
 
-__all__ = ["GROW", "comes_with", "coming", "done_by", "grows", "steps"]
+__all__ = ["GROW", "comes_with", "coming", "done_by", "grows", "said_only", "steps"]

@@ -24,6 +24,7 @@ from manim import (
     UP,
     UR,
     Circle,
+    DashedLine,
     Dot,
     Line,
     Mobject,
@@ -44,7 +45,7 @@ from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mob
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_metaphors import metaphor_parts
 from metaphors.figure_plots import Area, Series, axis_names, line_plot
-from metaphors.figure_steps import comes_with
+from metaphors.figure_steps import comes_with, said_only
 from metaphors.labels import drawn_edges, measured_markers, placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
@@ -114,7 +115,8 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
 
 #: the parts whose lines cut P's fill: a label across one stands on two colours, or on the
 #: line (chapter 1's G stood on the triangulation's side B–E, M beside the diagonal BM)
-_CUTTING = ("figure:triangle", "figure:inner-diagonal", "figure:diagonal")
+_CUTTING = ("figure:triangle", "figure:inner-diagonal", "figure:diagonal", "figure:T",
+            "figure:pick")
 
 
 def _vertices(polygon: Polygon, frame: Frame, theme: Theme, parts: list[Mobject]) -> Mobject:
@@ -210,8 +212,17 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
     # T with the line that names it, the candidates with the one that speaks of them (on a
     # card that says neither, with its title)
     caption = figure_caption(BOX, theme, (words, theme.ink))
+    # the first candidate's claim to be, dashed amber (not yet judged), with the line that
+    # asks of it ("is BG inner?": BG was said and never drawn)
+    asked = [said_only(tag(DashedLine(frame.to_scene(polygon.points[t.b.index]),
+                                      frame.to_scene(polygon.points[inside[0]]),
+                                      color=theme.argument, stroke_width=theme.stroke,
+                                      dash_length=theme.dash_length * 1.5),
+                           "argument", "figure:pick"),
+                       f"{polygon.labels[t.b.index]}{polygon.labels[inside[0]]}")
+             for _ in inside[:1]]
     return [comes_with(shaded, "T"), *(comes_with(d, "candidate") for d in dots), *kinds,
-            comes_with(caption, "candidate")]
+            *asked, comes_with(caption, "candidate")]
 
 
 def ringed_reflex(polygon_spec: str, theme: Theme = THEME) -> str | None:

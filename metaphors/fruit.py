@@ -254,6 +254,36 @@ def _backing(board: Board, lines: VGroup) -> VGroup | None:
 CUT_WIDTH = 1.6
 
 
+def _shrunk(board: Board, beat: Slice) -> Playable:
+    """The fruit shrinking to the rest after a slice. A fruit still drawn with its holes
+    (three rings) first becomes, unseen, the one keyholed ring it is (its keyholes' dark
+    slits show the same shape): morphed from three rings into one, it broke into shards and
+    loose vertices for half a second (chapter 4 at 140.3 s, review s35)."""
+    before = _with_ear(beat)
+    if len(board.outline.get_subpaths()) > 1 and before:
+        board.outline.become(_fruit(board, before))
+        # and to the rest as a ring of as many points, the ear's vertex sliding onto the
+        # middle of its diagonal (one point fewer, the keyholed ring's bridges misaligned
+        # and tore it as badly): clip puts the rest's own ring in after the play
+        a, _, c = beat.points
+        middle = ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2)
+        k = before.index((float(beat.points[1][0]), float(beat.points[1][1])))
+        return Transform(board.outline, _fruit(board, [*before[:k], middle, *before[k + 1:]]))
+    return Transform(board.outline, _fruit(board, beat.rest))
+
+
+def _with_ear(beat: Slice) -> list[Point]:
+    """The ring before ``beat``'s slice: its rest with the ear's vertex back between the
+    ear's two other corners, either way round (a keyholed ring passes a bridge's ends
+    twice); [] if they are not side by side in it."""
+    a, b, c = ((float(p[0]), float(p[1])) for p in beat.points)
+    rest = [(float(p[0]), float(p[1])) for p in beat.rest]
+    for k, p in enumerate(rest):
+        if {p, rest[(k + 1) % len(rest)]} == {a, c}:
+            return [*rest[:k + 1], b, *rest[k + 1:]]
+    return []
+
+
 def keyhole(board: Board, beat: Keyhole) -> None:
     """A hole opens to the rind: the knife cuts from the hole's vertex P to M, and the cut
     stays, a dark slit (:data:`CUT_WIDTH`), for the slicing to go round."""
@@ -302,7 +332,7 @@ def clip(board: Board, beat: Slice) -> None:
                              Replace(counter, board.objects.get("counter"))]
     board.keep("counter", counter)
     if data.rest:
-        anims.append(Transform(board.outline, _fruit(board, data.rest)))
+        anims.append(_shrunk(board, data))
         anims += _sliced_off(board, data.rest, target.get_center())
         anims += _labels_off_fruit(board, data.rest)
     else:  # the last slice: the keyhole cuts go (no fruit is left round them); the fruit's
@@ -311,6 +341,8 @@ def clip(board: Board, beat: Slice) -> None:
     anims += _good_shrinks(board, data.good)
     board.scene.add(piece)
     board.play(beat, *anims, run_time=1.0)
+    if data.rest:  # the same shape, as the rest's own ring (:func:`_shrunk`)
+        board.outline.become(_fruit(board, data.rest))
     board.keep(f"slice:{data.k}", piece)
     if data.triangulation:
         _whole(board, beat)
