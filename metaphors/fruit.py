@@ -259,7 +259,7 @@ def _shrunk(board: Board, beat: Slice) -> Playable:
     (three rings) first becomes, unseen, the one keyholed ring it is (its keyholes' dark
     slits show the same shape): morphed from three rings into one, it broke into shards and
     loose vertices for half a second (chapter 4 at 140.3 s, review s35)."""
-    before = _with_ear(beat)
+    before, k = _with_ear(beat)
     if len(board.outline.get_subpaths()) > 1 and before:
         board.outline.become(_fruit(board, before))
         # and to the rest as a ring of as many points, the ear's vertex sliding onto the
@@ -267,21 +267,21 @@ def _shrunk(board: Board, beat: Slice) -> Playable:
         # and tore it as badly): clip puts the rest's own ring in after the play
         a, _, c = beat.points
         middle = ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2)
-        k = before.index((float(beat.points[1][0]), float(beat.points[1][1])))
         return Transform(board.outline, _fruit(board, [*before[:k], middle, *before[k + 1:]]))
     return Transform(board.outline, _fruit(board, beat.rest))
 
 
-def _with_ear(beat: Slice) -> list[Point]:
-    """The ring before ``beat``'s slice: its rest with the ear's vertex back between the
-    ear's two other corners, either way round (a keyholed ring passes a bridge's ends
-    twice); [] if they are not side by side in it."""
+def _with_ear(beat: Slice) -> tuple[list[Point], int]:
+    """The ring before ``beat``'s slice and where the ear's vertex stands in it: the rest
+    with that vertex back between the ear's two other corners, either way round (a
+    keyholed ring passes a bridge's ends twice, so the place is returned, not looked up);
+    ([], 0) if they are not side by side in it."""
     a, b, c = ((float(p[0]), float(p[1])) for p in beat.points)
     rest = [(float(p[0]), float(p[1])) for p in beat.rest]
     for k, p in enumerate(rest):
         if {p, rest[(k + 1) % len(rest)]} == {a, c}:
-            return [*rest[:k + 1], b, *rest[k + 1:]]
-    return []
+            return [*rest[:k + 1], b, *rest[k + 1:]], k + 1
+    return [], 0
 
 
 def keyhole(board: Board, beat: Keyhole) -> None:
