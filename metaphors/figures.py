@@ -95,7 +95,8 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
     if figure.kind == "metaphor":
-        vertices = tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices")  # its run is read from the polygon's spec, not the polygon
+        vertices = tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
+        # its run is read from the polygon's spec, not the polygon
         under, over, said = metaphor_parts(figure.heuristic, figure.polygon or polygon_spec,
                                            frame, theme, _bounds()) if polygon.n >= 4 else (
             [], [], "a triangle: no diagonal to find")

@@ -306,12 +306,6 @@ def seen_from(at: np.ndarray, centre: np.ndarray, edges: Sequence[Segment]) -> b
                       edges)[0])
 
 
-__all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "drawn_edges",
-           "measured_markers", "new_colour", "off_the_fill", "outward", "place_labels",
-           "place_ring_labels", "placed_vertex_markers", "places_round", "seen_from"]
-
-
-
 def new_colour(marker: Mobject, label: str, role: str, was: str, theme: Theme,
                focus: frozenset[str] | None, at_rest: bool = False) -> str | None:
     """The colour a vertex marker changes to for ``role`` (it was in role ``was``), None if it
@@ -339,3 +333,8 @@ def new_colour(marker: Mobject, label: str, role: str, was: str, theme: Theme,
 def drawn_in(marker: Mobject, colour: str) -> bool:
     """Whether every part of a vertex marker (its dot, its label) is drawn in ``colour``."""
     return all(part.get_color().to_hex().lower() == colour.lower() for part in marker)
+
+
+__all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "drawn_edges",
+           "measured_markers", "new_colour", "off_the_fill", "outward", "place_labels",
+           "place_ring_labels", "placed_vertex_markers", "places_round", "seen_from"]

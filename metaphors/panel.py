@@ -96,7 +96,7 @@ class Panel:
         self.pseudocode: tuple[PseudocodeRow, ...] = ()
         #: (seq, rows): the rows from the beat of that seq on (:meth:`show_pseudocode`)
         self.later: tuple[int, tuple[PseudocodeRow, ...]] | None = None
-        self.code_scale = 1.0  # how much the pseudocode's rows were shrunk to fit
+        self.code_scale = 1.0  # how much the rows were shrunk to fit the box's width (never its height)
         # the source: its rows, the window of lines shown (None: all of them), and each
         # shown line's row mobjects and the middle of their slots
         self.rows: tuple[Row, ...] = ()
