@@ -25,6 +25,7 @@ from metaphors.labels import (
     MARGIN,
     crossed_labels,
     drawn_edges,
+    filled_region,
     measured_markers,
     new_colour,
 )
@@ -348,9 +349,7 @@ class Board:
                   for edge in drawn_edges(m)]
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
         moves: list[Playable] = []
-        outline = [[p[:2] for p in ring] for ring in self.outline_rings()]
-        # (made valid: a keyhole's ring runs both ways along its cut)
-        fill = shapely.make_valid(shapely.Polygon(outline[0], outline[1:])) if outline else None
+        fill = filled_region([[p[:2] for p in ring] for ring in self.outline_rings()])
         for label, centre in crossed_labels(rings, markers, drawn,
                                             [edge for line in lines for edge in drawn_edges(line)],
                                             self.theme.dot_radius, apart, fill).items():

@@ -221,7 +221,7 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
                                       dash_length=theme.dash_length * 1.5),
                            "argument", "figure:pick"),
                        f"{polygon.labels[t.b.index]}{polygon.labels[inside[0]]}")
-             for _ in inside[:1]]
+             ] if inside else []
     return [comes_with(shaded, "T"), *(comes_with(d, "candidate") for d in dots), *kinds,
             *asked, comes_with(caption, "candidate")]
 

@@ -35,7 +35,7 @@ from geometry.predicates import orient
 from metaphors.board import Board, Playable
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
 from metaphors.labels import MARGIN, drawn_edges, off_the_fill
-from metaphors.layout import Obstacles, rects_at
+from metaphors.layout import Obstacles, area_of, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering import typeset
@@ -259,8 +259,8 @@ def _shrunk(board: Board, beat: Slice) -> Playable:
     (three rings) first becomes, unseen, the one keyholed ring it is (its keyholes' dark
     slits show the same shape): morphed from three rings into one, it broke into shards and
     loose vertices for half a second (chapter 4 at 140.3 s, review s35)."""
-    before, k = _with_ear(beat)
-    if len(board.outline.get_subpaths()) > 1 and before:
+    before, k = _with_ear(beat) if len(board.outline.get_subpaths()) > 1 else ([], 0)
+    if before:
         board.outline.become(_fruit(board, before))
         # and to the rest as a ring of as many points, the ear's vertex sliding onto the
         # middle of its diagonal (one point fewer, the keyholed ring's bridges misaligned
@@ -368,8 +368,7 @@ def _labels_off_fruit(board: Board, rest: Sequence[Point]) -> list[Playable]:
     lines on the picture (the keyhole cuts, the good part's edge): a hole's label stood on
     the orange, on its dark halo, while the hole had no room for it, and stayed there once
     the slices round its vertex had left the dark all round it (chapter 4's a₂ and b₂)."""
-    labels = {name: (m[0].get_center(), tuple(rects_at(m[1].get_center()[:2],
-                                                        (m[1].width, m[1].height))[0]))
+    labels = {name: (m[0].get_center(), area_of(m[1]))
               for name, m in board.markers.items() if isinstance(m, VGroup) and len(m) > 1}
     lines = [edge for m in board.objects.values() if m is not board.outline
              for edge in drawn_edges(m)]

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from itertools import pairwise
+from typing import Any
 
 import numpy as np
 import shapely
@@ -254,6 +255,15 @@ def _off(centres: np.ndarray, size: tuple[float, float], fill: shapely.Geometry 
     return off if off.any() else ok
 
 
+def filled_region(rings: Sequence[Sequence[Any]]) -> shapely.Geometry | None:
+    """The region an outline's rings (the first outer, the rest holes; 2-D points) bound,
+    made valid (a keyhole's ring runs both ways along its cut); None without a ring of three
+    points."""
+    if not rings or len(rings[0]) < 3:
+        return None
+    return shapely.make_valid(shapely.Polygon(rings[0], rings[1:]))
+
+
 def off_the_fill(ring: Sequence[np.ndarray], labels: Mapping[str, tuple[np.ndarray, Rect]],
                  segments: Sequence[Segment], dot: float = THEME.dot_radius
                  ) -> dict[str, np.ndarray]:
@@ -273,8 +283,7 @@ def off_the_fill(ring: Sequence[np.ndarray], labels: Mapping[str, tuple[np.ndarr
     [-0.23, -0.23]
     """
     pts = [np.asarray(p, dtype=float)[:2] for p in ring]
-    # made valid: a keyhole's ring runs both ways along its cut
-    region = shapely.make_valid(shapely.Polygon(pts)) if len(pts) >= 3 else None
+    region = filled_region([pts])
     if region is None or region.is_empty:
         return {}
     edges = [*ring_edges(pts), *segments]
@@ -316,14 +325,12 @@ def new_colour(marker: Mobject, label: str, role: str, was: str, theme: Theme,
     those never in a call. Grey there told apart "was in a call" from "never was", which no
     caption says: B, C, A, L and B went grey in chapters 2 to 6 while the picture still
     used them (gravity's band hung from C), blue or green again a second later."""
+    if not at_rest and focus is None and was == role:
+        return None
     if at_rest:
         colour = theme.ink
     elif role == "idle":
-        if focus is None and was == role:
-            return None
         colour = theme.idle if focus is not None and label not in focus else theme.ink
-    elif focus is None and was == role:
-        return None
     else:
         colour = theme.role_colour(role)
     kept = at_rest or focus is not None or role == "idle"
@@ -336,5 +343,6 @@ def drawn_in(marker: Mobject, colour: str) -> bool:
 
 
 __all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "drawn_edges",
-           "measured_markers", "new_colour", "off_the_fill", "outward", "place_labels",
+           "filled_region", "measured_markers", "new_colour", "off_the_fill", "outward",
+           "place_labels",
            "place_ring_labels", "placed_vertex_markers", "places_round", "seen_from"]
