@@ -289,3 +289,26 @@ def test_the_lecture_polygon_keeps_what_the_lecture_needs():
         monotone(p)
     kinds = [e.result for e in log.events if e.kind == "return" and e.name == "classify_vertex"]
     assert "split" in kinds and "merge" in kinds
+
+
+#: the least a slid-along edge leans off level for a viewer to see the ball slide (at 0.6° a
+#: class saw gravity-snag's ball roll along a flat floor, 1 px of drop over 221 px at 480p)
+LEAST_SLOPE_DEGREES = 8.0
+
+
+@pytest.mark.parametrize("name", ["gravity-snag", "counterexample", "lecture"])
+def test_the_ball_visibly_slides_on_the_lecture_polygons(name):
+    """The edge the ball lands on leans visibly off level as gravity points, so the slide to
+    its lower end can be seen (chapter 3 and the gravity scene draw gravity straight down)."""
+    from geometry import gravity as g
+
+    polygon = Polygon.from_points(make_sample(name))
+    v = g.reflex_vertex(polygon)
+    assert v is not None
+    down = g.gravity_direction(polygon, v).down
+    hit = g.drop_ball(polygon, v, g.gravity_direction(polygon, v))
+    a, b = (polygon.points[i] for i in hit.edge)
+    edge = (b[0] - a[0], b[1] - a[1])
+    lean = math.degrees(math.asin(abs(edge[0] * down[0] + edge[1] * down[1])
+                                  / (math.hypot(*edge) * math.hypot(*down))))
+    assert lean >= LEAST_SLOPE_DEGREES, f"{name}: the slid-along edge leans {lean:.1f}° off level"
