@@ -191,12 +191,16 @@ def ear_test(board: Board, beat: EarTest) -> None:
         # apart from the others as the knife moves them (MAB's green moved M 0.07 under K)
         lines = covering(corners) if wedge is None else covering_wedge(wedge)
         moves = board.clear_labels(lines, apart=LABEL_APART)
+        if wedge is not None:  # the angle's own label stays by it, on a dark card: moved
+            # off, G's went over its slot, nearer H's dot than its own
+            own = board.markers[unprimed(beat.vertex)]
+            moves = [m for m in moves if getattr(m, "mobject", None) is not own]
         if moves:
             board.scene.play(*gone, *moves, run_time=max(0.1, 0.4 * beat.pace))
             gone = []
     anims: list[Playable] = [*gone, Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
     if wedge is not None:
-        anims += _test_angle(board, wedge)
+        anims += _test_shape(board, wedge, covering_wedge(wedge), WEDGE_OPACITY)
     elif beat.triangle:
         anims += _test_triangle(board, beat.triangle, "result" if beat.ear else "rejected")
     if beat.inside:
@@ -214,28 +218,37 @@ def _test_triangle(board: Board, triangle: Sequence[Point], role: str) -> list[P
     theme = board.theme
     colour = theme.role_colour(role)
     outline = tag(MPolygon(*[board.at(p) for p in triangle], color=colour,
-                           stroke_width=theme.stroke * TEST_STROKE, stroke_opacity=0,
-                           fill_color=colour, fill_opacity=0), role, "ear-triangle")
-    board.keep("ear-triangle", outline)
-    # under the vertices and their labels: the vertex inside it is what the caption
-    # names ("G lies in its triangle"), and a fade-in would put the triangle over it
-    board.scene.add(outline)
+                           stroke_width=theme.stroke * TEST_STROKE, fill_color=colour),
+                  role, "ear-triangle")
+    return _test_shape(board, outline, covering(outline.get_vertices()), TEST_OPACITY)
+
+
+def _test_shape(board: Board, shape: MPolygon, lines: VGroup, opacity: float) -> list[Playable]:
+    """The animations bringing in what a test shows (its triangle, or its angle), faded in
+    to ``opacity`` under the vertices and their labels (the vertex inside a triangle is what
+    the caption names, "G lies in its triangle", and a fade-in would put the triangle over
+    it), and a dark card under a label left on it (``lines``: :func:`covering`)."""
+    shape.set_fill(opacity=0).set_stroke(opacity=0)
+    board.keep("ear-triangle", shape)  # what the test shows: it goes with the test
+    board.scene.add(shape)
     anims: list[Playable] = []
-    backing = _backing(board, covering(outline.get_vertices()))
-    if backing is not None:  # a label left on the triangle (its vertex inside): a dark card
+    backing = _backing(board, lines)
+    if backing is not None:  # a label left on it (its vertex inside): a dark card
         board.keep("ear-backing", backing)
         board.scene.add(backing)
         anims.append(backing.animate.set_fill(opacity=BACKING_OPACITY))
     board.scene.bring_to_front(*board.markers.values())
-    anims.append(outline.animate.set_fill(opacity=TEST_OPACITY).set_stroke(opacity=1.0))
+    anims.append(shape.animate.set_fill(opacity=opacity).set_stroke(opacity=1.0))
     return anims
 
 
 #: a not-convex vertex's angle mark (:func:`angle_wedge`): its largest radius (scene units,
 #: 5 % of the frame's height), the part of its shorter edge it may reach along, of the room
-#: to the nearest edge not its own, and the least it is drawn (a mark under 2 % of the
-#: frame's height is not seen at a glance)
-WEDGE_RADIUS, WEDGE_REACH, WEDGE_ROOM, WEDGE_LEAST = 0.4, 0.7, 0.8, 0.16
+#: to the nearest edge not its own, and the least it is drawn (under 2.7 % of the frame's
+#: height, the ring round the dot is too thin to see at a glance)
+WEDGE_RADIUS, WEDGE_REACH, WEDGE_ROOM, WEDGE_LEAST = 0.4, 0.7, 0.8, 0.22
+#: the gap round the vertex's dot (its red dot on the red wedge vanished)
+WEDGE_HOLE = 0.12
 #: its fill's opacity: the rejected red at 0.3 over the fruit's orange reads as more orange
 WEDGE_OPACITY = 0.6
 
@@ -243,15 +256,16 @@ WEDGE_OPACITY = 0.6
 def angle_wedge(corners: Sequence[np.ndarray], theme: Theme,
                 room: float = math.inf) -> MPolygon:
     """The inside angle of the middle corner of ``corners`` (V−1, V, V+1 on screen, the ring
-    counter-clockwise): a red sector at V, from its edge to V+1 round through the inside to
-    its edge to V−1, the reason a vertex that is not convex is no ear (180° at a straight
-    vertex, more at a reflex one), seen where its triangle has no area. ``room``: how near
-    V the nearest edge not its own comes (the sector keeps inside the fruit).
+    counter-clockwise): a red sector round V (clear of its dot), from its edge to V+1 round
+    through the inside to its edge to V−1, the reason a vertex that is not convex is no ear
+    (180° at a straight vertex, more at a reflex one), seen where its triangle has no area.
+    ``room``: how near V the nearest edge not its own comes (the sector keeps inside the
+    fruit). Its outer arc first, then its inner arc back.
 
     >>> from metaphors.theme import THEME
     >>> w = angle_wedge([np.array(p, float) for p in ((-1, 0, 0), (0, 0, 0), (1, 0, 0))], THEME)
-    >>> [round(float(x), 2) for x in w.get_vertices()[0][:2]], round(float(w.get_top()[1]), 2)
-    ([0.0, 0.0], 0.4)
+    >>> round(float(w.get_top()[1]), 2), round(float(w.get_bottom()[1]), 2)
+    (0.4, 0.0)
     """
     a, v, c = (np.asarray(p, dtype=float)[:2] for p in corners)
     start = math.atan2(*(c - v)[::-1])
@@ -259,11 +273,12 @@ def angle_wedge(corners: Sequence[np.ndarray], theme: Theme,
     shorter = min(float(np.linalg.norm(a - v)), float(np.linalg.norm(c - v)))
     radius = max(WEDGE_LEAST, min(WEDGE_RADIUS, WEDGE_REACH * shorter, WEDGE_ROOM * room))
     steps = max(8, math.ceil(math.degrees(sweep) / 10))
-    arc = [(v[0] + radius * math.cos(start + sweep * k / steps),
-            v[1] + radius * math.sin(start + sweep * k / steps), 0.0) for k in range(steps + 1)]
-    return tag(MPolygon((v[0], v[1], 0.0), *arc, color=theme.rejected,
-                        stroke_width=theme.stroke, fill_color=theme.rejected,
-                        fill_opacity=WEDGE_OPACITY), "rejected", "ear-angle")
+    turns = [start + sweep * k / steps for k in range(steps + 1)]
+    arc = [(v[0] + r * math.cos(t), v[1] + r * math.sin(t), 0.0)
+           for r, ts in ((radius, turns), (WEDGE_HOLE, turns[::-1])) for t in ts]
+    return tag(MPolygon(*arc, color=theme.rejected, stroke_width=theme.stroke,
+                        fill_color=theme.rejected, fill_opacity=WEDGE_OPACITY),
+               "rejected", "ear-angle")
 
 
 def _room(board: Board, at: np.ndarray) -> float:
@@ -283,21 +298,14 @@ def _room(board: Board, at: np.ndarray) -> float:
 
 
 def covering_wedge(wedge: MPolygon) -> VGroup:
-    """An angle's wedge as lines a label must keep clear of: its sides, and its radii to
-    every corner of its arc (a label inside it meets one)."""
-    apex, *arc = (np.asarray(p, dtype=float) for p in wedge.get_vertices())
-    lines = VGroup(*[Line(p, q) for p, q in zip([apex, *arc], [*arc, apex], strict=True)])
-    lines.add(*[Line(apex, p) for p in arc[1:-1]])
+    """An angle's wedge (:func:`angle_wedge`) as lines a label must keep clear of: its sides,
+    and the radii across it from its inner arc to its outer one (a label inside it meets
+    one)."""
+    ring = [np.asarray(p, dtype=float) for p in wedge.get_vertices()]
+    half = len(ring) // 2
+    lines = VGroup(*[Line(p, q) for p, q in zip(ring, [*ring[1:], ring[0]], strict=True)])
+    lines.add(*[Line(ring[k], ring[len(ring) - 1 - k]) for k in range(1, half - 1)])
     return lines
-
-
-def _test_angle(board: Board, wedge: MPolygon) -> list[Playable]:
-    """The animations bringing in a not-convex vertex's angle (:func:`angle_wedge`), under
-    the vertices and their labels."""
-    board.keep("ear-triangle", wedge)  # what the test shows: it goes with the test
-    board.scene.add(wedge.set_fill(opacity=0).set_stroke(opacity=0))
-    board.scene.bring_to_front(*board.markers.values())
-    return [wedge.animate.set_fill(opacity=WEDGE_OPACITY).set_stroke(opacity=1.0)]
 
 
 #: the gap (scene units) between the lines that stand for a test triangle's inside

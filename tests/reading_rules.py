@@ -907,8 +907,8 @@ def unseen_ear_tests(data: dict) -> list[str]:
     0.010 wide"``. An ear is a convex vertex whose triangle holds no other vertex (the thesis,
     Meisters), so a vertex is no ear for one of two reasons, each drawn: a vertex inside its
     triangle (red, at least :data:`LEAST_TEST_HEIGHT` high, that vertex pulsing inside it),
-    or its angle, 180° or more (a red wedge, :data:`_TEST_ANGLE`, of at least half a disc of
-    radius :data:`LEAST_TEST_HEIGHT`). Prune and search's "is H an ear? no" (chapter 4 at
+    or its angle, 180° or more (a red wedge round it, :data:`_TEST_ANGLE`, at least as large
+    as half a disc of radius :data:`LEAST_TEST_HEIGHT`). Prune and search's "is H an ear? no" (chapter 4 at
     96 s) drew the straight G-H-K, a red line with no inside, and its reflex G, the holes'
     a₁, b₁, a₂ and b₂ a red triangle holding nothing, mostly outside the fruit."""
     found = []
@@ -922,8 +922,9 @@ def unseen_ear_tests(data: dict) -> list[str]:
             if node.get("role") != "rejected" or name not in (_TEST_TRIANGLE, _TEST_ANGLE):
                 continue
             corners = _corners(node)
-            tested = next((v for v, dot in pulsed.items() if _near(dot, corners, MARKER_AT_CORNER)),
-                          "?")
+            # the vertex at a corner of its triangle, or the one pulsing with its angle
+            tested = next((v for v, dot in pulsed.items()
+                           if _near(dot, corners, MARKER_AT_CORNER) or name == _TEST_ANGLE), "?")
             if name == _TEST_ANGLE:
                 if _shoelace(corners) < math.pi * LEAST_TEST_HEIGHT ** 2 / 2:
                     found.append(f"play {k} {tested}: angle {_shoelace(corners):.3f} wide")

@@ -96,6 +96,7 @@ from tests.reading_rules import (
     thinnest_triangle,
     ticks_outside,
     unreadable_cues,
+    unseen_ear_tests,
     unspoken_words,
     water_outside_polygon,
     words_before_pictures,
@@ -501,6 +502,14 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
     c₂), but for a label it cannot keep off (its vertex inside it), which is on a dark card;
     its edges cross no label (:func:`crossed_vertex_labels` follows it too)."""
     assert labels_under_test_triangles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_vertex_that_is_no_ear_shows_why(case):
+    """Issue 22: "is V an ear? no" shows the reason with room to see it: another vertex
+    inside V's red triangle, or V's angle of 180° or more (the keyhole's a₁, b₁, a₂, b₂
+    showed red triangles holding nothing, a₁'s 0.03 high)."""
+    assert unseen_ear_tests(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
