@@ -2841,6 +2841,43 @@ def shifting_tints(data: dict) -> list[str]:
     return found
 
 
+#: gravity's close-up: one drawing standing in for the picture's outline while zoomed
+#: (:class:`metaphors.gravity.CloseUp`)
+_CLOSE_UP = "close-up"
+
+
+def recoloured_close_ups(data: dict) -> list[str]:
+    """The close-ups that draw the picture in other colours than its outline had, as ``"play
+    101: fill #2A3A55 0.35, edges #E8ECF2 3.0 (the picture: fill #F4A259 0.75, edges #7A9E3D
+    6.6)"``: a close-up is the same picture, nearer. Chapter 4's fruit turned into P's navy
+    with white edges for the close-up of prune and search's gravity step (73-77 s), and
+    orange again after it."""
+    found = []
+    outline: tuple | None = None
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if node.get("name") == "polygon":
+                state = anim.get("target") or node
+                outline = (state.get("fill"), state.get("fill_opacity"), state.get("stroke"),
+                           state.get("stroke_width"))
+            if node.get("name") != _CLOSE_UP or outline is None:
+                continue
+            parts = node.get("submobjects") or []
+            # what is seen: a fill with some opacity, a line with some width (a zoom's
+            # ``become`` leaves a line of none behind)
+            fills = {(c.get("fill"), c.get("fill_opacity")) for c in parts
+                     if (c.get("fill_opacity") or 0) > 0}
+            edges = {(c.get("stroke"), c.get("stroke_width")) for c in parts
+                     if c.get("type") == "Line" and (c.get("stroke_width") or 0) > 0}
+            if fills | edges and (fills - {outline[:2]} or edges - {outline[2:]}):
+                said = ", ".join([*(f"fill {f} {o}" for f, o in sorted(fills)),
+                                  *(f"edges {e} {w}" for e, w in sorted(edges))])
+                found.append(f"play {k}: {said} (the picture: fill {outline[0]} {outline[1]}, "
+                             f"edges {outline[2]} {outline[3]})")
+    return found
+
+
 def _apart(a: str, b: str) -> int:
     """The largest difference of two ``#rrggbb`` colours' channels."""
     return max(abs(int(a[k:k + 2], 16) - int(b[k:k + 2], 16)) for k in (1, 3, 5))

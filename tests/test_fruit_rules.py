@@ -16,6 +16,7 @@ from tests.reading_rules import (
     leftover_verdicts,
     placeholders_as_labels,
     polygon_names,
+    recoloured_close_ups,
     shifting_tints,
     stale_good_parts,
     stray_vertex_markers,
@@ -341,3 +342,22 @@ def test_a_good_sub_polygon_in_two_colours_is_found():
     # mended: the card draws the fruit and tints it as the run does
     card = _tinted("figure:good", "#4F8FF7", 0.3, "figure:polygon", "#F4A259", 0.75)
     assert shifting_tints(_graph(card, run)) == []
+
+
+def _close_up(fill: str, edge: str, width: float) -> dict:
+    parts = [{"type": "Polygon", "fill": fill, "fill_opacity": 0.75, "stroke_width": 0.0},
+             {"type": "Line", "stroke": edge, "stroke_width": width},
+             {"type": "Line", "stroke": "#58C4DD", "stroke_width": 0.0}]  # unseen: not judged
+    return {"type": "UpdateFromAlphaFunc", "mobject": {"name": "close-up", "submobjects": parts}}
+
+
+def test_a_close_up_in_other_colours_is_found():
+    """Chapter 4's gravity close-up drew the fruit in P's navy with white edges."""
+    fruit = {"type": "Transform", "mobject": {"name": "polygon", "fill": "#F4A259",
+                                              "fill_opacity": 0.75, "stroke": "#7A9E3D",
+                                              "stroke_width": 6.6}}
+    navy = _graph([fruit], [_close_up("#2A3A55", "#E8ECF2", 3.0)])
+    assert recoloured_close_ups(navy) == [
+        "play 1: fill #2A3A55 0.75, edges #E8ECF2 3.0 (the picture: fill #F4A259 0.75, edges "
+        "#7A9E3D 6.6)"]
+    assert recoloured_close_ups(_graph([fruit], [_close_up("#F4A259", "#7A9E3D", 6.6)])) == []

@@ -77,6 +77,7 @@ from tests.reading_rules import (
     morphed_water,
     notes_under_moving_tools,
     placeholders_as_labels,
+    recoloured_close_ups,
     red_after_the_pick,
     refaded_texts,
     repeated_verdicts,
@@ -510,6 +511,13 @@ def test_a_vertex_that_is_no_ear_shows_why(case):
     inside V's red triangle, or V's angle of 180° or more (the keyhole's a₁, b₁, a₂, b₂
     showed red triangles holding nothing, a₁'s 0.03 high)."""
     assert unseen_ear_tests(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_close_up_draws_the_picture_as_it_was(case):
+    """One colour, one meaning: gravity's close-up is the same picture, nearer (chapter 4's
+    fruit turned P's navy in it)."""
+    assert recoloured_close_ups(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
