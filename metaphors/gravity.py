@@ -162,6 +162,11 @@ class CloseUp:
         self.box = shapely.box(*lo, *hi)
         theme = board.theme
         self.rings = [[p[:2] for p in ring] for ring in board.outline_rings()]
+        # drawn as the outline is: ear clipping's fruit stays the fruit (it turned P's navy
+        # and white edges in chapter 4's close-up, 73-77 s, and orange again after)
+        outline = board.outline
+        self.style = (outline.get_fill_color().to_hex(), outline.get_fill_opacity(),
+                      outline.get_stroke_color().to_hex(), outline.get_stroke_width())
         self.fragment = self.drawn(1.0)
         # the window's edge, while zoomed: P's fill cut square at the box reads as a close-up
         # seen through a frame, not as a polygon with straight new sides
@@ -182,23 +187,23 @@ class CloseUp:
     def drawn(self, scale: float) -> VGroup:
         """P zoomed ``scale`` times about the pivot, cut at the board's box: its fill, then its
         edges (at 1: the outline as drawn)."""
-        theme, centre = self.board.theme, self.pivot[:2]
+        centre = self.pivot[:2]
+        fill, opacity, edge, width = self.style
         rings = [[centre + scale * (np.asarray(p) - centre) for p in ring] for ring in self.rings]
         inside = shapely.Polygon(rings[0], rings[1:]).intersection(self.box)
         parts: list[VMobject] = []
         for piece in shapely.get_parts(inside):
             if isinstance(piece, shapely.Polygon) and piece.area > 0:
                 parts.append(MPolygon(*[(x, y, 0.0) for x, y in piece.exterior.coords[:-1]],
-                                      stroke_width=0, fill_color=theme.polygon_fill,
-                                      fill_opacity=theme.fill_opacity))
+                                      stroke_width=0, fill_color=fill, fill_opacity=opacity))
         for ring in rings:
             for a, b in zip(ring, [*ring[1:], ring[0]], strict=True):
                 cut = shapely.LineString([a, b]).intersection(self.box)
                 for seg in shapely.get_parts(cut):
                     if isinstance(seg, shapely.LineString) and seg.length > 0:
                         (x0, y0), (x1, y1) = seg.coords[0], seg.coords[-1]
-                        parts.append(Line((x0, y0, 0.0), (x1, y1, 0.0), color=theme.ink,
-                                          stroke_width=theme.stroke))
+                        parts.append(Line((x0, y0, 0.0), (x1, y1, 0.0), color=edge,
+                                          stroke_width=width))
         return tag(VGroup(*parts), "idle", "close-up")
 
     def _zooming(self, start: float, end: float) -> UpdateFromAlphaFunc:

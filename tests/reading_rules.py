@@ -854,7 +854,7 @@ def stale_test_triangles(data: dict) -> list[str]:
             moved_on = True
         for anim in play["animations"]:
             for kind, node in _recorded(anim):
-                if node.get("name") != _TEST_TRIANGLE:
+                if node.get("name") not in (_TEST_TRIANGLE, _TEST_ANGLE):
                     continue
                 if kind in OUTGOING:
                     since, moved_on = -1, False
@@ -863,6 +863,77 @@ def stale_test_triangles(data: dict) -> list[str]:
         if since >= 0 and moved_on and not play.get("subcaption") and _draws_picture(play):
             found.append(f"play {k}: red {_TEST_TRIANGLE} of play {since}")
             since, moved_on = -1, False  # each triangle once
+    return found
+
+
+# --- issue 22: an ear test answered no shows why --------------------------------------------------
+
+#: what a not-convex vertex's test shows (:func:`metaphors.fruit.angle_wedge`): its angle
+_TEST_ANGLE = "ear-angle"
+#: the least height of a red test triangle, and the least radius of a test's angle: 1.5 %
+#: of the frame's height (a line, or a sliver, shows no inside)
+LEAST_TEST_HEIGHT = 0.12
+
+
+def _pulsed(play: dict) -> dict[str, tuple[float, float]]:
+    """The vertices a play pulses (``Indicate``), by label: where their dots stand."""
+    dots = {}
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if anim.get("type") == "Indicate" and (node.get("name") or "").startswith("vertex:"):
+            dot = _dot_centre(node)
+            if dot is not None:
+                dots[node["name"].removeprefix("vertex:")] = dot
+    return dots
+
+
+def _strictly_inside(p: tuple[float, float], corners: list[tuple[float, float]]) -> bool:
+    """Whether ``p`` lies in the triangle ``corners`` (closed), and is none of its corners."""
+    if _near(p, corners, within=MARKER_AT_CORNER):
+        return False
+    sides = [(b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+             for a, b in zip(corners, corners[1:] + corners[:1], strict=True)]
+    return all(x >= -1e-9 for x in sides) or all(x <= 1e-9 for x in sides)
+
+
+def _shoelace(corners: list[tuple[float, float]]) -> float:
+    return abs(sum(a[0] * b[1] - b[0] * a[1]
+                   for a, b in zip(corners, corners[1:] + corners[:1], strict=True))) / 2
+
+
+def unseen_ear_tests(data: dict) -> list[str]:
+    """The ear tests answered no whose picture does not show why, as ``"play 151 H: red
+    triangle 0.00 high"``, ``"play 93 G: red triangle, no vertex inside"`` or ``"play 9 G: angle
+    0.010 wide"``. An ear is a convex vertex whose triangle holds no other vertex (the thesis,
+    Meisters), so a vertex is no ear for one of two reasons, each drawn: a vertex inside its
+    triangle (red, at least :data:`LEAST_TEST_HEIGHT` high, that vertex pulsing inside it),
+    or its angle, 180° or more (a red wedge round it, :data:`_TEST_ANGLE`, at least as large
+    as half a disc of radius :data:`LEAST_TEST_HEIGHT`). Prune and search's "is H an ear? no" (chapter 4 at
+    96 s) drew the straight G-H-K, a red line with no inside, and its reflex G, the holes'
+    a₁, b₁, a₂ and b₂ a red triangle holding nothing, mostly outside the fruit."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        pulsed = _pulsed(play)
+        for anim in play["animations"]:
+            if anim.get("type") in OUTGOING:
+                continue
+            node = anim.get("target") or anim.get("mobject") or {}
+            name = node.get("name")
+            if node.get("role") != "rejected" or name not in (_TEST_TRIANGLE, _TEST_ANGLE):
+                continue
+            corners = _corners(node)
+            # the vertex at a corner of its triangle, or the one pulsing with its angle
+            tested = next((v for v, dot in pulsed.items()
+                           if _near(dot, corners, MARKER_AT_CORNER) or name == _TEST_ANGLE), "?")
+            if name == _TEST_ANGLE:
+                if _shoelace(corners) < math.pi * LEAST_TEST_HEIGHT ** 2 / 2:
+                    found.append(f"play {k} {tested}: angle {_shoelace(corners):.3f} wide")
+                continue
+            height = _altitude(*corners[:3])
+            if height < LEAST_TEST_HEIGHT:
+                found.append(f"play {k} {tested}: red triangle {height:.2f} high")
+            elif not any(_strictly_inside(dot, corners[:3]) for dot in pulsed.values()):
+                found.append(f"play {k} {tested}: red triangle, no vertex inside")
     return found
 
 
@@ -2211,7 +2282,7 @@ def labels_under_the_fall(data: dict) -> list[str]:
 # --- issue 22: a label is read clear of ear clipping's red test triangle ------------------------
 
 #: the red triangle of a vertex that is not an ear (:func:`metaphors.fruit.ear_test`)
-_TEST_TRIANGLES = ("ear-triangle",)
+_TEST_TRIANGLES = ("ear-triangle", "ear-angle")
 #: a dark card under a label the triangle could not be kept off (its vertex inside it)
 _BACKINGS = "backing:"
 #: how opaque a card must be to read a label on it
@@ -2722,6 +2793,94 @@ def shifting_colours(data: dict) -> list[str]:
                   and vertex not in (picked, *claimed)):
                 found.setdefault((vertex, "amber"), f"play {k} {vertex} amber, not picked")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- one thing, one colour: a card's figure and the run it tells of ------------------------------
+
+#: the names under which one thing is drawn, on a card's figure and in its run: prune and
+#: search's good sub-polygon (:func:`metaphors.fruit.good_style`)
+SAME_THINGS = {"the good sub-polygon": ("good", "figure:good", "figure:smaller")}
+#: how far apart two colours on screen may be (the largest of their channels' differences,
+#: of 255) and still read as one
+SAME_COLOUR = 12
+
+
+def _on_screen(fill: str, opacity: float, under: str | None) -> str:
+    from metaphors.theme import THEME
+
+    return _over(fill, opacity, under or THEME.background)
+
+
+def shifting_tints(data: dict) -> list[str]:
+    """The things of :data:`SAME_THINGS` drawn in more than one colour as the screen shows
+    them (the fill over the polygon's fill it lies on, over the background), as ``"the good
+    sub-polygon: #6250a7 (play 79 figure:good), #9b837e (play 126 good)"``: the same thing
+    keeps its colour. Chapter 4's card drew prune and search's good sub-polygons in violet
+    and teal over P's navy, and its run in blue over the fruit's orange, a greyish pink."""
+    from metaphors.theme import THEME
+
+    found = []
+    for thing, names in SAME_THINGS.items():
+        colours: dict[str, str] = {}
+        under: dict[str, str] = {}  # the fill as shown of the polygon a figure or run draws
+        for k, play in enumerate(data["plays"]):
+            for anim in play["animations"]:
+                for kind, node, name in _ends(anim):
+                    fill = _one_colour(node.get("fill"))
+                    opacity = float(node.get("fill_opacity") or 0)
+                    if name in ("polygon", "figure:polygon") and fill and opacity > 0:
+                        under[name] = _over(fill, opacity, THEME.background)
+                    if name not in names or kind in OUTGOING or not fill or opacity <= 0:
+                        continue
+                    polygon = "figure:polygon" if name.startswith("figure:") else "polygon"
+                    colour = _on_screen(fill, opacity, under.get(polygon))
+                    if not any(_apart(colour, c) <= SAME_COLOUR for c in colours):
+                        colours[colour] = f"play {k} {name}"
+        if len(colours) > 1:
+            found.append(f"{thing}: " + ", ".join(f"{c} ({where})" for c, where in colours.items()))
+    return found
+
+
+#: gravity's close-up: one drawing standing in for the picture's outline while zoomed
+#: (:class:`metaphors.gravity.CloseUp`)
+_CLOSE_UP = "close-up"
+
+
+def recoloured_close_ups(data: dict) -> list[str]:
+    """The close-ups that draw the picture in other colours than its outline had, as ``"play
+    101: fill #2A3A55 0.35, edges #E8ECF2 3.0 (the picture: fill #F4A259 0.75, edges #7A9E3D
+    6.6)"``: a close-up is the same picture, nearer. Chapter 4's fruit turned into P's navy
+    with white edges for the close-up of prune and search's gravity step (73-77 s), and
+    orange again after it."""
+    found = []
+    outline: tuple | None = None
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if node.get("name") == "polygon":
+                state = anim.get("target") or node
+                outline = (state.get("fill"), state.get("fill_opacity"), state.get("stroke"),
+                           state.get("stroke_width"))
+            if node.get("name") != _CLOSE_UP or outline is None:
+                continue
+            parts = node.get("submobjects") or []
+            # what is seen: a fill with some opacity, a line with some width (a zoom's
+            # ``become`` leaves a line of none behind)
+            fills = {(c.get("fill"), c.get("fill_opacity")) for c in parts
+                     if (c.get("fill_opacity") or 0) > 0}
+            edges = {(c.get("stroke"), c.get("stroke_width")) for c in parts
+                     if c.get("type") == "Line" and (c.get("stroke_width") or 0) > 0}
+            if fills | edges and (fills - {outline[:2]} or edges - {outline[2:]}):
+                said = ", ".join([*(f"fill {f} {o}" for f, o in sorted(fills)),
+                                  *(f"edges {e} {w}" for e, w in sorted(edges))])
+                found.append(f"play {k}: {said} (the picture: fill {outline[0]} {outline[1]}, "
+                             f"edges {outline[2]} {outline[3]})")
+    return found
+
+
+def _apart(a: str, b: str) -> int:
+    """The largest difference of two ``#rrggbb`` colours' channels."""
+    return max(abs(int(a[k:k + 2], 16) - int(b[k:k + 2], 16)) for k in (1, 3, 5))
 
 
 # --- the exercises' countdown: one number a second ----------------------------------------------

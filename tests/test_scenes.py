@@ -77,6 +77,7 @@ from tests.reading_rules import (
     morphed_water,
     notes_under_moving_tools,
     placeholders_as_labels,
+    recoloured_close_ups,
     red_after_the_pick,
     refaded_texts,
     repeated_verdicts,
@@ -96,6 +97,7 @@ from tests.reading_rules import (
     thinnest_triangle,
     ticks_outside,
     unreadable_cues,
+    unseen_ear_tests,
     unspoken_words,
     water_outside_polygon,
     words_before_pictures,
@@ -501,6 +503,21 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
     c₂), but for a label it cannot keep off (its vertex inside it), which is on a dark card;
     its edges cross no label (:func:`crossed_vertex_labels` follows it too)."""
     assert labels_under_test_triangles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_vertex_that_is_no_ear_shows_why(case):
+    """Issue 22: "is V an ear? no" shows the reason with room to see it: another vertex
+    inside V's red triangle, or V's angle of 180° or more (the keyhole's a₁, b₁, a₂, b₂
+    showed red triangles holding nothing, a₁'s 0.03 high)."""
+    assert unseen_ear_tests(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_close_up_draws_the_picture_as_it_was(case):
+    """One colour, one meaning: gravity's close-up is the same picture, nearer (chapter 4's
+    fruit turned P's navy in it)."""
+    assert recoloured_close_ups(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
