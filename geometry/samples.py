@@ -71,10 +71,12 @@ _COUNTEREXAMPLE: tuple[Point, ...] = ((0.3, 2.7), (6.5, 1.1), (4.25, 2.85), (4.5
 # at the lecture's scale (the least is 7.4 %: tests/test_samples.py). Every algorithm's
 # triangles can be counted on screen: none is thinner than 1.5 % of the frame's height (the
 # least is prune and search's CDF, 2.0 %); G at (3, 5) lay 0.07 from ear clipping's BE and
-# M at (7, 11.5) 0.25 from H–L, so BEG and HLM were slivers a viewer could not see.
+# M at (7, 11.5) 0.25 from H–L, so BEG and HLM were slivers a viewer could not see. No three
+# vertices on one line: with K at (9, 11) and I at (12, 8), G H K, D K L and D I J were, and
+# after some slices H stood straight between G and K, its "not an ear" triangle a line.
 _LECTURE: tuple[Point, ...] = (
     (0, 6), (5, 0), (9, 2), (14, 1), (13, 5), (3.5, 5.5), (5, 7),
-    (12, 8), (14, 12), (9, 11), (9, 15), (6.5, 11.5), (5.5, 14),
+    (12, 8.5), (14, 12), (9.5, 11), (9, 15), (6.5, 11.5), (5.5, 14),
 )  # fmt: skip
 
 # 8 vertices, 2 reflex; gravity hangs the ball at C, it falls onto FG, slides to G, and the

@@ -312,3 +312,16 @@ def test_the_ball_visibly_slides_on_the_lecture_polygons(name):
     lean = math.degrees(math.asin(abs(edge[0] * down[0] + edge[1] * down[1])
                                   / (math.hypot(*edge) * math.hypot(*down))))
     assert lean >= LEAST_SLOPE_DEGREES, f"{name}: the slid-along edge leans {lean:.1f}° off level"
+
+
+@pytest.mark.parametrize("name", ["lecture", "counterexample", "gravity-snag"])
+def test_the_lecture_polygons_are_in_general_position(name):
+    """No three vertices on one line, exactly: a straight triple left chapter 4's H straight
+    between G and K after some slices, its red 'not an ear' triangle a line with no inside."""
+    from fractions import Fraction
+    from itertools import combinations
+
+    points = [tuple(Fraction(str(c)) for c in p) for p in make_sample(name)]
+    straight = [(a, b, c) for a, b, c in combinations(range(len(points)), 3)
+                if orient(points[a], points[b], points[c]) == 0]
+    assert not straight, straight
