@@ -87,13 +87,15 @@ def clock(board: Board, beat: Clock) -> None:
     picked = [False]  # set once the hand has passed its pick
     hand = follower(board, axis, theme.hand, "hand", picked=picked).set_z_index(1)  # over the rings
     board.scene.add(axis)
-    board.play(beat, FadeIn(dial), FadeIn(hand), FadeIn(hub), run_time=0.8)
+    # the pick stays a candidate until the hand passes it: amber then, with its ring
+    board.play(beat.before_pick(), FadeIn(dial), FadeIn(hand), FadeIn(hub), run_time=0.8)
 
     lit, turned = [], 0.0
     for k, (state, label) in enumerate(reached):
         step = state.angle - turned
         turned = state.angle
-        board.play(beat, Rotate(axis, angle=sign * step * DEGREES, about_point=centre),
+        board.play(beat if picked[0] else beat.before_pick(),
+                   Rotate(axis, angle=sign * step * DEGREES, about_point=centre),
                    run_time=0.6 + abs(step) / 60)
         kept, anims = light(board, label, k == 0, axis,
                             ahead=_wedge(centre, axis.get_end(), sign * (last - turned)))
