@@ -279,11 +279,13 @@ def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
     outside_area = region(stage, m.astray(stage.polygon.points), theme.rejected, 0.6,
                           "analysis:outside", "rejected").set_z_index(2)
     at = stage.vertex(wrong.pick)
+    # the vertices on the red set apart from it by a dark halo (the pick amber, not pulsed
+    # red: in the red it vanished), the flash says where the red wets it
     stage.say(wrong.words(analysis.fails),
               ([Create(outside_tool), FadeIn(outside_area),
                 *stage.key(theme.rejected, OUTSIDE, "astray"),
                 Flash(at, color=theme.rejected, flash_radius=0.45),
-                Indicate(stage.markers[wrong.pick], color=theme.rejected)], 1.6),
+                *stage.set_apart(m.astray(stage.polygon.points), stray)], 1.6),
               ([], analysis.freeze))
     return [drawing, outside_tool, outside_area, *crossing(stage, wrong, analysis.freeze)]
 
