@@ -12,7 +12,7 @@ candidates.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -24,7 +24,7 @@ from metaphors.board import Board
 from metaphors.performing import Performances, act, performs
 from metaphors.sweep import follower, light
 from metaphors.tags import tag
-from story.beats import beat_kind
+from story.beats import Beat, beat_kind
 from story.reach import heading
 from story.states import Hand, Moving, Point, hits, point
 from story.storyboard import Reading, Walk, read_step
@@ -184,7 +184,13 @@ def _turn(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
                          for v, a in walk.reach(call, ret)))}
 
 
-READS: Mapping[str, Reading] = {"first_hit_rotating": read_step(
-    Clock, "The clock hand turns; the first candidate it passes is {result}", _turn,
-    picks=True)}
+def read_clock(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """The clock's step, its words naming where the clock stands: its centre turns blue
+    with them (Correct Rotation's C turned blue under "The clock hand turns; …", unsaid)."""
+    centre = walk.ref(call, "centre")
+    return read_step(Clock, f"The clock hand at {centre} turns; the first candidate it "
+                     "passes is {result}", _turn, picks=True)(walk, call, ret)
+
+
+READS: Mapping[str, Reading] = {"first_hit_rotating": read_clock}
 PERFORMS: Performances = performs(act(Clock, clock))
