@@ -105,21 +105,27 @@ def drop(board: Board, beat: Drop) -> None:
     a close-up: the picture zooms onto it first, and back once the ball has hit."""
     v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
     close = CloseUp.onto(board, v, hit)
+    ball = _ball(board, v)
+    hangs: list[Playable] = [FadeIn(ball, scale=0.5)]
     if close is not None:
         # the words and roles change first: a marker recoloured as it fades would be two
-        # animations of one mobject in one play; the words say what the zoom is for
+        # animations of one mobject in one play; the words say what the zoom is for, and the
+        # ball they speak of hangs at V as they come, carried by the zoom (it came only under
+        # the next caption, 2.8 s after them: chapter 3 at 57 s)
         zooming = replace(beat, caption=CLOSE_WORDS)
-        board.play(zooming, run_time=0.4)
-        again(board, zooming, *close.zoom_in(), run_time=1.2)
+        board.play(zooming, *hangs, run_time=0.4)
+        hangs = []
+        again(board, zooming, *close.zoom_in(), animate(ball).shift(close.zoomed(v) - v),
+              run_time=1.2)
         close.zoomed_in()
         v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
-    ball, band = _ball(board, v), _band(board, [v, v])
+    band = _band(board, [v, v])
     # the labels the fall would hide move aside first: a label under the ball's path or the
     # hit ring hid the very moment; they go back when the ball does (metaphors.picture.upright)
     moves = board.clear_labels(*fall_shapes(v, hit), for_now=True)
     board.keep("band", band)
     board.keep("ball", ball)
-    board.play(beat, FadeIn(ball, scale=0.5), *moves, run_time=0.6)
+    board.play(beat, *hangs, *moves, run_time=0.6)
     board.scene.add(band)
     board.scene.bring_to_front(ball)
     again(board, beat, animate(ball, rate_func=rush_into).move_to(hit),
