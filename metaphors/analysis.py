@@ -329,7 +329,9 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
     if right.band is not None:
         _band_moves(stage, right, analysis, first)
         witness = right.band.swept(1.0)
-        label, covered = "swept", []
+        # the green witness covers the band's swept region: its key goes before it comes
+        # (it stayed with no rose left, chapter 3 at 46 s)
+        label, covered = "swept", stage.forget_key("band")
     else:
         m = right.moved
         colour = tool_colour(theme, right.heuristic)
