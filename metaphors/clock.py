@@ -188,8 +188,8 @@ def read_clock(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     """The clock's step, its words naming where the clock stands: its centre turns blue
     with them (Correct Rotation's C turned blue under "The clock hand turns; …", unsaid)."""
     centre = walk.ref(call, "centre")
-    return read_step(Clock, f"The clock hand at {centre} turns; the first candidate it "
-                     "passes is {result}", _turn, picks=True)(walk, call, ret)
+    caption = f"The clock hand at {centre} turns; the first candidate it passes is {{result}}"
+    yield from read_step(Clock, caption, _turn, picks=True)(walk, call, ret)
 
 
 READS: Mapping[str, Reading] = {"first_hit_rotating": read_clock}
