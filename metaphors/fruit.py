@@ -19,7 +19,6 @@ from manim import (
     FadeOut,
     Indicate,
     Line,
-    LineJointType,
     Mobject,
     Polygram,
     Rectangle,
@@ -34,7 +33,7 @@ from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
 from metaphors.board import Board, Playable
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
-from metaphors.labels import MARGIN, drawn_edges, off_the_fill
+from metaphors.labels import MARGIN, drawn_edges, haloed, off_the_fill
 from metaphors.layout import Obstacles, area_of, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
@@ -100,15 +99,11 @@ def _fruit(board: Board, points: Sequence[Sequence[float]],
     return tag(MPolygon(*[board.at(p) for p in points], **style), "idle", "fruit")
 
 
-#: the width of the dark halo round every vertex label once the polygon is a fruit: a
-#: label over the fruit's orange reads (grey, red or green on it all but vanish, and even
-#: white is under 3 : 1), and the halo follows its label wherever it moves, in any colour
-LABEL_HALO = 6.0
-
-
 def _setup(board: Board, beat: Beat) -> None:
     """The first time: the polygon turns into a fruit, every label gets its dark halo
-    (:data:`LABEL_HALO`), a plate and a counter appear."""
+    (:func:`metaphors.labels.haloed`: a label over the fruit's orange reads — grey, red or
+    green on it all but vanish, and even white is under 3 : 1), a plate and a counter
+    appear."""
     if "fruit" in board.objects:
         return
     theme = board.theme
@@ -117,8 +112,8 @@ def _setup(board: Board, beat: Beat) -> None:
                         fill_color=theme.plate, fill_opacity=0.12), None, "plate")
     plate.move_to((x, PLATE_Y, 0))
     fruit = _fruit(board, board.polygon.points, board.holes)
-    # every label on a dark halo (:data:`LABEL_HALO`), coming with the fruit
-    halos = [Transform(marker, _haloed(marker, theme.background))
+    # every label on a dark halo, coming with the fruit
+    halos = [Transform(marker, haloed(marker, theme.background))
              for marker in board.markers.values()
              if isinstance(marker, VGroup) and len(marker) > 1]
     slices = board.polygon.n + sum(len(h.points) + 2 for h in board.holes) - 2
@@ -129,18 +124,6 @@ def _setup(board: Board, beat: Beat) -> None:
                      FadeIn(board.objects["counter"]), *halos, run_time=0.8 * beat.pace)
     board.scene.remove(fruit)
     board.objects["fruit"] = board.outline
-
-
-def _haloed(marker: VGroup, colour: str) -> VGroup:
-    """A copy of a vertex's marker (its dot and label) whose label has a halo of ``colour``
-    :data:`LABEL_HALO` wide, drawn behind its glyphs (a background stroke: recolouring the
-    label, and moving it, keep it)."""
-    # round joins (a mitred halo spikes at M's and K's points): set on the label itself, as
-    # a transform to the copy does not carry them
-    marker[1].joint_type = LineJointType.ROUND
-    haloed = marker.copy()
-    haloed[1].set_stroke(colour, width=LABEL_HALO, background=True)
-    return haloed
 
 
 def _counter(board: Board, k: int, total: int) -> Mobject:

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 import shapely
-from manim import Dot, Line, Mobject, VGroup
+from manim import Dot, Line, LineJointType, Mobject, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
@@ -168,6 +168,26 @@ def placed_vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME,
     segments = [segment for line in lines for segment in pairwise(frame.many(list(line)))]
     return VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, diagonals,
                                                     segments)))
+
+
+#: the width of the dark halo a vertex's label (and dot) is given where it stands on a fill it
+#: would not read on: ear clipping's fruit (grey, red or green on its orange all but vanish),
+#: an analysis's red "outside P"; the halo follows its label wherever it moves, in any colour
+LABEL_HALO = 6.0
+
+
+def haloed(marker: VGroup, colour: str, dot: bool = False) -> VGroup:
+    """A copy of a vertex's marker (its dot and label) whose label has a halo of ``colour``
+    :data:`LABEL_HALO` wide, drawn behind its glyphs (a background stroke: recolouring the
+    label, and moving it, keep it); ``dot``: its dot too, a ring round it."""
+    # round joins (a mitred halo spikes at M's and K's points): set on the label itself, as
+    # a transform to the copy does not carry them
+    marker[1].joint_type = LineJointType.ROUND
+    copy = marker.copy()
+    copy[1].set_stroke(colour, width=LABEL_HALO, background=True)
+    if dot:
+        copy[0].set_stroke(colour, width=LABEL_HALO, background=True)
+    return copy
 
 
 def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,

@@ -132,8 +132,10 @@ def _gravity(polygon: Polygon, heuristic: str, box: Box,
                    stroke_color=theme.ink, stroke_width=1.5), "argument", "figure:ball")
     snag = f"Y = {y.label}" if y else "the band straight"
     words = f"V = {v.label}, X = {x.label}, {snag}: claim {v.label}{end.label}"
+    # V in the run's colour for it, blue from its pick to its claim (amber here, it was
+    # blue a moment later in the run on the same polygon)
     return frame, [fall, slide, tag(band, "argument", "figure:band"), claim], [
-        _dot(frame, v.point, theme.argument, "argument", "figure:step"), ball,
+        _dot(frame, v.point, theme.called, "called", "figure:step"), ball,
         figure_caption(box, theme, (words, theme.result))]
 
 

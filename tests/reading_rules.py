@@ -3600,3 +3600,253 @@ def _room_off(dot, box, fruit, walls, others, dots) -> bool:
         near = shapely.distance(boxes, shapely.Point(d))
         ok &= (near >= ROOM_GAP) & (near > shapely.distance(boxes, here))
     return bool(ok.any())
+
+
+# --- colour4: chapters 2 and 3, colours and timings as a viewer sees them -------------------------
+
+
+def _vertex_roles(anim: dict) -> Iterator[tuple[str, str]]:
+    """(label, role) of every vertex marker (a picture's ``vertex:K``, the panel's ``panel:K``)
+    an animation (or its members) records, in the role it is tagged with: the role its
+    colour shows (a board recolours a marker and tags it together)."""
+    for _, node in _recorded(anim):
+        label = _vertex_label(node)
+        if label is not None and node.get("role"):
+            yield label, node["role"]
+
+
+def _reaches(anim: dict) -> Iterator[str]:
+    """The vertices a tool is seen to reach in an animation (or its members): its ring lit
+    there (``lit:K``, the clock's and the sweep line's), or the pulse it gives the marker in
+    the pick's or a candidate's colour (the water's)."""
+    for child in anim.get("animations", ()):
+        yield from _reaches(child)
+    name = (anim.get("mobject") or {}).get("name") or ""
+    if anim.get("type") == "FadeIn" and name.startswith("lit:"):
+        yield name.removeprefix("lit:")
+    colour = str(anim.get("color") or "").upper()
+    if (anim.get("type") == "Indicate" and name.startswith("vertex:")
+            and colour in (_colour("argument"), _colour("candidate"))):
+        yield name.removeprefix("vertex:")
+
+
+def _new_picture(play: dict) -> bool:
+    """Whether a play brings a polygon in: a new picture, its markers afresh."""
+    return any(a.get("type") in INCOMING and (a.get("mobject") or {}).get("name") in _POLYGONS
+               for a in play["animations"])
+
+
+def early_picks(data: dict) -> list[str]:
+    """The picks lit amber (the claim to be) before the tool reaches them, as ``"play 132 E
+    amber, reached at play 134"``: chapter 2's working runs lit the pick amber as the tool
+    set out, about a second before it got there (the sweep's E at 165.0 s, reached at
+    166.2 s). A tool's reach is its ring or its pulse there (:func:`_reaches`)."""
+    found: list[str] = []
+    roles: dict[str, str] = {}
+    amber: dict[str, int] = {}  # vertex: the play it turned amber in
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            roles, amber = {}, {}
+        for anim in play["animations"]:
+            for label, role in _vertex_roles(anim):
+                if role == "argument" and roles.get(label) != "argument":
+                    amber.setdefault(label, k)
+                roles[label] = role
+        for label in sorted({v for anim in play["animations"] for v in _reaches(anim)}):
+            if amber.get(label, k) < k:
+                found.append(f"play {amber[label]} {label} amber, reached at play {k}")
+    return list(dict.fromkeys(found))
+
+
+#: the roles a vertex is lit in that say something of it (not the ink of one out of the call,
+#: nor a candidate's neutral pink): a viewer seeing a vertex turn one asks why
+_SAYING_ROLES = ("called", "argument", "result", "rejected")
+#: a word of a caption made only of vertex labels ("CH", "E", "a₂b₂")
+_LABEL_WORD = re.compile(r"(?:[A-Z][₀-₉′″]*)+|(?:[a-z][₀-₉′″]+)+")
+_ONE_LABEL = re.compile(r"[A-Z][₀-₉′″]*|[a-z][₀-₉′″]+")
+
+
+def labels_said(caption: str) -> set[str]:
+    """The vertex labels a caption names: its words of labels only, each label of them.
+
+    >>> sorted(labels_said("Claim: CH is an inner diagonal; BD crosses edge E–A"))
+    ['A', 'B', 'C', 'D', 'E', 'H']
+    >>> sorted(labels_said("Turn the polygon so that gravity points down"))
+    []
+    """
+    return {label for word in re.findall(r"[\w′″]+", caption) if _LABEL_WORD.fullmatch(word)
+            for label in _ONE_LABEL.findall(word)}
+
+
+#: the words of a caption that say its steps show what they showed before (a summary's fast
+#: beats, a frame built again): its colours were said then
+_AS_BEFORE = re.compile(r"the same steps|as before")
+
+
+def unsaid_colour_changes(data: dict) -> list[str]:
+    """The vertices lit in a new role under a caption that does not name them, as ``"play 16
+    C result → called under 'Turn the polygon so that gravity points down'"``: chapter 3's
+    C went green as it was picked, then blue a second later as the polygon turned, and G
+    green (where the ball slid), then amber under "The rubber band snags H". A vertex's
+    colour changes when the words say why; going back to its ink or to a candidate's pink
+    (neutral again) needs none, nor a step the caption says is as before (:data:`_AS_BEFORE`).
+    Each vertex, roles and caption once."""
+    found: list[str] = []
+    roles: dict[str, str] = {}
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        if _new_picture(play):
+            roles = {}
+        said = labels_said(caption) if not _AS_BEFORE.search(caption) else None
+        for anim in play["animations"]:
+            for label, role in _vertex_roles(anim):
+                was = roles.get(label, role)
+                roles[label] = role
+                if role != was and role in _SAYING_ROLES and said is not None \
+                        and label not in said:
+                    found.append(f"play {k} {label} {was} → {role} under {caption!r}")
+    # one line per change, the picture's marker and the panel's told once
+    return list(dict.fromkeys(found))
+
+
+#: the red regions of a failure: the part of a tool's sweep outside P (an analysis's)
+_RED_REGIONS = ("analysis:outside",)
+
+
+def picks_in_the_red(data: dict) -> list[str]:
+    """The vertex markers whose label or dot stands on a red region (:data:`_RED_REGIONS`)
+    with no dark halo (:func:`_haloed`) to set it apart, as ``"play 51 D label on
+    analysis:outside"``: chapter 2's analyses drew the amber D, the pick, inside the red
+    "outside P" wedge, its dot on the wedge's edge — amber on red, neither read. Each vertex
+    and part once."""
+    import shapely
+
+    found: list[str] = []
+    for k, shown in _shown_after_plays(data, ("vertex:", *_RED_REGIONS)):
+        red = [shapely.Polygon(ring) for name, node in shown.items()
+               if name.startswith(_RED_REGIONS) for part in mobject_nodes(node)
+               if (part.get("fill_opacity") or 0) > 0 for ring in _paths(part)]
+        red = [r for r in red if r.is_valid and r.area > 0]
+        if not red:
+            continue
+        wedge = shapely.union_all(red)
+        for name, marker in shown.items():
+            if not name.startswith("vertex:"):
+                continue
+            for part in marker.get("submobjects", ()):
+                if (part.get("text") or "").strip() and part.get("box"):
+                    kind, shape = "label", shapely.box(*part["box"])
+                elif part.get("type") == "Dot" and part.get("points"):
+                    kind, shape = "dot", shapely.MultiPoint(_corners(part)).convex_hull
+                else:
+                    continue
+                if shape.intersects(wedge) and not _haloed(part):
+                    found.append(f"play {k} {name.removeprefix('vertex:')} {kind} on "
+                                 f"{_RED_REGIONS[0]}")
+    return _once_each(found)
+
+
+def _once_each(found: list[str]) -> list[str]:
+    """The first of the findings about each thing (``"play 51 D label on …"``: by what
+    follows the play's number)."""
+    seen: dict[str, str] = {}
+    for line in found:
+        seen.setdefault(line.split(" ", 2)[2], line)
+    return list(seen.values())
+
+
+#: the seconds a caption may come before what it speaks of: the words' lead of a board's play
+#: (:data:`metaphors.board.WORDS_TIME`) and a frame's rounding
+WORDS_LEAD = 0.35
+#: gravity's ball on screen: a run's, an analysis's, a card's figure's
+_BALLS = ("ball", "analysis:ball", "figure:ball")
+#: a caption telling what the ball does now (not what it will do: "the ball will hang there")
+_BALL_NOW = re.compile(r"\bthe ball (?:falls|slides|hangs|hits|rests)\b", re.I)
+
+
+def balls_not_there(data: dict) -> list[str]:
+    """The captions that tell what the ball does (:data:`_BALL_NOW`) while none is on screen,
+    for longer than the words' lead (:data:`WORDS_LEAD`), as ``"55.9 s: 'A close-up: the
+    ball falls only a short way' not with the ball"``: chapter 3's close-up said the ball
+    falls a short way, zoomed, and showed the ball only under the next caption, 2.8 s later.
+    Times as the graph has them (the plays' run times, summed)."""
+    found: list[str] = []
+    shown: set[str] = set()
+    t, waiting = 0.0, None  # the caption waiting for the ball, and when it came
+    for play in data["plays"]:
+        caption = play.get("subcaption")
+        if caption:
+            if waiting is not None:
+                found.append(f"{waiting[1]:.1f} s: {waiting[0]!r} not with the ball")
+            waiting = (caption, t) if _BALL_NOW.search(caption) and not shown else None
+        for anim in play["animations"]:
+            for kind, _, name in _ends(anim):
+                if name in _BALLS:
+                    (shown.discard if kind in OUTGOING else shown.add)(name)
+        if waiting is not None and shown:
+            late = t - waiting[1]
+            if late > WORDS_LEAD:
+                found.append(f"{waiting[1]:.1f} s: {waiting[0]!r} {late:.1f} s before the ball")
+            waiting = None
+        t += play["run_time"]
+    return found
+
+
+def _fills_shown(shown: dict[str, dict]) -> Iterator[tuple[str, str, float, Any]]:
+    """(owner's name, colour, z-index, region) of each filled part of the things shown
+    (not a text, not a legend's swatch)."""
+    import shapely
+
+    for name, node in shown.items():
+        if name.startswith(_LEGEND):
+            continue
+        for part in mobject_nodes(node):
+            if (part.get("fill_opacity") or 0) <= 0 or "text" in part or not part.get("points"):
+                continue
+            rings = [shapely.Polygon(r) for r in _paths(part)]
+            rings = [r for r in rings if r.is_valid and r.area > 0]
+            if rings:
+                yield (name, str(part.get("fill")).upper(), float(part.get("z", 0)),
+                       shapely.union_all(rings))
+
+
+def keys_with_nothing_shown(data: dict) -> list[str]:
+    """The legend entries left up once every region in their colour is gone or covered by
+    another colour drawn over it, as ``"play 48 legend:band"``: chapter 3's analysis kept
+    "band swept" (rose) beside a picture whose rose region the green "swept: in P" covered
+    (chapter 2's blue "swept" went before its green came). Only entries whose colour was
+    shown as a region while they were up (a run's red "outside P" names a line)."""
+    import shapely
+
+    found: list[str] = []
+    shown: dict[str, dict] = {}
+    filled: set[str] = set()  # the entries whose colour was shown as a region
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            shown, filled = {}, set()
+        for anim in play["animations"]:
+            for kind, node, name in _ends(anim):
+                if kind in OUTGOING:
+                    shown.pop(name, None)
+                elif name:
+                    shown[name] = node
+        fills = list(_fills_shown(shown))
+        for name, node in shown.items():
+            swatch = next((p for p in mobject_nodes(node) if p.get("type") == "Square"
+                           and (p.get("fill_opacity") or 0) > 0), None)
+            if not name.startswith(_LEGEND) or swatch is None:
+                continue
+            colour = str(swatch.get("fill")).upper()
+            own = [(z, r) for _, c, z, r in fills if c == colour]
+            seen = shapely.union_all([r for _, r in own]) if own else shapely.Polygon()
+            if own:
+                cover = [r for _, c, z, r in fills if c != colour and z > min(z for z, _ in own)]
+                if cover:
+                    seen = seen.difference(shapely.union_all(cover))
+            if seen.area > 1e-3:
+                filled.add(name)
+            elif name in filled:
+                found.append(f"play {k} {name}")
+                filled.discard(name)
+    return found

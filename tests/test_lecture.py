@@ -29,6 +29,7 @@ from click.testing import CliRunner
 from tests.reading_rules import (
     amber_figure_marks,
     answers_over_pictures,
+    balls_not_there,
     bare_ticks,
     broken_counts,
     broken_summaries,
@@ -42,6 +43,7 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     crowded_vertex_labels,
+    early_picks,
     early_snags,
     faint_cuts,
     far_verdicts,
@@ -50,6 +52,7 @@ from tests.reading_rules import (
     flickering_counts,
     hidden_failures,
     jumping_stacks,
+    keys_with_nothing_shown,
     labels_across_fills,
     labels_moved_by_cuts,
     labels_on_claims,
@@ -67,6 +70,7 @@ from tests.reading_rules import (
     morphed_water,
     notes_over_fills,
     notes_under_moving_tools,
+    picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
     red_after_the_pick,
@@ -93,6 +97,7 @@ from tests.reading_rules import (
     unmarked_candidates,
     unnamed_axes,
     unreadable_cues,
+    unsaid_colour_changes,
     unseen_ear_tests,
     unspoken_words,
     water_outside_polygon,
@@ -704,6 +709,19 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # grey: a vertex greyed only where a caption has said what grey means (chapters 2 to 6
     # greyed B, C, A, L and B for a second, unsaid: gravity's C while the band hung from it)
     assert unexplained_grey(data) == [], chapter.slug
+    # colour4: the pick amber as the tool reaches it (chapter 2's working runs lit it a
+    # second before), and every vertex on the red "outside P" set apart by a dark halo (the
+    # analyses' amber D stood in the red wedge)
+    assert early_picks(data) == [], chapter.slug
+    assert picks_in_the_red(data) == [], chapter.slug
+    # a vertex's colour changes as the words name it (chapter 3's C green as picked, then
+    # blue unsaid; G green, then amber under "The rubber band snags H")
+    assert unsaid_colour_changes(data) == [], chapter.slug
+    # the ball there as the words say what it does (the close-up said it falls a short way
+    # 2.8 s before it came), and no legend entry left once its colour is covered (chapter 3's
+    # "band swept" under the green "swept: in P")
+    assert balls_not_there(data) == [], chapter.slug
+    assert keys_with_nothing_shown(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():

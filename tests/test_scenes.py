@@ -47,6 +47,7 @@ from story.storyboard import run_vertices
 from tests.reading_rules import (
     LEAST_LINE,
     LEAST_TRIANGLE,
+    balls_not_there,
     broken_counts,
     broken_summaries,
     calls_over_code,
@@ -60,12 +61,14 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     crowded_vertex_labels,
+    early_picks,
     far_verdicts,
     fleeting_kind_words,
     flickering_counts,
     graph_nodes,
     hidden_failures,
     jumping_stacks,
+    keys_with_nothing_shown,
     labels_on_edges,
     labels_under_faces,
     labels_under_test_triangles,
@@ -76,6 +79,7 @@ from tests.reading_rules import (
     mixed_ending_labels,
     morphed_water,
     notes_under_moving_tools,
+    picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
     red_after_the_pick,
@@ -97,6 +101,7 @@ from tests.reading_rules import (
     thinnest_triangle,
     ticks_outside,
     unreadable_cues,
+    unsaid_colour_changes,
     unseen_ear_tests,
     unspoken_words,
     water_outside_polygon,
@@ -976,3 +981,17 @@ def test_words_on_the_picture_are_found():
     found = words_on_the_picture(data)
     assert f"{count['text']}: 0.00 from polygon" in found, found
     assert f"{title['text']}: 0.10 from vertex:A" in found, found
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_colours_change_as_the_tool_and_the_words_say(case):
+    """colour4: the pick turns amber as the tool reaches it (the working runs lit it as the
+    tool set out), a vertex's colour changes as the words name it (gravity's V green, then
+    blue, unsaid), the ball is there as the words say what it does (the close-up's words
+    came 2.8 s before it), and no legend entry outlives its colour."""
+    data = graph(case).data
+    assert early_picks(data) == [], case.id
+    assert unsaid_colour_changes(data) == [], case.id
+    assert balls_not_there(data) == [], case.id
+    assert picks_in_the_red(data) == [], case.id
+    assert keys_with_nothing_shown(data) == [], case.id
