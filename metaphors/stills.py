@@ -8,7 +8,7 @@ Colours come from the theme: T and its corners in the *called* colour, candidate
 
 from __future__ import annotations
 
-from manim import DL, UR, Camera, DashedLine, Scene, VGroup
+from manim import DL, UR, Camera, DashedLine, LineJointType, Scene, VGroup
 from manim import Polygon as MPolygon
 from shapely.geometry import Polygon as Region
 from shapely.geometry import box as area
@@ -78,6 +78,7 @@ def _haloed_on(markers: VGroup, corners: list, theme: Theme) -> None:
         label = marker[1]
         (x0, y0, _), (x1, y1, _) = label.get_corner(DL), label.get_corner(UR)
         if t.intersects(area(x0, y0, x1, y1)):
+            label.joint_type = LineJointType.ROUND  # a mitred halo spikes at M's points
             label.set_stroke(theme.background, width=LABEL_HALO, background=True)
 
 
