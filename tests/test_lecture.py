@@ -808,7 +808,8 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     assert counted[-16:] == [str(k) for k in range(15, -1, -1)]
     # what the rule measured is drawn with the answer: C to each candidate
     measured = [a["mobject"] for p in data["plays"] for a in p["animations"]
-                if (a.get("mobject") or {}).get("name") == "answer:measured"]
+                if a["type"] == "Create" and (a.get("mobject") or {}).get("name")
+                == "answer:measured"]
     assert len(measured) == 2
 
 
