@@ -8,7 +8,9 @@ Colours come from the theme: T and its corners in the *called* colour, candidate
 
 from __future__ import annotations
 
-from manim import DL, UR, Camera, DashedLine, LineJointType, Scene, VGroup
+from typing import cast
+
+from manim import DL, UR, Camera, DashedLine, LineJointType, Scene, VGroup, VMobject
 from manim import Polygon as MPolygon
 from shapely.geometry import Polygon as Region
 from shapely.geometry import box as area
@@ -75,7 +77,7 @@ def _haloed_on(markers: VGroup, corners: list, theme: Theme) -> None:
     dark halo, so that it reads as on the background (E, F, G and M stood on the tint)."""
     t = Region(corners)
     for marker in markers:
-        label = marker[1]
+        label = cast(VMobject, marker[1])  # a marker is its dot and its label's text
         (x0, y0, _), (x1, y1, _) = label.get_corner(DL), label.get_corner(UR)
         if t.intersects(area(x0, y0, x1, y1)):
             label.joint_type = LineJointType.ROUND  # a mitred halo spikes at M's points
