@@ -66,7 +66,7 @@ def countdown(seconds: int, at: tuple[float, float, float], theme: Theme = THEME
         return UpdateFromAlphaFunc(shown, update, run_time=1.0, rate_func=linear)
 
     def end() -> Animation:
-        shown[0].become(_ring(0.0, at, theme))
+        shown[0].become(_ring(0.0, at, theme)).set_stroke(opacity=0.0)  # empty: no hair of it
         shown[1] = digits[-1]  # 0, from the play's first frame
         return FadeOut(shown)
 
