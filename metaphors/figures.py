@@ -263,8 +263,9 @@ def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
                     _overlap(box, other) for other in labels):
                 ring = Circle(radius=0.17, color=theme.ink,
                               stroke_width=theme.thin_stroke).move_to(at)
-                # with the card's line that says the word
-                return [comes_with(tag(VGroup(ring, shown), None, f"figure:{word}"), word)]
+                # with the card's line that says the word, and on no card that does not
+                # (the exercises' card showed "Convex" and "Reflex" and never said them)
+                return [said_only(tag(VGroup(ring, shown), None, f"figure:{word}"), word)]
     return []
 
 

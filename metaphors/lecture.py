@@ -40,6 +40,7 @@ from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
 from metaphors import catalog, figure_steps
 from metaphors.analysis import Analysis, play_analysis
+from metaphors.captions import whole_frames
 from metaphors.countdown import countdown
 from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
 from metaphors.figures import Figure, figure_mobjects
@@ -51,13 +52,20 @@ from metaphors.stills import MARKERS_AT, answer_front, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
-from story.exercises import Exercise, crossed_edges, make_exercises
+from story.exercises import (
+    Exercise,
+    checking_time,
+    crossed_edges,
+    hunted_exercise,
+    make_exercises,
+    measured_pairs,
+)
 from story.hunt import hunt
 from story.registry import spoken
 from story.runs import record_user_run
 from story.spec import RunSpec
 from story.storyboard import Pacing
-from usercode.heuristic import load_user_heuristic
+from usercode.heuristic import load_user_heuristic, run_heuristic
 
 #: the widest a card's line may be (scene units): a longer one wraps
 CARD_WIDTH = 13.2
@@ -84,6 +92,8 @@ FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 QUIZ_BOX = ((-2.7, -0.1), 7.4, 5.6)
 ANSWER_AT, ANSWER_WIDTH = (4.25, -0.3, 0), 4.6
 COUNTDOWN_AT = (4.25, 1.6, 0)
+#: seconds the answer takes to come in (its text, what it draws; the countdown's 0 fading)
+ANSWER_COMING = 1.2
 #: the space before a number (a no-break space there keeps it on its word's line)
 _NUMBER = re.compile(r" (?=\d)")
 #: the colour of each pick's front, as its metaphor draws it (:mod:`metaphors.theme`)
@@ -142,17 +152,23 @@ class Compare:
 @dataclass(frozen=True)
 class Hunted:
     """A heuristic the lecture did not cover (``FILE.py:FUNCTION``), a counterexample hunted
-    for at build time (:func:`story.hunt.hunt`, fixed ``seed`` and ``budget``), then its run
-    on it: a card says how it was found. ``general``: hunt only polygons in general position
-    whose wrong claim crosses an edge, so that the class sees it fail (issue 22)."""
+    for at build time (:func:`story.hunt.hunt`, fixed ``seed`` and ``budget``): a card says
+    how it was found, then the class is asked whether its claim there is inner, as an
+    exercise (the next number, ``think`` seconds counted down), and the answer draws what the
+    rule measured and where its claim leaves P. ``general``: hunt only polygons in general
+    position whose wrong claim crosses an edge, so that the class sees it fail (issue 22)."""
 
     heuristic: str
     title: str
     rule: str  # the rule in words
+    name: str = "the rule"  # its short name, as the question says it
+    #: why it claims its vertex, in words (no number): ``{pick}`` and ``{others}`` the labels
+    why: str = "it picks {pick}, not {others}"
     seed: int = 0
     budget: int = 2000
     general: bool = True
     figure: Figure | None = None  # the card's figure (e.g. the rule drawn on a polygon)
+    think: int = 15
 
 
 @dataclass(frozen=True)
@@ -177,6 +193,7 @@ class LectureScene(TraceScene):
     teacher_notes: tuple[Card, ...] = ()
     polygon = "lecture"  # the lecture's polygon, unless one is handed (trex lecture --polygon)
     call_line = False  # no code in the lecture: a run's steps are its lit rows and captions
+    asked = 0  # the number of the last exercise asked (a hunted one takes the next)
 
     def chapter_segments(self) -> tuple:
         """The chapter's segments, in order (a chapter's scene file says them)."""
@@ -331,16 +348,28 @@ class LectureScene(TraceScene):
         heuristic = load_user_heuristic(hunted.heuristic)
         found = hunt(heuristic, budget=hunted.budget, seed=hunted.seed,
                      general=hunted.general)
-        if not found.found:
+        if not found.found or found.polygon is None:
             raise ValueError(f"{heuristic.name}: no counterexample in {found.tried} polygons")
-        # the card tells what the computer did, not the command that did it (issue 22)
+        polygon = found.polygon
+        # the card tells what the computer did, not the command that did it (issue 22), and
+        # the shrinking only where it took vertices away ("It shrank the first failure to 5
+        # vertices" was said of a failure that had 5 already, and never explained)
+        shrunk = (f"Then it took vertices away while the rule still failed: {polygon.n} are "
+                  "left.",) if (found.first or 0) > polygon.n else ()
         self.play_card(Card(hunted.title, (
-            f"{hunted.rule}: a rule this lecture did not cover.",
-            f"The computer tried {found.tried} small polygons, fewest vertices first.",
-            f"It shrank the first failure to {found.polygon.n} vertices."), hunted.figure))  # type: ignore[union-attr]  # found: the hunt has its polygon
+            f"{hunted.name}: {hunted.rule[:1].lower()}{hunted.rule[1:]}, a rule this lecture "
+            "did not cover.",
+            f"The computer tried {found.tried} small polygons, fewest vertices first, until "
+            "the rule failed on one.", *shrunk), hunted.figure))
+        # asked as an exercise (it was played as a run the class only watched, with "Distance
+        # to C for D: 2.2" from coordinates it never saw): the answer draws what was measured
+        log = record_user_run(heuristic, polygon, f"hunted (seed {hunted.seed})")
+        claim = run_heuristic(polygon, heuristic)
+        exercise = hunted_exercise(self.asked + 1, f"hunted (seed {hunted.seed})", polygon,
+                                   hunted.name, claim.pair, hunted.why,
+                                   measured_pairs(log, polygon.labels))
         self.clear_screen()
-        log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")  # type: ignore[arg-type]  # found: the hunt has its polygon
-        self.play_run(Run(hunted.heuristic, None, f"{hunted.rule}, on the polygon found"), log)
+        self.ask(exercise, hunted.think)
 
     def play_analysis(self, analysis: Analysis) -> None:
         play_analysis(self, analysis, self.theme)
@@ -397,24 +426,26 @@ class LectureScene(TraceScene):
             self.ask(exercise, quiz.think)
 
     def ask(self, exercise: Exercise, think: int) -> None:
-        """The question, ``think`` seconds counted down, then the answer with its reason
-        beside the picture."""
+        """The question, ``think`` seconds counted down to 0, then the answer with its reason
+        beside the picture, up until the class has read it and checked it against the
+        picture (:func:`story.exercises.checking_time`)."""
         picture = [tag(m, None, "exercise") for m in still_mobjects(exercise, self.theme,
                                                                      QUIZ_BOX)]
         captions = captions_of(self)
         cue = captions.show(exercise.question, 0.8)
         mark_step(self, exercise.question, kind="question")
         self.play(*[FadeIn(m) for m in picture], run_time=0.8, **cue)
-        clock, seconds = countdown(think, COUNTDOWN_AT, self.theme)
+        clock, seconds, time_up = countdown(think, COUNTDOWN_AT, self.theme)
         self.add(clock)
         for second in seconds:
             self.play(second)
-        self.remove(clock)
         answer = f"{exercise.answer}: {exercise.reason}"
-        cue = captions.show(answer, 1.2)
+        cue = captions.show(answer, ANSWER_COMING)
         mark_step(self, answer, kind="answer")
-        self.play(*self.answer_animations(exercise, picture[MARKERS_AT]), run_time=1.2, **cue)
-        self.wait(3.0)
+        self.play(time_up(), *self.answer_animations(exercise, picture[MARKERS_AT]),
+                  run_time=ANSWER_COMING, **cue)
+        self.wait(whole_frames(checking_time(exercise, answer) - ANSWER_COMING))
+        self.asked = exercise.number
 
     def answer_animations(self, exercise: Exercise, markers: VGroup) -> list:
         """The answer's text beside the picture, and on the picture what it says: a pick's
@@ -428,6 +459,11 @@ class LectureScene(TraceScene):
                                    font=theme.font, width=ANSWER_WIDTH), "result", "answer")
         text.move_to(ANSWER_AT)
         anims: list[Animation] = [FadeIn(text)]
+        for i, j in exercise.measured:  # what the rule compared, under its claim
+            anims.append(Create(tag(Line(frame.to_scene(polygon.points[i]),
+                                         frame.to_scene(polygon.points[j]), color=theme.argument,
+                                         stroke_width=theme.stroke * 1.5),
+                                    "argument", "answer:measured")))
         if exercise.kind == "pick":
             anims += self._picked(exercise, frame, markers)
         for i, j in exercise.options or self._claimed(exercise):
@@ -470,6 +506,8 @@ class LectureScene(TraceScene):
 
     @staticmethod
     def _claimed(exercise: Exercise) -> tuple[tuple[int, int], ...]:
+        if exercise.claim is not None:  # a rule of one's own: its claim as the hunt ran it
+            return (exercise.claim,)
         if exercise.kind == "claim" and exercise.heuristic:
             return (find_diagonal(exercise.polygon, exercise.heuristic).pair,)
         return ()

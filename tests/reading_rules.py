@@ -2900,18 +2900,21 @@ def _countdown_number(play: dict) -> str | None:
 
 def uneven_countdowns(data: dict) -> list[str]:
     """The countdowns whose numbers are not each up for one second (± :data:`ONE_FRAME`) in
-    order down to 1, as ``"play 8: 15 up 15.00 s"``: one eased play for the whole wait kept
-    "15" and "1" up for 3.7 s each and rushed the others by. A number's time is the run time
-    of the plays it is shown in (the graph cannot see a rate function, so each second is a
-    play of its own)."""
+    order down to 1, then 0 as the time is up (as it goes), as ``"play 8: 15 up 15.00 s"`` or
+    ``"play 8: counts 15, …, 1"``: one eased play for the whole wait kept "15" and "1" up for
+    3.7 s each and rushed the others by, and a count that stops at 1 leaves the class a second
+    short. A number's time is the run time of the plays it is shown in (the graph cannot see a
+    rate function, so each second is a play of its own)."""
     found = []
     numbers: list[tuple[int, str, float]] = []  # (first play, number, seconds up), this countdown
 
     def check() -> None:
-        expected = [str(k) for k in range(len(numbers), 0, -1)]
+        expected = [str(k) for k in range(len(numbers) - 1, -1, -1)]
         if numbers and [n for _, n, _ in numbers] != expected:
-            found.append(f"play {numbers[0][0]}: counts {', '.join(n for _, n, _ in numbers)}")
-        found.extend(f"play {k}: {n} up {t:.2f} s" for k, n, t in numbers
+            shown = [n for _, n, _ in numbers]
+            counted = ", ".join(shown if len(shown) < 5 else [*shown[:2], "…", *shown[-2:]])
+            found.append(f"play {numbers[0][0]}: counts {counted}")
+        found.extend(f"play {k}: {n} up {t:.2f} s" for k, n, t in numbers[:-1]
                      if abs(t - 1.0) > ONE_FRAME)
         numbers.clear()
 
@@ -3849,4 +3852,163 @@ def keys_with_nothing_shown(data: dict) -> list[str]:
             elif name in filled:
                 found.append(f"play {k} {name}")
                 filled.discard(name)
+
+
+# --- the exercises chapter, reviewed as a class would use it (review of chapter 6) ------------
+
+#: the least an exercise's answer stays up (seconds), and what each thing it names on the
+#: picture adds to its reading time: a class checks the answer against the picture (an answer
+#: naming three diagonals was up 4.5 s)
+LEAST_CHECKING, CHECK_EACH = 8.0, 2.0
+#: what an answer draws that the class checks: a named diagonal, a pick
+_CHECKED = ("answer:diagonal", "pick")
+
+
+def hurried_answers(data: dict) -> list[str]:
+    """The exercises' answers taken down before a class can check them, as ``"4.5 s < 10.5
+    s: BF, BM: …"``: each answer's cue (the caption of the play that brings its text in)
+    lasts at least :data:`LEAST_CHECKING`, and its reading time with :data:`CHECK_EACH` for
+    each diagonal or pick it draws."""
+    from story.reading import reading_time
+
+    cues = {c["text"]: c for c in data["cues"]}
+    found = []
+    for play in data["plays"]:
+        nodes = [node for _, node in _recorded_all_nodes(play)]
+        if not any(n.get("name") == "answer" for n in nodes) or not play.get("subcaption"):
+            continue
+        said = play["subcaption"]
+        checked = sum(1 for n in nodes if n.get("name") in _CHECKED)
+        least = max(LEAST_CHECKING, reading_time(said) + CHECK_EACH * max(1, checked))
+        cue = cues.get(said)
+        up = cue["end"] - cue["start"] if cue else 0.0
+        if up < least - 1e-6:
+            found.append(f"{up:.1f} s < {least:.1f} s: {said}")
+    return found
+
+
+#: the words a card's figure writes on its picture (:func:`metaphors.figures._vertex_word`)
+_FIGURE_WORDS = ("convex", "reflex")
+
+
+def unsaid_figure_words(data: dict) -> list[str]:
+    """The words a figure writes on its picture ("Convex", "Reflex") that come in while the
+    caption up does not say them, as ``"play 1: Reflex under 'Exercises'"``: the exercises'
+    card showed both with its title and never said what they meant."""
+    found = []
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for kind, node in _recorded_all_nodes(play):
+            word = (node.get("name") or "").removeprefix("figure:")
+            if kind in INCOMING and word in _FIGURE_WORDS and word not in caption.lower():
+                found.append(f"play {k}: {word.capitalize()} under {caption!r}")
+    return found
+
+
+#: a measure said as a bare number at a caption's end: "Distance to C for D: 2.2" (from
+#: coordinates the class never saw: in what unit, compared with what?)
+_BARE_MEASURE = re.compile(r":\s*-?\d+(?:\.\d+)?$")
+
+
+def bare_measures(data: dict) -> list[str]:
+    """The captions that end on a number with nothing to say what it measures, as
+    ``"Distance to C for D: 2.2"``."""
+    return [c["text"] for c in data["cues"] if _BARE_MEASURE.search(c["text"])]
+
+
+#: what the screen should not say: how the answers are made ("checked by the geometry code")
+_IMPLEMENTATION = re.compile(r"\b(?:geometry|the|our|its) code\b", re.IGNORECASE)
+
+
+def implementation_talk(data: dict) -> list[str]:
+    """The captions that speak of the program rather than the polygon, as ``"… the answer is
+    checked by the geometry code."``."""
+    return [c["text"] for c in data["cues"] if _IMPLEMENTATION.search(c["text"])]
+
+
+def verdicts_before_red(data: dict) -> list[str]:
+    """The ✗ captions that come up before anything turns red, as ``"play 230: ✗ BE is not
+    …"``: the caption said BE was not inner while BE stood amber for half a second. The play
+    that brings a ✗ caption brings, or turns, something red (what it says fails)."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        said = play.get("subcaption") or ""
+        if not said.startswith("✗"):
+            continue
+        red = any(_REJECTED in json.dumps(node).upper() for kind, node in _recorded_all_nodes(play)
+                  if kind not in OUTGOING)
+        if not red:
+            found.append(f"play {k}: {said}")
+    return found
+
+
+def _exercise_t(node: dict) -> list[tuple[float, float]] | None:
+    """T's corners, if ``node`` is an exercise's tinted triangle (a filled polygon of three)."""
+    if node.get("type") != "Polygon" or not (node.get("fill_opacity") or 0):
+        return None
+    corners = list(dict.fromkeys(_corners(node)))
+    return corners if len(corners) == 3 else None
+
+
+def labels_on_t_without_halo(data: dict) -> list[str]:
+    """The exercises' vertex labels that stand over T's tint with no dark halo, as ``"E on
+    T"``: a candidate's label must (its vertex lies in T), and pink or green on the tint
+    read as on the picture, not beside it (E, F, G and M stood on it)."""
+    from shapely.geometry import Polygon as Region
+    from shapely.geometry import box as area
+
+    found: list[str] = []
+    for play in data["plays"]:
+        nodes = [node for anim in play["animations"] if anim.get("type") in INCOMING
+                 for node in mobject_nodes(anim.get("mobject") or {})
+                 if node.get("name") == "exercise" or anim["mobject"].get("name") == "exercise"]
+        tinted = [Region(t) for node in nodes if (t := _exercise_t(node))]
+        if not tinted:
+            continue
+        for node in nodes:
+            parts = [p["type"] for p in node.get("submobjects", ())]
+            if parts != ["Dot", "FlatText"]:
+                continue
+            label = node["submobjects"][1]
+            if label.get("box") and tinted[0].intersects(area(*label["box"])) \
+                    and not _haloed(label):
+                found.append(f"{label['text']} on T")
+    return found
+
+
+def labels_across_t(data: dict) -> list[str]:
+    """The vertex labels of a card's figure that stand across T's side from their vertex, as
+    ``"D across T's side"``: a vertex inside T whose label stands outside it reads as the
+    label of a point beyond the side (the counterexample's D, 28 px off across AC, on the
+    exercises' card)."""
+    from shapely.geometry import Point as ShapelyPoint
+    from shapely.geometry import Polygon as Region
+
+    found: list[str] = []
+    t = markers = None
+    for play in data["plays"]:
+        for kind, node in _recorded_all_nodes(play):
+            name = node.get("name")
+            if kind not in INCOMING:
+                continue
+            if name == "card:title":
+                t = markers = None
+            elif name == "figure:T":
+                t = Region(list(dict.fromkeys(_corners(node))))
+            elif name == "figure:vertices":
+                markers = node
+        if t is None or markers is None:
+            continue
+        inside = t.buffer(-1e-3)
+        for marker in markers.get("submobjects", ()):
+            dot = _dot_centre(marker)
+            label = next((p for p in marker.get("submobjects", ()) if p.get("text")), None)
+            if dot is None or label is None or not label.get("box"):
+                continue
+            x0, y0, x1, y1 = label["box"]
+            beyond = not t.contains(ShapelyPoint((x0 + x1) / 2, (y0 + y1) / 2))
+            said = f"{label['text']} across T's side"
+            if inside.contains(ShapelyPoint(dot)) and beyond and said not in found:
+                found.append(said)
     return found

@@ -30,6 +30,7 @@ from tests.reading_rules import (
     amber_figure_marks,
     answers_over_pictures,
     balls_not_there,
+    bare_measures,
     bare_ticks,
     broken_counts,
     broken_summaries,
@@ -51,12 +52,16 @@ from tests.reading_rules import (
     fleeting_kind_words,
     flickering_counts,
     hidden_failures,
+    hurried_answers,
+    implementation_talk,
     jumping_stacks,
     keys_with_nothing_shown,
     labels_across_fills,
+    labels_across_t,
     labels_moved_by_cuts,
     labels_on_claims,
     labels_on_edges,
+    labels_on_t_without_halo,
     labels_on_the_ball,
     labels_on_the_fruit_with_room,
     labels_struck_by_the_sweep,
@@ -98,8 +103,10 @@ from tests.reading_rules import (
     unnamed_axes,
     unreadable_cues,
     unsaid_colour_changes,
+    unsaid_figure_words,
     unseen_ear_tests,
     unspoken_words,
+    verdicts_before_red,
     water_outside_polygon,
     words_before_pictures,
     words_over_the_picture,
@@ -573,8 +580,23 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 item 6: time to think, and the answer beside the picture, not over it
     assert rushed_questions(data) == [], chapter.slug
     # and the countdown ticks once a second, each number up 1 s (it was eased: 15 and 1 stayed
-    # 3.7 s each, the rest rushed by)
+    # 3.7 s each, the rest rushed by), down to 0 as the answer comes (it stopped at 1)
     assert uneven_countdowns(data) == [], chapter.slug
+    # review of chapter 6: and the answer stays up until it is checked against the picture
+    # (three diagonals named, up 4.5 s)
+    assert hurried_answers(data) == [], chapter.slug
+    # a figure's "Convex" and "Reflex" only with the words that say them, no measure said as
+    # a bare number ("Distance to C for D: 2.2"), no talk of how the program works ("checked
+    # by the geometry code"), a ✗ said only as something turns red (BE stood amber under it),
+    # and an exercise's labels on T's tint on a dark halo
+    assert unsaid_figure_words(data) == [], chapter.slug
+    assert bare_measures(data) == [], chapter.slug
+    assert implementation_talk(data) == [], chapter.slug
+    assert verdicts_before_red(data) == [], chapter.slug
+    assert labels_on_t_without_halo(data) == [], chapter.slug
+    # and a card's figure labels a vertex in T on T's side of its edges (the counterexample's
+    # D and the rule figure's H stood across T's side from their dots)
+    assert labels_across_t(data) == [], chapter.slug
     # an answer's number keeps to its words ("25.5" stood alone on the answer's last line)
     assert lone_numbers(data) == [], chapter.slug
     # a run's pseudocode names its pick once picked ("claim BE" stood there from the start)
@@ -770,7 +792,11 @@ def test_every_chapter_with_its_source_in_the_panel_is_readable(chapter):
 
 def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     """Issue 13: a rule the lecture did not cover, its counterexample found at build time
-    (fixed seed), re-checked here exactly, and the card says how it was found."""
+    (fixed seed), re-checked here exactly, and the card says how it was found. Review of
+    chapter 6: the class is asked about it, as an exercise with its countdown (it was a run
+    it only watched), the answer says why the rule claims its vertex in words, and the card
+    speaks of shrinking only where the hunt took vertices away (it said "It shrank the first
+    failure to 5 vertices" of a failure of 5)."""
     from geometry.check import is_inner_diagonal
     from metaphors.lecture import Hunted
     from story.hunt import hunt, in_general_position
@@ -794,9 +820,28 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     cues = [c["text"] for c in data["cues"]]
     assert hunted[0].title in cues  # the card: its title, then each line its own cue
     # issue 22: the card tells what the computer did, naming no command
-    assert f"The computer tried {found.tried} small polygons, fewest vertices first." in cues
+    assert f"The computer tried {found.tried} small polygons, fewest vertices first, until " \
+        "the rule failed on one." in cues
     assert not any("trex" in c or "seed" in c for c in cues)
-    assert any(c.startswith(f"✗ {found.claim_name} is not an inner diagonal") for c in cues)
+    assert found.first == found.polygon.n and not any("shrank" in c or "took vertices" in c
+                                                      for c in cues)
+    # asked, counted down, then answered: no, its claim, why in words, the crossed edge
+    question = f"Is the claim of {hunted[0].name} an inner diagonal?"
+    asked = cues.index(question)
+    answer = cues[asked + 1]
+    assert answer == (f"no (it claims {found.claim_name}): E is nearer to C than D; "
+                      f"{found.claim_name} crosses edge C–D")
+    cue = data["cues"][asked]
+    assert cue["end"] - cue["start"] >= 15
+    counted = [n["text"] for p in data["plays"] for a in p["animations"]
+               if (node := a.get("mobject") or {}).get("name") == "countdown"
+               for n in [node["submobjects"][1]]]
+    assert counted[-16:] == [str(k) for k in range(15, -1, -1)]
+    # what the rule measured is drawn with the answer: C to each candidate
+    measured = [a["mobject"] for p in data["plays"] for a in p["animations"]
+                if a["type"] == "Create" and (a.get("mobject") or {}).get("name")
+                == "answer:measured"]
+    assert len(measured) == 2
 
 
 def test_text_on_black_is_at_most_a_tenth_of_the_lecture():
@@ -835,8 +880,8 @@ def test_a_card_with_a_figure_is_not_text_alone():
     assert 1.3 <= alone < total / 2
 
 
-@pytest.mark.parametrize("slug, label", [("heuristics", "B"), ("gravity", "C"),
-                                         ("exercises", "B")])
+# (chapter 6 played its hunted rule as a run too: it asks it as an exercise now, no tool)
+@pytest.mark.parametrize("slug, label", [("heuristics", "B"), ("gravity", "C")])
 def test_the_vertex_a_tool_or_claim_is_drawn_from_keeps_its_colour(slug, label):
     """Grey: the vertex a call runs on keeps its blue while what is drawn from it stays (T
     round B, gravity's band hanging from C), until its claim is judged: B went grey as T was
