@@ -3441,3 +3441,84 @@ def _room_off(dot, box, fruit, walls, others, dots) -> bool:
         near = shapely.distance(boxes, shapely.Point(d))
         ok &= (near >= ROOM_GAP) & (near > shapely.distance(boxes, here))
     return bool(ok.any())
+
+
+# --- ov5: a verdict's words come with its colour ---------------------------------------------------
+
+#: the captions whose words say a colour on the picture, and that colour as the graph writes
+#: it (metaphors.theme.THEME): a verdict's tick the result's green, its cross the rejected's
+#: red, divide and conquer's question and its recursion the piece lit in the called blue
+COLOURED_WORDS = (("✓", "#4CC46B"), ("✗", "#EF4B4B"),
+                  ("Find an inner diagonal of this polygon", "#4F8FF7"),
+                  ("Triangulate this part the same way", "#4F8FF7"))
+
+
+def _shown_colours(anim: dict) -> set[str]:
+    """The colours an animation (and its members) puts on the picture: what a fade or a
+    drawing brings in, or what a recolouring turns a mobject to (its target), every part; the
+    subtitle and the panel (its lit row's light, its rows, its small polygon) are not the
+    picture."""
+    found: set[str] = set()
+    node = anim.get("target") if anim["type"] == "_MethodAnimation" else anim.get("mobject")
+    name = (node or {}).get("name") or ""
+    if anim["type"] not in OUTGOING and node and name != "subtitle" \
+            and not name.startswith(("panel:", "code:")):
+        for part in mobject_nodes(node):
+            found |= {(part.get(key) or "").upper() for key in ("stroke", "fill")}
+    for child in anim.get("animations", ()):
+        found |= _shown_colours(child)
+    return found
+
+
+def words_ahead_of_colours(data: dict) -> list[str]:
+    """The plays that put up a caption saying a colour (:data:`COLOURED_WORDS`: "✓ DG is an
+    inner diagonal", "Find an inner diagonal of this polygon") without bringing that colour on
+    the picture, which came only in a later play, as ``"play 26: '✓ DG is an inner
+    diagonal' before #4CC46B"``: chapter 1's ✓ stood 0.6 s over an amber DG, its question
+    0.5 s before the piece turned blue, chapters 3 and 6's ✗ over an amber BE."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        said = play.get("subcaption") or ""
+        colour = next((c for words, c in COLOURED_WORDS if said.startswith(words)), None)
+        if colour is None:
+            continue
+        shown = set().union(*(_shown_colours(a) for a in play["animations"]))
+        if colour not in shown:
+            found.append(f"play {k}: {said!r} before {colour}")
+    return found
+
+
+# --- ov5: each row of a run's pseudocode is lit when it runs ----------------------------------------
+
+
+def _listed_rows(anim: dict) -> list[str]:
+    """The rows of a pseudocode listing an animation puts on the screen (its ``code:`` rows,
+    not lit: the panel's whole listing), in order."""
+    if anim["type"] not in INCOMING:
+        return []
+    return [(node.get("text") or "").strip() for node in mobject_nodes(anim.get("mobject") or {})
+            if (node.get("name") or "").startswith("code:") and node.get("role") != "called"
+            and node is not anim.get("mobject") and (node.get("text") or "").strip()]
+
+
+def unlit_rows(data: dict) -> list[str]:
+    """The rows of a run's pseudocode never lit while its listing is shown, as ``"'if P is a
+    triangle, we are done' (run 1)"``: chapter 1's divide and conquer ran its base case and
+    its recursion eleven and nine times, and lit neither row (nothing it ran said so). For a
+    run whose every row runs (divide and conquer on a polygon of four vertices or more)."""
+    found, runs = [], 0
+    listed: list[str] = []
+    lit: set[str] = set()
+
+    def close() -> None:
+        found.extend(f"{row!r} (run {runs})" for row in listed if row not in lit)
+
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            rows = _listed_rows(anim)
+            if rows:
+                close()
+                runs, listed, lit = runs + 1, rows, set()
+            lit.update(_lit_rows(anim))
+    close()
+    return found

@@ -93,6 +93,7 @@ from tests.reading_rules import (
     unreadable_cues,
     unspoken_words,
     water_outside_polygon,
+    words_ahead_of_colours,
     words_before_pictures,
     words_over_the_picture,
 )
@@ -555,6 +556,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert crossfaded_overlaps(data) == [], chapter.slug
     # issue 22: a run's title and picture come with its panel and first words, not after
     assert words_before_pictures(data) == [], chapter.slug
+    # ov5: a verdict's words come with its colour ("✓ DG is an inner diagonal" stood 0.6 s
+    # over an amber DG in chapter 1, "✗ BE …" over an amber BE in chapter 6), and divide and
+    # conquer's question with the piece it lights
+    assert words_ahead_of_colours(data) == [], chapter.slug
     # a counter (slices, the whole count) stands clear of the labels
     assert crowded_counts(data) == [], chapter.slug
     # issue 22 item 3: every red claim leaves its polygon by 4 % of the frame's height
@@ -832,7 +837,7 @@ def test_the_overview_poses_the_problem_with_a_black_box():
     diagonal (gravity is taught in chapter 3): each piece lights up, the box is asked, the
     diagonal comes out and is split along, down to n − 2 triangles; no ball, band or
     gravity arrow, and no word of gravity. The chapter stays at least 75 s."""
-    from tests.reading_rules import graph_nodes
+    from tests.reading_rules import graph_nodes, unlit_rows
     from trex.chapters import lecture_chapters
     from trex.snapshot import build
 
@@ -851,6 +856,11 @@ def test_the_overview_poses_the_problem_with_a_black_box():
     assert sum("grey" in c for c in cues) == 1 and unexplained_grey(data) == []
     counters = [n["text"] for n in graph_nodes(data) if n.get("name") == "counter"]
     assert counters and counters[-1] == "n − 2 = 13 − 2\n= 11 triangles"
+    # ov5: every row of the pseudocode lit as it runs: the base case as each triangle is done,
+    # the recursion as each part is taken up (neither was ever lit)
+    assert unlit_rows(data) == []
+    assert any(c.endswith("is a triangle: done") for c in cues)
+    assert any(c.startswith("Triangulate this part the same way") for c in cues)
     assert sum(p["run_time"] for p in data["plays"]) >= 75
 
 
