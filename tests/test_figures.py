@@ -845,12 +845,13 @@ def caption_problems(play: dict) -> list[str]:
 
 
 def _captioned_cards(cls) -> int:
-    """How many of a chapter's cards have a figure that draws a caption."""
+    """How many captions the figures of a chapter's cards draw (each comes in a play of its
+    own: the overview's cut counts its vertices, then the count for this P takes its place)."""
     from metaphors.lecture import Card, Hunted
 
     figures = [s.figure for s in cls.__new__(cls).chapter_segments()
                if isinstance(s, Card | Hunted) and s.figure is not None]
-    return sum(1 for f in figures if named(figure_mobjects(f, "lecture"), "figure:label"))
+    return sum(len(named(figure_mobjects(f, "lecture"), "figure:label")) for f in figures)
 
 
 def _lecture_chapters():
