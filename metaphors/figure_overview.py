@@ -162,7 +162,7 @@ def _definitions(polygon: Polygon, frame: Frame, found: Examples, box: Box,
         edge = f"{polygon.labels[u]}–{polygon.labels[v]}"
         crossed = crossed_edge(frame.to_scene(polygon.points[u]),
                                frame.to_scene(polygon.points[v]), f"figure:edge:{edge}", theme)
-        words = _edge_name(polygon, frame, found, f"edge {edge}", theme)
+        words = _edge_name(polygon, frame, found, edge, theme)  # the edge's name, red by it
         parts += [comes_with(_line(polygon, frame, found.leaving, theme.rejected, "rejected",
                                    "figure:claim", theme), wrong),
                   comes_with(crossed, wrong), comes_with(words, wrong)]
@@ -183,35 +183,45 @@ def _edge_name(polygon: Polygon, frame: Frame, found: Examples, words: str,
     assert found.edge is not None and found.leaving is not None  # drawn only with both
     shown = typeset.text(words, font=theme.font, size=caption_size(theme),
                          colour=theme.rejected)
-    a, b = (frame.to_scene(polygon.points[k]) for k in found.edge)
     ring = [frame.to_scene(p)[:2] for p in polygon.points]
     lines = [shapely.LineString([ring[k - 1], ring[k]]) for k in range(len(ring))]
     lines += [_segment(polygon, frame, *pair) for pair in (found.inner, found.leaving,
                                                            found.through) if pair]
+    # the labels where the figure puts them: clear of the diagonals it draws across P
+    placed = placed_vertex_markers(polygon, frame, theme, [found.inner, found.leaving]
+                                   if found.inner else [found.leaving])
     labels = [shapely.box(*part.get_corner(np.array([-1, -1, 0]))[:2],
-                          *part.get_corner(np.array([1, 1, 0]))[:2]).buffer(0.05)
-              for marker in placed_vertex_markers(polygon, frame, theme) for part in marker]
+                          *part.get_corner(np.array([1, 1, 0]))[:2])
+              for marker in placed for part in marker]
     if found.vertex is not None:  # the ring round the vertex a diagonal passes through
         lines.append(shapely.Point(ring[found.vertex]).buffer(0.2))
     busy = shapely.union_all([*lines, *labels])
     inside = shapely.Polygon(ring)
-    crossing = _segment(polygon, frame, *found.leaving).intersection(
-        _segment(polygon, frame, *found.edge))
-    direction = (b - a) / max(float(np.linalg.norm(b - a)), 1e-9)
-    normal = np.array([-direction[1], direction[0], 0.0])
+    edge = _segment(polygon, frame, *found.edge)
+    crossing = _segment(polygon, frame, *found.leaving).intersection(edge)
     half = np.array([shown.width / 2, shown.height / 2])
-
-    def area(centre: np.ndarray) -> shapely.Polygon:
-        return shapely.box(*(centre[:2] - half), *(centre[:2] + half))
-
-    # beside the edge, outside P, clear of the lines and labels, nearest where it is crossed
-    spots = [a + (b - a) * k + normal * side * (gap + float(np.abs(normal[:2]) @ half))
-             for k in np.linspace(0.1, 0.9, 17) for side in (1, -1)
-             for gap in (0.12, 0.25, 0.4)]
-    best = min(spots, key=lambda p: (area(p).intersects(inside),
-                                     area(p).distance(busy) < 0.1,
-                                     area(p).distance(crossing)))
+    # every place within reach of the edge (a grid), outside P and clear of the lines and the
+    # labels: the nearest to where the diagonal crosses it (in the slot beside the crossing
+    # there was no room: the name stood over F's label and across DI)
+    (x0, y0, x1, y1), reach = edge.bounds, 1.2
+    xs = np.arange(x0 - reach, x1 + reach, 0.05)
+    ys = np.arange(y0 - reach, y1 + reach, 0.05)
+    cx, cy = (v.ravel() for v in np.meshgrid(xs, ys))
+    boxes = shapely.box(cx - half[0], cy - half[1], cx + half[0], cy + half[1])
+    room = (~shapely.intersects(boxes, inside) & (shapely.distance(boxes, busy) >= 0.06)
+            & (shapely.distance(boxes, edge) <= 0.6) & _in_frame(boxes))
+    near = np.where(room, shapely.distance(boxes, crossing), np.inf)
+    k = int(np.argmin(near))
+    if not np.isfinite(near[k]):  # no room: beside the edge's middle, as best it can
+        k = int(np.argmin(shapely.distance(shapely.points(cx, cy), edge.centroid)))
+    best = np.array([cx[k], cy[k], 0.0])
     return tag(shown.move_to(best), "rejected", "figure:edge-name")
+
+
+def _in_frame(boxes: np.ndarray) -> np.ndarray:
+    """Which boxes lie inside the frame's left half, where a card's figure is drawn."""
+    x0, y0, x1, y1 = shapely.bounds(boxes).T
+    return (x0 >= -7.0) & (x1 <= -0.2) & (y0 >= -3.4) & (y1 <= 2.6)
 
 
 def _why_n_minus_2(polygon: Polygon, frame: Frame, found: Examples, box: Box,

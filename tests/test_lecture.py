@@ -1074,8 +1074,7 @@ def test_the_overview_draws_each_definition_as_it_is_said():
     parts = brought(f"{leaving} is not: it leaves P, crossing edge {edge}")
     assert colours(parts, "figure:claim") == {THEME.rejected.upper()}
     assert colours(parts, f"figure:edge:{edge}") == {THEME.rejected.upper()}
-    assert [m.get("text") for m in parts if m.get("name") == "figure:edge-name"] == [
-        f"edge {edge}"]
+    assert [m.get("text") for m in parts if m.get("name") == "figure:edge-name"] == [edge]
     parts = brought(f"Nor is {through}: it passes through vertex {vertex}")
     assert colours(parts, "figure:through") == {THEME.rejected.upper()}
     assert any(m.get("name") == "figure:through-vertex" for m in parts)
