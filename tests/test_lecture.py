@@ -1018,7 +1018,8 @@ def test_a_run_told_again_over_another_drawing_is_a_replay():
 
 
 def _card_lines_and_parts(data: dict) -> list[tuple[str, list[dict]]]:
-    """Each card line of a graph, with the figure parts the play that brings it brings in."""
+    """Each card line of a graph (its words, without the bullet), with the figure parts the
+    play that brings it brings in."""
     from tests.reading_rules import INCOMING, _text_of
 
     found = []
@@ -1026,7 +1027,7 @@ def _card_lines_and_parts(data: dict) -> list[tuple[str, list[dict]]]:
         brought = [a["mobject"] for a in play["animations"]
                    if a["type"] in INCOMING and a.get("mobject")]
         lines = [_text_of(m) for m in brought if m.get("name") == "card:line"]
-        found += [(" ".join(line.split()), [m for m in brought
+        found += [(" ".join(line.split()).removeprefix("• "), [m for m in brought
                                              if (m.get("name") or "").startswith("figure:")])
                   for line in lines]
     return found
