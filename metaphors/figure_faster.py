@@ -39,7 +39,7 @@ from geometry.monotone_pieces import monotone_pieces
 from geometry.polygon import Polygon
 from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
-from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
+from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, triangulation_figure
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_plots import MARKS, Area, Series, axis_names, line_plot, point_mark
 from metaphors.labels import EDGE_MARGIN, placed_vertex_markers
@@ -394,9 +394,8 @@ def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
         at_y = top - row * (k + 0.5)
         frame = Frame(polygon.points, (x - width / 2 + 1.4, at_y), 2.8, row - 0.2)
         drawn.append(tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"))
-        drawn += [tag(triangle_mobject(polygon, t, frame, theme.pieces[j % len(theme.pieces)],
-                                       theme), "result", f"figure:triangle:{name}")
-                  for j, t in enumerate(triangles)]
+        drawn += triangulation_figure(polygon, triangles, frame, f"figure:triangle:{name}",
+                                      theme)
         count = f"{len(triangles)} triangle{'s' * (len(triangles) > 1)}"
         for j, (words, colour, size) in enumerate((
                 (spoken(name, start=True), theme.ink, theme.label_size + 2),

@@ -3,7 +3,9 @@
 A figure (:mod:`metaphors.figures`) is computed whole, but a part of it may wait for the
 card's line that speaks of it (:func:`comes_with`): a metaphor's pick is amber only once a
 line names it, the frame's "Reflex" ring once a line says what reflex is. A part may also
-grow as it comes in (:func:`grows`): the water spreads from B as its line says it does.
+grow as it comes in (:func:`grows`): the water spreads from B as its line says it does; and
+go with a later line (:func:`goes_with`): the diagonal drawn amber as "a diagonal" gives way
+to the green one as the next line says it is inner.
 """
 
 from __future__ import annotations
@@ -21,6 +23,13 @@ def comes_with(part: Mobject, word: str) -> Mobject:
     """``part``, to come in with the first line of its card naming ``word`` (a whole word,
     case kept: "D" is not "d"); "" the card's first line. Returns it."""
     vars(part)["trex_with"] = word
+    return part
+
+
+def goes_with(part: Mobject, word: str) -> Mobject:
+    """``part``, to go with the first line after the one it came with that names ``word``
+    (as :func:`comes_with` finds it). Returns it."""
+    vars(part)["trex_until"] = word
     return part
 
 
@@ -45,13 +54,32 @@ def steps(parts: Sequence[Mobject], lines: Sequence[str]) -> list[list[Mobject]]
     shown: list[list[Mobject]] = [[] for _ in range(len(lines) + 1)]
     for part in parts:
         word = vars(part).get("trex_with")
-        said = (k + 1 for k, line in enumerate(lines)
-                if word == "" or re.search(rf"(?<!\w){re.escape(str(word))}(?!\w)", line))
+        said = (k + 1 for k, line in enumerate(lines) if _naming(line, str(word)))
         at = 0 if word is None else next(said, None)
         if at is None and vars(part).get("trex_only_said"):
             continue
         shown[at or 0].append(part)
     return shown
+
+
+def _naming(line: str, word: str) -> bool:
+    return word == "" or bool(re.search(rf"(?<!\w){re.escape(word)}(?!\w)", line))
+
+
+def leaving(shown: Sequence[Sequence[Mobject]], lines: Sequence[str]) -> list[list[Mobject]]:
+    """Per line of ``lines``, the parts (of ``shown``, :func:`steps`' lists) that go as it
+    comes: each at the first line after its own that names its :func:`goes_with` word."""
+    gone: list[list[Mobject]] = [[] for _ in lines]
+    for came, parts in enumerate(shown):
+        for part in parts:
+            word = vars(part).get("trex_until")
+            if word is None:
+                continue
+            at = next((k for k in range(came, len(lines)) if _naming(lines[k], str(word))),
+                      None)
+            if at is not None:
+                gone[at].append(part)
+    return gone
 
 
 def coming(part: Mobject) -> tuple[Animation, float]:
@@ -70,4 +98,5 @@ def done_by(share: float) -> Callable[[float], float]:
     return lambda t: smooth(min(1.0, t / share))
 
 
-__all__ = ["GROW", "comes_with", "coming", "done_by", "grows", "said_only", "steps"]
+__all__ = ["GROW", "comes_with", "coming", "done_by", "goes_with", "grows", "leaving",
+           "said_only", "steps"]

@@ -40,8 +40,14 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
-from metaphors import figure_faster, method_figures
-from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
+from metaphors import figure_faster, figure_overview, method_figures
+from metaphors.drawing import (
+    Frame,
+    crossed_edge,
+    polygon_mobject,
+    triangle_mobject,
+    triangulation_figure,
+)
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_metaphors import metaphor_parts
 from metaphors.figure_plots import Area, Series, axis_names, line_plot
@@ -56,7 +62,7 @@ from story.runs import run_logged
 FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT = (-3.5, -0.1), 6.2, 4.6
 BOX = (FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
 KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims", "metaphor",
-         *method_figures.KINDS, *figure_faster.KINDS)
+         *method_figures.KINDS, *figure_faster.KINDS, *figure_overview.KINDS)
 #: the growth plot: each algorithm's ear tests, counted in its log, on random polygons
 GROWTH_SIZES = (10, 20, 30, 40, 50, 60)
 GROWTH_SEEDS = (1, 2, 3)
@@ -105,19 +111,27 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
         # subtitle beside them and gave the pick away before its bullet (chapter 2 at 16 s)
         label = [] if over else [figure_caption(BOX, theme, (said, theme.ink))]
         return [shape, *under, *label, vertices, *over]
-    drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
-             "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
-    parts = drawn(figure, polygon, frame, theme)
-    vertices = _vertices(polygon, frame, theme, parts)
-    # marks on a vertex go over its dot; fills go under the dots and labels
-    marks = [m for m in parts if m.name == "figure:candidate"]
+    if figure.kind in figure_overview.KINDS:  # the overview's: P's labels drawn here
+        parts = figure_overview.overview_figure(figure.kind, figure.polygon or polygon_spec,
+                                                BOX, theme)
+    else:
+        drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
+                 "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
+        parts = drawn(figure, polygon, frame, theme)
+    # fills go under the dots and labels, also those that come with a later line than the
+    # labels (drawn in the order they came, the overview's triangles tinted G and M); marks
+    # on a vertex go over its dot
+    vertices = _vertices(polygon, frame, theme, parts).set_z_index(1)
+    marks = [m.set_z_index(1) for m in parts if m.name == "figure:candidate"]
     return [shape, *[m for m in parts if m not in marks], vertices, *marks]
 
 
 #: the parts whose lines cut P's fill: a label across one stands on two colours, or on the
-#: line (chapter 1's G stood on the triangulation's side B–E, M beside the diagonal BM)
+#: line (chapter 1's G stood on the triangulation's side B–E, M beside the diagonal BM); not
+#: a diagonal through a vertex (chapter 1's GK through H), which leaves that vertex's label
+#: no place on its side of P
 _CUTTING = ("figure:triangle", "figure:inner-diagonal", "figure:diagonal", "figure:T",
-            "figure:pick")
+            "figure:pick", "figure:claim")
 
 
 def _vertices(polygon: Polygon, frame: Frame, theme: Theme, parts: list[Mobject]) -> Mobject:
@@ -138,9 +152,8 @@ def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
     triangles from B: G, which has no room outside P, found none inside one triangle either,
     and its label stood by H."""
     triangles = triangulate(polygon, "divide-and-conquer", figure.heuristic).triangles
-    pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
-                                   theme), "result", "figure:triangle")
-              for k, t in enumerate(triangles)]
+    # as the run's end draws them: the result's green, neighbours in other shades
+    pieces = triangulation_figure(polygon, triangles, frame, "figure:triangle", theme)
     n = polygon.n
     cuts = sorted({tuple(sorted((t[k], t[k - 1]))) for t in triangles for k in range(3)}
                   - {tuple(sorted((v, (v + 1) % n))) for v in range(n)})
@@ -470,5 +483,12 @@ def _growth(theme: Theme) -> list[Mobject]:
     return [*drawn, figure_caption(BOX, theme, (GROWTH_WORDS, theme.ink))]
 
 
+def overview_examples(polygon_spec: str) -> tuple[str, ...]:
+    """The names the overview's definitions card speaks of, drawn in the figure's box
+    (:func:`metaphors.figure_overview.example_names`)."""
+    return tuple(figure_overview.example_names(polygon_spec, BOX))
+
+
 __all__ = ["FIGURE_CENTER", "FIGURE_HEIGHT", "FIGURE_WIDTH", "GROWTH_RUNS", "GROWTH_SIZES",
-           "KINDS", "Figure", "ear_tests", "figure_mobjects", "ringed_reflex"]
+           "KINDS", "Figure", "ear_tests", "figure_mobjects", "overview_examples",
+           "ringed_reflex"]

@@ -42,7 +42,7 @@ from metaphors import catalog, figure_steps
 from metaphors.analysis import Analysis, play_analysis
 from metaphors.captions import whole_frames
 from metaphors.countdown import countdown
-from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
+from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangulation_figure
 from metaphors.figures import Figure, figure_mobjects
 from metaphors.labels import measured_markers
 from metaphors.layout import METAPHOR, Box
@@ -298,13 +298,16 @@ class LectureScene(TraceScene):
         self.mark_card_line(None, card)
         self.play(Write(title), *[FadeIn(m) for m in parts[0]], run_time=0.8, **cue)
         shown: list[VMobject] = []  # the last figure's claims and crossed edges
-        for line, words, (claims, edges), said in zip(lines, card.lines, self._line_claims(card),
-                                                      parts[1:], strict=True):
+        # the parts that give way to the next as a line comes (figure_steps.goes_with)
+        leaving = figure_steps.leaving(parts, card.lines)
+        for line, words, (claims, edges), said, gone in zip(
+                lines, card.lines, self._line_claims(card), parts[1:], leaving, strict=True):
             drawn = [figure_steps.coming(m) for m in said]
             grown = max((seconds for _, seconds in drawn), default=0.0)
             cue = captions.show(words, max(0.5, grown))
             self.mark_card_line(words, card)
-            going = [FadeOut(m) for m in shown] if claims else []
+            going = [*([FadeOut(m) for m in shown] if claims else []),
+                     *(FadeOut(m) for m in gone)]
             coming = [*claims, *edges]
             usual = 0.5 if not coming else 1.0
             run_time = max(usual, grown)
@@ -414,9 +417,8 @@ class LectureScene(TraceScene):
         captions.hold()  # the caption before is read in its own step
         mark_step(self, said, kind="compare")
         self.play(FadeIn(label), Create(outline), *[FadeIn(m) for m in markers], run_time=0.6)
-        pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
-                                       theme), None, "compare:triangle")
-                  for k, t in enumerate(triangles)]
+        # as every run's result is drawn: the result's green, neighbours in other shades
+        pieces = triangulation_figure(polygon, triangles, frame, "compare:triangle", theme)
         self.play(*[FadeIn(p) for p in pieces], FadeIn(count), run_time=1.2,
                   **captions.show(said, 1.2))
 

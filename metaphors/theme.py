@@ -35,7 +35,9 @@ dial          grey        the clock face
 fruit, rind   orange,     the fruit sliced (ear clipping), on its plate
               olive
 pieces        tints       the sub-polygons of divide and conquer and the monotone
-                          pieces; the triangles of a finished triangulation
+                          pieces (the parts a split or a partition makes)
+triangles     green       the triangles of a finished triangulation: the result's green,
+              shades      neighbours in other shades (never the pieces' tints)
 ============  ==========  ===========================================================
 
 >>> THEME.role_colour("result") == THEME.result
@@ -80,6 +82,9 @@ class Theme:
     #: tints of the sub-polygons of divide and conquer (the two halves of a split differ)
     pieces: tuple[str, ...] = ("#8e6cf0", "#2bb5a8", "#c9a25a", "#5b8fd5", "#9cbf4a")
     piece_opacity: float = 0.3
+    #: the fills of a finished triangulation's triangles, in the result's green: two that
+    #: share a side differ (:func:`metaphors.drawing.neighbour_shades`; a polygon's need two)
+    triangle_shades: tuple[float, ...] = (0.5, 0.2, 0.75, 0.35)
     done_opacity: float = 0.62
     active_opacity: float = 0.5  # the piece divide and conquer works on
     hand: str = "#c792ea"  # the clock hand (drawn solid inside the polygon, dashed outside)

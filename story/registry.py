@@ -309,10 +309,10 @@ _ENTRIES = (
     _triangulation("divide-and-conquer", metaphor="pieces", shown=divide_and_conquer,
                    idea="Lennes splits along inner diagonals",
                    pseudocode=(
-                       PseudocodeRow("if P is a triangle, we are done"),
+                       PseudocodeRow("if P is a triangle, we are done", ("done",)),
                        PseudocodeRow("else find an inner diagonal d of P", _HEURISTICS_TRACED),
                        PseudocodeRow("divide P along d into P1 and P2", ("split",)),
-                       PseudocodeRow("triangulate P1 and P2 the same way"),
+                       PseudocodeRow("triangulate P1 and P2 the same way", ("next_part",)),
                        PseudocodeRow("their union is the triangulation of P", (RESULT,)),
                    )),
     _triangulation("ear-clipping-naive", metaphor="fruit",

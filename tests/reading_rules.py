@@ -308,10 +308,12 @@ def hidden_failures(data: dict) -> list[str]:
 
     nodes = list(graph_nodes(data))
     polygons = [_corners(n) for n in nodes if n.get("points") and (
-        n.get("name") in _POLYGONS or (n.get("name"), n["type"]) == ("exercise", "Polygon"))]
+        n.get("name") in (*_POLYGONS, "figure:polygon")
+        or (n.get("name"), n["type"]) == ("exercise", "Polygon"))]
     found = {}
     for node in nodes:
-        if node.get("name") not in _CLAIMS \
+        # a card's figure's too: the overview's "DI leaves P" is seen to leave it
+        if node.get("name") not in (*_CLAIMS, "figure:claim") \
                 or (node.get("stroke") or "").upper() != _REJECTED:
             continue
         a, b = (tuple(node["points"][k][:2]) for k in (0, -1))
@@ -2718,8 +2720,9 @@ def fills_over_labels(data: dict) -> list[str]:
     """The fills drawn over a vertex label they cover, as ``"play 93 triangulation over M"``:
     manim draws by z-index, then in the order mobjects came, so a fill that comes after a
     label (a whole triangulation's triangles) at its z-index or above tints it (chapter 1's
-    M and G at 81.5 s). The labels as the plays leave them; a polygon coming in begins a new
-    picture. Each label and fill once, where it first covers."""
+    M and G at 81.5 s; a card's figure whose triangles come with a line after its labels,
+    likewise). The labels as the plays leave them; a polygon coming in begins a new picture.
+    Each label and fill once, where it first covers."""
     from shapely.geometry import box as area
 
     labels: dict[str, tuple[list, int]] = {}  # vertex: (its label layers, when it came)
@@ -2728,15 +2731,22 @@ def fills_over_labels(data: dict) -> list[str]:
     for k, play in enumerate(data["plays"]):
         for anim in play["animations"]:
             top = anim.get("mobject") or {}
-            if anim["type"] in INCOMING and top.get("name") in _POLYGONS:
+            if anim["type"] in INCOMING and top.get("name") in (*_POLYGONS, "figure:polygon"):
                 labels = {}
             for kind, node in _recorded(anim):
                 name = node.get("name") or ""
                 came += 1
                 if kind in OUTGOING:
                     labels.pop(name, None)
+                    if name == "figure:vertices":
+                        labels = {k: v for k, v in labels.items() if not k.startswith(name)}
                 elif name.startswith("vertex:"):
                     labels[name] = (_label_layers(node), labels.get(name, (None, came))[1])
+                elif name == "figure:vertices":  # a card's figure: its markers in one group
+                    for marker in node.get("submobjects", ()):
+                        held = {**marker, "z": marker.get("z", node.get("z", 0))}
+                        said = " ".join(_text_of(part) for part in marker.get("submobjects", ()))
+                        labels[f"{name}:{said.strip()}"] = (_label_layers(held), came)
                 elif kind in INCOMING:
                     for shape, z in _fill_shapes(node):
                         for vertex, (layers, when) in labels.items():
@@ -2744,7 +2754,7 @@ def fills_over_labels(data: dict) -> list[str]:
                                    and shape.intersection(area(*box)).area > 1e-4
                                    for box, lz in layers):
                                 found.setdefault((vertex, name), f"play {k} {name} over "
-                                                 f"{vertex.removeprefix('vertex:')}")
+                                                 f"{vertex.split(':')[-1]}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
 
 
@@ -4012,3 +4022,211 @@ def labels_across_t(data: dict) -> list[str]:
             if inside.contains(ShapelyPoint(dot)) and beyond and said not in found:
                 found.append(said)
     return found
+
+
+# --- ov5: a verdict's words come with its colour ---------------------------------------------------
+
+#: the captions whose words say a colour on the picture, and that colour as the graph writes
+#: it (metaphors.theme.THEME): a verdict's tick the result's green, its cross the rejected's
+#: red, divide and conquer's question and its recursion the piece lit in the called blue
+COLOURED_WORDS = (("✓", "#4CC46B"), ("✗", "#EF4B4B"),
+                  ("Find an inner diagonal of this polygon", "#4F8FF7"),
+                  ("Triangulate this part the same way", "#4F8FF7"))
+
+
+def _shown_colours(anim: dict) -> set[str]:
+    """The colours an animation (and its members) puts on the picture: what a fade or a
+    drawing brings in, or what a recolouring turns a mobject to (its target), every part; the
+    subtitle and the panel (its lit row's light, its rows, its small polygon) are not the
+    picture."""
+    found: set[str] = set()
+    node = anim.get("target") if anim["type"] == "_MethodAnimation" else anim.get("mobject")
+    name = (node or {}).get("name") or ""
+    if anim["type"] not in OUTGOING and node and name != "subtitle" \
+            and not name.startswith(("panel:", "code:")):
+        for part in mobject_nodes(node):
+            found |= {(part.get(key) or "").upper() for key in ("stroke", "fill")}
+    for child in anim.get("animations", ()):
+        found |= _shown_colours(child)
+    return found
+
+
+def words_ahead_of_colours(data: dict) -> list[str]:
+    """The plays that put up a caption saying a colour (:data:`COLOURED_WORDS`: "✓ DG is an
+    inner diagonal", "Find an inner diagonal of this polygon") without bringing that colour on
+    the picture, which came only in a later play, as ``"play 26: '✓ DG is an inner
+    diagonal' before #4CC46B"``: chapter 1's ✓ stood 0.6 s over an amber DG, its question
+    0.5 s before the piece turned blue, chapters 3 and 6's ✗ over an amber BE."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        said = play.get("subcaption") or ""
+        colour = next((c for words, c in COLOURED_WORDS if said.startswith(words)), None)
+        if colour is None:
+            continue
+        shown = set().union(*(_shown_colours(a) for a in play["animations"]))
+        if colour not in shown:
+            found.append(f"play {k}: {said!r} before {colour}")
+    return found
+
+
+# --- ov5: each row of a run's pseudocode is lit when it runs ----------------------------------------
+
+
+def _listed_rows(anim: dict) -> list[str]:
+    """The rows of a pseudocode listing an animation puts on the screen (its ``code:`` rows,
+    not lit: the panel's whole listing), in order."""
+    if anim["type"] not in INCOMING:
+        return []
+    return [(node.get("text") or "").strip() for node in mobject_nodes(anim.get("mobject") or {})
+            if (node.get("name") or "").startswith("code:") and node.get("role") != "called"
+            and node is not anim.get("mobject") and (node.get("text") or "").strip()]
+
+
+def unlit_rows(data: dict) -> list[str]:
+    """The rows of a run's pseudocode never lit while its listing is shown, as ``"'if P is a
+    triangle, we are done' (run 1)"``: chapter 1's divide and conquer ran its base case and
+    its recursion eleven and nine times, and lit neither row (nothing it ran said so). For a
+    run whose every row runs (divide and conquer on a polygon of four vertices or more)."""
+    found, runs = [], 0
+    listed: list[str] = []
+    lit: set[str] = set()
+
+    def close() -> None:
+        found.extend(f"{row!r} (run {runs})" for row in listed if row not in lit)
+
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            rows = _listed_rows(anim)
+            if rows:
+                close()
+                runs, listed, lit = runs + 1, rows, set()
+            lit.update(_lit_rows(anim))
+    close()
+    return found
+
+
+# --- ov5: a finished triangulation's triangles counted one by one -----------------------------------
+
+#: the names of a finished triangulation's triangles: a run's end, a card's figure, the
+#: comparison's
+_TRIANGLES = ("triangulation", "figure:triangle", "compare:triangle")
+
+
+def alike_neighbours(data: dict) -> list[str]:
+    """The triangles of a finished triangulation drawn alike (one fill, one opacity) beside a
+    triangle that shares a side with them, and those filled in a colour the parts of a split
+    had (a ``piece:`` tint), as ``"play 104: 2 sides between alike triangles"`` and ``"play
+    104: a triangle in a part's tint #8E6CF0"``: chapter 1's GCD and GDF, side by side in one
+    purple, read as one triangle, and purple had been "the other half" at 41 s. Triangles
+    drawn as outlines only (the Delaunay card's) have no fill to tell apart."""
+    tints = {(n.get("fill") or "").upper() for n in graph_nodes(data)
+             if (n.get("name") or "").startswith("piece:")}
+    found = []
+    for k, play in enumerate(data["plays"]):
+        drawn = [a["mobject"] for a in play["animations"] if a["type"] in INCOMING
+                 and (a.get("mobject") or {}).get("name") in _TRIANGLES
+                 and a["mobject"].get("points") and (a["mobject"].get("fill_opacity") or 0) > 0]
+        looks = [((n.get("fill") or "").upper(), round(n.get("fill_opacity") or 0, 3))
+                 for n in drawn]
+        corners = [_corners(n) for n in drawn]
+        alike = sum(1 for i, j in itertools.combinations(range(len(drawn)), 2)
+                    if looks[i] == looks[j]
+                    and sum(_near(p, corners[j]) for p in corners[i]) == 2)
+        if alike:
+            found.append(f"play {k}: {alike} sides between alike triangles")
+        found += [f"play {k}: a triangle in a part's tint {colour}"
+                  for colour in sorted({c for c, _ in looks} & tints)]
+    return found
+
+
+# --- ov5: one picture per idea; the rule before its numbers ----------------------------------------
+
+
+def _normalised(points: list, frame: tuple[float, float, float, float]) -> frozenset:
+    """Corners in the unit box of their polygon's ``frame`` (its box on screen), rounded:
+    the same vertex drawn in a card's figure and on a run's board is the same point."""
+    x0, y0, x1, y1 = frame
+    scale = max(x1 - x0, y1 - y0) or 1.0
+    return frozenset((round((x - x0) / scale, 2), round((y - y0) / scale, 2))
+                     for x, y in points)
+
+
+def _pictures(data: dict, kinds: dict[str, str]) -> Iterator[tuple[int, str, frozenset]]:
+    """(play, kind, corners) of every shape named as ``kinds`` says (a name, or a prefix ending
+    in ``:``) that a play brings in, its corners in the unit box of the polygon drawn last
+    before it (a run's ``polygon``, a card's ``figure:polygon``)."""
+    frame = None
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name = node.get("name") or ""
+            if anim["type"] not in INCOMING or not node.get("points"):
+                continue
+            corners = _corners(node)
+            if name in ("polygon", "figure:polygon"):
+                xs, ys = [p[0] for p in corners], [p[1] for p in corners]
+                frame = (min(xs), min(ys), max(xs), max(ys))
+            for prefix, kind in kinds.items():
+                if frame and (name == prefix or (prefix.endswith(":") and name.startswith(prefix))):
+                    yield k, kind, _normalised(corners, frame)
+
+
+def replayed_splits(data: dict) -> list[str]:
+    """The parts a card's figure cuts P into (``figure:half``) that a run then cuts it into
+    again (a ``piece:``), as ``"play 11: a card's part is the run's, play 30"``: chapter 1's
+    Lennes card split along DG into 4 and 11 vertices, then the run found DG and split along
+    it again (one picture per idea)."""
+    cut = [(k, c) for k, kind, c in _pictures(data, {"figure:half": "card"}) if kind == "card"]
+    split = [(k, c) for k, _, c in _pictures(data, {"piece:": "run"})]
+    return [f"play {k}: a card's part is the run's, play {m}" for k, c in cut
+            for m, d in split if m > k and c == d][:len(cut)]
+
+
+def restyled_triangulations(data: dict) -> list[str]:
+    """A triangulation drawn twice in a chapter (a card's figure, a run's end) in other
+    fills, unsaid, as ``"play 104: 11 triangles, 2 as on play 0"``:
+    chapter 1's card at 0–18 s and its run's end at 83 s were one triangulation in other
+    colours, which read as another."""
+    drawn: dict[int, dict[frozenset, tuple]] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and node.get("name") in ("figure:triangle",
+                                                                 "triangulation"):
+                drawn.setdefault(k, {})[frozenset(_corners(node))] = (
+                    (node.get("fill") or "").upper(), round(node.get("fill_opacity") or 0, 3))
+    # each picture's triangles in the unit box of its own corners
+    shown = []
+    for k, triangles in sorted(drawn.items()):
+        points = [p for t in triangles for p in t]
+        xs, ys = [p[0] for p in points], [p[1] for p in points]
+        frame = (min(xs), min(ys), max(xs), max(ys))
+        shown.append((k, {_normalised(list(t), frame): look for t, look in triangles.items()}))
+    found = []
+    for (k, first), (m, later) in itertools.combinations(shown, 2):
+        if set(first) != set(later):  # another triangulation: its own run says so
+            continue
+        alike = sum(1 for t, look in later.items() if first.get(t) == look)
+        if alike < len(later):
+            found.append(f"play {m}: {len(later)} triangles, {alike} as on play {k}")
+    return found
+
+
+#: a count of triangles (a number), and the rule it follows from
+_COUNT, _RULE = re.compile(r"\b\d+ triangles\b"), "n − 2"
+
+
+def numbers_before_rules(data: dict) -> list[str]:
+    """The counts of triangles ("11 triangles") shown or said in a chapter before the rule
+    they follow ("n − 2") is, as ``"play 6: 'n = 13: 11 triangles, 10 inner diagonals'
+    before the rule"``: chapter 1 counted 11 triangles 4 s before it said n − 2."""
+    for k, play in enumerate(data["plays"]):
+        texts = [play.get("subcaption") or ""] + [
+            _text_of(a["mobject"]) for a in play["animations"]
+            if a["type"] in INCOMING and a.get("mobject")]
+        if any(_RULE in t for t in texts):
+            return []
+        counted = [t for t in texts if _COUNT.search(t)]
+        if counted:
+            return [f"play {k}: {counted[0]!r} before the rule"]
+    return []

@@ -27,6 +27,7 @@ import srt
 from click.testing import CliRunner
 
 from tests.reading_rules import (
+    alike_neighbours,
     amber_figure_marks,
     answers_over_pictures,
     balls_not_there,
@@ -82,6 +83,8 @@ from tests.reading_rules import (
     refaded_texts,
     repeated_verdicts,
     replayed_beats,
+    replayed_splits,
+    restyled_triangulations,
     run_together_labels,
     rushed_questions,
     shifting_colours,
@@ -108,6 +111,7 @@ from tests.reading_rules import (
     unspoken_words,
     verdicts_before_red,
     water_outside_polygon,
+    words_ahead_of_colours,
     words_before_pictures,
     words_over_the_picture,
 )
@@ -570,6 +574,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert crossfaded_overlaps(data) == [], chapter.slug
     # issue 22: a run's title and picture come with its panel and first words, not after
     assert words_before_pictures(data) == [], chapter.slug
+    # ov5: a verdict's words come with its colour ("✓ DG is an inner diagonal" stood 0.6 s
+    # over an amber DG in chapter 1, "✗ BE …" over an amber BE in chapter 6), and divide and
+    # conquer's question with the piece it lights
+    assert words_ahead_of_colours(data) == [], chapter.slug
     # a counter (slices, the whole count) stands clear of the labels
     assert crowded_counts(data) == [], chapter.slug
     # issue 22 item 3: every red claim leaves its polygon by 4 % of the frame's height
@@ -608,6 +616,14 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 item 4: no run's beat shown twice over the same picture, each ✗ said once
     assert replayed_beats(data) == [], chapter.slug
     assert repeated_verdicts(data) == [], chapter.slug
+    # ov5: nor a card's figure cutting P into the parts a run then cuts it into (chapter 1's
+    # Lennes card split along DG, then the run did again), nor one triangulation drawn twice
+    # in other fills (the card's and the run's end read as two)
+    assert replayed_splits(data) == [], chapter.slug
+    assert restyled_triangulations(data) == [], chapter.slug
+    # ov5 item 7: a finished triangulation's neighbours drawn unlike, none in a part's tint
+    # (chapter 1's GCD and GDF one purple, purple "the other half" at 41 s)
+    assert alike_neighbours(data) == [], chapter.slug
     # issue 22 item 5: counters run 1 … n − 2 and end on the whole triangulation
     assert broken_counts(data) == [], chapter.slug
     # and each count is cut in where the last stood, never faded in from nothing (chapter
@@ -908,7 +924,7 @@ def test_the_overview_poses_the_problem_with_a_black_box():
     diagonal (gravity is taught in chapter 3): each piece lights up, the box is asked, the
     diagonal comes out and is split along, down to n − 2 triangles; no ball, band or
     gravity arrow, and no word of gravity. The chapter stays at least 75 s."""
-    from tests.reading_rules import graph_nodes
+    from tests.reading_rules import graph_nodes, unlit_rows
     from trex.chapters import lecture_chapters
     from trex.snapshot import build
 
@@ -927,6 +943,11 @@ def test_the_overview_poses_the_problem_with_a_black_box():
     assert sum("grey" in c for c in cues) == 1 and unexplained_grey(data) == []
     counters = [n["text"] for n in graph_nodes(data) if n.get("name") == "counter"]
     assert counters and counters[-1] == "n − 2 = 13 − 2\n= 11 triangles"
+    # ov5: every row of the pseudocode lit as it runs: the base case as each triangle is done,
+    # the recursion as each part is taken up (neither was ever lit)
+    assert unlit_rows(data) == []
+    assert any(c.endswith("is a triangle: done") for c in cues)
+    assert any(c.startswith("Triangulate this part the same way") for c in cues)
     assert sum(p["run_time"] for p in data["plays"]) >= 75
 
 
@@ -1070,3 +1091,96 @@ def test_a_run_told_again_over_another_drawing_is_a_replay():
     # the run's end told once in other words is no replay
     data["plays"][-4:] = _told(["It slid to G, taut round H"], square, "analysis:polygon")[1:]
     assert replayed_beats(data) == []
+
+
+def _card_lines_and_parts(data: dict) -> list[tuple[str, list[dict]]]:
+    """Each card line of a graph (its words, without the bullet), with the figure parts the
+    play that brings it brings in."""
+    from tests.reading_rules import INCOMING, _text_of
+
+    found = []
+    for play in data["plays"]:
+        brought = [a["mobject"] for a in play["animations"]
+                   if a["type"] in INCOMING and a.get("mobject")]
+        lines = [_text_of(m) for m in brought if m.get("name") == "card:line"]
+        found += [(" ".join(line.split()).removeprefix("• "), [m for m in brought
+                                             if (m.get("name") or "").startswith("figure:")])
+                  for line in lines]
+    return found
+
+
+def test_the_overview_draws_each_definition_as_it_is_said():
+    """Review of chapter 1 (ov5 item 1): while "A diagonal joins two vertices that are not
+    neighbours" was up nothing was drawn, the inner diagonal was an unnamed thin green DF,
+    and no diagonal leaving P or passing through a vertex was ever shown. Now each line
+    brings its drawing: the diagonal it names (amber, not yet judged), the same one green as
+    it is said to be inner, one leaving P red with the edge it crosses thick and named (its
+    part outside P at least 4 % of the frame's height: hidden_failures), one through a
+    vertex red with the vertex ringed; each named by the picture's own labels."""
+    from geometry.check import is_inner_diagonal
+    from geometry.io import read_polygon
+    from metaphors.figures import overview_examples
+    from metaphors.theme import THEME
+    from tests.reading_rules import hidden_failures
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    overview = next(c for c in lecture_chapters() if c.slug == "overview")
+    data = build(_chapter_class(overview).handed()).data
+    p = read_polygon("lecture")
+    inner, leaving, edge, through, vertex = overview_examples("lecture")
+    at = {name: p.labels.index(name) for name in p.labels}
+    assert is_inner_diagonal(p, at[inner[0]], at[inner[1]])
+    wrong = is_inner_diagonal(p, at[leaving[0]], at[leaving[1]])
+    assert wrong.code == "crosses" and "–".join(p.labels[k] for k in wrong.edge) == edge
+    via = is_inner_diagonal(p, at[through[0]], at[through[1]])
+    assert via.code == "through-vertex" and p.labels[via.vertex] == vertex
+
+    def brought(start: str) -> list[dict]:
+        [(_, parts)] = [(line, parts) for line, parts in _card_lines_and_parts(data)
+                        if line.startswith(start)]
+        return parts
+
+    def colours(parts: list[dict], name: str) -> set[str]:
+        return {(m.get("stroke") or "").upper() for m in parts if m.get("name") == name}
+
+    assert colours(brought("A diagonal joins two vertices"), "figure:diagonal") == {
+        THEME.argument.upper()}
+    assert colours(brought(f"{inner} is an inner diagonal"), "figure:inner-diagonal") == {
+        THEME.result.upper()}
+    parts = brought(f"{leaving} is not: it leaves P, crossing edge {edge}")
+    assert colours(parts, "figure:claim") == {THEME.rejected.upper()}
+    assert colours(parts, f"figure:edge:{edge}") == {THEME.rejected.upper()}
+    assert [m.get("text") for m in parts if m.get("name") == "figure:edge-name"] == [edge]
+    parts = brought(f"Nor is {through}: it passes through vertex {vertex}")
+    assert colours(parts, "figure:through") == {THEME.rejected.upper()}
+    assert any(m.get("name") == "figure:through-vertex" for m in parts)
+    assert hidden_failures(data) == []
+
+
+def test_the_overview_defines_a_triangulation_and_why_it_has_n_minus_2_triangles():
+    """Review of chapter 1 (ov5 item 3): "triangulation", the chapter's title, was never
+    defined, and n − 2 was only "(angles: (n − 2) · 180°)". Now the thesis's Definition 5,
+    then the textbook's reason drawn (a cut along an inner diagonal counts its ends twice:
+    n₁ + n₂ = n + 2; by induction n − 2 triangles, n − 3 diagonals), then this P's numbers,
+    after the rule (numbers_before_rules)."""
+    from tests.reading_rules import numbers_before_rules
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    overview = next(c for c in lecture_chapters() if c.slug == "overview")
+    data = build(_chapter_class(overview).handed()).data
+    lines = [line for line, _ in _card_lines_and_parts(data)]
+    said = [k for k, line in enumerate(lines) if line.startswith("A triangulation of P:")]
+    why = [k for k, line in enumerate(lines) if "n₁ + n₂ = n + 2" in line]
+    induction = [k for k, line in enumerate(lines) if line.startswith("By induction")]
+    numbers = [k for k, line in enumerate(lines) if line.startswith("Here n = 13: 11 triangles")]
+    assert said and why and induction and numbers
+    assert said[0] < why[0] < induction[0] < numbers[0]
+    assert not any("180°" in line for line in lines)
+    # the cut is drawn: P in two parts with their counts, then the triangles of each
+    parts = _card_lines_and_parts(data)[why[0]][1]
+    assert sum(m.get("name") == "figure:half" for m in parts) == 2
+    assert any(m.get("name") == "figure:label" and "7 + 8 = 13 + 2" in " ".join(
+        n.get("text") or "" for n in m.get("submobjects", [])) for m in parts)
+    assert numbers_before_rules(data) == []

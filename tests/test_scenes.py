@@ -105,6 +105,7 @@ from tests.reading_rules import (
     unseen_ear_tests,
     unspoken_words,
     water_outside_polygon,
+    words_ahead_of_colours,
     words_before_pictures,
     words_on_the_picture,
 )
@@ -390,6 +391,14 @@ def test_the_panels_polygon_keeps_its_labels_apart_and_off_its_edges(case):
     """The panel's small copy of P: no label over another or over an edge, each nearer its
     own dot than any other, none left out (issue 22: the lecture's M and K crowded)."""
     assert crowded_panel_labels(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_verdicts_words_come_with_its_colour(case):
+    """ov5: a ✓ or ✗ caption comes in the play that turns its claim green or red (played
+    first, on their own, the words stood half a second over the amber claim), divide and
+    conquer's question with the piece it lights."""
+    assert words_ahead_of_colours(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
