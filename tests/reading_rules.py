@@ -3862,6 +3862,7 @@ def keys_with_nothing_shown(data: dict) -> list[str]:
             elif name in filled:
                 found.append(f"play {k} {name}")
                 filled.discard(name)
+    return found
 
 
 # --- the exercises chapter, reviewed as a class would use it (review of chapter 6) ------------
