@@ -27,12 +27,14 @@ import srt
 from click.testing import CliRunner
 
 from tests.reading_rules import (
+    VERTEX_KINDS,
     amber_figure_marks,
     answers_over_pictures,
     bare_ticks,
     broken_counts,
     broken_summaries,
     claims_given_away,
+    counts_on_two_lines,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -50,7 +52,9 @@ from tests.reading_rules import (
     flickering_counts,
     hidden_failures,
     jumping_stacks,
+    kinds_said,
     labels_across_fills,
+    labels_beside_the_sweep,
     labels_moved_by_cuts,
     labels_on_claims,
     labels_on_edges,
@@ -65,6 +69,7 @@ from tests.reading_rules import (
     leftover_verdicts,
     lone_numbers,
     morphed_water,
+    names_said_otherwise,
     notes_over_fills,
     notes_under_moving_tools,
     placeholders_as_labels,
@@ -77,6 +82,7 @@ from tests.reading_rules import (
     shifting_colours,
     short_falls,
     small_texts,
+    stack_returns_unsaid,
     stale_endings,
     stale_good_parts,
     stale_lit_rows,
@@ -91,7 +97,9 @@ from tests.reading_rules import (
     unmarked_candidates,
     unnamed_axes,
     unreadable_cues,
+    unseen_helpers,
     unspoken_words,
+    untaught_words,
     water_outside_polygon,
     words_before_pictures,
     words_over_the_picture,
@@ -691,6 +699,21 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # grey: a vertex greyed only where a caption has said what grey means (chapters 2 to 6
     # greyed B, C, A, L and B for a second, unsaid: gravity's C while the band hung from it)
     assert unexplained_grey(data) == [], chapter.slug
+    # mono5: each word taught the first time it is said (chapter 5's card said y-monotone,
+    # split and merge before the run taught them; "joins its helper F", helper untaught), and
+    # each helper a diagonal joins seen becoming one (F's step went by in a summary)
+    assert untaught_words(data) == [], chapter.slug
+    assert unseen_helpers(data) == [], chapter.slug
+    # the stack's words say what its column does: a vertex that left and comes back is said
+    # to ("H leaves", then "H and B wait" read as a contradiction)
+    assert stack_returns_unsaid(data) == [], chapter.slug
+    # the sweep line passes no label at its height nearer than two letters' width (it ran
+    # 0.12 beside K and M)
+    assert labels_beside_the_sweep(data) == [], chapter.slug
+    # a count on one line ("n − 2 = 13 − 2" over "= 11 triangles" read as two things)
+    assert counts_on_two_lines(data) == [], chapter.slug
+    # an algorithm by one name ("ear status kept" in chapter 4, "faster ear clipping" after)
+    assert names_said_otherwise(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
@@ -994,3 +1017,55 @@ def test_a_run_told_again_over_another_drawing_is_a_replay():
     # the run's end told once in other words is no replay
     data["plays"][-4:] = _told(["It slid to G, taut round H"], square, "analysis:polygon")[1:]
     assert replayed_beats(data) == []
+
+
+def test_the_monotone_chapter_names_every_kind_and_teaches_faster_ear_clipping_first():
+    """mono5: chapter 5's sweep names each kind of vertex once on the picture (no vertex was
+    ever named an end vertex: E and C went by in a summary); and faster ear clipping, named so
+    in chapter 5 and the recap, is taught under that name where the lecture first says it
+    (chapter 4 said "with ear status kept up to date", its plot "ear status kept")."""
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    chapters = {c.slug: c for c in lecture_chapters()}
+    graphs = {slug: build(_chapter_class(chapters[slug]).handed()).data
+              for slug in ("ears", "faster")}
+    assert kinds_said(graphs["faster"]) == set(VERTEX_KINDS)
+    name = "faster ear clipping"
+    first = next(slug for slug, data in graphs.items()
+                 if any(name in t.lower() for t in _shown_words(data)))
+    assert first == "ears", first
+    assert any(name in t.lower() and "ear status" in t.lower()
+               for t in _shown_words(graphs[first]))
+
+
+def _shown_words(data):
+    from tests.reading_rules import _all_shown_texts
+
+    return list(_all_shown_texts(data, frozenset()))
+
+
+def test_a_figured_cards_words_stand_under_its_title():
+    """mono5: a card's words beside its figure are centred on the frame's height, so too many
+    rows ran up over its title (chapter 5's plot card at 15 rows): every figured card's
+    column ends below its title, with room."""
+    from manim import DOWN, LEFT, VGroup
+
+    from metaphors.lecture import CARD_WIDTH, FIGURED_TITLE_Y, FIGURED_WIDTH, Card
+    from metaphors.theme import THEME
+    from rendering import typeset
+    from trex.chapters import lecture_chapters
+
+    for chapter in lecture_chapters():
+        cls = _chapter_class(chapter)
+        scene = cls.__new__(cls)
+        scene.theme = THEME
+        for card in scene.chapter_segments():
+            if not isinstance(card, Card) or card.figure is None or not card.lines:
+                continue
+            column = VGroup(*[scene.card_line(line, FIGURED_WIDTH) for line in card.lines])
+            column.arrange(DOWN, aligned_edge=LEFT, buff=0.35)
+            title = typeset.glyphs(card.title, font=THEME.font, size=THEME.title_size,
+                                   colour=THEME.ink, width=CARD_WIDTH)
+            top, under = -0.3 + column.height / 2, FIGURED_TITLE_Y - title.height / 2
+            assert top <= under - 0.3, (chapter.slug, card.title, round(top, 2))
