@@ -205,12 +205,13 @@ def measured_series(theme: Theme) -> list[Series]:
     in the plot's corner, an unlabelled point below the "100" tick)."""
     lines = [Series(f"figure:measured:{name}:{shape}",
                     tuple(measured(name, n, shape) for n in MEASURED_SIZES),
-                    theme.pieces[k % len(theme.pieces)], mark=MARKS[(k + 1) % len(MARKS)],
+                    # the colours and marks they had beside divide and conquer (first)
+                    theme.pieces[(k + 1) % len(theme.pieces)], mark=MARKS[(k + 1) % len(MARKS)],
                     filled=j == 0)
              for k, name in enumerate(MEASURED_RUNS) for j, (shape, _) in enumerate(MEASURED_SHAPES)]
     first = MEASURED_SIZES[0]
     start = measured(*BOUND_FROM[:1], first, BOUND_FROM[1])
-    for k, (key, _, shape_of) in enumerate(BOUNDS, start=len(MEASURED_RUNS)):
+    for k, (key, _, shape_of) in enumerate(BOUNDS, start=len(MEASURED_RUNS) + 1):
         counts = tuple(start * shape_of(n) / shape_of(first) for n in MEASURED_SIZES)
         lines.append(Series(f"figure:bound:{key}", counts, theme.pieces[k % len(theme.pieces)],
                             dashed=True))
@@ -221,7 +222,7 @@ def measured_series(theme: Theme) -> list[Series]:
 STEPS = f"steps (geometric tests)\nrandom polygons: each a mean of {len(SEEDS)}"
 STEP = "a test: which side of a line a point is on, or which of two points is nearer"
 #: the legend's columns (scene units from the box's left): names, then one per kind of polygon
-LEGEND_COLUMNS = (0.0, 2.45, 4.3)
+LEGEND_COLUMNS = (0.0, 2.4, 4.15)
 
 
 def _measured(theme: Theme, box: Box) -> list[Mobject]:

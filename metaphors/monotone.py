@@ -468,7 +468,9 @@ def _whole(board: Board, beat: Stack) -> None:
     n = board.polygon.n + sum(len(h.points) for h in board.holes)
     count, gone = _count(board, count_words(n, len(board.holes), len(whole)))
     board.keep("triangulation", VGroup(*whole))
-    shown: list[FadeIn | FadeOut] = [FadeOut(m) for m in gone]
+    if gone:  # the panel's polygon goes before the count comes in its place (never crossfaded)
+        board.scene.play(*[FadeOut(m) for m in gone], run_time=0.5)
+    shown: list[FadeIn] = []
     if count is not None:
         board.keep("counter", count)
         shown.append(FadeIn(count))
@@ -612,14 +614,15 @@ def _kinds(walk: Walk) -> dict[str, str]:
 
 
 def _joined(walk: Walk) -> set[str]:
-    """The vertices a diagonal joins as their edge's helper (the second end of each
-    ``add_diagonal``): the step where each became a helper is one the viewer must see (F
-    became B–C's helper under "Vertices H, B, G and F: the same steps, faster", then "D
-    joins its helper F")."""
+    """The vertices a diagonal joins (both ends of each ``add_diagonal``): the step where
+    each became a helper is one the viewer must see (F became B–C's helper under "Vertices
+    H, B, G and F: the same steps, faster", then "D joins its helper F"), and a vertex whose
+    step adds a diagonal is seen whole (the holes' E: its helper step, after its diagonal,
+    went under the next vertex's summary)."""
     labels = list(walk.root_points())
     return walk.memo("monotone.joined", lambda: {
-        labels[walk.result_ints(e)[1]] for e in walk.log.events
-        if e.kind == "return" and e.name == "add_diagonal"})
+        labels[k] for e in walk.log.events
+        if e.kind == "return" and e.name == "add_diagonal" for k in walk.result_ints(e)})
 
 
 def _key_vertices(walk: Walk) -> set[str]:

@@ -362,7 +362,7 @@ _ENTRIES = (
                        # a regular vertex on P's right side helps too (geometry.monotone);
                        # the helper is said on the picture the first time it is set
                        PseudocodeRow("  split, merge, or regular with P to its left:"),
-                       PseudocodeRow("    v becomes the helper of the edge on its left",
+                       PseudocodeRow("    v becomes helper of the edge on its left",
                                      ("set_helper",)),
                        # end, regular and merge vertices add one too (geometry.monotone)
                        PseudocodeRow("  split, or v ends or replaces a merge helper:"),
