@@ -3,7 +3,7 @@
 Three kinds of names share one namespace (see :func:`sample_names`):
 
 * fixed samples (``counterexample``, ``square``, ``lecture`` …): a fixed list of points;
-* deterministic families (``star``, ``spiral``, ``comb``): a small default, or
+* deterministic families (``star``, ``spiral``, ``comb``, ``half-disc``): a small default, or
   any ``n`` up to 100,000 for benchmarks;
 * random generators (``random-star``, ``random-2opt``, ``random-orthogonal``,
   ``random-spiral``, ``random-comb``): ``n`` vertices from ``random.Random(seed)``.
@@ -36,6 +36,7 @@ from geometry.errors import InputFormatError, UnknownSampleError
 from geometry.predicates import Point
 from geometry.sample_generators import (
     comb,
+    half_disc,
     random_2opt,
     random_comb,
     random_orthogonal,
@@ -49,6 +50,7 @@ from geometry.sample_generators import (
 __all__ = [
     "UnknownSampleError",
     "is_sample",
+    "is_seeded",
     "make_sample",
     "minimum_n",
     "parse_spec",
@@ -119,6 +121,7 @@ _FAMILIES: MappingProxyType[str, _Family] = MappingProxyType(
         "star": _Family(_deterministic(star), 3, 10, False),
         "spiral": _Family(_deterministic(spiral), 6, 30, False),
         "comb": _Family(_deterministic(comb), 12, 20, False),
+        "half-disc": _Family(_deterministic(half_disc), 4, 20, False),
         "random-star": _Family(random_star, 3, 12, True),
         "random-2opt": _Family(random_2opt, 3, 12, True),
         "random-orthogonal": _Family(random_orthogonal, 4, 16, True),
@@ -139,6 +142,17 @@ def sample_names() -> list[str]:
 
 def _unknown(name: str) -> UnknownSampleError:
     return UnknownSampleError(f"unknown sample '{name}'; known: {', '.join(sample_names())}")
+
+
+def is_seeded(name: str) -> bool:
+    """Whether family ``name`` takes a seed (a random generator), not only a size.
+
+    >>> is_seeded("random-2opt"), is_seeded("half-disc")
+    (True, False)
+    """
+    if name not in _FAMILIES:
+        raise _unknown(name)
+    return _FAMILIES[name].seeded
 
 
 def minimum_n(name: str) -> int:

@@ -74,6 +74,8 @@ def animate(mobject: Mobject, **anim_args: Any) -> _AnimationBuilder:
     return builder(**anim_args)
 
 
+#: the least a step of a summary takes (seconds): long enough to see what changed
+SEEN_STEP = 0.5
 #: the objects that hold the vertex they are drawn from in its blue (:meth:`Board.held`):
 #: T round B, gravity's ball and band, a claim and the edge it crosses
 HOLDING = frozenset({"T", "ball", "band", "claim", "crossed"})
@@ -175,8 +177,10 @@ class Board:
         (at 0.2 s each they flashed by, then the screen stood still on the last for 2 s).
         Only the beats of its own stretch share it: the same words said again later are
         read again (counted over the whole run, each step of a summary whose caption came
-        back was cut short by the beats of the other)."""
-        return reading_time(beat.caption) / max(1, self.share)
+        back was cut short by the beats of the other). Never under :data:`SEEN_STEP`: a
+        summary of many steps (the monotone sweep's, each vertex's kind and the edge it
+        helps) takes longer than its words, each step still seen."""
+        return max(SEEN_STEP, reading_time(beat.caption) / max(1, self.share))
 
     def play(self, beat: Beat, *anims: Playable, run_time: float = 1.0,
              together: bool = False, at_rest: bool = False, least: float = 0.0) -> None:

@@ -359,10 +359,11 @@ _ENTRIES = (
                    pseudocode=(
                        PseudocodeRow("sweep a line down P, vertex by vertex:", ("make_monotone",)),
                        PseudocodeRow("  v is start, end, split, merge or regular", ("classify_vertex",)),
-                       PseudocodeRow("  start, end, regular: v updates its edges",
-                            ("handle_start", "handle_end", "handle_regular")),
-                       PseudocodeRow("  split, merge: v helps the edge on its left",
-                            ("handle_split", "handle_merge")),
+                       # a regular vertex on P's right side helps too (geometry.monotone);
+                       # the helper is said on the picture the first time it is set
+                       PseudocodeRow("  split, merge, or regular with P to its left:"),
+                       PseudocodeRow("    v becomes helper of the edge on its left",
+                                     ("set_helper",)),
                        # end, regular and merge vertices add one too (geometry.monotone)
                        PseudocodeRow("  split, or v ends or replaces a merge helper:"),
                        PseudocodeRow("    add the diagonal v–helper", ("add_diagonal",)),

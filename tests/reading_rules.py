@@ -3289,8 +3289,9 @@ def words_over_the_picture(data: dict) -> list[str]:
 
 
 #: the least gap the monotone sweep line (:data:`_TOOL_LINES`) leaves round a vertex label: at
-#: 0.04 its dashes ran up to M's and K's letters at their height, read as struck through
-LEAST_SWEEP_GAP = 0.1
+#: 0.04 its dashes ran up to M's and K's letters at their height, read as struck through; at
+#: 0.12 it still ran along the top of A's letter (chapter 5 at 16–19 s)
+LEAST_SWEEP_GAP = 0.15
 
 
 def labels_struck_by_the_sweep(data: dict) -> list[str]:
@@ -4231,3 +4232,170 @@ def numbers_before_rules(data: dict) -> list[str]:
         if counted:
             return [f"play {k}: {counted[0]!r} before the rule"]
     return []
+
+
+# --- mono5: chapter 5 taught on its picture (fresh teacher's review of 05-faster) ----------------
+
+#: each word of the monotone lesson, and what the first caption that says it must say with it
+#: (a word said before it is taught): y-monotone with its horizontal line, the helper with
+#: the lowest vertex that sees its edge, each kind of vertex with its neighbours (as the sweep
+#: meets it). The card opened with "y-monotone pieces" and "split and merge vertices" 14 s
+#: before the run said what they are, and "D joins its helper F" said helper unexplained.
+TAUGHT = {
+    "y-monotone": re.compile(r"horizontal line"),
+    "helper": re.compile(r"the lowest vertex"),
+    "split": re.compile(r"neighbours below, interior above: a split vertex"),
+    "merge": re.compile(r"neighbours above, interior below: a merge vertex"),
+}
+
+
+def _captions(data: dict) -> list[str]:
+    """The captions in the order they are said, each once where it first comes."""
+    said: list[str] = []
+    for play in data["plays"]:
+        caption = play.get("subcaption")
+        if caption and (not said or said[-1] != caption):
+            said.append(caption)
+    return said
+
+
+def untaught_words(data: dict) -> list[str]:
+    """The words of :data:`TAUGHT` whose first caption does not teach them, as ``"'helper'
+    before taught: 'Diagonal DF: …'"``."""
+    found = []
+    for word, teaching in TAUGHT.items():
+        first = next((c for c in _captions(data) if re.search(rf"\b{re.escape(word)}\b", c)),
+                     None)
+        if first is not None and not teaching.search(first):
+            found.append(f"{word!r} before taught: {first!r}")
+    return found
+
+
+#: the kinds of vertex of the monotone sweep
+VERTEX_KINDS = ("start", "end", "split", "merge", "regular")
+
+
+def kinds_said(data: dict) -> set[str]:
+    """The kinds of vertex a caption names a vertex as (``"E: … an end vertex"``): chapter
+    5's sweep met two end vertices, E and C, and named neither (both went by under "Vertices
+    E and C: the same steps, faster")."""
+    return {kind for caption in _captions(data) for kind in VERTEX_KINDS
+            if re.match(rf"^\S+: .*\ban? {kind} vertex\b", caption)}
+
+
+_DIAGONAL_CAPTION = re.compile(r"^Diagonal (\S+(?: \S+)*?): ")
+_HELPER_SET = re.compile(r"^(\S+) becomes \S+'s helper\b")
+
+
+def unseen_helpers(data: dict) -> list[str]:
+    """The diagonals of the monotone sweep whose helper (the diagonal's second end) was
+    never seen becoming one: no earlier caption says ``"F becomes B–C's helper"`` with the
+    helper drawn (an object named ``helper``) in its play, as ``"DF: F never seen to become
+    a helper"``. F became D's helper under "Vertices H, B, G and F: the same steps, faster",
+    and "Diagonal DF: the split vertex D joins its helper F" came from nowhere."""
+    seen: set[str] = set()
+    found, caption = [], ""
+    for play in data["plays"]:
+        new = play.get("subcaption")
+        caption = new or caption  # the picture plays after its words, under them
+        if (m := _HELPER_SET.match(caption)) and any(
+                node.get("name") == "helper" for anim in play["animations"]
+                for key in ("mobject", "target") for node in mobject_nodes(anim.get(key) or {})):
+            seen.add(m.group(1))
+        if new and (m := _DIAGONAL_CAPTION.match(new)):
+            ends = m.group(1)
+            helper = ends.split()[-1] if " " in ends else ends[-1]
+            if helper not in seen:
+                found.append(f"{ends}: {helper} never seen to become a helper")
+    return sorted(set(found))
+
+
+def stack_returns_unsaid(data: dict) -> list[str]:
+    """The monotone stack's labels that come back onto its column after leaving it under
+    words that do not say so, as ``"'A is done: H and B wait on the stack': H left, comes
+    back unsaid"``: "H leaves" then "H and B wait" read as a contradiction (72–81 s), while
+    the column drew H popped and pushed back."""
+    found, caption = [], ""
+    shown: list[str] = []
+    left: set[str] = set()
+    for play in data["plays"]:
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if node.get("name") != "stack:column":
+                continue
+            if anim.get("type") in OUTGOING:
+                shown, left = [], set()
+                continue
+            new = _stack_labels(anim.get("target", node))
+            for v in new:
+                if v in left and v not in shown and not re.search(
+                        rf"\b{re.escape(v)}\b[^:]*\b(?:goes|go|comes|come) back\b", caption):
+                    found.append(f"{caption!r}: {v} left, comes back unsaid")
+            left |= {v for v in shown if v not in new}
+            shown = new
+    return found
+
+
+#: the least gap beside a label (scene units) that the sweep line leaves where it passes at
+#: the label's height: 0.12 each side of K's and M's letters read as a line through them
+LEAST_SWEEP_SIDE_GAP = 0.35
+
+
+def labels_beside_the_sweep(data: dict) -> list[str]:
+    """The vertex labels the monotone sweep line passes at their own height (a dash meeting
+    the label's band, its bottom to its top) nearer than :data:`LEAST_SWEEP_SIDE_GAP` beside
+    them, as ``"the sweep 0.12 beside K"``; each label once, at its least gap."""
+    least: dict[str, float] = {}
+    for anim, labels in _with_labels(data):
+        for key in ("mobject", "target"):
+            for line in mobject_nodes(anim.get(key) or {}):
+                if line.get("name") not in _TOOL_LINES:
+                    continue
+                for dash in mobject_nodes(line):
+                    if len(dash.get("points", ())) < 2 or (dash.get("stroke_opacity") or 0) == 0:
+                        continue
+                    xs = [p[0] for p in dash["points"]]
+                    ys = [p[1] for p in dash["points"]]
+                    for v, (x0, y0, x1, y1) in labels.items():
+                        if max(ys) < y0 or min(ys) > y1:
+                            continue  # not at the label's height
+                        gap = max(x0 - max(xs), min(xs) - x1, 0.0)
+                        if gap < LEAST_SWEEP_SIDE_GAP - 1e-3:
+                            least[v] = min(gap, least.get(v, gap))
+    return [f"the sweep {gap:.2f} beside {v}" for v, gap in sorted(least.items())]
+
+
+def counts_on_two_lines(data: dict) -> list[str]:
+    """The counts (a ``counter`` text) broken over lines, as ``"'n − 2 = 13 − 2 / = 11
+    triangles'"``: its halves read as two things (chapter 5's count in the top-left corner)."""
+    found = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for node in mobject_nodes(anim.get("mobject") or {}):
+                text = node.get("text") or ""
+                if node.get("name") == "counter" and "\n" in text.strip():
+                    found.append(repr(text.replace("\n", " / ")))
+    return sorted(set(found))
+
+
+#: another name for an algorithm, said on screen only beside its one name (:data:`SPOKEN`):
+#: chapter 4 said "With ear status kept up to date" and its plot "ear status kept", chapter 5
+#: then "Faster ear clipping", never taught
+OTHER_NAMES = {"ear status kept": "faster ear clipping"}
+
+
+def names_said_otherwise(data: dict) -> list[str]:
+    """The texts on screen (and the cues) that name an algorithm by another name of
+    :data:`OTHER_NAMES` without its own, as ``"'ear status kept: 235' for faster ear
+    clipping"``."""
+    captions = [" ".join(c.split()) for c in _captions(data)]
+    found = {}
+    for text in _all_shown_texts(data, frozenset()):
+        said = " ".join(text.split())
+        if any(said in caption and said != caption for caption in captions):
+            continue  # a row of a card's line: the line is read whole, as its caption
+        for other, name in OTHER_NAMES.items():
+            if other in said.lower() and name not in said.lower():
+                found[f"{said!r} for {name}"] = None
+    return sorted(found)

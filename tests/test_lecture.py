@@ -27,6 +27,7 @@ import srt
 from click.testing import CliRunner
 
 from tests.reading_rules import (
+    VERTEX_KINDS,
     alike_neighbours,
     amber_figure_marks,
     answers_over_pictures,
@@ -36,6 +37,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     claims_given_away,
+    counts_on_two_lines,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -57,8 +59,10 @@ from tests.reading_rules import (
     implementation_talk,
     jumping_stacks,
     keys_with_nothing_shown,
+    kinds_said,
     labels_across_fills,
     labels_across_t,
+    labels_beside_the_sweep,
     labels_moved_by_cuts,
     labels_on_claims,
     labels_on_edges,
@@ -74,6 +78,7 @@ from tests.reading_rules import (
     leftover_verdicts,
     lone_numbers,
     morphed_water,
+    names_said_otherwise,
     notes_over_fills,
     notes_under_moving_tools,
     picks_in_the_red,
@@ -91,6 +96,7 @@ from tests.reading_rules import (
     shifting_tints,
     short_falls,
     small_texts,
+    stack_returns_unsaid,
     stale_endings,
     stale_good_parts,
     stale_lit_rows,
@@ -108,7 +114,9 @@ from tests.reading_rules import (
     unsaid_colour_changes,
     unsaid_figure_words,
     unseen_ear_tests,
+    unseen_helpers,
     unspoken_words,
+    untaught_words,
     verdicts_before_red,
     water_outside_polygon,
     words_ahead_of_colours,
@@ -433,7 +441,6 @@ def test_existing_dir_gets_new_lecture_and_keeps_other_files(tmp_path, tiny):
 PICKY = textwrap.dedent('''
     from geometry.diagonals import find_diagonal
 
-
     def picky(polygon):
         """The corrected scaling heuristic, except on quadrilaterals."""
         if polygon.n == 4:
@@ -444,7 +451,6 @@ PICKY_CHAPTER = textwrap.dedent('''
     from metaphors.lecture import Card, LectureScene, Run
 
     SPEC = __file__.replace("picky_chapter.py", "picky.py:picky")
-
 
     class Picky(LectureScene):
         chapter_title = "Picky"
@@ -760,6 +766,22 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # "band swept" under the green "swept: in P")
     assert balls_not_there(data) == [], chapter.slug
     assert keys_with_nothing_shown(data) == [], chapter.slug
+
+    # mono5: each word taught the first time it is said (chapter 5's card said y-monotone,
+    # split and merge before the run taught them; "joins its helper F", helper untaught), and
+    # each helper a diagonal joins seen becoming one (F's step went by in a summary)
+    assert untaught_words(data) == [], chapter.slug
+    assert unseen_helpers(data) == [], chapter.slug
+    # the stack's words say what its column does: a vertex that left and comes back is said
+    # to ("H leaves", then "H and B wait" read as a contradiction)
+    assert stack_returns_unsaid(data) == [], chapter.slug
+    # the sweep line passes no label at its height nearer than two letters' width (it ran
+    # 0.12 beside K and M)
+    assert labels_beside_the_sweep(data) == [], chapter.slug
+    # a count on one line ("n − 2 = 13 − 2" over "= 11 triangles" read as two things)
+    assert counts_on_two_lines(data) == [], chapter.slug
+    # an algorithm by one name ("ear status kept" in chapter 4, "faster ear clipping" after)
+    assert names_said_otherwise(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
@@ -1184,3 +1206,55 @@ def test_the_overview_defines_a_triangulation_and_why_it_has_n_minus_2_triangles
     assert any(m.get("name") == "figure:label" and "7 + 8 = 13 + 2" in " ".join(
         n.get("text") or "" for n in m.get("submobjects", [])) for m in parts)
     assert numbers_before_rules(data) == []
+
+
+def test_the_monotone_chapter_names_every_kind_and_teaches_faster_ear_clipping_first():
+    """mono5: chapter 5's sweep names each kind of vertex once on the picture (no vertex was
+    ever named an end vertex: E and C went by in a summary); and faster ear clipping, named so
+    in chapter 5 and the recap, is taught under that name where the lecture first says it
+    (chapter 4 said "with ear status kept up to date", its plot "ear status kept")."""
+    from trex.chapters import lecture_chapters
+    from trex.snapshot import build
+
+    chapters = {c.slug: c for c in lecture_chapters()}
+    graphs = {slug: build(_chapter_class(chapters[slug]).handed()).data
+              for slug in ("ears", "faster")}
+    assert kinds_said(graphs["faster"]) == set(VERTEX_KINDS)
+    name = "faster ear clipping"
+    first = next(slug for slug, data in graphs.items()
+                 if any(name in t.lower() for t in _shown_words(data)))
+    assert first == "ears", first
+    assert any(name in t.lower() and "ear status" in t.lower()
+               for t in _shown_words(graphs[first]))
+
+
+def _shown_words(data):
+    from tests.reading_rules import _all_shown_texts
+
+    return list(_all_shown_texts(data, frozenset()))
+
+
+def test_a_figured_cards_words_stand_under_its_title():
+    """mono5: a card's words beside its figure are centred on the frame's height, so too many
+    rows ran up over its title (chapter 5's plot card at 15 rows): every figured card's
+    column ends below its title, with room."""
+    from manim import DOWN, LEFT, VGroup
+
+    from metaphors.lecture import CARD_WIDTH, FIGURED_TITLE_Y, FIGURED_WIDTH, Card
+    from metaphors.theme import THEME
+    from rendering import typeset
+    from trex.chapters import lecture_chapters
+
+    for chapter in lecture_chapters():
+        cls = _chapter_class(chapter)
+        scene = cls.__new__(cls)
+        scene.theme = THEME
+        for card in scene.chapter_segments():
+            if not isinstance(card, Card) or card.figure is None or not card.lines:
+                continue
+            column = VGroup(*[scene.card_line(line, FIGURED_WIDTH) for line in card.lines])
+            column.arrange(DOWN, aligned_edge=LEFT, buff=0.35)
+            title = typeset.glyphs(card.title, font=THEME.font, size=THEME.title_size,
+                                   colour=THEME.ink, width=CARD_WIDTH)
+            top, under = -0.3 + column.height / 2, FIGURED_TITLE_Y - title.height / 2
+            assert top <= under - 0.3, (chapter.slug, card.title, round(top, 2))

@@ -32,7 +32,7 @@ FIXED = [
     "counterexample", "counterexample-twin", "square", "triangle", "lecture", "two-ears",
     "gravity-snag",
 ]
-FAMILIES = ["star", "spiral", "comb"]
+FAMILIES = ["star", "spiral", "comb", "half-disc"]
 ROOT = Path(__file__).resolve().parent.parent
 GENERATORS = ["random-star", "random-2opt", "random-orthogonal", "random-spiral", "random-comb"]
 
