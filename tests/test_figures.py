@@ -768,6 +768,34 @@ def test_the_frame_marks_a_convex_and_a_reflex_vertex_outside_p():
     assert abs(ring.get_center() - frame.to_scene(p.points[b])).max() < 1e-9  # B, the left-most
 
 
+def test_the_frame_s_words_keep_clear_of_its_labels_as_drawn(monkeypatch):
+    """The frame card's Convex and Reflex words are checked against the labels the figure
+    draws (clear of T's sides and the pick's line), not against labels placed without
+    them: two placements could drift apart, a word over a label. Here every label the
+    figure draws stands a little under its dot, where Convex would go under B; the words
+    find another side."""
+    import numpy as np
+
+    import metaphors.figures as figures
+
+    drawn_vertices = figures._vertices
+
+    def lowered(polygon, frame, theme, parts):
+        vertices = drawn_vertices(polygon, frame, theme, parts)
+        for marker in vertices.submobjects:
+            marker[1].move_to(marker[0].get_center() + np.array([0.0, -0.5, 0.0]))
+        return vertices
+
+    monkeypatch.setattr(figures, "_vertices", lowered)
+    drawn = figure_mobjects(Figure("frame"), "lecture")
+    (vertices,) = named(drawn, "figure:vertices")
+    labels = [figures._box(marker[1], pad=0.0) for marker in vertices.submobjects]
+    words = [figures._box(mark[1], pad=0.0) for word in ("convex", "reflex")
+             for mark in named(drawn, f"figure:{word}")]
+    assert len(words) == 2
+    assert [w for w in words if any(figures._overlap(w, b) for b in labels)] == []
+
+
 _FIRST_MARKS = {"convex": r"(?i)\bconvex\b", "reflex": r"(?i)\breflex\b",
                 "ear": r"(?i)\bears?\b", "inner-diagonal": r"(?i)\binner diagonals?\b",
                 "candidate": r"(?i)\bcandidates?\b", "T": r"\bT\b"}
