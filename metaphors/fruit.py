@@ -34,7 +34,7 @@ from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
 from metaphors.board import Board, Playable
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
-from metaphors.labels import MARGIN, drawn_edges, off_the_fill
+from metaphors.labels import EDGE_MARGIN, MARGIN, drawn_edges, off_the_fill
 from metaphors.layout import Obstacles, area_of, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
@@ -160,17 +160,21 @@ def ear_test(board: Board, beat: EarTest) -> None:
     _setup(board, beat)
     theme = board.theme
     colour = theme.result if beat.ear else theme.rejected
-    gone = board.drop(*_TEST)
+    gone: list[Playable] = [*board.drop(*_TEST)]
     if beat.triangle:
         # the labels the triangle would lie over move clear of it first (a pulse and a
         # move of one marker in one play would cancel): a label on its red over the fruit's
         # orange was hard to read, and its edge ran through the keyhole's c₂; apart from the
         # others as the knife moves them (MAB's green moved M 0.07 under K)
+        # moved aside off a red triangle (it goes with the next words), they go back with
+        # it; those moved aside off the triangle before go back now (it goes now)
         moves = board.clear_labels(covering([board.at(p) for p in beat.triangle]),
-                                   apart=LABEL_APART)
+                                   apart=LABEL_APART, aside=not beat.ear, returning=True)
         if moves:
             board.scene.play(*gone, *moves, run_time=max(0.1, 0.4 * beat.pace))
             gone = []
+    elif gone:  # the triangle before goes, and the labels moved aside off it come back
+        gone += board.labels_aside_back(set())
     anims: list[Playable] = [*gone, Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
     if beat.triangle:
         anims += _test_triangle(board, beat.triangle, "result" if beat.ear else "rejected")
@@ -430,7 +434,7 @@ def _whole(board: Board, beat: Slice) -> None:
                            holes),
                *board.drop("good", *_FOUND), FadeOut(board.outline),
                *[FadeIn(p) for p in pieces], shown, *[FadeIn(m) for m in back],
-               *_placed(board.clear_labels(*pieces), back),
+               *_placed(board.clear_labels(*pieces, near=EDGE_MARGIN), back),
                run_time=1.2, at_rest=True)
     board.scene.wait(1.0)
 

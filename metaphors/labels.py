@@ -197,8 +197,10 @@ def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
 def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
                    drawn: Sequence[Segment], new: Sequence[Segment],
                    dot: float = THEME.dot_radius, apart: float = MARGIN,
-                   fill: shapely.Geometry | None = None) -> dict[str, np.ndarray]:
-    """The labels that the ``new`` segments come within :data:`MARGIN` of, each with a new
+                   fill: shapely.Geometry | None = None,
+                   standing: Mapping[str, np.ndarray] | None = None,
+                   near: float = MARGIN) -> dict[str, np.ndarray]:
+    """The labels that the ``new`` segments come within ``near`` (:data:`MARGIN`) of, each with a new
     centre: the first place round its vertex (:func:`places_round`: out along the bisector
     of its ring, each ring a list of labels, their dots where the markers stand now)
     :data:`EDGE_MARGIN` clear of the segments ``drawn`` (the edges, the lines on the
@@ -206,9 +208,13 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
     clear of those and ``apart`` from the other labels (more than :data:`MARGIN` where labels
     crowd); of the places each asks, one off ``fill`` (the polygon's region: ear clipping's
     fruit) first, as :func:`best_place` prefers (moved off a test triangle, the keyhole's
-    a₂ went from its hole onto the orange); a label with no clear place stays."""
+    a₂ went from its hole onto the orange); a label with no clear place stays.
+    ``standing``: the centres some labels are measured at instead of where they stand (they
+    go back there: ear clipping's labels moved aside off a test triangle gone now)."""
     at = {name: np.asarray(m[0].get_center(), dtype=float)[:2] for name, m in markers.items()}
-    boxes = {name: tuple(rects_at(m[1].get_center()[:2], (m[1].width, m[1].height))[0])
+    standing = standing or {}
+    boxes = {name: tuple(rects_at(np.asarray(standing.get(name, m[1].get_center()),
+                                             dtype=float)[:2], (m[1].width, m[1].height))[0])
              for name, m in markers.items() if len(m) > 1}
     lines = Obstacles(segments=[(np.asarray(a, float)[:2], np.asarray(b, float)[:2])
                                 for a, b in new])
@@ -217,7 +223,7 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
     moved: dict[str, np.ndarray] = {}
     for ring in rings:
         for i, name in enumerate(ring):
-            if name not in boxes or lines.gaps(np.array([boxes[name]]))[0] >= MARGIN:
+            if name not in boxes or lines.gaps(np.array([boxes[name]]))[0] >= near:
                 continue
             size = (boxes[name][2] - boxes[name][0], boxes[name][3] - boxes[name][1])
             d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])

@@ -66,6 +66,7 @@ from tests.reading_rules import (
     graph_nodes,
     hidden_failures,
     jumping_stacks,
+    labels_by_triangle_sides,
     labels_on_edges,
     labels_under_faces,
     labels_under_test_triangles,
@@ -505,7 +506,7 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
 
 @pytest.mark.parametrize("case", _params(SCENES))
 def test_a_runs_verdict_stands_by_its_claim(case):
-    """Issue 22: a run's ✓ or ✗ stands within 1/8 of the frame's height of its claim, inside
+    """Issue 22: a run's ✓ or ✗ stands within 5 % of the frame's height of its claim, inside
     P when there is room round it (prune and search's ✓ for GB stood 1.8 off, outside P)."""
     assert far_verdicts(graph(case).data) == [], case.id
 
@@ -522,6 +523,13 @@ def test_a_vertex_label_keeps_clear_of_its_polygons_edges(case):
     """A vertex label stands 1.5 % of the frame's height clear of every edge of the polygon
     it names a vertex of (chapter 2's K stood on edge L–K, M on A–M)."""
     assert labels_on_edges(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_vertex_label_keeps_clear_of_the_sides_of_t_it_is_not_on(case):
+    """A vertex label stands 1.5 % of the frame's height clear of every side of T its vertex
+    is not on (the exercises' E stood 0.10 from T's side AC, against it as it pulsed)."""
+    assert labels_by_triangle_sides(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params([c for c in SCENES if c.cls is not None]))
