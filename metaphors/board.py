@@ -27,6 +27,7 @@ from metaphors.labels import (
     drawn_edges,
     filled_region,
     measured_markers,
+    move_label,
     new_colour,
 )
 from metaphors.layout import (
@@ -85,7 +86,7 @@ class Board:
     def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
                  theme: Theme = THEME, box: Box = METAPHOR, holes=(), *,
                  captions: CaptionTrack, claims: Sequence[tuple[str, str]] = (),
-                 cuts: Sequence[Sequence[Sequence[float]]] = ()):
+                 cuts: Sequence[Sequence[Sequence[float]]] = (), leaders: bool = False):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
@@ -107,7 +108,7 @@ class Board:
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}").set_z_index(LABEL_Z)
             for label, m in measured_markers(self.polygon, self.holes, self.frame, theme, pairs,
-                                             lines)
+                                             lines, leaders)
         }
         self.where: dict[str, tuple[float, ...]] = {
             label: p for label, p in zip(labels, self.polygon.points, strict=True)}
@@ -378,7 +379,7 @@ class Board:
                 self.moved_for_now.setdefault(label, where)
             if aside and label in crossed:
                 self.aside.setdefault(label, where)
-            moved[1].move_to((centre[0], centre[1], 0.0))
+            move_label(moved, centre)
             # a move for now is an ``animate`` (it is undone), a lasting one a Transform
             moves.append(animate(self.markers[label]).become(moved) if for_now
                          else Transform(self.markers[label], moved))
@@ -393,7 +394,7 @@ class Board:
             marker = self.markers.get(label)
             if marker is not None and id(marker) not in busy:
                 back = marker.copy()
-                back[1].move_to(self.at(place))
+                move_label(back, self.at(place))
                 moves.append(Transform(marker, back))
         self.aside = {}
         return moves
@@ -405,7 +406,7 @@ class Board:
         moves: list[Playable] = []
         for label, place in sorted(self.moved_for_now.items()):
             back = self.markers[label].copy()
-            back[1].move_to(self.at(place))
+            move_label(back, self.at(place))
             moves.append(animate(self.markers[label]).become(back))
         self.moved_for_now = {}
         return moves

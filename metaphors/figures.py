@@ -123,10 +123,12 @@ _CUTTING = ("figure:triangle", "figure:inner-diagonal", "figure:diagonal", "figu
 
 def _vertices(polygon: Polygon, frame: Frame, theme: Theme, parts: list[Mobject]) -> Mobject:
     """The vertex markers, each label clear of the lines the figure cuts P with
-    (:data:`_CUTTING`) as of its edges: one that has no room outside P (M in its notch)
-    stands inside one piece of the fill, off its sides."""
+    (:data:`_CUTTING`) as of its edges: one that has no room outside P round its dot (M in
+    its notch) stands beside P with a leader, else inside one piece of the fill, off its
+    sides."""
     lines = [edge for m in parts if m.name in _CUTTING for edge in drawn_edges(m)]
-    return tag(VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, lines=lines))),
+    return tag(VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, lines=lines,
+                                                      leaders=True))),
                "idle", "figure:vertices")
 
 

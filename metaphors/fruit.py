@@ -34,7 +34,7 @@ from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
 from metaphors.board import Board, Playable
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
-from metaphors.labels import EDGE_MARGIN, MARGIN, drawn_edges, off_the_fill
+from metaphors.labels import EDGE_MARGIN, MARGIN, drawn_edges, move_label, off_the_fill
 from metaphors.layout import Obstacles, area_of, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
@@ -380,7 +380,7 @@ def _labels_off_fruit(board: Board, rest: Sequence[Point]) -> list[Playable]:
     for name, centre in off_the_fill([board.at(p) for p in rest], labels, lines,
                                      board.theme.dot_radius).items():
         moved = board.markers[name].copy()
-        moved[1].move_to((centre[0], centre[1], 0.0))
+        move_label(moved, centre)
         moves.append(Transform(board.markers[name], moved))
     return moves
 

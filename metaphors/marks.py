@@ -183,7 +183,10 @@ def board_spot(board: Board, mark: Mobject, line: Mobject,
               if key.startswith("diagonal:") and isinstance(m, Line)]
     placed = placed or {}
     labels = [area_of(part, moved) for name, marker in board.markers.items()
-              for part in marker.submobjects[:1 if name in placed else None]]
+              for part in marker.submobjects[:1 if name in placed else 2]]
+    # a label's leader (:func:`metaphors.labels.leader`) is a line, not a box round it
+    edges += [(end(m[2].get_start()), end(m[2].get_end())) for name, m in board.markers.items()
+              if len(m.submobjects) > 2 and name not in placed]
     # a label placed again: its own size, at its new place
     labels += [_area_at(board.markers[name][1], at) for name, at in placed.items()]
     # and where the labels moved off the ball's way will come back to (the picture upright)

@@ -132,9 +132,12 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     edges: list[Segment] = [edge for ring in rings for edge in ring_edges([p[:2] for p in ring])]
     edges += [(m.get_start()[:2], m.get_end()[:2]) for name, m in board.objects.items()
               if isinstance(m, Line) and name.startswith("diagonal:")]
+    # and the labels' leaders (:func:`metaphors.labels.leader`)
+    edges += [(m[2].get_start()[:2], m[2].get_end()[:2]) for m in board.markers.values()
+              if len(m.submobjects) > 2]
     x0, at = _sweep_span(board, y)
     edges.append(((x0, at), (x0 + SWEEP_WIDTH, at)))
-    boxes = [area_of(marker[-1]) for marker in board.markers.values()]
+    boxes = [area_of(marker[1]) for marker in board.markers.values()]
     boxes += [area_of(m) for m in (board.title, *board.panel.mobjects())]
     dots = [(*marker[0].get_center()[:2], theme.dot_radius) for marker in board.markers.values()]
     reach = max(KIND_REACH)
@@ -145,11 +148,11 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     # the nearest to the vertex as drawn, its dot or its label, first: nearest its dot
     # alone, "regular" stood in the slot left of I, 0.35 from I's label and 0.45 from its
     # dot, read as nobody's, where beside I's label it was as near the dot
-    marker = Obstacles(dots=[(*dot, 0.0)], boxes=[area_of(board.markers[vertex][-1])])
+    marker = Obstacles(dots=[(*dot, 0.0)], boxes=[area_of(board.markers[vertex][1])])
     beside = marker.gaps(rects_at(centres, size))
     order = np.lexsort((np.round(own, 6), np.round(beside, 6)))  # the nearest first
     centres, own, beside = centres[order], own[order], beside[order]
-    others = Obstacles(boxes=[area_of(m[-1]) for v, m in board.markers.items() if v != vertex],
+    others = Obstacles(boxes=[area_of(m[1]) for v, m in board.markers.items() if v != vertex],
                        dots=[(*m[0].get_center()[:2], 0.0) for v, m in board.markers.items()
                              if v != vertex])
     ours = clear(centres, size, others, KIND_OWN * beside)

@@ -17,6 +17,7 @@ from typing import Protocol, cast
 from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.fruit import Keyhole
+from metaphors.gravity import GravityTurn
 from metaphors.layout import Box
 from metaphors.recorded import Recorded, captions_of, mark_step
 from story.beats import Beat, Claim, ShowPolygon, ShowTriangle
@@ -52,7 +53,10 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
                       *(beat.labels for beat in beats if isinstance(beat, Claim)),
                       *(side for beat in beats if isinstance(beat, ShowTriangle)
                         for side in _sides(beat.labels))])),
-                  cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)])
+                  cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)],
+                  # a label with no room outside P beside it, with a leader, where the picture
+                  # never turns (a turn keeps labels upright and places them again)
+                  leaders=not any(isinstance(beat, GravityTurn) for beat in beats))
     board.panel.shows_calls = scene.call_line
     board.panel.run_call = run_call(log)
     code = log.meta.get("code")

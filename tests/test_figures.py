@@ -982,3 +982,39 @@ def test_a_card_s_labels_stand_inside_one_piece_of_its_fill(kind):
         label = box(*marker[1].get_corner(DL)[:2], *marker[1].get_corner(UR)[:2])
         gaps = [label.distance(dot) for dot in dots]
         assert gaps[k] < min(g for j, g in enumerate(gaps) if j != k), (kind, p.labels[k])
+
+
+def test_a_label_with_no_room_outside_p_by_its_dot_stands_beside_p_with_a_leader():
+    """Chapter 5: M, in the lecture polygon's notch between A and L, stood over P's fill (a
+    place outside P by its dot was nearer A's). With leaders (a run's board that never
+    turns, a card's figure), it stands beside P, off every edge, and a thin line runs from
+    by its dot to by its letter; every other label is placed as before."""
+    import shapely
+    from manim import Line
+
+    from metaphors.board import METAPHOR
+    from metaphors.labels import EDGE_MARGIN, LEADER_END, measured_markers
+    from metaphors.theme import THEME
+
+    p = read_polygon("lecture")
+    frame = Frame(p.points, METAPHOR.center, METAPHOR.width, METAPHOR.height)
+    region = shapely.Polygon([frame.to_scene(q)[:2] for q in p.points])
+    plain = dict(measured_markers(p, (), frame, THEME))
+    led = dict(measured_markers(p, (), frame, THEME, leaders=True))
+
+    def box(marker):
+        (x0, y0), (x1, y1) = marker[1].get_corner([-1, -1, 0])[:2], marker[1].get_corner([1, 1, 0])[:2]
+        return shapely.box(x0, y0, x1, y1)
+
+    assert box(plain["M"]).intersection(region).area > 1e-3  # without: over P's fill
+    m = led["M"]
+    assert len(m.submobjects) == 3 and isinstance(m[2], Line)
+    assert box(m).intersection(region).area == 0.0
+    assert box(m).distance(region.exterior) >= EDGE_MARGIN
+    dot = shapely.Point(m[0].get_center()[:2])
+    start, end = shapely.Point(m[2].get_start()[:2]), shapely.Point(m[2].get_end()[:2])
+    assert abs(start.distance(dot) - (THEME.dot_radius + LEADER_END)) < 1e-6
+    assert abs(end.distance(box(m)) - LEADER_END) < 1e-3
+    # the labels with room beside their dot stand where they stood
+    assert {name for name in led if len(led[name].submobjects) == 2
+            and not box(led[name]).equals(box(plain[name]))} == set()
