@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from manim import (
@@ -138,10 +139,12 @@ _CUTTING = ("figure:triangle", "figure:inner-diagonal", "figure:diagonal", "figu
 
 def _vertices(polygon: Polygon, frame: Frame, theme: Theme, parts: list[Mobject]) -> Mobject:
     """The vertex markers, each label clear of the lines the figure cuts P with
-    (:data:`_CUTTING`) as of its edges: one that has no room outside P (M in its notch)
-    stands inside one piece of the fill, off its sides."""
+    (:data:`_CUTTING`) as of its edges: one that has no room outside P round its dot (M in
+    its notch) stands beside P with a leader, else inside one piece of the fill, off its
+    sides."""
     lines = [edge for m in parts if m.name in _CUTTING for edge in drawn_edges(m)]
-    return tag(VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, lines=lines))),
+    return tag(VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, lines=lines,
+                                                      leaders=True))),
                "idle", "figure:vertices")
 
 
@@ -212,24 +215,36 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
     candidates (P's vertices inside T) marked, in the colours the runs give them."""
     t = triangle_at(polygon, leftmost_vertex(polygon))
     corners = (t.a.index, t.b.index, t.c.index)
-    shaded = tag(MPolygon(*frame.many([polygon.points[k] for k in corners]), color=theme.called,
-                          stroke_width=theme.thin_stroke, fill_color=theme.called,
-                          fill_opacity=0.2), "called", "figure:T")
     inside = [v.index for v in candidates_in_triangle(polygon, t)]
+    shaded, asked = _frame_lines(polygon, frame, theme)
     dots = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.candidate),
                 "candidate", "figure:candidate") for k in inside]
     names = ", ".join(polygon.labels[k] for k in inside) or "none"
     words = f"T = {''.join(polygon.labels[k] for k in corners)}; candidates in T: {names}"
     # the words the card says, on the picture, each with the line that says it: B convex,
-    # and a reflex vertex (:func:`ringed_reflex`)
-    kinds = [*_vertex_word(polygon, frame, theme, t.b.index, "convex"),
+    # and a reflex vertex (:func:`ringed_reflex`); clear of the labels as the figure draws
+    # them (:func:`_vertices`, clear of T's sides and the pick's line)
+    labels = _label_boxes(_vertices(polygon, frame, theme, [shaded, *asked]))
+    kinds = [*_vertex_word(polygon, frame, theme, t.b.index, "convex", labels),
              *next((w for v in _reflex(polygon)
-                    if (w := _vertex_word(polygon, frame, theme, v, "reflex"))), [])]
+                    if (w := _vertex_word(polygon, frame, theme, v, "reflex", labels))), [])]
     # T with the line that names it, the candidates with the one that speaks of them (on a
     # card that says neither, with its title)
     caption = figure_caption(BOX, theme, (words, theme.ink))
-    # the first candidate's claim to be, dashed amber (not yet judged), with the line that
-    # asks of it ("is BG inner?": BG was said and never drawn)
+    return [comes_with(shaded, "T"), *(comes_with(d, "candidate") for d in dots), *kinds,
+            *asked, comes_with(caption, "candidate")]
+
+
+def _frame_lines(polygon: Polygon, frame: Frame, theme: Theme) -> tuple[Mobject, list[Mobject]]:
+    """The frame figure's lines over P: T = ABC shaded, and the first candidate's claim to
+    be, dashed amber (not yet judged), with the line that asks of it ("is BG inner?": BG
+    was said and never drawn), if T holds a candidate."""
+    t = triangle_at(polygon, leftmost_vertex(polygon))
+    corners = (t.a.index, t.b.index, t.c.index)
+    shaded = tag(MPolygon(*frame.many([polygon.points[k] for k in corners]), color=theme.called,
+                          stroke_width=theme.thin_stroke, fill_color=theme.called,
+                          fill_opacity=0.2), "called", "figure:T")
+    inside = [v.index for v in candidates_in_triangle(polygon, t)]
     asked = [said_only(tag(DashedLine(frame.to_scene(polygon.points[t.b.index]),
                                       frame.to_scene(polygon.points[inside[0]]),
                                       color=theme.argument, stroke_width=theme.stroke,
@@ -237,18 +252,24 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
                            "argument", "figure:pick"),
                        f"{polygon.labels[t.b.index]}{polygon.labels[inside[0]]}")
              ] if inside else []
-    return [comes_with(shaded, "T"), *(comes_with(d, "candidate") for d in dots), *kinds,
-            *asked, comes_with(caption, "candidate")]
+    return shaded, asked
+
+
+def _label_boxes(vertices: Mobject) -> list[Box]:
+    """The boxes of the labels of a figure's vertex markers (:func:`_vertices`)."""
+    return [_box(marker[1]) for marker in vertices.submobjects]
 
 
 def ringed_reflex(polygon_spec: str, theme: Theme = THEME) -> str | None:
     """The label of the reflex vertex a ``frame`` figure of ``polygon_spec`` rings (the
     first with room for its word), None if it rings none: the card's line that says what
-    the ring marks names it."""
+    the ring marks names it. Its labels as :func:`_frame` draws them (one placement)."""
     polygon = read_polygon(polygon_spec)
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
+    shaded, asked = _frame_lines(polygon, frame, theme)
+    labels = _label_boxes(_vertices(polygon, frame, theme, [shaded, *asked]))
     return next((polygon.labels[v] for v in _reflex(polygon)
-                 if _vertex_word(polygon, frame, theme, v, "reflex")), None)
+                 if _vertex_word(polygon, frame, theme, v, "reflex", labels)), None)
 
 
 def _reflex(polygon: Polygon) -> list[int]:
@@ -258,10 +279,12 @@ def _reflex(polygon: Polygon) -> list[int]:
 
 
 def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
-                 word: str) -> list[Mobject]:
+                 word: str, labels: Sequence[Box]) -> list[Mobject]:
     """A ring round vertex ``v`` and ``word`` beside it: outside P, clear of its edges and
-    of the vertices' labels, inside the figure's half of the screen (tagged
-    ``figure:<word>``); none if no side of ``v`` has room for the word."""
+    of the vertices' ``labels`` (their boxes as the figure draws them: checked against
+    labels placed without T's sides, the word could stand on a label drawn clear of them),
+    inside the figure's half of the screen (tagged ``figure:<word>``); none if no side of
+    ``v`` has room for the word."""
     at = frame.to_scene(polygon.points[v])
     # in ink: amber marks the candidates, green and red what holds and what fails
     # capitalised, as the vertices' labels: a word of short letters ("convex") then still
@@ -269,7 +292,6 @@ def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
     shown = typeset.text(word.capitalize(), font=theme.font, size=theme.label_size,
                          colour=theme.ink)
     outline = [frame.to_scene(p)[:2] for p in polygon.points]
-    labels = [_box(marker[1]) for marker in placed_vertex_markers(polygon, frame, theme)]
     for side in (DOWN, UP, LEFT, RIGHT, DL, DR, UL, UR):
         for gap in (0.3, 0.55, 0.8):  # beyond the ring, then further out
             shown.move_to(at + side * (gap + (shown.width if side[0] else shown.height) / 2))

@@ -89,9 +89,12 @@ KIND_GAPS = (0.18, 0.12)
 #: 0.6 (7.5 % of the frame's height) beside it, else 1.0 where a crowded vertex (the left-most,
 #: at the frame's margin) has no room nearer; farther, it is read as nobody's, and none is shown
 KIND_REACH = (0.6, 1.0)
+#: the farthest a kind word's box stands from its vertex as drawn, its dot or its label, where
+#: it can (3.75 % of the frame's height): farther, it is read as nobody's (the reading rule's)
+KIND_BESIDE = 0.3
 #: every other vertex's dot and label stand at least this many times as far from the kind word
-#: as its own dot: the word is read as its vertex's ("start" between A and L was read as L's,
-#: "regular" between B and b₁'s label as b₁'s)
+#: as its own vertex as drawn (its dot or its label): the word is read as its vertex's ("start"
+#: between A and L was read as L's, "regular" between B and b₁'s label as b₁'s)
 KIND_OWN = 1.5
 #: each board's place for its stack (left, top, and whether it is a row), found once a run
 _PLACES: weakref.WeakKeyDictionary[Board, tuple[float, float, bool]] = (
@@ -131,9 +134,11 @@ def _sweep_span(board: Board, y: float) -> tuple[float, float]:
 
 
 def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarray | None:
-    """Where the kind word of ``vertex`` stands: the nearest place to its dot (on a grid,
-    :func:`metaphors.layout.grid`, measured from the dot to the word's box) within
-    :data:`KIND_REACH` that keeps every other vertex's dot :data:`KIND_OWN` times as far, and a
+    """Where the kind word of ``vertex`` stands: the nearest place to its vertex as drawn,
+    its dot or its label (on a grid, :func:`metaphors.layout.grid`, measured to the word's
+    box), then to its dot, within
+    :data:`KIND_REACH` of its dot that keeps every other vertex's dot and label :data:`KIND_OWN`
+    times as far as its own, and a
     gap of :data:`KIND_GAPS` from every vertex label and dot, every edge and diagonal drawn, the
     sweep line at ``y``, the title and the panel, outside P, on screen above the subtitle; None
     where there is none (the caption names the kind)."""
@@ -144,9 +149,12 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     edges: list[Segment] = [edge for ring in rings for edge in ring_edges([p[:2] for p in ring])]
     edges += [(m.get_start()[:2], m.get_end()[:2]) for name, m in board.objects.items()
               if isinstance(m, Line) and name.startswith("diagonal:")]
+    # and the labels' leaders (:func:`metaphors.labels.leader`)
+    edges += [(m[2].get_start()[:2], m[2].get_end()[:2]) for m in board.markers.values()
+              if len(m.submobjects) > 2]
     x0, at = _sweep_span(board, y)
     edges.append(((x0, at), (x0 + SWEEP_WIDTH, at)))
-    boxes = [area_of(marker[-1]) for marker in board.markers.values()]
+    boxes = [area_of(marker[1]) for marker in board.markers.values()]
     boxes += [area_of(m) for m in (board.title, *board.panel.mobjects())]
     dots = [(*marker[0].get_center()[:2], theme.dot_radius) for marker in board.markers.values()]
     reach = max(KIND_REACH)
@@ -154,12 +162,17 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
               dot[0] + reach + size[0], dot[1] + reach + size[1])
     centres = grid(window, size)
     own = Obstacles(dots=[(*dot, 0.0)]).gaps(rects_at(centres, size))
-    order = np.argsort(np.round(own, 6), kind="stable")  # the nearest first
-    centres, own = centres[order], own[order]
-    others = Obstacles(boxes=[area_of(m[-1]) for v, m in board.markers.items() if v != vertex],
+    # the nearest to the vertex as drawn, its dot or its label, first: nearest its dot
+    # alone, "regular" stood in the slot left of I, 0.35 from I's label and 0.45 from its
+    # dot, read as nobody's, where beside I's label it was as near the dot
+    marker = Obstacles(dots=[(*dot, 0.0)], boxes=[area_of(board.markers[vertex][1])])
+    beside = marker.gaps(rects_at(centres, size))
+    order = np.lexsort((np.round(own, 6), np.round(beside, 6)))  # the nearest first
+    centres, own, beside = centres[order], own[order], beside[order]
+    others = Obstacles(boxes=[area_of(m[1]) for v, m in board.markers.items() if v != vertex],
                        dots=[(*m[0].get_center()[:2], 0.0) for v, m in board.markers.items()
                              if v != vertex])
-    ours = clear(centres, size, others, KIND_OWN * own)
+    ours = clear(centres, size, others, KIND_OWN * beside)
     # P's region too: a word over P's fill is text over the picture (review s35: "merge" stood
     # on the fill beside M, "split" beside D); outside P, the edges' gap keeps it off them
     region = Region([p[:2] for p in rings[0]], [[p[:2] for p in ring] for ring in rings[1:]])
@@ -167,10 +180,14 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     within = (FRAME_AREA[0], SUBTITLE_TOP, FRAME_AREA[2], FRAME_AREA[3])
     free = [ours & clear(centres, size, obstacles, gap, within) for gap in KIND_GAPS]
     for most in KIND_REACH:
-        for ok in free:
-            ok = ok & (own <= most + 1e-9)
-            if ok.any():
-                return np.array([*centres[int(np.argmax(ok))], 0.0])
+        # beside its dot or label first, at the smaller gap if it must: at the larger gap
+        # first, "regular" went 0.35 off I, into the slot, where 0.13 right of I's label
+        # was free
+        for near in (KIND_BESIDE, np.inf):
+            for ok in free:
+                ok = ok & (own <= most + 1e-9) & (beside <= near + 1e-9)
+                if ok.any():
+                    return np.array([*centres[int(np.argmax(ok))], 0.0])
     return None
 
 

@@ -1346,6 +1346,10 @@ KIND_FARTHEST = 1.0
 #: how many times farther than its own vertex every other vertex's dot must be from a kind
 #: word: nearer, the word reads as the other's ("start" between A and L)
 KIND_OWN = 1.5
+#: the farthest a kind word's box may stand from its vertex as drawn, its dot or its label
+#: (3.75 % of the frame's height, 18 px at 480p): "regular" stood in the slot left of I,
+#: 0.35 from I's label and 0.45 from its dot, read as the slot's, not I's
+KIND_BESIDE = 0.3
 
 
 def _dot_centres(node: dict) -> Iterator[tuple[str, tuple[float, float]]]:
@@ -1363,9 +1367,11 @@ def _dot_centres(node: dict) -> Iterator[tuple[str, tuple[float, float]]]:
 def stray_kind_words(data: dict) -> list[str]:
     """Issue 22: the monotone partition's kind words not beside their own vertex (the one the
     play flashes, Indicate): farther than :data:`KIND_FARTHEST` from its dot, as
-    ``"'regular' for B 1.4 away"``, or with another vertex's dot or label nearer than
-    :data:`KIND_OWN` times its own dot, as ``"'start' for A nearer L"``. The dots and labels
-    are those of the polygon drawn last, where they were last drawn."""
+    ``"'regular' for B 1.4 away"``, farther than :data:`KIND_BESIDE` from both its dot and
+    its label, as ``"'regular' for I 0.35 from it"``, or with another vertex's dot or label
+    nearer than :data:`KIND_OWN` times its own (dot or label), as ``"'start' for A nearer
+    L"``. The dots and labels are those of the polygon drawn last, where they were last
+    drawn."""
     from shapely.geometry import Point
     from shapely.geometry import box as rectangle
 
@@ -1392,10 +1398,14 @@ def stray_kind_words(data: dict) -> list[str]:
                 gap = shape.distance(Point(dots[v]))
                 if gap > KIND_FARTHEST + 0.01:  # the graph rounds boxes to 0.001
                     found.append(f"{word['text']!r} for {v} {gap:.1f} away")
+                beside = min(gap, shape.distance(rectangle(*labels[v])) if v in labels else gap)
+                if beside > KIND_BESIDE + 0.01:
+                    found.append(f"{word['text']!r} for {v} {beside:.2f} from it")
                 marks = [(w, Point(at)) for w, at in dots.items()]
                 marks += [(w, rectangle(*b)) for w, b in labels.items()]
                 found += [f"{word['text']!r} for {v} nearer {w}" for w, mark in sorted(
-                    marks, key=lambda m: m[0]) if w != v and shape.distance(mark) < KIND_OWN * gap]
+                    marks, key=lambda m: m[0])
+                    if w != v and shape.distance(mark) < KIND_OWN * beside]
     return sorted(set(found))
 
 
@@ -2561,8 +2571,10 @@ def crowded_vertex_labels(data: dict) -> list[str]:
 
 # --- issue 22: a run's verdict stands by its claim -------------------------------------------
 
-#: the farthest a run's ✓ or ✗ may stand from the claim it judges (1/8 of the frame's height)
-FARTHEST_MARK = 1.0
+#: the farthest a run's ✓ or ✗ may stand from the claim it judges (5 % of the frame's
+#: height, 24 px at 480p): at 0.73 (44 px), prune and search's ✓ for GB stood over the fruit
+#: by H's label, read as judging nothing near it
+FARTHEST_MARK = 0.4
 #: the names of a run's marks and of its claim
 _RUN_MARKS, _CLAIM = ("tick", "cross"), "claim"
 
@@ -2571,7 +2583,7 @@ def far_verdicts(data: dict) -> list[str]:
     """A run's ✓ or ✗ standing farther than :data:`FARTHEST_MARK` from the claim it judges
     (the last claim drawn before it), as ``"play 115 tick 1.80 from its claim"``: so far
     off, it seems to judge what it stands by (prune and search's ✓ for GB stood outside P
-    beside edge AB)."""
+    beside edge AB, then 0.73 off over the fruit)."""
     from shapely.geometry import LineString
     from shapely.geometry import box as area
 
@@ -3052,6 +3064,41 @@ def labels_on_edges(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> list[st
                         if gap < margin - 1e-9:
                             found.setdefault((text, owner),
                                              f"play {k} {text} {gap:.2f} from {owner}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- a label off the lines it is not on: T's sides -------------------------------------------
+
+#: the triangle T = ABC of the heuristics' frame, on a run's board and an analysis's stage
+_TRIANGLES = ("T", "analysis:T")
+
+
+def labels_by_triangle_sides(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> list[str]:
+    """The vertex labels nearer than ``margin`` to a side of T that their vertex is not on
+    (T's side AC, a chord of P, for a candidate inside T), as ``"play 80 E 0.10 from T"``:
+    each label and T once, at the first play that shows it so, the labels and T as
+    :func:`_shown_after_plays` follows them. A letter by a line it is not on reads as part
+    of it (the exercises' E stood 0.10 from AC, and its pulse as a candidate, 1.4 times its
+    size, pushed it against the line at 91 s)."""
+    from shapely.geometry import LineString, Point
+    from shapely.geometry import box as area
+
+    found: dict[tuple[str, str], str] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:", *_TRIANGLES)):
+        sides = [(name, s) for name, node in shown.items() if name in _TRIANGLES
+                 for s in _segments(node)]
+        for name, marker in shown.items():
+            dot = _dot_centre(marker) if name.startswith("vertex:") else None
+            if dot is None:
+                continue
+            for owner, (a, b) in sides:
+                if min(Point(a).distance(Point(dot)), Point(b).distance(Point(dot))) < 0.02:
+                    continue  # a side of its own vertex: the label stands by it
+                for box in _label_boxes(marker, direct=True):
+                    gap = LineString([a, b]).distance(area(*box))
+                    if gap < margin - 1e-9:
+                        label = name.removeprefix("vertex:")
+                        found.setdefault((label, owner), f"play {k} {label} {gap:.2f} from {owner}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
 
 

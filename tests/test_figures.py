@@ -667,12 +667,13 @@ def test_the_delaunay_figure_s_labels_keep_clear_of_its_circle_and_triangles(mon
     assert {"K × circle", "G × triangle"} <= set(labels_on_lines(old, old_ring, triangles))
     # and M, whose mark sat on the line, was said to be only just inside
     assert "M (just)" in label(old_figure)
-    # HKM's circle (the best that keeps every vertex clear) ran along M's label
+    # HKM's circle (the best that keeps every vertex clear) ran along M's label, in its
+    # notch; M beside P with its leader leaves it clear, and the card draws it
     monkeypatch.undo()
-    monkeypatch.setattr(faster, "_labels_clear", lambda polygon, figure: True)
     hkm = figure_mobjects(Figure("delaunay-circle"), "lecture")
-    (hkm_ring,) = named(hkm, "figure:circumcircle")
-    assert "M × circle" in labels_on_lines(named(hkm, "figure:vertices")[0], hkm_ring,
+    assert label(hkm).startswith("the circle of HKM")
+    without = placed_vertex_markers(read_polygon("lecture"), circle.frame, THEME, leaders=False)
+    assert "M × circle" in labels_on_lines(without, named(hkm, "figure:circumcircle")[0],
                                            named(hkm, "figure:triangle"))
 
 
@@ -817,6 +818,34 @@ def test_the_frame_marks_a_convex_and_a_reflex_vertex_outside_p():
     b = min(range(p.n), key=lambda k: p.points[k])
     ring = named(drawn, "figure:convex")[0][0]
     assert abs(ring.get_center() - frame.to_scene(p.points[b])).max() < 1e-9  # B, the left-most
+
+
+def test_the_frame_s_words_keep_clear_of_its_labels_as_drawn(monkeypatch):
+    """The frame card's Convex and Reflex words are checked against the labels the figure
+    draws (clear of T's sides and the pick's line), not against labels placed without
+    them: two placements could drift apart, a word over a label. Here every label the
+    figure draws stands a little under its dot, where Convex would go under B; the words
+    find another side."""
+    import numpy as np
+
+    import metaphors.figures as figures
+
+    drawn_vertices = figures._vertices
+
+    def lowered(polygon, frame, theme, parts):
+        vertices = drawn_vertices(polygon, frame, theme, parts)
+        for marker in vertices.submobjects:
+            marker[1].move_to(marker[0].get_center() + np.array([0.0, -0.5, 0.0]))
+        return vertices
+
+    monkeypatch.setattr(figures, "_vertices", lowered)
+    drawn = figure_mobjects(Figure("frame"), "lecture")
+    (vertices,) = named(drawn, "figure:vertices")
+    labels = [figures._box(marker[1], pad=0.0) for marker in vertices.submobjects]
+    words = [figures._box(mark[1], pad=0.0) for word in ("convex", "reflex")
+             for mark in named(drawn, f"figure:{word}")]
+    assert len(words) == 2
+    assert [w for w in words if any(figures._overlap(w, b) for b in labels)] == []
 
 
 _FIRST_MARKS = {"convex": r"(?i)\bconvex\b", "reflex": r"(?i)\breflex\b",
@@ -1024,10 +1053,49 @@ def test_a_card_s_labels_stand_inside_one_piece_of_its_fill(kind):
     assert any(" G on " in f for f in labels_across_fills(shown(before))), kind
     assert labels_across_fills(shown(drawn)) == [], kind
     # and each label nearer its own dot than any other (ear clipping's fan left G no place
-    # inside one triangle, and its label went by H)
+    # inside one triangle, and its label went by H), but one with a leader to its dot (M,
+    # beside P: the leader says whose it is)
     markers = next(m for m in drawn if m.name == "figure:vertices")
     dots = [Point(*marker[0].get_center()[:2]) for marker in markers]
     for k, marker in enumerate(markers):
+        if len(marker.submobjects) > 2:
+            continue
         label = box(*marker[1].get_corner(DL)[:2], *marker[1].get_corner(UR)[:2])
         gaps = [label.distance(dot) for dot in dots]
         assert gaps[k] < min(g for j, g in enumerate(gaps) if j != k), (kind, p.labels[k])
+
+
+def test_a_label_with_no_room_outside_p_by_its_dot_stands_beside_p_with_a_leader():
+    """Chapter 5: M, in the lecture polygon's notch between A and L, stood over P's fill (a
+    place outside P by its dot was nearer A's). With leaders (a run's board that never
+    turns, a card's figure), it stands beside P, off every edge, and a thin line runs from
+    by its dot to by its letter; every other label is placed as before."""
+    import shapely
+    from manim import Line
+
+    from metaphors.board import METAPHOR
+    from metaphors.labels import EDGE_MARGIN, LEADER_END, measured_markers
+    from metaphors.theme import THEME
+
+    p = read_polygon("lecture")
+    frame = Frame(p.points, METAPHOR.center, METAPHOR.width, METAPHOR.height)
+    region = shapely.Polygon([frame.to_scene(q)[:2] for q in p.points])
+    plain = dict(measured_markers(p, (), frame, THEME))
+    led = dict(measured_markers(p, (), frame, THEME, leaders=True))
+
+    def box(marker):
+        (x0, y0), (x1, y1) = marker[1].get_corner([-1, -1, 0])[:2], marker[1].get_corner([1, 1, 0])[:2]
+        return shapely.box(x0, y0, x1, y1)
+
+    assert box(plain["M"]).intersection(region).area > 1e-3  # without: over P's fill
+    m = led["M"]
+    assert len(m.submobjects) == 3 and isinstance(m[2], Line)
+    assert box(m).intersection(region).area == 0.0
+    assert box(m).distance(region.exterior) >= EDGE_MARGIN
+    dot = shapely.Point(m[0].get_center()[:2])
+    start, end = shapely.Point(m[2].get_start()[:2]), shapely.Point(m[2].get_end()[:2])
+    assert abs(start.distance(dot) - (THEME.dot_radius + LEADER_END)) < 1e-6
+    assert abs(end.distance(box(m)) - LEADER_END) < 1e-3
+    # the labels with room beside their dot stand where they stood
+    assert {name for name in led if len(led[name].submobjects) == 2
+            and not box(led[name]).equals(box(plain[name]))} == set()
