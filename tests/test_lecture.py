@@ -33,6 +33,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     claims_given_away,
+    claims_like_their_edges,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -72,6 +73,7 @@ from tests.reading_rules import (
     refaded_texts,
     repeated_verdicts,
     replayed_beats,
+    rules_without_their_picture,
     run_together_labels,
     rushed_questions,
     shifting_colours,
@@ -691,6 +693,12 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # grey: a vertex greyed only where a caption has said what grey means (chapters 2 to 6
     # greyed B, C, A, L and B for a second, unsaid: gravity's C while the band hung from it)
     assert unexplained_grey(data) == [], chapter.slug
+    # issue 22 item 8: a card giving the rules' verdicts shows each rule with the picture of
+    # why (the recap's one picture of BD crossing E–A stood for all three wrong rules)
+    assert rules_without_their_picture(data) == [], chapter.slug
+    # issue 22 item 4: a card's claim told from the edge it crosses (BD and E–A, both solid
+    # red, read as one red cross)
+    assert claims_like_their_edges(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
