@@ -32,6 +32,7 @@ from tests.reading_rules import (
     bare_ticks,
     broken_counts,
     broken_summaries,
+    claims_along_edges,
     claims_given_away,
     claims_like_their_edges,
     crossed_vertex_labels,
@@ -696,6 +697,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 item 8: a card giving the rules' verdicts shows each rule with the picture of
     # why (the recap's one picture of BD crossing E–A stood for all three wrong rules)
     assert rules_without_their_picture(data) == [], chapter.slug
+    # issue 22 item 3: no claim reads as a part of an edge (gravity's EC ran 7° off B–C,
+    # its E 2.9 % of the frame's height from it)
+    assert claims_along_edges(data) == [], chapter.slug
     # issue 22 item 4: a card's claim told from the edge it crosses (BD and E–A, both solid
     # red, read as one red cross)
     assert claims_like_their_edges(data) == [], chapter.slug
