@@ -50,6 +50,8 @@ CASING = 2.0
 #: the groups a part belongs to (:func:`metaphors.figure_steps.replacing`): a rule's why,
 #: taken off by the next rule's; the claim; the wrong rules' pick, theirs all
 WHY, CLAIM, PICK = "why", "claim", "pick"
+#: the layer of the vertices' labels, over the tools' shading and the claims
+OVER = 3
 #: the dashes of a crossed edge: long, so that the edge reads as one thick dashed line
 #: beside the solid claim that crosses it
 EDGE_DASH = 0.2
@@ -91,11 +93,13 @@ def _picture(seen: Moment, frame: Frame, theme: Theme) -> list[Mobject]:
 
 def _markers(seen: Moment, frame: Frame, theme: Theme,
              claims: Sequence[tuple[str, str]]) -> Mobject:
-    """The vertices' labels, clear of every claim the figure draws."""
+    """The vertices' labels, clear of every claim the figure draws, over what the tools
+    shade (they come after the labels: D's label stood under the red, pink)."""
     labels = list(seen.labels)
     pairs = [(labels.index(u), labels.index(v)) for u, v in claims]
     return tag(VGroup(*(m for _, m in measured_markers(_polygon(seen), (), frame, theme,
-                                                        pairs))), "idle", "figure:vertices")
+                                                        pairs))), "idle", "figure:vertices"
+               ).set_z_index(OVER)
 
 
 def _at(seen: Moment, label: str):
@@ -118,8 +122,9 @@ def _casing(line: VMobject, theme: Theme, width: float) -> VMobject:
 
 
 def _pick(frame: Frame, seen: Moment, theme: Theme, role: str) -> Mobject:
+    """The pick's dot, over its vertex's (and what the tools shade)."""
     return tag(Dot(frame.to_scene(_at(seen, seen.pick)), radius=0.11,
-                   color=theme.role_colour(role)), role, "figure:pick")
+                   color=theme.role_colour(role)), role, "figure:pick").set_z_index(OVER + 1)
 
 
 # --- the rules that fail ---------------------------------------------------------------------

@@ -189,3 +189,16 @@ def test_a_crossed_edge_of_a_claims_card_turns_red_when_its_words_name_it():
     moved = [(claims, [e for _, es in plan for e in es] if k == 0 else [])
              for k, (claims, _) in enumerate(plan)]
     assert early_edges(card, moved) == ["line 0: E–A"]
+
+
+@pytest.mark.parametrize("card", _verdict_cards(), ids=lambda c: c.title)
+def test_the_labels_stand_over_what_the_rules_shade(card):
+    """The tools' shading grows in after the labels: at their layer, the red outside P
+    covered D's label (pink under it) and the green E's. The labels and the pick's dot are
+    drawn over every part of the figure."""
+    drawn = figure_mobjects(card.figure, "lecture")
+    labels = next(m for m in drawn if m.name == "figure:vertices")
+    shading = [m for m in drawn if m.name not in ("figure:vertices", "figure:pick")]
+    assert all(labels.z_index > m.z_index for m in shading), [
+        (m.name, m.z_index) for m in shading if m.z_index >= labels.z_index]
+    assert all(m.z_index > labels.z_index for m in drawn if m.name == "figure:pick")
