@@ -75,8 +75,6 @@ BOUND_FROM = ("monotone", "half-disc")
 #: the bounds drawn for comparison, never run: (their key, their name on screen, their shape)
 BOUNDS = (("tarjan-van-wyk", "O(n log log n)", lambda n: n * math.log2(math.log2(n))),
           ("chazelle", "O(n)", float))
-#: the recap's rows of triangulations: from under the card's title to the frame's foot
-THREE_TOP, THREE_BOTTOM = 2.7, -3.75
 #: the recap's triangulations and the time bound each card says
 RECAPPED = (("divide-and-conquer", "O(n²)"), ("ear-clipping", "O(n²)"),
             ("monotone", "O(n log n)"))
@@ -473,33 +471,43 @@ def recap_triangulations(polygon: Polygon) -> list[tuple[str, str, tuple[Triangl
     return [(name, bound, triangulate(polygon, name).triangles) for name, bound in RECAPPED]
 
 
+#: over each of the recap's pictures, the room for its count; round P, for its labels' room
+COUNT_ROOM, PICTURE_MARGIN = 0.5, 0.3
+
+
+def panels(count: int, box: Box) -> list[tuple[tuple[float, float], Box]]:
+    """``count`` pictures side by side across ``box``: per picture, where its heading goes
+    (centred over it) and the box P is fitted into."""
+    (x, y), width, height = box
+    each, top = width / count, y + height / 2
+    fitted = height - COUNT_ROOM - 2 * PICTURE_MARGIN
+    return [((x - width / 2 + each * (k + 0.5), top - COUNT_ROOM / 2),
+             ((x - width / 2 + each * (k + 0.5), top - COUNT_ROOM - PICTURE_MARGIN - fitted / 2),
+              each - 2 * PICTURE_MARGIN, fitted))
+            for k in range(count)]
+
+
 def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
-    """A row per algorithm: its triangulation of P, its name and its bound beside it; the
-    rows take the frame's height under the title, the box's and the room of its caption
-    (there is none: the words are beside), so that the lower half is not left empty (review
-    r567: all of it stood in the top 55 %)."""
-    (x, _), width, _ = box
-    top, bottom = THREE_TOP, THREE_BOTTOM
-    row = (top - bottom) / len(RECAPPED)
+    """Side by side across ``box`` (a wide card's: its words, one per algorithm, go under
+    the pictures): each algorithm's triangulation of P, big enough to count its triangles,
+    and their count over it. The name and the bound are its line's, said once (review:
+    each bound stood under a 110-px thumbnail and again in a bullet beside it)."""
     drawn: list[Mobject] = []
-    for k, (name, bound, triangles) in enumerate(recap_triangulations(polygon)):
-        at_y = top - row * (k + 0.5)
-        frame = Frame(polygon.points, (x - width / 2 + 1.4, at_y), 2.8, row - 0.2)
+    for (name, _, triangles), (heading, fitted) in zip(recap_triangulations(polygon),
+                                                       panels(len(RECAPPED), box), strict=True):
+        frame = Frame(polygon.points, *fitted)
         drawn.append(tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"))
         drawn += triangulation_figure(polygon, triangles, frame, f"figure:triangle:{name}",
                                       theme)
         count = f"{len(triangles)} triangle{'s' * (len(triangles) > 1)}"
-        for j, (words, colour, size) in enumerate((
-                (spoken(name, start=True), theme.ink, theme.label_size + 2),
-                (f"{bound}, {count}", theme.idle, theme.label_size))):
-            text = typeset.text(words, font=theme.font, size=size, colour=colour)
-            text.move_to((x - width / 2 + 3.1, at_y + 0.22 - 0.44 * j, 0), aligned_edge=LEFT)
-            drawn.append(tag(text, None, "figure:legend"))
+        text = typeset.text(count, font=theme.font, size=theme.label_size + 2,
+                            colour=theme.result)
+        drawn.append(tag(text.move_to((*heading, 0)), "result", "figure:count"))
     return drawn
 
 
 __all__ = ["BOUNDS", "BOUND_FROM", "KINDS", "MEASURED_RUNS", "MEASURED_SHAPES", "MEASURED_SIZES",
            "RECAPPED", "CircleFigure", "Circumcircle", "Partition", "circle_figure",
            "circumcircle", "clear_of_rim", "clearly_inside", "figure_mobjects", "level_line",
-           "measured_series", "monotone_partition",
+           "measured_series", "monotone_partition", "panels",
            "ranked_circles", "recap_triangulations", "shown_circle"]

@@ -40,6 +40,28 @@ def said_only(part: Mobject, word: str) -> Mobject:
     return comes_with(part, word)
 
 
+def with_line(part: Mobject, line: int) -> Mobject:
+    """``part``, to come in with the card's line number ``line`` (0: the first), whatever it
+    says (a figure that draws one rule per line). Returns it."""
+    vars(part)["trex_line"] = line
+    return part
+
+
+def replacing(part: Mobject, group: str, *takes_off: str) -> Mobject:
+    """``part``, one of ``group``; as it comes in, the parts on screen of ``takes_off``
+    (default: its own group) go (the recap's rules, one picture after another on one
+    polygon). Returns it."""
+    vars(part)["trex_group"] = group
+    vars(part)["trex_takes_off"] = takes_off or (group,)
+    return part
+
+
+def going(shown: Sequence[Mobject], coming: Sequence[Mobject]) -> list[Mobject]:
+    """The parts of ``shown`` that the parts ``coming`` take off (:func:`replacing`)."""
+    off = {g for part in coming for g in vars(part).get("trex_takes_off", ())}
+    return [part for part in shown if vars(part).get("trex_group") in off]
+
+
 def grows(part: Mobject, drawn_at: Callable[[float], Mobject]) -> Mobject:
     """``part`` (``drawn_at(1.0)``), to come in drawn as ``drawn_at(t)`` while t runs from 0
     to 1. Returns it."""
@@ -53,6 +75,12 @@ def steps(parts: Sequence[Mobject], lines: Sequence[str]) -> list[list[Mobject]]
     :func:`said_only`)."""
     shown: list[list[Mobject]] = [[] for _ in range(len(lines) + 1)]
     for part in parts:
+        line = vars(part).get("trex_line")
+        if line is not None:
+            if not 0 <= line < len(lines):
+                raise ValueError(f"a part comes with line {line}: the card has {len(lines)}")
+            shown[line + 1].append(part)
+            continue
         word = vars(part).get("trex_with")
         said = (k + 1 for k, line in enumerate(lines) if _naming(line, str(word)))
         at = 0 if word is None else next(said, None)
@@ -98,5 +126,5 @@ def done_by(share: float) -> Callable[[float], float]:
     return lambda t: smooth(min(1.0, t / share))
 
 
-__all__ = ["GROW", "comes_with", "coming", "done_by", "goes_with", "grows", "leaving",
-           "said_only", "steps"]
+__all__ = ["GROW", "comes_with", "coming", "done_by", "goes_with", "going", "grows", "leaving",
+           "replacing", "said_only", "steps", "with_line"]

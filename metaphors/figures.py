@@ -41,7 +41,7 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
-from metaphors import figure_faster, figure_overview, method_figures
+from metaphors import figure_faster, figure_overview, figure_recap, method_figures
 from metaphors.drawing import (
     Frame,
     crossed_edge,
@@ -64,7 +64,17 @@ from story.runs import run_logged
 FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT = (-3.5, -0.1), 6.2, 4.6
 BOX = (FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
 KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims", "metaphor",
-         *method_figures.KINDS, *figure_faster.KINDS, *figure_overview.KINDS)
+         *method_figures.KINDS, *figure_faster.KINDS, *figure_overview.KINDS,
+         *figure_recap.KINDS)
+#: the figures drawn across the whole width, a row of pictures, each with its line under it
+#: (:class:`metaphors.lecture.Card`'s ``layout``): the recap's algorithms
+WIDE_KINDS = ("three-triangulations",)
+#: where a wide figure is drawn when no box is handed: under the title, the words below
+WIDE_BOX = ((0.0, 0.55), 14.0, 4.5)
+#: the recap's rules, one picture after another on one polygon: the left half, as large as
+#: the labels leave room for under the title and over the frame's foot (its failing claim
+#: leaves P by 4 % of the frame's height: :data:`BOX` is smaller)
+RECAP_BOX = ((-3.45, -0.4), 6.4, 5.5)
 #: the growth plot: each algorithm's ear tests, counted in its log, on random polygons
 GROWTH_SIZES = (10, 20, 30, 40, 50, 60)
 GROWTH_SEEDS = (1, 2, 3)
@@ -90,8 +100,16 @@ class Figure:
             raise ValueError(f"a figure is one of {', '.join(KINDS)}, not {self.kind!r}")
 
 
-def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> list[Mobject]:
-    """The figure's mobjects, back to front, on ``figure.polygon`` or else ``polygon_spec``."""
+def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME,
+                    box: figure_recap.Box | None = None) -> list[Mobject]:
+    """The figure's mobjects, back to front, on ``figure.polygon`` or else ``polygon_spec``;
+    a wide one (:data:`WIDE_KINDS`) in ``box`` (default :data:`WIDE_BOX`)."""
+    if figure.kind in figure_recap.KINDS:  # the recap's rows of rules
+        return figure_recap.figure_mobjects(figure.kind, figure.polygon or polygon_spec,
+                                            figure.heuristics, theme, box or RECAP_BOX)
+    if figure.kind == "three-triangulations":
+        return figure_faster.figure_mobjects(figure.kind, figure.polygon or polygon_spec, theme,
+                                             box or WIDE_BOX)
     if figure.kind == "growth":
         return _growth(theme)
     if figure.kind in method_figures.KINDS:  # gravity, prune and search, keyhole, a rule
@@ -514,5 +532,5 @@ def overview_examples(polygon_spec: str) -> tuple[str, ...]:
 
 
 __all__ = ["FIGURE_CENTER", "FIGURE_HEIGHT", "FIGURE_WIDTH", "GROWTH_RUNS", "GROWTH_SIZES",
-           "KINDS", "Figure", "ear_tests", "figure_mobjects", "overview_examples",
-           "ringed_reflex"]
+           "KINDS", "RECAP_BOX", "WIDE_BOX", "WIDE_KINDS", "Figure", "ear_tests", "figure_mobjects",
+           "overview_examples", "ringed_reflex"]

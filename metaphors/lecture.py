@@ -42,8 +42,13 @@ from metaphors import catalog, figure_steps
 from metaphors.analysis import Analysis, play_analysis
 from metaphors.captions import whole_frames
 from metaphors.countdown import countdown
-from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangulation_figure
-from metaphors.figures import Figure, figure_mobjects
+from metaphors.drawing import (
+    Frame,
+    crossed_edge,
+    polygon_mobject,
+    triangulation_figure,
+)
+from metaphors.figures import WIDE_BOX, WIDE_KINDS, Figure, figure_mobjects
 from metaphors.labels import measured_markers
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
@@ -71,6 +76,10 @@ from usercode.heuristic import load_user_heuristic, run_heuristic
 CARD_WIDTH = 13.2
 #: a card with a figure: its title's height, and its words in the right half
 FIGURED_TITLE_Y, FIGURED_WORDS_X, FIGURED_WIDTH = 3.2, 3.35, 6.4
+#: a card with a wide figure (a row of pictures): the row's top, under the title, the words'
+#: foot, over the frame's bottom, the room between the row and its words, and the room
+#: between two columns of words
+WIDE_TOP, WIDE_FOOT, WIDE_GAP, WIDE_BUFF = 2.85, -3.8, 0.2, 0.15
 #: the comparison's pictures: their centre's height and their height, under the name (3.2)
 #: and the count (the labels of P's top vertices keep clear of it), over the note (-3.55)
 COMPARE_Y, COMPARE_HEIGHT, COMPARE_COUNT_Y = -0.45, 4.6, 2.65
@@ -115,6 +124,16 @@ class Card:
     #: of the last line's: each claim drawn when its words say it, one at a time (review
     #: r567: two green claims drawn from the start read as one path); None: none
     line_figures: tuple[Figure | None, ...] = ()
+    #: where the words go with a figure: ``"right"`` of it; under a wide figure (a row of
+    #: pictures, :data:`metaphors.figures.WIDE_KINDS`) in ``"columns"``, each line under
+    #: its own picture (one statement per picture)
+    layout: str = "right"
+
+    def __post_init__(self) -> None:
+        wide = self.figure is not None and self.figure.kind in WIDE_KINDS
+        if self.layout not in ("right", "columns") or wide != (self.layout == "columns"):
+            raise ValueError(f"card {self.title!r}: layout {self.layout!r} for a "
+                             f"{'wide' if wide else 'narrow'} figure")
 
 
 @dataclass(frozen=True)
@@ -281,23 +300,30 @@ class LectureScene(TraceScene):
         title = tag(typeset.glyphs(card.title, font=self.theme.font, size=self.theme.title_size,
                                    colour=self.theme.ink, width=CARD_WIDTH), None, "card:title")
         width = CARD_WIDTH if card.figure is None else FIGURED_WIDTH
+        if card.layout == "columns":  # each line as wide as its picture
+            width = WIDE_BOX[1] / max(1, len(card.lines)) - 2 * WIDE_BUFF
         lines = [tag(self.card_line(line, width), None, "card:line") for line in card.lines]
+        box = None
         if card.figure is None:
             group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
             group.move_to((0, 0.3, 0))
-        else:  # the title on top, the figure on the left, the words on the right
+        elif card.layout == "right":  # the title on top, the figure on the left, the words right
             title.move_to((0, FIGURED_TITLE_Y, 0))
             column = VGroup(*lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
             column.move_to((FIGURED_WORDS_X, -0.3, 0))
+        else:  # the title on top, the row of pictures under it, a line under each
+            title.move_to((0, FIGURED_TITLE_Y, 0))
+            box = self._columns(lines)
         title.set_x(0)
         # the figure's parts, each with the words that say it (the title: the rest)
         parts = figure_steps.steps(figure_mobjects(card.figure, self.lecture_polygon(),
-                                                   self.theme) if card.figure else [],
+                                                   self.theme, box) if card.figure else [],
                                    card.lines)
         cue = captions.show(card.title, 0.8)  # the caption before is read in its own step
         self.mark_card_line(None, card)
         self.play(Write(title), *[FadeIn(m) for m in parts[0]], run_time=0.8, **cue)
         shown: list[VMobject] = []  # the last figure's claims and crossed edges
+        on: list = list(parts[0])  # the figure's parts on screen
         # the parts that give way to the next as a line comes (figure_steps.goes_with)
         leaving = figure_steps.leaving(parts, card.lines)
         for line, words, (claims, edges), said, gone in zip(
@@ -306,8 +332,12 @@ class LectureScene(TraceScene):
             grown = max((seconds for _, seconds in drawn), default=0.0)
             cue = captions.show(words, max(0.5, grown))
             self.mark_card_line(words, card)
-            going = [*([FadeOut(m) for m in shown] if claims else []),
-                     *(FadeOut(m) for m in gone)]
+            # a rule's picture goes as the next one's comes (the recap's, on one polygon), and
+            # a part goes with the line that names its goes_with word (the overview's)
+            off = [*figure_steps.going(on, said), *gone]
+            off = [m for k, m in enumerate(off) if all(m is not o for o in off[:k])]
+            on = [*(m for m in on if all(m is not o for o in off)), *said]
+            going = [*(FadeOut(m) for m in off), *([FadeOut(m) for m in shown] if claims else [])]
             coming = [*claims, *edges]
             usual = 0.5 if not coming else 1.0
             run_time = max(usual, grown)
@@ -316,6 +346,18 @@ class LectureScene(TraceScene):
                       *[anim for anim, _ in drawn], run_time=run_time, **cue)
             shown = [*(claims or shown), *edges]
         captions.hold()
+
+    @staticmethod
+    def _columns(lines: Sequence[VMobject]) -> tuple[tuple[float, float], float, float]:
+        """Place a wide card's ``lines`` each under its own picture, their tops level, the
+        tallest one's foot at :data:`WIDE_FOOT`. Returns the row of pictures' box."""
+        (x, _), width, _ = WIDE_BOX
+        each = width / max(1, len(lines))
+        top = WIDE_FOOT + max((line.height for line in lines), default=0.0)
+        for k, line in enumerate(lines):
+            line.move_to((x - width / 2 + each * (k + 0.5), 0, 0)).align_to((0, top, 0), UP)
+        height = WIDE_TOP - top - WIDE_GAP
+        return ((x, WIDE_TOP - height / 2), width, height)
 
     def _line_claims(self, card: Card) -> list[tuple[list[VMobject], list[VMobject]]]:
         """Per line: the claims its figure brings (in place of the last figure's), and the

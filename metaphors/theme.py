@@ -13,8 +13,9 @@ called        blue        the object a call runs on (a vertex being looked at)
 argument      amber       a call's other inputs while it runs; a diagonal being drawn;
                           a claim not yet judged (then green or red)
 result        green       what a call gives; a correct claim; a triangulation's count
-rejected      red         fails: a wrong claim, its part outside P, the crossed edge,
-                          a vertex inside a triangle that is not an ear — never a kind
+rejected      red         fails: a wrong claim, its part outside P, the crossed edge
+                          (dashed in the recap, beside its solid claim), a vertex inside
+                          a triangle that is not an ear — never a kind
 idle          grey        everything not in the current call: the code's rows; a vertex
                           outside the piece divide and conquer works on (said in
                           chapter 1); elsewhere a vertex out of the call is in its ink

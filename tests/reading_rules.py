@@ -296,8 +296,9 @@ def _near(p: tuple[float, float], corners: list[tuple[float, float]], within: fl
 
 
 def hidden_failures(data: dict) -> list[str]:
-    """Issue 22 items 3 and 6: the red (rejected) claims, and exercises' rejected diagonals,
-    whose part outside their polygon is under
+    """Issue 22 items 3 and 6: the red (rejected) claims (a run's, an analysis's, a card's
+    figure's: the recap's BD was not measured), and exercises' rejected diagonals, whose part
+    outside their polygon is under
     :data:`LEAST_OUTSIDE` on screen, as ``"claim (x, y)–(x, y): 0.14 outside"``, or which
     pass nearer than :data:`LEAST_CLEARANCE` to a vertex not their own. A claim is
     matched to the drawn polygon that has both its ends as corners; one with no such polygon
@@ -313,10 +314,14 @@ def hidden_failures(data: dict) -> list[str]:
     found = {}
     for node in nodes:
         # a card's figure's too: the overview's "DI leaves P" is seen to leave it
-        if node.get("name") not in (*_CLAIMS, "figure:claim") \
-                or (node.get("stroke") or "").upper() != _REJECTED:
+        if node.get("name") not in (*_CLAIMS, "figure:claim"):
             continue
-        a, b = (tuple(node["points"][k][:2]) for k in (0, -1))
+        # a card's claim is a line on a dark casing: the line is its last part
+        line = node if node.get("points") else next(
+            (c for c in reversed(node.get("submobjects", ())) if c.get("points")), {})
+        if (line.get("stroke") or "").upper() != _REJECTED:
+            continue
+        a, b = (tuple(line["points"][k][:2]) for k in (0, -1))
         # the polygon itself, not an exercise's triangle T drawn on it
         home = sorted((c for c in polygons if _near(a, c) and _near(b, c)), key=len,
                       reverse=True)
@@ -4154,6 +4159,61 @@ def unlit_rows(data: dict) -> list[str]:
     return found
 
 
+# --- recap5: the recap's rules each with the picture of why; claims told from edges --------
+
+#: the cards that give the rules' verdicts ("Recap: the rules that fail", "… that hold")
+_VERDICT_CARD = re.compile(r"\brules that (fail|hold)\b")
+#: the rules a verdict card may name, as the screen names them: the wrong ones (their name
+#: alone, not after "Correct") and the holding ones
+_WRONG_NAMES = re.compile(r"(?<!Correct )\b(Scaling|Rotation|Translation)\b")
+_RIGHT_NAMES = re.compile(r"\b(Correct (?:Scaling|Rotation|Translation)|Gravity)\b")
+
+
+def _card_title(play: dict) -> str | None:
+    """The title of the card a play brings in, if it does."""
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if node.get("name") == "card:title" and anim["type"] in INCOMING:
+            return _text_of(node) or play.get("subcaption") or ""
+    return None
+
+
+def rules_without_their_picture(data: dict) -> list[str]:
+    """Issue 22 item 8: on a card giving the rules' verdicts (:data:`_VERDICT_CARD`), each rule
+    its words name without the picture of why coming as they name it, as ``"Recap: the rules
+    that fail: Scaling"``: a wrong rule with a region filled red (its motion outside P), a
+    holding one with a region filled green (what its motion swept, inside P) or in the
+    band's colour (gravity's band). The recap's one picture of BD crossing E–A stood for all
+    three wrong rules, their motion never drawn, and the holding rules' none."""
+    red, kept = {_colour("rejected")}, {_colour("result"), _colour("band")}
+    found: list[str] = []
+    card: str | None = None
+    named: dict[str, bool] = {}
+
+    def close() -> None:
+        if card is not None:
+            found.extend(f"{card}: {rule}" for rule, seen in named.items() if not seen)
+
+    for play in data["plays"]:
+        title = _card_title(play)
+        if title is not None:
+            close()
+            card, named = (title if _VERDICT_CARD.search(title) else None), {}
+        said = play.get("subcaption") or ""
+        if card is None or not said or title is not None:
+            continue
+        fills = [n for anim in play["animations"] if anim["type"] not in OUTGOING
+                 for n in _shaded(anim, red | kept)]
+        has_red = any(_filled_in(n, red) for n in fills)
+        has_kept = any(_filled_in(n, kept) for n in fills)
+        for rule in _WRONG_NAMES.findall(said):
+            named[rule] = named.get(rule, False) or has_red
+        for rule in _RIGHT_NAMES.findall(said):
+            named[rule] = named.get(rule, False) or has_kept
+    close()
+    return found
+
+
 # --- ov5: a finished triangulation's triangles counted one by one -----------------------------------
 
 #: the names of a finished triangulation's triangles: a run's end, a card's figure, the
@@ -4446,3 +4506,97 @@ def names_said_otherwise(data: dict) -> list[str]:
             if other in said.lower() and name not in said.lower():
                 found[f"{said!r} for {name}"] = None
     return sorted(found)
+
+
+#: the claims a reading rule measures against the edges: a run's, an analysis's, an
+#: exercise's answer's and a card's figure's
+_ALL_CLAIMS = (*_CLAIMS, "figure:claim")
+#: a claim that runs within this many degrees of an edge of P at the vertex they share, its
+#: far end nearer than :data:`LEAST_OUTSIDE` (4 % of the frame's height) to the edge's line,
+#: reads as a part of the edge (gravity's EC ran 7° off B–C, its E 2.9 % of the frame's
+#: height from it; the corrections' BE 4° off it)
+LEAST_CLAIM_ANGLE = 15.0
+
+
+def _segment_of(node: dict) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """A drawn line's ends: its own points', or its last part's with points (a claim on a
+    casing is the casing, then the line)."""
+    if node.get("points"):
+        return tuple(node["points"][0][:2]), tuple(node["points"][-1][:2])
+    for child in reversed(node.get("submobjects", ())):
+        found = _segment_of(child)
+        if found is not None:
+            return found
+    return None
+
+
+def claims_along_edges(data: dict, least: float = LEAST_CLAIM_ANGLE) -> list[str]:
+    """Issue 22 item 3: the claims drawn within ``least`` degrees of an edge of their polygon
+    at a vertex they share, their other end nearer than :data:`LEAST_OUTSIDE` to the edge's
+    line, as ``"figure:claim (x, y)–(x, y): 7.3° off an edge, 0.23 from it"``: such a claim
+    reads as a part of the edge. A claim is matched to the drawn polygon that has both its
+    ends as corners."""
+    nodes = list(graph_nodes(data))
+    polygons = [_corners(n) for n in nodes if n.get("points") and n.get("name") in _PICTURES]
+    found = {}
+    for node in nodes:
+        if node.get("name") not in _ALL_CLAIMS:
+            continue
+        ends = _segment_of(node)
+        if ends is None:
+            continue
+        home = [c for c in polygons if _near(ends[0], c) and _near(ends[1], c)]
+        if not home:
+            continue
+        corners = home[0]
+        for here, there in (ends, ends[::-1]):
+            k = next(i for i, q in enumerate(corners) if _near(here, [q]))
+            for q in (corners[k - 1], corners[(k + 1) % len(corners)]):
+                if _near(q, [there]):
+                    continue  # the claim is this edge: no diagonal
+                a = math.atan2(there[1] - here[1], there[0] - here[0])
+                b = math.atan2(q[1] - here[1], q[0] - here[0])
+                off = abs(math.degrees((a - b + math.pi) % (2 * math.pi) - math.pi))
+                gap = math.dist(here, there) * math.sin(math.radians(off))
+                if off < least and gap < LEAST_OUTSIDE:
+                    where = f"{node['name']} ({ends[0][0]:g}, {ends[0][1]:g})–" \
+                            f"({ends[1][0]:g}, {ends[1][1]:g})"
+                    found[where] = f"{off:.1f}° off an edge, {gap:.2f} from it"
+    return [f"{where}: {what}" for where, what in sorted(found.items())]
+
+
+def _solid_strokes(node: dict) -> set[str]:
+    """The stroke colours a node draws in solid lines (a dashed line is drawn in pieces: a
+    ``DashedLine``, or a group of dashes; a dark casing under a line is none)."""
+    if node.get("type") == "DashedLine":
+        return set()
+    own = (node.get("stroke") or "").upper()
+    found = {own} if node.get("points") and own and (node.get("stroke_opacity") or 1) > 0 \
+        and own != _colour("background") else set()
+    for child in node.get("submobjects", ()):
+        found |= _solid_strokes(child)
+    return found
+
+
+def claims_like_their_edges(data: dict) -> list[str]:
+    """Issue 22 item 4: a card's figure drawing a crossed edge (``figure:edge:…``) in the same
+    solid colour as a claim it shows, as ``"play 4: figure:edge:E–A like its claim"``: BD and
+    E–A, both solid red, read as one red cross, the claim not told from the edge it crosses."""
+    found = []
+    claims: list[set[str]] = []
+    for k, play in enumerate(data["plays"]):
+        if _card_title(play) is not None:
+            claims = []
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in OUTGOING or anim["type"] not in INCOMING | {"UpdateFromAlphaFunc"}:
+                continue
+            if node.get("name") == "figure:claim":
+                claims.append(_solid_strokes(node))
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name = node.get("name") or ""
+            if name.startswith("figure:edge:") and anim["type"] not in OUTGOING \
+                    and any(_solid_strokes(node) & c for c in claims):
+                found.append(f"play {k}: {name} like its claim")
+    return found

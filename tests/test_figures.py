@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import pytest
@@ -713,7 +714,7 @@ def test_the_delaunay_figure_s_vertices_stand_clear_inside_or_outside_its_circle
         "M 0.05 inside"]
 
 
-def test_the_recap_draws_each_algorithm_s_own_triangulation_with_the_bound_its_card_says():
+def test_the_recap_draws_each_algorithm_s_own_triangulation_under_the_bound_its_line_says():
     from pathlib import Path
 
     from geometry.check import verify_triangulation
@@ -732,10 +733,10 @@ def test_the_recap_draws_each_algorithm_s_own_triangulation_with_the_bound_its_c
     drawn = figure_mobjects(Figure("three-triangulations"), "lecture")
     for name, _, triangles in results:
         assert len(named(drawn, f"figure:triangle:{name}")) == len(triangles)
-    legend = [m.original_text for m in named(drawn, "figure:legend")]
-    assert [spoken(name, start=True) for name, _ in RECAPPED] == legend[::2]
-    assert legend[1::2] == [f"{bound}, {p.n - 2} triangles" for _, bound in RECAPPED]
-    # each bound is the one the card's words give
+    # over each picture its count, nothing more: the name and the bound are its line's
+    counts = [m.original_text for m in named(drawn, "figure:count")]
+    assert counts == [f"{p.n - 2} triangles"] * len(RECAPPED)
+    # each bound is the one the line under its picture gives, once
     chapter = next(c for c in lecture_chapters() if c.slug == "recap")
     cls = load_scene_class(Path(__file__).resolve().parents[1] / chapter.scene_file,
                            chapter.scene_class)
@@ -748,8 +749,23 @@ def test_the_recap_draws_each_algorithm_s_own_triangulation_with_the_bound_its_c
         assert line.startswith(spoken(name, start=True)), line
 
 
-@pytest.mark.parametrize("kind", ["monotone-pieces", "measured", "delaunay-circle",
-                                  "three-triangulations"])
+@pytest.mark.parametrize("polygon", ["lecture", "counterexample", "triangle"])
+def test_the_recap_s_row_of_triangulations_stays_under_the_title(polygon):
+    """The three pictures side by side across the frame, each with its count over it, under
+    the card's title and over the words' row, none of them overlapping."""
+    from metaphors.figures import WIDE_BOX
+
+    drawn = figure_mobjects(Figure("three-triangulations"), polygon)
+    (x, y), width, height = WIDE_BOX
+    for m in drawn:
+        (left, bottom, _), (right, top, _) = m.get_corner([-1, -1, 0]), m.get_corner([1, 1, 0])
+        assert left >= x - width / 2 - 1e-6 and right <= x + width / 2 + 1e-6, m.name
+        assert bottom >= y - height / 2 - 1e-6 and top <= min(2.9, y + height / 2 + 1e-6), m.name
+    pictures = sorted(named(drawn, "figure:polygon"), key=lambda m: m.get_x())
+    assert all(a.get_right()[0] < b.get_left()[0] for a, b in itertools.pairwise(pictures))
+
+
+@pytest.mark.parametrize("kind", ["monotone-pieces", "measured", "delaunay-circle"])
 @pytest.mark.parametrize("polygon", ["lecture", "counterexample", "triangle"])
 def test_a_faster_figure_stays_in_its_half_and_its_words_do_not_overlap(kind, polygon):
     """Left of the card's words, below its title, above the frame's bottom; no two of its

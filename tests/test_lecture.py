@@ -36,8 +36,10 @@ from tests.reading_rules import (
     bare_ticks,
     broken_counts,
     broken_summaries,
+    claims_along_edges,
     claims_given_away,
     counts_on_two_lines,
+    claims_like_their_edges,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -91,6 +93,7 @@ from tests.reading_rules import (
     replayed_beats,
     replayed_splits,
     restyled_triangulations,
+    rules_without_their_picture,
     run_together_labels,
     rushed_questions,
     shifting_colours,
@@ -786,7 +789,15 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert counts_on_two_lines(data) == [], chapter.slug
     # an algorithm by one name ("ear status kept" in chapter 4, "faster ear clipping" after)
     assert names_said_otherwise(data) == [], chapter.slug
-
+    # issue 22 item 8: a card giving the rules' verdicts shows each rule with the picture of
+    # why (the recap's one picture of BD crossing E–A stood for all three wrong rules)
+    assert rules_without_their_picture(data) == [], chapter.slug
+    # issue 22 item 3: no claim reads as a part of an edge (gravity's EC ran 7° off B–C,
+    # its E 2.9 % of the frame's height from it)
+    assert claims_along_edges(data) == [], chapter.slug
+    # issue 22 item 4: a card's claim told from the edge it crosses (BD and E–A, both solid
+    # red, read as one red cross)
+    assert claims_like_their_edges(data) == [], chapter.slug
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
     """Issue 22 item 7: Forišek–Steinová's experience is for the teacher: no chapter plays

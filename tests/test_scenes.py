@@ -51,6 +51,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     calls_over_code,
+    claims_along_edges,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -363,6 +364,14 @@ def test_a_correct_claims_tick_stands_inside_p(case):
     edge seems to judge that edge (Divide and Conquer's stood in the notch between P's two
     lobes, 0.80 outside P)."""
     assert ticks_outside(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_claim_reads_as_a_part_of_an_edge(case):
+    """Issue 22 item 3: no claim runs within 15° of an edge at a vertex they share with its
+    far end within 4 % of the frame's height of it (on the old counterexample the
+    corrections' BE ran 4° off B–C, E 2.7 % from it, and read as a part of that edge)."""
+    assert claims_along_edges(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
