@@ -34,11 +34,11 @@ def triangulation_lines(polygon: str) -> tuple[str, ...]:
     n = read_polygon(polygon).n
     inner = overview_examples(polygon)[0]
     why = ((f"Why n − 2? An inner diagonal, as {inner}, cuts P in two: "
-            "n₁ + n₂ = n + 2 vertices, its ends in both.",
+            "n₁ + n₂ = n + 2 vertices.",
             "By induction: (n₁ − 2) + (n₂ − 2) = n − 2 triangles, cut by n − 3 diagonals.")
            if inner else ())
-    return ("A triangulation of P: triangles with corners at P's vertices, not overlapping, "
-            "that make up P.", *why,
+    return ("A triangulation of P: triangles on P's vertices that do not overlap and make "
+            "up P.", *why,
             f"Here n = {n}: {n - 2} triangle{'s' * (n > 3)} and {n - 3} diagonal"
             f"{'s' * (n != 4)}.")
 
