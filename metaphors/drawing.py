@@ -8,7 +8,7 @@ from dataclasses import replace
 from typing import Any, TypeVar
 
 import numpy as np
-from manim import DOWN, Dot, Line, Polygram, VGroup
+from manim import DOWN, DashedLine, Dot, Line, Polygram, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
@@ -273,3 +273,22 @@ def crossed_edge(start: Any, end: Any, name: str, theme: Theme = THEME) -> Line:
     of what fails (runs, analyses, exercises and figures draw it alike)."""
     return tag(Line(start, end, color=theme.rejected, stroke_width=theme.stroke * 2.5),
                "rejected", name)
+
+
+#: the dashes of a card's crossed edge: long, so that the edge reads as one thick dashed
+#: line beside the solid claim that crosses it
+EDGE_DASH = 0.2
+#: how much wider than a red line its dark casing is, each side (stroke width units)
+CASING = 2.0
+
+
+def crossed_edge_dashed(start: Any, end: Any, name: str, theme: Theme = THEME) -> VGroup:
+    """The edge a wrong claim crosses on a card's figure, in the red of what fails, thick and
+    dashed on a dark casing: the claim across it is solid (both solid red, the recap's BD and
+    E–A read as one red cross, and the overview's DI and F–G)."""
+    width = theme.stroke * 2.2
+    casing = Line(start, end).set_stroke(color=theme.background, width=width + 2 * CASING,
+                                         opacity=1.0)
+    return tag(VGroup(tag(casing, None, "figure:casing"),
+                      DashedLine(start, end, color=theme.rejected, stroke_width=width,
+                                 dash_length=EDGE_DASH, dashed_ratio=0.55)), "rejected", name)

@@ -28,7 +28,7 @@ from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.triangulate import triangulate
-from metaphors.drawing import Frame, crossed_edge, triangulation_figure
+from metaphors.drawing import Frame, crossed_edge_dashed, triangulation_figure
 from metaphors.figure_caption import GAP, caption_size, figure_caption
 from metaphors.figure_steps import comes_with, goes_with
 from metaphors.labels import placed_vertex_markers
@@ -160,8 +160,9 @@ def _definitions(polygon: Polygon, frame: Frame, found: Examples, box: Box,
         wrong = found.name(found.leaving, polygon)
         u, v = found.edge
         edge = f"{polygon.labels[u]}–{polygon.labels[v]}"
-        crossed = crossed_edge(frame.to_scene(polygon.points[u]),
-                               frame.to_scene(polygon.points[v]), f"figure:edge:{edge}", theme)
+        crossed = crossed_edge_dashed(frame.to_scene(polygon.points[u]),
+                                      frame.to_scene(polygon.points[v]), f"figure:edge:{edge}",
+                                      theme)
         words = _edge_name(polygon, frame, found, edge, theme)  # the edge's name, red by it
         parts += [comes_with(_line(polygon, frame, found.leaving, theme.rejected, "rejected",
                                    "figure:claim", theme), wrong),

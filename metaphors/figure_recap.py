@@ -28,12 +28,12 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 import shapely
-from manim import Arrow, DashedLine, Dot, Line, Mobject, VGroup, VMobject
+from manim import Arrow, Dot, Line, Mobject, VGroup, VMobject
 
 from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from metaphors.analysis import Moment, moment, tool_colour, tool_drawing
-from metaphors.drawing import Frame, polygon_mobject
+from metaphors.drawing import CASING, Frame, crossed_edge_dashed, polygon_mobject
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_metaphors import Sheet
 from metaphors.figure_steps import grows, replacing, with_line
@@ -45,16 +45,11 @@ from story.analysis import Band, inside, split
 
 Box = tuple[tuple[float, float], float, float]  # centre, width, height on screen
 KINDS = ("failing-motions", "holding-motions")
-#: how much wider than a red line its dark casing is, each side (stroke width units)
-CASING = 2.0
 #: the groups a part belongs to (:func:`metaphors.figure_steps.replacing`): a rule's why,
 #: taken off by the next rule's; the claim; the wrong rules' pick, theirs all
 WHY, CLAIM, PICK = "why", "claim", "pick"
 #: the layer of the vertices' labels, over the tools' shading and the claims
 OVER = 3
-#: the dashes of a crossed edge: long, so that the edge reads as one thick dashed line
-#: beside the solid claim that crosses it
-EDGE_DASH = 0.2
 
 
 def figure_mobjects(kind: str, polygon_spec: str, heuristics: Sequence[str], theme: Theme,
@@ -206,15 +201,6 @@ def _crossing(seen: Moment, frame: Frame, theme: Theme) -> list[Mobject]:
     return drawn
 
 
-def crossed_edge_dashed(a, b, name: str, theme: Theme) -> Mobject:
-    """The edge a wrong claim crosses, in the red of what fails, thick and dashed on a dark
-    casing: the claim across it is solid (both solid red, BD and E–A read as one red cross)."""
-    width = theme.stroke * 2.2
-    return tag(VGroup(_casing(Line(a, b), theme, width),
-                      DashedLine(a, b, color=theme.rejected, stroke_width=width,
-                                 dash_length=EDGE_DASH, dashed_ratio=0.55)), "rejected", name)
-
-
 def _flashing(a, b, name: str, theme: Theme) -> Callable[[float], Mobject]:
     """The crossed edge as it comes in: it flashes twice (thick, in ink), then stays dashed
     red (:func:`crossed_edge_dashed`)."""
@@ -290,4 +276,4 @@ def _band(seen: Moment, frame: Frame, theme: Theme) -> list[Mobject]:
     return [swept, fall, slide, taut, _claim(frame, seen, theme, theme.result, "result"), ball]
 
 
-__all__ = ["KINDS", "crossed_edge_dashed", "figure_mobjects"]
+__all__ = ["KINDS", "figure_mobjects"]

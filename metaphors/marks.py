@@ -46,6 +46,11 @@ SCALES = (1.0, 0.85, LEAST_SCALE)
 #: the farthest a mark stands from its claim where a place that near is found (3.75 % of
 #: the frame's height: the reading rule asks for 5 %): farther, it seems to judge nothing
 MARK_REACH = 0.3
+#: the least gap a mark keeps beside its claim where labels and diagonals crowd it: nearer
+#: anything else than its claim, it reads as theirs; farther off, as judging nothing
+CROWDED_GAP = LEAST_GAP
+#: the farthest a mark stands from its claim, beside it: farther, it judges nothing
+MARK_FARTHEST = 0.4
 #: the grid the place inside the polygon nearest the claim is looked for on (scene units)
 STEP = 0.05
 #: how far along its claim a mark may stand (fractions of it, the middle first)
@@ -89,9 +94,12 @@ def scaled_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segme
     centres, held, framed, gap, shaded = _beside(size, a, b, obstacles, inside, frame, avoid)
     # outside P, twice as far: a mark just past an edge seems to judge that edge
     free = framed & (gap >= np.where(held, MARK_GAP, 2 * MARK_GAP))
-    if (free & held).any():
+    # no farther than :data:`MARK_FARTHEST` (the places go on 2.5 off: divide and
+    # conquer's ✓ for MK stood 2.4 off, in another part of P, judging nothing there)
+    close = _near(centres, size, a, b)
+    if (free & held & close).any():
         # the order of :func:`around` is the first-fit order: nearest, middle first, left first
-        best = min(np.flatnonzero(free & held), key=lambda k: (bool(shaded[k]), k))
+        best = min(np.flatnonzero(free & held & close), key=lambda k: (bool(shaded[k]), k))
         return np.array([*centres[best], 0.0]), 1.0
     # by the claim, within :data:`MARK_REACH`, each scale in turn; then on it (its own line
     # no obstacle: the mark over the line it judges): prune and search's ✓ for GB, a short
@@ -104,6 +112,11 @@ def scaled_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segme
                                frame, by=claim_line)
             if spot is not None:
                 return np.array([*spot, 0.0]), scale
+    # where labels and diagonals crowd it, beside it at the least size and
+    # :data:`CROWDED_GAP`, before anywhere else inside
+    crowded = _crowded_spot(size, a, b, obstacles, inside, frame, scales[-1])
+    if crowded is not None:
+        return crowded
     for scale in scales:
         spot = inside_spot((size[0] * scale, size[1] * scale), (a + b) / 2, obstacles, inside,
                            frame)
@@ -112,6 +125,29 @@ def scaled_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segme
     if free.any():
         return np.array([*centres[int(np.flatnonzero(free)[0])], 0.0]), 1.0
     return np.array([*centres[int(np.argmax(np.where(framed, gap, -1.0)))], 0.0]), 1.0
+
+
+def _near(centres: np.ndarray, size: tuple[float, float], a: np.ndarray, b: np.ndarray
+          ) -> np.ndarray:
+    """Which places for a thing ``size`` at ``centres`` are within :data:`MARK_FARTHEST` of
+    the claim ``a``–``b``."""
+    rects = rects_at(centres, size)
+    boxes = shapely.box(rects[:, 0], rects[:, 1], rects[:, 2], rects[:, 3])
+    return shapely.distance(boxes, shapely.LineString([a, b])) <= MARK_FARTHEST
+
+
+def _crowded_spot(size: tuple[float, float], a: np.ndarray, b: np.ndarray,
+                  obstacles: Obstacles, inside: shapely.Geometry,
+                  frame: tuple[float, float, float, float], least: float
+                  ) -> tuple[np.ndarray, float] | None:
+    """Beside the claim ``a``–``b`` inside P, within :data:`MARK_FARTHEST` of it, the mark
+    ``least`` its size, keeping :data:`CROWDED_GAP` from everything; None if there is none."""
+    small = (size[0] * least, size[1] * least)
+    centres, held, framed, gap, _ = _beside(small, a, b, obstacles, inside, frame, None)
+    ok = held & framed & (gap >= CROWDED_GAP) & _near(centres, small, a, b)
+    if ok.any():
+        return np.array([*centres[int(np.flatnonzero(ok)[0])], 0.0]), least
+    return None
 
 
 def _beside(size: tuple[float, float], a: np.ndarray, b: np.ndarray, obstacles: Obstacles,

@@ -180,10 +180,11 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     within = (FRAME_AREA[0], SUBTITLE_TOP, FRAME_AREA[2], FRAME_AREA[3])
     free = [ours & clear(centres, size, obstacles, gap, within) for gap in KIND_GAPS]
     for most in KIND_REACH:
-        # beside its dot or label first, at the smaller gap if it must: at the larger gap
-        # first, "regular" went 0.35 off I, into the slot, where 0.13 right of I's label
-        # was free
-        for near in (KIND_BESIDE, np.inf):
+        # beside its dot or label, at the smaller gap if it must: at the larger gap first,
+        # "regular" went 0.35 off I, into the slot, where 0.13 right of I's label was free;
+        # never farther (chapter 5's "end" stood 0.52 off C, by the subtitle, read as
+        # nobody's): with no room, the caption alone names the kind
+        for near in (KIND_BESIDE,):
             for ok in free:
                 ok = ok & (own <= most + 1e-9) & (beside <= near + 1e-9)
                 if ok.any():

@@ -21,6 +21,7 @@ from manim import Polygon as MPolygon
 
 from metaphors.board import Board, Playable
 from metaphors.drawing import (
+    count_words,
     ending_beat,
     neighbour_shades,
     shaded_triangle,
@@ -243,11 +244,15 @@ def _whole(board: Board, finder: Mobject | None) -> list[Playable]:
     # room there: a panel of source takes the whole right half, and under the picture the
     # count would meet the subtitle: the triangles alone then
     if finder is not None or board.panel.mode == PSEUDOCODE:
-        count = tag(text(f"n − 2 = {n} − 2\n= {len(whole)} triangles", font=theme.font,
-                         size=theme.label_size, colour=theme.result), None, "counter")
-        # nearest where the black box stood, as clear as it was
-        spot = None if finder is None else _place(count, _taken(board),
-                                                  near=tuple(finder.get_center()[:2]))
+        # on one line where it finds room (broken, its halves read as two things)
+        for said in (count_words(n, 0, len(whole)), f"n − 2 = {n} − 2\n= {len(whole)} triangles"):
+            count = tag(text(said, font=theme.font, size=theme.label_size,
+                             colour=theme.result), None, "counter")
+            # nearest where the black box stood, as clear as it was
+            spot = None if finder is None else _place(count, _taken(board),
+                                                      near=tuple(finder.get_center()[:2]))
+            if spot is not None:
+                break
         if spot is not None:
             count.move_to((*spot, 0))
         else:  # from where the black box would stand: the picture's right-most labels stay clear

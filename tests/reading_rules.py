@@ -4390,7 +4390,7 @@ def kinds_said(data: dict) -> set[str]:
             if re.match(rf"^\S+: .*\ban? {kind} vertex\b", caption)}
 
 
-_DIAGONAL_CAPTION = re.compile(r"^Diagonal (\S+(?: \S+)*?): ")
+_DIAGONAL_CAPTION = re.compile(r"^Diagonal ((?!\d)\S+(?: \S+)*?): ")
 _HELPER_SET = re.compile(r"^(\S+) becomes \S+'s helper\b")
 
 
