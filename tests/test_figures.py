@@ -668,14 +668,14 @@ def test_the_delaunay_figure_s_labels_keep_clear_of_its_circle_and_triangles(mon
     assert {"K × circle", "G × triangle"} <= set(labels_on_lines(old, old_ring, triangles))
     # and M, whose mark sat on the line, was said to be only just inside
     assert "M (just)" in label(old_figure)
-    # HKM's circle (the best that keeps every vertex clear) ran along M's label, in its
-    # notch; M beside P with its leader leaves it clear, and the card draws it
+    # the circle drawn now is the first whose labels find clear places: on the lecture polygon
+    # in general position (K and I moved), CDG's, whose three labels stand off its rim
     monkeypatch.undo()
-    hkm = figure_mobjects(Figure("delaunay-circle"), "lecture")
-    assert label(hkm).startswith("the circle of HKM")
-    without = placed_vertex_markers(read_polygon("lecture"), circle.frame, THEME, leaders=False)
-    assert "M × circle" in labels_on_lines(without, named(hkm, "figure:circumcircle")[0],
-                                           named(hkm, "figure:triangle"))
+    shown = figure_mobjects(Figure("delaunay-circle"), "lecture")
+    assert label(shown).startswith("the circle of CDG")
+    (rim,) = named(shown, "figure:circumcircle")
+    (marks,) = named(shown, "figure:vertices")
+    assert labels_on_lines(marks, rim, named(shown, "figure:triangle")) == []
 
 
 def dots_near_the_rim(drawn) -> list[str]:
