@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
-from typing import Any, TypeAlias
+from typing import Any, Protocol, TypeAlias
 
 import numpy as np
 import shapely
@@ -72,6 +72,14 @@ def animate(mobject: Mobject, **anim_args: Any) -> _AnimationBuilder:
     builder = mobject.animate
     assert isinstance(builder, _AnimationBuilder)
     return builder(**anim_args)
+
+
+class CloseUp(Protocol):
+    """A close-up on the board (:class:`metaphors.gravity.CloseUp`): what ends it."""
+
+    def zoom_out(self) -> list[Playable]: ...
+
+    def done(self) -> None: ...
 
 
 #: the objects that hold the vertex they are drawn from in its blue (:meth:`Board.held`):
@@ -147,6 +155,12 @@ class Board:
         # where each label stood beside its dot, upright, before the picture turned: it comes
         # back there when the picture turns upright (:func:`metaphors.picture.turn_to`)
         self.home: dict[str, np.ndarray] = {}
+        # a close-up in progress (gravity's, from the fall to the verdict), which the verdict
+        # ends (:func:`metaphors.picture.upright`)
+        self.close_up: CloseUp | None = None
+        # the run's last picture is kept as it is, turned, with its ball and band: an analysis
+        # goes on from it (:class:`metaphors.lecture.LectureScene`)
+        self.kept_end = False
 
     # --- coordinates -----------------------------------------------------------------------------
 

@@ -136,14 +136,23 @@ def _turned(turn: Turn, point: np.ndarray) -> np.ndarray:
 
 
 #: what a turned picture holds for one claim: the verdict takes it away (in this order)
-TRANSIENT = ("ball", "band", "hit", "gravity")
+TRANSIENT = ("ball", "band", "swept", "gravity")
 
 
 def upright(board: Board, beat: Beat) -> None:
-    """After a verdict: the turn's objects go and the picture turns back upright."""
+    """After a verdict: the turn's objects go, a close-up zooms back out (gravity's, which
+    stays close from the fall to the verdict) and the picture turns back upright. Not on a
+    board whose run an analysis goes on from (:attr:`Board.kept_end`): it shades what the
+    band swept on the picture as the run left it."""
+    if board.kept_end:
+        return
     gone = board.drop(*TRANSIENT)
     if gone:
         again(board, beat, *gone, run_time=0.5)
+    close = board.close_up
+    if close is not None:
+        again(board, beat, *close.zoom_out(), run_time=1.2)
+        close.done()
     turn = turn_to(board, 0.0)
     if turn:
         again(board, beat, *turn, run_time=1.5)
