@@ -493,7 +493,7 @@ def holds_on_run(board: Board, last: Beat, right: Moment, analysis: Analysis,
     said = replace(last, caption=right.words(analysis.holds))
     mark_step(board.scene, said.caption, kind="analysis")
     board.play(said, FadeIn(new_title), *([FadeOut(swept)] if swept is not None else []),
-               FadeIn(witness), *backing, run_time=1.5, least=analysis.freeze)
+               FadeIn(witness), *backing, run_time=1.5, least=analysis.freeze, together=True)
     board.keep("witness", witness)
     board.close()
 

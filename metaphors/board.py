@@ -343,7 +343,12 @@ class Board:
         paths = [path for part in self.outline.family_members_with_points()
                  for path in part.get_subpaths() if len(path) >= 12]  # a triangle's, at least
         rings = [list(path[:-1:4]) for path in paths]
-        return sorted(rings, key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
+        # each once: a close-up's drawing, redrawn by ``become`` from one with fewer parts,
+        # holds its outline twice (its fill, and an edge stretched round it), and a ring
+        # that is its own hole leaves no inside for a ✓ (it stood off P, under edge B–C)
+        unique = {tuple(np.round(np.asarray(ring)[:, :2], 6).ravel()): ring for ring in rings}
+        return sorted(unique.values(),
+                      key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
 
     def clear_labels(self, *lines: Mobject, for_now: bool = False,
                      apart: float = MARGIN) -> list[Playable]:

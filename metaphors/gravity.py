@@ -358,9 +358,14 @@ def slide(board: Board, beat: Slide) -> None:
             moving = moving.set_fill(opacity=RESTING)
             # and X's label moves off it (the counterexample's C touched it), back with it
             moves = board.clear_labels(*ball_shapes(to), for_now=True)
-        anims = (moving, _stretching(board, band, pieces, hit, x, (start, end)),
-                 _sweeping(board, swept, pieces, hit, x, (start, end)), *moves)
-        said = beat if k == 0 else _snagging(board, beat, _label_at(board, corners[1]))
+        anims = [moving, _stretching(board, band, pieces, hit, x, (start, end)),
+                 _sweeping(board, swept, pieces, hit, x, (start, end)), *moves]
+        said = beat
+        if k > 0:  # the band wraps a vertex: it snags it, and the vertex pulses as it does
+            y = _label_at(board, corners[1])
+            said = _snagging(board, beat, y)
+            if k == 1 and y in board.markers:
+                anims.append(Indicate(board.markers[y], color=board.theme.argument))
         board.play(said, *anims, run_time=max(SLIDE_SECONDS * (end - start), 0.1))
     # the ball rests at X under X's dot and label: on top it hid the vertex it names
     if beat.result in board.markers:
@@ -459,11 +464,10 @@ def snag(board: Board, beat: Snag) -> None:
     if band is None:
         board.keep("band", bent)
         board.play(beat, FadeIn(bent), run_time=0.8)
-    elif len(corners) == 3 and beat.snagged in board.markers:
-        # the claim to be (amber): green is the verdict's. Its marker pulses, no burst: the
-        # burst's rays crossed H's label (chapter 3 at 31 s)
-        board.play(beat, Transform(band, bent),
-                   Indicate(board.markers[beat.snagged], color=theme.argument), run_time=1.2)
+    elif len(corners) == 3:
+        # the claim to be (amber), pulsed as the band wrapped it (:func:`slide`): no burst,
+        # whose rays crossed H's label (chapter 3 at 31 s)
+        board.play(beat, Transform(band, bent), run_time=1.2)
     else:
         board.play(beat, Transform(band, bent), Indicate(band, color=theme.argument,
                                                          scale_factor=1.0), run_time=1.0)

@@ -433,7 +433,7 @@ class Panel:
         the claim's ends only, never drew the claim (chapter 3's CH)."""
         at = dict(zip(self.polygon.labels, self.frame.many(self.polygon.points), strict=True))
         line = tag(Line(at[u], at[v], color=self.theme.role_colour(role),
-                        stroke_width=self.theme.stroke), role, "panel:claim")
+                        stroke_width=self.theme.stroke), role, "claim:panel")
         self.claimed = line.set_z_index(self.outline.z_index + 0.5)
         return Create(line)
 
@@ -625,18 +625,20 @@ def _tiers(k: int, points: list[tuple[float, float]], away: float, width: float,
     # seen from its dot, across no edge: the counterexample's E stood below edge B–C, cut
     # off from its vertex above it (chapter 3 at 52 s)
     seen = seen_by(centres, np.array(points[k]), fixed.segments)
-    tiers: list[list[tuple[tuple[float, float], Rect]]] = [[], [], []]
+    tiers: list[list[tuple[tuple[float, float], Rect]]] = [[], [], [], [], [], []]
     for (x, y), roomy, tight, sees in zip(centres.tolist(), wide, narrow, seen, strict=True):
         rect = (x - width / 2, y - height / 2, x + width / 2, y + height / 2)
         own, others = _gap(rect, points[k]), [q for j, q in enumerate(points) if j != k]
-        if not tight or not sees or not all(_gap(rect, q) > own for q in others):
+        if not tight or not all(_gap(rect, q) > own for q in others):
             continue
         mine = all(math.dist((x, y), q) >= LABEL_OWN * math.dist((x, y), points[k])
                    for q in others)
         tier = 0 if mine and roomy else 1 if mine else 2 if roomy else None
         if tier is not None:
-            tiers[tier].append(((x, y), rect))
-    return tiers
+            tiers[tier if sees else tier + 3].append(((x, y), rect))
+    # a place across an edge only where its side of the edge has none (the counterexample's
+    # E, 0.1 over B–C in the panel, has no room there: it keeps its label)
+    return [tiers[0], tiers[1], tiers[2] + tiers[3] + tiers[4] + tiers[5]]
 
 
 def _gap(rect: Rect, point: tuple[float, float]) -> float:

@@ -11,7 +11,7 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-from manim import Circle, Mobject, VGroup
+from manim import Circle, FadeIn, Mobject, VGroup
 
 from metaphors.board import Board, Playable
 from metaphors.drawing import Frame
@@ -146,10 +146,13 @@ def upright(board: Board, beat: Beat) -> None:
     band swept on the picture as the run left it."""
     if board.kept_end:
         return
-    gone = board.drop(*TRANSIENT)
+    close, mark = board.close_up, board.objects.get("verdict")
+    # up close, the ✓ goes with the ball and band, and comes back beside the claim once the
+    # picture is upright: zoomed back with the picture, it stood off P
+    again_mark = mark.copy() if close is not None and mark is not None else None
+    gone = board.drop(*TRANSIENT, *(("verdict",) if again_mark is not None else ()))
     if gone:
         again(board, beat, *gone, run_time=0.5)
-    close = board.close_up
     if close is not None:
         again(board, beat, *close.zoom_out(), run_time=1.2)
         close.done()
@@ -159,3 +162,8 @@ def upright(board: Board, beat: Beat) -> None:
     back = board.labels_back()  # the labels moved off the ball's way, once it is upright
     if back:
         again(board, beat, *back, run_time=0.4)
+    line = board.objects.get("claim")
+    if again_mark is not None and line is not None:
+        again_mark.move_to(board_spot(board, again_mark, line))
+        board.keep("verdict", again_mark)
+        again(board, beat, FadeIn(again_mark), run_time=0.5)

@@ -996,10 +996,13 @@ def _marks_on_polygons(data: dict, names: tuple[str, ...], *, settled: bool = Fa
     once: a turned picture's mark, placed again for the picture upright, as it leaves."""
     last: dict[str, tuple[int, str, dict]] = {}  # name: (play, animation type, node)
     seen: set[tuple[str, tuple | None]] = set()
+    close = False  # a close-up is on: its window drawn (gravity's, from the fall to the ✓)
     for k, play in enumerate(data["plays"]):
         marks = []
         for kind, node in (r for a in play["animations"] for r in _recorded(a)):
             name = node.get("name") or ""
+            if name == _CLOSE_UP + ":window":
+                close = kind in INCOMING
             if name in names and (kind in INCOMING or (settled and kind != "Turn")):
                 place = (name, _box_of(node))
                 if kind in INCOMING or place not in seen:
@@ -1009,7 +1012,19 @@ def _marks_on_polygons(data: dict, names: tuple[str, ...], *, settled: bool = Fa
                 last[name] = (k, kind, node)
         for mark in marks:
             home = "analysis:polygon" if mark["name"].startswith("analysis:") else "polygon"
-            yield k, mark, _state_then(data, last, k, home), last
+            yield k, mark, (_close_up_then(data, k) if close else
+                            _state_then(data, last, k, home)), last
+
+
+def _close_up_then(data: dict, k: int) -> dict | None:
+    """P as a close-up shows it at play ``k``: its fill, cut at the board's box, as the zoom
+    back out records it when it starts (a zoom records where it starts), None if never."""
+    for play in data["plays"][k + 1:]:
+        for _, node in (r for a in play["animations"] for r in _recorded(a)):
+            if node.get("name") == _CLOSE_UP:
+                return next((part for part in node.get("submobjects", ())
+                             if part.get("type") == "Polygon"), None)
+    return None
 
 
 def crowded_verdicts(data: dict) -> list[str]:
