@@ -404,6 +404,7 @@ def _snagging(board: Board, beat: Slide, y: str) -> Slide:
     row = next((k for k, r in enumerate(board.panel.pseudocode) if "band_snag" in r.calls),
                beat.row)
     return replace(beat, caption=f"The rubber band snags {y}", row=row,
+                   seq=beat.seq if beat.snag_seq is None else beat.snag_seq,
                    roles={**beat.roles, y: "argument"})
 
 
@@ -502,6 +503,9 @@ class Slide(Beat):
 
     result: str
     slide: BallSlide | None
+    #: the seq of the band's snag after the slide: from the moment the band wraps a vertex
+    #: the slide speaks as the snag does (its row lit, named as the snag names it)
+    snag_seq: int | None = None
 
 
 @beat_kind("snag")
@@ -553,9 +557,11 @@ def _slide(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     later as the snag's input, chapter 3 at 30 s, and white at the claim — three colours,
     none said); V stays blue, the band hanging from it (:meth:`Board.held_roles`)."""
     hit = _hit(walk, call)
+    snag = next((e.seq for e in walk.log.events[ret.seq + 1:]
+                 if e.kind == "call" and e.name == "band_snag"), None)
     return {"slide": BallSlide(to=point(walk.root_points()[walk.result_ref(ret)]),
                                hit=point(hit["at"]))
-            if "vertex" not in hit else None, "roles": {}}
+            if "vertex" not in hit else None, "roles": {}, "snag_seq": snag}
 
 
 def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:

@@ -3865,3 +3865,261 @@ def keys_with_nothing_shown(data: dict) -> list[str]:
                 found.append(f"play {k} {name}")
                 filled.discard(name)
     return found
+
+
+# --- grav7: chapter 3 and the gravity scene as a teacher shows them ----------------------------
+
+#: a card's figure words naming the claim its rule makes ("… claim CH"), and a run's claim
+_CARD_CLAIM = re.compile(r"\bclaim ([A-Z][₀-₉′″]*[A-Z][₀-₉′″]*)\b")
+
+
+def _sections(data: dict) -> Iterator[tuple[int, str, dict]]:
+    """(play, the card's section it is in, the play): a card's title opens a section."""
+    section = ""
+    for k, play in enumerate(data["plays"]):
+        if any(a["type"] in INCOMING and (a.get("mobject") or {}).get("name") == "card:title"
+               for a in play["animations"]):
+            section = play.get("subcaption") or section
+        yield k, section, play
+
+
+def answers_on_cards(data: dict) -> list[str]:
+    """The claims a card's figure gives away before the run of its section makes them, as
+    ``"'V = C, X = G, Y = H: claim CH' before 'Claim: CH is an inner diagonal' (Gravity …)"``:
+    chapter 3's card drew the finished picture — fall, slide, band, CH — and said "claim CH"
+    16 s before the run played the same example to the same answer. A card states the rule;
+    its run gives the answer, once."""
+    found: list[str] = []
+    told: dict[tuple[str, str], str] = {}  # (section, claim): the figure's words saying it
+    for _, section, play in _sections(data):
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                if kind in INCOMING and node.get("name") == "figure:label":
+                    words = " ".join(n["text"] for n in mobject_nodes(node) if n.get("text"))
+                    for claim in _CARD_CLAIM.findall(words):
+                        told.setdefault((section, claim), words)
+        said = _CLAIM_CAPTION.match(play.get("subcaption") or "")
+        if said and (section, said[1]) in told:
+            found.append(f"{told.pop((section, said[1]))!r} before {said[0]!r} ({section})")
+    return found
+
+
+def redrawn_pictures(data: dict) -> list[str]:
+    """The run pictures drawn again in one card's section, as ``"play 41: the picture of
+    play 14 drawn again (Gravity …)"``: a polygon of the same shape (:func:`_shape`: wherever,
+    however large and turned) drawn anew where it was drawn already — chapter 3's analysis
+    redrew the run's end state, ball, band and claim, on a picture of its own before shading
+    it. What follows a run goes on from its picture."""
+    found: list[str] = []
+    drawn: dict[tuple[str, tuple], int] = {}
+    for k, section, play in _sections(data):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and node.get("name") in _RUN_POLYGONS and node.get("points"):
+                key = (section, _shape(node))
+                if key in drawn:
+                    found.append(f"play {k}: the picture of play {drawn[key]} drawn again "
+                                 f"({section})")
+                drawn.setdefault(key, k)
+    return found
+
+
+#: a verdict's words: a run's claim judged
+_VERDICT_WORDS = re.compile(r"^[✓✗] ")
+
+
+def close_ups_left_early(data: dict) -> list[str]:
+    """The close-ups (their window, ``close-up:window``) that zoom back out before the claim
+    of their run is judged, as ``"play 60: zoomed out under 'The ball falls until it hits
+    the boundary'"``: chapter 3's close-up showed only the short fall and zoomed out before
+    the slide, so that the band staying straight and the claim EC beside edge B–C were a
+    faint line 60 × 70 px wide. A close-up stays until the words say ✓ or ✗."""
+    found: list[str] = []
+    caption, judged = "", False
+    for k, play in enumerate(data["plays"]):
+        if play.get("subcaption"):
+            caption = play["subcaption"]
+            judged = judged or bool(_VERDICT_WORDS.match(caption))
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                if node.get("name") != _CLOSE_UP + ":window":
+                    continue
+                if kind in INCOMING:
+                    judged = False
+                elif kind in OUTGOING and not judged:
+                    found.append(f"play {k}: zoomed out under {caption!r}")
+    return found
+
+
+#: gravity's marks and the words that name them: the arrow ("g"), what the band swept, a ring
+#: where the ball hit; a word of the caption up as the mark comes in, or of the one after it
+#: in the same play
+_MARK_WORDS = {"gravity": re.compile(r"\(g\)|\bg\b"),
+               "swept": re.compile(r"\bshaded\b|\bswept\b|\bsweeps\b"),
+               "hit": re.compile(r"\bring\b")}
+
+
+def unnamed_marks(data: dict) -> list[str]:
+    """Gravity's marks that come in under words that do not name them, as ``"play 27 hit
+    under 'The ball falls until it hits the boundary'"``: chapter 3's open amber ring where
+    the ball lands, the "g" arrow and the band's shaded swept region (shown at 30.5 s,
+    explained at 41 s) were named by nothing. Each mark once."""
+    found: dict[str, str] = {}
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            for kind, _, name in _ends(anim):
+                words = _MARK_WORDS.get(name)
+                if kind in INCOMING and words is not None and name not in found:
+                    found[name] = "" if words.search(caption) else \
+                        f"play {k} {name} under {caption!r}"
+    return [line for line in found.values() if line]
+
+
+#: a pseudocode row giving a placeholder (a capital) its vertex: ``V = the first …``
+_GIVES = re.compile(r"^([A-Z][₀-₉′″]*) = (.*)$")
+
+
+def _panel_rows(data: dict) -> Iterator[tuple[int, list[str], list[str]]]:
+    """(play, the rows the panel shows, the rows lit in the play) of each play: the rows as
+    the panel's ``code:K`` rows say them (renamed rows as renamed), a new picture anew."""
+    rows: dict[str, str] = {}
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            rows = {}
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                name = node.get("name") or ""
+                if name.startswith("code:") and node.get("role") == "idle" and node.get("text"):
+                    rows[name] = node["text"].strip()
+            for top in (anim.get("mobject") or {},):
+                for part in mobject_nodes(top):
+                    name = part.get("name") or ""
+                    if name.startswith("code:") and part.get("role") == "idle" and part.get("text"):
+                        rows[name] = part["text"].strip()
+        yield k, list(rows.values()), [r for a in play["animations"] for r in _lit_rows(a)]
+
+
+def unlit_givens(data: dict) -> list[str]:
+    """The pseudocode rows that give a placeholder its vertex (``B = the left-most vertex``)
+    never lit in a run whose lit rows use it, as ``"'B = the left-most vertex' (used by 'V =
+    the first reflex vertex after B')"``: gravity's V is "the first reflex vertex after B",
+    and B was never lit nor shown (chapter 3). Each row once."""
+    found: dict[str, str] = {}
+    lit: set[str] = set()
+    for _, rows, lighting in _panel_rows(data):
+        lit.update(lighting)
+        gives = {m[1]: row for row in rows if (m := _GIVES.match(row))}
+        for row in lighting:
+            for placeholder, giving in gives.items():
+                if giving != row and re.search(rf"\b{placeholder}\b", row.split(" = ", 1)[-1]) \
+                        and not any(r.startswith(f"{placeholder} =") for r in lit):
+                    found.setdefault(giving, f"{giving!r} (used by {row!r})")
+    return list(found.values())
+
+
+def untied_placeholders(data: dict) -> list[str]:
+    """The lit rows that give a placeholder no label of the picture has (gravity's V, X, Y)
+    under words that name the vertex the run gave it, without saying which, as ``"'V = the
+    first reflex vertex after B' under 'C is the first reflex vertex after B: …'"``: the card
+    and the rows said V, X, Y and the picture C, G, H, never tied (chapter 3). A row tied
+    says ``V = C, …`` (:func:`story.pseudocode.bound`)."""
+    found: list[str] = []
+    caption = ""
+    labels: set[str] = set()
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        if _new_picture(play):
+            labels = set()
+        for anim in play["animations"]:
+            for _, node in _recorded(anim):
+                label = _vertex_label(node)
+                if label is not None and (node.get("name") or "").startswith("vertex:"):
+                    labels.add(label)
+        for anim in play["animations"]:
+            for row in _lit_rows(anim):
+                given = _GIVES.match(row) or re.search(r"\ba vertex ([A-Z])$", row)
+                if given is None or given[1] in labels:
+                    continue
+                tied = re.search(rf"\b{given[1]} = ([A-Z][₀-₉′″]*)\b", row)
+                if tied is None and labels_said(caption) & labels:
+                    found.append(f"{row!r} under {caption!r}")
+    return list(dict.fromkeys(found))
+
+
+def mixed_words(data: dict) -> list[str]:
+    """A thing said with two words on one screen: a pseudocode row that says "side" where
+    the captions and cards say "edge", as ``"'it slides down the side to a vertex X' beside
+    'It slides down the edge to G'"`` (chapter 3's gravity rows). Each row once."""
+    rows = {r for _, _, lighting in _panel_rows(data) for r in lighting}
+    said = [p["subcaption"] for p in data["plays"] if p.get("subcaption")]
+    edge = next((c for c in said if re.search(r"\bedges?\b", c)), None)
+    return [f"{row!r} beside {edge!r}" for row in sorted(rows)
+            if edge is not None and re.search(r"\bsides?\b", row)]
+
+
+def rows_behind_words(data: dict) -> list[str]:
+    """The plays whose caption says the band snags a vertex while the row lit says the ball
+    slides, as ``"play 22 'it slides down the side to a vertex X' under 'The rubber band
+    snags H'"``: the gravity scene's lit row ran 0.9 s behind its caption at 11.5 s."""
+    found: list[str] = []
+    caption, row = "", ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            for lit in _lit_rows(anim):
+                row = lit
+        if "snags" in caption and "slides" in row:
+            found.append(f"play {k} {row!r} under {caption!r}")
+    return list(dict.fromkeys(found))
+
+
+def claims_missing_from_panel(data: dict) -> list[str]:
+    """The claims drawn on a turned picture that the panel, which shows P as it stands, does
+    not draw (``claim:panel``), as ``"play 33: CH"``: chapter 3's panel coloured C and H and
+    never drew CH while the picture was turned."""
+    found: list[str] = []
+    turned = False
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        if _new_picture(play):
+            turned = False
+        names = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        if any(kind == "Turn" and name == "polygon" for kind, name in names):
+            turned = True
+        if any(kind in INCOMING and name == "claim" for kind, name in names) and turned \
+                and not any(kind in INCOMING and name == "claim:panel" for kind, name in names):
+            said = _CLAIM_CAPTION.match(caption)
+            found.append(f"play {k}: {said[1] if said else caption}")
+    return found
+
+
+def green_claims_white_ends(data: dict) -> list[str]:
+    """The claims turned green (judged inner) whose ends both stay in another colour, as
+    ``"play 47 analysis:claim: C, H not green"``: gravity's analysis drew CH green and left
+    C and H white, where chapter 2's analyses turn the pick green with its claim. The ends
+    are the vertex markers at the claim's ends, as :func:`_shown_after_plays` follows them."""
+    import numpy as np
+
+    green = _colour("result")
+    found: list[str] = []
+    for k, shown in _shown_after_plays(data, ("vertex:", "claim", "analysis:claim")):
+        for name in ("claim", "analysis:claim"):
+            claim = shown.get(name)
+            if claim is None or str(claim.get("stroke") or "").upper() != green \
+                    or len(claim.get("points") or []) < 2:
+                continue
+            ends = [tuple(claim["points"][0][:2]), tuple(claim["points"][-1][:2])]
+            at: dict[str, str] = {}
+            for marker, node in shown.items():
+                dot = _dot_centre(node) if marker.startswith("vertex:") else None
+                if dot is not None and any(np.hypot(dot[0] - x, dot[1] - y) < 0.05
+                                           for x, y in ends):
+                    colours = {str(p.get("fill") or p.get("stroke") or "").upper()
+                               for p in mobject_nodes(node) if p.get("text")}
+                    at[marker.removeprefix("vertex:")] = "green" if green in colours else "not"
+            if len(at) == 2 and "green" not in at.values():
+                found.append(f"play {k} {name}: {', '.join(sorted(at))} not green")
+    return list(dict.fromkeys(found))
