@@ -19,7 +19,6 @@ import shapely
 from manim import (
     DOWN,
     Arrow,
-    Circle,
     Dot,
     FadeIn,
     FadeOut,

@@ -18,7 +18,7 @@ from collections.abc import Callable, Sequence
 from itertools import pairwise
 
 import numpy as np
-from manim import DOWN, Arrow, Dot, Line, Mobject, VGroup, VMobject
+from manim import DOWN, Arrow, Dot, Line, Mobject, VGroup
 from manim import Polygon as MPolygon
 
 from geometry import gravity as gravity_steps

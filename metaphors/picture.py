@@ -135,6 +135,8 @@ def _turned(turn: Turn, point: np.ndarray) -> np.ndarray:
     return np.array([*((point[:2] - turn.pivot) @ turn.matrix(1.0).T + turn.pivot), point[2]])
 
 
+#: the seconds a close-up holds its judged claim before it zooms back out
+CLOSE_HOLD = 1.2
 #: what a turned picture holds for one claim: the verdict takes it away (in this order)
 TRANSIENT = ("ball", "band", "swept", "gravity")
 
@@ -147,6 +149,8 @@ def upright(board: Board, beat: Beat) -> None:
     if board.kept_end:
         return
     close, mark = board.close_up, board.objects.get("verdict")
+    if close is not None:  # the ✓ seen up close, by the claim it judges, before all goes
+        board.scene.wait(max(0.1, CLOSE_HOLD * beat.pace))
     # up close, the ✓ goes with the ball and band, and comes back beside the claim once the
     # picture is upright: zoomed back with the picture, it stood off P
     again_mark = mark.copy() if close is not None and mark is not None else None

@@ -3989,15 +3989,11 @@ def _panel_rows(data: dict) -> Iterator[tuple[int, list[str], list[str]]]:
         if _new_picture(play):
             rows = {}
         for anim in play["animations"]:
-            for kind, node in _recorded(anim):
-                name = node.get("name") or ""
-                if name.startswith("code:") and node.get("role") == "idle" and node.get("text"):
-                    rows[name] = node["text"].strip()
-            for top in (anim.get("mobject") or {},):
-                for part in mobject_nodes(top):
-                    name = part.get("name") or ""
-                    if name.startswith("code:") and part.get("role") == "idle" and part.get("text"):
-                        rows[name] = part["text"].strip()
+            # the rows come with the panel's block (a group), and one by one as renamed
+            for part in mobject_nodes(anim.get("mobject") or {}):
+                name = part.get("name") or ""
+                if name.startswith("code:") and part.get("role") == "idle" and part.get("text"):
+                    rows[name] = part["text"].strip()
         yield k, list(rows.values()), [r for a in play["animations"] for r in _lit_rows(a)]
 
 
@@ -4028,7 +4024,7 @@ def untied_placeholders(data: dict) -> list[str]:
     found: list[str] = []
     caption = ""
     labels: set[str] = set()
-    for k, play in enumerate(data["plays"]):
+    for play in data["plays"]:
         caption = play.get("subcaption") or caption
         if _new_picture(play):
             labels = set()

@@ -28,12 +28,15 @@ from click.testing import CliRunner
 
 from tests.reading_rules import (
     amber_figure_marks,
+    answers_on_cards,
     answers_over_pictures,
     balls_not_there,
     bare_ticks,
     broken_counts,
     broken_summaries,
     claims_given_away,
+    claims_missing_from_panel,
+    close_ups_left_early,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -50,6 +53,7 @@ from tests.reading_rules import (
     fills_over_labels,
     fleeting_kind_words,
     flickering_counts,
+    green_claims_white_ends,
     hidden_failures,
     jumping_stacks,
     keys_with_nothing_shown,
@@ -67,6 +71,7 @@ from tests.reading_rules import (
     labels_without_contrast,
     leftover_verdicts,
     lone_numbers,
+    mixed_words,
     morphed_water,
     notes_over_fills,
     notes_under_moving_tools,
@@ -74,9 +79,11 @@ from tests.reading_rules import (
     placeholders_as_labels,
     recoloured_close_ups,
     red_after_the_pick,
+    redrawn_pictures,
     refaded_texts,
     repeated_verdicts,
     replayed_beats,
+    rows_behind_words,
     run_together_labels,
     rushed_questions,
     shifting_colours,
@@ -94,12 +101,15 @@ from tests.reading_rules import (
     ticks_outside,
     uneven_countdowns,
     unexplained_grey,
+    unlit_givens,
     unmarked_candidates,
     unnamed_axes,
+    unnamed_marks,
     unreadable_cues,
     unsaid_colour_changes,
     unseen_ear_tests,
     unspoken_words,
+    untied_placeholders,
     water_outside_polygon,
     words_before_pictures,
     words_over_the_picture,
@@ -722,6 +732,24 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # "band swept" under the green "swept: in P")
     assert balls_not_there(data) == [], chapter.slug
     assert keys_with_nothing_shown(data) == [], chapter.slug
+    # grav7, chapter 3 as a teacher shows it: one picture per idea — no card gives its run's
+    # answer away, no run picture drawn again (the analysis redrew the run's end state)
+    assert answers_on_cards(data) == [], chapter.slug
+    assert redrawn_pictures(data) == [], chapter.slug
+    # a close-up stays through the slide and the band until the claim is judged (it zoomed
+    # out before the slide: EC beside B–C was a faint line 60 × 70 px wide)
+    assert close_ups_left_early(data) == [], chapter.slug
+    # every mark named as it comes (the hit ring, the "g" arrow, the swept region)
+    assert unnamed_marks(data) == [], chapter.slug
+    # the pseudocode: B lit before V is "the first after B", V, X, Y tied to C, G, H, one
+    # word for an edge, the lit row in step with the words
+    assert unlit_givens(data) == [], chapter.slug
+    assert untied_placeholders(data) == [], chapter.slug
+    assert mixed_words(data) == [], chapter.slug
+    assert rows_behind_words(data) == [], chapter.slug
+    # the panel draws the claim of a turned picture, and a green claim's pick is green
+    assert claims_missing_from_panel(data) == [], chapter.slug
+    assert green_claims_white_ends(data) == [], chapter.slug
 
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
