@@ -191,6 +191,7 @@ class CloseUp:
             fits = bool(np.all(at[:2] >= shrunk[0]) and np.all(at[:2] <= shrunk[1]))
             (self.shown if fits else self.hidden)[label] = marker
         self.outline, self.frame = board.outline, board.frame
+        self.before = {id(m) for m in (board.outline, *board.objects.values())}
         self.others = [m for m in _movers(board) if m is not board.outline
                        and not any(m is marker for marker in board.markers.values())]
 
@@ -294,10 +295,11 @@ class CloseUp:
             anims.append(animate(m).shift(back.to_scene(board.where[label])
                                           - board.vertex(label)))
         # what was drawn up close (the ball, the band, what it swept, the claim and its ✓)
-        # zooms back with the picture
-        faded = {id(m) for m in self.others}
+        # zooms back with the picture; not what stood before (faded, or the outline itself:
+        # ear clipping's fruit, which the close-up's drawing stood in for, is not zoomed)
         anims += [Turn(m, 0.0, self.pivot, 1 / self.zoom, upright=_UPRIGHT)
-                  for key, m in board.objects.items() if key not in FIXED and id(m) not in faded]
+                  for key, m in board.objects.items()
+                  if key not in FIXED and id(m) not in self.before]
         board.frame = back
         return anims
 

@@ -275,8 +275,8 @@ class Panel:
         # as wide as its widest row will be: a row the run renames later ("claim VY = CH, or
         # VX …") keeps inside the box too (it ran off the frame's edge, centred for the rows
         # it replaced)
-        widest = max(rows.width, *(indent + width for indent, width in
-                                   self._later_widths(font, size)))
+        widest = max([rows.width, *(indent + width for indent, width in
+                                    self._later_widths(font, size))])
         scale = min(1.0, self.code_box.width / widest)
         if scale < 1.0:
             rows.scale(scale, about_point=rows.get_left())

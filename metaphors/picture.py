@@ -11,7 +11,7 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-from manim import Circle, FadeIn, Mobject, VGroup
+from manim import Circle, Mobject, VGroup
 
 from metaphors.board import Board, Playable
 from metaphors.drawing import Frame
@@ -148,13 +148,10 @@ def upright(board: Board, beat: Beat) -> None:
     band swept on the picture as the run left it."""
     if board.kept_end:
         return
-    close, mark = board.close_up, board.objects.get("verdict")
+    close = board.close_up
     if close is not None:  # the ✓ seen up close, by the claim it judges, before all goes
         board.scene.wait(max(0.1, CLOSE_HOLD * beat.pace))
-    # up close, the ✓ goes with the ball and band, and comes back beside the claim once the
-    # picture is upright: zoomed back with the picture, it stood off P
-    again_mark = mark.copy() if close is not None and mark is not None else None
-    gone = board.drop(*TRANSIENT, *(("verdict",) if again_mark is not None else ()))
+    gone = board.drop(*TRANSIENT)
     if gone:
         again(board, beat, *gone, run_time=0.5)
     if close is not None:
@@ -166,8 +163,4 @@ def upright(board: Board, beat: Beat) -> None:
     back = board.labels_back()  # the labels moved off the ball's way, once it is upright
     if back:
         again(board, beat, *back, run_time=0.4)
-    line = board.objects.get("claim")
-    if again_mark is not None and line is not None:
-        again_mark.move_to(board_spot(board, again_mark, line))
-        board.keep("verdict", again_mark)
-        again(board, beat, FadeIn(again_mark), run_time=0.5)
+

@@ -4001,14 +4001,20 @@ def unlit_givens(data: dict) -> list[str]:
     """The pseudocode rows that give a placeholder its vertex (``B = the left-most vertex``)
     never lit in a run whose lit rows use it, as ``"'B = the left-most vertex' (used by 'V =
     the first reflex vertex after B')"``: gravity's V is "the first reflex vertex after B",
-    and B was never lit nor shown (chapter 3). Each row once."""
+    and B was never lit nor shown (chapter 3). A run is a picture's plays; a row lit at any
+    time in it counts (a loop's row may use what its next round gives). Each row once."""
     found: dict[str, str] = {}
-    lit: set[str] = set()
-    for _, rows, lighting in _panel_rows(data):
+    runs: list[tuple[dict[str, str], set[str], list[str]]] = []  # (givens, lit, used)
+    for k, rows, lighting in _panel_rows(data):
+        if not runs or _new_picture(data["plays"][k]):
+            runs.append(({}, set(), []))
+        givens, lit, used = runs[-1]
+        givens.update({m[1]: row for row in rows if (m := _GIVES.match(row))})
         lit.update(lighting)
-        gives = {m[1]: row for row in rows if (m := _GIVES.match(row))}
-        for row in lighting:
-            for placeholder, giving in gives.items():
+        used.extend(lighting)
+    for givens, lit, used in runs:
+        for row in used:
+            for placeholder, giving in givens.items():
                 if giving != row and re.search(rf"\b{placeholder}\b", row.split(" = ", 1)[-1]) \
                         and not any(r.startswith(f"{placeholder} =") for r in lit):
                     found.setdefault(giving, f"{giving!r} (used by {row!r})")
@@ -4035,11 +4041,16 @@ def untied_placeholders(data: dict) -> list[str]:
                     labels.add(label)
         for anim in play["animations"]:
             for row in _lit_rows(anim):
-                given = _GIVES.match(row) or re.search(r"\ba vertex ([A-Z])$", row)
-                if given is None or given[1] in labels:
+                defines, ends = _GIVES.match(row), re.search(r"\ba vertex ([A-Z])$", row)
+                # the words give the vertex: "C is …", "… snags H" for a row "V = …", "… to G"
+                # for a row "… to a vertex X" (not a step that measures the candidates)
+                gives = (re.search(r"^([A-Z][₀-₉′″]*) is\b|\bsnags ([A-Z][₀-₉′″]*)\b", caption)
+                         if defines else re.search(r"\bto ([A-Z][₀-₉′″]*)\b", caption)
+                         if ends else None)
+                placeholder = (defines or ends)[1] if (defines or ends) else None
+                if placeholder is None or placeholder in labels or gives is None:
                     continue
-                tied = re.search(rf"\b{given[1]} = ([A-Z][₀-₉′″]*)\b", row)
-                if tied is None and labels_said(caption) & labels:
+                if not re.search(rf"\b{placeholder} = [A-Z]", row):
                     found.append(f"{row!r} under {caption!r}")
     return list(dict.fromkeys(found))
 
