@@ -155,6 +155,11 @@ def upright(board: Board, beat: Beat) -> None:
     if gone:
         again(board, beat, *gone, run_time=0.5)
     if close is not None:
+        # the labels moved off the ball's way go back first, up close where they were moved:
+        # carried out with the zoom from their places for now, G's stood on H's (chapter 4)
+        back = board.labels_back()
+        if back:
+            again(board, beat, *back, run_time=0.4)
         again(board, beat, *close.zoom_out(), run_time=1.2)
         close.done()
     turn = turn_to(board, 0.0)

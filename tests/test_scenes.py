@@ -39,11 +39,10 @@ from geometry.diagonals import find_diagonal
 from geometry.io import read_any_polygon, read_polygon
 from metaphors.pseudocode import source_of
 from metaphors.scene import SequenceScene, TraceScene
-from story.pseudocode import named
 from story.registry import entry, hole_pseudocode, spoken, triangulations, wrong
 from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
 from story.spec import RunSpec
-from story.storyboard import run_vertices
+from story.storyboard import spoken_pseudocode
 from tests.reading_rules import (
     LEAST_LINE,
     LEAST_TRIANGLE,
@@ -704,9 +703,9 @@ def _last_pseudocode(case: SceneCase) -> tuple:
                else case.cls.polygon if isinstance(case.cls, Handed) else None)
     if polygon and read_any_polygon(polygon).hole_count:
         return hole_pseudocode(algorithm)
-    # the rows name the run's own vertices where the picture has one of that name (issue 22)
-    log = RunSpec(algorithm, polygon, heuristic=heuristic_of(case.cls)).log()
-    return named(entry(algorithm).pseudocode, run_vertices(log), read_polygon(polygon).labels)
+    # the rows name the run's own vertices where the picture has one of that name (issue 22),
+    # and tie gravity's V, X, Y to theirs (grav7)
+    return spoken_pseudocode(RunSpec(algorithm, polygon, heuristic=heuristic_of(case.cls)).log())
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
