@@ -46,7 +46,7 @@ from metaphors.captions import whole_frames
 from metaphors.drawing import crossed_edge
 from metaphors.gravity import RESTING, Drop, GravityTurn, Slide, Snag
 from metaphors.play import TITLE_WIDTH
-from metaphors.recorded import mark_step
+from metaphors.recorded import Recorded, mark_step
 from metaphors.stage import BOX, OUTSIDE, Canvas, Stage, beside, path, place_name, region
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -491,7 +491,7 @@ def holds_on_run(board: Board, last: Beat, right: Moment, analysis: Analysis,
     backing = [FadeIn(halo(cast(Stage, board), tick))] if tick is not None else []
     # the run's last beat, saying why: its lit row, its roles (the claim's ends green) kept
     said = replace(last, caption=right.words(analysis.holds))
-    mark_step(board.scene, said.caption, kind="analysis")
+    mark_step(cast(Recorded, board.scene), said.caption, kind="analysis")
     board.play(said, FadeIn(new_title), *([FadeOut(swept)] if swept is not None else []),
                FadeIn(witness), *backing, run_time=1.5, least=analysis.freeze, together=True)
     board.keep("witness", witness)

@@ -148,6 +148,15 @@ def named(pseudocode: Sequence[PseudocodeRow], vertices: dict[str, str],
     return tuple(PseudocodeRow(_NAME.sub(rename, row.text), row.calls) for row in pseudocode)
 
 
+def _tie(text: str, placeholder: str, label: str) -> str:
+    """``text`` with its first ``placeholder`` tied to ``label``: ``V = …`` → ``V = C, …``,
+    ``… X`` → ``… X = G``."""
+    def tied(found: re.Match[str]) -> str:
+        return f"{placeholder} = {label}, " if found.group(1) else f"{placeholder} = {label}"
+
+    return re.sub(rf"\b{placeholder}\b( = )?", tied, text, count=1)
+
+
 def bound(pseudocode: Sequence[PseudocodeRow], vertices: Mapping[str, str],
           defined: Mapping[str, str], labels: Iterable[str],
           claim: tuple[str, str] | None = None) -> tuple[PseudocodeRow, ...]:
@@ -176,9 +185,7 @@ def bound(pseudocode: Sequence[PseudocodeRow], vertices: Mapping[str, str],
         for placeholder, label in tied.items():
             if defined[placeholder] not in row.calls:
                 continue
-            word = re.compile(rf"\b{placeholder}\b( = )?")
-            text = word.sub(lambda m, p=placeholder, v=label: (
-                f"{p} = {v}, " if m.group(1) else f"{p} = {v}"), text, count=1)
+            text = _tie(text, placeholder, label)
         if claim is not None and "claim" in row.calls:
             def tie(found: re.Match[str]) -> str:
                 name = found.group()
