@@ -82,7 +82,7 @@ def claim(board: Board, beat: Claim) -> None:
     # on a turned picture the panel shows P as it stands: the claim drawn there too (it
     # coloured the claim's ends only: chapter 3's CH on the gravity run's panel)
     shown = ([board.panel.claim(*beat.labels, "argument")]
-             if board.frame.angle and board.focus is None and board.panel.shows_polygon else [])
+             if board.frame.angle and board.panel.shows_polygon else [])
     # a label it would run through (Correct Scaling's E, on BE) steps aside as it is drawn
     board.play(beat, Create(line), *shown, *board.clear_labels(line), run_time=1.0)
 

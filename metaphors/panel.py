@@ -433,7 +433,7 @@ class Panel:
         the claim's ends only, never drew the claim (chapter 3's CH)."""
         at = dict(zip(self.polygon.labels, self.frame.many(self.polygon.points), strict=True))
         line = tag(Line(at[u], at[v], color=self.theme.role_colour(role),
-                        stroke_width=self.theme.stroke), role, "claim:panel")
+                        stroke_width=self.theme.stroke), role, "panel:claim")
         self.claimed = line.set_z_index(self.outline.z_index + 0.5)
         return Create(line)
 

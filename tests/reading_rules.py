@@ -2607,12 +2607,14 @@ def far_verdicts(data: dict) -> list[str]:
 
 #: the marker names of a vertex: on the picture and on the panel's small map
 _VERTEX_MARKERS = ("vertex:", "panel:")
+#: the panel's parts that are no vertex: its call line, and the claim it draws (grav7)
+_PANEL_NOT_VERTICES = ("panel:call", "panel:claim")
 
 
 def _vertex_label(node: dict) -> str | None:
     """The label of a vertex marker node (``vertex:K``, ``panel:K``), else None."""
     name = node.get("name") or ""
-    if name == "panel:call" or not name.startswith(_VERTEX_MARKERS):
+    if name in _PANEL_NOT_VERTICES or not name.startswith(_VERTEX_MARKERS):
         return None
     return name.split(":", 1)[1]
 
@@ -3874,12 +3876,20 @@ _CARD_CLAIM = re.compile(r"\bclaim ([A-Z][₀-₉′″]*[A-Z][₀-₉′″]*)\
 
 
 def _sections(data: dict) -> Iterator[tuple[int, str, dict]]:
-    """(play, the card's section it is in, the play): a card's title opens a section."""
+    """(play, the section it is in, the play): a card's title opens a section; in a graph
+    with no card (a scene), each run's title (a scene of several runs on one polygon plays
+    each heuristic anew), as :func:`shown_steps` has them."""
+    def named(play: dict, name: str) -> list[dict]:
+        return [node for a in play["animations"] if a["type"] in INCOMING
+                and (node := a.get("mobject") or {}).get("name") == name]
+
+    carded = any(named(play, "card:title") for play in data["plays"])
     section = ""
     for k, play in enumerate(data["plays"]):
-        if any(a["type"] in INCOMING and (a.get("mobject") or {}).get("name") == "card:title"
-               for a in play["animations"]):
+        if named(play, "card:title"):
             section = play.get("subcaption") or section
+        elif not carded and (titles := named(play, "title")):
+            section = f"{titles[0].get('text') or ''} (play {k})"
         yield k, section, play
 
 
@@ -4084,7 +4094,7 @@ def rows_behind_words(data: dict) -> list[str]:
 
 def claims_missing_from_panel(data: dict) -> list[str]:
     """The claims drawn on a turned picture that the panel, which shows P as it stands, does
-    not draw (``claim:panel``), as ``"play 33: CH"``: chapter 3's panel coloured C and H and
+    not draw (``panel:claim``), as ``"play 33: CH"``: chapter 3's panel coloured C and H and
     never drew CH while the picture was turned."""
     found: list[str] = []
     turned = False
@@ -4097,7 +4107,7 @@ def claims_missing_from_panel(data: dict) -> list[str]:
         if any(kind == "Turn" and name == "polygon" for kind, name in names):
             turned = True
         if any(kind in INCOMING and name == "claim" for kind, name in names) and turned \
-                and not any(kind in INCOMING and name == "claim:panel" for kind, name in names):
+                and not any(kind in INCOMING and name == "panel:claim" for kind, name in names):
             said = _CLAIM_CAPTION.match(caption)
             found.append(f"play {k}: {said[1] if said else caption}")
     return found
