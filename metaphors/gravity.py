@@ -100,13 +100,13 @@ def gravity_turn(board: Board, beat: GravityTurn) -> None:
 
 def drop(board: Board, beat: Drop) -> None:
     """A ball hangs from V on its band, falls straight down and hits the boundary. A fall
-    too short to be seen (:data:`FALL_LEAST`; 0.3 units on the counterexample) is shown in
-    a close-up: the picture zooms onto the whole moment — the fall, the slide to where the
-    ball comes to rest, the band — and stays close until the claim is judged
-    (:func:`metaphors.picture.upright` zooms back out). It zoomed back out as soon as the ball
-    hit, before the slide: the band staying straight and the claim beside edge B–C were a
-    faint line 60 × 70 px wide (chapter 3 at 65-70 s). Where the ball hits flashes; no ring
-    stays there (a mark nobody named, round E's dot)."""
+    too short to be seen (:data:`FALL_LEAST`; the counterexample's, with E 2.7 % of the
+    frame's height above B–C, fell 0.3 units) is shown in a close-up: the picture zooms onto
+    the whole moment — the fall, the slide to where the ball comes to rest, the band — and
+    stays close until the claim is judged (:func:`metaphors.picture.upright` zooms back out).
+    It zoomed back out as soon as the ball hit, before the slide: the band staying straight
+    and the claim beside edge B–C were a faint line 60 × 70 px wide (chapter 3 at 65-70 s).
+    Where the ball hits flashes; no ring stays there (a mark nobody named, round E's dot)."""
     v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
     rest = hit if beat.rest is None else board.at(beat.rest)
     close = CloseUp.onto(board, v, hit, rest)

@@ -17,9 +17,10 @@ from typing import Protocol, cast
 from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.fruit import Keyhole
+from metaphors.gravity import GravityTurn
 from metaphors.layout import Box
 from metaphors.recorded import Recorded, captions_of, mark_step
-from story.beats import Beat, Claim, ShowPolygon
+from story.beats import Beat, Claim, ShowPolygon, ShowTriangle
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
 from story.storyboard import pseudocode_stages, run_call
@@ -49,8 +50,14 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     recorded = cast(Recorded, scene)  # every BoardScene is Recorded (TraceScene, the player's)
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded),
-                  claims=[beat.labels for beat in beats if isinstance(beat, Claim)],
-                  cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)])
+                  claims=list(dict.fromkeys([
+                      *(beat.labels for beat in beats if isinstance(beat, Claim)),
+                      *(side for beat in beats if isinstance(beat, ShowTriangle)
+                        for side in _sides(beat.labels))])),
+                  cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)],
+                  # a label with no room outside P beside it, with a leader, where the picture
+                  # never turns (a turn keeps labels upright and places them again)
+                  leaders=not any(isinstance(beat, GravityTurn) for beat in beats))
     board.panel.shows_calls = scene.call_line
     board.kept_end = scene.keep_end
     board.panel.run_call = run_call(log)
@@ -63,6 +70,13 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     if board.title.width > TITLE_WIDTH:
         board.title.scale_to_fit_width(TITLE_WIDTH)
     return board
+
+
+def _sides(corners: Sequence[str]) -> list[tuple[str, str]]:
+    """The sides of T = ABC as pairs of labels: its labels are placed clear of them as of
+    the claims (the exercise's E, placed clear of P's edges only, stood 0.1 from T's side
+    AC, and its pulse as a candidate pushed it onto the line)."""
+    return [(corners[k - 1], corners[k]) for k in range(len(corners))]
 
 
 def stretches(beats: Sequence[Beat]) -> list[int]:
