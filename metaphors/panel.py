@@ -452,8 +452,10 @@ class Panel:
         return Create(line)
 
     def judge_claim(self, role: str) -> list[Animation]:
-        """The panel's claim, if drawn, recoloured as judged (green or red)."""
-        line = self.claimed
+        """The panel's claim, if drawn, recoloured as judged (green or red), once: kept on,
+        divide and conquer's DG (drawn on a turned run's panel) was recoloured with every
+        later verdict, FD's and the summaries', that had no claim on the panel."""
+        line, self.claimed = self.claimed, None
         if line is None:
             return []
         return [tag(line, role).animate.set_color(self.theme.role_colour(role))]

@@ -4170,12 +4170,32 @@ def claims_missing_from_panel(data: dict) -> list[str]:
         if _new_picture(play):
             turned = False
         names = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        # a run turns P and turns it back upright after its verdict (a scene of several
+        # runs, divide and conquer's, turns each piece's run anew): each turn flips it
         if any(kind == "Turn" and name == "polygon" for kind, name in names):
-            turned = True
+            turned = not turned
         if any(kind in INCOMING and name == "claim" for kind, name in names) and turned \
                 and not any(kind in INCOMING and name == "panel:claim" for kind, name in names):
             said = _CLAIM_CAPTION.match(caption)
             found.append(f"play {k}: {said[1] if said else caption}")
+    return found
+
+
+def stale_panel_claims(data: dict) -> list[str]:
+    """The panel claims judged (recoloured) when the claim on the picture was drawn without
+    one, as ``"play 45: FD judged on the panel's DG"``: divide and conquer's panel kept the
+    last turned run's claim DG and recoloured it with every later verdict (FD, drawn upright,
+    had none on the panel), so that a ✗ would have turned DG red there."""
+    found: list[str] = []
+    fresh, caption = False, ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        names = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        if any(kind in INCOMING and name == "claim" for kind, name in names):
+            fresh = any(kind in INCOMING and name == "panel:claim" for kind, name in names)
+        if any(kind not in INCOMING and kind not in OUTGOING and name == "panel:claim"
+               for kind, name in names) and not fresh:
+            found.append(f"play {k}: the panel's old claim judged under {caption!r}")
     return found
 
 

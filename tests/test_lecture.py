@@ -562,11 +562,9 @@ KNOWN_LABELS_OVER_P = {"faster": {"G", "H"}}
 #: 1.5 % of the frame's height of a triangle's side: its hole and its two triangles have no
 #: room for it (b₂, placed between the ways tried, now has; by label, not by play).
 KNOWN_LABELS_ACROSS_FILLS = {"ears": ["b₁ on triangulation"]}
-#: Likewise: chapter 3's ✓ for EC on the counterexample (68.8 s) stands 0.87 off its claim (as
-#: on main): EC runs down a needle of P, with no room beside it or over it, and a ✓ outside P
-#: would judge the edge it stood by (found when far_verdicts went from 1/8 of the frame's
-#: height to 5 %, for chapter 4's GB, which is mended)
-KNOWN_FAR_VERDICTS = {"gravity": ["play 82 tick 0.87 from its claim"]}
+#: Likewise, a ✓ or ✗ known to stand far from its claim, by chapter: none now (chapter 3's ✓
+#: for EC stood 0.87 off it, down a needle of P; it is drawn up close, inside P, since grav7)
+KNOWN_FAR_VERDICTS: dict[str, list[str]] = {}
 
 
 @pytest.mark.parametrize("chapter", _chapters())

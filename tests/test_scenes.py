@@ -102,6 +102,7 @@ from tests.reading_rules import (
     stale_endings,
     stale_good_parts,
     stale_lit_rows,
+    stale_panel_claims,
     stray_kind_words,
     stray_vertex_markers,
     swept_outside_polygon,
@@ -1053,6 +1054,7 @@ def test_gravity_marks_rows_and_close_ups_say_what_they_show(case):
     assert mixed_words(data) == [], case.id
     assert rows_behind_words(data) == [], case.id
     assert claims_missing_from_panel(data) == [], case.id
+    assert stale_panel_claims(data) == [], case.id
     assert green_claims_white_ends(data) == [], case.id
     assert answers_on_cards(data) == [], case.id
     assert redrawn_pictures(data) == [], case.id
