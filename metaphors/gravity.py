@@ -294,7 +294,12 @@ class CloseUp:
         for label, m in self.shown.items():
             anims.append(animate(m).shift(back.to_scene(board.where[label])
                                           - board.vertex(label)))
-        # what was drawn up close (the ball, the band, what it swept, the claim and its ✓)
+        # the ✓ or ✗ seen up close beside its claim goes as the picture zooms back: kept at
+        # its size, it landed on the claim, the needle of P it stood in shrunk under it
+        # (chapter 3's ✓ on EC at 76-78 s); the claim's colour and the words still judge it
+        if id(board.objects.get("verdict")) not in self.before:
+            anims += board.drop("verdict")
+        # what was drawn up close (the ball, the band, what it swept, the claim)
         # zooms back with the picture; not what stood before (faded, or the outline itself:
         # ear clipping's fruit, which the close-up's drawing stood in for, is not zoomed)
         anims += [Turn(m, 0.0, self.pivot, 1 / self.zoom, upright=_UPRIGHT)

@@ -2622,6 +2622,29 @@ def far_verdicts(data: dict) -> list[str]:
     return found
 
 
+def verdicts_on_claims(data: dict) -> list[str]:
+    """A run's ✓ or ✗ whose box crosses the claim it judges (the last claim recorded), as
+    ``"play 84 tick over its claim"``, wherever a play records it: as it comes in, and where
+    a later play finds it (a turn records where it starts). Chapter 3's ✓ for EC, beside EC
+    up close, zoomed back out with the picture onto EC itself (76-78 s): the needle of P it
+    stood in shrank under it."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    found, claim = [], None
+    for k, play in enumerate(data["plays"]):
+        records = [(kind, node) for a in play["animations"] for kind, node in _recorded(a)]
+        for _, node in records:
+            if node.get("name") == _CLAIM and len(node.get("points") or []) >= 2:
+                claim = LineString([node["points"][0][:2], node["points"][-1][:2]])
+        for kind, node in records:
+            box = _box_of(node) if node.get("name") in _RUN_MARKS else None
+            if kind not in OUTGOING and box is not None and claim is not None \
+                    and claim.intersects(area(*box)):
+                found.append(f"play {k} {node['name']} over its claim")
+    return list(dict.fromkeys(found))
+
+
 # --- r567 item 1: a vertex's colour keeps its meaning ---------------------------------------------
 
 #: the marker names of a vertex: on the picture and on the panel's small map

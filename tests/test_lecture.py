@@ -132,6 +132,7 @@ from tests.reading_rules import (
     untaught_words,
     untied_placeholders,
     verdicts_before_red,
+    verdicts_on_claims,
     water_outside_polygon,
     words_ahead_of_colours,
     words_before_pictures,
@@ -799,6 +800,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # the panel draws the claim of a turned picture, and a green claim's pick is green
     assert claims_missing_from_panel(data) == [], chapter.slug
     assert green_claims_white_ends(data) == [], chapter.slug
+    # a close-up's ✓ does not zoom back onto its claim (EC's at 76-78 s)
+    assert verdicts_on_claims(data) == [], chapter.slug
 
     # mono5: each word taught the first time it is said (chapter 5's card said y-monotone,
     # split and merge before the run taught them; "joins its helper F", helper untaught), and

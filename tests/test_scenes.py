@@ -116,6 +116,7 @@ from tests.reading_rules import (
     unseen_ear_tests,
     unspoken_words,
     untied_placeholders,
+    verdicts_on_claims,
     water_outside_polygon,
     words_ahead_of_colours,
     words_before_pictures,
@@ -1056,5 +1057,6 @@ def test_gravity_marks_rows_and_close_ups_say_what_they_show(case):
     assert claims_missing_from_panel(data) == [], case.id
     assert stale_panel_claims(data) == [], case.id
     assert green_claims_white_ends(data) == [], case.id
+    assert verdicts_on_claims(data) == [], case.id
     assert answers_on_cards(data) == [], case.id
     assert redrawn_pictures(data) == [], case.id
