@@ -249,11 +249,14 @@ def gravity(polygon: Polygon) -> Diagonal:
     """The gravity heuristic on the whole polygon (first reflex vertex from B)."""
     if polygon.n < 4:
         raise ValueError("a triangle has no diagonal")
+    # B, traced: the pseudocode's first row names it, and V is "the first reflex vertex after
+    # B" (B was never shown nor its row lit: chapter 3)
+    b = leftmost_vertex(polygon)
     v = reflex_vertex(polygon)
     if v is None:
         v = straight_vertex(polygon)
         if v is None:
-            return _convex_fallback(polygon)
+            return _convex_fallback(polygon, b)
         tracing.note(
             "no-reflex-vertex",
             reason=f"No reflex vertex: the ball drops from the straight vertex {v.label}",
@@ -262,9 +265,9 @@ def gravity(polygon: Polygon) -> Diagonal:
     return gravity_at(polygon, v)
 
 
-def _convex_fallback(polygon: Polygon) -> Diagonal:
+def _convex_fallback(polygon: Polygon, b: Vertex) -> Diagonal:
     """Strictly convex: every diagonal is inner; claim AC around the left-most vertex B."""
-    t = triangle_at(polygon, leftmost_vertex(polygon))
+    t = triangle_at(polygon, b)
     tracing.note(
         "no-reflex-vertex",
         reason="Strictly convex: every diagonal is inner, so claim "  # the piece's own labels

@@ -19,7 +19,7 @@ takes to read.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TypeVar, cast
 
 import shapely
@@ -41,15 +41,26 @@ from manim import (
 )
 
 from metaphors import catalog
+from metaphors.board import Board
 from metaphors.captions import whole_frames
 from metaphors.drawing import crossed_edge
 from metaphors.gravity import RESTING, Drop, GravityTurn, Slide, Snag
+from metaphors.play import TITLE_WIDTH
+from metaphors.recorded import Recorded, mark_step
 from metaphors.stage import BOX, OUTSIDE, Canvas, Stage, beside, path, place_name, region
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
 from story.analysis import Band, Motion, inside, motion, outside, split
-from story.beats import Beat, Candidates, Claim, Point, ShowPolygon, ShowTriangle, Verdict
+from story.beats import (
+    Beat,
+    Candidates,
+    Claim,
+    Point,
+    ShowPolygon,
+    ShowTriangle,
+    Verdict,
+)
 from story.registry import entry, spoken
 from story.spec import RunSpec
 from story.states import Moving, Tool
@@ -86,6 +97,10 @@ class Analysis:
     slow: float = SLOW
     intro: str = ""
     freeze: float = FREEZE
+    #: played on the picture the run before it left (the run ends there, turned, its ball,
+    #: band and claim kept): gravity's swept region shaded, nothing drawn again (chapter 3
+    #: drew the run's end state again before shading it)
+    on_run: bool = False
 
 
 @dataclass(frozen=True)
@@ -428,6 +443,10 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
     name = NAMES.get(known.metaphor or "", str(known.metaphor).capitalize())
     first = moment(analysis.heuristic, analysis.polygon)
     _check(analysis, first)
+    if analysis.on_run:
+        holds_on_run(scene.played_board, scene.played_beats[-1], first, analysis,
+                     analysis.title or f"{name}: why {spoken(analysis.heuristic)} is right")
+        return
     said = spoken(analysis.heuristic)  # the thesis's names, never the slugs (issue 22)
     if known.correct:
         holds(_stage(scene, first, analysis.title or f"{name}: why {said} is right", theme),
@@ -447,6 +466,36 @@ def play_analysis(scene, analysis: Analysis, theme: Theme) -> None:
     holds(stage, right, analysis, [
         *[FadeOut(m) for m in cleared], *stage.forget_key("astray"), *again,
         *stage.retitle(f"{name}: the correction, {spoken(known.correction, first=True)}")])
+
+
+def holds_on_run(board: Board, last: Beat, right: Moment, analysis: Analysis,
+                 title: str) -> None:
+    """Gravity's why, on the run's last picture (:attr:`Analysis.on_run`): the title says what
+    is asked, and the region the band swept, shaded as it swept, turns green under the words
+    that say why the claim is inner — the claim, its ends and its ✓ green already, from the
+    run's verdict. Nothing is drawn again: the analysis redrew the picture the run had just
+    ended on, ball, band and all, and said its steps again (chapter 3 at 38-45 s)."""
+    theme, band = board.theme, right.swept
+    witness = region(board, band.swept(1.0), theme.result, 0.45, "analysis:witness",
+                     "result").set_z_index(-1)
+    new_title = tag(typeset.glyphs(title, font=theme.font, size=30, colour=theme.ink),
+                    None, "title").move_to(board.title.get_center())
+    if new_title.width > TITLE_WIDTH:
+        new_title.scale_to_fit_width(TITLE_WIDTH)
+    old_title, board.title = board.title, new_title
+    board.captions.hold()  # the run's last words are read in their own step
+    board.scene.play(FadeOut(old_title), run_time=0.4)  # out, then in: never crossfaded
+    swept = board.objects.pop("swept", None)
+    tick = board.objects.get("verdict")
+    # the ✓ on a dark halo, should the green reach it
+    backing = [FadeIn(halo(cast(Stage, board), tick))] if tick is not None else []
+    # the run's last beat, saying why: its lit row, its roles (the claim's ends green) kept
+    said = replace(last, caption=right.words(analysis.holds))
+    mark_step(cast(Recorded, board.scene), said.caption, kind="analysis")
+    board.play(said, FadeIn(new_title), *([FadeOut(swept)] if swept is not None else []),
+               FadeIn(witness), *backing, run_time=1.5, least=analysis.freeze, together=True)
+    board.keep("witness", witness)
+    board.close()
 
 
 def _stage(scene, seen: Moment, title: str, theme: Theme, *later: tuple[str, str]) -> Stage:

@@ -79,8 +79,12 @@ def claim(board: Board, beat: Claim) -> None:
     line = tag(Line(board.at(u), board.at(v), color=board.theme.argument,
                     stroke_width=board.theme.stroke * 1.5), "argument", "claim")
     board.keep("claim", line)
+    # on a turned picture the panel shows P as it stands: the claim drawn there too (it
+    # coloured the claim's ends only: chapter 3's CH on the gravity run's panel)
+    shown = ([board.panel.claim(*beat.labels, "argument")]
+             if board.frame.angle and board.panel.shows_polygon else [])
     # a label it would run through (Correct Scaling's E, on BE) steps aside as it is drawn
-    board.play(beat, Create(line), *board.clear_labels(line), run_time=1.0)
+    board.play(beat, Create(line), *shown, *board.clear_labels(line), run_time=1.0)
 
 
 def verdict(board: Board, beat: Verdict) -> None:
@@ -109,9 +113,10 @@ def _judged(board: Board, beat: Verdict) -> None:
         held = [] if line is None else [line.animate.set_color(theme.result)]
         if line is not None:
             tag(line, "result", "claim")
-        board.play(beat, *held, FadeIn(mark, scale=1.5), run_time=1.0, together=True)
+        board.play(beat, *held, *board.panel.judge_claim("result"), FadeIn(mark, scale=1.5),
+                   run_time=1.0, together=True)
         return
-    anims: list[Playable] = []
+    anims: list[Playable] = [*board.panel.judge_claim("rejected")]
     if line is not None:
         anims.append(tag(line, "rejected", "claim").animate.set_color(theme.rejected))
     edge = beat.edge

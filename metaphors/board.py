@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
-from typing import Any, TypeAlias
+from typing import Any, Protocol, TypeAlias
 
 import numpy as np
 import shapely
@@ -73,6 +73,14 @@ def animate(mobject: Mobject, **anim_args: Any) -> _AnimationBuilder:
     builder = mobject.animate
     assert isinstance(builder, _AnimationBuilder)
     return builder(**anim_args)
+
+
+class CloseUp(Protocol):
+    """A close-up on the board (:class:`metaphors.gravity.CloseUp`): what ends it."""
+
+    def zoom_out(self) -> list[Playable]: ...
+
+    def done(self) -> None: ...
 
 
 #: the least a step of a summary takes (seconds): long enough to see what changed
@@ -155,6 +163,12 @@ class Board:
         # where each label stood beside its dot, upright, before the picture turned: it comes
         # back there when the picture turns upright (:func:`metaphors.picture.turn_to`)
         self.home: dict[str, np.ndarray] = {}
+        # a close-up in progress (gravity's, from the fall to the verdict), which the verdict
+        # ends (:func:`metaphors.picture.upright`)
+        self.close_up: CloseUp | None = None
+        # the run's last picture is kept as it is, turned, with its ball and band: an analysis
+        # goes on from it (:class:`metaphors.lecture.LectureScene`)
+        self.kept_end = False
 
     # --- coordinates -----------------------------------------------------------------------------
 
@@ -343,7 +357,12 @@ class Board:
         paths = [path for part in self.outline.family_members_with_points()
                  for path in part.get_subpaths() if len(path) >= 12]  # a triangle's, at least
         rings = [list(path[:-1:4]) for path in paths]
-        return sorted(rings, key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
+        # each once: a close-up's drawing, redrawn by ``become`` from one with fewer parts,
+        # holds its outline twice (its fill, and an edge stretched round it), and a ring
+        # that is its own hole leaves no inside for a ✓ (it stood off P, under edge B–C)
+        unique = {tuple(np.round(np.asarray(ring)[:, :2], 6).ravel()): ring for ring in rings}
+        return sorted(unique.values(),
+                      key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
 
     def clear_labels(self, *lines: Mobject, for_now: bool = False,
                      apart: float = MARGIN, aside: bool = False,

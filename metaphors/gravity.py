@@ -19,7 +19,6 @@ import shapely
 from manim import (
     DOWN,
     Arrow,
-    Circle,
     Dot,
     FadeIn,
     FadeOut,
@@ -41,7 +40,7 @@ from metaphors.board import Board, Playable, animate
 from metaphors.drawing import Frame
 from metaphors.layout import METAPHOR
 from metaphors.performing import Performances, act, performs
-from metaphors.picture import _UPRIGHT, _movers, again, turn_to
+from metaphors.picture import _UPRIGHT, FIXED, _movers, again, turn_to
 from metaphors.tags import tag
 from rendering.turn import Turn
 from rendering.typeset import text
@@ -102,9 +101,15 @@ def gravity_turn(board: Board, beat: GravityTurn) -> None:
 def drop(board: Board, beat: Drop) -> None:
     """A ball hangs from V on its band, falls straight down and hits the boundary. A fall
     too short to be seen (:data:`FALL_LEAST`; the counterexample's, with E 2.7 % of the
-    frame's height above B–C, fell 0.3 units) is shown in a close-up: the picture zooms onto it first, and back once the ball has hit."""
+    frame's height above B–C, fell 0.3 units) is shown in a close-up: the picture zooms onto
+    the whole moment — the fall, the slide to where the ball comes to rest, the band — and
+    stays close until the claim is judged (:func:`metaphors.picture.upright` zooms back out).
+    It zoomed back out as soon as the ball hit, before the slide: the band staying straight
+    and the claim beside edge B–C were a faint line 60 × 70 px wide (chapter 3 at 65-70 s).
+    Where the ball hits flashes; no ring stays there (a mark nobody named, round E's dot)."""
     v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
-    close = CloseUp.onto(board, v, hit)
+    rest = hit if beat.rest is None else board.at(beat.rest)
+    close = CloseUp.onto(board, v, hit, rest)
     ball = _ball(board, v)
     hangs: list[Playable] = [FadeIn(ball, scale=0.5)]
     if close is not None:
@@ -118,10 +123,11 @@ def drop(board: Board, beat: Drop) -> None:
         again(board, zooming, *close.zoom_in(), animate(ball).shift(close.zoomed(v) - v),
               run_time=1.2)
         close.zoomed_in()
+        board.close_up = close
         v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
     band = _band(board, [v, v])
-    # the labels the fall would hide move aside first: a label under the ball's path or the
-    # hit ring hid the very moment; they go back when the ball does (metaphors.picture.upright)
+    # the labels the fall would hide move aside first: a label under the ball's path or where
+    # it hits hid the very moment; they go back when the ball does (metaphors.picture.upright)
     moves = board.clear_labels(*fall_shapes(v, hit), for_now=True)
     board.keep("band", band)
     board.keep("ball", ball)
@@ -130,16 +136,11 @@ def drop(board: Board, beat: Drop) -> None:
     board.scene.bring_to_front(ball)
     again(board, beat, animate(ball, rate_func=rush_into).move_to(hit),
            Transform(band, _band(board, [v, hit]), rate_func=rush_into), run_time=1.0)
-    mark = tag(Circle(radius=HIT_RADIUS, color=board.theme.argument, stroke_width=board.theme.stroke)
-               .move_to(hit), "result", "hit")
-    board.keep("hit", mark)
     board.scene.bring_to_front(ball)
-    again(board, beat, FadeIn(mark), Flash(hit, color=board.theme.argument, flash_radius=0.35),
-           run_time=0.5)
-    if close is not None:
-        board.scene.wait(0.6 * beat.pace)  # the hit seen up close
-        again(board, beat, *close.zoom_out(), run_time=1.2)
-        close.done()
+    # a burst within the room kept clear round the hit (:func:`fall_shapes`): its rays
+    # reached no label
+    again(board, beat, Flash(hit, color=board.theme.argument, flash_radius=HIT_FLASH,
+                             line_length=HIT_FLASH), run_time=0.5)
 
 
 #: the least fall, in scene units, drawn at its own size: 8 % of the frame's height (a shorter
@@ -150,6 +151,9 @@ CLOSE_WORDS = "A close-up: the ball falls only a short way"
 #: how far inside the board's box a vertex must stand, zoomed, to be shown in a close-up
 #: (its label beside it stays inside the box too)
 CLOSE_MARGIN = 0.45
+#: the room a close-up keeps round the fall and slide it frames, inside that margin: the
+#: ✓ beside the claim, the labels beside V and X
+CLOSE_ROOM = 0.35
 
 
 class CloseUp:
@@ -187,6 +191,7 @@ class CloseUp:
             fits = bool(np.all(at[:2] >= shrunk[0]) and np.all(at[:2] <= shrunk[1]))
             (self.shown if fits else self.hidden)[label] = marker
         self.outline, self.frame = board.outline, board.frame
+        self.before = {id(m) for m in (board.outline, *board.objects.values())}
         self.others = [m for m in _movers(board) if m is not board.outline
                        and not any(m is marker for marker in board.markers.values())]
 
@@ -219,15 +224,28 @@ class CloseUp:
             self.fragment, lambda m, a: m.become(self.drawn(start + a * (end - start))))
 
     @classmethod
-    def onto(cls, board: Board, v: np.ndarray, hit: np.ndarray) -> CloseUp | None:
-        """The close-up onto the fall from ``v`` to ``hit``, None when it is long enough."""
+    def onto(cls, board: Board, v: np.ndarray, hit: np.ndarray,
+             rest: np.ndarray | None = None) -> CloseUp | None:
+        """The close-up onto the fall from ``v`` to ``hit`` and the slide on to ``rest`` (scene
+        points), None when the fall is long enough. The zoom fits the three, with room for
+        their labels, in the board's box (at most :data:`ZOOM_MOST`), and carries their
+        middle to the box's centre: a zoom and a shift, which is a zoom about one fixed
+        point (the pivot)."""
         fall = float(np.linalg.norm(hit - v))
         if fall >= FALL_LEAST or fall < 1e-9:
             return None
-        zoom = min(FALL_LEAST / fall, ZOOM_MOST)
+        spots = np.array([v, hit, hit if rest is None else rest], dtype=float)[:, :2]
+        low, high = spots.min(axis=0), spots.max(axis=0)
+        box = board.box
+        room = np.array([box.width, box.height]) - 2 * (CLOSE_MARGIN + CLOSE_ROOM)
+        zoom = min(ZOOM_MOST, *(room / np.maximum(high - low, 1e-9)))
+        zoom = max(zoom, 1.01)
         if abs(board.frame.angle) < 1e-9 and abs(zoom * board.frame.zoom - 1) < 1e-6:
             zoom *= 1.01  # a pure shift, which a frame cannot hold: a hair more zoom
-        return cls(board, (v + hit) / 2, zoom)
+        middle, centre = (low + high) / 2, np.array(box.center[:2], dtype=float)
+        # the point that the zoom keeps fixed, f + zoom (middle − f) = centre
+        pivot = (centre - zoom * middle) / (1 - zoom)
+        return cls(board, np.array([*pivot, 0.0]), zoom)
 
     def zoomed(self, q: np.ndarray) -> np.ndarray:
         return self.pivot + self.zoom * (np.asarray(q, dtype=float) - self.pivot)
@@ -276,8 +294,17 @@ class CloseUp:
         for label, m in self.shown.items():
             anims.append(animate(m).shift(back.to_scene(board.where[label])
                                           - board.vertex(label)))
-        anims += [Turn(board.objects[key], 0.0, self.pivot, 1 / self.zoom, upright=_UPRIGHT)
-                  for key in ("ball", "band", "hit") if key in board.objects]
+        # the ✓ or ✗ seen up close beside its claim goes as the picture zooms back: kept at
+        # its size, it landed on the claim, the needle of P it stood in shrunk under it
+        # (chapter 3's ✓ on EC at 76-78 s); the claim's colour and the words still judge it
+        if id(board.objects.get("verdict")) not in self.before:
+            anims += board.drop("verdict")
+        # what was drawn up close (the ball, the band, what it swept, the claim)
+        # zooms back with the picture; not what stood before (faded, or the outline itself:
+        # ear clipping's fruit, which the close-up's drawing stood in for, is not zoomed)
+        anims += [Turn(m, 0.0, self.pivot, 1 / self.zoom, upright=_UPRIGHT)
+                  for key, m in board.objects.items()
+                  if key not in FIXED and id(m) not in self.before]
         board.frame = back
         return anims
 
@@ -285,16 +312,20 @@ class CloseUp:
         """The picture is whole again: the close-up's fragment goes."""
         self.board.outline = self.outline
         self.board.scene.replace(self.fragment, self.outline)
+        self.board.close_up = None
 
 
-#: the hit ring's radius, and the room a label keeps round it (the ball's radius beyond it)
+#: the reach of the spot where the ball hits (its burst), and the room a label keeps round
+#: it (the ball's radius beyond it); the burst's radius and rays
 HIT_RADIUS, HIT_ROOM = 0.2, 0.14
+HIT_FLASH = 0.15
 
 
 def fall_shapes(v: np.ndarray, hit: np.ndarray) -> tuple[Mobject, ...]:
     """What the ball's fall covers, as lines a label must keep clear of
     (:meth:`Board.clear_labels`): its path from V to the hit, widened by the ball on either
-    side, and a square round the hit ring with its diagonals (a label inside it is covered)."""
+    side, and a square round where it hits with its diagonals (a label inside it is covered
+    by the ball and its burst)."""
     side = np.array([BALL_RADIUS + 0.04, 0.0, 0.0])
     return (Line(v - side, hit - side), Line(v + side, hit + side),
             *_square(hit, HIT_RADIUS + HIT_ROOM))
@@ -309,18 +340,22 @@ def slide(board: Board, beat: Slide) -> None:
     taut at every moment: it wraps each vertex it meets (:func:`story.analysis.wraps`) the
     moment its straight line would leave P, one play per piece of the slide, drawn in every
     frame as :func:`story.analysis.band_at` has it (what tests/test_gravity_band.py samples).
-    From the first vertex it wraps the caption says the band snags it: the bend came 1.2 s
-    before its words (chapter 3 at 28.3 s), and waits for them now."""
-    ball, band, mark = (board.objects.get(k) for k in ("ball", "band", "hit"))
+    What the band has swept so far is shaded as it goes, under words that say so (it came
+    after the slide, unnamed, chapter 3 at 30.5 s), and stays till the verdict. From the
+    first vertex it wraps the caption says the band snags it, and the row that says so is lit
+    (the slide's stayed lit 0.9 s under "The rubber band snags H": the gravity scene at 12 s)."""
+    ball, band = board.objects.get("ball"), board.objects.get("band")
     # it landed on a vertex: nothing to slide (the ball and band come together, from `drop`)
-    if ball is None or band is None or mark is None or beat.slide is None:
+    if ball is None or band is None or beat.slide is None or beat.slide.hit is None:
         board.play(beat, run_time=0.8)
         return
     # in P's units, as the log has them: the band's corners are P's vertices, exactly
-    v, hit, x = (board.frame.from_scene(band.get_start()),
-                 board.frame.from_scene(mark.get_center()), beat.slide.to)
+    v, hit, x = (board.frame.from_scene(band.get_start()), beat.slide.hit, beat.slide.to)
     pieces = wraps(v, hit, x, list(board.where.values()))
     ends = [t for t, _ in pieces[1:]] + [1.0]
+    swept = _swept(board, pieces, hit, x, 0.0)
+    board.keep("swept", swept)
+    board.scene.add(swept)
     for k, ((start, corners), end) in enumerate(zip(pieces, ends, strict=True)):
         to = board.at(band_at(pieces, hit, x, end)[-1])
         moving = animate(ball, rate_func=linear).move_to(to)
@@ -329,19 +364,54 @@ def slide(board: Board, beat: Slide) -> None:
             moving = moving.set_fill(opacity=RESTING)
             # and X's label moves off it (the counterexample's C touched it), back with it
             moves = board.clear_labels(*ball_shapes(to), for_now=True)
-        anims = (moving, _stretching(board, band, pieces, hit, x, (start, end)), *moves)
-        said = beat if k == 0 else _snagging(beat, _label_at(board, corners[1]))
+        anims = [moving, _stretching(board, band, pieces, hit, x, (start, end)),
+                 _sweeping(board, swept, pieces, hit, x, (start, end)), *moves]
+        said = beat
+        if k > 0:  # the band wraps a vertex: it snags it, and the vertex pulses as it does
+            y = _label_at(board, corners[1])
+            said = _snagging(board, beat, y)
+            if k == 1 and y in board.markers:
+                anims.append(Indicate(board.markers[y], color=board.theme.argument))
         board.play(said, *anims, run_time=max(SLIDE_SECONDS * (end - start), 0.1))
     # the ball rests at X under X's dot and label: on top it hid the vertex it names
     if beat.result in board.markers:
         board.scene.bring_to_front(board.markers[beat.result])
 
 
-def _snagging(beat: Slide, y: str) -> Slide:
-    """The slide's beat from the moment its band wraps ``y``: the words say it snags Y, and
-    Y turns amber, the claim to be, then (it turned amber a second later, with the band's
-    last shape: chapter 3 at 31 s)."""
-    return replace(beat, caption=f"The rubber band snags {y}", roles={**beat.roles, y: "argument"})
+def _swept(board: Board, pieces: Sequence, hit: Point, x: Point, t: float) -> VMobject:
+    """What the band has swept by time ``t`` of the slide: V, where the ball hit, the ball,
+    and back along the band (by the vertices it wraps), shaded under the picture."""
+    corners = band_at(pieces, hit, x, t)
+    ring = [corners[0], hit, *corners[:0:-1]]
+    shape = MPolygon(*[board.at(c) for c in ring], stroke_width=0, fill_color=board.theme.band,
+                     fill_opacity=SWEPT_OPACITY)
+    return tag(shape, "argument", "swept").set_z_index(-1)
+
+
+def _sweeping(board: Board, swept: Mobject, pieces: Sequence, hit: Point, x: Point,
+              span: tuple[float, float]) -> UpdateFromAlphaFunc:
+    """The swept region redrawn in every frame of a piece of the slide, with the band."""
+    start, end = span
+
+    def draw(mobject: Mobject, alpha: float) -> None:
+        mobject.become(_swept(board, pieces, hit, x, start + alpha * (end - start)))
+
+    return UpdateFromAlphaFunc(swept, draw, rate_func=linear)
+
+
+#: the swept region's fill
+SWEPT_OPACITY = 0.18
+
+
+def _snagging(board: Board, beat: Slide, y: str) -> Slide:
+    """The slide's beat from the moment its band wraps ``y``: the words say it snags Y, the
+    row that says so is lit, and Y turns amber, the claim to be, then (it turned amber a
+    second later, with the band's last shape: chapter 3 at 31 s)."""
+    row = next((k for k, r in enumerate(board.panel.pseudocode) if "band_snag" in r.calls),
+               beat.row)
+    return replace(beat, caption=f"The rubber band snags {y}", row=row,
+                   seq=beat.seq if beat.snag_seq is None else beat.snag_seq,
+                   roles={**beat.roles, y: "argument"})
 
 
 def _stretching(board: Board, band: Mobject, pieces: Sequence, hit: Point, x: Point,
@@ -385,8 +455,8 @@ def _xy(p: np.ndarray) -> tuple[float, float]:
 
 
 def snag(board: Board, beat: Snag) -> None:
-    """The band swept the triangle V–hit–X: it snags the first vertex Y there, or stays
-    straight."""
+    """The band swept the triangle V–hit–X (shaded as it went, :func:`slide`): it snags the
+    first vertex Y there, which pulses, or stays straight."""
     theme = board.theme
     band = board.objects.get("band")
     if beat.band is None:  # the ball landed on a vertex: the band never moved off the drop line
@@ -397,29 +467,17 @@ def snag(board: Board, beat: Snag) -> None:
                        run_time=0.8)
         return
     corners = [board.at(p) for p in beat.band.corners]
-    hit = board.objects.get("hit")
-    swept = None
-    if hit is not None and len(corners) >= 2:
-        # V, the hit, X and back by Y: what the band swept, never the part behind Y
-        swept = tag(MPolygon(corners[0], _scene_point(hit), *corners[:0:-1], stroke_width=0,
-                             fill_color=theme.band, fill_opacity=0.18), "argument", "swept")
-        swept.set_z_index(-1)
-        board.play(beat, FadeIn(swept), run_time=0.7)
     bent = _band(board, corners)
     if band is None:
         board.keep("band", bent)
-        again(board, beat, FadeIn(bent), run_time=0.8)
-    elif len(corners) == 3:  # the claim to be (amber): green is the verdict's
-        y = corners[1]
-        again(board, beat, Transform(band, bent),
-              Flash(y, color=theme.argument, flash_radius=0.4), run_time=1.2)
+        board.play(beat, FadeIn(bent), run_time=0.8)
+    elif len(corners) == 3:
+        # the claim to be (amber), pulsed as the band wrapped it (:func:`slide`): no burst,
+        # whose rays crossed H's label (chapter 3 at 31 s)
+        board.play(beat, Transform(band, bent), run_time=1.2)
     else:
-        again(board, beat, Transform(band, bent), Indicate(band, color=theme.argument,
-                                                            scale_factor=1.0), run_time=1.0)
-    if swept is not None:
-        again(board, beat, FadeOut(swept), run_time=0.4)
-
-
+        board.play(beat, Transform(band, bent), Indicate(band, color=theme.argument,
+                                                         scale_factor=1.0), run_time=1.0)
 
 
 # --- what gravity reads from the log ----------------------------------------------------------------
@@ -441,6 +499,7 @@ class Drop(Beat):
 
     result: str
     drop: BallDrop
+    rest: Point | None = None  # where the ball comes to rest after its slide (None: no slide)
 
 
 @beat_kind("slide")
@@ -450,6 +509,9 @@ class Slide(Beat):
 
     result: str
     slide: BallSlide | None
+    #: the seq of the band's snag after the slide: from the moment the band wraps a vertex
+    #: the slide speaks as the snag does (its row lit, named as the snag names it)
+    snag_seq: int | None = None
 
 
 @beat_kind("snag")
@@ -466,8 +528,9 @@ def read_turn(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     # the words name V, the vertex the turn is about: its colour, blue, is said with them
     # (chapter 4's G, red as no ear, turned blue under "…so that gravity points down")
     v = walk.ref(call, "v")
-    yield walk.call_beat(GravityTurn, f"Turn the polygon so that gravity points down into P "
-                         f"at {v}", call, ret,
+    # the arrow that comes with these words is named by them (an unnamed "g" stood there)
+    yield walk.call_beat(GravityTurn, f"Turn the polygon so that gravity (g) points down "
+                         f"into P at {v}", call, ret,
                          down=point(g["down"]), tilt=g["tilt"], turn_picture=g["turn_picture"],
                          polygon=walk.ref(call, "polygon"))
 
@@ -479,7 +542,19 @@ def _hit(walk: Walk, call: Event) -> dict[str, Any]:
 
 def _drop(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     return {"drop": BallDrop(vertex=walk.ref(call, "v"),
-                             hit=point(walk.entered_after(ret, "hit")["at"]))}
+                             hit=point(walk.entered_after(ret, "hit")["at"])),
+            "rest": _rest(walk, ret)}
+
+
+def _rest(walk: Walk, ret: Event) -> Point | None:
+    """Where the ball dropped at ``ret`` comes to rest: the vertex the slide after it returns
+    (None: it landed on a vertex, or no slide follows)."""
+    for later in walk.log.events[ret.seq + 1:]:
+        if later.kind == "return" and later.name == "slide_to_vertex":
+            return point(walk.root_points()[walk.result_ref(later)])
+        if later.kind == "return" and later.name == "drop_ball":
+            break
+    return None
 
 
 def _slide(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
@@ -487,9 +562,12 @@ def _slide(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
     ball resting on it marks it (lit green, what the call gives, it turned amber a second
     later as the snag's input, chapter 3 at 30 s, and white at the claim — three colours,
     none said); V stays blue, the band hanging from it (:meth:`Board.held_roles`)."""
-    slid = "vertex" not in _hit(walk, call)
-    return {"slide": BallSlide(to=point(walk.root_points()[walk.result_ref(ret)]))
-            if slid else None, "roles": {}}
+    hit = _hit(walk, call)
+    snag = next((e.seq for e in walk.log.events[ret.seq + 1:]
+                 if e.kind == "call" and e.name == "band_snag"), None)
+    return {"slide": BallSlide(to=point(walk.root_points()[walk.result_ref(ret)]),
+                               hit=point(hit["at"]))
+            if "vertex" not in hit else None, "roles": {}, "snag_seq": snag}
 
 
 def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -509,18 +587,30 @@ def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     yield walk.call_beat(Snag, caption, call, ret, band=band, snagged=snagged, roles=roles)
 
 
+def read_v(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """V, said as the row says it: the first reflex vertex after B, the left-most vertex
+    picked just before (B was never named: chapter 3)."""
+    b = next((walk.result_ref(e) for e in reversed(walk.log.events[:call.seq])
+              if e.kind == "return" and e.name == "leftmost_vertex" and e.result), None)
+    after = f"the first reflex vertex after {b}" if b else "a reflex vertex"
+    yield from read_pick(f"{{result}} is {after}: the ball will hang there",
+                         "No reflex vertex: the polygon is convex", role=V_ROLE)(walk, call, ret)
+
+
 #: V's one role through the run: the vertex the ball hangs from, blue from its pick to its
 #: claim (it was green as picked, what the call gives, and blue a second later as the
 #: polygon turned, unsaid: chapter 3 at 20 s)
 V_ROLE = "called"
 READS: Mapping[str, Reading] = {
-    "reflex_vertex": read_pick("{result} is a reflex vertex: the ball will hang there",
-                               "No reflex vertex: the polygon is convex", role=V_ROLE),
+    "reflex_vertex": read_v,
     "straight_vertex": read_pick("{result} is a straight vertex: the ball hangs there instead",
                                  role=V_ROLE),
     "gravity_direction": read_turn,
     "drop_ball": read_step(Drop, "The ball falls until it hits the boundary", _drop),
-    "slide_to_vertex": read_step(Slide, "It slides down the edge to {result}", _slide),
+    # the shading that comes with the slide is named by its words (it came unnamed, and was
+    # explained only 10 s later: chapter 3 at 30.5 s)
+    "slide_to_vertex": read_step(Slide, "It slides down the edge to {result}; the band sweeps "
+                                 "the shaded part", _slide),
     "band_snag": read_snag,
 }
 PERFORMS: Performances = performs(act(GravityTurn, gravity_turn), act(Drop, drop),

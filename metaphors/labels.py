@@ -478,6 +478,12 @@ def off_the_fill(ring: Sequence[np.ndarray], labels: Mapping[str, tuple[np.ndarr
     return moved
 
 
+def seen_by(centres: np.ndarray, at: np.ndarray, edges: Sequence[Segment]) -> np.ndarray:
+    """Which of ``centres`` (an n × 2 array) the vertex ``at`` sees across none of ``edges``
+    (:func:`_seen`)."""
+    return _seen(np.asarray(centres, dtype=float)[:, :2], np.asarray(at, dtype=float)[:2], edges)
+
+
 def seen_from(at: np.ndarray, centre: np.ndarray, edges: Sequence[Segment]) -> bool:
     """Whether a label centred at ``centre`` is seen from its vertex ``at`` across none of
     ``edges`` (:func:`_seen`)."""

@@ -85,6 +85,11 @@ WIDE_TOP, WIDE_FOOT, WIDE_GAP, WIDE_BUFF = 2.85, -3.8, 0.2, 0.15
 COMPARE_Y, COMPARE_HEIGHT, COMPARE_COUNT_Y = -0.45, 4.6, 2.65
 
 
+def _on_run(segment) -> bool:
+    """Whether ``segment`` plays on the picture the run before it left."""
+    return isinstance(segment, Analysis) and segment.on_run
+
+
 def inner_edges(polygon, triangles: Sequence[TriangleIndices]) -> list[tuple[int, int]]:
     """The triangles' sides that are no edge of P: the triangulation's diagonals.
 
@@ -226,8 +231,13 @@ class LectureScene(TraceScene):
     def construct(self) -> None:
         self.camera.background_color = self.theme.background  # type: ignore[assignment]  # manim's setter is typed ManimColor, and parses any colour
         self.next_section(self.chapter_title)
-        for segment in self.chapter_segments():
-            self.clear_screen()
+        segments = self.chapter_segments()
+        for k, segment in enumerate(segments):
+            # an analysis on the run before it goes on from its last picture: the run keeps
+            # it (not turned back, its ball and band kept), and the screen is not cleared
+            self.keep_end = k + 1 < len(segments) and _on_run(segments[k + 1])
+            if not _on_run(segment):
+                self.clear_screen()
             self.play_segment(segment)
         captions_of(self).hold()  # the last caption is read within the last step
         end_steps(self)

@@ -18,7 +18,7 @@ from collections.abc import Callable, Sequence
 from itertools import pairwise
 
 import numpy as np
-from manim import Dot, Line, Mobject, VGroup, VMobject
+from manim import DOWN, Arrow, Dot, Line, Mobject, VGroup
 from manim import Polygon as MPolygon
 
 from geometry import gravity as gravity_steps
@@ -41,10 +41,12 @@ from metaphors.drawing import (
     polygon_mobject,
 )
 from metaphors.figure_caption import figure_caption
+from metaphors.figure_steps import comes_with
 from metaphors.fruit import TEST_OPACITY, TEST_STROKE, fruit_style, good_style
 from metaphors.labels import LABEL_HALO, drawn_edges, measured_markers, placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import Theme
+from rendering import typeset
 from story.beats import Hole
 from usercode.heuristic import load_user_heuristic, run_heuristic
 
@@ -114,34 +116,36 @@ def _dot(frame: Frame, p, colour: str, role: str, name: str) -> Mobject:
 
 def _gravity(polygon: Polygon, heuristic: str, box: Box,
              theme: Theme) -> tuple[Frame, list[Mobject], list[Mobject]]:
-    """P turned so that gravity points down; V, the ball's fall to an edge and its slide to X,
-    the band from V snagging Y, and the claim in green."""
+    """The rule's set-up, not its answer: P turned so that gravity points down (the arrow
+    beside it, with the line that says to turn P) and the ball hanging at V (with the line
+    that names V, and the words "V = C" under it). The fall, the slide, the band and the
+    claim are the run's to show, after the card: the card drew them all and said the claim
+    before the run played the same picture (chapter 3: the same example three times)."""
     v = gravity_steps.reflex_vertex(polygon) if polygon.n > 3 else None
     if v is None:  # convex: the ball has no reflex vertex to hang from
         frame = Frame(polygon.points, *box)
         said = "no reflex vertex: no ball to drop"
         return frame, [], [figure_caption(box, theme, (said, theme.ink))]
     g = gravity_steps.gravity_direction(polygon, v)
-    hit = gravity_steps.drop_ball(polygon, v, g)
-    x = gravity_steps.slide_to_vertex(polygon, hit, g)
-    y = gravity_steps.band_snag(polygon, v, hit, x)
     frame = TurnedFrame(polygon.points, g.turn_picture, *box)
-    end = y if y is not None else x
-    fall = _line(frame, v.point, hit.at, theme.gravity, theme.thin_stroke, None, "figure:fall")
-    slide = _line(frame, hit.at, x.point, theme.ball, theme.stroke, None, "figure:slide")
-    band = VMobject(stroke_color=theme.band, stroke_width=theme.stroke)
-    band.set_points_as_corners(frame.many([v.point, *([y.point] if y else []), x.point]))
-    claim = _line(frame, v.point, end.point, theme.result, theme.stroke * 1.6, "result",
-                  "figure:claim")
-    ball = tag(Dot(frame.to_scene(x.point), radius=0.12, color=theme.ball,
+    ball = tag(Dot(frame.to_scene(v.point), radius=0.12, color=theme.ball,
                    stroke_color=theme.ink, stroke_width=1.5), "argument", "figure:ball")
-    snag = f"Y = {y.label}" if y else "the band straight"
-    words = f"V = {v.label}, X = {x.label}, {snag}: claim {v.label}{end.label}"
-    # V in the run's colour for it, blue from its pick to its claim (amber here, it was
-    # blue a moment later in the run on the same polygon)
-    return frame, [fall, slide, tag(band, "argument", "figure:band"), claim], [
-        _dot(frame, v.point, theme.called, "called", "figure:step"), ball,
-        figure_caption(box, theme, (words, theme.result))]
+    # V in the run's colour for it, blue from its pick to its claim
+    return frame, [comes_with(_down_arrow(box, theme), "Turn")], [
+        comes_with(_dot(frame, v.point, theme.called, "called", "figure:step"), "V"),
+        comes_with(ball, "V"),
+        comes_with(figure_caption(box, theme, (f"V = {v.label}: the ball hangs here",
+                                               theme.ink)), "V")]
+
+
+def _down_arrow(box: Box, theme: Theme) -> Mobject:
+    """Gravity's arrow, "g", at the top left of the figure's box, pointing down."""
+    (x, y), width, height = box
+    left, top = x - width / 2 - 0.3, y + height / 2
+    arrow = Arrow((left, top, 0), (left, top - 1.0, 0), buff=0, color=theme.gravity,
+                  stroke_width=4, max_tip_length_to_length_ratio=0.3)
+    g = typeset.text("g", font=theme.font, size=theme.label_size + 4, colour=theme.gravity)
+    return tag(VGroup(arrow, g.next_to(arrow, DOWN, buff=0.08)), None, "figure:gravity")
 
 
 # --- prune and search ------------------------------------------------------------------------

@@ -24,9 +24,11 @@ import numpy as np
 from manim import (
     LEFT,
     Animation,
+    Create,
     Dot,
     FadeIn,
     FadeOut,
+    Line,
     Mobject,
     Rectangle,
     VGroup,
@@ -34,7 +36,7 @@ from manim import (
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import new_colour
+from metaphors.labels import new_colour, seen_by
 from metaphors.layout import (
     PANEL_CALL_Y,
     PANEL_CODE,
@@ -95,7 +97,7 @@ class Panel:
         self.code_lines = source_of(shown) if shown else ()
         self.pseudocode: tuple[PseudocodeRow, ...] = ()
         #: (seq, rows): the rows from the beat of that seq on (:meth:`show_pseudocode`)
-        self.later: tuple[int, tuple[PseudocodeRow, ...]] | None = None
+        self.later: list[tuple[int, tuple[PseudocodeRow, ...]]] = []
         self.code_scale = 1.0  # how much the rows were shrunk to fit the box's width (never its height)
         # the source: its rows, the window of lines shown (None: all of them), and each
         # shown line's row mobjects and the middle of their slots
@@ -109,6 +111,8 @@ class Panel:
         self.line_y: list[float] = []
         # (row, the light behind it, the row's copy in ink over the grey row)
         self.lit: tuple[int, Rectangle, Mobject] | None = None
+        #: the claim drawn on the panel's polygon (:meth:`claim`), if any
+        self.claimed: Mobject | None = None
         self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
         self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         #: the text of the call line on screen (a beat of the same call leaves it up)
@@ -144,15 +148,16 @@ class Panel:
         self.code_lines = tuple((int(number), str(text)) for number, text in code)
         self.code = self._code_block()
 
-    def show_pseudocode(self, rows, later: tuple[int, tuple[PseudocodeRow, ...]] | None = None
-                        ) -> None:
+    def show_pseudocode(self, rows,
+                        later: Sequence[tuple[int, tuple[PseudocodeRow, ...]]] = ()) -> None:
         """Show these pseudocode rows (:class:`story.pseudocode.PseudocodeRow`) instead of the source
         (before the panel is on screen); each beat's ``row`` then lights one of them.
-        ``later``: from the beat of this seq on, these rows instead (the run has picked the
-        vertex they name: :func:`story.storyboard.staged_pseudocode`)."""
+        ``later``: (seq, rows) in order, from the beat of that seq on those rows instead (the
+        run has picked the vertex they name, or tied a placeholder to its vertex:
+        :func:`story.storyboard.pseudocode_stages`)."""
         self.mode = PSEUDOCODE
         self.pseudocode = tuple(rows)
-        self.later = later
+        self.later = list(later)
         self.code = self._pseudocode_block()
         if self.code_box.rect[3] > PANEL_CODE.rect[3] + 1e-9:  # the rows need the room
             self._draw_polygon(self.code_box.rect[3] - PANEL_CODE.rect[3])
@@ -280,18 +285,31 @@ class Panel:
         for k, (row, step) in enumerate(zip(rows, self.pseudocode, strict=True)):
             row.move_to((PSEUDOCODE_INDENT * step.depth, -k * pitch, 0), aligned_edge=LEFT)
             row.shift((0, offsets[k], 0))
-        scale = min(1.0, self.code_box.width / rows.width)
+        # as wide as its widest row will be: a row the run renames later ("claim VY = CH, or
+        # VX …") keeps inside the box too (it ran off the frame's edge, centred for the rows
+        # it replaced)
+        widest = max([rows.width, *(indent + width for indent, width in
+                                    self._later_widths(font, size))])
+        scale = min(1.0, self.code_box.width / widest)
         if scale < 1.0:
-            rows.scale(scale)
+            rows.scale(scale, about_point=rows.get_left())
         self.code_scale = scale
         # the block's lines, not its ink, centred in the box (its ink is higher where its
         # last row has no descenders)
         first_line = rows[0].get_y() - scale * offsets[0]
         middle = self.code_box.y + scale * pitch * (len(rows) - 1) / 2
-        rows.shift((self.code_box.x - rows.get_x(), middle - first_line, 0))
+        rows.shift((self.code_box.x - scale * widest / 2 - rows.get_left()[0],
+                    middle - first_line, 0))
         self.light_height = pitch * scale - 0.04
         self.line_y = [row.get_y() - scale * d for row, d in zip(rows, offsets, strict=True)]
         return rows
+
+    def _later_widths(self, font: str, size: float) -> list[tuple[float, float]]:
+        """The indent and width of every row the run renames later (:attr:`later`)."""
+        shown = {row.text for row in self.pseudocode}
+        texts = {row.text for _, rows in self.later for row in rows} - shown
+        return [(PSEUDOCODE_INDENT * PseudocodeRow(t).depth,
+                 typeset.text(t.strip() or " ", font=font, size=size).width) for t in sorted(texts)]
 
     def follow_roles(self, beat: Beat, at_rest: bool = False,
                      focus: frozenset[str] | None = None) -> list[Animation]:
@@ -349,9 +367,10 @@ class Panel:
         typeset anew where the old one stood (a cut); a lit row that changed is lit again,
         its old light and copy cut too (:meth:`cut_outgoing`). No animation: none is
         returned (a list, as the panel's other steps give)."""
-        if self.later is None or beat.seq < self.later[0]:
+        due = [rows for seq, rows in self.later if seq <= beat.seq]
+        if not due:
             return []
-        rows, self.later = self.later[1], None
+        rows, self.later = due[-1], [stage for stage in self.later if stage[0] > beat.seq]
         font, size = self.theme.font, self.theme.pseudocode_size
         for k, (old, new) in enumerate(zip(self.pseudocode, rows, strict=True)):
             if old.text == new.text:
@@ -421,6 +440,25 @@ class Panel:
         # place are unreadable (issue 22: never two texts over each other)
         self.outgoing_call, self.call = self.call, new
         return [FadeIn(new)]
+
+    def claim(self, u: str, v: str, role: str) -> Animation:
+        """The claim ``uv`` drawn on the panel's polygon in ``role``'s colour (amber until
+        judged): where the picture is turned the panel shows P as it stands, and it coloured
+        the claim's ends only, never drew the claim (chapter 3's CH)."""
+        at = dict(zip(self.polygon.labels, self.frame.many(self.polygon.points), strict=True))
+        line = tag(Line(at[u], at[v], color=self.theme.role_colour(role),
+                        stroke_width=self.theme.stroke), role, "panel:claim")
+        self.claimed = line.set_z_index(self.outline.z_index + 0.5)
+        return Create(line)
+
+    def judge_claim(self, role: str) -> list[Animation]:
+        """The panel's claim, if drawn, recoloured as judged (green or red), once: kept on,
+        divide and conquer's DG (drawn on a turned run's panel) was recoloured with every
+        later verdict, FD's and the summaries', that had no claim on the panel."""
+        line, self.claimed = self.claimed, None
+        if line is None:
+            return []
+        return [tag(line, role).animate.set_color(self.theme.role_colour(role))]
 
     def cut_outgoing(self) -> list[Mobject]:
         """The call line being replaced and a renamed row's old light, once (the board takes
@@ -600,8 +638,11 @@ def _tiers(k: int, points: list[tuple[float, float]], away: float, width: float,
                      distances, size=(width, height))
     wide = clear(centres, (width, height), fixed, LABEL_CLEARANCE, bounds)
     narrow = clear(centres, (width, height), fixed, LABEL_NARROW, bounds)
-    tiers: list[list[tuple[tuple[float, float], Rect]]] = [[], [], []]
-    for (x, y), roomy, tight in zip(centres.tolist(), wide, narrow, strict=True):
+    # seen from its dot, across no edge: the counterexample's E stood below edge B–C, cut
+    # off from its vertex above it (chapter 3 at 52 s)
+    seen = seen_by(centres, np.array(points[k]), fixed.segments)
+    tiers: list[list[tuple[tuple[float, float], Rect]]] = [[], [], [], [], [], []]
+    for (x, y), roomy, tight, sees in zip(centres.tolist(), wide, narrow, seen, strict=True):
         rect = (x - width / 2, y - height / 2, x + width / 2, y + height / 2)
         own, others = _gap(rect, points[k]), [q for j, q in enumerate(points) if j != k]
         if not tight or not all(_gap(rect, q) > own for q in others):
@@ -610,8 +651,10 @@ def _tiers(k: int, points: list[tuple[float, float]], away: float, width: float,
                    for q in others)
         tier = 0 if mine and roomy else 1 if mine else 2 if roomy else None
         if tier is not None:
-            tiers[tier].append(((x, y), rect))
-    return tiers
+            tiers[tier if sees else tier + 3].append(((x, y), rect))
+    # a place across an edge only where its side of the edge has none (the counterexample's
+    # E, 0.1 over B–C in the panel, has no room there: it keeps its label)
+    return [tiers[0], tiers[1], tiers[2] + tiers[3] + tiers[4] + tiers[5]]
 
 
 def _gap(rect: Rect, point: tuple[float, float]) -> float:

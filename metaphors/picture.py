@@ -137,18 +137,37 @@ def _turned(turn: Turn, point: np.ndarray) -> np.ndarray:
     return np.array([*((point[:2] - turn.pivot) @ turn.matrix(1.0).T + turn.pivot), point[2]])
 
 
+#: the seconds a close-up holds its judged claim before it zooms back out
+CLOSE_HOLD = 1.2
 #: what a turned picture holds for one claim: the verdict takes it away (in this order)
-TRANSIENT = ("ball", "band", "hit", "gravity")
+TRANSIENT = ("ball", "band", "swept", "gravity")
 
 
 def upright(board: Board, beat: Beat) -> None:
-    """After a verdict: the turn's objects go and the picture turns back upright."""
+    """After a verdict: the turn's objects go, a close-up zooms back out (gravity's, which
+    stays close from the fall to the verdict) and the picture turns back upright. Not on a
+    board whose run an analysis goes on from (:attr:`Board.kept_end`): it shades what the
+    band swept on the picture as the run left it."""
+    if board.kept_end:
+        return
+    close = board.close_up
+    if close is not None:  # the ✓ seen up close, by the claim it judges, before all goes
+        board.scene.wait(max(0.1, CLOSE_HOLD * beat.pace))
     gone = board.drop(*TRANSIENT)
     if gone:
         again(board, beat, *gone, run_time=0.5)
+    if close is not None:
+        # the labels moved off the ball's way go back first, up close where they were moved:
+        # carried out with the zoom from their places for now, G's stood on H's (chapter 4)
+        back = board.labels_back()
+        if back:
+            again(board, beat, *back, run_time=0.4)
+        again(board, beat, *close.zoom_out(), run_time=1.2)
+        close.done()
     turn = turn_to(board, 0.0)
     if turn:
         again(board, beat, *turn, run_time=1.5)
     back = board.labels_back()  # the labels moved off the ball's way, once it is upright
     if back:
         again(board, beat, *back, run_time=0.4)
+

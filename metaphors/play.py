@@ -23,7 +23,7 @@ from metaphors.recorded import Recorded, captions_of, mark_step
 from story.beats import Beat, Claim, ShowPolygon, ShowTriangle
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
-from story.storyboard import run_call, staged_pseudocode
+from story.storyboard import pseudocode_stages, run_call
 from tracing import Log
 
 #: widest title (scene units) before it is shrunk to fit the frame
@@ -38,6 +38,7 @@ class BoardScene(Protocol):
     metaphor_box: Box
     panel: str
     call_line: bool  # False in the lecture: a run's steps are its rows and captions
+    keep_end: bool  # the run's last picture kept as it is: an analysis goes on from it
 
 
 def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
@@ -58,11 +59,12 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
                   # never turns (a turn keeps labels upright and places them again)
                   leaders=not any(isinstance(beat, GravityTurn) for beat in beats))
     board.panel.shows_calls = scene.call_line
+    board.kept_end = scene.keep_end
     board.panel.run_call = run_call(log)
     code = log.meta.get("code")
-    rows, picked, named = staged_pseudocode(log)
+    rows, stages = pseudocode_stages(log)
     if scene.panel == PSEUDOCODE and rows:
-        board.panel.show_pseudocode(rows, None if picked is None else (picked, named))
+        board.panel.show_pseudocode(rows, stages)
     elif code:
         board.panel.show_code(code)
     if board.title.width > TITLE_WIDTH:

@@ -115,6 +115,9 @@ class TraceScene(SpecScene, Recorded, Scene):
     #: whether the panel's call line shows each step's real call (``nearest_to(B, [D, E]) →
     #: D``): a programmer wants it; the lecture, which shows no code, turns it off
     call_line = True
+    #: whether the run's last picture is kept as it is (turned, its ball and band): the
+    #: lecture's analysis goes on from it (:attr:`metaphors.analysis.Analysis.on_run`)
+    keep_end = False
     #: whether divide and conquer's heuristic is a black box: each diagonal is asked for and
     #: comes out, none of the heuristic's steps shown (the overview, before any is taught)
     black_box = False

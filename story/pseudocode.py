@@ -27,7 +27,7 @@ True
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -40,6 +40,7 @@ __all__ = [
     "RESULT",
     "SOURCE",
     "PseudocodeRow",
+    "bound",
     "from_docstring",
     "from_json",
     "lit_row",
@@ -145,6 +146,54 @@ def named(pseudocode: Sequence[PseudocodeRow], vertices: dict[str, str],
         return "".join(swap.get(c, c) for c in word) if set(word) <= set(vertices) else word
 
     return tuple(PseudocodeRow(_NAME.sub(rename, row.text), row.calls) for row in pseudocode)
+
+
+def _tie(text: str, placeholder: str, label: str) -> str:
+    """``text`` with its first ``placeholder`` tied to ``label``: ``V = …`` → ``V = C, …``,
+    ``… X`` → ``… X = G``."""
+    def tied(found: re.Match[str]) -> str:
+        return f"{placeholder} = {label}, " if found.group(1) else f"{placeholder} = {label}"
+
+    return re.sub(rf"\b{placeholder}\b( = )?", tied, text, count=1)
+
+
+def bound(pseudocode: Sequence[PseudocodeRow], vertices: Mapping[str, str],
+          defined: Mapping[str, str], labels: Iterable[str],
+          claim: tuple[str, str] | None = None) -> tuple[PseudocodeRow, ...]:
+    """The rows tying a placeholder that is no label on screen (gravity's V, X, Y) to the
+    vertex the run gave it (``vertices``: placeholder → label), in the row that gives it
+    (the row covering the call ``defined[placeholder]``): ``V = the first…`` says ``V = C,
+    the first…``, ``to a vertex X`` says ``to a vertex X = G``; and the row covering the
+    ``claim`` (its two labels, once made) ties the name of the claim to it, ``claim VY = CH``.
+    The card and the rows say V, X, Y; the picture says C, G, H: the rows said only the
+    letters, never which vertex each was (chapter 3). Placeholders on screen are
+    :func:`named`'s.
+
+    >>> rows = (PseudocodeRow("V = the first reflex vertex", ("reflex_vertex",)),
+    ...         PseudocodeRow("it slides to a vertex X", ("slide_to_vertex",)),
+    ...         PseudocodeRow("claim VY, or VX if straight", ("claim",)))
+    >>> got = bound(rows, {"V": "E", "X": "C"}, {"V": "reflex_vertex", "X": "slide_to_vertex"},
+    ...             "ABCDE", ("E", "C"))
+    >>> [r.text for r in got]
+    ['V = E, the first reflex vertex', 'it slides to a vertex X = C', 'claim VY, or VX = EC if straight']
+    """
+    shown = set(labels)
+    tied = {k: v for k, v in vertices.items() if k not in shown and k in defined}
+    out = []
+    for row in pseudocode:
+        text = row.text
+        for placeholder, label in tied.items():
+            if defined[placeholder] not in row.calls:
+                continue
+            text = _tie(text, placeholder, label)
+        if claim is not None and "claim" in row.calls:
+            def tie(found: re.Match[str]) -> str:
+                name = found.group()
+                ends = tuple(tied.get(c, c if c in shown else "") for c in name)
+                return f"{name} = {''.join(claim)}" if ends == claim and len(name) == 2 else name
+            text = _NAME.sub(tie, text, count=0)
+        out.append(PseudocodeRow(text, row.calls))
+    return tuple(out)
 
 
 # --- a heuristic of one's own: pseudocode in its docstring ------------------------------------

@@ -256,14 +256,15 @@ _HEURISTICS_TRACED = tuple(_traced_name(f) for f in HEURISTICS.values())
 
 #: The rows of gravity (thesis ch. 2.1.2, after Forišek and Steinová), also inside the others.
 _GRAVITY = (
-    PseudocodeRow("B = the left-most vertex"),
+    PseudocodeRow("B = the left-most vertex", ("leftmost_vertex",)),
     PseudocodeRow("V = the first reflex vertex after B", ("reflex_vertex", "straight_vertex")),
-    PseudocodeRow("turn P: V's sides point up, no edge level", ("gravity_direction",)),
-    PseudocodeRow("drop a ball on a band at V: it hits a side", ("drop_ball",)),
-    PseudocodeRow("it slides down the side to a vertex X", ("slide_to_vertex",)),
+    # "edge", as the captions and the card say (the rows said "side": two words, one thing)
+    PseudocodeRow("turn P: V's edges point up, no edge level", ("gravity_direction",)),
+    PseudocodeRow("drop a ball on a band at V: it hits an edge", ("drop_ball",)),
+    PseudocodeRow("it slides down the edge to a vertex X", ("slide_to_vertex",)),
     PseudocodeRow("Y = the first vertex the band snags", ("band_snag",)),
     PseudocodeRow("claim VY, or VX if the band stays straight", ("claim",)),
-    PseudocodeRow("no reflex or straight vertex: claim AC", ("leftmost_vertex", "triangle_at", "claim")),
+    PseudocodeRow("no reflex or straight vertex: claim AC", ("triangle_at", "claim")),
 )
 
 

@@ -138,9 +138,11 @@ class BallDrop:
 
 @dataclass(frozen=True, kw_only=True)
 class BallSlide:
-    """The ball slides down the edge it hit to the vertex at ``to``."""
+    """The ball slides down the edge it hit, from where it hit (``hit``, None: not known) to
+    the vertex at ``to``."""
 
     to: Point
+    hit: Point | None = None
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -50,7 +50,7 @@ from story.beats import (
     points_of,
     segment,
 )
-from story.pseudocode import PseudocodeRow, from_json, lit_row, named
+from story.pseudocode import PseudocodeRow, bound, from_json, lit_row, named
 from story.reach import Reach, reach_of
 from story.reading import summarised
 from story.refs import (
@@ -422,7 +422,8 @@ def pseudocode_of(log: Log) -> tuple[PseudocodeRow, ...]:
 #: The traced calls whose result is a vertex the pseudocode names by a placeholder: the
 #: frame's B and D (thesis ch. 2.1), gravity's V, X and Y.
 _PLACEHOLDERS = MappingProxyType({"leftmost_vertex": "B", "pick": "D", "reflex_vertex": "V",
-                                  "slide_to_vertex": "X", "band_snag": "Y"})
+                                  "straight_vertex": "V", "slide_to_vertex": "X",
+                                  "band_snag": "Y"})
 
 
 def run_vertices(log: Log) -> dict[str, str]:
@@ -469,8 +470,65 @@ def _labels_shown(log: Log) -> tuple[str, ...]:
 def spoken_pseudocode(log: Log) -> tuple[PseudocodeRow, ...]:
     """The pseudocode the panel shows for a log once the run has picked its vertices:
     :func:`pseudocode_of`, its placeholders naming the run's own vertices where the picture
-    has a vertex of that name (:func:`story.pseudocode.named`)."""
+    has a vertex of that name (:func:`story.pseudocode.named`), and tied to them where it
+    has none (:func:`story.pseudocode.bound`: gravity's ``V = C``)."""
+    rows = _named_rows(log)
+    stages = bound_stages(log, rows)
+    return stages[-1][1] if stages else rows
+
+
+def _named_rows(log: Log) -> tuple[PseudocodeRow, ...]:
+    """The pseudocode naming the run's own vertices where the picture has one of that name."""
     return named(pseudocode_of(log), run_vertices(log), _labels_shown(log))
+
+
+def _bindings(log: Log) -> list[tuple[int, str, str]]:
+    """When the run gives a placeholder that is no label on screen its vertex: (seq of the
+    call, placeholder, label) for each first return of a call of :data:`_PLACEHOLDERS`
+    naming one vertex, and (seq, "claim", the two labels) for its first claim."""
+    shown, found = set(_labels_shown(log)), []
+    seen: set[str] = set()
+    for e in log.events:
+        placeholder = _PLACEHOLDERS.get(e.name or "")
+        if (e.kind == "return" and placeholder is not None and placeholder not in shown
+                and placeholder not in seen and len(refs(e.result)) == 1):
+            seen.add(placeholder)
+            # from the beat of its call on: the beat that shows the return is the call's
+            found.append((e.call if e.call is not None else e.seq, placeholder,
+                          refs(e.result)[0]))
+        elif e.kind == "call" and e.name == "claim" and "claim" not in seen:
+            ends = [k for v in (e.args or {}).values() for k in refs(v)]
+            if len(ends) == 2:
+                seen.add("claim")
+                found.append((e.seq, "claim", "".join(ends)))
+    return found
+
+
+def bound_stages(log: Log, rows: tuple[PseudocodeRow, ...]
+                 ) -> list[tuple[int, tuple[PseudocodeRow, ...]]]:
+    """``rows`` as the run ties its placeholders to its vertices, one by one: (seq, rows from
+    the beat of that seq on) for each placeholder given a vertex (:func:`_bindings`); none
+    for a run whose rows have no such placeholder. Divide and conquer, which runs a
+    heuristic on every piece, ties none: no one vertex is its V."""
+    labels = _labels_shown(log)
+    defined = {p: name for name, p in _PLACEHOLDERS.items()
+               if any(name in row.calls for row in rows) and p not in labels}
+    if not defined:
+        return []
+    one = run_vertices(log)  # each placeholder given one vertex in the whole run
+    claims = sum(1 for e in log.events if e.kind == "call" and e.name == "claim")
+    stages: list[tuple[int, tuple[PseudocodeRow, ...]]] = []
+    given: dict[str, str] = {}
+    claim: tuple[str, str] | None = None
+    for seq, placeholder, label in _bindings(log):
+        if placeholder == "claim" and claims == 1:
+            claim = (label[0], label[1:])
+        elif one.get(placeholder) == label and placeholder in defined:
+            given[placeholder] = label
+        else:
+            continue
+        stages.append((seq, bound(rows, given, defined, labels, claim)))
+    return stages
 
 
 #: letters for the pick before it is made, when the picture has a vertex D: the first of
@@ -485,7 +543,7 @@ def staged_pseudocode(log: Log) -> tuple[tuple[PseudocodeRow, ...], int | None,
     not the vertex the run will pick (review r567: "E = the candidate nearest to C" and
     "claim BE" stood on screen before the distances were computed); a placeholder that is
     also a vertex on screen is another letter then (the screen's D is not the rule's D)."""
-    after, rows, labels = spoken_pseudocode(log), pseudocode_of(log), _labels_shown(log)
+    after, rows, labels = _named_rows(log), pseudocode_of(log), _labels_shown(log)
     seq = _picked_at(log, run_vertices(log))
     if seq is None:
         return after, None, after
@@ -493,6 +551,16 @@ def staged_pseudocode(log: Log) -> tuple[tuple[PseudocodeRow, ...], int | None,
     used = set(labels) | {c for row in rows for c in row.text if c.isupper()}
     vertices["D"] = next(c for c in _UNKNOWNS if c not in used) if "D" in labels else "D"
     return named(rows, vertices, labels), seq, after
+
+
+def pseudocode_stages(log: Log) -> tuple[tuple[PseudocodeRow, ...],
+                                         list[tuple[int, tuple[PseudocodeRow, ...]]]]:
+    """The rows the panel shows first, and (seq, rows) for each change the run makes to them
+    as it goes: its pick named once picked (:func:`staged_pseudocode`), gravity's
+    placeholders tied to their vertices one by one (:func:`bound_stages`)."""
+    before, picked, after = staged_pseudocode(log)
+    stages = [] if picked is None else [(picked, after)]
+    return before, sorted([*stages, *bound_stages(log, after)], key=lambda stage: stage[0])
 
 
 def _picked_at(log: Log, vertices: Mapping[str, str]) -> int | None:

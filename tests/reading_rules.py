@@ -1003,10 +1003,13 @@ def _marks_on_polygons(data: dict, names: tuple[str, ...], *, settled: bool = Fa
     once: a turned picture's mark, placed again for the picture upright, as it leaves."""
     last: dict[str, tuple[int, str, dict]] = {}  # name: (play, animation type, node)
     seen: set[tuple[str, tuple | None]] = set()
+    close = False  # a close-up is on: its window drawn (gravity's, from the fall to the ✓)
     for k, play in enumerate(data["plays"]):
         marks = []
         for kind, node in (r for a in play["animations"] for r in _recorded(a)):
             name = node.get("name") or ""
+            if name == _CLOSE_UP + ":window":
+                close = kind in INCOMING
             if name in names and (kind in INCOMING or (settled and kind != "Turn")):
                 place = (name, _box_of(node))
                 if kind in INCOMING or place not in seen:
@@ -1016,7 +1019,19 @@ def _marks_on_polygons(data: dict, names: tuple[str, ...], *, settled: bool = Fa
                 last[name] = (k, kind, node)
         for mark in marks:
             home = "analysis:polygon" if mark["name"].startswith("analysis:") else "polygon"
-            yield k, mark, _state_then(data, last, k, home), last
+            yield k, mark, (_close_up_then(data, k) if close else
+                            _state_then(data, last, k, home)), last
+
+
+def _close_up_then(data: dict, k: int) -> dict | None:
+    """P as a close-up shows it at play ``k``: its fill, cut at the board's box, as the zoom
+    back out records it when it starts (a zoom records where it starts), None if never."""
+    for play in data["plays"][k + 1:]:
+        for _, node in (r for a in play["animations"] for r in _recorded(a)):
+            if node.get("name") == _CLOSE_UP:
+                return next((part for part in node.get("submobjects", ())
+                             if part.get("type") == "Polygon"), None)
+    return None
 
 
 def crowded_verdicts(data: dict) -> list[str]:
@@ -2607,16 +2622,41 @@ def far_verdicts(data: dict) -> list[str]:
     return found
 
 
+def verdicts_on_claims(data: dict) -> list[str]:
+    """A run's ✓ or ✗ whose box crosses the claim it judges (the last claim recorded), as
+    ``"play 84 tick over its claim"``, wherever a play records it: as it comes in, and where
+    a later play finds it (a turn records where it starts). Chapter 3's ✓ for EC, beside EC
+    up close, zoomed back out with the picture onto EC itself (76-78 s): the needle of P it
+    stood in shrank under it."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    found, claim = [], None
+    for k, play in enumerate(data["plays"]):
+        records = [(kind, node) for a in play["animations"] for kind, node in _recorded(a)]
+        for _, node in records:
+            if node.get("name") == _CLAIM and len(node.get("points") or []) >= 2:
+                claim = LineString([node["points"][0][:2], node["points"][-1][:2]])
+        for kind, node in records:
+            box = _box_of(node) if node.get("name") in _RUN_MARKS else None
+            if kind not in OUTGOING and box is not None and claim is not None \
+                    and claim.intersects(area(*box)):
+                found.append(f"play {k} {node['name']} over its claim")
+    return list(dict.fromkeys(found))
+
+
 # --- r567 item 1: a vertex's colour keeps its meaning ---------------------------------------------
 
 #: the marker names of a vertex: on the picture and on the panel's small map
 _VERTEX_MARKERS = ("vertex:", "panel:")
+#: the panel's parts that are no vertex: its call line, and the claim it draws (grav7)
+_PANEL_NOT_VERTICES = ("panel:call", "panel:claim")
 
 
 def _vertex_label(node: dict) -> str | None:
     """The label of a vertex marker node (``vertex:K``, ``panel:K``), else None."""
     name = node.get("name") or ""
-    if name == "panel:call" or not name.startswith(_VERTEX_MARKERS):
+    if name in _PANEL_NOT_VERTICES or not name.startswith(_VERTEX_MARKERS):
         return None
     return name.split(":", 1)[1]
 
@@ -3916,6 +3956,299 @@ def keys_with_nothing_shown(data: dict) -> list[str]:
                 found.append(f"play {k} {name}")
                 filled.discard(name)
     return found
+
+
+# --- grav7: chapter 3 and the gravity scene as a teacher shows them ----------------------------
+
+#: a card's figure words naming the claim its rule makes ("… claim CH"), and a run's claim
+_CARD_CLAIM = re.compile(r"\bclaim ([A-Z][₀-₉′″]*[A-Z][₀-₉′″]*)\b")
+
+
+def _sections(data: dict) -> Iterator[tuple[int, str, dict]]:
+    """(play, the section it is in, the play): a card's title opens a section; in a graph
+    with no card (a scene), each run's title (a scene of several runs on one polygon plays
+    each heuristic anew), as :func:`shown_steps` has them."""
+    def named(play: dict, name: str) -> list[dict]:
+        return [node for a in play["animations"] if a["type"] in INCOMING
+                and (node := a.get("mobject") or {}).get("name") == name]
+
+    carded = any(named(play, "card:title") for play in data["plays"])
+    section = ""
+    for k, play in enumerate(data["plays"]):
+        if named(play, "card:title"):
+            section = play.get("subcaption") or section
+        elif not carded and (titles := named(play, "title")):
+            section = f"{titles[0].get('text') or ''} (play {k})"
+        yield k, section, play
+
+
+def answers_on_cards(data: dict) -> list[str]:
+    """The claims a card's figure gives away before the run of its section makes them, as
+    ``"'V = C, X = G, Y = H: claim CH' before 'Claim: CH is an inner diagonal' (Gravity …)"``:
+    chapter 3's card drew the finished picture — fall, slide, band, CH — and said "claim CH"
+    16 s before the run played the same example to the same answer. A card states the rule;
+    its run gives the answer, once."""
+    found: list[str] = []
+    told: dict[tuple[str, str], str] = {}  # (section, claim): the figure's words saying it
+    for _, section, play in _sections(data):
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                if kind in INCOMING and node.get("name") == "figure:label":
+                    words = " ".join(n["text"] for n in mobject_nodes(node) if n.get("text"))
+                    for claim in _CARD_CLAIM.findall(words):
+                        told.setdefault((section, claim), words)
+        said = _CLAIM_CAPTION.match(play.get("subcaption") or "")
+        if said and (section, said[1]) in told:
+            found.append(f"{told.pop((section, said[1]))!r} before {said[0]!r} ({section})")
+    return found
+
+
+def redrawn_pictures(data: dict) -> list[str]:
+    """The run pictures drawn again in one card's section, as ``"play 41: the picture of
+    play 14 drawn again (Gravity …)"``: a polygon of the same shape (:func:`_shape`: wherever,
+    however large and turned) drawn anew where it was drawn already — chapter 3's analysis
+    redrew the run's end state, ball, band and claim, on a picture of its own before shading
+    it. What follows a run goes on from its picture."""
+    found: list[str] = []
+    drawn: dict[tuple[str, tuple], int] = {}
+    for k, section, play in _sections(data):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and node.get("name") in _RUN_POLYGONS and node.get("points"):
+                key = (section, _shape(node))
+                if key in drawn:
+                    found.append(f"play {k}: the picture of play {drawn[key]} drawn again "
+                                 f"({section})")
+                drawn.setdefault(key, k)
+    return found
+
+
+#: a verdict's words: a run's claim judged
+_VERDICT_WORDS = re.compile(r"^[✓✗] ")
+
+
+def close_ups_left_early(data: dict) -> list[str]:
+    """The close-ups (their window, ``close-up:window``) that zoom back out before the claim
+    of their run is judged, as ``"play 60: zoomed out under 'The ball falls until it hits
+    the boundary'"``: chapter 3's close-up showed only the short fall and zoomed out before
+    the slide, so that the band staying straight and the claim EC beside edge B–C were a
+    faint line 60 × 70 px wide. A close-up stays until the words say ✓ or ✗."""
+    found: list[str] = []
+    caption, judged = "", False
+    for k, play in enumerate(data["plays"]):
+        if play.get("subcaption"):
+            caption = play["subcaption"]
+            judged = judged or bool(_VERDICT_WORDS.match(caption))
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                if node.get("name") != _CLOSE_UP + ":window":
+                    continue
+                if kind in INCOMING:
+                    judged = False
+                elif kind in OUTGOING and not judged:
+                    found.append(f"play {k}: zoomed out under {caption!r}")
+    return found
+
+
+#: gravity's marks and the words that name them: the arrow ("g"), what the band swept, a ring
+#: where the ball hit; a word of the caption up as the mark comes in, or of the one after it
+#: in the same play
+_MARK_WORDS = {"gravity": re.compile(r"\(g\)|\bg\b"),
+               "swept": re.compile(r"\bshaded\b|\bswept\b|\bsweeps\b"),
+               "hit": re.compile(r"\bring\b")}
+
+
+def unnamed_marks(data: dict) -> list[str]:
+    """Gravity's marks that come in under words that do not name them, as ``"play 27 hit
+    under 'The ball falls until it hits the boundary'"``: chapter 3's open amber ring where
+    the ball lands, the "g" arrow and the band's shaded swept region (shown at 30.5 s,
+    explained at 41 s) were named by nothing. Each mark once."""
+    found: dict[str, str] = {}
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            for kind, _, name in _ends(anim):
+                words = _MARK_WORDS.get(name)
+                if kind in INCOMING and words is not None and name not in found:
+                    found[name] = "" if words.search(caption) else \
+                        f"play {k} {name} under {caption!r}"
+    return [line for line in found.values() if line]
+
+
+#: a pseudocode row giving a placeholder (a capital) its vertex: ``V = the first …``
+_GIVES = re.compile(r"^([A-Z][₀-₉′″]*) = (.*)$")
+
+
+def _panel_rows(data: dict) -> Iterator[tuple[int, list[str], list[str]]]:
+    """(play, the rows the panel shows, the rows lit in the play) of each play: the rows as
+    the panel's ``code:K`` rows say them (renamed rows as renamed), a new picture anew."""
+    rows: dict[str, str] = {}
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            rows = {}
+        for anim in play["animations"]:
+            # the rows come with the panel's block (a group), and one by one as renamed
+            for part in mobject_nodes(anim.get("mobject") or {}):
+                name = part.get("name") or ""
+                if name.startswith("code:") and part.get("role") == "idle" and part.get("text"):
+                    rows[name] = part["text"].strip()
+        yield k, list(rows.values()), [r for a in play["animations"] for r in _lit_rows(a)]
+
+
+def unlit_givens(data: dict) -> list[str]:
+    """The pseudocode rows that give a placeholder its vertex (``B = the left-most vertex``)
+    never lit in a run whose lit rows use it, as ``"'B = the left-most vertex' (used by 'V =
+    the first reflex vertex after B')"``: gravity's V is "the first reflex vertex after B",
+    and B was never lit nor shown (chapter 3). A run is a picture's plays; a row lit at any
+    time in it counts (a loop's row may use what its next round gives). Each row once."""
+    found: dict[str, str] = {}
+    runs: list[tuple[dict[str, str], set[str], list[str]]] = []  # (givens, lit, used)
+    for k, rows, lighting in _panel_rows(data):
+        if not runs or _new_picture(data["plays"][k]):
+            runs.append(({}, set(), []))
+        givens, lit, used = runs[-1]
+        givens.update({m[1]: row for row in rows if (m := _GIVES.match(row))})
+        lit.update(lighting)
+        used.extend(lighting)
+    for givens, lit, used in runs:
+        for row in used:
+            for placeholder, giving in givens.items():
+                if giving != row and re.search(rf"\b{placeholder}\b", row.split(" = ", 1)[-1]) \
+                        and not any(r.startswith(f"{placeholder} =") for r in lit):
+                    found.setdefault(giving, f"{giving!r} (used by {row!r})")
+    return list(found.values())
+
+
+def untied_placeholders(data: dict) -> list[str]:
+    """The lit rows that give a placeholder no label of the picture has (gravity's V, X, Y)
+    under words that name the vertex the run gave it, without saying which, as ``"'V = the
+    first reflex vertex after B' under 'C is the first reflex vertex after B: …'"``: the card
+    and the rows said V, X, Y and the picture C, G, H, never tied (chapter 3). A row tied
+    says ``V = C, …`` (:func:`story.pseudocode.bound`)."""
+    found: list[str] = []
+    caption = ""
+    labels: set[str] = set()
+    for play in data["plays"]:
+        caption = play.get("subcaption") or caption
+        if _new_picture(play):
+            labels = set()
+        for anim in play["animations"]:
+            for _, node in _recorded(anim):
+                label = _vertex_label(node)
+                if label is not None and (node.get("name") or "").startswith("vertex:"):
+                    labels.add(label)
+        for anim in play["animations"]:
+            for row in _lit_rows(anim):
+                defines, ends = _GIVES.match(row), re.search(r"\ba vertex ([A-Z])$", row)
+                # the words give the vertex: "C is …", "… snags H" for a row "V = …", "… to G"
+                # for a row "… to a vertex X" (not a step that measures the candidates)
+                gives = (re.search(r"^([A-Z][₀-₉′″]*) is\b|\bsnags ([A-Z][₀-₉′″]*)\b", caption)
+                         if defines else re.search(r"\bto ([A-Z][₀-₉′″]*)\b", caption)
+                         if ends else None)
+                placeholder = (defines or ends)[1] if (defines or ends) else None
+                if placeholder is None or placeholder in labels or gives is None:
+                    continue
+                if not re.search(rf"\b{placeholder} = [A-Z]", row):
+                    found.append(f"{row!r} under {caption!r}")
+    return list(dict.fromkeys(found))
+
+
+def mixed_words(data: dict) -> list[str]:
+    """A thing said with two words on one screen: a pseudocode row that says "side" where
+    the captions and cards say "edge", as ``"'it slides down the side to a vertex X' beside
+    'It slides down the edge to G'"`` (chapter 3's gravity rows). Each row once."""
+    rows = {r for _, _, lighting in _panel_rows(data) for r in lighting}
+    said = [p["subcaption"] for p in data["plays"] if p.get("subcaption")]
+    edge = next((c for c in said if re.search(r"\bedges?\b", c)), None)
+    return [f"{row!r} beside {edge!r}" for row in sorted(rows)
+            if edge is not None and re.search(r"\bsides?\b", row)]
+
+
+def rows_behind_words(data: dict) -> list[str]:
+    """The plays whose caption says the band snags a vertex while the row lit says the ball
+    slides, as ``"play 22 'it slides down the side to a vertex X' under 'The rubber band
+    snags H'"``: the gravity scene's lit row ran 0.9 s behind its caption at 11.5 s."""
+    found: list[str] = []
+    caption, row = "", ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            for lit in _lit_rows(anim):
+                row = lit
+        if "snags" in caption and "slides" in row:
+            found.append(f"play {k} {row!r} under {caption!r}")
+    return list(dict.fromkeys(found))
+
+
+def claims_missing_from_panel(data: dict) -> list[str]:
+    """The claims drawn on a turned picture that the panel, which shows P as it stands, does
+    not draw (``panel:claim``), as ``"play 33: CH"``: chapter 3's panel coloured C and H and
+    never drew CH while the picture was turned."""
+    found: list[str] = []
+    turned = False
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        if _new_picture(play):
+            turned = False
+        names = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        # a run turns P and turns it back upright after its verdict (a scene of several
+        # runs, divide and conquer's, turns each piece's run anew): each turn flips it
+        if any(kind == "Turn" and name == "polygon" for kind, name in names):
+            turned = not turned
+        if any(kind in INCOMING and name == "claim" for kind, name in names) and turned \
+                and not any(kind in INCOMING and name == "panel:claim" for kind, name in names):
+            said = _CLAIM_CAPTION.match(caption)
+            found.append(f"play {k}: {said[1] if said else caption}")
+    return found
+
+
+def stale_panel_claims(data: dict) -> list[str]:
+    """The panel claims judged (recoloured) when the claim on the picture was drawn without
+    one, as ``"play 45: FD judged on the panel's DG"``: divide and conquer's panel kept the
+    last turned run's claim DG and recoloured it with every later verdict (FD, drawn upright,
+    had none on the panel), so that a ✗ would have turned DG red there."""
+    found: list[str] = []
+    fresh, caption = False, ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        names = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        if any(kind in INCOMING and name == "claim" for kind, name in names):
+            fresh = any(kind in INCOMING and name == "panel:claim" for kind, name in names)
+        if any(kind not in INCOMING and kind not in OUTGOING and name == "panel:claim"
+               for kind, name in names) and not fresh:
+            found.append(f"play {k}: the panel's old claim judged under {caption!r}")
+    return found
+
+
+def green_claims_white_ends(data: dict) -> list[str]:
+    """The claims turned green (judged inner) whose ends both stay in another colour, as
+    ``"play 47 analysis:claim: C, H not green"``: gravity's analysis drew CH green and left
+    C and H white, where chapter 2's analyses turn the pick green with its claim. The ends
+    are the vertex markers at the claim's ends, as :func:`_shown_after_plays` follows them."""
+    import numpy as np
+
+    green = _colour("result")
+    found: list[str] = []
+    for k, shown in _shown_after_plays(data, ("vertex:", "claim", "analysis:claim")):
+        for name in ("claim", "analysis:claim"):
+            claim = shown.get(name)
+            if claim is None or str(claim.get("stroke") or "").upper() != green \
+                    or len(claim.get("points") or []) < 2:
+                continue
+            ends = [tuple(claim["points"][0][:2]), tuple(claim["points"][-1][:2])]
+            at: dict[str, str] = {}
+            for marker, node in shown.items():
+                dot = _dot_centre(node) if marker.startswith("vertex:") else None
+                if dot is not None and any(np.hypot(dot[0] - x, dot[1] - y) < 0.05
+                                           for x, y in ends):
+                    colours = {str(p.get("fill") or p.get("stroke") or "").upper()
+                               for p in mobject_nodes(node) if p.get("text")}
+                    at[marker.removeprefix("vertex:")] = "green" if green in colours else "not"
+            if len(at) == 2 and "green" not in at.values():
+                found.append(f"play {k} {name}: {', '.join(sorted(at))} not green")
+    return list(dict.fromkeys(found))
 
 
 # --- the exercises chapter, reviewed as a class would use it (review of chapter 6) ------------

@@ -30,6 +30,7 @@ from tests.reading_rules import (
     VERTEX_KINDS,
     alike_neighbours,
     amber_figure_marks,
+    answers_on_cards,
     answers_over_pictures,
     balls_not_there,
     bare_measures,
@@ -39,6 +40,8 @@ from tests.reading_rules import (
     claims_along_edges,
     claims_given_away,
     claims_like_their_edges,
+    claims_missing_from_panel,
+    close_ups_left_early,
     counts_on_two_lines,
     crossed_vertex_labels,
     crossfaded_overlaps,
@@ -56,6 +59,7 @@ from tests.reading_rules import (
     fills_over_labels,
     fleeting_kind_words,
     flickering_counts,
+    green_claims_white_ends,
     hidden_failures,
     hurried_answers,
     implementation_talk,
@@ -80,6 +84,7 @@ from tests.reading_rules import (
     labels_without_contrast,
     leftover_verdicts,
     lone_numbers,
+    mixed_words,
     morphed_water,
     names_said_otherwise,
     notes_over_fills,
@@ -88,11 +93,13 @@ from tests.reading_rules import (
     placeholders_as_labels,
     recoloured_close_ups,
     red_after_the_pick,
+    redrawn_pictures,
     refaded_texts,
     repeated_verdicts,
     replayed_beats,
     replayed_splits,
     restyled_triangulations,
+    rows_behind_words,
     rules_without_their_picture,
     run_together_labels,
     rushed_questions,
@@ -112,8 +119,10 @@ from tests.reading_rules import (
     ticks_outside,
     uneven_countdowns,
     unexplained_grey,
+    unlit_givens,
     unmarked_candidates,
     unnamed_axes,
+    unnamed_marks,
     unreadable_cues,
     unsaid_colour_changes,
     unsaid_figure_words,
@@ -121,7 +130,9 @@ from tests.reading_rules import (
     unseen_helpers,
     unspoken_words,
     untaught_words,
+    untied_placeholders,
     verdicts_before_red,
+    verdicts_on_claims,
     water_outside_polygon,
     words_ahead_of_colours,
     words_before_pictures,
@@ -774,6 +785,26 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # "band swept" under the green "swept: in P")
     assert balls_not_there(data) == [], chapter.slug
     assert keys_with_nothing_shown(data) == [], chapter.slug
+    # grav7, chapter 3 as a teacher shows it: one picture per idea — no card gives its run's
+    # answer away, no run picture drawn again (the analysis redrew the run's end state)
+    assert answers_on_cards(data) == [], chapter.slug
+    assert redrawn_pictures(data) == [], chapter.slug
+    # a close-up stays through the slide and the band until the claim is judged (it zoomed
+    # out before the slide: EC beside B–C was a faint line 60 × 70 px wide)
+    assert close_ups_left_early(data) == [], chapter.slug
+    # every mark named as it comes (the hit ring, the "g" arrow, the swept region)
+    assert unnamed_marks(data) == [], chapter.slug
+    # the pseudocode: B lit before V is "the first after B", V, X, Y tied to C, G, H, one
+    # word for an edge, the lit row in step with the words
+    assert unlit_givens(data) == [], chapter.slug
+    assert untied_placeholders(data) == [], chapter.slug
+    assert mixed_words(data) == [], chapter.slug
+    assert rows_behind_words(data) == [], chapter.slug
+    # the panel draws the claim of a turned picture, and a green claim's pick is green
+    assert claims_missing_from_panel(data) == [], chapter.slug
+    assert green_claims_white_ends(data) == [], chapter.slug
+    # a close-up's ✓ does not zoom back onto its claim (EC's at 76-78 s)
+    assert verdicts_on_claims(data) == [], chapter.slug
 
     # mono5: each word taught the first time it is said (chapter 5's card said y-monotone,
     # split and merge before the run taught them; "joins its helper F", helper untaught), and

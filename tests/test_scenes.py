@@ -39,19 +39,21 @@ from geometry.diagonals import find_diagonal
 from geometry.io import read_any_polygon, read_polygon
 from metaphors.pseudocode import source_of
 from metaphors.scene import SequenceScene, TraceScene
-from story.pseudocode import named
 from story.registry import entry, hole_pseudocode, spoken, triangulations, wrong
 from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
 from story.spec import RunSpec
-from story.storyboard import run_vertices
+from story.storyboard import spoken_pseudocode
 from tests.reading_rules import (
     LEAST_LINE,
     LEAST_TRIANGLE,
+    answers_on_cards,
     balls_not_there,
     broken_counts,
     broken_summaries,
     calls_over_code,
     claims_along_edges,
+    claims_missing_from_panel,
+    close_ups_left_early,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -67,6 +69,7 @@ from tests.reading_rules import (
     fleeting_kind_words,
     flickering_counts,
     graph_nodes,
+    green_claims_white_ends,
     hidden_failures,
     jumping_stacks,
     keys_with_nothing_shown,
@@ -79,15 +82,18 @@ from tests.reading_rules import (
     labels_without_contrast,
     leftover_verdicts,
     mixed_ending_labels,
+    mixed_words,
     morphed_water,
     notes_under_moving_tools,
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
     red_after_the_pick,
+    redrawn_pictures,
     refaded_texts,
     repeated_verdicts,
     replayed_beats,
+    rows_behind_words,
     run_together_labels,
     shapes_under_text,
     short_falls,
@@ -96,16 +102,21 @@ from tests.reading_rules import (
     stale_endings,
     stale_good_parts,
     stale_lit_rows,
+    stale_panel_claims,
     stray_kind_words,
     stray_vertex_markers,
     swept_outside_polygon,
     tails_beside_labels,
     thinnest_triangle,
     ticks_outside,
+    unlit_givens,
+    unnamed_marks,
     unreadable_cues,
     unsaid_colour_changes,
     unseen_ear_tests,
     unspoken_words,
+    untied_placeholders,
+    verdicts_on_claims,
     water_outside_polygon,
     words_ahead_of_colours,
     words_before_pictures,
@@ -727,9 +738,9 @@ def _last_pseudocode(case: SceneCase) -> tuple:
                else case.cls.polygon if isinstance(case.cls, Handed) else None)
     if polygon and read_any_polygon(polygon).hole_count:
         return hole_pseudocode(algorithm)
-    # the rows name the run's own vertices where the picture has one of that name (issue 22)
-    log = RunSpec(algorithm, polygon, heuristic=heuristic_of(case.cls)).log()
-    return named(entry(algorithm).pseudocode, run_vertices(log), read_polygon(polygon).labels)
+    # the rows name the run's own vertices where the picture has one of that name (issue 22),
+    # and tie gravity's V, X, Y to theirs (grav7)
+    return spoken_pseudocode(RunSpec(algorithm, polygon, heuristic=heuristic_of(case.cls)).log())
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -1028,3 +1039,24 @@ def test_colours_change_as_the_tool_and_the_words_say(case):
     assert balls_not_there(data) == [], case.id
     assert picks_in_the_red(data) == [], case.id
     assert keys_with_nothing_shown(data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_gravity_marks_rows_and_close_ups_say_what_they_show(case):
+    """grav7: a close-up stays until the claim is judged, every mark of gravity is named as
+    it comes (its ring, its arrow, its swept region), the pseudocode lights B before V is
+    "after B", ties V, X, Y to the picture's vertices, says "edge" as the words do and keeps
+    step with them, and the panel draws the claim of a turned picture."""
+    data = graph(case).data
+    assert close_ups_left_early(data) == [], case.id
+    assert unnamed_marks(data) == [], case.id
+    assert unlit_givens(data) == [], case.id
+    assert untied_placeholders(data) == [], case.id
+    assert mixed_words(data) == [], case.id
+    assert rows_behind_words(data) == [], case.id
+    assert claims_missing_from_panel(data) == [], case.id
+    assert stale_panel_claims(data) == [], case.id
+    assert green_claims_white_ends(data) == [], case.id
+    assert verdicts_on_claims(data) == [], case.id
+    assert answers_on_cards(data) == [], case.id
+    assert redrawn_pictures(data) == [], case.id

@@ -180,3 +180,74 @@ def test_the_summary_rule_finds_vertices_numbered_or_named_wrong():
     fine = {"plays": [*_classifying("Vertices H, B and G: the same steps, faster", "H", "B", "G"),
                       *_classifying("Vertices I–K: the same steps, faster", "I", "J", "K")]}
     assert broken_summaries(fine) == []
+
+
+# --- grav7: gravity's rows say the picture's vertices, one by one, as the run gives them ---------
+
+
+def _gravity_log(sample: str) -> tracing.Log:
+    from story.spec import RunSpec
+
+    return RunSpec("gravity", sample).log()
+
+
+@pytest.mark.parametrize("sample, tied", [
+    ("gravity-snag", ["V = C, the first reflex vertex after B",
+                      "it slides down the edge to a vertex X = G",
+                      "Y = H, the first vertex the band snags",
+                      "claim VY = CH, or VX if the band stays straight"]),
+    ("counterexample", ["V = E, the first reflex vertex after B",
+                        "it slides down the edge to a vertex X = C",
+                        "claim VY, or VX = EC if the band stays straight"])])
+def test_gravity_rows_tie_v_x_y_to_the_runs_vertices_as_it_gives_them(sample, tied):
+    """The card and the rows say V, X, Y, the picture C, G, H: the rows tie each to its vertex
+    from the beat that gives it (V at its pick, X at the slide, Y at the snag, the claim as it
+    is made), never before; B, a label on screen, is the left-most vertex's own name."""
+    from story.storyboard import pseudocode_stages
+
+    log = _gravity_log(sample)
+    first, stages = pseudocode_stages(log)
+    assert [r.text for r in first] == [r.text for r in pseudocode_of(log)]
+    assert [r.text for r in spoken_pseudocode(log) if r.text not in
+            {s.text for s in pseudocode_of(log)}] == tied
+    from metaphors import catalog
+
+    played = catalog.beats(log)
+    beats = {b.action: b.seq for b in played}
+    seqs = [seq for seq, _ in stages]
+    assert seqs[0] == min(b.seq for b in played if "reflex vertex" in b.caption)
+    assert beats["slide"] in seqs and beats["claim"] == seqs[-1]
+    # "side" is said "edge", as the captions say it
+    assert not any("side" in r.text.split() or "sides" in r.text for r in pseudocode_of(log))
+
+
+def test_gravity_picks_b_first_and_says_v_is_the_first_reflex_vertex_after_it():
+    """B is shown and its row lit before V, "the first reflex vertex after B" (B was never
+    lit nor marked: chapter 3)."""
+    from metaphors import catalog
+
+    beats = [b for b in catalog.beats(_gravity_log("gravity-snag")) if b.action == "pick"]
+    assert [b.caption for b in beats] == [
+        "B is the left-most vertex (lowest on ties): convex",
+        "C is the first reflex vertex after B: the ball will hang there"]
+    rows = pseudocode_of(_gravity_log("gravity-snag"))
+    assert [rows[b.row].text for b in beats] == ["B = the left-most vertex",
+                                                 "V = the first reflex vertex after B"]
+
+
+def test_a_row_renamed_later_keeps_inside_the_panel():
+    """The rows are set as wide as the widest they will be: "claim VY = CH, or VX …", renamed
+    as the claim was made, ran off the frame's right edge."""
+    from metaphors.panel import Panel
+    from story.beats import Note
+    from story.storyboard import pseudocode_stages
+
+    log = _gravity_log("gravity-snag")
+    first, stages = pseudocode_stages(log)
+    p = Polygon.from_points(make_sample("gravity-snag"))
+    panel = Panel(p.points, p.labels, None)
+    panel.show_pseudocode(first, stages)
+    right = panel.code_box.x + panel.code_box.width / 2
+    panel.follow_text(Note(caption="", seq=10**6))
+    assert [row.original_text for row in panel.code][-2].startswith("claim VY = CH")
+    assert max(row.get_right()[0] for row in panel.code) <= right + 1e-6

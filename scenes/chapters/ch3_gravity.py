@@ -20,8 +20,9 @@ class Gravity(LectureScene):
                 "Claim VY where the band snags, else VX: an inner diagonal either way."),
                  Figure("gravity", "gravity-snag")),
             Run("gravity", "gravity-snag", "Gravity: the band snags a vertex"),
+            # on the run's last picture: what the band swept, shaded as it swept, turns green
             Analysis("gravity", "gravity-snag", title="Gravity: why the band is always right",
                      holds="The band sweeps only the inside of P: it touches {pick} from "
-                           "inside, so {claim} is inner."),
+                           "inside, so {claim} is inner.", on_run=True),
             Run("gravity", "counterexample", "Gravity on the counterexample"),
         )
