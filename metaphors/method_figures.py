@@ -41,8 +41,8 @@ from metaphors.drawing import (
     polygon_mobject,
 )
 from metaphors.figure_caption import figure_caption
-from metaphors.fruit import LABEL_HALO, TEST_OPACITY, TEST_STROKE, fruit_style, good_style
-from metaphors.labels import measured_markers, placed_vertex_markers
+from metaphors.fruit import TEST_OPACITY, TEST_STROKE, fruit_style, good_style
+from metaphors.labels import LABEL_HALO, measured_markers, placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from story.beats import Hole
