@@ -218,7 +218,9 @@ def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
                     stroke_width=board.theme.stroke * 1.3), "argument",
                f"diagonal:{''.join(beat.labels)}")
     board.keep(f"diagonal:{''.join(beat.labels)}", line)
-    board.play(beat, Create(line), *board.clear_labels(line), run_time=1.0)
+    board.play(beat, Create(line), *board.clear_labels(line),
+               *board.panel.draw(f"diagonal:{''.join(beat.labels)}", u, w, "argument"),
+               run_time=1.0)
 
 
 def pieces(board: Board, beat: Pieces) -> None:
@@ -414,7 +416,8 @@ def _whole(board: Board, beat: Stack) -> None:
     board.play(ending_beat(beat, board.panel.pseudocode, len(whole), board.panel.run_call,
                            len(board.holes)),
                *board.drop(*tints), *[FadeIn(t) for t in whole], *shown,
-               *board.clear_labels(*whole), run_time=1.2, at_rest=True)
+               *board.clear_labels(*whole), *board.panel.whole(beat.triangulation),
+               run_time=1.2, at_rest=True)
     board.scene.wait(1.0)
 
 

@@ -32,6 +32,7 @@ from metaphors.layout import (
     subtitle_band,
     title_area,
 )
+from metaphors.panel import DIAGONAL_WIDTH
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -107,6 +108,8 @@ def split(board: Board, beat: Split) -> None:
         k = sum(1 for key in board.objects if key.startswith("diagonal:"))
         board.keep(f"diagonal:{k}", tag(line, "idle", line.name))
         anims.append(line.animate.set_color(theme.ink).set_stroke(width=theme.stroke))
+        # and in the panel: the diagonal made, in the ink, where the piece was split
+        anims += board.panel.recolour("claim", None, f"diagonal:{k}", width=DIAGONAL_WIDTH)
     anims += board.drop("verdict", f"piece:{beat.parent}")
     if board.outline.get_fill_opacity() > 0:
         anims.append(board.outline.animate.set_fill(opacity=0))

@@ -16,10 +16,11 @@ from typing import Protocol, cast
 
 from metaphors.board import Board
 from metaphors.catalog import perform
-from metaphors.fruit import Keyhole
+from metaphors.fruit import Keyhole, Slice
 from metaphors.layout import Box
+from metaphors.monotone import MonotoneDiagonal
 from metaphors.recorded import Recorded, captions_of, mark_step
-from story.beats import Beat, Claim, ShowPolygon
+from story.beats import Beat, Claim, Point, ShowPolygon
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
 from story.storyboard import run_call, staged_pseudocode
@@ -49,7 +50,9 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded),
                   claims=[beat.labels for beat in beats if isinstance(beat, Claim)],
-                  cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)])
+                  cuts=[*(beat.points for beat in beats if isinstance(beat, Keyhole)),
+                        *knife_cuts([beat for beat in beats if beat.pace >= 1.0])],
+                  drawn=panel_lines(beats))
     board.panel.shows_calls = scene.call_line
     board.panel.run_call = run_call(log)
     code = log.meta.get("code")
@@ -61,6 +64,25 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     if board.title.width > TITLE_WIDTH:
         board.title.scale_to_fit_width(TITLE_WIDTH)
     return board
+
+
+def knife_cuts(beats: Sequence[Beat]) -> list[tuple[Point, Point]]:
+    """The cuts the knife will make in ``beats``, one a slice (from its first corner to its
+    last). The board's labels are placed clear of those of the slices played at full pace,
+    each under its own caption: placed clear of the edges only, ear clipping's G stood on
+    the cut BD, moved above its dot as B's triangle was tested, and off the fruit after the
+    slice (three places in 12 s). Clear of every cut, the keyhole's hole labels stood up to
+    1.1 from their vertices: the fast slices' cuts are not."""
+    return [(beat.points[0], beat.points[2]) for beat in beats
+            if isinstance(beat, Slice) and len(beat.points) == 3]
+
+
+def panel_lines(beats: Sequence[Beat]) -> list[tuple[Point, Point]]:
+    """The segments a run will draw in the panel's polygon (:class:`metaphors.panel.Panel`):
+    its claims, its keyhole cuts, the monotone sweep's diagonals and the cut of each slice
+    (the triangulation's diagonals drawn at its end)."""
+    return [*(beat.points for beat in beats
+              if isinstance(beat, Claim | Keyhole | MonotoneDiagonal)), *knife_cuts(beats)]
 
 
 def stretches(beats: Sequence[Beat]) -> list[int]:

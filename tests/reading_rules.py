@@ -2287,6 +2287,9 @@ _TEST_TRIANGLES = ("ear-triangle", "ear-angle")
 _BACKINGS = "backing:"
 #: how opaque a card must be to read a label on it
 LEAST_BACKING = 0.6
+#: the least gap between a haloed label inside a test triangle and the triangle's edges
+#: (:func:`labels_under_test_triangles`)
+LEAST_EDGE_GAP = 0.03
 
 
 def labels_under_test_triangles(data: dict) -> list[str]:
@@ -2295,7 +2298,10 @@ def labels_under_test_triangles(data: dict) -> list[str]:
     all but vanishes), and an edge through it reads as part of the line. The labels and the
     triangle are as :func:`crossed_vertex_labels` follows them; a triangle counts once it is
     drawn (its fill or its edge up). A label on a dark card (``backing:V``, at least
-    :data:`LEAST_BACKING` opaque, covering the label) reads, its vertex inside the triangle."""
+    :data:`LEAST_BACKING` opaque, covering the label) reads, its vertex inside the triangle;
+    so does a label with a dark halo (:func:`_haloed`, as every label on the fruit has) that
+    no edge of the triangle comes within :data:`LEAST_EDGE_GAP` of: a card under it was a
+    box no other label had (ear clipping's G)."""
     from shapely.geometry import Polygon
     from shapely.geometry import box as area
 
@@ -2312,10 +2318,14 @@ def labels_under_test_triangles(data: dict) -> list[str]:
             card = shown.get(_BACKINGS + vertex)
             backed = (None if card is None or (card.get("fill_opacity") or 0) < LEAST_BACKING
                       or _box_of(card) is None else area(*_box_of(card)))
+            haloed = any(_haloed(part) for part in marker.get("submobjects", ())
+                         if (part.get("text") or "").strip())
             for label in _label_boxes(marker, direct=True):
                 if backed is not None and backed.buffer(1e-6).contains(area(*label)):
                     continue
                 for owner, triangle in triangles:
+                    if haloed and triangle.exterior.distance(area(*label)) >= LEAST_EDGE_GAP:
+                        continue
                     if triangle.intersects(area(*label)):
                         found.setdefault(f"{vertex} {owner}",
                                          f"play {k} {vertex} under the {owner}")
@@ -3849,4 +3859,157 @@ def keys_with_nothing_shown(data: dict) -> list[str]:
             elif name in filled:
                 found.append(f"play {k} {name}")
                 filled.discard(name)
+    return found
+
+
+# --- the panel's polygon follows the run ---------------------------------------------------------
+
+#: the picture's lines the panel draws too, by the name the picture gives them, and the names
+#: the panel's may have (a claim split along is a diagonal in the panel)
+_PANEL_TWINS = {"claim": ("panel/claim", "panel/diagonal:"), "edge:": ("panel/crossed",),
+                "keyhole:": ("panel/keyhole:",), "diagonal:": ("panel/diagonal:",)}
+
+
+def _twin(name: str) -> tuple[str, ...] | None:
+    """The names the panel's twin of a picture's line may have; None: it has none."""
+    return next((twins for start, twins in _PANEL_TWINS.items()
+                 if name == start or (start.endswith(":") and name.startswith(start))), None)
+
+
+def _last_ends(play: dict) -> dict[int, tuple[str, str, dict]]:
+    """Each top mobject a play records, in the state the play leaves it: (animation type,
+    name, node) of the last node each animation records (a transform's target)."""
+    ends: dict[int, tuple[str, str, dict]] = {}
+    for k, anim in enumerate(play["animations"]):
+        for kind, node, name in _ends(anim):
+            ends[k] = (kind, name, node)
+    return ends
+
+
+def _stroke(node: dict) -> str | None:
+    return (_one_colour(node.get("stroke")) or "").upper() or None
+
+
+def panels_behind_the_picture(data: dict) -> list[str]:
+    """Where the panel's polygon (DESIGN: "the same polygon drawn plainly with objects
+    coloured by their role in the current call") does not follow the picture, as
+    ``"play 12 A sliced off the picture, still in the panel"``, ``"play 30 claim #F2B134 not
+    in the panel"``, ``"play 31 edge:E–A not in the panel"``, ``"play 4 keyhole:2 not in the
+    panel"``, ``"play 80 triangulation not in the panel"`` or ``"play 40 claim FD's piece
+    not tinted in the panel"``: a vertex taken off the picture goes from the panel with it;
+    a claim (amber, then green or red, then a diagonal's ink), the edge a claim crosses and a
+    diagonal come into the panel in the picture's colour in the same play, a keyhole cut in
+    the ink (the picture's is a dark slit through the fruit); the whole
+    triangulation shows in it as in the picture; and a claim made on a piece of P (divide
+    and conquer's, the picture tinted in pieces) comes with the panel tinting its piece
+    (``panel/part``, the claim's ends among its corners). The panel kept the bare polygon
+    while the picture sliced it (ear clipping at 9 s still drew A, sliced at 7 s), split it
+    (divide and conquer's 11 triangles beside the bare 13-gon) and claimed diagonals in it.
+    A run whose panel draws no polygon (the source instead) is left out."""
+    found: list[str] = []
+    panel: dict[str, dict] = {}  # the panel's parts shown, by name
+    gone: set[str] = set()  # the picture's vertices taken off it
+    pieces = False  # the picture is tinted in pieces (divide and conquer)
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            panel, gone, pieces = {}, set(), False
+        ends = _last_ends(play)
+        for kind, name, node in ends.values():
+            if name.startswith(("panel:", "panel/")):
+                if kind in OUTGOING:
+                    panel.pop(name, None)
+                else:
+                    panel[name] = node
+            elif name.startswith("vertex:"):
+                label = name.removeprefix("vertex:")
+                (gone.add if kind in OUTGOING else gone.discard)(label)
+            elif name.startswith(("piece:", "triangle:")) and kind in INCOMING:
+                pieces = True
+        if "panel:polygon" not in panel:
+            continue
+        for kind, name, node in ends.values():
+            if name.startswith("vertex:") and kind in OUTGOING and \
+                    f"panel:{name.removeprefix('vertex:')}" in panel:
+                found.append(f"play {k} {name.removeprefix('vertex:')} sliced off the picture, "
+                             "still in the panel")
+            twins = _twin(name)
+            if twins is not None and kind not in OUTGOING and kind != "Turn":
+                # the picture's keyhole cut is a dark slit (the background through the
+                # fruit), the panel's an edge in the ink: only its being there is compared
+                colour = None if name.startswith("keyhole:") else _stroke(node)
+                shown = [n for p, n in panel.items() if p.startswith(twins)]
+                if not any(colour is None or _stroke(n) == colour for n in shown):
+                    found.append(f"play {k} {name} {colour} not in the panel" if name == "claim"
+                                 else f"play {k} {name} not in the panel")
+                if name == "claim" and kind in INCOMING and pieces:
+                    found += _untinted_piece(k, panel)
+            if name == "triangulation" and kind in INCOMING and not any(
+                    p.startswith(("panel/triangulation", "panel/diagonal:")) for p in panel):
+                found.append(f"play {k} triangulation not in the panel")
+    return list(dict.fromkeys(found))
+
+
+def _untinted_piece(k: int, panel: dict[str, dict]) -> list[str]:
+    """``["play k claim's piece not tinted in the panel"]`` unless the panel's tint of the
+    part of P worked on (``panel/part``) has both ends of the panel's claim among its corners."""
+    claim, part = panel.get("panel/claim"), panel.get("panel/part")
+    if claim is None:
+        return []
+    ends = _segments(claim)
+    corners = _corners(part) if part is not None else []
+    if ends and all(_near(p, corners) for p in ends[0]):
+        return []
+    return [f"play {k} claim's piece not tinted in the panel"]
+
+
+
+# --- ear clipping's words -------------------------------------------------------------------------
+
+#: a caption saying a vertex is an ear
+_EAR_YES = re.compile(r"\bIs (\S+) an ear\? yes\b")
+#: a label with a prime: a bridge end's second copy (``c₁′``, ``F″``)
+_PRIMED = re.compile(r"(?<![\w′″‴])[A-Za-z][₀-₉]*[′″‴]+")
+
+
+def ears_without_convexity(data: dict) -> list[str]:
+    """The captions saying a vertex is an ear without saying both of what makes one, as
+    ``"Is A an ear? yes: its triangle holds no other vertex"``: an ear is a convex vertex
+    whose triangle holds no other vertex (issue 22 item 11, Meisters): the lecture's own
+    counterexample has a reflex E whose triangle DEA is empty."""
+    return sorted({play["subcaption"] for play in data["plays"]
+                   if _EAR_YES.search(play.get("subcaption") or "")
+                   and not ("convex" in play["subcaption"] and "triangle" in play["subcaption"])})
+
+
+def unexplained_primes(data: dict) -> list[str]:
+    """The primed labels (a keyhole cut's ends the second time round its ring: ``c₁′``,
+    ``F″``) a call line or caption names before any caption has said them, as ``"play 80
+    c₁′"``: KeyholeEars' call lines said ``clip_ear(c₁′, F′, c₂)`` and nothing said what the
+    primes were. Each label once."""
+    said: set[str] = set()
+    found: dict[str, str] = {}
+    for k, play in enumerate(data["plays"]):
+        said |= set(_PRIMED.findall(play.get("subcaption") or ""))
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                if node.get("name") in ("panel:call", "subtitle"):
+                    for label in _PRIMED.findall(node.get("text") or ""):
+                        if label not in said:
+                            found.setdefault(label, f"play {k} {label}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+def unexplained_plates(data: dict) -> list[str]:
+    """Ear clipping's plate (``plate``) coming in, in a run whose captions never say what it
+    is for (none names the plate), as ``["play 5 plate"]``: the slices went onto a plate no
+    word explained."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            if anim.get("type") in INCOMING and (anim.get("mobject") or {}).get("name") == "plate":
+                later = [p.get("subcaption") or "" for p in data["plays"][k:]]
+                ends = next((j for j, p in enumerate(data["plays"][k + 1:])
+                             if _new_picture(p)), len(later))
+                if not any("plate" in caption for caption in later[:ends + 1]):
+                    found.append(f"play {k} plate")
     return found

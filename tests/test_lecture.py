@@ -45,6 +45,7 @@ from tests.reading_rules import (
     crowded_vertex_labels,
     early_picks,
     early_snags,
+    ears_without_convexity,
     faint_cuts,
     far_verdicts,
     fills_over_labels,
@@ -70,6 +71,7 @@ from tests.reading_rules import (
     morphed_water,
     notes_over_fills,
     notes_under_moving_tools,
+    panels_behind_the_picture,
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
@@ -94,6 +96,8 @@ from tests.reading_rules import (
     ticks_outside,
     uneven_countdowns,
     unexplained_grey,
+    unexplained_plates,
+    unexplained_primes,
     unmarked_candidates,
     unnamed_axes,
     unreadable_cues,
@@ -614,6 +618,12 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert broken_summaries(data) == [], chapter.slug
     # the panel's small polygon: its labels apart, off its edges, none left out
     assert crowded_panel_labels(data) == [], chapter.slug
+    # and it follows the run: slices, claims, crossed edges, cuts, diagonals, the piece
+    assert panels_behind_the_picture(data) == [], chapter.slug
+    # issue 22 item 11: an ear is said convex with an empty triangle; primes and the plate said
+    assert ears_without_convexity(data) == [], chapter.slug
+    assert unexplained_primes(data) == [], chapter.slug
+    assert unexplained_plates(data) == [], chapter.slug
     # no note under a moving tool, no vertex label under the clock's face
     assert notes_under_moving_tools(data) == [], chapter.slug
     # issue 22: no note or legend entry over P's or T's fill

@@ -183,6 +183,22 @@ def test_the_claim_lights_its_branch():
         "  BD is an inner diagonal", "  BD is an inner diagonal"]
 
 
+@pytest.mark.parametrize("name", ["ear-clipping", "ear-clipping-naive"])
+def test_every_row_of_ear_clipping_that_says_a_step_lights(name):
+    """A row that says a step (not a loop's head, ending in ":") lights in some run, on
+    polygons with holes too: ear clipping's "else go on to the next vertex" and "only V−1
+    and V+1 change: test again" covered no call and never lit (KeyholeEars: dark under "Is
+    C an ear? no", review)."""
+    logs = [*_logs(name), *([run_logged(name, "keyhole")] if name == "ear-clipping" else [])]
+    for log in logs:
+        rows = pseudocode_of(log)
+        lit = {b.row for other in logs if pseudocode_of(other) == rows
+               for b in storyboard(other)} | {result_row(rows)}
+        dark = [row.text for k, row in enumerate(rows)
+                if k not in lit and not row.text.endswith(":")]
+        assert dark == [], (name, log.meta.get("polygon"))
+
+
 def test_lit_row_goes_on_from_the_row_lit_and_round_loops():
     rows = (PseudocodeRow("test", ("is_ear",)), PseudocodeRow("clip", ("clip_ear",)), PseudocodeRow("last", ("run",)))
     assert lit_row(rows, ["run", "is_ear"], 1) == 0  # round the loop

@@ -62,6 +62,7 @@ from tests.reading_rules import (
     crowded_verdicts,
     crowded_vertex_labels,
     early_picks,
+    ears_without_convexity,
     far_verdicts,
     fleeting_kind_words,
     flickering_counts,
@@ -79,6 +80,7 @@ from tests.reading_rules import (
     mixed_ending_labels,
     morphed_water,
     notes_under_moving_tools,
+    panels_behind_the_picture,
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
@@ -100,6 +102,8 @@ from tests.reading_rules import (
     tails_beside_labels,
     thinnest_triangle,
     ticks_outside,
+    unexplained_plates,
+    unexplained_primes,
     unreadable_cues,
     unsaid_colour_changes,
     unseen_ear_tests,
@@ -390,6 +394,28 @@ def test_the_panels_polygon_keeps_its_labels_apart_and_off_its_edges(case):
     """The panel's small copy of P: no label over another or over an edge, each nearer its
     own dot than any other, none left out (issue 22: the lecture's M and K crowded)."""
     assert crowded_panel_labels(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_panels_polygon_follows_the_run(case):
+    """DESIGN: the panel is "the same polygon drawn plainly with objects coloured by their
+    role in the current call": a vertex sliced off the picture goes from it, claims, the
+    crossed edge, keyhole cuts and diagonals come into it in the picture's colours, the whole
+    triangulation shows in it, and the piece a claim is made on is tinted (review: ear
+    clipping's panel still drew A at 9 s, divide and conquer's the bare 13-gon beside 11
+    triangles)."""
+    assert panels_behind_the_picture(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_ear_clippings_words_say_what_it_does(case):
+    """Issue 22 item 11: "yes, an ear" says both conditions, convex and an empty triangle;
+    a primed label (a keyhole cut's end the second time round, ``c₁′``) is said in a caption
+    before a call line names it; and the plate the slices go to is said."""
+    data = graph(case).data
+    assert ears_without_convexity(data) == [], case.id
+    assert unexplained_primes(data) == [], case.id
+    assert unexplained_plates(data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
