@@ -24,12 +24,12 @@ import numpy as np
 from manim import (
     LEFT,
     Animation,
-    LineJointType,
     Create,
     Dot,
     FadeIn,
     FadeOut,
     Line,
+    LineJointType,
     Mobject,
     Rectangle,
     Transform,

@@ -3927,8 +3927,12 @@ def panels_behind_the_picture(data: dict) -> list[str]:
                 pieces = True
         if "panel:polygon" not in panel:
             continue
+        # a slice: the picture's outline shrinks as vertices leave it (a close-up fades the
+        # vertices outside its box for a while, the outline whole)
+        sliced = any(name == "polygon" and kind not in INCOMING | OUTGOING
+                     for kind, name, _ in ends.values())
         for kind, name, node in ends.values():
-            if name.startswith("vertex:") and kind in OUTGOING and \
+            if sliced and name.startswith("vertex:") and kind in OUTGOING and \
                     f"panel:{name.removeprefix('vertex:')}" in panel:
                 found.append(f"play {k} {name.removeprefix('vertex:')} sliced off the picture, "
                              "still in the panel")
