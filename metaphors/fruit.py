@@ -579,7 +579,8 @@ def _good_shrinks(board: Board, points: Sequence[Point]) -> list[Playable]:
         return []
     if len(points) < 3:
         return [*board.drop("good")]
-    return [Transform(board.objects["good"], _good_region(board, points))]
+    return [Transform(board.objects["good"], _good_region(board, points)),
+            *board.panel.tint("good", points)]
 
 
 def good(board: Board, beat: Good) -> None:
@@ -588,7 +589,9 @@ def good(board: Board, beat: Good) -> None:
     part's edge is that diagonal now (left on screen, the next search's claim would take
     their keys and leave them behind, unturned)."""
     region = _good_region(board, beat.points)
-    board.play(beat, *board.drop("good", *_TEST, *_FOUND), FadeIn(region), run_time=1.2)
+    # the panel tints it too (board.drop takes the panel's last one with the picture's)
+    board.play(beat, *board.drop("good", *_TEST, *_FOUND), FadeIn(region),
+               *board.panel.tint("good", beat.points), run_time=1.2)
     board.keep("good", region)
 
 

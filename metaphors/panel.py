@@ -51,6 +51,7 @@ from metaphors.layout import (
     Box,
     Obstacles,
     Rect,
+    Segment,
     around,
     clear,
     code_floor,
@@ -402,6 +403,21 @@ class Panel:
             self.part.set_z_index(-1)  # under the outline's edges and the lines drawn
             anims.append(FadeIn(self.part))
         return anims
+
+    def tint(self, key: str, points: Sequence[Sequence[float]]) -> list[Animation]:
+        """The part of P at ``points`` tinted in the blue of what a call runs on, under
+        ``key`` (prune and search's good sub-polygon, as the picture tints it): faded in, or
+        the tint under ``key`` shrinking to it."""
+        if not self.shows_polygon:
+            return []
+        shape = tag(MPolygon(*[self.frame.to_scene(p) for p in points], stroke_width=0,
+                             fill_color=self.theme.called, fill_opacity=PART_OPACITY),
+                    "called", f"{DRAWN}{key}")
+        shape.set_z_index(-1)  # under the outline's edges and the lines drawn
+        if key in self.lines:
+            return [Transform(self.lines[key], shape)]
+        self.lines[key] = shape
+        return [FadeIn(shape)]
 
     def _ring(self, points: Sequence[Sequence[float]]) -> MPolygon:
         """The panel's outline as one ring of ``points`` (what slicing leaves of P)."""
@@ -808,7 +824,7 @@ def _tiers(k: int, points: list[tuple[float, float]], away: float, width: float,
 
 
 def _across(dot: tuple[float, float], centre: tuple[float, float],
-            segments: Sequence[tuple[Sequence[float], Sequence[float]]]) -> bool:
+            segments: Sequence[Segment]) -> bool:
     """Whether a label at ``centre`` stands across a line (an edge, a drawn diagonal) from
     its ``dot``: the line between them crosses one not ending at the dot. Scaling's E
     stood below the edge B–C, its dot above it: it read as C's, or as a vertex outside P.
