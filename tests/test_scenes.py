@@ -781,9 +781,9 @@ def test_the_source_is_one_flag_away(case):
         return node["name"].startswith(("code:", "panel:lit")) or (bool(parts) and all(
             p["name"].startswith("code:") for p in parts))
 
-    def is_panel_polygon(node) -> bool:
-        return node["name"].startswith("panel:") and node["name"] not in ("panel:call",
-                                                                          "panel:lit")
+    def is_panel_polygon(node) -> bool:  # its markers, and what the run draws on it
+        return node["name"].startswith(("panel:", "panel/")) and node["name"] not in (
+            "panel:call", "panel:lit")
 
     def picture(graph_json):
         return [n for n in graph_data(graph_json)["final"]
