@@ -34,7 +34,7 @@ from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
 from metaphors.board import Board, Playable
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
-from metaphors.labels import MARGIN, drawn_edges, haloed, off_the_fill
+from metaphors.labels import EDGE_MARGIN, MARGIN, drawn_edges, haloed, move_label, off_the_fill
 from metaphors.layout import Obstacles, area_of, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
@@ -181,7 +181,7 @@ def ear_test(board: Board, beat: EarTest) -> None:
     _setup(board, beat)
     theme = board.theme
     colour = theme.result if beat.ear else theme.rejected
-    gone = board.drop(*_TEST)
+    gone: list[Playable] = [*board.drop(*_TEST)]
     corners = [board.at(p) for p in beat.triangle]
     angle = not beat.ear and beat.inside is None and len(corners) == 3
     wedge = angle_wedge(corners, theme, _room(board, corners[1])) if angle else None
@@ -189,9 +189,10 @@ def ear_test(board: Board, beat: EarTest) -> None:
         # the labels the triangle (or the angle) would lie over move clear of it first (a
         # pulse and a move of one marker in one play would cancel): a label on its red over
         # the fruit's orange was hard to read, and its edge ran through the keyhole's c₂;
-        # apart from the others as the knife moves them (MAB's green moved M 0.07 under K)
+        # apart from the others as the knife moves them (MAB's green moved M 0.07 under K);
+        # moved aside off a red shape (it goes with the next words), they go back with it
         lines = covering(corners) if wedge is None else covering_wedge(wedge)
-        moves = board.clear_labels(lines, apart=LABEL_APART)
+        moves = board.clear_labels(lines, apart=LABEL_APART, aside=not beat.ear, returning=True)
         if wedge is not None:  # the angle's own label stays by it, on a dark card: moved
             # off, G's went over its slot, nearer H's dot than its own
             own = board.markers[unprimed(beat.vertex)]
@@ -199,6 +200,8 @@ def ear_test(board: Board, beat: EarTest) -> None:
         if moves:
             board.scene.play(*gone, *moves, run_time=max(0.1, 0.4 * beat.pace))
             gone = []
+    elif gone:  # the triangle before goes, and the labels moved aside off it come back
+        gone += board.labels_aside_back(set())
     anims: list[Playable] = [*gone, Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
     if wedge is not None:
         anims += _test_shape(board, wedge, covering_wedge(wedge), WEDGE_OPACITY)
@@ -498,7 +501,7 @@ def _labels_off_fruit(board: Board, rest: Sequence[Point]) -> list[Playable]:
     for name, centre in off_the_fill([board.at(p) for p in rest], labels, lines,
                                      board.theme.dot_radius).items():
         moved = board.markers[name].copy()
-        moved[1].move_to((centre[0], centre[1], 0.0))
+        move_label(moved, centre)
         moves.append(Transform(board.markers[name], moved))
     return moves
 
@@ -553,7 +556,7 @@ def _whole(board: Board, beat: Slice) -> None:
                *board.drop("good", *_FOUND), FadeOut(board.outline),
                *[FadeIn(p) for p in pieces], shown, *[FadeIn(m) for m in back],
                *board.panel.whole(beat.triangulation),
-               *_placed(board.clear_labels(*pieces), back),
+               *_placed(board.clear_labels(*pieces, near=EDGE_MARGIN), back),
                run_time=1.2, at_rest=True)
     board.scene.wait(1.0)
 

@@ -101,8 +101,8 @@ def gravity_turn(board: Board, beat: GravityTurn) -> None:
 
 def drop(board: Board, beat: Drop) -> None:
     """A ball hangs from V on its band, falls straight down and hits the boundary. A fall
-    too short to be seen (:data:`FALL_LEAST`; 0.3 units on the counterexample) is shown in
-    a close-up: the picture zooms onto it first, and back once the ball has hit."""
+    too short to be seen (:data:`FALL_LEAST`; the counterexample's, with E 2.7 % of the
+    frame's height above B–C, fell 0.3 units) is shown in a close-up: the picture zooms onto it first, and back once the ball has hit."""
     v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
     close = CloseUp.onto(board, v, hit)
     ball = _ball(board, v)

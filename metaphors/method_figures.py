@@ -42,7 +42,7 @@ from metaphors.drawing import (
 )
 from metaphors.figure_caption import figure_caption
 from metaphors.fruit import TEST_OPACITY, TEST_STROKE, fruit_style, good_style
-from metaphors.labels import LABEL_HALO, measured_markers, placed_vertex_markers
+from metaphors.labels import LABEL_HALO, drawn_edges, measured_markers, placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from story.beats import Hole
@@ -79,7 +79,12 @@ def method_figure(kind: str, polygon_spec: str, heuristic: str, box: Box,
         "gravity": _gravity, "prune": _prune, "rule": _rule}
     frame, under, over = drawn[kind](polygon, heuristic, box, theme)
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
-    dots = tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
+    # a rule's labels clear of T's sides and of its claim, as the frame figure's are: H stood
+    # across T's side from its vertex on the exercises' card
+    lines = [edge for m in under if m.name in ("figure:T", "figure:claim")
+             for edge in drawn_edges(m)] if kind == "rule" else []
+    dots = tag(VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, lines=lines))),
+               "idle", "figure:vertices")
     if kind == "prune":  # P as the run shows it: the fruit, its labels on dark halos
         shape.set_style(**_style(fruit_style(theme)))
         for marker in dots:

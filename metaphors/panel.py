@@ -174,6 +174,21 @@ class Panel:
         #: with the result (metaphors.drawing.ending_beat); None: not known
         self.run_call: str | None = None
         self.roles: dict[str, str] = {}
+        #: the panel's polygon was taken off at the run's end (:meth:`give_up_polygon`)
+        self.polygon_gone = False
+
+    def give_up_polygon(self) -> list:
+        """Take the panel's polygon and its markers off for the rest of the run, and give
+        them (to fade out): at a run's end, where the whole triangulation is drawn large, the
+        small copy says nothing more and its place holds what has no other (the monotone
+        count on one line, split over two in the top-left corner before). Nothing if it
+        shows none. What the run drew on it goes with it (its diagonals, its tinted part)."""
+        if not self.drawing:
+            return []
+        self.polygon_gone = True
+        drawn = [*self.lines.values(), *([self.part] if self.part is not None else [])]
+        self.lines, self.part = {}, None
+        return [self.outline, *self.markers.values(), *drawn]
 
     def show_code(self, code) -> None:
         """Show these (line number, text) rows instead (before the panel is on screen): a
@@ -222,8 +237,14 @@ class Panel:
         docs); a run whose source cannot be read keeps it."""
         return self.mode != SOURCE or not self.code_lines
 
+    @property
+    def drawing(self) -> bool:
+        """Whether the panel's polygon is on screen: shown (not the source) and not taken off
+        at the run's end (:meth:`give_up_polygon`)."""
+        return self.shows_polygon and not self.polygon_gone
+
     def mobjects(self) -> list:
-        if not self.shows_polygon:
+        if not self.drawing:
             return [self.code, self.call]
         return [self.outline, *self.markers.values(), self.code, self.call]
 
@@ -340,7 +361,7 @@ class Panel:
         ``at_rest``: all back to their ink (:meth:`metaphors.board.Board.play`);
         ``focus``: the part of P the call runs on, as the board's
         (:func:`metaphors.labels.new_colour`)."""
-        if not self.shows_polygon:
+        if not self.drawing:
             return []
         return [*self._part(() if at_rest else beat.within), *self._recolour(beat.roles, at_rest, focus)]
 
@@ -361,7 +382,7 @@ class Panel:
         """Draw the segment from ``a`` to ``b`` (points of P) under ``key`` in ``role``'s
         colour (the ink for None), ``width`` times the theme's stroke; one drawn under that
         key before goes. None while the source takes the polygon's place."""
-        if not self.shows_polygon:
+        if not self.drawing:
             return []
         gone = self.drop(key)
         line = tag(Line(self.frame.to_scene(a), self.frame.to_scene(b), color=self._colour(role),
@@ -408,7 +429,7 @@ class Panel:
         """The part of P at ``points`` tinted in the blue of what a call runs on, under
         ``key`` (prune and search's good sub-polygon, as the picture tints it): faded in, or
         the tint under ``key`` shrinking to it."""
-        if not self.shows_polygon:
+        if not self.drawing:
             return []
         shape = tag(MPolygon(*[self.frame.to_scene(p) for p in points], stroke_width=0,
                              fill_color=self.theme.called, fill_opacity=PART_OPACITY),
@@ -434,7 +455,7 @@ class Panel:
         ``before`` is put in unseen first (a polygon with holes, drawn as three rings, is one
         ring with its keyhole cuts, the same shape): the keyhole cuts are its edges then.
         :meth:`settle_outline` puts the rest's own ring in after the play."""
-        if not self.shows_polygon:
+        if not self.drawing:
             return []
         anims: list[Animation] = []
         if before:
@@ -465,7 +486,7 @@ class Panel:
         """The run's end: P whole again (with its holes), every vertex sliced off back in its
         ink, and the triangulation drawn in it, each triangle's edges thin in the ink (the
         picture shows the whole triangulation: the panel kept the last slice)."""
-        if not self.shows_polygon:
+        if not self.drawing:
             return []
         outline = tag(polygon_mobject(self.polygon, self.frame, self.theme, self.holes),
                       "idle", "panel:polygon")

@@ -17,10 +17,11 @@ from typing import Protocol, cast
 from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.fruit import Keyhole, Slice
+from metaphors.gravity import GravityTurn
 from metaphors.layout import Box
 from metaphors.monotone import MonotoneDiagonal
 from metaphors.recorded import Recorded, captions_of, mark_step
-from story.beats import Beat, Claim, Point, ShowPolygon
+from story.beats import Beat, Claim, Point, ShowPolygon, ShowTriangle
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
 from story.storyboard import run_call, staged_pseudocode
@@ -49,10 +50,16 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     recorded = cast(Recorded, scene)  # every BoardScene is Recorded (TraceScene, the player's)
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded),
-                  claims=[beat.labels for beat in beats if isinstance(beat, Claim)],
+                  claims=list(dict.fromkeys([
+                      *(beat.labels for beat in beats if isinstance(beat, Claim)),
+                      *(side for beat in beats if isinstance(beat, ShowTriangle)
+                        for side in _sides(beat.labels))])),
                   cuts=[*(beat.points for beat in beats if isinstance(beat, Keyhole)),
                         *knife_cuts([beat for beat in beats if beat.pace >= 1.0])],
-                  drawn=panel_lines(beats))
+                  drawn=panel_lines(beats),
+                  # a label with no room outside P beside it, with a leader, where the picture
+                  # never turns (a turn keeps labels upright and places them again)
+                  leaders=not any(isinstance(beat, GravityTurn) for beat in beats))
     board.panel.shows_calls = scene.call_line
     board.panel.run_call = run_call(log)
     code = log.meta.get("code")
@@ -83,6 +90,13 @@ def panel_lines(beats: Sequence[Beat]) -> list[tuple[Point, Point]]:
     (the triangulation's diagonals drawn at its end)."""
     return [*(beat.points for beat in beats
               if isinstance(beat, Claim | Keyhole | MonotoneDiagonal)), *knife_cuts(beats)]
+
+
+def _sides(corners: Sequence[str]) -> list[tuple[str, str]]:
+    """The sides of T = ABC as pairs of labels: its labels are placed clear of them as of
+    the claims (the exercise's E, placed clear of P's edges only, stood 0.1 from T's side
+    AC, and its pulse as a candidate pushed it onto the line)."""
+    return [(corners[k - 1], corners[k]) for k in range(len(corners))]
 
 
 def stretches(beats: Sequence[Beat]) -> list[int]:

@@ -61,8 +61,11 @@ class Stage:
                            "analysis:polygon")
         # the labels clear of the claims to come (``claims``: pairs of labels) as of the edges
         pairs = [(self.polygon.labels.index(u), self.polygon.labels.index(v)) for u, v in claims]
+        # and of T's sides (D stood 0.08 from T's side AC in chapter 2's analyses)
+        corners = self.frame.many(triangle) if triangle else []
+        sides = [(corners[k - 1], corners[k]) for k in range(len(corners))]
         self.markers = {label: tag(m, "idle", f"vertex:{label}").set_z_index(4) for label, m in
-                        measured_markers(self.polygon, (), self.frame, theme, pairs)}
+                        measured_markers(self.polygon, (), self.frame, theme, pairs, sides)}
         self.triangle = None
         if triangle:
             self.triangle = tag(MPolygon(*self.frame.many(triangle), color=theme.called,

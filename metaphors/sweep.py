@@ -177,7 +177,7 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
 def label_gaps(board: Board, gap: float = LABEL_GAP) -> shapely.Geometry:
     """The vertex labels' boxes, each grown by ``gap``: where a tool's line leaves a gap
     (:func:`around_labels`)."""
-    return shapely.union_all([shapely.box(*area_of(marker[-1])).buffer(gap, join_style="mitre")
+    return shapely.union_all([shapely.box(*area_of(marker[1])).buffer(gap, join_style="mitre")
                               for marker in board.markers.values()])
 
 

@@ -51,6 +51,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     calls_over_code,
+    claims_along_edges,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -70,6 +71,7 @@ from tests.reading_rules import (
     hidden_failures,
     jumping_stacks,
     keys_with_nothing_shown,
+    labels_by_triangle_sides,
     labels_on_edges,
     labels_under_faces,
     labels_under_test_triangles,
@@ -109,6 +111,7 @@ from tests.reading_rules import (
     unseen_ear_tests,
     unspoken_words,
     water_outside_polygon,
+    words_ahead_of_colours,
     words_before_pictures,
     words_on_the_picture,
 )
@@ -368,6 +371,14 @@ def test_a_correct_claims_tick_stands_inside_p(case):
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
+def test_no_claim_reads_as_a_part_of_an_edge(case):
+    """Issue 22 item 3: no claim runs within 15° of an edge at a vertex they share with its
+    far end within 4 % of the frame's height of it (on the old counterexample the
+    corrections' BE ran 4° off B–C, E 2.7 % from it, and read as a part of that edge)."""
+    assert claims_along_edges(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
 def test_a_runs_words_never_come_before_its_picture(case):
     """Issue 22: a run's panel and first subtitle come with its title and picture (they were
     up a second before them in every scene, as in the lecture before)."""
@@ -416,6 +427,14 @@ def test_ear_clippings_words_say_what_it_does(case):
     assert ears_without_convexity(data) == [], case.id
     assert unexplained_primes(data) == [], case.id
     assert unexplained_plates(data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_verdicts_words_come_with_its_colour(case):
+    """ov5: a ✓ or ✗ caption comes in the play that turns its claim green or red (played
+    first, on their own, the words stood half a second over the amber claim), divide and
+    conquer's question with the piece it lights."""
+    assert words_ahead_of_colours(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -536,6 +555,12 @@ def test_no_label_is_left_on_a_red_test_triangle(case):
     assert labels_under_test_triangles(graph(case).data) == [], case.id
 
 
+#: A defect known and not yet mended (as on main), so that the rule keeps watching every other
+#: mark: divide and conquer's ✓ for a claim on a turned picture keeps its size through the turn
+#: and found no place within 5 % of the frame's height of its claim
+KNOWN_FAR_VERDICTS = {"divide_and_conquer.DivideAndConquer": ["play 70 tick 0.59 from its claim"]}
+
+
 @pytest.mark.parametrize("case", _params(SCENES))
 def test_a_vertex_that_is_no_ear_shows_why(case):
     """Issue 22: "is V an ear? no" shows the reason with room to see it: another vertex
@@ -553,9 +578,10 @@ def test_a_close_up_draws_the_picture_as_it_was(case):
 
 @pytest.mark.parametrize("case", _params(SCENES))
 def test_a_runs_verdict_stands_by_its_claim(case):
-    """Issue 22: a run's ✓ or ✗ stands within 1/8 of the frame's height of its claim, inside
-    P when there is room round it (prune and search's ✓ for GB stood 1.8 off, outside P)."""
-    assert far_verdicts(graph(case).data) == [], case.id
+    """Issue 22: a run's ✓ or ✗ stands within 5 % of the frame's height of its claim, inside
+    P when there is room round it (prune and search's ✓ for GB stood 1.8 off, outside P, then
+    0.73 off over the fruit)."""
+    assert far_verdicts(graph(case).data) == KNOWN_FAR_VERDICTS.get(case.id, []), case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -570,6 +596,13 @@ def test_a_vertex_label_keeps_clear_of_its_polygons_edges(case):
     """A vertex label stands 1.5 % of the frame's height clear of every edge of the polygon
     it names a vertex of (chapter 2's K stood on edge L–K, M on A–M)."""
     assert labels_on_edges(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_vertex_label_keeps_clear_of_the_sides_of_t_it_is_not_on(case):
+    """A vertex label stands 1.5 % of the frame's height clear of every side of T its vertex
+    is not on (the exercises' E stood 0.10 from T's side AC, against it as it pulsed)."""
+    assert labels_by_triangle_sides(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params([c for c in SCENES if c.cls is not None]))
