@@ -550,14 +550,16 @@ def _whole(board: Board, beat: Slice) -> None:
     # every vertex is one again: the sliced-off ones come back with the triangles
     back = _markers_back(board)
     # under its own caption, at full pace: the last slice's words are over; what the steps
-    # left (prune and search's good part, its last diagonal and ✓) goes
+    # left (prune and search's good part, its last diagonal and ✓) goes. The caption comes
+    # with the triangulation it counts (``together``): led by its words, "The whole
+    # triangulation: 11 triangles" stood half a second over the last slice (review)
     board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call,
                            holes),
                *board.drop("good", *_FOUND), FadeOut(board.outline),
                *[FadeIn(p) for p in pieces], shown, *[FadeIn(m) for m in back],
                *board.panel.whole(beat.triangulation),
                *_placed(board.clear_labels(*pieces, near=EDGE_MARGIN), back),
-               run_time=1.2, at_rest=True)
+               run_time=1.2, at_rest=True, together=True)
     board.scene.wait(1.0)
 
 

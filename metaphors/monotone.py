@@ -494,12 +494,13 @@ def _whole(board: Board, beat: Stack) -> None:
         board.keep("counter", count)
         shown.append(FadeIn(count))
     # under its own caption, at full pace, its result row lit: the last piece's words are over
-    # with holes, the caption says what the count's h is, as ear clipping's does
+    # with holes, the caption says what the count's h is, as ear clipping's does; the caption
+    # comes with the triangulation it counts, not before it (:func:`metaphors.fruit._whole`)
     board.play(ending_beat(beat, board.panel.pseudocode, len(whole), board.panel.run_call,
                            len(board.holes)),
                *board.drop(*tints), *[FadeIn(t) for t in whole], *shown,
                *board.clear_labels(*whole), *board.panel.whole(beat.triangulation),
-               run_time=1.2, at_rest=True)
+               run_time=1.2, at_rest=True, together=True)
     board.scene.wait(1.0)
 
 

@@ -226,8 +226,9 @@ def done(board: Board, beat: Done) -> None:
     finder = board.objects.get("finder")
     if finder is not None:
         board.scene.play(*board.drop("finder"), run_time=0.5)
+    # the caption with the triangulation it counts (:func:`metaphors.fruit._whole`)
     board.play(ending_beat(beat, board.panel.pseudocode, triangles, board.panel.run_call),
-               *_whole(board, finder), run_time=1.2, at_rest=True)
+               *_whole(board, finder), run_time=1.2, at_rest=True, together=True)
 
 
 def _whole(board: Board, finder: Mobject | None) -> list[Playable]:

@@ -4767,3 +4767,84 @@ def claims_like_their_edges(data: dict) -> list[str]:
                     and any(_solid_strokes(node) & c for c in claims):
                 found.append(f"play {k}: {name} like its claim")
     return found
+
+
+# --- panel7: chapter 4 reviewed (the band on the fruit, the ending's count, V's triangle) -----
+
+#: a vertex named by arithmetic on a placeholder (``V−1``, ``V+1``): read as a sum, not as
+#: "the vertex before V"
+_VERTEX_ARITHMETIC = re.compile(r"\b[A-Z]\s?[−+-]\s?1\b")
+
+
+def arithmetic_vertex_names(data: dict) -> list[str]:
+    """The texts on screen (and the cues) that name a vertex by arithmetic, as ``"'is V an
+    ear? (convex, V−1 V V+1 empty)'"``: chapter 4's card and ear clipping's rows said "V−1 V
+    V+1", read as a sum (review); the triangle of V and its two neighbours is said in words.
+    The panel's call line (a programmer's, in ``trex render``) is not read."""
+    return sorted({repr(text) for text in _all_shown_texts(data, frozenset({"panel:call"}))
+                   if _VERTEX_ARITHMETIC.search(text)})
+
+
+#: how a run's ending caption begins (:func:`metaphors.drawing.ending_caption`)
+_WHOLE_WORDS = "The whole triangulation"
+
+
+def counts_before_triangulations(data: dict) -> list[str]:
+    """The plays that put up "The whole triangulation: 11 triangles" without the whole
+    triangulation coming in (``triangulation``), as ``"play 82: 'The whole triangulation: 11
+    triangles'"``: led by its words, the count stood half a second over the last slice (ear
+    clipping, prune and search), the last pieces (monotone) and the finished triangles
+    (divide and conquer) before what it counts was drawn (review, chapter 4 at 109.9 s)."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        said = play.get("subcaption") or ""
+        if not said.startswith(_WHOLE_WORDS):
+            continue
+        if not any(a.get("type") in INCOMING and (a.get("mobject") or {}).get("name")
+                   == "triangulation" for a in play["animations"]):
+            found.append(f"play {k}: {said!r}")
+    return found
+
+
+#: the lines a run draws over its polygon that must read on the fruit's orange: gravity's band
+_ON_THE_FRUIT = ("band",)
+#: the least width of a dark casing under a line (of the line's own width) that lets it read
+#: on any fill
+LEAST_CASING = 2.0
+
+
+def _cased(node: dict) -> bool:
+    """Whether a line has a dark, opaque casing (a background stroke) :data:`LEAST_CASING`
+    times its own width."""
+    halo = node.get("halo") or {}
+    colour = _one_colour(halo.get("stroke"))
+    return (colour is not None and _luminance(colour) < 0.15
+            and (halo.get("stroke_opacity") or 0) >= 0.99
+            and (halo.get("stroke_width") or 0) >= LEAST_CASING * (node.get("stroke_width") or 0))
+
+
+def lines_lost_on_the_fruit(data: dict) -> list[str]:
+    """The lines drawn over the fruit (:data:`_ON_THE_FRUIT`) that do not read on it, as
+    ``"play 90 band 1.4 : 1"``: the contrast of the line's colour with the fruit's as the
+    screen shows it is under :data:`LEAST_CONTRAST`, and the line has no dark casing
+    (:func:`_cased`). Gravity's rose band on prune and search's orange fruit was all but
+    invisible (review, chapter 4 at 79–88 s). Each name once."""
+    from metaphors.theme import THEME
+
+    found: dict[str, str] = {}
+    fruit: str | None = None  # the fruit's colour on screen, once it is drawn
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            fruit = None
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                name = node.get("name")
+                if name == "fruit" and node.get("fill"):
+                    fruit = _over(_one_colour(node["fill"]) or "#000000",
+                                  node.get("fill_opacity") or 0.0, THEME.background)
+                elif name in _ON_THE_FRUIT and fruit is not None and node.get("points"):
+                    colour = _one_colour(node.get("stroke"))
+                    ratio = contrast(colour, fruit) if colour else 0.0
+                    if ratio < LEAST_CONTRAST and not _cased(node):
+                        found.setdefault(name, f"play {k} {name} {ratio:.1f} : 1")
+    return sorted(found.values())

@@ -31,6 +31,7 @@ from tests.reading_rules import (
     alike_neighbours,
     amber_figure_marks,
     answers_over_pictures,
+    arithmetic_vertex_names,
     balls_not_there,
     bare_measures,
     bare_ticks,
@@ -39,6 +40,7 @@ from tests.reading_rules import (
     claims_along_edges,
     claims_given_away,
     claims_like_their_edges,
+    counts_before_triangulations,
     counts_on_two_lines,
     crossed_vertex_labels,
     crossfaded_overlaps,
@@ -80,6 +82,7 @@ from tests.reading_rules import (
     labels_under_tools,
     labels_without_contrast,
     leftover_verdicts,
+    lines_lost_on_the_fruit,
     lone_numbers,
     morphed_water,
     names_said_otherwise,
@@ -597,6 +600,12 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 items 1 and 10: the taught words, no slug, no code (no call line either), no
     # number with two decimals
     assert unspoken_words(data) == [], chapter.slug
+    # panel7 (review of chapter 4): no vertex named by arithmetic ("V−1 V V+1" read as a
+    # sum); the whole triangulation's count comes with it, not half a second before; the
+    # band reads on the fruit (rose on orange, 1.4 : 1)
+    assert arithmetic_vertex_names(data) == [], chapter.slug
+    assert counts_before_triangulations(data) == [], chapter.slug
+    assert lines_lost_on_the_fruit(data) == [], chapter.slug
     # issue 22 item 6: time to think, and the answer beside the picture, not over it
     assert rushed_questions(data) == [], chapter.slug
     # and the countdown ticks once a second, each number up 1 s (it was eased: 15 and 1 stayed

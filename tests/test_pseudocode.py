@@ -404,3 +404,21 @@ def test_a_builtins_log_carries_no_pseudocode():
     for name in REGISTRY:
         log = run_logged(name, entry(name).polygon)
         assert "pseudocode" not in json.loads(log.to_json())["meta"], name
+
+
+#: the traced calls that run a diagonal finder taught by name, and the name it was taught by
+_TAUGHT_FINDERS = {"sweep_at": "translation-correct", "gravity_at": "gravity"}
+
+
+@pytest.mark.parametrize("name", names())
+def test_a_row_running_a_taught_finder_names_it(name):
+    """panel7 (review of chapter 4): a row lit while a heuristic taught by name runs says
+    that name: prune and search's "(V convex: the sweep; else gravity)" left the viewer to
+    guess which of the sweeps (Translation, wrong; Correct Translation, the line parallel to
+    AC) it was."""
+    from story.registry import spoken
+
+    for row in entry(name).pseudocode:
+        for call in row.calls:
+            if call in _TAUGHT_FINDERS:
+                assert spoken(_TAUGHT_FINDERS[call]) in row.text, (name, row.text)

@@ -47,11 +47,13 @@ from story.storyboard import run_vertices
 from tests.reading_rules import (
     LEAST_LINE,
     LEAST_TRIANGLE,
+    arithmetic_vertex_names,
     balls_not_there,
     broken_counts,
     broken_summaries,
     calls_over_code,
     claims_along_edges,
+    counts_before_triangulations,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -427,6 +429,16 @@ def test_ear_clippings_words_say_what_it_does(case):
     assert ears_without_convexity(data) == [], case.id
     assert unexplained_primes(data) == [], case.id
     assert unexplained_plates(data) == [], case.id
+    # and the triangle of V and its two neighbours in words ("V−1 V V+1" read as a sum)
+    assert arithmetic_vertex_names(data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_whole_triangulations_count_comes_with_it(case):
+    """panel7 (review of chapter 4): "The whole triangulation: 11 triangles" comes in the
+    play that draws the whole triangulation; led by its words, it stood half a second over
+    the last slice, the last pieces or the finished triangles."""
+    assert counts_before_triangulations(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
