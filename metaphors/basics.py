@@ -24,6 +24,7 @@ from manim import (
 from metaphors.board import Board, Playable
 from metaphors.drawing import crossed_edge
 from metaphors.marks import board_spot
+from metaphors.panel import CLAIM_WIDTH, CROSSED_WIDTH
 from metaphors.performing import Performances, act, performs
 from metaphors.picture import upright
 from metaphors.tags import tag
@@ -79,12 +80,10 @@ def claim(board: Board, beat: Claim) -> None:
     line = tag(Line(board.at(u), board.at(v), color=board.theme.argument,
                     stroke_width=board.theme.stroke * 1.5), "argument", "claim")
     board.keep("claim", line)
-    # on a turned picture the panel shows P as it stands: the claim drawn there too (it
-    # coloured the claim's ends only: chapter 3's CH on the gravity run's panel)
-    shown = ([board.panel.claim(*beat.labels, "argument")]
-             if board.frame.angle and board.panel.shows_polygon else [])
-    # a label it would run through (Correct Scaling's E, on BE) steps aside as it is drawn
-    board.play(beat, Create(line), *shown, *board.clear_labels(line), run_time=1.0)
+    # a label it would run through (Correct Scaling's E, on BE) steps aside as it is drawn;
+    # the panel draws it too, in the same amber (the panel showed only its ends' colours)
+    board.play(beat, Create(line), *board.clear_labels(line),
+               *board.panel.draw("claim", u, v, "argument", CLAIM_WIDTH), run_time=1.0)
 
 
 def verdict(board: Board, beat: Verdict) -> None:
@@ -110,21 +109,25 @@ def _judged(board: Board, beat: Verdict) -> None:
         if line is not None:  # beside the claim, clear of every edge and label
             mark.move_to(board_spot(board, mark, line))
         board.keep("verdict", mark)
-        held = [] if line is None else [line.animate.set_color(theme.result)]
+        held: list[Playable] = [] if line is None else [line.animate.set_color(theme.result)]
         if line is not None:
             tag(line, "result", "claim")
-        board.play(beat, *held, *board.panel.judge_claim("result"), FadeIn(mark, scale=1.5),
-                   run_time=1.0, together=True)
+        held += board.panel.recolour("claim", "result")
+        board.play(beat, *held, FadeIn(mark, scale=1.5), run_time=1.0, together=True)
         return
-    anims: list[Playable] = [*board.panel.judge_claim("rejected")]
+    anims: list[Playable] = []
     if line is not None:
         anims.append(tag(line, "rejected", "claim").animate.set_color(theme.rejected))
+    anims += board.panel.recolour("claim", "rejected")
     edge = beat.edge
     if edge:
         crossed = crossed_edge(board.vertex(edge[0]), board.vertex(edge[1]),
                                f"edge:{'–'.join(edge)}", theme)
         board.keep("crossed", crossed)
-        anims.append(Create(crossed))
+        # in the panel too: the claim red across the red edge it crosses
+        anims += [Create(crossed), *board.panel.draw("crossed", board.where[edge[0]],
+                                                     board.where[edge[1]], "rejected",
+                                                     CROSSED_WIDTH)]
     if beat.point:
         at = board.at(beat.point)
         spot = tag(Dot(at, radius=0.09, color=theme.rejected), "rejected", "crossing")

@@ -43,7 +43,7 @@ from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering.layers import BACKDROP_Z, STILL_Z
 from rendering.typeset import balanced, glyphs, text
-from story.beats import Beat, Hole
+from story.beats import Beat, Hole, Point
 from story.reading import reading_time
 
 #: seconds the words of a beat take to change (at most half the beat)
@@ -96,7 +96,8 @@ class Board:
     def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
                  theme: Theme = THEME, box: Box = METAPHOR, holes=(), *,
                  captions: CaptionTrack, claims: Sequence[tuple[str, str]] = (),
-                 cuts: Sequence[Sequence[Sequence[float]]] = (), leaders: bool = False):
+                 cuts: Sequence[Sequence[Sequence[float]]] = (),
+                 drawn: Sequence[tuple[Point, Point]] = (), leaders: bool = False):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
@@ -111,9 +112,9 @@ class Board:
         pairs = [(self.polygon.labels.index(u), self.polygon.labels.index(v))
                  for u, v in claims if u in self.polygon.labels and v in self.polygon.labels]
         self.claim_pairs = pairs  # placed again clear of them when the picture turns
-        # and of the lines the run will cut (``cuts``, two points each: a keyhole's), so that
-        # no cut moves a label: moved by each keyhole as it was cut, c₂ stood in three places
-        # in two steps, and c₁ and d₂ jumped with it
+        # and of the lines the run will cut (``cuts``, two points each: a keyhole's, a
+        # slice's), so that no cut moves a label: moved by each keyhole as it was cut, c₂
+        # stood in three places in two steps, and c₁ and d₂ jumped with it
         lines = [(self.frame.to_scene(a), self.frame.to_scene(b)) for a, b in cuts]
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}").set_z_index(LABEL_Z)
@@ -124,7 +125,9 @@ class Board:
             label: p for label, p in zip(labels, self.polygon.points, strict=True)}
         self.where.update({label: tuple(p) for hole in self.holes
                            for label, p in zip(hole.labels, hole.points, strict=True)})
-        self.panel = Panel(points, labels, shown, theme, self.holes)
+        # ``drawn``: the segments the run will draw in the panel (claims, cuts, slices' cuts),
+        # which its labels keep clear of
+        self.panel = Panel(points, labels, shown, theme, self.holes, drawn)
         self.title = tag(glyphs(title, font=theme.font, size=30, colour=theme.ink), None, "title")
         self.title.move_to((0, TITLE_Y, 0))
         self.subtitle = tag(text(" ", font=theme.font, size=theme.caption_size), None,
@@ -229,9 +232,12 @@ class Board:
         busy |= {id(getattr(a, "mobject", None)) for a in passed}
         beat = replace(beat, roles=self.held_roles(beat.roles))
         recolour, after = self._recolour(beat.roles, busy, at_rest)
-        action = [*anims, *self.panel.follow_roles(beat, at_rest, self.focus), *recolour]
+        action = [*anims, *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
                  *(FadeOut(m) for m in self.leaving)]
+        # the panel's colours change with its call line and lit row, not after them: under
+        # "is_ear(B) → False" its E and F were still green from the slice before (review)
+        roles = self.panel.follow_roles(beat, at_rest, self.focus)
         self.leaving = []
         paced = max(0.1, run_time * beat.pace)
         lead = min(WORDS_TIME, paced / 2)
@@ -245,14 +251,14 @@ class Board:
         if split:
             for animation in words:
                 animation.mobject.set_z_index(WORDS_Z)
-            self.scene.play(*words, *passed, run_time=lead, **caption)
+            self.scene.play(*words, *roles, *passed, run_time=lead, **caption)
             self.settle()
             if action:
                 self.scene.play(*action, run_time=rest)
             else:
                 self.scene.wait(whole_frames(rest))
-        elif words or action or passed:
-            self.scene.play(*words, *passed, *action, run_time=total, **caption)
+        elif words or action or passed or roles:
+            self.scene.play(*words, *roles, *passed, *action, run_time=total, **caption)
         for marker, colour in after:
             marker.set_color(colour)
         self.caption = beat.caption
@@ -439,6 +445,8 @@ class Board:
         unless taken away or replaced before."""
         self.passing.update({key: self.objects[key] for key in keys if key in self.objects})
 
-    def drop(self, *keys: str) -> list[FadeOut]:
-        """Fade-outs for remembered objects."""
-        return [FadeOut(self.objects.pop(k)) for k in keys if k in self.objects]
+    def drop(self, *keys: str) -> list[Animation]:
+        """Fade-outs for remembered objects, and for what the panel draws of them under the
+        same keys (a claim, the edge it crosses: :meth:`metaphors.panel.Panel.draw`)."""
+        return [*(FadeOut(self.objects.pop(k)) for k in keys if k in self.objects),
+                *self.panel.drop(*keys)]

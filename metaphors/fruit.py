@@ -8,16 +8,17 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Mapping, Sequence
-from typing import Any
+from typing import Any, cast
 
+import manim
 import numpy as np
 from manim import (
     Add,
     Create,
+    Dot,
     Ellipse,
     FadeIn,
     FadeOut,
-    Indicate,
     Line,
     Mobject,
     Polygram,
@@ -137,6 +138,23 @@ def _counter_text(board: Board, words: str, colour: str) -> Mobject:
     return text.move_to((board.frame.center[0], PLATE_Y + 0.68, 0))
 
 
+class Indicate(manim.Indicate):
+    """A vertex's pulse: its dot grows and, with its label, takes the colour for a moment;
+    the label keeps its size and place. manim's scales the whole marker about its middle:
+    a label set off its dot (the fruit's G, moved clear of the slices) grew to twice its
+    size and flew ~45 px off its vertex at 25 s of ear clipping. Any other mobject pulses
+    as manim's does."""
+
+    def create_target(self) -> Mobject:
+        target = cast(Mobject, self.mobject.copy())
+        parts = target.submobjects
+        if isinstance(target, VGroup) and len(parts) == 2 and isinstance(parts[0], Dot):
+            parts[0].scale(self.scale_factor)
+        else:
+            target.scale(self.scale_factor)
+        return target.set_color(self.color)
+
+
 class Replace(Add):
     """A cut inside a play: ``new`` is on screen from the play's first frame and ``old`` off
     it then (the count: a fade from nothing left no count for its first frames, and taking
@@ -213,13 +231,14 @@ def _test_shape(board: Board, shape: MPolygon, lines: VGroup, opacity: float) ->
     """The animations bringing in what a test shows (its triangle, or its angle), faded in
     to ``opacity`` under the vertices and their labels (the vertex inside a triangle is what
     the caption names, "G lies in its triangle", and a fade-in would put the triangle over
-    it), and a dark card under a label left on it (``lines``: :func:`covering`)."""
+    it), and a dark card under a label an edge of it runs through (``lines``: :func:`covering`,
+    all of it for a label without a halo)."""
     shape.set_fill(opacity=0).set_stroke(opacity=0)
     board.keep("ear-triangle", shape)  # what the test shows: it goes with the test
     board.scene.add(shape)
     anims: list[Playable] = []
-    backing = _backing(board, lines)
-    if backing is not None:  # a label left on it (its vertex inside): a dark card
+    backing = _backing(board, lines, _outline_edges(shape))
+    if backing is not None:  # an edge through a label left on it: a dark card
         board.keep("ear-backing", backing)
         board.scene.add(backing)
         anims.append(backing.animate.set_fill(opacity=BACKING_OPACITY))
@@ -318,19 +337,32 @@ _TEST = ("ear-triangle", "ear-backing")
 BACKING_PAD, BACKING_OPACITY = 0.04, 0.85
 
 
-def _backing(board: Board, lines: VGroup) -> VGroup | None:
+def _outline_edges(shape: MPolygon) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The edges of a test's shape (its triangle's three, its angle's arcs and sides)."""
+    ring = [np.asarray(p, dtype=float) for p in shape.get_vertices()]
+    return list(zip(ring, [*ring[1:], ring[0]], strict=True))
+
+
+def _backing(board: Board, lines: VGroup,
+             edges: Sequence[tuple[np.ndarray, np.ndarray]]) -> VGroup | None:
     """Dark cards (the background's colour, transparent until faded in) under the labels
-    that ``lines`` (:func:`covering`) still meet, their markers where they stand now; None if
-    none: a red label on the red triangle over the fruit's orange is hard to read."""
-    edges = [(line.get_start(), line.get_end()) for line in lines.submobjects]
-    solid = Obstacles(segments=edges)
+    left on a test's shape that an edge of it (``edges``) still meets, or, a label without a
+    dark halo, any of ``lines`` (:func:`covering`: its inside too), their markers where they
+    stand now; None if none: a red label on the red triangle over the fruit's orange is hard
+    to read, and an edge through a label reads as part of it. A haloed label inside the
+    shape, clear of its edges, reads as every label on the fruit does: a card under it (ear
+    clipping's G, inside B's triangle) was a box no other label had."""
+    inside = Obstacles(segments=[(line.get_start(), line.get_end())
+                                 for line in lines.submobjects])
+    rim = Obstacles(segments=list(edges))
     cards = VGroup()
     for label, marker in sorted(board.markers.items()):
         if not isinstance(marker, VGroup) or len(marker) < 2:
             continue
         text = marker[1]
         box = rects_at(text.get_center()[:2], (text.width, text.height))
-        if solid.gaps(box)[0] >= MARGIN:
+        haloed = text.get_stroke_width(background=True) > 0
+        if (rim if haloed else inside).gaps(box)[0] >= MARGIN:
             continue
         card = Rectangle(width=text.width + 2 * BACKING_PAD, height=text.height + 2 * BACKING_PAD,
                          stroke_width=0, fill_color=board.theme.background, fill_opacity=0)
@@ -385,7 +417,8 @@ def keyhole(board: Board, beat: Keyhole) -> None:
               "result", f"keyhole:{beat.hole}")
     board.play(beat, Create(knife), Indicate(board.markers[beat.corners[0]], color=theme.result),
                run_time=0.8)
-    board.play(beat, FadeOut(knife), FadeIn(cut), *board.clear_labels(cut), run_time=0.5)
+    board.play(beat, FadeOut(knife), FadeIn(cut), *board.clear_labels(cut),
+               *board.panel.draw(f"keyhole:{beat.hole}", *beat.points, None), run_time=0.5)
     board.keep(f"keyhole:{beat.hole}", cut)
 
 
@@ -421,8 +454,10 @@ def clip(board: Board, beat: Slice) -> None:
     board.keep("counter", counter)
     if data.rest:
         anims.append(_shrunk(board, data))
-        anims += _sliced_off(board, data.rest, target.get_center())
+        anims += _sliced_off(board, data.rest)
         anims += _labels_off_fruit(board, data.rest)
+        # the panel's polygon is what is left of the fruit too (it kept the sliced vertices)
+        anims += board.panel.slice_off(*_with_ear(data), data.rest)
     else:  # the last slice: the keyhole cuts go (no fruit is left round them); the fruit's
         # last triangle stays while its caption is read, until the whole triangulation
         anims += board.drop(*[key for key in board.objects if key.startswith("keyhole:")])
@@ -431,23 +466,25 @@ def clip(board: Board, beat: Slice) -> None:
     board.play(beat, *anims, run_time=1.0)
     if data.rest:  # the same shape, as the rest's own ring (:func:`_shrunk`)
         board.outline.become(_fruit(board, data.rest))
+        board.panel.settle_outline()
     board.keep(f"slice:{data.k}", piece)
     if data.triangulation:
         _whole(board, beat)
 
 
-def _sliced_off(board: Board, rest: Sequence[Point], plate: np.ndarray) -> list[Playable]:
+def _sliced_off(board: Board, rest: Sequence[Point]) -> list[Playable]:
     """The markers of the vertices the slice takes off the fruit (none of ``rest``'s points,
-    what is left: a keyhole's vertex stays while a copy of it is on the ring), fading as
-    they go with the slice to ``plate``: left up, they floated round the shrinking fruit,
-    and turned with it. Kept aside (:attr:`Board.off`) for the whole triangulation."""
+    what is left: a keyhole's vertex stays while a copy of it is on the ring), fading where
+    they stand: left up, they floated round the shrinking fruit, and turned with it; sent
+    with the slice to the plate, A's label flew over G's (ear clipping at 7 s). Kept aside
+    (:attr:`Board.off`) for the whole triangulation."""
     left = {(round(x, 9), round(y, 9)) for x, y in rest}
     gone = [label for label in board.markers
             if tuple(round(c, 9) for c in board.where[label]) not in left]
     for label in gone:
         board.off[label] = board.markers.pop(label)
         board.roles.pop(label, None)
-    return [FadeOut(board.off[label], target_position=plate, scale=0.5) for label in gone]
+    return [FadeOut(board.off[label], scale=0.5) for label in gone]
 
 
 def _labels_off_fruit(board: Board, rest: Sequence[Point]) -> list[Playable]:
@@ -513,13 +550,16 @@ def _whole(board: Board, beat: Slice) -> None:
     # every vertex is one again: the sliced-off ones come back with the triangles
     back = _markers_back(board)
     # under its own caption, at full pace: the last slice's words are over; what the steps
-    # left (prune and search's good part, its last diagonal and ✓) goes
+    # left (prune and search's good part, its last diagonal and ✓) goes. The caption comes
+    # with the triangulation it counts (``together``): led by its words, "The whole
+    # triangulation: 11 triangles" stood half a second over the last slice (review)
     board.play(ending_beat(beat, board.panel.pseudocode, beat.total, board.panel.run_call,
                            holes),
                *board.drop("good", *_FOUND), FadeOut(board.outline),
                *[FadeIn(p) for p in pieces], shown, *[FadeIn(m) for m in back],
+               *board.panel.whole(beat.triangulation),
                *_placed(board.clear_labels(*pieces, near=EDGE_MARGIN), back),
-               run_time=1.2, at_rest=True)
+               run_time=1.2, at_rest=True, together=True)
     board.scene.wait(1.0)
 
 
@@ -544,7 +584,8 @@ def _good_shrinks(board: Board, points: Sequence[Point]) -> list[Playable]:
         return []
     if len(points) < 3:
         return [*board.drop("good")]
-    return [Transform(board.objects["good"], _good_region(board, points))]
+    return [Transform(board.objects["good"], _good_region(board, points)),
+            *board.panel.tint("good", points)]
 
 
 def good(board: Board, beat: Good) -> None:
@@ -553,7 +594,9 @@ def good(board: Board, beat: Good) -> None:
     part's edge is that diagonal now (left on screen, the next search's claim would take
     their keys and leave them behind, unturned)."""
     region = _good_region(board, beat.points)
-    board.play(beat, *board.drop("good", *_TEST, *_FOUND), FadeIn(region), run_time=1.2)
+    # the panel tints it too (board.drop takes the panel's last one with the picture's)
+    board.play(beat, *board.drop("good", *_TEST, *_FOUND), FadeIn(region),
+               *board.panel.tint("good", beat.points), run_time=1.2)
     board.keep("good", region)
 
 
@@ -620,8 +663,8 @@ def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     v, ear = walk.ref(call, "v"), bool(ret.result)
     triangle = _triangle(walk, v)
     why = None if ear or triangle is None else _why_not(triangle)
-    if ear:
-        caption = f"Is {v} an ear? yes: its triangle holds no other vertex"
+    if ear:  # both conditions (issue 22 item 11): a reflex vertex's triangle may be empty
+        caption = f"Is {v} an ear? yes: {v} is convex and its triangle holds no other vertex"
     elif why is None:  # not found on the fruit as it stands (never seen): say it plainly
         caption = f"Is {v} an ear? no: a cut between its neighbours is not a clean slice"
     elif why[1] is None:  # its angle, drawn (:func:`angle_wedge`), says why
@@ -687,9 +730,25 @@ def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     p, m = (show(r) for r in walk.result_list(ret))
     hole = int("".join(ch for ch in p if ch in "₀₁₂₃₄₅₆₇₈₉").translate(_DIGITS))
     point_of = walk.root_points()
-    yield walk.call_beat(Keyhole, f"Hole {hole}: a keyhole cut from {p} to {m}", call, ret,
+    caption = f"Hole {hole}: a keyhole cut from {p} to {m}"
+    copies = _far_side(walk, ret, p)
+    if copies is not None:  # the call lines name them (clip_ear(c₁′, F″, c₂)): said once
+        caption += f"; on its other side, {p} and {m} are named {copies[0]} and {copies[1]}"
+    yield walk.call_beat(Keyhole, caption, call, ret,
                          roles={p: "result", m: "result"}, hole=hole, corners=(p, m),
                          points=(point(point_of[p]), point(point_of[m])))
+
+
+def _far_side(walk: Walk, ret: Event, p: str) -> tuple[str, str] | None:
+    """The labels the fruit's ring gives the ends of the keyhole cut from ``p`` on its far
+    side (the ring passes the cut twice: ``… M, P, (the hole), P′, M′ …``,
+    :mod:`geometry.bridges`), as the keyhole the run slices enters the log; None if it
+    does not."""
+    ring = walk.entered_after(ret, "keyhole").get("labels") or []
+    far = next((k for k, label in enumerate(ring) if label != p and unprimed(label) == p), None)
+    if far is None:
+        return None
+    return ring[far], ring[(far + 1) % len(ring)]
 
 
 def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -709,6 +768,9 @@ def read_clip(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         kind = LastSlice
     clipped.append(corners)
     caption = f"Slice {named_together(corners)}: {len(clipped)} / {len(labels) - 2} slices"
+    if len(clipped) == 1:  # the plate is said once, as the first slice goes onto it
+        caption = (f"Slice {named_together(corners)} off, onto the plate: "
+                   f"1 / {len(labels) - 2} slices")
     fields = _slice(corners, labels, points, clipped)
     fields["good"] = _good_left(walk)
     if kind is Slice:

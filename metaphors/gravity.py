@@ -61,9 +61,19 @@ def _ball(board: Board, at: np.ndarray) -> Dot:
                "argument", "ball")
 
 
+#: the dark casing under the band on the fruit, of the theme's stroke: its rose on the
+#: fruit's orange was all but invisible (prune and search, chapter 4 at 79-88 s; contrast
+#: 1.1 : 1)
+BAND_CASING = 2.6
+
+
 def _band(board: Board, corners: Sequence[np.ndarray]) -> VMobject:
-    """The rubber band through scene points (a polyline)."""
+    """The rubber band through scene points (a polyline); over the fruit, on a dark casing
+    (a background stroke: the band's moves and reshapes keep it)."""
     band = VMobject(stroke_color=board.theme.band, stroke_width=board.theme.stroke)
+    if "fruit" in board.objects:
+        band.set_stroke(board.theme.background, width=board.theme.stroke * BAND_CASING,
+                        background=True)
     band.set_points_as_corners([np.asarray(c, dtype=float) for c in corners])
     return tag(band, "argument", "band")
 

@@ -208,7 +208,7 @@ def classify(board: Board, beat: Classify) -> None:
     # the pulse in the vertex's own colour (blue, the one looked at; cyan or pink, a split or
     # merge vertex), as the panel shows it: manim's yellow pulse was read as a colour of its own
     colour = theme.role_colour(_kind_role(data.kind))
-    anims: list[FadeIn | Indicate | Transform | Create] = [
+    anims: list[Animation] = [
         Indicate(board.markers[data.vertex], color=colour)]
     shown: VMobject | None = kind.move_to(place) if place is not None else None
     if shown is None and named and _kind_role(data.kind) != "called":
@@ -298,7 +298,9 @@ def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
                     stroke_width=board.theme.stroke * 1.3), "argument",
                f"diagonal:{''.join(beat.labels)}")
     board.keep(f"diagonal:{''.join(beat.labels)}", line)
-    board.play(beat, Create(line), *board.clear_labels(line), run_time=1.0)
+    board.play(beat, Create(line), *board.clear_labels(line),
+               *board.panel.draw(f"diagonal:{''.join(beat.labels)}", u, w, "argument"),
+               run_time=1.0)
 
 
 def pieces(board: Board, beat: Pieces) -> None:
@@ -493,11 +495,13 @@ def _whole(board: Board, beat: Stack) -> None:
         board.keep("counter", count)
         shown.append(FadeIn(count))
     # under its own caption, at full pace, its result row lit: the last piece's words are over
-    # with holes, the caption says what the count's h is, as ear clipping's does
+    # with holes, the caption says what the count's h is, as ear clipping's does; the caption
+    # comes with the triangulation it counts, not before it (:func:`metaphors.fruit._whole`)
     board.play(ending_beat(beat, board.panel.pseudocode, len(whole), board.panel.run_call,
                            len(board.holes)),
                *board.drop(*tints), *[FadeIn(t) for t in whole], *shown,
-               *board.clear_labels(*whole), run_time=1.2, at_rest=True)
+               *board.clear_labels(*whole), *board.panel.whole(beat.triangulation),
+               run_time=1.2, at_rest=True, together=True)
     board.scene.wait(1.0)
 
 

@@ -29,14 +29,19 @@ from manim import (
     FadeIn,
     FadeOut,
     Line,
+    LineJointType,
     Mobject,
     Rectangle,
+    Transform,
     VGroup,
+)
+from manim import (
+    Polygon as MPolygon,
 )
 
 from geometry.polygon import Polygon
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import new_colour, seen_by
+from metaphors.labels import LABEL_HALO, new_colour, seen_by
 from metaphors.layout import (
     PANEL_CALL_Y,
     PANEL_CODE,
@@ -58,7 +63,7 @@ from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from rendering.layers import BACKDROP_Z
-from story.beats import Beat, Hole
+from story.beats import Beat, Hole, Point
 from story.pseudocode import PSEUDOCODE, SOURCE, PseudocodeRow
 
 #: the distance between the pseudocode's rows (scene units; less when more rows than fit are
@@ -81,15 +86,57 @@ SOURCE_PITCH = 0.36
 SOURCE_MARGIN = 0.12
 
 
+#: how the names of what the run draws in the panel start (``panel/claim``, ``panel/part``):
+#: not ``panel:``, which names the panel's own parts and its vertex markers (``panel:K``)
+DRAWN = "panel/"
+#: the z-index of the panel's vertex markers: over the lines the run draws in the panel (its
+#: claims, diagonals and cuts), as the board's markers are over the picture's
+#: (:data:`metaphors.board.LABEL_Z`)
+MARKER_Z = 5
+#: a claim's width, and the width of the edge it crosses, of the theme's stroke: drawn over
+#: P, they stand out from its edges (the picture's are wider still, at its size)
+CLAIM_WIDTH, CROSSED_WIDTH = 1.4, 1.8
+#: a diagonal's width, of the theme's stroke (a diagonal made, the whole triangulation's):
+#: thinner than P's edges, so that a triangulation of many triangles stays light in the
+#: panel's small copy of P
+DIAGONAL_WIDTH = 0.5
+#: how opaque the tint of the part of P a call works on is (divide and conquer's piece)
+PART_OPACITY = 0.35
+#: how opaque the panel's polygon's fill is
+FILL_OPACITY = 0.12
+
+
 class Panel:
     """The right half of every scene. ``follow_roles(beat)`` and ``follow_text(beat)`` return
     the animations that bring it up to date with a beat (roles; lit line and call line)."""
 
-    def __init__(self, points, labels, shown: str | None, theme: Theme = THEME, holes=()):
+    def __init__(self, points, labels, shown: str | None, theme: Theme = THEME, holes=(),
+                 avoided: Sequence[tuple[Point, Point]] = ()):
         self.theme = theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
         self.holes = holes
+        #: label → point (P's and its holes' vertices, in P's coordinates)
+        self.where: dict[str, Point] = {
+            label: (float(p[0]), float(p[1]))
+            for ring_labels, ring_points in ((self.polygon.labels, self.polygon.points),
+                                             *((h.labels, h.points) for h in holes))
+            for label, p in zip(ring_labels, ring_points, strict=True)}
+        #: the segments the panel's labels keep clear of besides P's edges: the claims, cuts
+        #: and diagonals the run will draw in it, so that none is drawn through a label (the
+        #: board's labels keep clear of the claims likewise)
+        self.avoided = [((float(a[0]), float(a[1])), (float(b[0]), float(b[1])))
+                        for a, b in avoided]
+        #: the run's state drawn over the polygon (:meth:`draw`): claims, the edge a claim
+        #: crosses, diagonals, keyhole cuts, by the key the picture keeps them under
+        self.lines: dict[str, Mobject] = {}
+        #: the markers of the vertices sliced off the polygon (:meth:`slice_off`), by label
+        self.off: dict[str, Mobject] = {}
+        #: the tint of the part of P the running call works on, and its labels (:meth:`_part`)
+        self.part: Mobject | None = None
+        self.part_labels: tuple[str, ...] = ()
+        #: the ring the outline becomes once a slice's play is over (:meth:`settle_outline`)
+        self.after_slice: list[Point] | None = None
         self._draw_polygon(0.0)
         #: the box the pseudocode's rows and lights take (:meth:`_pseudocode_block`)
         self.code_box = PANEL_CODE
@@ -112,7 +159,6 @@ class Panel:
         # (row, the light behind it, the row's copy in ink over the grey row)
         self.lit: tuple[int, Rectangle, Mobject] | None = None
         #: the claim drawn on the panel's polygon (:meth:`claim`), if any
-        self.claimed: Mobject | None = None
         self.call = tag(typeset.text(" ", font=theme.mono_font, size=20), None, "panel:call")
         self.call.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         #: the text of the call line on screen (a beat of the same call leaves it up)
@@ -136,11 +182,13 @@ class Panel:
         them (to fade out): at a run's end, where the whole triangulation is drawn large, the
         small copy says nothing more and its place holds what has no other (the monotone
         count on one line, split over two in the top-left corner before). Nothing if it
-        shows none."""
-        if not self.shows_polygon or self.polygon_gone:
+        shows none. What the run drew on it goes with it (its diagonals, its tinted part)."""
+        if not self.drawing:
             return []
         self.polygon_gone = True
-        return [self.outline, *self.markers.values()]
+        drawn = [*self.lines.values(), *([self.part] if self.part is not None else [])]
+        self.lines, self.part = {}, None
+        return [self.outline, *self.markers.values(), *drawn]
 
     def show_code(self, code) -> None:
         """Show these (line number, text) rows instead (before the panel is on screen): a
@@ -170,11 +218,14 @@ class Panel:
         self.frame = Frame(self.polygon.points, box.center, box.width, box.height)
         self.outline = tag(polygon_mobject(self.polygon, self.frame, self.theme, self.holes),
                            "idle", "panel:polygon")
-        self.outline.set_fill(opacity=0.12)
+        self.outline.set_fill(opacity=FILL_OPACITY)
+        lines = [(self.frame.to_scene(a), self.frame.to_scene(b)) for a, b in self.avoided]
         self.markers = {
-            label: tag(m, "idle", f"panel:{label}")
-            for label, m in panel_markers(self.polygon, self.holes, self.frame, self.theme, area)
+            label: tag(m, "idle", f"panel:{label}").set_z_index(MARKER_Z)
+            for label, m in panel_markers(self.polygon, self.holes, self.frame, self.theme, area,
+                                          lines)
         }
+
 
     def lit_area(self) -> Rect:
         """The box the panel's lights run over: its pseudocode's (:attr:`code_box`, the whole
@@ -187,8 +238,14 @@ class Panel:
         docs); a run whose source cannot be read keeps it."""
         return self.mode != SOURCE or not self.code_lines
 
+    @property
+    def drawing(self) -> bool:
+        """Whether the panel's polygon is on screen: shown (not the source) and not taken off
+        at the run's end (:meth:`give_up_polygon`)."""
+        return self.shows_polygon and not self.polygon_gone
+
     def mobjects(self) -> list:
-        if not self.shows_polygon or self.polygon_gone:
+        if not self.drawing:
             return [self.code, self.call]
         return [self.outline, *self.markers.values(), self.code, self.call]
 
@@ -314,11 +371,154 @@ class Panel:
     def follow_roles(self, beat: Beat, at_rest: bool = False,
                      focus: frozenset[str] | None = None) -> list[Animation]:
         """Animations recolouring the panel's vertices to this beat's roles (none shown with
-        the source); ``at_rest``: all back to their ink (:meth:`metaphors.board.Board.play`);
+        the source), and tinting the part of P its call works on (:meth:`_part`);
+        ``at_rest``: all back to their ink (:meth:`metaphors.board.Board.play`);
         ``focus``: the part of P the call runs on, as the board's
         (:func:`metaphors.labels.new_colour`)."""
-        shown = self.shows_polygon and not self.polygon_gone
-        return self._recolour(beat.roles, at_rest, focus) if shown else []
+        if not self.drawing:
+            return []
+        return [*self._part(() if at_rest else beat.within), *self._recolour(beat.roles, at_rest, focus)]
+
+    # --- the run's state, drawn plainly over the panel's polygon ------------------------------
+    # DESIGN: "the same polygon drawn plainly with objects coloured by their role in the
+    # current call". The performers hand the panel what they draw on the picture (under the
+    # picture's own keys: a claim, the edge it crosses, a diagonal, a keyhole cut, what a
+    # slice leaves of P), and :meth:`metaphors.board.Board.drop` takes the panel's away with
+    # the picture's: the panel kept the bare polygon while the picture sliced it, split it and
+    # claimed diagonals in it (review: at 9 s of ear clipping it still drew A, sliced off).
+
+    def _colour(self, role: str | None) -> str:
+        """A role's colour; the ink for none (or idle): a diagonal made, a cut."""
+        return self.theme.ink if role in (None, "idle") else self.theme.role_colour(role)
+
+    def draw(self, key: str, a: Sequence[float], b: Sequence[float], role: str | None,
+             width: float = 1.0) -> list[Animation]:
+        """Draw the segment from ``a`` to ``b`` (points of P) under ``key`` in ``role``'s
+        colour (the ink for None), ``width`` times the theme's stroke; one drawn under that
+        key before goes. None while the source takes the polygon's place."""
+        if not self.drawing:
+            return []
+        gone = self.drop(key)
+        line = tag(Line(self.frame.to_scene(a), self.frame.to_scene(b), color=self._colour(role),
+                        stroke_width=self.theme.stroke * width), role or "idle", f"{DRAWN}{key}")
+        self.lines[key] = line
+        return [*gone, Create(line)]
+
+    def recolour(self, key: str, role: str | None, new_key: str | None = None,
+                 width: float | None = None) -> list[Animation]:
+        """The segment under ``key`` turning to ``role``'s colour (and ``width``), kept under
+        ``new_key`` from now on if given (the claim split along becomes a diagonal)."""
+        line = self.lines.pop(key, None)
+        if line is None:
+            return []
+        self.lines[new_key or key] = tag(line, role or "idle", f"{DRAWN}{new_key or key}")
+        target = line.copy().set_color(self._colour(role))
+        if width is not None:
+            target.set_stroke(width=self.theme.stroke * width)
+        return [Transform(line, target)]
+
+    def drop(self, *keys: str) -> list[Animation]:
+        """Fade-outs of the segments under these keys (those the panel has)."""
+        return [FadeOut(self.lines.pop(key)) for key in keys if key in self.lines]
+
+    def _part(self, labels: tuple[str, ...]) -> list[Animation]:
+        """The part of P the running call works on (``labels``: divide and conquer's piece,
+        :attr:`story.beats.Beat.within`) tinted in the blue of what a call runs on; none, no
+        tint. On the picture each piece has a tint of its own, and which one the heuristic
+        works on showed nowhere ("No reflex vertex: the polygon is convex": which one?)."""
+        if labels == self.part_labels or any(label not in self.where for label in labels):
+            return []
+        self.part_labels = labels
+        anims: list[Animation] = [FadeOut(self.part)] if self.part is not None else []
+        self.part = None
+        if labels:
+            self.part = tag(MPolygon(*[self.frame.to_scene(self.where[label]) for label in labels],
+                                     stroke_width=0, fill_color=self.theme.called,
+                                     fill_opacity=PART_OPACITY), "called", f"{DRAWN}part")
+            self.part.set_z_index(-1)  # under the outline's edges and the lines drawn
+            anims.append(FadeIn(self.part))
+        return anims
+
+    def tint(self, key: str, points: Sequence[Sequence[float]]) -> list[Animation]:
+        """The part of P at ``points`` tinted in the blue of what a call runs on, under
+        ``key`` (prune and search's good sub-polygon, as the picture tints it): faded in, or
+        the tint under ``key`` shrinking to it."""
+        if not self.drawing:
+            return []
+        shape = tag(MPolygon(*[self.frame.to_scene(p) for p in points], stroke_width=0,
+                             fill_color=self.theme.called, fill_opacity=PART_OPACITY),
+                    "called", f"{DRAWN}{key}")
+        shape.set_z_index(-1)  # under the outline's edges and the lines drawn
+        if key in self.lines:
+            return [Transform(self.lines[key], shape)]
+        self.lines[key] = shape
+        return [FadeIn(shape)]
+
+    def _ring(self, points: Sequence[Sequence[float]]) -> MPolygon:
+        """The panel's outline as one ring of ``points`` (what slicing leaves of P)."""
+        ring = MPolygon(*[self.frame.to_scene(p) for p in points], color=self.theme.ink,
+                        stroke_width=self.theme.stroke, fill_color=self.theme.polygon_fill,
+                        fill_opacity=FILL_OPACITY)
+        return tag(ring, "idle", "panel:polygon")
+
+    def slice_off(self, before: Sequence[Point], at: int, rest: Sequence[Point]
+                  ) -> list[Animation]:
+        """A slice cut off: the outline shrinks to ``rest`` (its ear's vertex, at ``at`` in
+        the ring ``before`` the slice, sliding onto the middle of the cut, as the fruit does),
+        and the markers of the vertices no longer on it go (faded where they stand). The ring
+        ``before`` is put in unseen first (a polygon with holes, drawn as three rings, is one
+        ring with its keyhole cuts, the same shape): the keyhole cuts are its edges then.
+        :meth:`settle_outline` puts the rest's own ring in after the play."""
+        if not self.drawing:
+            return []
+        anims: list[Animation] = []
+        if before:
+            self.outline.become(self._ring(before))
+            a, c = before[at - 1], before[(at + 1) % len(before)]
+            middle = ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2)
+            anims.append(Transform(self.outline, self._ring([*before[:at], middle,
+                                                             *before[at + 1:]])))
+            anims += self.drop(*[key for key in self.lines if key.startswith("keyhole:")])
+        else:
+            anims.append(Transform(self.outline, self._ring(rest)))
+        self.after_slice = list(rest)
+        left = {(round(x, 9), round(y, 9)) for x, y in rest}
+        for label in [label for label in self.markers
+                      if tuple(round(c, 9) for c in self.where[label]) not in left]:
+            self.off[label] = self.markers.pop(label)
+            self.roles.pop(label, None)
+            anims.append(FadeOut(self.off[label]))
+        return anims
+
+    def settle_outline(self) -> None:
+        """After a slice's play: the outline as the rest's own ring (:meth:`slice_off`)."""
+        if self.after_slice is not None:
+            self.outline.become(self._ring(self.after_slice))
+            self.after_slice = None
+
+    def whole(self, triangles: Sequence[Sequence[Point]]) -> list[Animation]:
+        """The run's end: P whole again (with its holes), every vertex sliced off back in its
+        ink, and the triangulation drawn in it, each triangle's edges thin in the ink (the
+        picture shows the whole triangulation: the panel kept the last slice)."""
+        if not self.drawing:
+            return []
+        outline = tag(polygon_mobject(self.polygon, self.frame, self.theme, self.holes),
+                      "idle", "panel:polygon")
+        outline.set_fill(opacity=FILL_OPACITY)
+        old, self.outline = self.outline, outline
+        anims: list[Animation] = [FadeOut(old), FadeIn(outline), *self.drop(*list(self.lines))]
+        drawn = VGroup(*[MPolygon(*[self.frame.to_scene(p) for p in corners],
+                                  color=self.theme.ink,
+                                  stroke_width=self.theme.stroke * DIAGONAL_WIDTH,
+                                  fill_opacity=0) for corners in triangles])
+        self.lines["triangulation"] = tag(drawn, "result", f"{DRAWN}triangulation")
+        anims.append(FadeIn(drawn))
+        for label, marker in sorted(self.off.items()):
+            marker.set_color(self.theme.ink)
+            self.markers[label] = tag(marker, "idle")
+            anims.append(FadeIn(marker))
+        self.off = {}
+        return anims
 
     def follow_text(self, beat: Beat) -> list[Animation]:
         """Animations moving the light to this beat's line and showing its call line (none if
@@ -441,25 +641,6 @@ class Panel:
         self.outgoing_call, self.call = self.call, new
         return [FadeIn(new)]
 
-    def claim(self, u: str, v: str, role: str) -> Animation:
-        """The claim ``uv`` drawn on the panel's polygon in ``role``'s colour (amber until
-        judged): where the picture is turned the panel shows P as it stands, and it coloured
-        the claim's ends only, never drew the claim (chapter 3's CH)."""
-        at = dict(zip(self.polygon.labels, self.frame.many(self.polygon.points), strict=True))
-        line = tag(Line(at[u], at[v], color=self.theme.role_colour(role),
-                        stroke_width=self.theme.stroke), role, "panel:claim")
-        self.claimed = line.set_z_index(self.outline.z_index + 0.5)
-        return Create(line)
-
-    def judge_claim(self, role: str) -> list[Animation]:
-        """The panel's claim, if drawn, recoloured as judged (green or red), once: kept on,
-        divide and conquer's DG (drawn on a turned run's panel) was recoloured with every
-        later verdict, FD's and the summaries', that had no claim on the panel."""
-        line, self.claimed = self.claimed, None
-        if line is None:
-            return []
-        return [tag(line, role).animate.set_color(self.theme.role_colour(role))]
-
     def cut_outgoing(self) -> list[Mobject]:
         """The call line being replaced and a renamed row's old light, once (the board takes
         them off the screen at once)."""
@@ -562,7 +743,8 @@ FINE_DIRECTIONS = 72
 
 
 def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: Theme,
-                  area: Box = PANEL_LABELS) -> list[tuple[str, VGroup]]:
+                  area: Box = PANEL_LABELS, lines: Sequence[tuple[np.ndarray, np.ndarray]] = ()
+                  ) -> list[tuple[str, VGroup]]:
     """(label, dot and label) for every vertex of the panel's polygon and of its holes.
 
     The panel draws P small: the board's rule (a label away from the centre, at a fixed
@@ -573,7 +755,8 @@ def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: 
     vertex than any other (:func:`_assigned`). A label with no such place is left out (its
     dot stays): a label over an edge or another label would be misread, and a smaller one
     would be under 2.5 % of the frame's height. Every scene's and chapter's polygon keeps all
-    its labels (tests.reading_rules.crowded_panel_labels)."""
+    its labels (tests.reading_rules.crowded_panel_labels). ``lines``: segments on screen the
+    labels keep clear of as of the edges (the claims, cuts and diagonals the run draws)."""
     rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
     vertices = [(label, point, _away(point, rings[0]), theme.label_size)
                 for label, point in zip(polygon.labels, rings[0], strict=True)]
@@ -584,11 +767,26 @@ def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: 
     texts = [typeset.text(label, font=theme.font, size=size, colour=theme.ink)
              for label, _, _, size in vertices]
     points = [(float(p[0]), float(p[1])) for _, p, _, _ in vertices]
-    fixed = Obstacles(segments=[edge for ring in rings for edge in ring_edges(ring)],
-                      dots=[(x, y, theme.dot_radius) for x, y in points])
+    edges = [edge for ring in rings for edge in ring_edges(ring)]
+    dots = [(x, y, theme.dot_radius) for x, y in points]
+    fixed = Obstacles(segments=edges, dots=dots)
+    drawn = Obstacles(segments=[*edges, *((a[:2], b[:2]) for a, b in lines)], dots=dots)
     bounds = (area.x - area.width / 2, area.y - area.height / 2,
               area.x + area.width / 2, area.y + area.height / 2)
-    places = [_label_places(k, points, away, t.width, t.height, fixed, bounds)
+
+    def places_of(k: int, away: float, width: float, height: float
+                  ) -> list[tuple[tuple[float, float], Rect]]:
+        """Vertex ``k``'s places: roomy ones clear of the lines drawn too, if it has any;
+        else those clear of the edges (a vertex many diagonals meet, ear clipping's G, has
+        no room between them: kept clear of all, its label stood nearer C than G)."""
+        if lines:
+            clear_of_all = _tiers(k, points, away, width, height, drawn, bounds,
+                                  LABEL_DISTANCES, LABEL_DIRECTIONS)[0]
+            if clear_of_all:
+                return clear_of_all
+        return _label_places(k, points, away, width, height, fixed, bounds)
+
+    places = [places_of(k, away, t.width, t.height)
               for k, ((_, _, away, _), t) in enumerate(zip(vertices, texts, strict=True))]
     chosen = _assigned(places)
     markers = []
@@ -596,6 +794,11 @@ def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: 
         dot = Dot(point, radius=theme.dot_radius, color=theme.ink)
         if k in chosen:
             t.move_to((*chosen[k], 0))
+            # a halo in the background's colour, unseen but where a line the run draws
+            # passes under the label (a diagonal of the whole triangulation, a slice's cut
+            # where no place clear of them was left): the line stops short of its glyphs
+            t.set_stroke(theme.background, width=LABEL_HALO, background=True)
+            t.joint_type = LineJointType.ROUND
             markers.append((label, VGroup(dot, t)))
         else:
             markers.append((label, VGroup(dot)))
@@ -630,7 +833,8 @@ def _label_places(k: int, points: list[tuple[float, float]], away: float, width:
 def _tiers(k: int, points: list[tuple[float, float]], away: float, width: float, height: float,
            fixed: Obstacles, bounds: Rect, distances: Sequence[float], directions: int
            ) -> list[list[tuple[tuple[float, float], Rect]]]:
-    """:func:`_label_places`' three tiers, on ``distances`` × ``directions`` round vertex ``k``."""
+    """:func:`_label_places`' three tiers, on ``distances`` × ``directions`` round vertex ``k``;
+    the places across a line from the dot (:func:`metaphors.labels.seen_by`) in the last."""
     turns = [(step + 1) // 2 * (1 if step % 2 else -1) * 2 * math.pi / directions
              for step in range(directions)]
     # the box's side nearest the vertex stands a distance from it

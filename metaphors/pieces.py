@@ -41,6 +41,7 @@ from metaphors.layout import (
     subtitle_band,
     title_area,
 )
+from metaphors.panel import DIAGONAL_WIDTH
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
 from rendering.typeset import text
@@ -175,6 +176,8 @@ def split(board: Board, beat: Split) -> None:
         k = sum(1 for key in board.objects if key.startswith("diagonal:"))
         board.keep(f"diagonal:{k}", tag(line, "idle", line.name))
         anims.append(line.animate.set_color(theme.ink).set_stroke(width=theme.stroke))
+        # and in the panel: the diagonal made, in the ink, where the piece was split
+        anims += board.panel.recolour("claim", None, f"diagonal:{k}", width=DIAGONAL_WIDTH)
     anims += board.drop("verdict", f"piece:{beat.parent}")
     if board.outline.get_fill_opacity() > 0:
         anims.append(board.outline.animate.set_fill(opacity=0))
@@ -224,8 +227,9 @@ def done(board: Board, beat: Done) -> None:
     finder = board.objects.get("finder")
     if finder is not None:
         board.scene.play(*board.drop("finder"), run_time=0.5)
+    # the caption with the triangulation it counts (:func:`metaphors.fruit._whole`)
     board.play(ending_beat(beat, board.panel.pseudocode, triangles, board.panel.run_call),
-               *_whole(board, finder), run_time=1.2, at_rest=True)
+               *_whole(board, finder), run_time=1.2, at_rest=True, together=True)
 
 
 def _whole(board: Board, finder: Mobject | None) -> list[Playable]:

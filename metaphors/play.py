@@ -16,11 +16,12 @@ from typing import Protocol, cast
 
 from metaphors.board import Board
 from metaphors.catalog import perform
-from metaphors.fruit import Keyhole
+from metaphors.fruit import Keyhole, Slice
 from metaphors.gravity import GravityTurn
 from metaphors.layout import Box
+from metaphors.monotone import MonotoneDiagonal
 from metaphors.recorded import Recorded, captions_of, mark_step
-from story.beats import Beat, Claim, ShowPolygon, ShowTriangle
+from story.beats import Beat, Claim, Point, ShowPolygon, ShowTriangle
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
 from story.storyboard import pseudocode_stages, run_call
@@ -54,7 +55,9 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
                       *(beat.labels for beat in beats if isinstance(beat, Claim)),
                       *(side for beat in beats if isinstance(beat, ShowTriangle)
                         for side in _sides(beat.labels))])),
-                  cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)],
+                  cuts=[*(beat.points for beat in beats if isinstance(beat, Keyhole)),
+                        *knife_cuts([beat for beat in beats if beat.pace >= 1.0])],
+                  drawn=panel_lines(beats),
                   # a label with no room outside P beside it, with a leader, where the picture
                   # never turns (a turn keeps labels upright and places them again)
                   leaders=not any(isinstance(beat, GravityTurn) for beat in beats))
@@ -70,6 +73,25 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     if board.title.width > TITLE_WIDTH:
         board.title.scale_to_fit_width(TITLE_WIDTH)
     return board
+
+
+def knife_cuts(beats: Sequence[Beat]) -> list[tuple[Point, Point]]:
+    """The cuts the knife will make in ``beats``, one a slice (from its first corner to its
+    last). The board's labels are placed clear of those of the slices played at full pace,
+    each under its own caption: placed clear of the edges only, ear clipping's G stood on
+    the cut BD, moved above its dot as B's triangle was tested, and off the fruit after the
+    slice (three places in 12 s). Clear of every cut, the keyhole's hole labels stood up to
+    1.1 from their vertices: the fast slices' cuts are not."""
+    return [(beat.points[0], beat.points[2]) for beat in beats
+            if isinstance(beat, Slice) and len(beat.points) == 3]
+
+
+def panel_lines(beats: Sequence[Beat]) -> list[tuple[Point, Point]]:
+    """The segments a run will draw in the panel's polygon (:class:`metaphors.panel.Panel`):
+    its claims, its keyhole cuts, the monotone sweep's diagonals and the cut of each slice
+    (the triangulation's diagonals drawn at its end)."""
+    return [*(beat.points for beat in beats
+              if isinstance(beat, Claim | Keyhole | MonotoneDiagonal)), *knife_cuts(beats)]
 
 
 def _sides(corners: Sequence[str]) -> list[tuple[str, str]]:

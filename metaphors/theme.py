@@ -9,7 +9,8 @@ The legend: each colour has one meaning for the whole lecture and every scene.
 ============  ==========  ===========================================================
 field         colour      meaning
 ============  ==========  ===========================================================
-called        blue        the object a call runs on (a vertex being looked at)
+called        blue        the object a call runs on (a vertex being looked at; the
+                          panel tints the piece divide and conquer works on)
 argument      amber       a call's other inputs while it runs; a diagonal being drawn;
                           a claim not yet judged (then green or red)
 result        green       what a call gives; a correct claim; a triangulation's count
@@ -33,8 +34,8 @@ hand, sweep   purple      the clock hand (Rotation) and the sweeping line
 swept         pale blue   what water, clock hand or sweep line swept on its way to its
                           pick (one colour for all three; red where it is outside P)
 dial          grey        the clock face
-fruit, rind   orange,     the fruit sliced (ear clipping), on its plate
-              olive
+fruit, rind   orange,     the fruit sliced (ear clipping), on its plate; its rind a
+              brown       peel's brown, no role's (its olive was near the "yes" green)
 pieces        tints       the sub-polygons of divide and conquer and the monotone
                           pieces (the parts a split or a partition makes)
 triangles     green       the triangles of a finished triangulation: the result's green,
@@ -95,7 +96,9 @@ class Theme:
     swept: str = "#8fc1ff"
     dial: str = "#8a93a3"  # the clock face and its hour marks before the hand passes them
     fruit: str = "#f4a259"  # the fruit's flesh (ear clipping)
-    rind: str = "#7a9e3d"  # its rind
+    #: its rind: a peel's brown, far from every role's colour (CIE76 ΔE 48 and more; the
+    #: olive #7a9e3d was 29 from the result's green, and read as "yes" round the fruit)
+    rind: str = "#8b5a2b"
     plate: str = "#d9dee7"  # where the slices go
     knife: str = "#f5f7fa"
     dash_length: float = 0.09

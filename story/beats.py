@@ -63,7 +63,7 @@ class Hole:
 _NO_ROLES: Mapping[str, str] = MappingProxyType({})
 
 #: the fields every beat has; the others are its kind's ``data``
-COMMON = ("caption", "seq", "call", "line", "row", "roles", "pace")
+COMMON = ("caption", "seq", "call", "line", "row", "roles", "pace", "within")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -80,6 +80,9 @@ class Beat:
     #: label or key → role; read-only (a copy of what the beat was made with)
     roles: Mapping[str, str] = field(default_factory=lambda: _NO_ROLES)
     pace: float = 1.0
+    #: the labels of the part of P the running heuristic works on when it is not all of P
+    #: (divide and conquer's piece; the panel tints it); empty: all of P, or no heuristic
+    within: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         if not isinstance(self.roles, MappingProxyType):  # a frozen beat's roles stay as made
@@ -93,7 +96,7 @@ class Beat:
     def to_dict(self) -> dict[str, Any]:
         return {"action": self.action, "caption": self.caption, "seq": self.seq,
                 "call": self.call, "line": self.line, "row": self.row, "roles": dict(self.roles),
-                "data": self.data, "pace": self.pace}
+                "data": self.data, "pace": self.pace, "within": list(self.within)}
 
 
 B = TypeVar("B", bound=Beat)

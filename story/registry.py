@@ -321,22 +321,21 @@ _ENTRIES = (
                    pseudocode=(
                        PseudocodeRow("while P has more than 3 vertices:"),
                        PseudocodeRow("  for each vertex V, from the first:"),
-                       PseudocodeRow("    is V an ear? (convex, V−1 V V+1 empty)", ("is_ear",)),
-                       PseudocodeRow("    yes: slice V−1 V V+1 off, start again", ("clip_ear",)),
+                       PseudocodeRow("    is V an ear: convex, its triangle empty?", ("is_ear",)),
+                       PseudocodeRow("    yes: slice V's triangle off, start again", ("clip_ear",)),
                        PseudocodeRow("the triangle left is the last slice", ("ear-clipping-naive",)),
                        _SLICES,
                    )),
     _triangulation("ear-clipping", metaphor="fruit",
                    idea="only the neighbours of a slice change",
                    pseudocode=(
-                       # every vertex's ear status unknown at first: one row, room for the
-                       # keyhole's and the result's on a polygon with holes (at most 8 rows fit
-                       # the panel at the least size of text)
-                       PseudocodeRow("all unknown; walk round P while > 3 vertices:"),
-                       PseudocodeRow("  V's status unknown: is V an ear?", ("is_ear",)),
-                       PseudocodeRow("  V is an ear: slice V−1 V V+1 off", ("clip_ear",)),
-                       PseudocodeRow("    only V−1 and V+1 change: test again"),
-                       PseudocodeRow("  else go on to the next vertex"),
+                       # a vertex is tested once, until a slice beside it: its "no, go on"
+                       # and its neighbours' retest are said on the rows lit as they happen
+                       # (rows of their own covered no call and never lit: "else go on to the
+                       # next vertex" stayed dark under "Is C an ear? no", review)
+                       PseudocodeRow("walk round P while it has over 3 vertices:"),
+                       PseudocodeRow("  V untested: is V an ear? if not, go on", ("is_ear",)),
+                       PseudocodeRow("  an ear: slice it; retest its neighbours", ("clip_ear",)),
                        PseudocodeRow("the triangle left is the last slice", ("ear-clipping",)),
                        _SLICES,
                    )),
@@ -351,7 +350,8 @@ _ENTRIES = (
                        PseudocodeRow("  V = the middle vertex of Q: an ear?", ("is_ear",)),
                        PseudocodeRow("  yes: slice the ear V off, go on in Q", ("clip_ear",)),
                        PseudocodeRow("  no: find an inner diagonal V–W of Q", ("diagonal_at",)),
-                       PseudocodeRow("    (V convex: the sweep; else gravity)", ("sweep_at", "gravity_at")),
+                       PseudocodeRow("    convex: Correct Translation, else Gravity",
+                                     ("sweep_at", "gravity_at")),
                        PseudocodeRow("    Q = the good part beyond V–W", ("good_subpolygon",)),
                        PseudocodeRow("the triangle left is the last slice", ("prune-and-search",)),
                        _SLICES,
@@ -470,7 +470,7 @@ def hole_pseudocode(name: str) -> tuple[PseudocodeRow, ...]:
     """The pseudocode of ``name`` on a polygon with holes: the bridges first, for ear clipping.
 
     >>> [step.text for step in hole_pseudocode("ear-clipping")[:2]]
-    ['cut a keyhole from each hole to the rind', 'all unknown; walk round P while > 3 vertices:']
+    ['cut a keyhole from each hole to the rind', 'walk round P while it has over 3 vertices:']
     >>> hole_pseudocode("monotone") == pseudocode("monotone")
     True
     """

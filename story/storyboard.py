@@ -349,6 +349,7 @@ class Walk:
         """A beat of ``beat_type`` at ``event``: its lit line, lit row and pace from the walk.
         A key step (``key_step``: a split or merge vertex and its diagonal) plays at full pace under its
         own caption however many claims came before: fast-forwarding never hides it."""
+        fields.setdefault("within", self.within())
         beat = beat_type(caption=caption, seq=event.seq, line=self.code_line(event),
                          row=self.pseudocode_row(event), pace=1.0 if key_step else self.pace(),
                          **fields)
@@ -357,6 +358,14 @@ class Walk:
         if key_step:
             self.kept.add(id(beat))
         return beat
+
+    def within(self, key: str | None = None) -> tuple[str, ...]:
+        """The labels of the piece ``key`` (default: the one the running heuristic works on),
+        when it is a part of P and not all of it (divide and conquer's piece); else none."""
+        key = key or (self.heuristic_polygon[-1] if self.heuristic_polygon else None)
+        state = self.live.get(key) if key is not None else None
+        labels = tuple(state.get("labels", ())) if state else ()
+        return labels if 3 <= len(labels) < len(self.root_polygon()[0]) else ()
 
     def closing_claim(self, beat: Beat) -> Beat:
         """``beat`` (made after its claim's verdict: the split along the diagonal verified)
@@ -640,7 +649,7 @@ def _beats_for(walk: Walk, e: Event, table: Mapping[str, Reading]) -> Iterator[B
     if e.kind == "call" and "polygon" in (e.args or {}) and walk.is_heuristic(e.name):
         if walk.black_box and not walk.heuristic_polygon:  # asked once, not again inside
             yield walk.beat(FindDiagonal, "Find an inner diagonal of this polygon", e,
-                            piece=ref(e, "polygon"))
+                            piece=ref(e, "polygon"), within=walk.within(ref(e, "polygon")))
         walk.heuristic_polygon.append(ref(e, "polygon"))
         return
     if e.kind == "return" and walk.is_heuristic(e.name) and walk.heuristic_polygon:

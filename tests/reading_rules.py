@@ -2319,6 +2319,9 @@ _TEST_TRIANGLES = ("ear-triangle", "ear-angle")
 _BACKINGS = "backing:"
 #: how opaque a card must be to read a label on it
 LEAST_BACKING = 0.6
+#: the least gap between a haloed label inside a test triangle and the triangle's edges
+#: (:func:`labels_under_test_triangles`)
+LEAST_EDGE_GAP = 0.03
 
 
 def labels_under_test_triangles(data: dict) -> list[str]:
@@ -2327,7 +2330,10 @@ def labels_under_test_triangles(data: dict) -> list[str]:
     all but vanishes), and an edge through it reads as part of the line. The labels and the
     triangle are as :func:`crossed_vertex_labels` follows them; a triangle counts once it is
     drawn (its fill or its edge up). A label on a dark card (``backing:V``, at least
-    :data:`LEAST_BACKING` opaque, covering the label) reads, its vertex inside the triangle."""
+    :data:`LEAST_BACKING` opaque, covering the label) reads, its vertex inside the triangle;
+    so does a label with a dark halo (:func:`_haloed`, as every label on the fruit has) that
+    no edge of the triangle comes within :data:`LEAST_EDGE_GAP` of: a card under it was a
+    box no other label had (ear clipping's G)."""
     from shapely.geometry import Polygon
     from shapely.geometry import box as area
 
@@ -2344,10 +2350,14 @@ def labels_under_test_triangles(data: dict) -> list[str]:
             card = shown.get(_BACKINGS + vertex)
             backed = (None if card is None or (card.get("fill_opacity") or 0) < LEAST_BACKING
                       or _box_of(card) is None else area(*_box_of(card)))
+            haloed = any(_haloed(part) for part in marker.get("submobjects", ())
+                         if (part.get("text") or "").strip())
             for label in _label_boxes(marker, direct=True):
                 if backed is not None and backed.buffer(1e-6).contains(area(*label)):
                     continue
                 for owner, triangle in triangles:
+                    if haloed and triangle.exterior.distance(area(*label)) >= LEAST_EDGE_GAP:
+                        continue
                     if triangle.intersects(area(*label)):
                         found.setdefault(f"{vertex} {owner}",
                                          f"play {k} {vertex} under the {owner}")
@@ -2649,8 +2659,8 @@ def verdicts_on_claims(data: dict) -> list[str]:
 
 #: the marker names of a vertex: on the picture and on the panel's small map
 _VERTEX_MARKERS = ("vertex:", "panel:")
-#: the panel's parts that are no vertex: its call line, and the claim it draws (grav7)
-_PANEL_NOT_VERTICES = ("panel:call", "panel:claim")
+#: the panel's parts that are no vertex: its call line (what it draws is "panel/…")
+_PANEL_NOT_VERTICES = ("panel:call",)
 
 
 def _vertex_label(node: dict) -> str | None:
@@ -4183,7 +4193,7 @@ def rows_behind_words(data: dict) -> list[str]:
 
 def claims_missing_from_panel(data: dict) -> list[str]:
     """The claims drawn on a turned picture that the panel, which shows P as it stands, does
-    not draw (``panel:claim``), as ``"play 33: CH"``: chapter 3's panel coloured C and H and
+    not draw (``panel/claim``), as ``"play 33: CH"``: chapter 3's panel coloured C and H and
     never drew CH while the picture was turned."""
     found: list[str] = []
     turned = False
@@ -4198,7 +4208,7 @@ def claims_missing_from_panel(data: dict) -> list[str]:
         if any(kind == "Turn" and name == "polygon" for kind, name in names):
             turned = not turned
         if any(kind in INCOMING and name == "claim" for kind, name in names) and turned \
-                and not any(kind in INCOMING and name == "panel:claim" for kind, name in names):
+                and not any(kind in INCOMING and name == "panel/claim" for kind, name in names):
             said = _CLAIM_CAPTION.match(caption)
             found.append(f"play {k}: {said[1] if said else caption}")
     return found
@@ -4215,8 +4225,8 @@ def stale_panel_claims(data: dict) -> list[str]:
         caption = play.get("subcaption") or caption
         names = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
         if any(kind in INCOMING and name == "claim" for kind, name in names):
-            fresh = any(kind in INCOMING and name == "panel:claim" for kind, name in names)
-        if any(kind not in INCOMING and kind not in OUTGOING and name == "panel:claim"
+            fresh = any(kind in INCOMING and name == "panel/claim" for kind, name in names)
+        if any(kind not in INCOMING and kind not in OUTGOING and name == "panel/claim"
                for kind, name in names) and not fresh:
             found.append(f"play {k}: the panel's old claim judged under {caption!r}")
     return found
@@ -4249,6 +4259,163 @@ def green_claims_white_ends(data: dict) -> list[str]:
             if len(at) == 2 and "green" not in at.values():
                 found.append(f"play {k} {name}: {', '.join(sorted(at))} not green")
     return list(dict.fromkeys(found))
+
+
+# --- the panel's polygon follows the run ---------------------------------------------------------
+
+#: the picture's lines the panel draws too, by the name the picture gives them, and the names
+#: the panel's may have (a claim split along is a diagonal in the panel)
+_PANEL_TWINS = {"claim": ("panel/claim", "panel/diagonal:"), "edge:": ("panel/crossed",),
+                "keyhole:": ("panel/keyhole:",), "diagonal:": ("panel/diagonal:",)}
+
+
+def _twin(name: str) -> tuple[str, ...] | None:
+    """The names the panel's twin of a picture's line may have; None: it has none."""
+    return next((twins for start, twins in _PANEL_TWINS.items()
+                 if name == start or (start.endswith(":") and name.startswith(start))), None)
+
+
+def _last_ends(play: dict) -> dict[int, tuple[str, str, dict]]:
+    """Each top mobject a play records, in the state the play leaves it: (animation type,
+    name, node) of the last node each animation records (a transform's target)."""
+    ends: dict[int, tuple[str, str, dict]] = {}
+    for k, anim in enumerate(play["animations"]):
+        for kind, node, name in _ends(anim):
+            ends[k] = (kind, name, node)
+    return ends
+
+
+def _stroke(node: dict) -> str | None:
+    return (_one_colour(node.get("stroke")) or "").upper() or None
+
+
+def panels_behind_the_picture(data: dict) -> list[str]:
+    """Where the panel's polygon (DESIGN: "the same polygon drawn plainly with objects
+    coloured by their role in the current call") does not follow the picture, as
+    ``"play 12 A sliced off the picture, still in the panel"``, ``"play 30 claim #F2B134 not
+    in the panel"``, ``"play 31 edge:E–A not in the panel"``, ``"play 4 keyhole:2 not in the
+    panel"``, ``"play 80 triangulation not in the panel"`` or ``"play 40 claim FD's piece
+    not tinted in the panel"``: a vertex taken off the picture goes from the panel with it;
+    a claim (amber, then green or red, then a diagonal's ink), the edge a claim crosses and a
+    diagonal come into the panel in the picture's colour in the same play, a keyhole cut in
+    the ink (the picture's is a dark slit through the fruit); the whole
+    triangulation shows in it as in the picture; and a claim made on a piece of P (divide
+    and conquer's, the picture tinted in pieces) comes with the panel tinting its piece
+    (``panel/part``, the claim's ends among its corners). The panel kept the bare polygon
+    while the picture sliced it (ear clipping at 9 s still drew A, sliced at 7 s), split it
+    (divide and conquer's 11 triangles beside the bare 13-gon) and claimed diagonals in it.
+    A run whose panel draws no polygon (the source instead) is left out."""
+    found: list[str] = []
+    panel: dict[str, dict] = {}  # the panel's parts shown, by name
+    gone: set[str] = set()  # the picture's vertices taken off it
+    pieces = False  # the picture is tinted in pieces (divide and conquer)
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            panel, gone, pieces = {}, set(), False
+        ends = _last_ends(play)
+        for kind, name, node in ends.values():
+            if name.startswith(("panel:", "panel/")):
+                if kind in OUTGOING:
+                    panel.pop(name, None)
+                else:
+                    panel[name] = node
+            elif name.startswith("vertex:"):
+                label = name.removeprefix("vertex:")
+                (gone.add if kind in OUTGOING else gone.discard)(label)
+            elif name.startswith(("piece:", "triangle:")) and kind in INCOMING:
+                pieces = True
+        if "panel:polygon" not in panel:
+            continue
+        # a slice: the picture's outline shrinks as vertices leave it (a close-up fades the
+        # vertices outside its box for a while, the outline whole)
+        sliced = any(name == "polygon" and kind not in INCOMING | OUTGOING
+                     for kind, name, _ in ends.values())
+        for kind, name, node in ends.values():
+            if sliced and name.startswith("vertex:") and kind in OUTGOING and \
+                    f"panel:{name.removeprefix('vertex:')}" in panel:
+                found.append(f"play {k} {name.removeprefix('vertex:')} sliced off the picture, "
+                             "still in the panel")
+            twins = _twin(name)
+            if twins is not None and kind not in OUTGOING and kind != "Turn":
+                # the picture's keyhole cut is a dark slit (the background through the
+                # fruit), the panel's an edge in the ink: only its being there is compared
+                colour = None if name.startswith("keyhole:") else _stroke(node)
+                shown = [n for p, n in panel.items() if p.startswith(twins)]
+                if not any(colour is None or _stroke(n) == colour for n in shown):
+                    found.append(f"play {k} {name} {colour} not in the panel" if name == "claim"
+                                 else f"play {k} {name} not in the panel")
+                if name == "claim" and kind in INCOMING and pieces:
+                    found += _untinted_piece(k, panel)
+            if name == "triangulation" and kind in INCOMING and not any(
+                    p.startswith(("panel/triangulation", "panel/diagonal:")) for p in panel):
+                found.append(f"play {k} triangulation not in the panel")
+    return list(dict.fromkeys(found))
+
+
+def _untinted_piece(k: int, panel: dict[str, dict]) -> list[str]:
+    """``["play k claim's piece not tinted in the panel"]`` unless the panel's tint of the
+    part of P worked on (``panel/part``) has both ends of the panel's claim among its corners."""
+    claim, part = panel.get("panel/claim"), panel.get("panel/part")
+    if claim is None:
+        return []
+    ends = _segments(claim)
+    corners = _corners(part) if part is not None else []
+    if ends and all(_near(p, corners) for p in ends[0]):
+        return []
+    return [f"play {k} claim's piece not tinted in the panel"]
+
+
+
+# --- ear clipping's words -------------------------------------------------------------------------
+
+#: a caption saying a vertex is an ear
+_EAR_YES = re.compile(r"\bIs (\S+) an ear\? yes\b")
+#: a label with a prime: a bridge end's second copy (``c₁′``, ``F″``)
+_PRIMED = re.compile(r"(?<![\w′″‴])[A-Za-z][₀-₉]*[′″‴]+")
+
+
+def ears_without_convexity(data: dict) -> list[str]:
+    """The captions saying a vertex is an ear without saying both of what makes one, as
+    ``"Is A an ear? yes: its triangle holds no other vertex"``: an ear is a convex vertex
+    whose triangle holds no other vertex (issue 22 item 11, Meisters): the lecture's own
+    counterexample has a reflex E whose triangle DEA is empty."""
+    return sorted({play["subcaption"] for play in data["plays"]
+                   if _EAR_YES.search(play.get("subcaption") or "")
+                   and not ("convex" in play["subcaption"] and "triangle" in play["subcaption"])})
+
+
+def unexplained_primes(data: dict) -> list[str]:
+    """The primed labels (a keyhole cut's ends the second time round its ring: ``c₁′``,
+    ``F″``) a call line or caption names before any caption has said them, as ``"play 80
+    c₁′"``: KeyholeEars' call lines said ``clip_ear(c₁′, F′, c₂)`` and nothing said what the
+    primes were. Each label once."""
+    said: set[str] = set()
+    found: dict[str, str] = {}
+    for k, play in enumerate(data["plays"]):
+        said |= set(_PRIMED.findall(play.get("subcaption") or ""))
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                if node.get("name") in ("panel:call", "subtitle"):
+                    for label in _PRIMED.findall(node.get("text") or ""):
+                        if label not in said:
+                            found.setdefault(label, f"play {k} {label}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+def unexplained_plates(data: dict) -> list[str]:
+    """Ear clipping's plate (``plate``) coming in, in a run whose captions never say what it
+    is for (none names the plate), as ``["play 5 plate"]``: the slices went onto a plate no
+    word explained."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            if anim.get("type") in INCOMING and (anim.get("mobject") or {}).get("name") == "plate":
+                later = [p.get("subcaption") or "" for p in data["plays"][k:]]
+                ends = next((j for j, p in enumerate(data["plays"][k + 1:])
+                             if _new_picture(p)), len(later))
+                if not any("plate" in caption for caption in later[:ends + 1]):
+                    found.append(f"play {k} plate")
+    return found
 
 
 # --- the exercises chapter, reviewed as a class would use it (review of chapter 6) ------------
@@ -4933,3 +5100,84 @@ def claims_like_their_edges(data: dict) -> list[str]:
                     and any(_solid_strokes(node) & c for c in claims):
                 found.append(f"play {k}: {name} like its claim")
     return found
+
+
+# --- panel7: chapter 4 reviewed (the band on the fruit, the ending's count, V's triangle) -----
+
+#: a vertex named by arithmetic on a placeholder (``V−1``, ``V+1``): read as a sum, not as
+#: "the vertex before V"
+_VERTEX_ARITHMETIC = re.compile(r"\b[A-Z]\s?[−+-]\s?1\b")
+
+
+def arithmetic_vertex_names(data: dict) -> list[str]:
+    """The texts on screen (and the cues) that name a vertex by arithmetic, as ``"'is V an
+    ear? (convex, V−1 V V+1 empty)'"``: chapter 4's card and ear clipping's rows said "V−1 V
+    V+1", read as a sum (review); the triangle of V and its two neighbours is said in words.
+    The panel's call line (a programmer's, in ``trex render``) is not read."""
+    return sorted({repr(text) for text in _all_shown_texts(data, frozenset({"panel:call"}))
+                   if _VERTEX_ARITHMETIC.search(text)})
+
+
+#: how a run's ending caption begins (:func:`metaphors.drawing.ending_caption`)
+_WHOLE_WORDS = "The whole triangulation"
+
+
+def counts_before_triangulations(data: dict) -> list[str]:
+    """The plays that put up "The whole triangulation: 11 triangles" without the whole
+    triangulation coming in (``triangulation``), as ``"play 82: 'The whole triangulation: 11
+    triangles'"``: led by its words, the count stood half a second over the last slice (ear
+    clipping, prune and search), the last pieces (monotone) and the finished triangles
+    (divide and conquer) before what it counts was drawn (review, chapter 4 at 109.9 s)."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        said = play.get("subcaption") or ""
+        if not said.startswith(_WHOLE_WORDS):
+            continue
+        if not any(a.get("type") in INCOMING and (a.get("mobject") or {}).get("name")
+                   == "triangulation" for a in play["animations"]):
+            found.append(f"play {k}: {said!r}")
+    return found
+
+
+#: the lines a run draws over its polygon that must read on the fruit's orange: gravity's band
+_ON_THE_FRUIT = ("band",)
+#: the least width of a dark casing under a line (of the line's own width) that lets it read
+#: on any fill
+LEAST_CASING = 2.0
+
+
+def _cased(node: dict) -> bool:
+    """Whether a line has a dark, opaque casing (a background stroke) :data:`LEAST_CASING`
+    times its own width."""
+    halo = node.get("halo") or {}
+    colour = _one_colour(halo.get("stroke"))
+    return (colour is not None and _luminance(colour) < 0.15
+            and (halo.get("stroke_opacity") or 0) >= 0.99
+            and (halo.get("stroke_width") or 0) >= LEAST_CASING * (node.get("stroke_width") or 0))
+
+
+def lines_lost_on_the_fruit(data: dict) -> list[str]:
+    """The lines drawn over the fruit (:data:`_ON_THE_FRUIT`) that do not read on it, as
+    ``"play 90 band 1.4 : 1"``: the contrast of the line's colour with the fruit's as the
+    screen shows it is under :data:`LEAST_CONTRAST`, and the line has no dark casing
+    (:func:`_cased`). Gravity's rose band on prune and search's orange fruit was all but
+    invisible (review, chapter 4 at 79–88 s). Each name once."""
+    from metaphors.theme import THEME
+
+    found: dict[str, str] = {}
+    fruit: str | None = None  # the fruit's colour on screen, once it is drawn
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            fruit = None
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                name = node.get("name")
+                if name == "fruit" and node.get("fill"):
+                    fruit = _over(_one_colour(node["fill"]) or "#000000",
+                                  node.get("fill_opacity") or 0.0, THEME.background)
+                elif name in _ON_THE_FRUIT and fruit is not None and node.get("points"):
+                    colour = _one_colour(node.get("stroke"))
+                    ratio = contrast(colour, fruit) if colour else 0.0
+                    if ratio < LEAST_CONTRAST and not _cased(node):
+                        found.setdefault(name, f"play {k} {name} {ratio:.1f} : 1")
+    return sorted(found.values())

@@ -146,7 +146,8 @@ def test_a_keyhole_cut_faint_on_the_fruit_is_found():
         return {"type": "FadeIn", "mobject": {"name": "keyhole:1", "stroke": colour,
                                               "points": _closed((1, 1), (2, 2))[:4]}}
 
-    assert faint_cuts(_graph([fruit], [cut(THEME.rind)])) == ["play 1 keyhole:1 on polygon 1.1 : 1"]
+    olive = "#7a9e3d"  # the rind's colour then
+    assert faint_cuts(_graph([fruit], [cut(olive)])) == ["play 1 keyhole:1 on polygon 1.1 : 1"]
     assert faint_cuts(_graph([fruit], [cut(THEME.background)])) == []
 
 
@@ -361,3 +362,52 @@ def test_a_close_up_in_other_colours_is_found():
         "play 1: fill #2A3A55 0.75, edges #E8ECF2 3.0 (the picture: fill #F4A259 0.75, edges "
         "#7A9E3D 6.6)"]
     assert recoloured_close_ups(_graph([fruit], [_close_up("#F4A259", "#7A9E3D", 6.6)])) == []
+
+
+# --- the review of ear clipping (panel7) ----------------------------------------------------------
+
+
+def _lab(colour: str) -> tuple[float, float, float]:
+    """CIE L*a*b* (D65) of a ``#rrggbb`` colour."""
+    def linear(c: float) -> float:
+        return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+    r, g, b = (linear(int(colour.lstrip("#")[k:k + 2], 16) / 255) for k in (0, 2, 4))
+    x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047
+    y = 0.2126 * r + 0.7152 * g + 0.0722 * b
+    z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883
+
+    def f(t: float) -> float:
+        return t ** (1 / 3) if t > 0.008856 else 7.787 * t + 16 / 116
+
+    return 116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))
+
+
+def test_the_rind_has_a_colour_no_role_has():
+    """One colour, one meaning (issue 22 item 4): the rind's olive (#7a9e3d) was 29 (CIE76
+    ΔE) from the result's green, the "yes" of every ear test drawn round the fruit it
+    outlines; it keeps 40 from every role's colour."""
+    from metaphors.theme import THEME
+    from story.roles import ROLES
+
+    near = {role: round(math.dist(_lab(THEME.rind), _lab(THEME.role_colour(role))))
+            for role in ROLES}
+    assert min(near.values()) >= 40, near
+
+
+def test_a_vertex_pulse_keeps_its_label_where_it_stands():
+    """Ear clipping's pulses grow the dot, not the label: manim's Indicate scaled the whole
+    marker about its middle, and G, its label set off its dot clear of the slices, grew to
+    1.6 times its size and flew ~45 px off its vertex (25.0 s of the scene)."""
+    from manim import Dot, VGroup
+
+    from metaphors.fruit import Indicate
+    from rendering.typeset import text
+
+    label = text("G", font="DejaVu Sans", size=22).move_to((0.3, -0.45, 0))
+    marker = VGroup(Dot((0, 0, 0), radius=0.06), label)
+    target = Indicate(marker, color="#ef4b4b", scale_factor=1.6).create_target()
+    assert math.dist(target[1].get_center(), label.get_center()) < 1e-9
+    assert math.isclose(target[1].height, label.height)
+    assert math.isclose(target[0].width, 1.6 * marker[0].width)
+    assert target[1].get_color().to_hex().lower() == "#ef4b4b"

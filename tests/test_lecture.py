@@ -32,6 +32,7 @@ from tests.reading_rules import (
     amber_figure_marks,
     answers_on_cards,
     answers_over_pictures,
+    arithmetic_vertex_names,
     balls_not_there,
     bare_measures,
     bare_ticks,
@@ -42,6 +43,7 @@ from tests.reading_rules import (
     claims_like_their_edges,
     claims_missing_from_panel,
     close_ups_left_early,
+    counts_before_triangulations,
     counts_on_two_lines,
     crossed_vertex_labels,
     crossfaded_overlaps,
@@ -54,6 +56,7 @@ from tests.reading_rules import (
     crowded_vertex_labels,
     early_picks,
     early_snags,
+    ears_without_convexity,
     faint_cuts,
     far_verdicts,
     fills_over_labels,
@@ -83,12 +86,14 @@ from tests.reading_rules import (
     labels_under_tools,
     labels_without_contrast,
     leftover_verdicts,
+    lines_lost_on_the_fruit,
     lone_numbers,
     mixed_words,
     morphed_water,
     names_said_otherwise,
     notes_over_fills,
     notes_under_moving_tools,
+    panels_behind_the_picture,
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
@@ -119,6 +124,8 @@ from tests.reading_rules import (
     ticks_outside,
     uneven_countdowns,
     unexplained_grey,
+    unexplained_plates,
+    unexplained_primes,
     unlit_givens,
     unmarked_candidates,
     unnamed_axes,
@@ -605,6 +612,12 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 items 1 and 10: the taught words, no slug, no code (no call line either), no
     # number with two decimals
     assert unspoken_words(data) == [], chapter.slug
+    # panel7 (review of chapter 4): no vertex named by arithmetic ("V−1 V V+1" read as a
+    # sum); the whole triangulation's count comes with it, not half a second before; the
+    # band reads on the fruit (rose on orange, 1.4 : 1)
+    assert arithmetic_vertex_names(data) == [], chapter.slug
+    assert counts_before_triangulations(data) == [], chapter.slug
+    assert lines_lost_on_the_fruit(data) == [], chapter.slug
     # issue 22 item 6: time to think, and the answer beside the picture, not over it
     assert rushed_questions(data) == [], chapter.slug
     # and the countdown ticks once a second, each number up 1 s (it was eased: 15 and 1 stayed
@@ -672,6 +685,12 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert broken_summaries(data) == [], chapter.slug
     # the panel's small polygon: its labels apart, off its edges, none left out
     assert crowded_panel_labels(data) == [], chapter.slug
+    # and it follows the run: slices, claims, crossed edges, cuts, diagonals, the piece
+    assert panels_behind_the_picture(data) == [], chapter.slug
+    # issue 22 item 11: an ear is said convex with an empty triangle; primes and the plate said
+    assert ears_without_convexity(data) == [], chapter.slug
+    assert unexplained_primes(data) == [], chapter.slug
+    assert unexplained_plates(data) == [], chapter.slug
     # no note under a moving tool, no vertex label under the clock's face
     assert notes_under_moving_tools(data) == [], chapter.slug
     # issue 22: no note or legend entry over P's or T's fill

@@ -183,6 +183,22 @@ def test_the_claim_lights_its_branch():
         "  BD is an inner diagonal", "  BD is an inner diagonal"]
 
 
+@pytest.mark.parametrize("name", ["ear-clipping", "ear-clipping-naive"])
+def test_every_row_of_ear_clipping_that_says_a_step_lights(name):
+    """A row that says a step (not a loop's head, ending in ":") lights in some run, on
+    polygons with holes too: ear clipping's "else go on to the next vertex" and "only V−1
+    and V+1 change: test again" covered no call and never lit (KeyholeEars: dark under "Is
+    C an ear? no", review)."""
+    logs = [*_logs(name), *([run_logged(name, "keyhole")] if name == "ear-clipping" else [])]
+    for log in logs:
+        rows = pseudocode_of(log)
+        lit = {b.row for other in logs if pseudocode_of(other) == rows
+               for b in storyboard(other)} | {result_row(rows)}
+        dark = [row.text for k, row in enumerate(rows)
+                if k not in lit and not row.text.endswith(":")]
+        assert dark == [], (name, log.meta.get("polygon"))
+
+
 def test_lit_row_goes_on_from_the_row_lit_and_round_loops():
     rows = (PseudocodeRow("test", ("is_ear",)), PseudocodeRow("clip", ("clip_ear",)), PseudocodeRow("last", ("run",)))
     assert lit_row(rows, ["run", "is_ear"], 1) == 0  # round the loop
@@ -388,3 +404,21 @@ def test_a_builtins_log_carries_no_pseudocode():
     for name in REGISTRY:
         log = run_logged(name, entry(name).polygon)
         assert "pseudocode" not in json.loads(log.to_json())["meta"], name
+
+
+#: the traced calls that run a diagonal finder taught by name, and the name it was taught by
+_TAUGHT_FINDERS = {"sweep_at": "translation-correct", "gravity_at": "gravity"}
+
+
+@pytest.mark.parametrize("name", names())
+def test_a_row_running_a_taught_finder_names_it(name):
+    """panel7 (review of chapter 4): a row lit while a heuristic taught by name runs says
+    that name: prune and search's "(V convex: the sweep; else gravity)" left the viewer to
+    guess which of the sweeps (Translation, wrong; Correct Translation, the line parallel to
+    AC) it was."""
+    from story.registry import spoken
+
+    for row in entry(name).pseudocode:
+        for call in row.calls:
+            if call in _TAUGHT_FINDERS:
+                assert spoken(_TAUGHT_FINDERS[call]) in row.text, (name, row.text)

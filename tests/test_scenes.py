@@ -47,6 +47,7 @@ from tests.reading_rules import (
     LEAST_LINE,
     LEAST_TRIANGLE,
     answers_on_cards,
+    arithmetic_vertex_names,
     balls_not_there,
     broken_counts,
     broken_summaries,
@@ -54,6 +55,7 @@ from tests.reading_rules import (
     claims_along_edges,
     claims_missing_from_panel,
     close_ups_left_early,
+    counts_before_triangulations,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -65,6 +67,7 @@ from tests.reading_rules import (
     crowded_verdicts,
     crowded_vertex_labels,
     early_picks,
+    ears_without_convexity,
     far_verdicts,
     fleeting_kind_words,
     flickering_counts,
@@ -85,6 +88,7 @@ from tests.reading_rules import (
     mixed_words,
     morphed_water,
     notes_under_moving_tools,
+    panels_behind_the_picture,
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
@@ -109,6 +113,8 @@ from tests.reading_rules import (
     tails_beside_labels,
     thinnest_triangle,
     ticks_outside,
+    unexplained_plates,
+    unexplained_primes,
     unlit_givens,
     unnamed_marks,
     unreadable_cues,
@@ -412,6 +418,38 @@ def test_the_panels_polygon_keeps_its_labels_apart_and_off_its_edges(case):
     """The panel's small copy of P: no label over another or over an edge, each nearer its
     own dot than any other, none left out (issue 22: the lecture's M and K crowded)."""
     assert crowded_panel_labels(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_panels_polygon_follows_the_run(case):
+    """DESIGN: the panel is "the same polygon drawn plainly with objects coloured by their
+    role in the current call": a vertex sliced off the picture goes from it, claims, the
+    crossed edge, keyhole cuts and diagonals come into it in the picture's colours, the whole
+    triangulation shows in it, and the piece a claim is made on is tinted (review: ear
+    clipping's panel still drew A at 9 s, divide and conquer's the bare 13-gon beside 11
+    triangles)."""
+    assert panels_behind_the_picture(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_ear_clippings_words_say_what_it_does(case):
+    """Issue 22 item 11: "yes, an ear" says both conditions, convex and an empty triangle;
+    a primed label (a keyhole cut's end the second time round, ``c₁′``) is said in a caption
+    before a call line names it; and the plate the slices go to is said."""
+    data = graph(case).data
+    assert ears_without_convexity(data) == [], case.id
+    assert unexplained_primes(data) == [], case.id
+    assert unexplained_plates(data) == [], case.id
+    # and the triangle of V and its two neighbours in words ("V−1 V V+1" read as a sum)
+    assert arithmetic_vertex_names(data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_whole_triangulations_count_comes_with_it(case):
+    """panel7 (review of chapter 4): "The whole triangulation: 11 triangles" comes in the
+    play that draws the whole triangulation; led by its words, it stood half a second over
+    the last slice, the last pieces or the finished triangles."""
+    assert counts_before_triangulations(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -799,9 +837,9 @@ def test_the_source_is_one_flag_away(case):
         return node["name"].startswith(("code:", "panel:lit")) or (bool(parts) and all(
             p["name"].startswith("code:") for p in parts))
 
-    def is_panel_polygon(node) -> bool:
-        return node["name"].startswith("panel:") and node["name"] not in ("panel:call",
-                                                                          "panel:lit")
+    def is_panel_polygon(node) -> bool:  # its markers, and what the run draws on it
+        return node["name"].startswith(("panel:", "panel/")) and node["name"] not in (
+            "panel:call", "panel:lit")
 
     def picture(graph_json):
         return [n for n in graph_data(graph_json)["final"]

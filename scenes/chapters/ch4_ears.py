@@ -15,8 +15,9 @@ class Ears(LectureScene):
     def chapter_segments(self) -> tuple:
         return (
             Card("Ears: slicing fruit", (
-                "An ear: a convex vertex V whose triangle V−1 V V+1 holds no other vertex,",
-                "so that V−1 V+1 is an inner diagonal.",
+                # V's triangle in words: "V−1 V V+1" read as arithmetic (review)
+                "An ear: a convex vertex V whose triangle with its two neighbours",
+                "holds no other vertex, so the neighbours' segment is an inner diagonal.",
                 "Slice an ear off, put it on the plate, repeat until one triangle is left."),
                  Figure("ear")),
             Run("ear-clipping-naive", None, "Ear clipping (Meisters): slice the first ear found",
