@@ -26,9 +26,9 @@ Examples
 B = the left-most vertex (lowest on ties)    leftmost_vertex
 A, C = its neighbours; T = triangle ABC      triangle_at
 candidates = the other vertices inside T     candidates_in_triangle
-none: AC is an inner diagonal                claim
+none: claim AC is an inner diagonal          claim
 else: D = the candidate closest to B         pick, nearest_to
-  BD is an inner diagonal                    claim
+  claim BD is an inner diagonal              claim
 """
 
 from __future__ import annotations
@@ -217,10 +217,13 @@ def _frame(rule: str, *calls: str, inside: tuple[PseudocodeRow, ...] = ()) -> tu
         PseudocodeRow("B = the left-most vertex (lowest on ties)", ("leftmost_vertex",)),
         PseudocodeRow("A, C = its neighbours; T = triangle ABC", ("triangle_at",)),
         PseudocodeRow("candidates = the other vertices inside T", ("candidates_in_triangle",)),
-        PseudocodeRow("none: AC is an inner diagonal", ("claim",)),
+        PseudocodeRow("none: claim AC is an inner diagonal", ("claim",)),
         PseudocodeRow(f"else: D = {rule}", ("pick", *calls)),
         *inside,
-        PseudocodeRow("  BD is an inner diagonal", ("claim",)),
+        # the rule's claim, not a fact: lit while the verdict refutes it ("✗ BD is not an
+        # inner diagonal"), "BD is an inner diagonal" read as the panel contradicting the
+        # caption (review of the scenes' renders)
+        PseudocodeRow("  claim BD is an inner diagonal", ("claim",)),
     )
 
 

@@ -814,6 +814,31 @@ def stale_lit_rows(data: dict) -> list[str]:
     return found
 
 
+#: the diagonals a ✗ caption refutes: "✗ BD is not an inner diagonal: …", "✗ Scaling
+#: fails: BD crosses edge E–A"
+_REFUTED = re.compile(r"\b([A-Z][a-z₀-₉]*[A-Z][a-z₀-₉]*) (?:is not an inner diagonal|crosses)")
+
+
+def refuted_lit_rows(data: dict) -> list[str]:
+    """The plays whose lit pseudocode row states as a fact what the caption on screen then
+    refutes, as ``"play 31: 'BD is an inner diagonal' under '✗ BD is not an inner
+    diagonal: …'"``: the rule's row said "BD is an inner diagonal", lit while the ✗ said it
+    was not (Scaling, Rotation and Translation at 13–18 s). A row saying it as the rule's
+    claim ("claim BD is an inner diagonal") is what the rule does, not a fact."""
+    found, lit, caption = [], None, ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            for text in _lit_rows(anim):
+                lit = text
+        if lit is None or not caption.startswith("✗"):
+            continue
+        if any(re.search(rf"(?<!claim )\b{name} is an inner diagonal", lit)
+               for name in _REFUTED.findall(caption)):
+            found.append(f"play {k}: {lit!r} under {caption!r}")
+    return found
+
+
 #: a verdict's marks on a run's picture (:mod:`metaphors.basics`)
 _VERDICT_MARKS = ("tick", "cross")
 

@@ -80,6 +80,7 @@ from tests.reading_rules import (
     stale_endings,
     stale_good_parts,
     stale_lit_rows,
+    refuted_lit_rows,
     stray_kind_words,
     stray_vertex_markers,
     swept_outside_polygon,
@@ -588,6 +589,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22: the whole triangulation comes under its own caption, not the last step's
     assert stale_endings(data) == [], chapter.slug
     assert stale_lit_rows(data) == [], chapter.slug
+    # and no lit row states what the ✗ on screen refutes ("BD is an inner diagonal")
+    assert refuted_lit_rows(data) == [], chapter.slug
     # and no ✓ or ✗ of a step is left over on it (prune and search's diagonals)
     assert leftover_verdicts(data) == [], chapter.slug
     # issue 22: a verdict's ✓ or ✗ stands clear of every edge and label

@@ -79,6 +79,7 @@ from tests.reading_rules import (
     placeholders_as_labels,
     red_after_the_pick,
     refaded_texts,
+    refuted_lit_rows,
     repeated_verdicts,
     replayed_beats,
     run_together_labels,
@@ -305,6 +306,9 @@ def test_the_whole_triangulation_comes_under_its_own_caption(case):
     assert stale_endings(graph(case).data) == [], case.id
     # nor its lit pseudocode row: the row saying the result ("their union is …") is lit
     assert stale_lit_rows(graph(case).data) == [], case.id
+    # nor, under a ✗, a row stating what the ✗ refutes ("BD is an inner diagonal" lit under
+    # "✗ BD is not an inner diagonal" in every wrong heuristic's scene): the rule's claim
+    assert refuted_lit_rows(graph(case).data) == [], case.id
     # nor its call line: the run's own call with its result, not the last split's
     assert stale_call_lines(graph(case).data) == [], case.id
     # nor the last step's label colours: every label in its ink, on the board and the panel
