@@ -6,6 +6,7 @@ lecture apply them."""
 
 from __future__ import annotations
 
+import ast
 import itertools
 import json
 import math
@@ -768,6 +769,47 @@ def stale_call_lines(data: dict) -> list[str]:
                 or not _COUNTED_CALL.search(said[-1])):
             found.append(f"play {k}: {said[-1]!r}")
     return found
+
+
+_SUBSCRIPTS = str.maketrans({**{c: str(k) for k, c in enumerate("₀₁₂₃₄₅₆₇₈₉")}, "′": "_",
+                             "″": "__"})
+
+
+def _depth(text: str) -> int:
+    """How many brackets are open at the end of ``text``."""
+    return sum(text.count(c) for c in "([{") - sum(text.count(c) for c in ")]}")
+
+
+def unreal_call_lines(data: dict) -> list[str]:
+    """Issue 22 item 1, a programmer's call line: the call lines (the part before the
+    result's arrow) Python could not read as a call, and those broken into lines anywhere
+    but after an argument's comma or before the arrow, as ``"'first_hit_sweeping(B, [0,
+    1], [D, E], —) → D': not Python"`` or ``"'…[D, | E], T(ABC)) → E': broken inside an
+    argument"`` (the vertical sweep's unset shore was a dash, and TranslationCorrect's list
+    [D, E] broke over two lines)."""
+    found: list[str] = []
+    for node in graph_nodes(data):
+        if node.get("name") != "panel:call":
+            continue
+        lines = [t for part in mobject_nodes(node) if (t := (part.get("text") or "").strip())]
+        whole = " ".join(lines)
+        if not whole:
+            continue
+        # a label's subscript (c₁) is its name's digit, its prime (c₁′) a letter, an elision (``{…}``, a cut line's
+        # end) Python's ``...``
+        call = whole.split(" →")[0].translate(_SUBSCRIPTS).replace("…", "...")
+        try:
+            parsed = ast.parse(call, mode="eval").body
+        except SyntaxError:
+            parsed = None
+        if not isinstance(parsed, ast.Call) and not call.endswith("..."):  # a cut one: its start
+            found.append(f"{whole!r}: not Python")
+        for k in range(1, len(lines)):
+            before = " ".join(lines[:k])
+            if not (lines[k].startswith("→") or (before.endswith(",") and _depth(before) == 1
+                                                 and "→" not in before)):
+                found.append(f"{' | '.join(lines)!r}: broken inside an argument")
+    return sorted(set(found))
 
 
 #: the end of a run's call line under its whole triangulation: the triangles it gives,

@@ -97,6 +97,7 @@ from tests.reading_rules import (
     thinnest_triangle,
     ticks_outside,
     unreadable_cues,
+    unreal_call_lines,
     unspoken_words,
     water_outside_polygon,
     words_before_pictures,
@@ -592,6 +593,10 @@ def test_the_call_line_is_a_real_call(case):
              and (n.get("text") or "").strip()}
     unreal = sorted(c for c in calls if not re.match(r"[A-Za-z_]\w*\(", c))
     assert unreal == [], case.id
+    # Python could read it, and it breaks only between arguments: the vertical sweep's unset
+    # shore read "—", and "[D, E]" broke over two lines (TranslationCorrect's call, every
+    # scene's candidates)
+    assert unreal_call_lines(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
