@@ -881,6 +881,26 @@ def refuted_lit_rows(data: dict) -> list[str]:
     return found
 
 
+def flashes_against_roles(data: dict) -> list[str]:
+    """The vertices a run's picture flashes (``Indicate``) in another colour than the role
+    it has then — the colour the panel shows it in, and the legend's — as ``"play 12:
+    vertex:D flashes #EF4B4B, idle"``: Scaling with walls flashed D red (no failure: B does
+    not see it, unsaid) while the panel kept it white, and E green (no verdict yet) while
+    the panel showed it amber."""
+    from metaphors.theme import THEME
+
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name, role = node.get("name") or "", node.get("role") or "idle"
+            if anim["type"] != "Indicate" or not name.startswith("vertex:"):
+                continue
+            if str(anim.get("color", "")).upper() != THEME.role_colour(role).upper():
+                found.append(f"play {k}: {name} flashes {anim.get('color')}, {role}")
+    return found
+
+
 #: a verdict's marks on a run's picture (:mod:`metaphors.basics`)
 _VERDICT_MARKS = ("tick", "cross")
 

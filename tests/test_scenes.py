@@ -40,7 +40,7 @@ from geometry.io import read_any_polygon, read_polygon
 from metaphors.pseudocode import source_of
 from metaphors.scene import SequenceScene, TraceScene
 from story.pseudocode import named
-from story.registry import entry, hole_pseudocode, spoken, triangulations, wrong
+from story.registry import entry, hole_pseudocode, names, spoken, triangulations, wrong
 from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
 from story.spec import RunSpec
 from story.storyboard import run_vertices
@@ -61,6 +61,7 @@ from tests.reading_rules import (
     crowded_verdicts,
     crowded_vertex_labels,
     far_verdicts,
+    flashes_against_roles,
     fleeting_kind_words,
     flickering_counts,
     graph_nodes,
@@ -474,6 +475,25 @@ def test_no_label_is_under_the_clock_face(case):
     assert labels_under_tools(graph(case).data) == [], case.id
     # nor does a dashed tail of one or two dashes beyond a vertex stand by its label ("A′")
     assert tails_beside_labels(graph(case).data) == [], case.id
+
+
+def _plays_heuristics(case: SceneCase) -> bool:
+    """Whether a scene plays a heuristic's run (or several)."""
+    cls = case.cls
+    if cls is None:
+        return False
+    if plays_several(cls):
+        return True
+    algorithm = algorithm_of(cls)
+    return algorithm in names() and entry(algorithm).is_heuristic
+
+
+@pytest.mark.parametrize("case", _params([c for c in SCENES if _plays_heuristics(c)]))
+def test_a_heuristics_picture_flashes_a_vertex_in_its_roles_colour(case):
+    """Review of the scenes: a vertex flashes in the colour of its role then, the colour the
+    panel shows it in (Scaling with walls flashed D red, B not seeing it unsaid, while the
+    panel kept D white, and E green while the panel showed it amber)."""
+    assert flashes_against_roles(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
