@@ -53,7 +53,7 @@ MIN_PLAY = 0.1
 WORDS_Z = 10
 
 #: z-index of the vertex markers (dots and labels): over every fill and tool a performer
-#: draws after them (tints −1, the clock hand and the sweep line 1, the dial 2), which at
+#: draws after them (tints −1, the clock hand and the sweep line 1), which at
 #: their own z-index would tint a label (chapter 1's M and G under the triangulation) or
 #: run through it (chapter 2's clock hand through F)
 LABEL_Z = 5

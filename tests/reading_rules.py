@@ -1861,6 +1861,31 @@ def _with_labels(data: dict) -> Iterator[tuple[dict, dict[str, tuple[float, floa
             yield anim, labels
 
 
+#: the parts of a tool's drawing only a word on screen could explain: a face round its hub,
+#: its hour marks
+_UNSAID_PARTS = ("dial", "mark:")
+#: the words that would say what they are
+_FACE_WORDS = re.compile(r"\b(?:dial|face|hour marks?)\b", re.IGNORECASE)
+
+
+def unexplained_tool_parts(data: dict) -> list[str]:
+    """The parts of a tool drawn (:data:`_UNSAID_PARTS`) that no caption, title or legend
+    says anything of, as ``"dial"``, ``"mark:D"``: the clock's grey wedge at its hub (33 px
+    at B, 15–25 px at C) and the amber tick it lit on the hand at the pick read as nothing
+    (review of the rotation scenes)."""
+    said = any(_FACE_WORDS.search(text) for text in _all_shown_texts(data, frozenset()))
+    if said:
+        return []
+    found = set()
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                name = node.get("name") or ""
+                if anim.get("type") in INCOMING and name.startswith(_UNSAID_PARTS):
+                    found.add(name)
+    return sorted(found)
+
+
 def labels_under_faces(data: dict) -> list[str]:
     """The vertex labels a face (:data:`_FACES`) covers, as ``"the dial covers B"``; the labels
     are those of the polygon drawn last before the face, at the places they were last

@@ -89,6 +89,7 @@ from tests.reading_rules import (
     ticks_outside,
     uneven_countdowns,
     unexplained_grey,
+    unexplained_tool_parts,
     unmarked_candidates,
     unnamed_axes,
     unreadable_cues,
@@ -616,6 +617,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # and no tool red after its pick (red says "fails")
     assert red_after_the_pick(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
+    # and no part of a tool that nothing on screen explains (the clock's grey face)
+    assert unexplained_tool_parts(data) == [], chapter.slug
     assert labels_under_tools(data) == [], chapter.slug
     assert tails_beside_labels(data) == [], chapter.slug
     # issue 22: the monotone sweep's kind word ("split") clear of every label and edge

@@ -97,6 +97,7 @@ from tests.reading_rules import (
     tails_beside_labels,
     thinnest_triangle,
     ticks_outside,
+    unexplained_tool_parts,
     unreadable_cues,
     unreal_call_lines,
     unspoken_words,
@@ -471,6 +472,8 @@ def test_no_label_is_under_the_clock_face(case):
     """Issue 22, labels stay readable: the clock's face at B (Rotation) or at C (Correct
     Rotation) covers no vertex label, the hub's own included."""
     assert labels_under_faces(graph(case).data) == [], case.id
+    # nor any part of the clock nothing explains: its grey face at the hub, its hour marks
+    assert unexplained_tool_parts(graph(case).data) == [], case.id
     # nor under the line of a tool where it stands: it leaves a gap round a label
     assert labels_under_tools(graph(case).data) == [], case.id
     # nor does a dashed tail of one or two dashes beyond a vertex stand by its label ("A′")
