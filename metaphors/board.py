@@ -125,6 +125,9 @@ class Board:
         # notes of a beat that stay up while its caption is read and go with the next beat's
         # words (the monotone sweep's kind word)
         self.leaving: list[Mobject] = []
+        # text that comes with the next beat's words (a run going on on this board: its
+        # title and its pseudocode come with its first caption, never before it)
+        self.arriving: list[Mobject] = []
         # the keys of metaphor objects that only the beat which drew them speaks of (ear
         # clipping's red test triangle): the next beat's words take them away, whatever
         # metaphor plays it (left up, the triangle lay under the gravity step after it)
@@ -201,8 +204,8 @@ class Board:
         recolour, after = self._recolour(beat.roles, busy, at_rest)
         action = [*anims, *self.panel.follow_roles(beat, at_rest, self.focus), *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
-                 *(FadeOut(m) for m in self.leaving)]
-        self.leaving = []
+                 *(FadeOut(m) for m in self.leaving), *(FadeIn(m) for m in self.arriving)]
+        self.leaving, self.arriving = [], []
         passed, self.passing = self.drop(*[key for key, m in self.passing.items()
                                            if self.objects.get(key) is m]), {}
         paced = max(0.1, run_time * beat.pace)

@@ -14,11 +14,17 @@ from collections.abc import Callable, Sequence
 from itertools import groupby
 from typing import Protocol, cast
 
+import numpy as np
+from manim import Animation, FadeOut, Mobject
+
 from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.fruit import Keyhole
-from metaphors.layout import Box
+from metaphors.layout import TITLE_Y, Box
+from metaphors.panel import Panel
 from metaphors.recorded import Recorded, captions_of, mark_step
+from metaphors.tags import tag
+from rendering.typeset import glyphs
 from story.beats import Beat, Claim, ShowPolygon
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
@@ -40,27 +46,63 @@ class BoardScene(Protocol):
 
 
 def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
-              theme) -> Board:
+              theme, *, later: Sequence[Sequence[Beat]] = ()) -> Board:
     """The board a log plays on; its panel shows what the scene's ``panel`` says (the
-    pseudocode, when the run has some, or the source)."""
+    pseudocode, when the run has some, or the source). ``later``: the beats of the runs
+    that go on on this board after this one (:func:`go_on`): the labels keep clear of their
+    claims too."""
     first = cast(ShowPolygon, beats[0])  # a storyboard opens with its polygon
     holes = first.holes if isinstance(first, ShowPolygon) else ()
     recorded = cast(Recorded, scene)  # every BoardScene is Recorded (TraceScene, the player's)
+    claims = [beat.labels for run in (beats, *later) for beat in run if isinstance(beat, Claim)]
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded),
-                  claims=[beat.labels for beat in beats if isinstance(beat, Claim)],
+                  claims=list(dict.fromkeys(claims)),
                   cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)])
-    board.panel.shows_calls = scene.call_line
-    board.panel.run_call = run_call(log)
+    _fill_panel(board.panel, scene, log)
+    _fit_title(board.title)
+    return board
+
+
+def _fill_panel(panel: Panel, scene: BoardScene, log: Log) -> None:
+    """The panel's text for ``log``'s run: its pseudocode (named as the run picks), or its
+    source, and the call line's settings."""
+    panel.shows_calls = scene.call_line
+    panel.run_call = run_call(log)
     code = log.meta.get("code")
     rows, picked, named = staged_pseudocode(log)
     if scene.panel == PSEUDOCODE and rows:
-        board.panel.show_pseudocode(rows, None if picked is None else (picked, named))
+        panel.show_pseudocode(rows, None if picked is None else (picked, named))
     elif code:
-        board.panel.show_code(code)
-    if board.title.width > TITLE_WIDTH:
-        board.title.scale_to_fit_width(TITLE_WIDTH)
-    return board
+        panel.show_code(code)
+
+
+def _fit_title(title: Mobject) -> None:
+    if title.width > TITLE_WIDTH:
+        title.scale_to_fit_width(TITLE_WIDTH)
+
+
+def go_on(board: Board, scene: BoardScene, log: Log, title: str) -> list[Animation]:
+    """Make ``board`` ready for another run on its polygon (a correction after the rule it
+    mends: the same polygon, not drawn again). Returns the fades of what goes — the last
+    run's claim, its verdict and the edge it crossed, its title and its panel's text — for
+    one play; the run's title and its panel's text come with its first words
+    (:attr:`Board.arriving`). The panel's small polygon stays, its labels in their roles."""
+    old = board.panel
+    panel = Panel(board.polygon.points, board.polygon.labels, meta(log, "shown"), board.theme,
+                  board.holes)
+    _fill_panel(panel, scene, log)
+    kept = np.allclose(panel.outline.points, old.outline.points)
+    if kept:  # the same box: the polygon drawn there stays
+        panel.outline, panel.markers, panel.roles = old.outline, old.markers, old.roles
+    going = [board.title, old.code, old.call, *(old.lit[1:] if old.lit else ()),
+             *([] if kept else [old.outline, *old.markers.values()])]
+    board.panel = panel
+    board.title = tag(glyphs(title, font=board.theme.font, size=30, colour=board.theme.ink),
+                      None, "title").move_to((0, TITLE_Y, 0))
+    _fit_title(board.title)
+    board.arriving = [board.title, *(panel.mobjects() if not kept else [panel.code, panel.call])]
+    return [*(FadeOut(m) for m in going), *board.drop("claim", "crossed", "crossing", "verdict")]
 
 
 def stretches(beats: Sequence[Beat]) -> list[int]:

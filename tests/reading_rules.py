@@ -543,6 +543,102 @@ def text_only_seconds(data: dict) -> tuple[float, float]:
     return text_only, total
 
 
+def _card_text(node: dict) -> str:
+    return " ".join(t for part in mobject_nodes(node) if (t := (part.get("text") or "").strip()))
+
+
+def unreadable_cards(data: dict) -> list[str]:
+    """The cards of a scene (``card``: a run's number and title on black) up for less than
+    their words take to read (:func:`story.reading.readable`: 17 characters a second, 0.83 s
+    at least), from the play that brings one in to the one that takes it off, as ``"0.80 s,
+    60 cps: '1 / 8 Scaling fails: …'"``: the counterexample scene's cards of 34–48
+    characters stood 0.6–0.8 s."""
+    found, shown = [], None
+    clock = 0.0
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if node.get("name") != "card":
+                continue
+            if anim["type"] in INCOMING:
+                shown = (clock, _card_text(node))
+            elif anim["type"] in OUTGOING and shown is not None:
+                seconds = clock + play["run_time"] - shown[0]
+                if not readable(shown[1], seconds):
+                    found.append(f"{seconds:.2f} s, {len(shown[1]) / seconds:.0f} cps: "
+                                 f"{shown[1]!r}")
+                shown = None
+        clock += play["run_time"]
+    return found
+
+
+def captions_said_again(data: dict) -> list[str]:
+    """The captions a graph says more than once, as ``"3 × '✗ BD is not an inner diagonal:
+    BD crosses edge E–A'"``: the counterexample scene said its ✗ ending three times and "The
+    frame as before" seven, over other runs each time."""
+    counts: dict[str, int] = {}
+    for cue in data["cues"]:
+        counts[cue["text"]] = counts.get(cue["text"], 0) + 1
+    return [f"{n} × {text!r}" for text, n in counts.items() if n > 1]
+
+
+#: what a caption says to speak of the picture the viewer saw just before
+_AS_BEFORE = re.compile(r"\bas before\b|\bthe same (?:polygon|frame|picture)\b", re.IGNORECASE)
+
+
+def false_as_before(data: dict) -> list[str]:
+    """The captions that speak of the picture shown before ("The frame as before", "on the
+    same polygon") said over a polygon just drawn that is not the one drawn before it, as
+    ``"'The frame as before: candidates D, E' over another polygon"``: the counterexample
+    scene said it as the mirror image gave way to the polygon (62 s), and the polygon to the
+    mirror image (96 s)."""
+    found, drawn, fresh = [], [], False
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and node.get("name") in _RUN_POLYGONS and node.get("points"):
+                drawn.append([tuple(round(c, 3) for c in p[:2]) for p in node["points"]])
+                fresh = True
+        caption = play.get("subcaption")
+        if caption:
+            if _AS_BEFORE.search(caption) and fresh and (len(drawn) < 2 or drawn[-1] != drawn[-2]):
+                found.append(f"{caption!r} over another polygon")
+            fresh = False
+    return found
+
+
+#: the tools that move to their pick, by the names of their drawings, and the animations that
+#: move them (a play of waits only is the picture standing still)
+_MOVING_TOOLS = ("water", "flood", "hand", "sweep")
+_MOVES = ("UpdateFromAlphaFunc", "Rotate", "_MethodAnimation", "Transform")
+
+
+def rushed_tools(data: dict) -> list[str]:
+    """The captions under which a tool moves to its pick for less time than the picture then
+    stands still, as ``"'Water spilled …': moves 0.77 s, still 2.47 s"``: the counterexample
+    scene's water covered all of T in 0.8 s and stood still 2.5 s (8.7–9.5 s), its clock hand
+    likewise (21.3–22.9 s)."""
+    found: list[str] = []
+    spans: list[tuple[str, float, float]] = []
+    caption, moving, still = None, 0.0, 0.0
+    for play in data["plays"]:
+        if play.get("subcaption"):
+            if caption is not None:
+                spans.append((caption, moving, still))
+            caption, moving, still = play["subcaption"], 0.0, 0.0
+        kinds = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        if any(kind in _MOVES and name in _MOVING_TOOLS for kind, name in kinds):
+            moving += play["run_time"]
+        elif kinds and all(kind == "Wait" for kind, _ in kinds):
+            still += play["run_time"]
+    if caption is not None:
+        spans.append((caption, moving, still))
+    for caption, moving, still in spans:
+        if moving > 0 and still > moving:
+            found.append(f"{caption!r}: moves {moving:.2f} s, still {still:.2f} s")
+    return found
+
+
 # --- issue 22 item 4: one picture per idea ----------------------------------------------------
 
 #: the polygons a run or an analysis draws its steps on (a card's figure is no run)

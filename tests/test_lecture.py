@@ -44,6 +44,7 @@ from tests.reading_rules import (
     crowded_vertex_labels,
     early_snags,
     faint_cuts,
+    false_as_before,
     far_verdicts,
     fills_over_labels,
     fleeting_kind_words,
@@ -592,6 +593,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert stale_lit_rows(data) == [], chapter.slug
     # and no lit row states what the ✗ on screen refutes ("BD is an inner diagonal")
     assert refuted_lit_rows(data) == [], chapter.slug
+    # "as before" only over the picture just seen (said as the mirror image gave way)
+    assert false_as_before(data) == [], chapter.slug
     # and no ✓ or ✗ of a step is left over on it (prune and search's diagonals)
     assert leftover_verdicts(data) == [], chapter.slug
     # issue 22: a verdict's ✓ or ✗ stands clear of every edge and label

@@ -50,6 +50,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     calls_over_code,
+    captions_said_again,
     crossed_vertex_labels,
     crossfaded_overlaps,
     crossfaded_subtitles,
@@ -60,6 +61,7 @@ from tests.reading_rules import (
     crowded_panel_labels,
     crowded_verdicts,
     crowded_vertex_labels,
+    false_as_before,
     far_verdicts,
     flashes_against_roles,
     fleeting_kind_words,
@@ -84,6 +86,7 @@ from tests.reading_rules import (
     repeated_verdicts,
     replayed_beats,
     run_together_labels,
+    rushed_tools,
     shapes_under_text,
     short_falls,
     small_texts,
@@ -98,6 +101,7 @@ from tests.reading_rules import (
     thinnest_triangle,
     ticks_outside,
     unexplained_tool_parts,
+    unreadable_cards,
     unreadable_cues,
     unreal_call_lines,
     unspoken_words,
@@ -497,6 +501,54 @@ def test_a_heuristics_picture_flashes_a_vertex_in_its_roles_colour(case):
     panel shows it in (Scaling with walls flashed D red, B not seeing it unsaid, while the
     panel kept D white, and E green while the panel showed it amber)."""
     assert flashes_against_roles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params([c for c in SCENES if _plays_heuristics(c)]))
+def test_a_heuristics_scene_says_each_caption_once_and_lets_its_tools_move(case):
+    """Review of the counterexample scene: no caption said twice (its ✗ ending three times,
+    "The frame as before" seven), and each tool moves for as long as the picture then stands
+    still under its caption (its water covered T in 0.8 s, then stood still 2.5 s)."""
+    data = graph(case).data
+    assert captions_said_again(data) == [], case.id
+    assert rushed_tools(data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_card_is_up_long_enough_to_read_and_as_before_means_just_before(case):
+    """Review of the counterexample scene: a card stays up as long as its words take to read
+    (its run cards of 34–48 characters stood 0.6–0.8 s), and "as before" or "the same
+    polygon" is said only over the polygon the viewer saw just before (it was said as the
+    mirror image gave way to the polygon, and back)."""
+    data = graph(case).data
+    assert unreadable_cards(data) == [], case.id
+    assert false_as_before(data) == [], case.id
+
+
+def test_the_counterexample_says_its_point_first_and_pairs_each_rule_with_its_correction():
+    """Review of the counterexample scene: its title and its point come first, said once
+    (neither ever appeared); each wrong rule is followed by its correction on the same
+    polygon, not drawn again (four failures, then four corrections, each on a polygon drawn
+    anew); no card on black; it ends on what it showed, not on the last run's ✓."""
+    from scenes.counterexample import Counterexample
+
+    case = next(c for c in SCENES if c.id == "counterexample.Counterexample")
+    data = graph(case).data
+    titles = [n["text"] for p in data["plays"] for a in p["animations"]
+              if a["type"] in ("Write", "FadeIn") and (n := a.get("mobject") or {}).get("name")
+              == "title"]
+    assert titles[0] == Counterexample.title == "The counterexample", titles[:2]
+    cues = [c["text"] for c in data["cues"]]
+    point = [c for c in cues if "defeats all three wrong rules" in c]
+    assert point == [cues[0]] and "mirror image defeats the clock turned the other way" in cues[0]
+    runs = Counterexample.runs
+    for k, (algorithm, polygon, _) in enumerate(runs):
+        if not entry(algorithm).correct:
+            assert runs[k + 1][:2] == (entry(algorithm).correction, polygon), runs[k + 1]
+    drawn = [a for p in data["plays"] for a in p["animations"]
+             if a["type"] == "Create" and (a.get("mobject") or {}).get("name") == "polygon"]
+    assert len(drawn) == len({polygon for _, polygon, _ in runs}), len(drawn)
+    assert not any(n.get("name") == "card" for n in nodes(graph(case)))
+    assert not cues[-1].startswith(("✓", "✗")), cues[-1]
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
