@@ -23,7 +23,7 @@ Examples
 >>> to_wkt([(0, 0), (1.5, 0), (0, 1)])
 'POLYGON ((0 0, 1.5 0, 0 1, 0 0))'
 >>> round(read_polygon("counterexample").area, 2)
-10.8
+12.52
 """
 
 from __future__ import annotations

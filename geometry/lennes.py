@@ -10,7 +10,9 @@ both halves strictly smaller, so it always ends.
 Traced, by decorators only: the pieces (key ``P(…)``, state: the polygon and
 its vertex ids in the whole) enter when made and exit when split or done; each
 finished triangle enters as ``△ABC`` and stays; the heuristic's claim exits
-once checked. Steps: the heuristic's own, then ``split``.
+once checked. Steps: the recursion taking up a part a split made
+(``next_part``), the base case (``done``), the heuristic's own, then ``split``:
+each row of the pseudocode has a step that lights it.
 
 >>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(1, 4.5), (9, 2), (3, 6.5), (4.6, 4.1), (1.6, 8)])
@@ -76,10 +78,18 @@ class FilledTriangle:
         return {"kind": "polygon", "points": [list(q) for q in p.points], "labels": list(p.labels)}
 
 
-@tracing.lifetimes(consumes=("piece",), produces=True, produced_first=True)
+@tracing.traced(consumes=("piece",), produces=True, produced_first=True)
 def done(piece: Piece) -> FilledTriangle:
-    """A triangle: done. It is drawn filled for good, then the piece goes."""
+    """A triangle: done (the base case, a step of its own: its row is lit as it runs). It is
+    drawn filled for good, then the piece goes."""
     return FilledTriangle(piece)
+
+
+@tracing.traced
+def next_part(piece: Piece) -> Piece:
+    """The part made by a split that is triangulated the same way next (the recursion, a
+    step of its own: its row is lit as the run takes the part up)."""
+    return piece
 
 
 @tracing.lifetimes(consumes=("claim",))
@@ -114,8 +124,11 @@ def divide_and_conquer(polygon: Polygon,
     """
     find = heuristic if callable(heuristic) else HEURISTICS[heuristic]
     todo, triangles, steps = [Piece.whole(polygon)], [], 0
+    whole = todo[0].ids
     while todo:
         piece = todo.pop()
+        if piece.ids != whole:  # a part a split made: the recursion takes it up
+            piece = next_part(piece)
         if piece.polygon.n == 3:
             triangles.append(done(piece).corners)
             continue

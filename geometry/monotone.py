@@ -7,11 +7,14 @@ sweeps down over the vertices. Each vertex is classified by its neighbours:
 * **end**: both neighbours higher, angle < π;  **merge**: both higher, > π;
 * **regular**: one higher, one lower (every straight vertex is regular).
 
-Split and merge vertices are where the polygon fails to be y-monotone. Every
-edge crossing the line with the inside on its right has a *helper*: the
-lowest vertex above the line that sees it. A split vertex is joined to the
-helper of the edge directly left of it; a merge vertex becomes a helper and
-is joined to the next vertex that replaces it. The diagonals cut the polygon
+Split and merge vertices are where the polygon fails to be y-monotone (a
+horizontal line meets a y-monotone polygon in one segment, or not at all).
+Every edge crossing the line with the inside on its right has a *helper*: the
+lowest vertex above the line whose horizontal segment to the edge lies inside
+P (de Berg et al.'s definition: the lowest vertex yet that sees the edge
+straight to its left). A split vertex is joined to the helper of the edge
+directly left of it; a merge vertex becomes a helper and is joined to the next
+vertex that replaces it. The diagonals cut the polygon
 into y-monotone pieces (:mod:`geometry.monotone_pieces`), and each piece is
 triangulated greedily with a stack in one more sweep. O(n log n).
 
@@ -20,7 +23,9 @@ coordinates need no special case, and every side test is exact.
 
 Traced steps: ``classify_vertex`` (the sweep line reaches the vertex: the
 storyboard draws it there), ``handle_start`` … ``handle_regular``, ``add_diagonal``,
-``monotone_pieces``, ``triangulate_monotone_piece``.
+``set_helper`` (a vertex becomes the helper of the edge directly left of it: the
+storyboard draws the horizontal segment between them), ``monotone_pieces``,
+``triangulate_monotone_piece``.
 
 >>> from geometry.polygon import Polygon
 >>> p = Polygon.from_points([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
@@ -84,6 +89,19 @@ def add_diagonal(sweep: Sweep, u: Vertex, w: Vertex) -> tuple[int, int]:
     return (u.index, w.index)
 
 
+@tracing.traced(exclude_args=("sweep",))
+def set_helper(sweep: Sweep, v: Vertex, top: Vertex, bottom: Vertex) -> None:
+    """v becomes the helper of edge top–bottom, the edge directly left of it: the lowest
+    vertex yet whose horizontal segment to the edge lies inside P."""
+    sweep.status.helper[top.index] = v.index
+
+
+def _helps(sweep: Sweep, v: Vertex, e: int) -> None:
+    """v becomes the helper of edge e (from vertex e down to the next), traced with its ends."""
+    polygon = sweep.polygon
+    set_helper(sweep, v, polygon.vertex(e), polygon.vertex(sweep.next[e]))
+
+
 def _finish_edge(sweep: Sweep, v: Vertex, e: int) -> None:
     """Edge e ends or gets a new helper at v: a merge-vertex helper is joined to v first."""
     helper = sweep.status.helper[e]
@@ -104,7 +122,7 @@ def _help_edge_left(sweep: Sweep, v: Vertex, at: int) -> None:
     """v, found at ``at``, becomes the helper of the edge directly left of it."""
     left = sweep.status.left(at)
     _finish_edge(sweep, v, left)
-    sweep.status.helper[left] = v.index
+    _helps(sweep, v, left)
 
 
 @tracing.traced(exclude_args=("sweep",))
@@ -122,7 +140,7 @@ def handle_split(sweep: Sweep, v: Vertex) -> None:
     at = sweep.status.find(v.index)
     left = sweep.status.left(at)
     add_diagonal(sweep, v, sweep.polygon.vertex(sweep.status.helper[left]))
-    sweep.status.helper[left] = v.index
+    _helps(sweep, v, left)
     sweep.status.insert(at, v.index, helper=v.index)
 
 

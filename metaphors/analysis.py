@@ -279,11 +279,13 @@ def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
     outside_area = region(stage, m.astray(stage.polygon.points), theme.rejected, 0.6,
                           "analysis:outside", "rejected").set_z_index(2)
     at = stage.vertex(wrong.pick)
+    # the vertices on the red set apart from it by a dark halo (the pick amber, not pulsed
+    # red: in the red it vanished), the flash says where the red wets it
     stage.say(wrong.words(analysis.fails),
               ([Create(outside_tool), FadeIn(outside_area),
                 *stage.key(theme.rejected, OUTSIDE, "astray"),
                 Flash(at, color=theme.rejected, flash_radius=0.45),
-                Indicate(stage.markers[wrong.pick], color=theme.rejected)], 1.6),
+                *stage.set_apart(m.astray(stage.polygon.points), stray)], 1.6),
               ([], analysis.freeze))
     return [drawing, outside_tool, outside_area, *crossing(stage, wrong, analysis.freeze)]
 
@@ -327,7 +329,9 @@ def holds(stage: Stage, right: Moment, analysis: Analysis, first: Sequence = ())
     if right.band is not None:
         _band_moves(stage, right, analysis, first)
         witness = right.band.swept(1.0)
-        label, covered = "swept", []
+        # the green witness covers the band's swept region: its key goes before it comes
+        # (it stayed with no rose left, chapter 3 at 46 s)
+        label, covered = "swept", stage.forget_key("band")
     else:
         m = right.moved
         colour = tool_colour(theme, right.heuristic)

@@ -85,7 +85,10 @@ def claim(board: Board, beat: Claim) -> None:
 
 def verdict(board: Board, beat: Verdict) -> None:
     """The claim judged: a tick, or the claim red, the crossed edge and a flash at the crossing;
-    then a turned picture turns back upright (:func:`metaphors.picture.upright`)."""
+    then a turned picture turns back upright (:func:`metaphors.picture.upright`). The verdict's
+    caption comes in the play that gives the claim its colour (``together``): played first
+    on its own, "✓ DG is an inner diagonal" stood a second over an amber DG (chapter 1 at
+    38 s, chapters 3 and 6 likewise for ✗)."""
     _judged(board, beat)
     upright(board, beat)
 
@@ -106,7 +109,7 @@ def _judged(board: Board, beat: Verdict) -> None:
         held = [] if line is None else [line.animate.set_color(theme.result)]
         if line is not None:
             tag(line, "result", "claim")
-        board.play(beat, *held, FadeIn(mark, scale=1.5), run_time=1.0)
+        board.play(beat, *held, FadeIn(mark, scale=1.5), run_time=1.0, together=True)
         return
     anims: list[Playable] = []
     if line is not None:
@@ -126,7 +129,7 @@ def _judged(board: Board, beat: Verdict) -> None:
     if line is not None:  # beside the claim, clear of every edge and label
         mark.move_to(board_spot(board, mark, line))
     board.keep("verdict", mark)
-    board.play(beat, *anims, FadeIn(mark, scale=1.5), run_time=1.5)
+    board.play(beat, *anims, FadeIn(mark, scale=1.5), run_time=1.5, together=True)
 
 
 def note(board: Board, beat: Beat) -> None:

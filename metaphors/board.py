@@ -27,6 +27,7 @@ from metaphors.labels import (
     drawn_edges,
     filled_region,
     measured_markers,
+    move_label,
     new_colour,
 )
 from metaphors.layout import (
@@ -74,6 +75,8 @@ def animate(mobject: Mobject, **anim_args: Any) -> _AnimationBuilder:
     return builder(**anim_args)
 
 
+#: the least a step of a summary takes (seconds): long enough to see what changed
+SEEN_STEP = 0.5
 #: the objects that hold the vertex they are drawn from in its blue (:meth:`Board.held`):
 #: T round B, gravity's ball and band, a claim and the edge it crosses
 HOLDING = frozenset({"T", "ball", "band", "claim", "crossed"})
@@ -85,7 +88,7 @@ class Board:
     def __init__(self, scene: Scene, points, labels, shown: str | None, title: str,
                  theme: Theme = THEME, box: Box = METAPHOR, holes=(), *,
                  captions: CaptionTrack, claims: Sequence[tuple[str, str]] = (),
-                 cuts: Sequence[Sequence[Sequence[float]]] = ()):
+                 cuts: Sequence[Sequence[Sequence[float]]] = (), leaders: bool = False):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
@@ -107,7 +110,7 @@ class Board:
         self.markers: dict[str, Mobject] = {
             label: tag(m, "idle", f"vertex:{label}").set_z_index(LABEL_Z)
             for label, m in measured_markers(self.polygon, self.holes, self.frame, theme, pairs,
-                                             lines)
+                                             lines, leaders)
         }
         self.where: dict[str, tuple[float, ...]] = {
             label: p for label, p in zip(labels, self.polygon.points, strict=True)}
@@ -143,6 +146,11 @@ class Board:
         # labels moved aside for a while (:meth:`clear_labels` ``for_now``): where they stood,
         # in the polygon's coordinates
         self.moved_for_now: dict[str, tuple[float, float]] = {}
+        # labels moved aside off a thing that goes with the next beat's words (ear clipping's
+        # test triangle, :meth:`clear_labels` ``aside``): where they stood, in the polygon's
+        # coordinates; they go back with it (:meth:`play`): left where they were moved, H
+        # stood on the fruit for a second after G's triangle went, with room off it
+        self.aside: dict[str, tuple[float, float]] = {}
         # the markers of vertices a metaphor took off the picture for a while (ear clipping's
         # sliced-off ear tips), by label: out of :attr:`markers`, so that no recolouring,
         # label move or turn brings them back on screen before the metaphor does
@@ -178,8 +186,10 @@ class Board:
         (at 0.2 s each they flashed by, then the screen stood still on the last for 2 s).
         Only the beats of its own stretch share it: the same words said again later are
         read again (counted over the whole run, each step of a summary whose caption came
-        back was cut short by the beats of the other)."""
-        return reading_time(beat.caption) / max(1, self.share)
+        back was cut short by the beats of the other). Never under :data:`SEEN_STEP`: a
+        summary of many steps (the monotone sweep's, each vertex's kind and the edge it
+        helps) takes longer than its words, each step still seen."""
+        return max(SEEN_STEP, reading_time(beat.caption) / max(1, self.share))
 
     def play(self, beat: Beat, *anims: Playable, run_time: float = 1.0,
              together: bool = False, at_rest: bool = False, least: float = 0.0) -> None:
@@ -199,15 +209,19 @@ class Board:
         (:meth:`shared_time`), after its words."""
         # A marker the beat already animates (a pulse) is recoloured after the play: two
         # animations of one mobject in one play would cancel the first.
+        passed: list[Playable] = [*self.drop(*[key for key, m in self.passing.items()
+                                               if self.objects.get(key) is m])]
+        self.passing = {}
+        # the labels moved aside off what goes go back with it
         busy = {id(getattr(a, "mobject", None)) for a in anims}
+        passed += self.labels_aside_back(busy) if passed else []
+        busy |= {id(getattr(a, "mobject", None)) for a in passed}
         beat = replace(beat, roles=self.held_roles(beat.roles))
         recolour, after = self._recolour(beat.roles, busy, at_rest)
         action = [*anims, *self.panel.follow_roles(beat, at_rest, self.focus), *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
                  *(FadeOut(m) for m in self.leaving), *(FadeIn(m) for m in self.arriving)]
         self.leaving, self.arriving = [], []
-        passed, self.passing = self.drop(*[key for key, m in self.passing.items()
-                                           if self.objects.get(key) is m]), {}
         paced = max(0.1, run_time * beat.pace)
         lead = min(WORDS_TIME, paced / 2)
         split = bool(words) and lead >= MIN_PLAY and not together
@@ -335,7 +349,8 @@ class Board:
         return sorted(rings, key=lambda ring: -shapely.Polygon([p[:2] for p in ring]).area)
 
     def clear_labels(self, *lines: Mobject, for_now: bool = False,
-                     apart: float = MARGIN) -> list[Playable]:
+                     apart: float = MARGIN, aside: bool = False,
+                     returning: bool = False, near: float = MARGIN) -> list[Playable]:
         """The moves, to play with ``lines`` (about to be drawn: a diagonal, a cut, the
         triangles of a triangulation), of the vertex labels they would cross: each to a clear
         place beside its vertex, measured against the outline's edges, the lines and
@@ -343,7 +358,11 @@ class Board:
         label the lines keep clear of stays. A move transforms the whole marker, so
         :meth:`play` recolours it after the play. ``for_now``: the lines go again soon (the
         ball's fall), and :meth:`labels_back` puts the labels back where they stood.
-        ``apart``: the gap a moved label keeps from the other labels."""
+        ``apart``: the gap a moved label keeps from the other labels. ``aside``: the lines
+        go with the next beat's words (:meth:`passes`: a test triangle), and the labels go
+        back with them (:meth:`labels_aside_back`). ``returning``: what the labels were
+        moved aside off goes now (the test triangle before): they go back where they stood,
+        unless these lines cross them there too."""
         # the vertices on the picture (not those taken off it, :attr:`off`), in ring order
         rings = [[label for label in ring if label in self.markers]
                  for ring in (self.polygon.labels, *(h.labels for h in self.holes))]
@@ -353,17 +372,38 @@ class Board:
         markers = {label: m for label, m in self.markers.items() if isinstance(m, VGroup)}
         moves: list[Playable] = []
         fill = filled_region([[p[:2] for p in ring] for ring in self.outline_rings()])
-        for label, centre in crossed_labels(rings, markers, drawn,
-                                            [edge for line in lines for edge in drawn_edges(line)],
-                                            self.theme.dot_radius, apart, fill).items():
+        homes = {label: place for label, place in self.aside.items() if label in markers}
+        back = {label: self.at(place) for label, place in homes.items()} if returning else {}
+        self.aside = {} if returning else self.aside
+        crossed = crossed_labels(rings, markers, drawn,
+                                 [edge for line in lines for edge in drawn_edges(line)],
+                                 self.theme.dot_radius, apart, fill, back, near)
+        for label, centre in {**back, **crossed}.items():
             moved = self.markers[label].copy()
-            if for_now:  # in the polygon's coordinates: the picture may turn before it goes back
-                self.moved_for_now.setdefault(
-                    label, self.frame.from_scene(self.markers[label][1].get_center()))
-            moved[1].move_to((centre[0], centre[1], 0.0))
+            # in the polygon's coordinates: the picture may turn before it goes back
+            where = homes.get(label, self.frame.from_scene(self.markers[label][1].get_center()))
+            if for_now:
+                self.moved_for_now.setdefault(label, where)
+            if aside and label in crossed:
+                self.aside.setdefault(label, where)
+            move_label(moved, centre)
             # a move for now is an ``animate`` (it is undone), a lasting one a Transform
             moves.append(animate(self.markers[label]).become(moved) if for_now
                          else Transform(self.markers[label], moved))
+        return moves
+
+    def labels_aside_back(self, busy: set[int]) -> list[Playable]:
+        """The moves putting the labels moved aside (:meth:`clear_labels` ``aside``) back
+        where they stood, but those whose markers ``busy`` holds (ids: animated in the same
+        play already, they stay where that puts them)."""
+        moves: list[Playable] = []
+        for label, place in sorted(self.aside.items()):
+            marker = self.markers.get(label)
+            if marker is not None and id(marker) not in busy:
+                back = marker.copy()
+                move_label(back, self.at(place))
+                moves.append(Transform(marker, back))
+        self.aside = {}
         return moves
 
     def labels_back(self) -> list[Playable]:
@@ -373,7 +413,7 @@ class Board:
         moves: list[Playable] = []
         for label, place in sorted(self.moved_for_now.items()):
             back = self.markers[label].copy()
-            back[1].move_to(self.at(place))
+            move_label(back, self.at(place))
             moves.append(animate(self.markers[label]).become(back))
         self.moved_for_now = {}
         return moves

@@ -13,7 +13,7 @@ from the start ``heading``); the way the hand turns is the way towards the candi
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -24,7 +24,7 @@ from metaphors.board import Board
 from metaphors.performing import Performances, act, performs
 from metaphors.sweep import follower, light
 from metaphors.tags import tag
-from story.beats import beat_kind
+from story.beats import Beat, beat_kind
 from story.reach import heading
 from story.states import Hand, Moving, Point, hits, point
 from story.storyboard import Reading, Walk, read_step
@@ -82,13 +82,15 @@ def clock(board: Board, beat: Clock) -> None:
     picked = [False]  # set once the hand has passed its pick
     hand = follower(board, axis, theme.hand, "hand", picked=picked).set_z_index(1)  # over the rings
     board.scene.add(axis)
-    board.play(beat, FadeIn(hand), FadeIn(hub), run_time=0.8)
+    # the pick stays a candidate until the hand passes it: amber then, with its ring
+    board.play(beat.before_pick(), FadeIn(hand), FadeIn(hub), run_time=0.8)
 
     lit, turned = [], 0.0
     for k, (state, label) in enumerate(reached):
         step = state.angle - turned
         turned = state.angle
-        board.play(beat, Rotate(axis, angle=sign * step * DEGREES, about_point=centre),
+        board.play(beat if picked[0] else beat.before_pick(),
+                   Rotate(axis, angle=sign * step * DEGREES, about_point=centre),
                    run_time=0.6 + abs(step) / 60)
         kept, anims = light(board, label, k == 0, axis,
                             ahead=_wedge(centre, axis.get_end(), sign * (last - turned)))
@@ -140,7 +142,13 @@ def _turn(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
                          for v, a in walk.reach(call, ret)))}
 
 
-READS: Mapping[str, Reading] = {"first_hit_rotating": read_step(
-    Clock, "The clock hand turns; the first candidate it passes is {result}", _turn,
-    picks=True)}
+def read_clock(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """The clock's step, its words naming where the clock stands: its centre turns blue
+    with them (Correct Rotation's C turned blue under "The clock hand turns; …", unsaid)."""
+    centre = walk.ref(call, "centre")
+    caption = f"The clock hand at {centre} turns; the first candidate it passes is {{result}}"
+    yield from read_step(Clock, caption, _turn, picks=True)(walk, call, ret)
+
+
+READS: Mapping[str, Reading] = {"first_hit_rotating": read_clock}
 PERFORMS: Performances = performs(act(Clock, clock))

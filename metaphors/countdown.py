@@ -8,9 +8,19 @@ by at half a second each, and "1" stayed 3.7 s).
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
-from manim import TAU, Arc, Mobject, UpdateFromAlphaFunc, VGroup, VMobject, linear
+from manim import (
+    TAU,
+    Animation,
+    Arc,
+    FadeOut,
+    Mobject,
+    UpdateFromAlphaFunc,
+    VGroup,
+    VMobject,
+    linear,
+)
 
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
@@ -32,17 +42,19 @@ def _digit(k: int, at: tuple[float, float, float], theme: Theme) -> VMobject:
     return digit.move_to(at)
 
 
-def countdown(seconds: int, at: tuple[float, float, float],
-              theme: Theme = THEME) -> tuple[VGroup, Iterator[UpdateFromAlphaFunc]]:
-    """The countdown mobject (full ring, ``seconds`` shown) and its seconds: ``seconds``
-    animations of one second each, at a constant rate, to be played in turn; the caller adds
-    the mobject and plays each as it comes.
+def countdown(seconds: int, at: tuple[float, float, float], theme: Theme = THEME
+              ) -> tuple[VGroup, Iterator[UpdateFromAlphaFunc], Callable[[], Animation]]:
+    """The countdown mobject (full ring, ``seconds`` shown), its seconds: ``seconds``
+    animations of one second each, at a constant rate, to be played in turn (the caller adds
+    the mobject and plays each as it comes), and its end: the animation that shows 0 on the
+    empty ring as it fades (to be played with what comes when the time is up; the count
+    stopped at 1, a second before the answer came).
 
     Each second shows its number from its first frame: the iterator puts it up before it
     hands over the second's animation (so that the scene graph, written before the play,
     holds it). The digits are typeset once, up front: a second only swaps which one is shown.
     """
-    digits = [_digit(k, at, theme) for k in range(seconds, 0, -1)]
+    digits = [_digit(k, at, theme) for k in range(seconds, -1, -1)]
     shown = tag(VGroup(_ring(1.0, at, theme), digits[0]), None, "countdown")
 
     def second(left: int) -> UpdateFromAlphaFunc:
@@ -53,7 +65,12 @@ def countdown(seconds: int, at: tuple[float, float, float],
         shown[1] = digits[seconds - left]
         return UpdateFromAlphaFunc(shown, update, run_time=1.0, rate_func=linear)
 
-    return shown, (second(left) for left in range(seconds, 0, -1))
+    def end() -> Animation:
+        shown[0].become(_ring(0.0, at, theme)).set_stroke(opacity=0.0)  # empty: no hair of it
+        shown[1] = digits[-1]  # 0, from the play's first frame
+        return FadeOut(shown)
+
+    return shown, (second(left) for left in range(seconds, 0, -1)), end
 
 
 __all__ = ["RING_RADIUS", "countdown"]

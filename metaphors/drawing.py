@@ -143,17 +143,65 @@ def triangle_mobject(
     )
 
 
+def neighbour_shades(triangles: Sequence[Sequence[Sequence[float]]]) -> list[int]:
+    """Each triangle's shade (an index into :attr:`metaphors.theme.Theme.triangle_shades`),
+    two triangles that share a side never alike, so that each is counted (chapter 1's GCD and
+    GDF, side by side in one purple, read as one). Greedy, breadth first from the first
+    triangle in sorted order, each neighbour in sorted order: a polygon's triangles sharing
+    sides form a tree, so two shades alternate; with holes a third may come. The same
+    triangles give the same shades in any order.
+
+    >>> neighbour_shades([((0, 0), (1, 0), (0, 1)), ((1, 0), (1, 1), (0, 1)),
+    ...                   ((1, 1), (2, 1), (1, 0))])
+    [0, 1, 0]
+    """
+    keys = [tuple(sorted((float(x), float(y)) for x, y in t)) for t in triangles]
+    sides: dict[tuple, list[int]] = {}  # a side (its two corners) → the triangles on it
+    for k, key in enumerate(keys):
+        for side in ((key[0], key[1]), (key[0], key[2]), (key[1], key[2])):
+            sides.setdefault(side, []).append(k)
+    near = [sorted({j for side in ((key[0], key[1]), (key[0], key[2]), (key[1], key[2]))
+                    for j in sides[side] if j != k}, key=lambda j: keys[j])
+            for k, key in enumerate(keys)]
+    shades: dict[int, int] = {}
+    for root in sorted(range(len(keys)), key=lambda k: keys[k]):
+        if root in shades:
+            continue
+        shades[root], queue = 0, [root]
+        while queue:
+            for j in near[queue.pop(0)]:
+                if j not in shades:
+                    taken = {shades[m] for m in near[j] if m in shades}
+                    shades[j] = min(s for s in range(len(taken) + 1) if s not in taken)
+                    queue.append(j)
+    return [shades[k] for k in range(len(keys))]
+
+
+def shaded_triangle(corners: Sequence[np.ndarray], shade: int, theme: Theme = THEME) -> MPolygon:
+    """One finished triangle (its corners on screen) in the result's green, at the fill of its
+    ``shade`` (:func:`neighbour_shades`), its sides a thin green line."""
+    fill = theme.triangle_shades[shade % len(theme.triangle_shades)]
+    return MPolygon(*corners, color=theme.result, stroke_width=theme.thin_stroke,
+                    fill_color=theme.result, fill_opacity=fill)
+
+
 def triangulation_pieces(triangles: Sequence[Sequence[Sequence[float]]], at: Any,
                          theme: Theme = THEME) -> list[MPolygon]:
     """A whole triangulation, each triangle (its corners' points, placed on screen by ``at``)
-    filled in the next of the pieces' colours: how a run's result is drawn at its end."""
-    shown = []
-    for k, corners in enumerate(triangles):
-        colour = theme.pieces[k % len(theme.pieces)]
-        shown.append(tag(MPolygon(*[at(p) for p in corners], color=colour,
-                                  stroke_width=theme.thin_stroke, fill_color=colour,
-                                  fill_opacity=theme.fill_opacity), "result", "triangulation"))
-    return shown
+    in the result's green, neighbours in other shades (:func:`neighbour_shades`): how a run's
+    result is drawn at its end. Not in the pieces' tints: those are the parts a split or a
+    partition makes (chapter 1's purple was "the other half" at 41 s and a triangle at 83 s)."""
+    return [tag(shaded_triangle([at(p) for p in corners], shade, theme), "result",
+                "triangulation")
+            for corners, shade in zip(triangles, neighbour_shades(triangles), strict=True)]
+
+
+def triangulation_figure(polygon: Polygon, triangles: Sequence[Sequence[int]], frame: Frame,
+                         name: str, theme: Theme = THEME) -> list[MPolygon]:
+    """The triangles of ``polygon`` (by vertex index) drawn in ``frame`` as a run's result is
+    (:func:`triangulation_pieces`), each tagged ``name``: a card's or a comparison's."""
+    corners = [[polygon.points[k] for k in t] for t in triangles]
+    return [tag(m, "result", name) for m in triangulation_pieces(corners, frame.to_scene, theme)]
 
 
 def whole_caption(triangles: int, holes: int = 0) -> str:

@@ -3,16 +3,21 @@
 Each is computed from the geometry, as the runs are, in a card's figure box (``box``: its
 centre, width and height), the card's words on the right:
 
-* ``monotone-pieces``: P cut into its y-monotone pieces by the sweep's diagonals (in the
-  amber the run draws them in), each piece tinted, the split and merge vertices marked in
-  their kinds' colours, as the run marks them (never red: nothing here fails);
-* ``measured``: the steps (sign tests: orientations and comparisons) the lecture's
-  algorithms take, counted in real runs on random polygons
-  (:func:`story.sign_tests.measured`), against n on logarithmic axes named in plain words,
-  each counted line with its own marks (two of them run together), and
+* ``monotone-pieces``: what y-monotone means, drawn before the run names a kind of vertex:
+  a horizontal line (in the sweep's colour) that meets P in two segments or more, each
+  segment solid, and P cut into its y-monotone pieces by the sweep's diagonals (in the
+  amber the run draws them in), each piece tinted: the line meets each piece once. The
+  split and merge vertices are not marked: the run teaches them (the card named them 12 s
+  before the run said what they are);
+* ``measured``: the steps (sign tests: orientations and comparisons) faster ear clipping
+  and monotone partition take, counted in real runs (:func:`story.sign_tests.measured`) on
+  half discs whose straight side is dented in (ear clipping's worst case: its n² shows) and
+  on random polygons (where the two keep pace), against n on logarithmic axes named in
+  plain words, each algorithm with its own colour and marks (filled on the half discs), and
   dashed, the shapes of the bounds no run here measures (Tarjan and van Wyk's
-  n log log n, Chazelle's n), from the plot's corner (a bound has no constant); the
-  legend says which lines were counted and which are bounds, not measured;
+  n log log n, Chazelle's n), from monotone partition's first mark (a bound has no
+  constant); the legend's table says which lines were counted on which polygons, and which
+  are bounds, not measured;
 * ``delaunay-circle``: P's constrained Delaunay triangulation with one triangle's
   circumcircle, every vertex clearly inside or outside it, those inside (none of them seen
   from inside the triangle) marked;
@@ -27,9 +32,10 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from itertools import pairwise
 
 import shapely
-from manim import LEFT, Circle, Dot, Line, Mobject, VGroup
+from manim import LEFT, Circle, DashedLine, Dot, Line, Mobject, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.cdt import constrained_delaunay
@@ -39,7 +45,7 @@ from geometry.monotone_pieces import monotone_pieces
 from geometry.polygon import Polygon
 from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
-from metaphors.drawing import Frame, polygon_mobject, triangle_mobject
+from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, triangulation_figure
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_plots import MARKS, Area, Series, axis_names, line_plot, point_mark
 from metaphors.labels import EDGE_MARGIN, placed_vertex_markers
@@ -53,14 +59,22 @@ from story.sign_tests import SEEDS, measured
 Box = tuple[tuple[float, float], float, float]  # a figure's centre, width and height
 
 KINDS = ("monotone-pieces", "measured", "delaunay-circle", "three-triangulations")
-#: the measured plot: the lecture's algorithms, counted on random polygons of these sizes
+#: the measured plot: the two faster algorithms, counted on polygons of these sizes
 MEASURED_SIZES = (10, 20, 40, 80, 160)
-MEASURED_RUNS = ("divide-and-conquer", "ear-clipping", "monotone")
+MEASURED_RUNS = ("ear-clipping", "monotone")
+#: the kinds of polygon counted (sample families) and how the legend names them: half discs
+#: whose straight side is dented in, where ear clipping's n² shows (on random polygons alone
+#: the two lines ran together, while the chapter said O(n²) against O(n log n)), and random
+#: ones; each algorithm's marks filled on the first, hollow on the second
+MEASURED_SHAPES = (("half-disc", "half discs"), ("random-2opt", "random polygons"))
+#: the half disc drawn beside its name in the legend (what "half disc" means there: its
+#: dented side is seen), this many vertices, this high (scene units)
+ICON_N, ICON_HEIGHT = 12, 0.4
+#: the line the bounds start from: its first mark (a bound has no constant)
+BOUND_FROM = ("monotone", "half-disc")
 #: the bounds drawn for comparison, never run: (their key, their name on screen, their shape)
 BOUNDS = (("tarjan-van-wyk", "O(n log log n)", lambda n: n * math.log2(math.log2(n))),
           ("chazelle", "O(n)", float))
-#: the recap's rows of triangulations: from under the card's title to the frame's foot
-THREE_TOP, THREE_BOTTOM = 2.7, -3.75
 #: the recap's triangulations and the time bound each card says
 RECAPPED = (("divide-and-conquer", "O(n²)"), ("ear-clipping", "O(n²)"),
             ("monotone", "O(n log n)"))
@@ -105,9 +119,44 @@ def monotone_partition(polygon: Polygon) -> Partition:
                      tuple(i for i in sweep.order if kinds[i] == "merge"))
 
 
+#: the least angle (degrees) at which the y-monotone card's line crosses an edge of P
+LEVEL_STEEPEST = 20.0
+
+
+def level_line(polygon: Polygon) -> tuple[float, list[tuple[float, float]]] | None:
+    """A height at which a horizontal line meets P in two segments or more, and the
+    segments (their x), in P's units: of the heights halfway between two vertices' heights,
+    the one whose shortest segment, and whose room between the vertices above and below,
+    are longest (halfway between K and M, the line seemed to run through both), crossing no
+    edge at less than :data:`LEVEL_STEEPEST` (under D, it ran along D–E and seemed to meet
+    it). None if P is y-monotone or no height will do.
+
+    >>> y, segments = level_line(read_polygon("lecture"))
+    >>> y, [(round(a, 2), round(b, 2)) for a, b in segments]
+    (13.0, [(4.81, 5.9), (7.57, 9.0)])
+    """
+    region = shapely.Polygon(polygon.points)
+    (left, _, right, _), heights = region.bounds, sorted({p[1] for p in polygon.points})
+    best: tuple[float, float, list[tuple[float, float]]] | None = None
+    edges = list(zip(polygon.points, [*polygon.points[1:], polygon.points[0]], strict=True))
+    for low, high in pairwise(heights):
+        y = (low + high) / 2
+        met = shapely.LineString([(left - 1, y), (right + 1, y)]).intersection(region)
+        parts = sorted((min(c[0] for c in g.coords), max(c[0] for c in g.coords))
+                       for g in getattr(met, "geoms", [met]) if not g.is_empty)
+        crossed = [math.degrees(math.atan2(abs(q[1] - p[1]), abs(q[0] - p[0])))
+                   for p, q in edges if min(p[1], q[1]) < y < max(p[1], q[1])]
+        if len(parts) >= 2 and min(crossed) >= LEVEL_STEEPEST:
+            shortest = min(min(b - a for a, b in parts), high - low)
+            if best is None or shortest > best[0]:
+                best = (shortest, y, parts)
+    return None if best is None else (best[1], best[2])
+
+
 def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
     frame = Frame(polygon.points, *box)
     cut = monotone_partition(polygon)
+    level = level_line(polygon)
     tints = [tag(MPolygon(*frame.many([polygon.points[k] for k in piece]),
                           color=theme.pieces[n % len(theme.pieces)], stroke_width=0,
                           fill_color=theme.pieces[n % len(theme.pieces)],
@@ -117,81 +166,122 @@ def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
     lines = [tag(Line(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[w]),
                       color=theme.argument, stroke_width=theme.stroke * 1.5), "argument",
                  "figure:diagonal") for u, w in cut.diagonals]
-    kinked = [*cut.split, *cut.merge]
-    # each kind in its colour, as the monotone run draws it (metaphors/theme.py's legend)
-    marks = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.role_colour(kind)),
-                 kind, "figure:kink")
-             for kind, ks in (("split", cut.split), ("merge", cut.merge)) for k in ks]
-    if kinked:
-        said = [f"{kind} {_names([polygon.labels[k] for k in ks])}"
-                for kind, ks in (("split", cut.split), ("merge", cut.merge)) if ks]
-        many = len(cut.diagonals) != 1
-        words = [(", ".join(said), theme.ink),
-                 (f"{len(cut.diagonals)} diagonal{'s' * many}: "
-                  f"{len(cut.pieces)} y-monotone pieces", theme.ink)]
-    else:
-        words = [("P is y-monotone already: one piece", theme.ink)]
+    if level is None:
+        return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *tints,
+                *lines, tag(placed_vertex_markers(polygon, frame, theme), "idle",
+                            "figure:vertices"),
+                figure_caption(box, theme, ("P is y-monotone already: one piece", theme.ink))]
+    y, segments = level
+    xs = [p[0] for p in polygon.points]
+    reach = (max(xs) - min(xs)) * 0.06  # the line runs on a little beyond P, dashed
+    # dashed where it runs outside P, its segments in P solid and in ink: the sweep's lilac
+    # did not read on the pieces' purple tint
+    whole = tag(DashedLine(frame.to_scene((min(xs) - reach, y)), frame.to_scene((max(xs) + reach, y)),
+                           color=theme.idle, stroke_width=theme.thin_stroke,
+                           dash_length=theme.dash_length), None, "figure:level-line")
+    met = [tag(Line(frame.to_scene((a, y)), frame.to_scene((b, y)), color=theme.ink,
+                    stroke_width=theme.stroke * 1.6), None, "figure:level-segment")
+           for a, b in segments]
+    # the pieces, each met once, are the tints: the card's words say what they are
+    words = [(f"This line meets P in {len(segments)} segments: P is not y-monotone", theme.ink)]
+    # the labels clear of the line as of the diagonals (a label on it reads as struck through)
+    markers = placed_vertex_markers(polygon, frame, theme, lines=[
+        [(min(xs) - reach, y), (max(xs) + reach, y)]])
     return [tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"), *tints,
-            *lines, tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices"),
-            *marks, figure_caption(box, theme, *words)]
+            *lines, whole, *met, tag(markers, "idle", "figure:vertices"),
+            figure_caption(box, theme, *words)]
 
 
 # --- measured work -------------------------------------------------------------------------------
 
 
 def measured_series(theme: Theme) -> list[Series]:
-    """The plot's lines: each algorithm's counts at :data:`MEASURED_SIZES`, then the
-    bounds (dashed), their shapes only: a bound has no constant, so each starts in the
-    plot's corner, at the first size and the decade below the least count."""
-    lines = [Series(f"figure:measured:{name}", tuple(measured(name, n) for n in MEASURED_SIZES),
-                    theme.pieces[k % len(theme.pieces)], mark=MARKS[k % len(MARKS)])
-             for k, name in enumerate(MEASURED_RUNS)]
+    """The plot's lines: each algorithm's counts at :data:`MEASURED_SIZES` on each kind of
+    polygon (:data:`MEASURED_SHAPES`; an algorithm's colour and mark on both, filled on the
+    first), then the bounds (dashed), their shapes only: a bound has no constant, so each
+    starts on the first mark of :data:`BOUND_FROM`'s line, a point the plot shows (it started
+    in the plot's corner, an unlabelled point below the "100" tick)."""
+    lines = [Series(f"figure:measured:{name}:{shape}",
+                    tuple(measured(name, n, shape) for n in MEASURED_SIZES),
+                    # the colours and marks they had beside divide and conquer (first)
+                    theme.pieces[(k + 1) % len(theme.pieces)], mark=MARKS[(k + 1) % len(MARKS)],
+                    filled=j == 0)
+             for k, name in enumerate(MEASURED_RUNS) for j, (shape, _) in enumerate(MEASURED_SHAPES)]
     first = MEASURED_SIZES[0]
-    corner = 10.0 ** math.floor(math.log10(min(min(line.counts) for line in lines)))
-    for k, (key, _, shape) in enumerate(BOUNDS, start=len(lines)):
-        counts = tuple(corner * shape(n) / shape(first) for n in MEASURED_SIZES)
+    start = measured(*BOUND_FROM[:1], first, BOUND_FROM[1])
+    for k, (key, _, shape_of) in enumerate(BOUNDS, start=len(MEASURED_RUNS) + 1):
+        counts = tuple(start * shape_of(n) / shape_of(first) for n in MEASURED_SIZES)
         lines.append(Series(f"figure:bound:{key}", counts, theme.pieces[k % len(theme.pieces)],
                             dashed=True))
     return lines
 
 
 #: what the plot's y axis counts, in plain words, and what one of them is (its caption)
-STEPS = "steps (geometric tests)"
+STEPS = f"steps (geometric tests)\nrandom polygons: each a mean of {len(SEEDS)}"
 STEP = "a test: which side of a line a point is on, or which of two points is nearer"
+#: the legend's columns (scene units from the box's left): names, then one per kind of polygon
+LEGEND_COLUMNS = (0.0, 2.4, 4.15)
 
 
 def _measured(theme: Theme, box: Box) -> list[Mobject]:
-    """The plot with its axes named, its legend below it in two columns (what was counted,
-    each line's mark before its name, and the bounds), and what a step is."""
+    """The plot with its axes named, its legend below it as a table (a row per algorithm,
+    its name in its colour; a column per kind of polygon, each with the algorithm's mark on
+    it; then the bounds, not measured), and what a step is."""
     (x, y), width, height = box
-    row, rows = 0.36, max(len(MEASURED_RUNS), len(BOUNDS)) + 2  # x's name, a header, the lines
+    row, rows = 0.36, len(MEASURED_RUNS) + 3.3  # x's name, the header, the lines, the bounds
     # the x axis: its ticks, its name and the legend below it, in the box
     bottom = y - height / 2 + row * rows
     # the y axis's name over it, with what a count is: by the numbers it speaks of
     area = Area(x - width / 2 + 1.0, bottom, width - 1.15, y + height / 2 - 0.45 - bottom)
     series = measured_series(theme)
     drawn, _ = line_plot(MEASURED_SIZES, series, area, theme, log=True)
-    drawn += axis_names(area, "vertices n",
-                        f"{STEPS}\neach a mean of {len(SEEDS)} random polygons", theme)
-    counted, bounds = series[:len(MEASURED_RUNS)], series[len(MEASURED_RUNS):]
-    columns = ((("counted in our runs", theme.ink, None),
-                *[(spoken(name), s.colour, s.mark)
-                  for name, s in zip(MEASURED_RUNS, counted, strict=True)]),
-               (("bounds, not measured", theme.ink, None),
-                *[(said, s.colour, None) for (_, said, _), s in zip(BOUNDS, bounds, strict=True)]))
-    for column, rows_shown in enumerate(columns):
-        for k, (said, colour, mark) in enumerate(rows_shown):
-            left, at_y = x - width / 2 + column * 3.05, bottom - 0.62 - row * (k + 1)
-            if mark is not None:  # the line's mark, then its name
-                drawn.append(tag(point_mark(mark, colour, (left + 0.08, at_y, 0.0), theme),
-                                 None, "figure:key"))
-                left += 0.25
-            # a size smaller than the ticks': two columns in the box
-            text = typeset.text(said, font=theme.font, size=theme.label_size - 2,
-                                colour=colour)
-            text.move_to((left, at_y, 0), aligned_edge=LEFT)
-            drawn.append(tag(text, None, "figure:legend"))
+    drawn += axis_names(area, "vertices n", STEPS, theme)
+    counted, bounds = series[:-len(BOUNDS)], series[-len(BOUNDS):]
+    left = x - width / 2
+
+    def words(said: str, colour: str, at: tuple[float, float]) -> Mobject:
+        # a size smaller than the ticks': the table fits the box
+        text = typeset.text(said, font=theme.font, size=theme.label_size - 2, colour=colour)
+        return tag(text.move_to((*at, 0), aligned_edge=LEFT), None, "figure:legend")
+
+    top = bottom - 0.62 - 1.3 * row  # clear of the x axis's name
+    drawn.append(words("counted on", theme.ink, (left + LEGEND_COLUMNS[0], top)))
+    middles = []  # each column's middle: its marks stand under its name
+    for (shape, said), column in zip(MEASURED_SHAPES, LEGEND_COLUMNS[1:], strict=True):
+        at = left + column
+        if shape == "half-disc":  # its picture first: the dented side seen, not only said
+            icon = _icon(theme).move_to((at, top, 0), aligned_edge=LEFT)
+            drawn.append(icon)
+            at += icon.width + 0.12
+        header = words(said, theme.ink, (at, top))
+        drawn.append(header)
+        middles.append((left + column + header.get_right()[0]) / 2)
+    for k, name in enumerate(MEASURED_RUNS):
+        at_y = top - row * (k + 1)
+        drawn.append(words(spoken(name), counted[k * len(MEASURED_SHAPES)].colour,
+                           (left + LEGEND_COLUMNS[0], at_y)))
+        for j, middle in enumerate(middles):
+            s = counted[k * len(MEASURED_SHAPES) + j]
+            assert s.mark is not None
+            drawn.append(tag(point_mark(s.mark, s.colour, (middle, at_y, 0.0), theme,
+                                        s.filled), None, "figure:key"))
+    at_y, at_x = top - row * (len(MEASURED_RUNS) + 1), left + LEGEND_COLUMNS[0]
+    for (_, said, _), s in zip(BOUNDS, bounds, strict=True):
+        shown = words(said, s.colour, (at_x, at_y))
+        drawn.append(shown)
+        at_x += shown.width + 0.25
+    # (the card's words say the dashed lines are these bounds)
+    drawn.append(words("bounds, not measured", theme.ink, (at_x, at_y)))
     return [*drawn, figure_caption(box, theme, (STEP, theme.ink))]
+
+
+def _icon(theme: Theme) -> Mobject:
+    """A small half disc with its dented side (``half-disc`` of :data:`ICON_N` vertices),
+    :data:`ICON_HEIGHT` high, outlined in ink."""
+    polygon = read_polygon(f"half-disc:{ICON_N}")
+    shape = MPolygon(*[(x, y, 0.0) for x, y in polygon.points], color=theme.ink,
+                     stroke_width=theme.thin_stroke)
+    return tag(shape.scale_to_fit_height(ICON_HEIGHT), None, "figure:icon")
 
 
 # --- the constrained Delaunay circle -------------------------------------------------------------
@@ -381,33 +471,43 @@ def recap_triangulations(polygon: Polygon) -> list[tuple[str, str, tuple[Triangl
     return [(name, bound, triangulate(polygon, name).triangles) for name, bound in RECAPPED]
 
 
+#: over each of the recap's pictures, the room for its count; round P, for its labels' room
+COUNT_ROOM, PICTURE_MARGIN = 0.5, 0.3
+
+
+def panels(count: int, box: Box) -> list[tuple[tuple[float, float], Box]]:
+    """``count`` pictures side by side across ``box``: per picture, where its heading goes
+    (centred over it) and the box P is fitted into."""
+    (x, y), width, height = box
+    each, top = width / count, y + height / 2
+    fitted = height - COUNT_ROOM - 2 * PICTURE_MARGIN
+    return [((x - width / 2 + each * (k + 0.5), top - COUNT_ROOM / 2),
+             ((x - width / 2 + each * (k + 0.5), top - COUNT_ROOM - PICTURE_MARGIN - fitted / 2),
+              each - 2 * PICTURE_MARGIN, fitted))
+            for k in range(count)]
+
+
 def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
-    """A row per algorithm: its triangulation of P, its name and its bound beside it; the
-    rows take the frame's height under the title, the box's and the room of its caption
-    (there is none: the words are beside), so that the lower half is not left empty (review
-    r567: all of it stood in the top 55 %)."""
-    (x, _), width, _ = box
-    top, bottom = THREE_TOP, THREE_BOTTOM
-    row = (top - bottom) / len(RECAPPED)
+    """Side by side across ``box`` (a wide card's: its words, one per algorithm, go under
+    the pictures): each algorithm's triangulation of P, big enough to count its triangles,
+    and their count over it. The name and the bound are its line's, said once (review:
+    each bound stood under a 110-px thumbnail and again in a bullet beside it)."""
     drawn: list[Mobject] = []
-    for k, (name, bound, triangles) in enumerate(recap_triangulations(polygon)):
-        at_y = top - row * (k + 0.5)
-        frame = Frame(polygon.points, (x - width / 2 + 1.4, at_y), 2.8, row - 0.2)
+    for (name, _, triangles), (heading, fitted) in zip(recap_triangulations(polygon),
+                                                       panels(len(RECAPPED), box), strict=True):
+        frame = Frame(polygon.points, *fitted)
         drawn.append(tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"))
-        drawn += [tag(triangle_mobject(polygon, t, frame, theme.pieces[j % len(theme.pieces)],
-                                       theme), "result", f"figure:triangle:{name}")
-                  for j, t in enumerate(triangles)]
+        drawn += triangulation_figure(polygon, triangles, frame, f"figure:triangle:{name}",
+                                      theme)
         count = f"{len(triangles)} triangle{'s' * (len(triangles) > 1)}"
-        for j, (words, colour, size) in enumerate((
-                (spoken(name, start=True), theme.ink, theme.label_size + 2),
-                (f"{bound}, {count}", theme.idle, theme.label_size))):
-            text = typeset.text(words, font=theme.font, size=size, colour=colour)
-            text.move_to((x - width / 2 + 3.1, at_y + 0.22 - 0.44 * j, 0), aligned_edge=LEFT)
-            drawn.append(tag(text, None, "figure:legend"))
+        text = typeset.text(count, font=theme.font, size=theme.label_size + 2,
+                            colour=theme.result)
+        drawn.append(tag(text.move_to((*heading, 0)), "result", "figure:count"))
     return drawn
 
 
-__all__ = ["BOUNDS", "KINDS", "MEASURED_RUNS", "MEASURED_SIZES", "RECAPPED", "CircleFigure",
-           "Circumcircle", "Partition", "circle_figure", "circumcircle", "clear_of_rim",
-           "clearly_inside", "figure_mobjects", "measured_series", "monotone_partition",
+__all__ = ["BOUNDS", "BOUND_FROM", "KINDS", "MEASURED_RUNS", "MEASURED_SHAPES", "MEASURED_SIZES",
+           "RECAPPED", "CircleFigure", "Circumcircle", "Partition", "circle_figure",
+           "circumcircle", "clear_of_rim", "clearly_inside", "figure_mobjects", "level_line",
+           "measured_series", "monotone_partition", "panels",
            "ranked_circles", "recap_triangulations", "shown_circle"]

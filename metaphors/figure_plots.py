@@ -45,6 +45,8 @@ class Series:
     #: the mark at each count (one of :data:`MARKS`), or none: two lines that run together
     #: are told apart by their marks (faster ear clipping and monotone partition, from n = 40)
     mark: str | None = None
+    #: a hollow mark filled in its colour: the same algorithm on another kind of polygon
+    filled: bool = False
 
 
 @dataclass(frozen=True)
@@ -61,8 +63,9 @@ class Area:
 MARKS = ("dot", "square", "triangle")
 
 
-def point_mark(kind: str, colour: str, at: Point3, theme: Theme) -> Mobject:
-    """One of :data:`MARKS` at ``at`` in ``colour`` (the plot's and its legend's)."""
+def point_mark(kind: str, colour: str, at: Point3, theme: Theme, filled: bool = False) -> Mobject:
+    """One of :data:`MARKS` at ``at`` in ``colour`` (the plot's and its legend's); a hollow
+    one ``filled`` in its colour."""
     if kind == "dot":
         shape: Mobject = Dot(radius=0.07, color=colour)
     elif kind == "square":
@@ -73,7 +76,7 @@ def point_mark(kind: str, colour: str, at: Point3, theme: Theme) -> Mobject:
         raise ValueError(f"unknown mark {kind!r}; expected one of {', '.join(MARKS)}")
     # hollow marks are filled with the background's dark: a line does not run through them
     if kind != "dot":
-        shape.set_fill(theme.background, opacity=1.0)
+        shape.set_fill(colour if filled else theme.background, opacity=1.0)
     return shape.move_to(at)
 
 
@@ -132,7 +135,8 @@ def line_plot(sizes: Sequence[int], series: Sequence[Series], area: Area, theme:
             line = DashedVMobject(line, num_dashes=24, color=ManimColor(s.colour))
         lines.append(tag(line, None, s.name))
         if s.mark is not None:
-            lines += [tag(point_mark(s.mark, s.colour, at(n, c), theme), None, "figure:point")
+            lines += [tag(point_mark(s.mark, s.colour, at(n, c), theme, s.filled), None,
+                          "figure:point")
                       for n, c in zip(sizes, s.counts, strict=True)]
     return [*axes, *lines, *words], at
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from manim import (
@@ -40,8 +41,14 @@ from geometry.io import read_polygon
 from geometry.polygon import Polygon
 from geometry.predicates import orient, signed_area2
 from geometry.triangulate import triangulate
-from metaphors import figure_faster, method_figures
-from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
+from metaphors import figure_faster, figure_overview, figure_recap, method_figures
+from metaphors.drawing import (
+    Frame,
+    crossed_edge,
+    polygon_mobject,
+    triangle_mobject,
+    triangulation_figure,
+)
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_metaphors import metaphor_parts
 from metaphors.figure_plots import Area, Series, axis_names, line_plot
@@ -50,17 +57,29 @@ from metaphors.labels import drawn_edges, measured_markers, placed_vertex_marker
 from metaphors.tags import tag
 from metaphors.theme import THEME, Theme
 from rendering import typeset
+from story.registry import spoken
 from story.runs import run_logged
 
 #: where a figure is drawn: the left half of the screen, below the card's title
 FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT = (-3.5, -0.1), 6.2, 4.6
 BOX = (FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
 KINDS = ("triangulation", "diagonal", "ears", "ear", "growth", "frame", "claims", "metaphor",
-         *method_figures.KINDS, *figure_faster.KINDS)
+         *method_figures.KINDS, *figure_faster.KINDS, *figure_overview.KINDS,
+         *figure_recap.KINDS)
+#: the figures drawn across the whole width, a row of pictures, each with its line under it
+#: (:class:`metaphors.lecture.Card`'s ``layout``): the recap's algorithms
+WIDE_KINDS = ("three-triangulations",)
+#: where a wide figure is drawn when no box is handed: under the title, the words below
+WIDE_BOX = ((0.0, 0.55), 14.0, 4.5)
+#: the recap's rules, one picture after another on one polygon: the left half, as large as
+#: the labels leave room for under the title and over the frame's foot (its failing claim
+#: leaves P by 4 % of the frame's height: :data:`BOX` is smaller)
+RECAP_BOX = ((-3.45, -0.4), 6.4, 5.5)
 #: the growth plot: each algorithm's ear tests, counted in its log, on random polygons
 GROWTH_SIZES = (10, 20, 30, 40, 50, 60)
 GROWTH_SEEDS = (1, 2, 3)
-GROWTH_RUNS = (("ear-clipping-naive", "naive"), ("ear-clipping", "ear status kept"),
+#: each by the name the lecture says (faster ear clipping was "ear status kept" here only)
+GROWTH_RUNS = (("ear-clipping-naive", "naive"), ("ear-clipping", spoken("ear-clipping")),
                ("prune-and-search", "prune and search"))
 
 
@@ -81,8 +100,16 @@ class Figure:
             raise ValueError(f"a figure is one of {', '.join(KINDS)}, not {self.kind!r}")
 
 
-def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> list[Mobject]:
-    """The figure's mobjects, back to front, on ``figure.polygon`` or else ``polygon_spec``."""
+def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME,
+                    box: figure_recap.Box | None = None) -> list[Mobject]:
+    """The figure's mobjects, back to front, on ``figure.polygon`` or else ``polygon_spec``;
+    a wide one (:data:`WIDE_KINDS`) in ``box`` (default :data:`WIDE_BOX`)."""
+    if figure.kind in figure_recap.KINDS:  # the recap's rows of rules
+        return figure_recap.figure_mobjects(figure.kind, figure.polygon or polygon_spec,
+                                            figure.heuristics, theme, box or RECAP_BOX)
+    if figure.kind == "three-triangulations":
+        return figure_faster.figure_mobjects(figure.kind, figure.polygon or polygon_spec, theme,
+                                             box or WIDE_BOX)
     if figure.kind == "growth":
         return _growth(theme)
     if figure.kind in method_figures.KINDS:  # gravity, prune and search, keyhole, a rule
@@ -105,27 +132,37 @@ def figure_mobjects(figure: Figure, polygon_spec: str, theme: Theme = THEME) -> 
         # subtitle beside them and gave the pick away before its bullet (chapter 2 at 16 s)
         label = [] if over else [figure_caption(BOX, theme, (said, theme.ink))]
         return [shape, *under, *label, vertices, *over]
-    drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
-             "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
-    parts = drawn(figure, polygon, frame, theme)
-    vertices = _vertices(polygon, frame, theme, parts)
-    # marks on a vertex go over its dot; fills go under the dots and labels
-    marks = [m for m in parts if m.name == "figure:candidate"]
+    if figure.kind in figure_overview.KINDS:  # the overview's: P's labels drawn here
+        parts = figure_overview.overview_figure(figure.kind, figure.polygon or polygon_spec,
+                                                BOX, theme)
+    else:
+        drawn = {"triangulation": _triangulation, "diagonal": _diagonal, "ears": _ears,
+                 "frame": _frame, "claims": _claims, "ear": _ear}[figure.kind]
+        parts = drawn(figure, polygon, frame, theme)
+    # fills go under the dots and labels, also those that come with a later line than the
+    # labels (drawn in the order they came, the overview's triangles tinted G and M); marks
+    # on a vertex go over its dot
+    vertices = _vertices(polygon, frame, theme, parts).set_z_index(1)
+    marks = [m.set_z_index(1) for m in parts if m.name == "figure:candidate"]
     return [shape, *[m for m in parts if m not in marks], vertices, *marks]
 
 
 #: the parts whose lines cut P's fill: a label across one stands on two colours, or on the
-#: line (chapter 1's G stood on the triangulation's side B–E, M beside the diagonal BM)
+#: line (chapter 1's G stood on the triangulation's side B–E, M beside the diagonal BM); not
+#: a diagonal through a vertex (chapter 1's GK through H), which leaves that vertex's label
+#: no place on its side of P
 _CUTTING = ("figure:triangle", "figure:inner-diagonal", "figure:diagonal", "figure:T",
-            "figure:pick")
+            "figure:pick", "figure:claim")
 
 
 def _vertices(polygon: Polygon, frame: Frame, theme: Theme, parts: list[Mobject]) -> Mobject:
     """The vertex markers, each label clear of the lines the figure cuts P with
-    (:data:`_CUTTING`) as of its edges: one that has no room outside P (M in its notch)
-    stands inside one piece of the fill, off its sides."""
+    (:data:`_CUTTING`) as of its edges: one that has no room outside P round its dot (M in
+    its notch) stands beside P with a leader, else inside one piece of the fill, off its
+    sides."""
     lines = [edge for m in parts if m.name in _CUTTING for edge in drawn_edges(m)]
-    return tag(VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, lines=lines))),
+    return tag(VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, lines=lines,
+                                                      leaders=True))),
                "idle", "figure:vertices")
 
 
@@ -138,9 +175,8 @@ def _triangulation(figure: Figure, polygon: Polygon, frame: Frame,
     triangles from B: G, which has no room outside P, found none inside one triangle either,
     and its label stood by H."""
     triangles = triangulate(polygon, "divide-and-conquer", figure.heuristic).triangles
-    pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
-                                   theme), "result", "figure:triangle")
-              for k, t in enumerate(triangles)]
+    # as the run's end draws them: the result's green, neighbours in other shades
+    pieces = triangulation_figure(polygon, triangles, frame, "figure:triangle", theme)
     n = polygon.n
     cuts = sorted({tuple(sorted((t[k], t[k - 1]))) for t in triangles for k in range(3)}
                   - {tuple(sorted((v, (v + 1) % n))) for v in range(n)})
@@ -197,24 +233,36 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
     candidates (P's vertices inside T) marked, in the colours the runs give them."""
     t = triangle_at(polygon, leftmost_vertex(polygon))
     corners = (t.a.index, t.b.index, t.c.index)
-    shaded = tag(MPolygon(*frame.many([polygon.points[k] for k in corners]), color=theme.called,
-                          stroke_width=theme.thin_stroke, fill_color=theme.called,
-                          fill_opacity=0.2), "called", "figure:T")
     inside = [v.index for v in candidates_in_triangle(polygon, t)]
+    shaded, asked = _frame_lines(polygon, frame, theme)
     dots = [tag(Dot(frame.to_scene(polygon.points[k]), radius=0.11, color=theme.candidate),
                 "candidate", "figure:candidate") for k in inside]
     names = ", ".join(polygon.labels[k] for k in inside) or "none"
     words = f"T = {''.join(polygon.labels[k] for k in corners)}; candidates in T: {names}"
     # the words the card says, on the picture, each with the line that says it: B convex,
-    # and a reflex vertex (:func:`ringed_reflex`)
-    kinds = [*_vertex_word(polygon, frame, theme, t.b.index, "convex"),
+    # and a reflex vertex (:func:`ringed_reflex`); clear of the labels as the figure draws
+    # them (:func:`_vertices`, clear of T's sides and the pick's line)
+    labels = _label_boxes(_vertices(polygon, frame, theme, [shaded, *asked]))
+    kinds = [*_vertex_word(polygon, frame, theme, t.b.index, "convex", labels),
              *next((w for v in _reflex(polygon)
-                    if (w := _vertex_word(polygon, frame, theme, v, "reflex"))), [])]
+                    if (w := _vertex_word(polygon, frame, theme, v, "reflex", labels))), [])]
     # T with the line that names it, the candidates with the one that speaks of them (on a
     # card that says neither, with its title)
     caption = figure_caption(BOX, theme, (words, theme.ink))
-    # the first candidate's claim to be, dashed amber (not yet judged), with the line that
-    # asks of it ("is BG inner?": BG was said and never drawn)
+    return [comes_with(shaded, "T"), *(comes_with(d, "candidate") for d in dots), *kinds,
+            *asked, comes_with(caption, "candidate")]
+
+
+def _frame_lines(polygon: Polygon, frame: Frame, theme: Theme) -> tuple[Mobject, list[Mobject]]:
+    """The frame figure's lines over P: T = ABC shaded, and the first candidate's claim to
+    be, dashed amber (not yet judged), with the line that asks of it ("is BG inner?": BG
+    was said and never drawn), if T holds a candidate."""
+    t = triangle_at(polygon, leftmost_vertex(polygon))
+    corners = (t.a.index, t.b.index, t.c.index)
+    shaded = tag(MPolygon(*frame.many([polygon.points[k] for k in corners]), color=theme.called,
+                          stroke_width=theme.thin_stroke, fill_color=theme.called,
+                          fill_opacity=0.2), "called", "figure:T")
+    inside = [v.index for v in candidates_in_triangle(polygon, t)]
     asked = [said_only(tag(DashedLine(frame.to_scene(polygon.points[t.b.index]),
                                       frame.to_scene(polygon.points[inside[0]]),
                                       color=theme.argument, stroke_width=theme.stroke,
@@ -222,18 +270,24 @@ def _frame(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> list
                            "argument", "figure:pick"),
                        f"{polygon.labels[t.b.index]}{polygon.labels[inside[0]]}")
              ] if inside else []
-    return [comes_with(shaded, "T"), *(comes_with(d, "candidate") for d in dots), *kinds,
-            *asked, comes_with(caption, "candidate")]
+    return shaded, asked
+
+
+def _label_boxes(vertices: Mobject) -> list[Box]:
+    """The boxes of the labels of a figure's vertex markers (:func:`_vertices`)."""
+    return [_box(marker[1]) for marker in vertices.submobjects]
 
 
 def ringed_reflex(polygon_spec: str, theme: Theme = THEME) -> str | None:
     """The label of the reflex vertex a ``frame`` figure of ``polygon_spec`` rings (the
     first with room for its word), None if it rings none: the card's line that says what
-    the ring marks names it."""
+    the ring marks names it. Its labels as :func:`_frame` draws them (one placement)."""
     polygon = read_polygon(polygon_spec)
     frame = Frame(polygon.points, FIGURE_CENTER, FIGURE_WIDTH, FIGURE_HEIGHT)
+    shaded, asked = _frame_lines(polygon, frame, theme)
+    labels = _label_boxes(_vertices(polygon, frame, theme, [shaded, *asked]))
     return next((polygon.labels[v] for v in _reflex(polygon)
-                 if _vertex_word(polygon, frame, theme, v, "reflex")), None)
+                 if _vertex_word(polygon, frame, theme, v, "reflex", labels)), None)
 
 
 def _reflex(polygon: Polygon) -> list[int]:
@@ -243,10 +297,12 @@ def _reflex(polygon: Polygon) -> list[int]:
 
 
 def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
-                 word: str) -> list[Mobject]:
+                 word: str, labels: Sequence[Box]) -> list[Mobject]:
     """A ring round vertex ``v`` and ``word`` beside it: outside P, clear of its edges and
-    of the vertices' labels, inside the figure's half of the screen (tagged
-    ``figure:<word>``); none if no side of ``v`` has room for the word."""
+    of the vertices' ``labels`` (their boxes as the figure draws them: checked against
+    labels placed without T's sides, the word could stand on a label drawn clear of them),
+    inside the figure's half of the screen (tagged ``figure:<word>``); none if no side of
+    ``v`` has room for the word."""
     at = frame.to_scene(polygon.points[v])
     # in ink: amber marks the candidates, green and red what holds and what fails
     # capitalised, as the vertices' labels: a word of short letters ("convex") then still
@@ -254,7 +310,6 @@ def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
     shown = typeset.text(word.capitalize(), font=theme.font, size=theme.label_size,
                          colour=theme.ink)
     outline = [frame.to_scene(p)[:2] for p in polygon.points]
-    labels = [_box(marker[1]) for marker in placed_vertex_markers(polygon, frame, theme)]
     for side in (DOWN, UP, LEFT, RIGHT, DL, DR, UL, UR):
         for gap in (0.3, 0.55, 0.8):  # beyond the ring, then further out
             shown.move_to(at + side * (gap + (shown.width if side[0] else shown.height) / 2))
@@ -263,8 +318,9 @@ def _vertex_word(polygon: Polygon, frame: Frame, theme: Theme, v: int,
                     _overlap(box, other) for other in labels):
                 ring = Circle(radius=0.17, color=theme.ink,
                               stroke_width=theme.thin_stroke).move_to(at)
-                # with the card's line that says the word
-                return [comes_with(tag(VGroup(ring, shown), None, f"figure:{word}"), word)]
+                # with the card's line that says the word, and on no card that does not
+                # (the exercises' card showed "Convex" and "Reflex" and never said them)
+                return [said_only(tag(VGroup(ring, shown), None, f"figure:{word}"), word)]
     return []
 
 
@@ -469,5 +525,12 @@ def _growth(theme: Theme) -> list[Mobject]:
     return [*drawn, figure_caption(BOX, theme, (GROWTH_WORDS, theme.ink))]
 
 
+def overview_examples(polygon_spec: str) -> tuple[str, ...]:
+    """The names the overview's definitions card speaks of, drawn in the figure's box
+    (:func:`metaphors.figure_overview.example_names`)."""
+    return tuple(figure_overview.example_names(polygon_spec, BOX))
+
+
 __all__ = ["FIGURE_CENTER", "FIGURE_HEIGHT", "FIGURE_WIDTH", "GROWTH_RUNS", "GROWTH_SIZES",
-           "KINDS", "Figure", "ear_tests", "figure_mobjects", "ringed_reflex"]
+           "KINDS", "RECAP_BOX", "WIDE_BOX", "WIDE_KINDS", "Figure", "ear_tests", "figure_mobjects",
+           "overview_examples", "ringed_reflex"]

@@ -19,7 +19,6 @@ from manim import (
     FadeOut,
     Indicate,
     Line,
-    LineJointType,
     Mobject,
     Polygram,
     Rectangle,
@@ -34,10 +33,11 @@ from geometry.batch import in_closed_triangle
 from geometry.predicates import orient
 from metaphors.board import Board, Playable
 from metaphors.drawing import count_words, ending_beat, triangulation_pieces
-from metaphors.labels import MARGIN, drawn_edges, off_the_fill
+from metaphors.labels import EDGE_MARGIN, MARGIN, drawn_edges, haloed, move_label, off_the_fill
 from metaphors.layout import Obstacles, area_of, rects_at
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
+from metaphors.theme import Theme
 from rendering import typeset
 from story.beats import Beat, Hole, Point, beat_kind, point, points_of
 from story.storyboard import Reading, Walk, call_line, call_roles, show
@@ -71,26 +71,39 @@ def plate_slot(k: int, total: int) -> tuple[float, float, float]:
     return x, slot * 0.85, min(0.6, 0.85 * room)
 
 
+def fruit_style(theme: Theme) -> dict[str, Any]:
+    """How the fruit is drawn: its flesh and its rind (a card's figure of a fruit too)."""
+    return {"color": theme.rind, "stroke_width": theme.stroke * 2.2,
+            "fill_color": theme.fruit, "fill_opacity": 0.75}
+
+
+def good_style(theme: Theme) -> dict[str, Any]:
+    """How prune and search's good sub-polygon is tinted over the fruit: the *called* blue
+    of what the search runs on, here and on the card that tells of it (the card drew it in
+    two of the pieces' tints over P's navy, the run in this tint over the fruit: three
+    colours for one thing)."""
+    return {"color": theme.called, "stroke_width": theme.stroke, "fill_color": theme.called,
+            "fill_opacity": theme.piece_opacity}
+
+
+#: how opaque a tested vertex's triangle is, and how wide its edge (of the theme's stroke)
+TEST_OPACITY, TEST_STROKE = 0.3, 1.5
+
+
 def _fruit(board: Board, points: Sequence[Sequence[float]],
            holes: Sequence[Hole] = ()) -> MPolygon | Polygram:
-    theme = board.theme
-    style: dict[str, Any] = {"color": theme.rind, "stroke_width": theme.stroke * 2.2,
-                             "fill_color": theme.fruit, "fill_opacity": 0.75}
+    style = fruit_style(board.theme)
     if holes:  # the whole fruit, its holes cut out (rings of one mobject; holes unfilled)
         rings = [[board.at(p) for p in ring] for ring in (points, *(h.points for h in holes))]
         return tag(Polygram(*[[*ring, ring[0]] for ring in rings], **style), "idle", "fruit")
     return tag(MPolygon(*[board.at(p) for p in points], **style), "idle", "fruit")
 
 
-#: the width of the dark halo round every vertex label once the polygon is a fruit: a
-#: label over the fruit's orange reads (grey, red or green on it all but vanish, and even
-#: white is under 3 : 1), and the halo follows its label wherever it moves, in any colour
-LABEL_HALO = 6.0
-
-
 def _setup(board: Board, beat: Beat) -> None:
     """The first time: the polygon turns into a fruit, every label gets its dark halo
-    (:data:`LABEL_HALO`), a plate and a counter appear."""
+    (:func:`metaphors.labels.haloed`: a label over the fruit's orange reads — grey, red or
+    green on it all but vanish, and even white is under 3 : 1), a plate and a counter
+    appear."""
     if "fruit" in board.objects:
         return
     theme = board.theme
@@ -99,8 +112,8 @@ def _setup(board: Board, beat: Beat) -> None:
                         fill_color=theme.plate, fill_opacity=0.12), None, "plate")
     plate.move_to((x, PLATE_Y, 0))
     fruit = _fruit(board, board.polygon.points, board.holes)
-    # every label on a dark halo (:data:`LABEL_HALO`), coming with the fruit
-    halos = [Transform(marker, _haloed(marker, theme.background))
+    # every label on a dark halo, coming with the fruit
+    halos = [Transform(marker, haloed(marker, theme.background))
              for marker in board.markers.values()
              if isinstance(marker, VGroup) and len(marker) > 1]
     slices = board.polygon.n + sum(len(h.points) + 2 for h in board.holes) - 2
@@ -111,18 +124,6 @@ def _setup(board: Board, beat: Beat) -> None:
                      FadeIn(board.objects["counter"]), *halos, run_time=0.8 * beat.pace)
     board.scene.remove(fruit)
     board.objects["fruit"] = board.outline
-
-
-def _haloed(marker: VGroup, colour: str) -> VGroup:
-    """A copy of a vertex's marker (its dot and label) whose label has a halo of ``colour``
-    :data:`LABEL_HALO` wide, drawn behind its glyphs (a background stroke: recolouring the
-    label, and moving it, keep it)."""
-    # round joins (a mitred halo spikes at M's and K's points): set on the label itself, as
-    # a transform to the copy does not carry them
-    marker[1].joint_type = LineJointType.ROUND
-    haloed = marker.copy()
-    haloed[1].set_stroke(colour, width=LABEL_HALO, background=True)
-    return haloed
 
 
 def _counter(board: Board, k: int, total: int) -> Mobject:
@@ -153,26 +154,40 @@ class Replace(Add):
 
 def ear_test(board: Board, beat: EarTest) -> None:
     """The vertex tested pulses with its triangle: an ear's, empty, in the green of a correct
-    result, up until its slice takes it (:func:`clip`); a vertex that is no ear shows why,
-    its triangle in red with the vertex inside it pulsing too (or, not convex, the triangle
-    alone), up for its own step only (:attr:`Board.passing`: left up, it lay under the
-    gravity step's ✓ for the diagonal found next)."""
+    result, up until its slice takes it (:func:`clip`); a vertex that is no ear shows why:
+    its triangle in red with the vertex inside it pulsing too, or, not convex, its angle
+    (:func:`angle_wedge`: its triangle had no area at a straight vertex, prune and search's
+    H at 96 s, or lay outside the fruit at a reflex one), up for its own step only
+    (:attr:`Board.passing`: left up, it lay under the gravity step's ✓ for the diagonal
+    found next)."""
     _setup(board, beat)
     theme = board.theme
     colour = theme.result if beat.ear else theme.rejected
-    gone = board.drop(*_TEST)
+    gone: list[Playable] = [*board.drop(*_TEST)]
+    corners = [board.at(p) for p in beat.triangle]
+    angle = not beat.ear and beat.inside is None and len(corners) == 3
+    wedge = angle_wedge(corners, theme, _room(board, corners[1])) if angle else None
     if beat.triangle:
-        # the labels the triangle would lie over move clear of it first (a pulse and a
-        # move of one marker in one play would cancel): a label on its red over the fruit's
-        # orange was hard to read, and its edge ran through the keyhole's c₂; apart from the
-        # others as the knife moves them (MAB's green moved M 0.07 under K)
-        moves = board.clear_labels(covering([board.at(p) for p in beat.triangle]),
-                                   apart=LABEL_APART)
+        # the labels the triangle (or the angle) would lie over move clear of it first (a
+        # pulse and a move of one marker in one play would cancel): a label on its red over
+        # the fruit's orange was hard to read, and its edge ran through the keyhole's c₂;
+        # apart from the others as the knife moves them (MAB's green moved M 0.07 under K);
+        # moved aside off a red shape (it goes with the next words), they go back with it
+        lines = covering(corners) if wedge is None else covering_wedge(wedge)
+        moves = board.clear_labels(lines, apart=LABEL_APART, aside=not beat.ear, returning=True)
+        if wedge is not None:  # the angle's own label stays by it, on a dark card: moved
+            # off, G's went over its slot, nearer H's dot than its own
+            own = board.markers[unprimed(beat.vertex)]
+            moves = [m for m in moves if getattr(m, "mobject", None) is not own]
         if moves:
             board.scene.play(*gone, *moves, run_time=max(0.1, 0.4 * beat.pace))
             gone = []
+    elif gone:  # the triangle before goes, and the labels moved aside off it come back
+        gone += board.labels_aside_back(set())
     anims: list[Playable] = [*gone, Indicate(board.markers[unprimed(beat.vertex)], color=colour)]
-    if beat.triangle:
+    if wedge is not None:
+        anims += _test_shape(board, wedge, covering_wedge(wedge), WEDGE_OPACITY)
+    elif beat.triangle:
         anims += _test_triangle(board, beat.triangle, "result" if beat.ear else "rejected")
     if beat.inside:
         anims.append(Indicate(board.markers[unprimed(beat.inside)], color=theme.rejected,
@@ -189,21 +204,94 @@ def _test_triangle(board: Board, triangle: Sequence[Point], role: str) -> list[P
     theme = board.theme
     colour = theme.role_colour(role)
     outline = tag(MPolygon(*[board.at(p) for p in triangle], color=colour,
-                           stroke_width=theme.stroke * 1.5, stroke_opacity=0,
-                           fill_color=colour, fill_opacity=0), role, "ear-triangle")
-    board.keep("ear-triangle", outline)
-    # under the vertices and their labels: the vertex inside it is what the caption
-    # names ("G lies in its triangle"), and a fade-in would put the triangle over it
-    board.scene.add(outline)
+                           stroke_width=theme.stroke * TEST_STROKE, fill_color=colour),
+                  role, "ear-triangle")
+    return _test_shape(board, outline, covering(outline.get_vertices()), TEST_OPACITY)
+
+
+def _test_shape(board: Board, shape: MPolygon, lines: VGroup, opacity: float) -> list[Playable]:
+    """The animations bringing in what a test shows (its triangle, or its angle), faded in
+    to ``opacity`` under the vertices and their labels (the vertex inside a triangle is what
+    the caption names, "G lies in its triangle", and a fade-in would put the triangle over
+    it), and a dark card under a label left on it (``lines``: :func:`covering`)."""
+    shape.set_fill(opacity=0).set_stroke(opacity=0)
+    board.keep("ear-triangle", shape)  # what the test shows: it goes with the test
+    board.scene.add(shape)
     anims: list[Playable] = []
-    backing = _backing(board, covering(outline.get_vertices()))
-    if backing is not None:  # a label left on the triangle (its vertex inside): a dark card
+    backing = _backing(board, lines)
+    if backing is not None:  # a label left on it (its vertex inside): a dark card
         board.keep("ear-backing", backing)
         board.scene.add(backing)
         anims.append(backing.animate.set_fill(opacity=BACKING_OPACITY))
     board.scene.bring_to_front(*board.markers.values())
-    anims.append(outline.animate.set_fill(opacity=0.3).set_stroke(opacity=1.0))
+    anims.append(shape.animate.set_fill(opacity=opacity).set_stroke(opacity=1.0))
     return anims
+
+
+#: a not-convex vertex's angle mark (:func:`angle_wedge`): its largest radius (scene units,
+#: 5 % of the frame's height), the part of its shorter edge it may reach along, of the room
+#: to the nearest edge not its own, and the least it is drawn (under 2.7 % of the frame's
+#: height, the ring round the dot is too thin to see at a glance)
+WEDGE_RADIUS, WEDGE_REACH, WEDGE_ROOM, WEDGE_LEAST = 0.4, 0.7, 0.8, 0.22
+#: the gap round the vertex's dot (its red dot on the red wedge vanished)
+WEDGE_HOLE = 0.12
+#: its fill's opacity: the rejected red at 0.3 over the fruit's orange reads as more orange
+WEDGE_OPACITY = 0.6
+
+
+def angle_wedge(corners: Sequence[np.ndarray], theme: Theme,
+                room: float = math.inf) -> MPolygon:
+    """The inside angle of the middle corner of ``corners`` (V−1, V, V+1 on screen, the ring
+    counter-clockwise): a red sector round V (clear of its dot), from its edge to V+1 round
+    through the inside to its edge to V−1, the reason a vertex that is not convex is no ear
+    (180° at a straight vertex, more at a reflex one), seen where its triangle has no area.
+    ``room``: how near V the nearest edge not its own comes (the sector keeps inside the
+    fruit). Its outer arc first, then its inner arc back.
+
+    >>> from metaphors.theme import THEME
+    >>> w = angle_wedge([np.array(p, float) for p in ((-1, 0, 0), (0, 0, 0), (1, 0, 0))], THEME)
+    >>> round(float(w.get_top()[1]), 2), round(float(w.get_bottom()[1]), 2)
+    (0.4, 0.0)
+    """
+    a, v, c = (np.asarray(p, dtype=float)[:2] for p in corners)
+    start = math.atan2(*(c - v)[::-1])
+    sweep = (math.atan2(*(a - v)[::-1]) - start) % math.tau or math.tau
+    shorter = min(float(np.linalg.norm(a - v)), float(np.linalg.norm(c - v)))
+    radius = max(WEDGE_LEAST, min(WEDGE_RADIUS, WEDGE_REACH * shorter, WEDGE_ROOM * room))
+    steps = max(8, math.ceil(math.degrees(sweep) / 10))
+    turns = [start + sweep * k / steps for k in range(steps + 1)]
+    arc = [(v[0] + r * math.cos(t), v[1] + r * math.sin(t), 0.0)
+           for r, ts in ((radius, turns), (WEDGE_HOLE, turns[::-1])) for t in ts]
+    return tag(MPolygon(*arc, color=theme.rejected, stroke_width=theme.stroke,
+                        fill_color=theme.rejected, fill_opacity=WEDGE_OPACITY),
+               "rejected", "ear-angle")
+
+
+def _room(board: Board, at: np.ndarray) -> float:
+    """How near ``at`` (a vertex of the fruit, on screen) the fruit's edges not ending there
+    come."""
+    p = np.asarray(at, dtype=float)[:2]
+    near = math.inf
+    for ring in board.outline_rings():
+        for q, r in zip(ring, [*ring[1:], ring[0]], strict=True):
+            q, r = np.asarray(q, dtype=float)[:2], np.asarray(r, dtype=float)[:2]
+            if min(np.linalg.norm(q - p), np.linalg.norm(r - p)) < 1e-6:
+                continue
+            t = float(np.clip(np.dot(p - q, r - q) / max(float(np.dot(r - q, r - q)), 1e-12),
+                              0, 1))
+            near = min(near, float(np.linalg.norm(q + t * (r - q) - p)))
+    return near
+
+
+def covering_wedge(wedge: MPolygon) -> VGroup:
+    """An angle's wedge (:func:`angle_wedge`) as lines a label must keep clear of: its sides,
+    and the radii across it from its inner arc to its outer one (a label inside it meets
+    one)."""
+    ring = [np.asarray(p, dtype=float) for p in wedge.get_vertices()]
+    half = len(ring) // 2
+    lines = VGroup(*[Line(p, q) for p, q in zip(ring, [*ring[1:], ring[0]], strict=True)])
+    lines.add(*[Line(ring[k], ring[len(ring) - 1 - k]) for k in range(1, half - 1)])
+    return lines
 
 
 #: the gap (scene units) between the lines that stand for a test triangle's inside
@@ -376,7 +464,7 @@ def _labels_off_fruit(board: Board, rest: Sequence[Point]) -> list[Playable]:
     for name, centre in off_the_fill([board.at(p) for p in rest], labels, lines,
                                      board.theme.dot_radius).items():
         moved = board.markers[name].copy()
-        moved[1].move_to((centre[0], centre[1], 0.0))
+        move_label(moved, centre)
         moves.append(Transform(board.markers[name], moved))
     return moves
 
@@ -430,7 +518,7 @@ def _whole(board: Board, beat: Slice) -> None:
                            holes),
                *board.drop("good", *_FOUND), FadeOut(board.outline),
                *[FadeIn(p) for p in pieces], shown, *[FadeIn(m) for m in back],
-               *_placed(board.clear_labels(*pieces), back),
+               *_placed(board.clear_labels(*pieces, near=EDGE_MARGIN), back),
                run_time=1.2, at_rest=True)
     board.scene.wait(1.0)
 
@@ -442,10 +530,8 @@ _FOUND = ("claim", "verdict", "crossed", "crossing")
 
 
 def _good_region(board: Board, points: Sequence[Point]) -> MPolygon:
-    theme = board.theme
-    return tag(MPolygon(*[board.at(p) for p in points], color=theme.called,
-                        stroke_width=theme.stroke, fill_color=theme.called,
-                        fill_opacity=theme.piece_opacity), "called", "good")
+    return tag(MPolygon(*[board.at(p) for p in points], **good_style(board.theme)), "called",
+               "good")
 
 
 def _good_shrinks(board: Board, points: Sequence[Point]) -> list[Playable]:
@@ -538,8 +624,8 @@ def read_ear_test(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         caption = f"Is {v} an ear? yes: its triangle holds no other vertex"
     elif why is None:  # not found on the fruit as it stands (never seen): say it plainly
         caption = f"Is {v} an ear? no: a cut between its neighbours is not a clean slice"
-    elif why[1] is None:
-        caption = f"Is {v} an ear? no: {v} is not convex"
+    elif why[1] is None:  # its angle, drawn (:func:`angle_wedge`), says why
+        caption = f"Is {v} an ear? no: {v} is not convex, its angle is {_angle_words(why[0])}"
     else:
         caption = f"Is {v} an ear? no: {why[1]} lies in its triangle"
     roles = {unprimed(v): "result" if ear else "rejected"}
@@ -579,6 +665,12 @@ def _triangle(walk: Walk, v: str) -> _Triangle | None:
     corners = [ring[at - 1], ring[at], ring[(at + 1) % len(ring)]]
     others = {labels[k]: points[k] for k in ring if k not in corners}
     return [points[k] for k in corners], others
+
+
+def _angle_words(corners: Sequence[Any]) -> str:
+    """How a not-convex vertex's inside angle is said: "180°" at a straight vertex (its
+    neighbours and it on one line, exactly), else "over 180°"."""
+    return "180°" if orient(*corners) == 0 else "over 180°"
 
 
 def _why_not(triangle: _Triangle) -> tuple[list, str | None] | None:

@@ -101,25 +101,31 @@ def gravity_turn(board: Board, beat: GravityTurn) -> None:
 
 def drop(board: Board, beat: Drop) -> None:
     """A ball hangs from V on its band, falls straight down and hits the boundary. A fall
-    too short to be seen (:data:`FALL_LEAST`; 0.3 units on the counterexample) is shown in
-    a close-up: the picture zooms onto it first, and back once the ball has hit."""
+    too short to be seen (:data:`FALL_LEAST`; the counterexample's, with E 2.7 % of the
+    frame's height above B–C, fell 0.3 units) is shown in a close-up: the picture zooms onto it first, and back once the ball has hit."""
     v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
     close = CloseUp.onto(board, v, hit)
+    ball = _ball(board, v)
+    hangs: list[Playable] = [FadeIn(ball, scale=0.5)]
     if close is not None:
         # the words and roles change first: a marker recoloured as it fades would be two
-        # animations of one mobject in one play; the words say what the zoom is for
+        # animations of one mobject in one play; the words say what the zoom is for, and the
+        # ball they speak of hangs at V as they come, carried by the zoom (it came only under
+        # the next caption, 2.8 s after them: chapter 3 at 57 s)
         zooming = replace(beat, caption=CLOSE_WORDS)
-        board.play(zooming, run_time=0.4)
-        again(board, zooming, *close.zoom_in(), run_time=1.2)
+        board.play(zooming, *hangs, run_time=0.4)
+        hangs = []
+        again(board, zooming, *close.zoom_in(), animate(ball).shift(close.zoomed(v) - v),
+              run_time=1.2)
         close.zoomed_in()
         v, hit = board.vertex(beat.drop.vertex), board.at(beat.drop.hit)
-    ball, band = _ball(board, v), _band(board, [v, v])
+    band = _band(board, [v, v])
     # the labels the fall would hide move aside first: a label under the ball's path or the
     # hit ring hid the very moment; they go back when the ball does (metaphors.picture.upright)
     moves = board.clear_labels(*fall_shapes(v, hit), for_now=True)
     board.keep("band", band)
     board.keep("ball", ball)
-    board.play(beat, FadeIn(ball, scale=0.5), *moves, run_time=0.6)
+    board.play(beat, *hangs, *moves, run_time=0.6)
     board.scene.add(band)
     board.scene.bring_to_front(ball)
     again(board, beat, animate(ball, rate_func=rush_into).move_to(hit),
@@ -162,6 +168,11 @@ class CloseUp:
         self.box = shapely.box(*lo, *hi)
         theme = board.theme
         self.rings = [[p[:2] for p in ring] for ring in board.outline_rings()]
+        # drawn as the outline is: ear clipping's fruit stays the fruit (it turned P's navy
+        # and white edges in chapter 4's close-up, 73-77 s, and orange again after)
+        outline = board.outline
+        self.style = (outline.get_fill_color().to_hex(), outline.get_fill_opacity(),
+                      outline.get_stroke_color().to_hex(), outline.get_stroke_width())
         self.fragment = self.drawn(1.0)
         # the window's edge, while zoomed: P's fill cut square at the box reads as a close-up
         # seen through a frame, not as a polygon with straight new sides
@@ -182,23 +193,23 @@ class CloseUp:
     def drawn(self, scale: float) -> VGroup:
         """P zoomed ``scale`` times about the pivot, cut at the board's box: its fill, then its
         edges (at 1: the outline as drawn)."""
-        theme, centre = self.board.theme, self.pivot[:2]
+        centre = self.pivot[:2]
+        fill, opacity, edge, width = self.style
         rings = [[centre + scale * (np.asarray(p) - centre) for p in ring] for ring in self.rings]
         inside = shapely.Polygon(rings[0], rings[1:]).intersection(self.box)
         parts: list[VMobject] = []
         for piece in shapely.get_parts(inside):
             if isinstance(piece, shapely.Polygon) and piece.area > 0:
                 parts.append(MPolygon(*[(x, y, 0.0) for x, y in piece.exterior.coords[:-1]],
-                                      stroke_width=0, fill_color=theme.polygon_fill,
-                                      fill_opacity=theme.fill_opacity))
+                                      stroke_width=0, fill_color=fill, fill_opacity=opacity))
         for ring in rings:
             for a, b in zip(ring, [*ring[1:], ring[0]], strict=True):
                 cut = shapely.LineString([a, b]).intersection(self.box)
                 for seg in shapely.get_parts(cut):
                     if isinstance(seg, shapely.LineString) and seg.length > 0:
                         (x0, y0), (x1, y1) = seg.coords[0], seg.coords[-1]
-                        parts.append(Line((x0, y0, 0.0), (x1, y1, 0.0), color=theme.ink,
-                                          stroke_width=theme.stroke))
+                        parts.append(Line((x0, y0, 0.0), (x1, y1, 0.0), color=edge,
+                                          stroke_width=width))
         return tag(VGroup(*parts), "idle", "close-up")
 
     def _zooming(self, start: float, end: float) -> UpdateFromAlphaFunc:
@@ -319,12 +330,18 @@ def slide(board: Board, beat: Slide) -> None:
             # and X's label moves off it (the counterexample's C touched it), back with it
             moves = board.clear_labels(*ball_shapes(to), for_now=True)
         anims = (moving, _stretching(board, band, pieces, hit, x, (start, end)), *moves)
-        said = beat if k == 0 else replace(beat, caption=f"The rubber band snags "
-                                                         f"{_label_at(board, corners[1])}")
+        said = beat if k == 0 else _snagging(beat, _label_at(board, corners[1]))
         board.play(said, *anims, run_time=max(SLIDE_SECONDS * (end - start), 0.1))
     # the ball rests at X under X's dot and label: on top it hid the vertex it names
     if beat.result in board.markers:
         board.scene.bring_to_front(board.markers[beat.result])
+
+
+def _snagging(beat: Slide, y: str) -> Slide:
+    """The slide's beat from the moment its band wraps ``y``: the words say it snags Y, and
+    Y turns amber, the claim to be, then (it turned amber a second later, with the band's
+    last shape: chapter 3 at 31 s)."""
+    return replace(beat, caption=f"The rubber band snags {y}", roles={**beat.roles, y: "argument"})
 
 
 def _stretching(board: Board, band: Mobject, pieces: Sequence, hit: Point, x: Point,
@@ -376,7 +393,8 @@ def snag(board: Board, beat: Snag) -> None:
         if band is None:
             board.play(beat, run_time=0.8)
         else:
-            board.play(beat, Indicate(band, color=theme.result, scale_factor=1.0), run_time=0.8)
+            board.play(beat, Indicate(band, color=theme.argument, scale_factor=1.0),
+                       run_time=0.8)
         return
     corners = [board.at(p) for p in beat.band.corners]
     hit = board.objects.get("hit")
@@ -391,12 +409,12 @@ def snag(board: Board, beat: Snag) -> None:
     if band is None:
         board.keep("band", bent)
         again(board, beat, FadeIn(bent), run_time=0.8)
-    elif len(corners) == 3:
+    elif len(corners) == 3:  # the claim to be (amber): green is the verdict's
         y = corners[1]
-        again(board, beat, Transform(band, bent), Flash(y, color=theme.result, flash_radius=0.4),
-               run_time=1.2)
+        again(board, beat, Transform(band, bent),
+              Flash(y, color=theme.argument, flash_radius=0.4), run_time=1.2)
     else:
-        again(board, beat, Transform(band, bent), Indicate(band, color=theme.result,
+        again(board, beat, Transform(band, bent), Indicate(band, color=theme.argument,
                                                             scale_factor=1.0), run_time=1.0)
     if swept is not None:
         again(board, beat, FadeOut(swept), run_time=0.4)
@@ -445,7 +463,11 @@ class Snag(Beat):
 
 def read_turn(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     g = walk.result_object(ret)
-    yield walk.call_beat(GravityTurn, "Turn the polygon so that gravity points down", call, ret,
+    # the words name V, the vertex the turn is about: its colour, blue, is said with them
+    # (chapter 4's G, red as no ear, turned blue under "…so that gravity points down")
+    v = walk.ref(call, "v")
+    yield walk.call_beat(GravityTurn, f"Turn the polygon so that gravity points down into P "
+                         f"at {v}", call, ret,
                          down=point(g["down"]), tilt=g["tilt"], turn_picture=g["turn_picture"],
                          polygon=walk.ref(call, "polygon"))
 
@@ -461,28 +483,41 @@ def _drop(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
 
 
 def _slide(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
-    """Where the ball slides to: nowhere when it landed on a vertex."""
+    """Where the ball slides to: nowhere when it landed on a vertex. X keeps its ink: the
+    ball resting on it marks it (lit green, what the call gives, it turned amber a second
+    later as the snag's input, chapter 3 at 30 s, and white at the claim — three colours,
+    none said); V stays blue, the band hanging from it (:meth:`Board.held_roles`)."""
     slid = "vertex" not in _hit(walk, call)
     return {"slide": BallSlide(to=point(walk.root_points()[walk.result_ref(ret)]))
-            if slid else None}
+            if slid else None, "roles": {}}
 
 
 def read_snag(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """The band's last shape. The vertex it snags is the claim to be, amber as the caption
+    names it (as a heuristic's pick is as its tool reaches it); a straight band lights
+    nothing: its claim VX names X the next moment (X lit amber under "The rubber band stays
+    straight" said nothing of X)."""
     snagged = None if ret.result is None else walk.result_ref(ret)
     caption = ("The rubber band stays straight" if snagged is None
                else f"The rubber band snags {snagged}")
     where = walk.root_points()
-    corners = [walk.ref(call, "v"), *([snagged] if snagged is not None else []),
-               walk.ref(call, "x")]
+    v = walk.ref(call, "v")
+    corners = [v, *([snagged] if snagged is not None else []), walk.ref(call, "x")]
     band = None if "vertex" in _hit(walk, call) else RubberBand(
         corners=tuple(point(where[c]) for c in corners))
-    yield walk.call_beat(Snag, caption, call, ret, band=band, snagged=snagged)
+    roles = {v: "called", **({snagged: "argument"} if snagged is not None else {})}
+    yield walk.call_beat(Snag, caption, call, ret, band=band, snagged=snagged, roles=roles)
 
 
+#: V's one role through the run: the vertex the ball hangs from, blue from its pick to its
+#: claim (it was green as picked, what the call gives, and blue a second later as the
+#: polygon turned, unsaid: chapter 3 at 20 s)
+V_ROLE = "called"
 READS: Mapping[str, Reading] = {
     "reflex_vertex": read_pick("{result} is a reflex vertex: the ball will hang there",
-                               "No reflex vertex: the polygon is convex"),
-    "straight_vertex": read_pick("{result} is a straight vertex: the ball hangs there instead"),
+                               "No reflex vertex: the polygon is convex", role=V_ROLE),
+    "straight_vertex": read_pick("{result} is a straight vertex: the ball hangs there instead",
+                                 role=V_ROLE),
     "gravity_direction": read_turn,
     "drop_ball": read_step(Drop, "The ball falls until it hits the boundary", _drop),
     "slide_to_vertex": read_step(Slide, "It slides down the edge to {result}", _slide),

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 import shapely
-from manim import Dot, Line, Mobject, VGroup
+from manim import Dot, Line, LineJointType, Mobject, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
@@ -33,6 +33,7 @@ from metaphors.layout import (
     Segment,
     clear,
     dot_gaps,
+    grid,
     rects_at,
     ring_edges,
 )
@@ -51,6 +52,10 @@ EDGE_MARGIN = 0.12
 GAPS = tuple(round(0.18 + 0.03 * i, 6) for i in range(15))
 #: the turns tried away from the outward bisector (degrees), nearest first: every 15°
 TURNS = tuple(sorted(range(-180, 180, 15), key=lambda t: (abs(t), -t)))
+#: the gap a leader leaves at each end, by the dot and by the letter (scene units)
+LEADER_END = 0.05
+#: a leader's opacity: a thin line fainter than an edge
+LEADER_OPACITY = 0.7
 
 
 def outward(before: np.ndarray, at: np.ndarray, after: np.ndarray) -> np.ndarray:
@@ -140,6 +145,19 @@ def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tup
     ``segments`` (lines the picture draws), every dot and every label placed before,
     nearer its own dot than any other, and seen from it across no edge or line
     (:func:`_seen`). Deterministic."""
+    return [centre for centre, _ in placed_labels(rings, sizes, segments, dot)]
+
+
+def placed_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tuple[float, float]],
+                  segments: Sequence[Segment], dot: float = THEME.dot_radius,
+                  leaders: bool = False) -> list[tuple[np.ndarray, bool]]:
+    """Each label's centre as :func:`place_ring_labels` places it, and whether it has a
+    leader: ``leaders``, a label with no place outside P round its dot (:data:`GAPS`) then
+    goes beside P, clear of every other label, with a short thin line to its dot
+    (:func:`leader_place`), where there is such a place: over P's fill, the lecture
+    polygon's G (the slot's inner corner) and M (the notch between A and L) stood on the
+    picture, and a place outside P by their dot was nearer H's dot, A's. The others are
+    placed first, each in its own place as without leaders."""
     pts = [[np.asarray(c, dtype=float)[:2] for c in ring] for ring in rings]
     dots = [p for ring in pts for p in ring]
     edges: list[Segment] = [edge for ring in pts for edge in ring_edges(ring)]
@@ -147,7 +165,7 @@ def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tup
     base = Obstacles(segments=edges, dots=[(float(p[0]), float(p[1]), dot) for p in dots])
     region = shapely.Polygon(pts[0], pts[1:]) if len(pts[0]) >= 3 else None
     placed: list[Rect] = []
-    centres = []
+    centres: list[tuple[np.ndarray, bool]] = []
     for k, (ring, i) in enumerate([(r, i) for r in pts for i in range(len(r))]):
         away = outward(ring[i - 1], ring[i], ring[(i + 1) % len(ring)])
         tried = places_round(ring[i], away, sizes[k])
@@ -155,28 +173,149 @@ def place_ring_labels(rings: Sequence[Sequence[np.ndarray]], sizes: Sequence[tup
         centre = tried[best_place(tried, sizes[k], base.plus(boxes=placed), EDGE_MARGIN,
                                   region, mine)]
         placed.append(tuple(rects_at(centre, sizes[k])[0]))
-        centres.append(centre)
+        centres.append((centre, False))
+    if not leaders or region is None:
+        return centres
+    lines: list[Segment] = []  # the leaders drawn: each kept clear of the others
+    for k, at in enumerate(dots):
+        if not shapely.intersects(shapely.box(*placed[k]), region):
+            continue
+        others = [box for j, box in enumerate(placed) if j != k]
+        led = leader_place(at, sizes[k], base.plus(boxes=others, segments=lines), edges,
+                           region, [p for j, p in enumerate(dots) if j != k], dot)
+        if led is not None:
+            placed[k] = tuple(rects_at(led, sizes[k])[0])
+            centres[k] = (led, True)
+            lines.append(leader_ends(at, led, sizes[k], dot))
     return centres
+
+
+#: how far a label with a leader may stand from its dot (its box; 15 % of the frame's height):
+#: farther, the leader runs along the picture like an edge (G's, the length of the slot)
+LEADER_REACH = 1.2
+#: the least gap between a label with a leader and any other vertex's dot or label: it stands
+#: apart, and its leader says whose it is
+LEADER_APART = 0.2
+
+
+def leader_place(at: np.ndarray, size: tuple[float, float], obstacles: Obstacles,
+                 edges: Sequence[Segment], region: shapely.Geometry,
+                 others: Sequence[np.ndarray], dot: float = THEME.dot_radius
+                 ) -> np.ndarray | None:
+    """The centre of a label beside P with a leader to its dot ``at``: the place nearest
+    the dot (on a grid, :func:`metaphors.layout.grid`) within :data:`LEADER_REACH`, in the
+    frame, wholly outside ``region``, :data:`EDGE_MARGIN` clear of ``obstacles`` (edges,
+    lines, dots, the other labels) and :data:`LEADER_APART` of the other dots (``others``)
+    and labels, seen from the dot (the leader crosses no edge), whose leader passes
+    :data:`MARGIN` clear of every other dot and label; None if there is none."""
+    w, h = size
+    window = (at[0] - LEADER_REACH - w, at[1] - LEADER_REACH - h,
+              at[0] + LEADER_REACH + w, at[1] + LEADER_REACH + h)
+    tried = grid(window, size, step=0.02, near=at)
+    if not len(tried):
+        return None
+    rects = rects_at(tried, size)
+    boxes = shapely.box(*rects.T)
+    apart = Obstacles(boxes=obstacles.boxes, dots=[(float(p[0]), float(p[1]), dot) for p in others])
+    ok = ((shapely.distance(boxes, shapely.Point(at)) <= LEADER_REACH)
+          # a little over the margin: the scene graph rounds boxes to 0.001
+          & clear(tried, size, obstacles, EDGE_MARGIN + 0.005, FRAME_AREA)
+          & clear(tried, size, apart, LEADER_APART)
+          & ~shapely.intersects(boxes, region))
+    near = [shapely.Point(p).buffer(dot) for p in others]
+    near += [shapely.box(*box) for box in obstacles.boxes]
+    for k in np.flatnonzero(ok):
+        if not _seen(tried[k:k + 1], at, edges)[0]:
+            continue
+        a, b = leader_ends(at, tried[k], size, dot)
+        line = shapely.LineString([a, b])
+        if all(line.distance(shape) >= MARGIN for shape in near):
+            return tried[k]
+    return None
+
+
+def leader_ends(at: np.ndarray, centre: np.ndarray, size: tuple[float, float],
+                dot: float = THEME.dot_radius) -> tuple[np.ndarray, np.ndarray]:
+    """The ends of a label's leader: from just off its dot ``at`` towards the label's centre
+    ``centre``, to just short of its box (``size``), :data:`LEADER_END` off each."""
+    a, c = np.asarray(at, dtype=float)[:2], np.asarray(centre, dtype=float)[:2]
+    d = c - a
+    length = float(np.linalg.norm(d))
+    if length < 1e-9:
+        return a, a
+    u = d / length
+    # where the way from the dot meets the box's side (the box centred on ``c``)
+    half = np.asarray(size, dtype=float) / 2
+    inside = min(half[0] / abs(u[0]) if abs(u[0]) > 1e-9 else np.inf,
+                 half[1] / abs(u[1]) if abs(u[1]) > 1e-9 else np.inf)
+    start = dot + LEADER_END
+    end = max(start, length - inside - LEADER_END)
+    return a + u * start, a + u * end
+
+
+def leader(at: np.ndarray, label: Mobject, theme: Theme = THEME) -> Line:
+    """A label's leader (:func:`leader_ends`): a thin line in the label's ink from its dot
+    ``at`` to the label, named ``leader`` (no text: the reading rules' label boxes pass it)."""
+    a, b = leader_ends(at, label.get_center(), (label.width, label.height), theme.dot_radius)
+    # thin and a little faint: not read as an edge or a diagonal
+    return Line((a[0], a[1], 0.0), (b[0], b[1], 0.0), color=theme.ink,
+                stroke_width=theme.thin_stroke, stroke_opacity=LEADER_OPACITY)
+
+
+def move_label(marker: Mobject, centre: Sequence[float] | np.ndarray) -> Mobject:
+    """A vertex marker (a dot and a label, and a leader if it has one) with its label at
+    ``centre``: its leader drawn again from the dot to the label's new place."""
+    marker[1].move_to((centre[0], centre[1], 0.0))
+    if len(marker.submobjects) > 2:
+        a, b = leader_ends(marker[0].get_center(), marker[1].get_center(),
+                           (marker[1].width, marker[1].height), marker[0].width / 2)
+        marker[2].set_points_as_corners([(a[0], a[1], 0.0), (b[0], b[1], 0.0)])
+    return marker
 
 
 def placed_vertex_markers(polygon: Polygon, frame: Frame, theme: Theme = THEME,
                           diagonals: Sequence[tuple[int, int]] = (),
-                          lines: Sequence[Sequence[tuple[float, float]]] = ()) -> VGroup:
+                          lines: Sequence[Sequence[tuple[float, float]]] = (),
+                          leaders: bool = True) -> VGroup:
     """A dot and a label per vertex, in the polygon's order (:func:`measured_markers`), clear
     of ``diagonals`` (pairs of vertex indices drawn on the picture) and of ``lines``
-    (polylines in P's units drawn on it too: an answer's line)."""
+    (polylines in P's units drawn on it too: an answer's line); a still picture's label
+    with no room outside P beside P with a leader (``leaders``)."""
     segments = [segment for line in lines for segment in pairwise(frame.many(list(line)))]
     return VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, diagonals,
-                                                    segments)))
+                                                    segments, leaders)))
+
+
+#: the width of the dark halo a vertex's label (and dot) is given where it stands on a fill it
+#: would not read on: ear clipping's fruit (grey, red or green on its orange all but vanish),
+#: an analysis's red "outside P"; the halo follows its label wherever it moves, in any colour
+LABEL_HALO = 6.0
+
+
+def haloed(marker: VGroup, colour: str, dot: bool = False) -> VGroup:
+    """A copy of a vertex's marker (its dot and label) whose label has a halo of ``colour``
+    :data:`LABEL_HALO` wide, drawn behind its glyphs (a background stroke: recolouring the
+    label, and moving it, keep it); ``dot``: its dot too, a ring round it."""
+    # round joins (a mitred halo spikes at M's and K's points): set on the label itself, as
+    # a transform to the copy does not carry them
+    marker[1].joint_type = LineJointType.ROUND
+    copy = marker.copy()
+    copy[1].set_stroke(colour, width=LABEL_HALO, background=True)
+    if dot:
+        copy[0].set_stroke(colour, width=LABEL_HALO, background=True)
+    return copy
 
 
 def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
                      theme: Theme = THEME, diagonals: Sequence[tuple[int, int]] = (),
-                     lines: Sequence[Segment] = ()) -> list[tuple[str, VGroup]]:
+                     lines: Sequence[Segment] = (), leaders: bool = False
+                     ) -> list[tuple[str, VGroup]]:
     """(label, dot and label) for every vertex of the polygon and of its holes, each label
     where :func:`place_ring_labels` puts it: clear of the edges, of ``diagonals`` (pairs of
     the polygon's vertex indices: the claims a picture will draw, which its labels are
-    placed before) and of ``lines`` (on screen: a keyhole's bridges)."""
+    placed before) and of ``lines`` (on screen: a keyhole's bridges). ``leaders``: a label
+    with no room outside P round its dot stands beside P, and its marker has a third part,
+    its leader (:func:`placed_labels`)."""
     rings = [frame.many(polygon.points), *(frame.many(h.points) for h in holes)]
     names = [*polygon.labels, *(label for h in holes for label in h.labels)]
     # lower-case letters stand lower than capitals: a size larger keeps them 2.5 % high
@@ -184,21 +323,26 @@ def measured_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame,
     texts = [typeset.text(name, font=theme.font, size=size, colour=theme.ink)
              for name, size in zip(names, sizes, strict=True)]
     segments = [*((rings[0][i], rings[0][j]) for i, j in diagonals), *lines]
-    centres = place_ring_labels(rings, [(t.width, t.height) for t in texts], segments,
-                                theme.dot_radius)
+    centres = placed_labels(rings, [(t.width, t.height) for t in texts], segments,
+                            theme.dot_radius, leaders)
     points = [point for ring in rings for point in ring]
     markers = []
-    for name, at, text, centre in zip(names, points, texts, centres, strict=True):
+    for name, at, text, (centre, led) in zip(names, points, texts, centres, strict=True):
         text.move_to((centre[0], centre[1], 0.0))
-        markers.append((name, VGroup(Dot(at, radius=theme.dot_radius, color=theme.ink), text)))
+        marker = VGroup(Dot(at, radius=theme.dot_radius, color=theme.ink), text)
+        if led:
+            marker.add(leader(at, text, theme))
+        markers.append((name, marker))
     return markers
 
 
 def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
                    drawn: Sequence[Segment], new: Sequence[Segment],
                    dot: float = THEME.dot_radius, apart: float = MARGIN,
-                   fill: shapely.Geometry | None = None) -> dict[str, np.ndarray]:
-    """The labels that the ``new`` segments come within :data:`MARGIN` of, each with a new
+                   fill: shapely.Geometry | None = None,
+                   standing: Mapping[str, np.ndarray] | None = None,
+                   near: float = MARGIN) -> dict[str, np.ndarray]:
+    """The labels that the ``new`` segments come within ``near`` (:data:`MARGIN`) of, each with a new
     centre: the first place round its vertex (:func:`places_round`: out along the bisector
     of its ring, each ring a list of labels, their dots where the markers stand now)
     :data:`EDGE_MARGIN` clear of the segments ``drawn`` (the edges, the lines on the
@@ -206,9 +350,13 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
     clear of those and ``apart`` from the other labels (more than :data:`MARGIN` where labels
     crowd); of the places each asks, one off ``fill`` (the polygon's region: ear clipping's
     fruit) first, as :func:`best_place` prefers (moved off a test triangle, the keyhole's
-    a₂ went from its hole onto the orange); a label with no clear place stays."""
+    a₂ went from its hole onto the orange); a label with no clear place stays.
+    ``standing``: the centres some labels are measured at instead of where they stand (they
+    go back there: ear clipping's labels moved aside off a test triangle gone now)."""
     at = {name: np.asarray(m[0].get_center(), dtype=float)[:2] for name, m in markers.items()}
-    boxes = {name: tuple(rects_at(m[1].get_center()[:2], (m[1].width, m[1].height))[0])
+    standing = standing or {}
+    boxes = {name: tuple(rects_at(np.asarray(standing.get(name, m[1].get_center()),
+                                             dtype=float)[:2], (m[1].width, m[1].height))[0])
              for name, m in markers.items() if len(m) > 1}
     lines = Obstacles(segments=[(np.asarray(a, float)[:2], np.asarray(b, float)[:2])
                                 for a, b in new])
@@ -217,7 +365,7 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
     moved: dict[str, np.ndarray] = {}
     for ring in rings:
         for i, name in enumerate(ring):
-            if name not in boxes or lines.gaps(np.array([boxes[name]]))[0] >= MARGIN:
+            if name not in boxes or lines.gaps(np.array([boxes[name]]))[0] >= near:
                 continue
             size = (boxes[name][2] - boxes[name][0], boxes[name][3] - boxes[name][1])
             d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])
@@ -225,13 +373,35 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
             others = Obstacles(boxes=[box for other, box in boxes.items() if other != name])
             ok = _off(tried, size, fill, clear(tried, size, base, EDGE_MARGIN)
                       & clear(tried, size, others, max(apart, EDGE_MARGIN)))
+            if not ok.any():  # between the ways tried, on a finer grid (:func:`_finer`)
+                tried = _finer(at[name], size)
+                ok = _off(tried, size, fill, clear(tried, size, base, EDGE_MARGIN)
+                          & clear(tried, size, others, max(apart, EDGE_MARGIN)))
             if not ok.any():
+                tried = places_round(at[name], d, size)
                 ok = _off(tried, size, fill,
                           clear(tried, size, base, MARGIN) & clear(tried, size, others, apart))
             if ok.any():
                 moved[name] = tried[int(np.argmax(ok))]
                 boxes[name] = tuple(rects_at(moved[name], size)[0])
     return moved
+
+
+#: the step of the finer grid a crossed label's place is looked for on (scene units)
+FINE_STEP = 0.02
+
+
+def _finer(at: np.ndarray, size: tuple[float, float]) -> np.ndarray:
+    """The centres round the dot ``at`` on a grid of :data:`FINE_STEP` whose box (``size``)
+    stands :data:`GAPS` from it (nearest first): the places between the ways
+    :func:`places_round` tries, 15° apart (at the whole triangulation's end, b₂ had room
+    between two of them, and stood on a triangle's side)."""
+    reach = max(GAPS)
+    w, h = size
+    window = (at[0] - reach - w, at[1] - reach - h, at[0] + reach + w, at[1] + reach + h)
+    centres = grid(window, size, FINE_STEP, near=at)
+    gaps = dot_gaps(rects_at(centres, size), [(float(at[0]), float(at[1]), 0.0)])[:, 0]
+    return centres[(gaps >= GAPS[0] - 1e-9) & (gaps <= reach + 1e-9)]
 
 
 def drawn_edges(mobject: Mobject) -> list[Segment]:
@@ -343,6 +513,7 @@ def drawn_in(marker: Mobject, colour: str) -> bool:
 
 
 __all__ = ["EDGE_MARGIN", "MARGIN", "best_place", "crossed_labels", "drawn_edges",
-           "filled_region", "measured_markers", "new_colour", "off_the_fill", "outward",
-           "place_labels",
-           "place_ring_labels", "placed_vertex_markers", "places_round", "seen_from"]
+           "filled_region", "leader", "leader_ends", "leader_place", "measured_markers",
+           "move_label", "new_colour", "off_the_fill", "outward", "place_labels",
+           "place_ring_labels", "placed_labels", "placed_vertex_markers", "places_round",
+           "seen_from"]

@@ -40,9 +40,15 @@ from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
 from metaphors import catalog, figure_steps
 from metaphors.analysis import Analysis, play_analysis
+from metaphors.captions import whole_frames
 from metaphors.countdown import countdown
-from metaphors.drawing import Frame, crossed_edge, polygon_mobject, triangle_mobject
-from metaphors.figures import Figure, figure_mobjects
+from metaphors.drawing import (
+    Frame,
+    crossed_edge,
+    polygon_mobject,
+    triangulation_figure,
+)
+from metaphors.figures import WIDE_BOX, WIDE_KINDS, Figure, figure_mobjects
 from metaphors.labels import measured_markers
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
@@ -51,18 +57,29 @@ from metaphors.stills import MARKERS_AT, answer_front, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
 from rendering.typeset import FlatText
-from story.exercises import Exercise, crossed_edges, make_exercises
+from story.exercises import (
+    Exercise,
+    checking_time,
+    crossed_edges,
+    hunted_exercise,
+    make_exercises,
+    measured_pairs,
+)
 from story.hunt import hunt
 from story.registry import spoken
 from story.runs import record_user_run
 from story.spec import RunSpec
 from story.storyboard import Pacing
-from usercode.heuristic import load_user_heuristic
+from usercode.heuristic import load_user_heuristic, run_heuristic
 
 #: the widest a card's line may be (scene units): a longer one wraps
 CARD_WIDTH = 13.2
 #: a card with a figure: its title's height, and its words in the right half
 FIGURED_TITLE_Y, FIGURED_WORDS_X, FIGURED_WIDTH = 3.2, 3.35, 6.4
+#: a card with a wide figure (a row of pictures): the row's top, under the title, the words'
+#: foot, over the frame's bottom, the room between the row and its words, and the room
+#: between two columns of words
+WIDE_TOP, WIDE_FOOT, WIDE_GAP, WIDE_BUFF = 2.85, -3.8, 0.2, 0.15
 #: the comparison's pictures: their centre's height and their height, under the name (3.2)
 #: and the count (the labels of P's top vertices keep clear of it), over the note (-3.55)
 COMPARE_Y, COMPARE_HEIGHT, COMPARE_COUNT_Y = -0.45, 4.6, 2.65
@@ -84,6 +101,8 @@ FRUIT_BOX = Box(-3.45, 0.8, 5.6, 3.9)  # room for the plate below the fruit
 QUIZ_BOX = ((-2.7, -0.1), 7.4, 5.6)
 ANSWER_AT, ANSWER_WIDTH = (4.25, -0.3, 0), 4.6
 COUNTDOWN_AT = (4.25, 1.6, 0)
+#: seconds the answer takes to come in (its text, what it draws; the countdown's 0 fading)
+ANSWER_COMING = 1.2
 #: the space before a number (a no-break space there keeps it on its word's line)
 _NUMBER = re.compile(r" (?=\d)")
 #: the colour of each pick's front, as its metaphor draws it (:mod:`metaphors.theme`)
@@ -105,6 +124,16 @@ class Card:
     #: of the last line's: each claim drawn when its words say it, one at a time (review
     #: r567: two green claims drawn from the start read as one path); None: none
     line_figures: tuple[Figure | None, ...] = ()
+    #: where the words go with a figure: ``"right"`` of it; under a wide figure (a row of
+    #: pictures, :data:`metaphors.figures.WIDE_KINDS`) in ``"columns"``, each line under
+    #: its own picture (one statement per picture)
+    layout: str = "right"
+
+    def __post_init__(self) -> None:
+        wide = self.figure is not None and self.figure.kind in WIDE_KINDS
+        if self.layout not in ("right", "columns") or wide != (self.layout == "columns"):
+            raise ValueError(f"card {self.title!r}: layout {self.layout!r} for a "
+                             f"{'wide' if wide else 'narrow'} figure")
 
 
 @dataclass(frozen=True)
@@ -142,17 +171,23 @@ class Compare:
 @dataclass(frozen=True)
 class Hunted:
     """A heuristic the lecture did not cover (``FILE.py:FUNCTION``), a counterexample hunted
-    for at build time (:func:`story.hunt.hunt`, fixed ``seed`` and ``budget``), then its run
-    on it: a card says how it was found. ``general``: hunt only polygons in general position
-    whose wrong claim crosses an edge, so that the class sees it fail (issue 22)."""
+    for at build time (:func:`story.hunt.hunt`, fixed ``seed`` and ``budget``): a card says
+    how it was found, then the class is asked whether its claim there is inner, as an
+    exercise (the next number, ``think`` seconds counted down), and the answer draws what the
+    rule measured and where its claim leaves P. ``general``: hunt only polygons in general
+    position whose wrong claim crosses an edge, so that the class sees it fail (issue 22)."""
 
     heuristic: str
     title: str
     rule: str  # the rule in words
+    name: str = "the rule"  # its short name, as the question says it
+    #: why it claims its vertex, in words (no number): ``{pick}`` and ``{others}`` the labels
+    why: str = "it picks {pick}, not {others}"
     seed: int = 0
     budget: int = 2000
     general: bool = True
     figure: Figure | None = None  # the card's figure (e.g. the rule drawn on a polygon)
+    think: int = 15
 
 
 @dataclass(frozen=True)
@@ -177,6 +212,7 @@ class LectureScene(TraceScene):
     teacher_notes: tuple[Card, ...] = ()
     polygon = "lecture"  # the lecture's polygon, unless one is handed (trex lecture --polygon)
     call_line = False  # no code in the lecture: a run's steps are its lit rows and captions
+    asked = 0  # the number of the last exercise asked (a hunted one takes the next)
 
     def chapter_segments(self) -> tuple:
         """The chapter's segments, in order (a chapter's scene file says them)."""
@@ -269,30 +305,44 @@ class LectureScene(TraceScene):
         title = tag(typeset.glyphs(card.title, font=self.theme.font, size=self.theme.title_size,
                                    colour=self.theme.ink, width=CARD_WIDTH), None, "card:title")
         width = CARD_WIDTH if card.figure is None else FIGURED_WIDTH
+        if card.layout == "columns":  # each line as wide as its picture
+            width = WIDE_BOX[1] / max(1, len(card.lines)) - 2 * WIDE_BUFF
         lines = [tag(self.card_line(line, width), None, "card:line") for line in card.lines]
+        box = None
         if card.figure is None:
             group = VGroup(title, *lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
             group.move_to((0, 0.3, 0))
-        else:  # the title on top, the figure on the left, the words on the right
+        elif card.layout == "right":  # the title on top, the figure on the left, the words right
             title.move_to((0, FIGURED_TITLE_Y, 0))
             column = VGroup(*lines).arrange(DOWN, aligned_edge=LEFT, buff=0.35)
             column.move_to((FIGURED_WORDS_X, -0.3, 0))
+        else:  # the title on top, the row of pictures under it, a line under each
+            title.move_to((0, FIGURED_TITLE_Y, 0))
+            box = self._columns(lines)
         title.set_x(0)
         # the figure's parts, each with the words that say it (the title: the rest)
         parts = figure_steps.steps(figure_mobjects(card.figure, self.lecture_polygon(),
-                                                   self.theme) if card.figure else [],
+                                                   self.theme, box) if card.figure else [],
                                    card.lines)
         cue = captions.show(card.title, 0.8)  # the caption before is read in its own step
         self.mark_card_line(None, card)
         self.play(Write(title), *[FadeIn(m) for m in parts[0]], run_time=0.8, **cue)
         shown: list[VMobject] = []  # the last figure's claims and crossed edges
-        for line, words, (claims, edges), said in zip(lines, card.lines, self._line_claims(card),
-                                                      parts[1:], strict=True):
+        on: list = list(parts[0])  # the figure's parts on screen
+        # the parts that give way to the next as a line comes (figure_steps.goes_with)
+        leaving = figure_steps.leaving(parts, card.lines)
+        for line, words, (claims, edges), said, gone in zip(
+                lines, card.lines, self._line_claims(card), parts[1:], leaving, strict=True):
             drawn = [figure_steps.coming(m) for m in said]
             grown = max((seconds for _, seconds in drawn), default=0.0)
             cue = captions.show(words, max(0.5, grown))
             self.mark_card_line(words, card)
-            going = [FadeOut(m) for m in shown] if claims else []
+            # a rule's picture goes as the next one's comes (the recap's, on one polygon), and
+            # a part goes with the line that names its goes_with word (the overview's)
+            off = [*figure_steps.going(on, said), *gone]
+            off = [m for k, m in enumerate(off) if all(m is not o for o in off[:k])]
+            on = [*(m for m in on if all(m is not o for o in off)), *said]
+            going = [*(FadeOut(m) for m in off), *([FadeOut(m) for m in shown] if claims else [])]
             coming = [*claims, *edges]
             usual = 0.5 if not coming else 1.0
             run_time = max(usual, grown)
@@ -301,6 +351,18 @@ class LectureScene(TraceScene):
                       *[anim for anim, _ in drawn], run_time=run_time, **cue)
             shown = [*(claims or shown), *edges]
         captions.hold()
+
+    @staticmethod
+    def _columns(lines: Sequence[VMobject]) -> tuple[tuple[float, float], float, float]:
+        """Place a wide card's ``lines`` each under its own picture, their tops level, the
+        tallest one's foot at :data:`WIDE_FOOT`. Returns the row of pictures' box."""
+        (x, _), width, _ = WIDE_BOX
+        each = width / max(1, len(lines))
+        top = WIDE_FOOT + max((line.height for line in lines), default=0.0)
+        for k, line in enumerate(lines):
+            line.move_to((x - width / 2 + each * (k + 0.5), 0, 0)).align_to((0, top, 0), UP)
+        height = WIDE_TOP - top - WIDE_GAP
+        return ((x, WIDE_TOP - height / 2), width, height)
 
     def _line_claims(self, card: Card) -> list[tuple[list[VMobject], list[VMobject]]]:
         """Per line: the claims its figure brings (in place of the last figure's), and the
@@ -336,16 +398,28 @@ class LectureScene(TraceScene):
         heuristic = load_user_heuristic(hunted.heuristic)
         found = hunt(heuristic, budget=hunted.budget, seed=hunted.seed,
                      general=hunted.general)
-        if not found.found:
+        if not found.found or found.polygon is None:
             raise ValueError(f"{heuristic.name}: no counterexample in {found.tried} polygons")
-        # the card tells what the computer did, not the command that did it (issue 22)
+        polygon = found.polygon
+        # the card tells what the computer did, not the command that did it (issue 22), and
+        # the shrinking only where it took vertices away ("It shrank the first failure to 5
+        # vertices" was said of a failure that had 5 already, and never explained)
+        shrunk = (f"Then it took vertices away while the rule still failed: {polygon.n} are "
+                  "left.",) if (found.first or 0) > polygon.n else ()
         self.play_card(Card(hunted.title, (
-            f"{hunted.rule}: a rule this lecture did not cover.",
-            f"The computer tried {found.tried} small polygons, fewest vertices first.",
-            f"It shrank the first failure to {found.polygon.n} vertices."), hunted.figure))  # type: ignore[union-attr]  # found: the hunt has its polygon
+            f"{hunted.name}: {hunted.rule[:1].lower()}{hunted.rule[1:]}, a rule this lecture "
+            "did not cover.",
+            f"The computer tried {found.tried} small polygons, fewest vertices first, until "
+            "the rule failed on one.", *shrunk), hunted.figure))
+        # asked as an exercise (it was played as a run the class only watched, with "Distance
+        # to C for D: 2.2" from coordinates it never saw): the answer draws what was measured
+        log = record_user_run(heuristic, polygon, f"hunted (seed {hunted.seed})")
+        claim = run_heuristic(polygon, heuristic)
+        exercise = hunted_exercise(self.asked + 1, f"hunted (seed {hunted.seed})", polygon,
+                                   hunted.name, claim.pair, hunted.why,
+                                   measured_pairs(log, polygon.labels))
         self.clear_screen()
-        log = record_user_run(heuristic, found.polygon, f"hunted (seed {hunted.seed})")  # type: ignore[arg-type]  # found: the hunt has its polygon
-        self.play_run(Run(hunted.heuristic, None, f"{hunted.rule}, on the polygon found"), log)
+        self.ask(exercise, hunted.think)
 
     def play_analysis(self, analysis: Analysis) -> None:
         play_analysis(self, analysis, self.theme)
@@ -390,9 +464,8 @@ class LectureScene(TraceScene):
         captions.hold()  # the caption before is read in its own step
         mark_step(self, said, kind="compare")
         self.play(FadeIn(label), Create(outline), *[FadeIn(m) for m in markers], run_time=0.6)
-        pieces = [tag(triangle_mobject(polygon, t, frame, theme.pieces[k % len(theme.pieces)],
-                                       theme), None, "compare:triangle")
-                  for k, t in enumerate(triangles)]
+        # as every run's result is drawn: the result's green, neighbours in other shades
+        pieces = triangulation_figure(polygon, triangles, frame, "compare:triangle", theme)
         self.play(*[FadeIn(p) for p in pieces], FadeIn(count), run_time=1.2,
                   **captions.show(said, 1.2))
 
@@ -402,24 +475,26 @@ class LectureScene(TraceScene):
             self.ask(exercise, quiz.think)
 
     def ask(self, exercise: Exercise, think: int) -> None:
-        """The question, ``think`` seconds counted down, then the answer with its reason
-        beside the picture."""
+        """The question, ``think`` seconds counted down to 0, then the answer with its reason
+        beside the picture, up until the class has read it and checked it against the
+        picture (:func:`story.exercises.checking_time`)."""
         picture = [tag(m, None, "exercise") for m in still_mobjects(exercise, self.theme,
                                                                      QUIZ_BOX)]
         captions = captions_of(self)
         cue = captions.show(exercise.question, 0.8)
         mark_step(self, exercise.question, kind="question")
         self.play(*[FadeIn(m) for m in picture], run_time=0.8, **cue)
-        clock, seconds = countdown(think, COUNTDOWN_AT, self.theme)
+        clock, seconds, time_up = countdown(think, COUNTDOWN_AT, self.theme)
         self.add(clock)
         for second in seconds:
             self.play(second)
-        self.remove(clock)
         answer = f"{exercise.answer}: {exercise.reason}"
-        cue = captions.show(answer, 1.2)
+        cue = captions.show(answer, ANSWER_COMING)
         mark_step(self, answer, kind="answer")
-        self.play(*self.answer_animations(exercise, picture[MARKERS_AT]), run_time=1.2, **cue)
-        self.wait(3.0)
+        self.play(time_up(), *self.answer_animations(exercise, picture[MARKERS_AT]),
+                  run_time=ANSWER_COMING, **cue)
+        self.wait(whole_frames(checking_time(exercise, answer) - ANSWER_COMING))
+        self.asked = exercise.number
 
     def answer_animations(self, exercise: Exercise, markers: VGroup) -> list:
         """The answer's text beside the picture, and on the picture what it says: a pick's
@@ -433,6 +508,11 @@ class LectureScene(TraceScene):
                                    font=theme.font, width=ANSWER_WIDTH), "result", "answer")
         text.move_to(ANSWER_AT)
         anims: list[Animation] = [FadeIn(text)]
+        for i, j in exercise.measured:  # what the rule compared, under its claim
+            anims.append(Create(tag(Line(frame.to_scene(polygon.points[i]),
+                                         frame.to_scene(polygon.points[j]), color=theme.argument,
+                                         stroke_width=theme.stroke * 1.5),
+                                    "argument", "answer:measured")))
         if exercise.kind == "pick":
             anims += self._picked(exercise, frame, markers)
         for i, j in exercise.options or self._claimed(exercise):
@@ -475,6 +555,8 @@ class LectureScene(TraceScene):
 
     @staticmethod
     def _claimed(exercise: Exercise) -> tuple[tuple[int, int], ...]:
+        if exercise.claim is not None:  # a rule of one's own: its claim as the hunt ran it
+            return (exercise.claim,)
         if exercise.kind == "claim" and exercise.heuristic:
             return (find_diagonal(exercise.polygon, exercise.heuristic).pair,)
         return ()

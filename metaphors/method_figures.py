@@ -6,8 +6,9 @@ Each is computed by the geometry the runs use (:mod:`geometry.gravity`,
 placed by hand, and drawn into the box :mod:`metaphors.figures` hands over. Colours keep
 their one meaning: the vertex a step works on amber (*argument*, ``figure:step``: gravity's
 V, prune and search's middle vertex, a hole's right-most vertex — none of them a candidate
-in T, which only a rule's figure marks, pink), a good sub-polygon in the pieces' tints, an
-inner diagonal or a bridge green (*result*), a wrong claim red with the edge it crosses.
+in T, which only a rule's figure marks, pink), a good sub-polygon in the run's tint over
+the fruit (:func:`metaphors.fruit.good_style`), an inner diagonal or a bridge green
+(*result*), a wrong claim red with the edge it crosses.
 """
 
 from __future__ import annotations
@@ -40,7 +41,8 @@ from metaphors.drawing import (
     polygon_mobject,
 )
 from metaphors.figure_caption import figure_caption
-from metaphors.labels import measured_markers, placed_vertex_markers
+from metaphors.fruit import TEST_OPACITY, TEST_STROKE, fruit_style, good_style
+from metaphors.labels import LABEL_HALO, drawn_edges, measured_markers, placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from story.beats import Hole
@@ -77,8 +79,24 @@ def method_figure(kind: str, polygon_spec: str, heuristic: str, box: Box,
         "gravity": _gravity, "prune": _prune, "rule": _rule}
     frame, under, over = drawn[kind](polygon, heuristic, box, theme)
     shape = tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon")
-    dots = tag(placed_vertex_markers(polygon, frame, theme), "idle", "figure:vertices")
+    # a rule's labels clear of T's sides and of its claim, as the frame figure's are: H stood
+    # across T's side from its vertex on the exercises' card
+    lines = [edge for m in under if m.name in ("figure:T", "figure:claim")
+             for edge in drawn_edges(m)] if kind == "rule" else []
+    dots = tag(VGroup(*(m for _, m in measured_markers(polygon, (), frame, theme, lines=lines))),
+               "idle", "figure:vertices")
+    if kind == "prune":  # P as the run shows it: the fruit, its labels on dark halos
+        shape.set_style(**_style(fruit_style(theme)))
+        for marker in dots:
+            marker[1].set_stroke(theme.background, width=LABEL_HALO, background=True)
     return [shape, *under, dots, *over]
+
+
+def _style(style: dict) -> dict:
+    """A mobject's constructor style (:func:`metaphors.fruit.fruit_style`) as ``set_style``
+    takes it."""
+    return {"stroke_color": style["color"], "stroke_width": style["stroke_width"],
+            "fill_color": style["fill_color"], "fill_opacity": style["fill_opacity"]}
 
 
 def _line(frame: Frame, p, q, colour: str, width: float, role: str | None,
@@ -119,8 +137,10 @@ def _gravity(polygon: Polygon, heuristic: str, box: Box,
                    stroke_color=theme.ink, stroke_width=1.5), "argument", "figure:ball")
     snag = f"Y = {y.label}" if y else "the band straight"
     words = f"V = {v.label}, X = {x.label}, {snag}: claim {v.label}{end.label}"
+    # V in the run's colour for it, blue from its pick to its claim (amber here, it was
+    # blue a moment later in the run on the same polygon)
     return frame, [fall, slide, tag(band, "argument", "figure:band"), claim], [
-        _dot(frame, v.point, theme.argument, "argument", "figure:step"), ball,
+        _dot(frame, v.point, theme.called, "called", "figure:step"), ball,
         figure_caption(box, theme, (words, theme.result))]
 
 
@@ -148,9 +168,11 @@ def prune_rounds(polygon: Polygon) -> list[Round]:
 
 def _prune(polygon: Polygon, heuristic: str, box: Box,
            theme: Theme) -> tuple[Frame, list[Mobject], list[Mobject]]:
-    """A round of prune and search: the good sub-polygon G shaded (its cut edge drawn), its
-    middle vertex V tested, V's inner diagonal and the smaller good sub-polygon it cuts off;
-    when the next round's middle vertex is an ear, its triangle in green."""
+    """A round of prune and search on P drawn as the run draws it, the fruit
+    (:func:`method_figure`): the good sub-polygon G it searches (P itself, or its cut edge
+    drawn), its middle vertex V tested, V's inner diagonal and the smaller good sub-polygon
+    it keeps, tinted as the run tints it (:func:`metaphors.fruit.good_style`); when the next
+    round's middle vertex is an ear, its triangle in green, as the run tests it."""
     frame = Frame(polygon.points, *box)
     if polygon.n < 4:
         return frame, [], [figure_caption(box, theme, ("a triangle: it is its own ear", theme.ink))]
@@ -159,18 +181,17 @@ def _prune(polygon: Polygon, heuristic: str, box: Box,
     r = next((k for k, (g, _, d) in enumerate(rounds) if g.has_cut and d is not None), 0)
     g, v, diagonal = rounds[r]
     ids, pts, labels = [int(k) for k in g.indices()], polygon.points, polygon.labels
-    under: list[Mobject] = [_tint(frame, [pts[k] for k in ids], theme.pieces[0], theme,
-                                  "figure:good")]
-    if g.has_cut:
-        under.append(_line(frame, pts[ids[-1]], pts[ids[0]], theme.pieces[0], theme.stroke,
-                           None, "figure:cut"))
+    under: list[Mobject] = []
+    if g.has_cut:  # its tint went as the smaller one came, in the run: its cut edge stays
+        under.append(_line(frame, pts[ids[-1]], pts[ids[0]], theme.called, theme.stroke,
+                           "called", "figure:cut"))
     name = "P" if not g.has_cut else f"G (cut {labels[ids[-1]]}{labels[ids[0]]})"
     if diagonal is None:
         words = f"{name}: its middle vertex {labels[v]} is an ear"
     else:
         a, b = sorted((ids.index(diagonal[0]), ids.index(diagonal[1])))
-        under.append(_tint(frame, [pts[k] for k in ids[a:b + 1]], theme.pieces[1], theme,
-                           "figure:smaller"))
+        under.append(tag(MPolygon(*frame.many([pts[k] for k in ids[a:b + 1]]),
+                                  **good_style(theme)), "called", "figure:good"))
         under.append(_line(frame, pts[diagonal[0]], pts[diagonal[1]], theme.result,
                            theme.stroke * 1.6, "result", "figure:diagonal"))
         w = diagonal[1] if diagonal[0] == v else diagonal[0]
@@ -181,18 +202,13 @@ def _prune(polygon: Polygon, heuristic: str, box: Box,
             m = nxt.middle()
             ear = [pts[nxt.vertex_at(k).index] for k in (m - 1, m, m + 1)]
             under.append(tag(MPolygon(*frame.many(ear), color=theme.result,
-                                      stroke_width=theme.thin_stroke, fill_color=theme.result,
-                                      fill_opacity=theme.fill_opacity), "result", "figure:ear"))
+                                      stroke_width=theme.stroke * TEST_STROKE,
+                                      fill_color=theme.result, fill_opacity=TEST_OPACITY),
+                             "result", "figure:ear"))
             words += f"; there the middle {labels[e]} is an ear"
     over = [_dot(frame, pts[v], theme.argument, "argument", "figure:step"),
             figure_caption(box, theme, (words, theme.ink))]
     return frame, under, over
-
-
-def _tint(frame: Frame, points: Sequence[tuple[float, float]], colour: str, theme: Theme,
-          name: str) -> Mobject:
-    return tag(MPolygon(*frame.many(points), color=colour, stroke_width=0, fill_color=colour,
-                        fill_opacity=theme.done_opacity), None, name)
 
 
 # --- a rule of one's own ---------------------------------------------------------------------

@@ -22,6 +22,7 @@ from manim import (
     DashedLine,
     Dot,
     FadeIn,
+    FadeOut,
     Indicate,
     Line,
     Transform,
@@ -55,7 +56,7 @@ from metaphors.layout import (
     title_area,
 )
 from metaphors.performing import Performances, act, performs
-from metaphors.sweep import around_labels, label_gaps
+from metaphors.sweep import around_labels
 from metaphors.tags import tag
 from rendering.typeset import text
 from story.beats import Beat, Point, beat_kind, point, points_of
@@ -70,10 +71,16 @@ STACK_BUFF = 0.12
 COUNT_GAP = 0.35
 #: the sweep line's length (scene units), centred on the picture
 SWEEP_WIDTH = 5.8
-#: the gap the sweep line leaves round every vertex label (scene units): the tools' 0.04
-#: let its dashes run up to M's and K's letters at their height, read as struck through
-#: (chapter 5 at 28 s); 0.12, a label's gap from its edges (:data:`metaphors.labels.EDGE_MARGIN`)
-SWEEP_LABEL_GAP = 0.12
+#: the gap the sweep line leaves round every vertex label (scene units), above and below it:
+#: the tools' 0.04 let its dashes run up to M's and K's letters at their height, read as
+#: struck through (chapter 5 at 28 s); 0.12, a label's gap from its edges
+#: (:data:`metaphors.labels.EDGE_MARGIN`), still ran along the top of A's letter at L's
+#: height (16–19 s): 0.18
+SWEEP_LABEL_GAP = 0.18
+#: the gap it leaves beside a label it passes at the label's height (scene units): 0.12 each
+#: side of K and M (7 px at 480p) still read as a line through the letter (22.7–30 s); about
+#: two letters' width, the label stands in a clear break of the line
+SWEEP_LABEL_SIDE_GAP = 0.4
 #: the gaps a kind word ("split", "merge" …) keeps from every label, dot and line, the
 #: largest that fits (scene units): nearer than 0.12 to a label, the two read as one word
 #: ("Gregular"); 0.18 keeps 0.12 diagonally off a label's corner too
@@ -82,9 +89,12 @@ KIND_GAPS = (0.18, 0.12)
 #: 0.6 (7.5 % of the frame's height) beside it, else 1.0 where a crowded vertex (the left-most,
 #: at the frame's margin) has no room nearer; farther, it is read as nobody's, and none is shown
 KIND_REACH = (0.6, 1.0)
+#: the farthest a kind word's box stands from its vertex as drawn, its dot or its label, where
+#: it can (3.75 % of the frame's height): farther, it is read as nobody's (the reading rule's)
+KIND_BESIDE = 0.3
 #: every other vertex's dot and label stand at least this many times as far from the kind word
-#: as its own dot: the word is read as its vertex's ("start" between A and L was read as L's,
-#: "regular" between B and b₁'s label as b₁'s)
+#: as its own vertex as drawn (its dot or its label): the word is read as its vertex's ("start"
+#: between A and L was read as L's, "regular" between B and b₁'s label as b₁'s)
 KIND_OWN = 1.5
 #: each board's place for its stack (left, top, and whether it is a row), found once a run
 _PLACES: weakref.WeakKeyDictionary[Board, tuple[float, float, bool]] = (
@@ -98,7 +108,7 @@ def _sweep_line(board: Board, y: float) -> VGroup:
     it may cross its own vertex's dot, never a label."""
     theme = board.theme
     x0, at = _sweep_span(board, y)
-    labels = label_gaps(board, SWEEP_LABEL_GAP)
+    labels = _sweep_gaps(board)
     group = VGroup(*[tag(DashedLine((p[0], p[1], 0), (q[0], q[1], 0), color=theme.sweep,
                                     stroke_width=theme.thin_stroke), "called", "sweep:line")
                      for p, q in around_labels([((x0, at), (x0 + SWEEP_WIDTH, at))], labels)])
@@ -108,15 +118,27 @@ def _sweep_line(board: Board, y: float) -> VGroup:
     return tag(group.set_stroke(theme.sweep, theme.thin_stroke, family=False), "called", "sweep")
 
 
+def _sweep_gaps(board: Board) -> BaseGeometry:
+    """Where the sweep line leaves a gap: every vertex label's box grown by
+    :data:`SWEEP_LABEL_GAP` above and below and :data:`SWEEP_LABEL_SIDE_GAP` beside it (a
+    line at a label's height ends far enough from it not to read as striking it)."""
+    return unary_union([box(left - SWEEP_LABEL_SIDE_GAP, bottom - SWEEP_LABEL_GAP,
+                            right + SWEEP_LABEL_SIDE_GAP, top + SWEEP_LABEL_GAP)
+                        for left, bottom, right, top in
+                        (area_of(marker[-1]) for marker in board.markers.values())])
+
+
 def _sweep_span(board: Board, y: float) -> tuple[float, float]:
     """The sweep line's left end and height on screen, at ``y`` (P's coordinates)."""
     return board.frame.center[0] - SWEEP_WIDTH / 2, float(board.at((0.0, y))[1])
 
 
 def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarray | None:
-    """Where the kind word of ``vertex`` stands: the nearest place to its dot (on a grid,
-    :func:`metaphors.layout.grid`, measured from the dot to the word's box) within
-    :data:`KIND_REACH` that keeps every other vertex's dot :data:`KIND_OWN` times as far, and a
+    """Where the kind word of ``vertex`` stands: the nearest place to its vertex as drawn,
+    its dot or its label (on a grid, :func:`metaphors.layout.grid`, measured to the word's
+    box), then to its dot, within
+    :data:`KIND_REACH` of its dot that keeps every other vertex's dot and label :data:`KIND_OWN`
+    times as far as its own, and a
     gap of :data:`KIND_GAPS` from every vertex label and dot, every edge and diagonal drawn, the
     sweep line at ``y``, the title and the panel, outside P, on screen above the subtitle; None
     where there is none (the caption names the kind)."""
@@ -127,9 +149,12 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     edges: list[Segment] = [edge for ring in rings for edge in ring_edges([p[:2] for p in ring])]
     edges += [(m.get_start()[:2], m.get_end()[:2]) for name, m in board.objects.items()
               if isinstance(m, Line) and name.startswith("diagonal:")]
+    # and the labels' leaders (:func:`metaphors.labels.leader`)
+    edges += [(m[2].get_start()[:2], m[2].get_end()[:2]) for m in board.markers.values()
+              if len(m.submobjects) > 2]
     x0, at = _sweep_span(board, y)
     edges.append(((x0, at), (x0 + SWEEP_WIDTH, at)))
-    boxes = [area_of(marker[-1]) for marker in board.markers.values()]
+    boxes = [area_of(marker[1]) for marker in board.markers.values()]
     boxes += [area_of(m) for m in (board.title, *board.panel.mobjects())]
     dots = [(*marker[0].get_center()[:2], theme.dot_radius) for marker in board.markers.values()]
     reach = max(KIND_REACH)
@@ -137,12 +162,17 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
               dot[0] + reach + size[0], dot[1] + reach + size[1])
     centres = grid(window, size)
     own = Obstacles(dots=[(*dot, 0.0)]).gaps(rects_at(centres, size))
-    order = np.argsort(np.round(own, 6), kind="stable")  # the nearest first
-    centres, own = centres[order], own[order]
-    others = Obstacles(boxes=[area_of(m[-1]) for v, m in board.markers.items() if v != vertex],
+    # the nearest to the vertex as drawn, its dot or its label, first: nearest its dot
+    # alone, "regular" stood in the slot left of I, 0.35 from I's label and 0.45 from its
+    # dot, read as nobody's, where beside I's label it was as near the dot
+    marker = Obstacles(dots=[(*dot, 0.0)], boxes=[area_of(board.markers[vertex][1])])
+    beside = marker.gaps(rects_at(centres, size))
+    order = np.lexsort((np.round(own, 6), np.round(beside, 6)))  # the nearest first
+    centres, own, beside = centres[order], own[order], beside[order]
+    others = Obstacles(boxes=[area_of(m[1]) for v, m in board.markers.items() if v != vertex],
                        dots=[(*m[0].get_center()[:2], 0.0) for v, m in board.markers.items()
                              if v != vertex])
-    ours = clear(centres, size, others, KIND_OWN * own)
+    ours = clear(centres, size, others, KIND_OWN * beside)
     # P's region too: a word over P's fill is text over the picture (review s35: "merge" stood
     # on the fill beside M, "split" beside D); outside P, the edges' gap keeps it off them
     region = Region([p[:2] for p in rings[0]], [[p[:2] for p in ring] for ring in rings[1:]])
@@ -150,10 +180,14 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     within = (FRAME_AREA[0], SUBTITLE_TOP, FRAME_AREA[2], FRAME_AREA[3])
     free = [ours & clear(centres, size, obstacles, gap, within) for gap in KIND_GAPS]
     for most in KIND_REACH:
-        for ok in free:
-            ok = ok & (own <= most + 1e-9)
-            if ok.any():
-                return np.array([*centres[int(np.argmax(ok))], 0.0])
+        # beside its dot or label first, at the smaller gap if it must: at the larger gap
+        # first, "regular" went 0.35 off I, into the slot, where 0.13 right of I's label
+        # was free
+        for near in (KIND_BESIDE, np.inf):
+            for ok in free:
+                ok = ok & (own <= most + 1e-9) & (beside <= near + 1e-9)
+                if ok.any():
+                    return np.array([*centres[int(np.argmax(ok))], 0.0])
     return None
 
 
@@ -182,6 +216,9 @@ def classify(board: Board, beat: Classify) -> None:
         shown = _kind_key(board, data.kind, line)
     if shown is not None:  # None: no room, no word (the caption names the kind)
         anims.append(FadeIn(shown))
+    # an edge that ends at this vertex leaves the line, and its helper with it
+    anims += board.drop(*[key for key in board.objects
+                          if key.startswith("helper:") and key.rsplit("–", 1)[-1] == data.vertex])
     if "sweep" in board.objects:
         anims.append(Transform(board.objects["sweep"], line))
     else:
@@ -212,6 +249,48 @@ def _kind_key(board: Board, kind: str, sweep: VGroup) -> VGroup | None:
     return key.move_to((left + key.width / 2, top - key.height / 2, 0))
 
 
+#: the gap a helper's segment leaves round every vertex label it would run through (scene
+#: units): a label's gap from its edges (:data:`metaphors.labels.EDGE_MARGIN`)
+HELPER_LABEL_GAP = 0.12
+
+
+def helper(board: Board, beat: Helper) -> None:
+    """``vertex`` becomes the helper of ``edge``: the edge drawn thick and the horizontal
+    segment from the vertex to it solid, both in the sweep's colour, over the dotted sweep
+    line (the textbook's definition drawn: the segment lies inside P, and no vertex yet seen
+    sees the edge from lower down). It stays while that vertex helps that edge; the next
+    helper of the edge takes its place."""
+    drawn = _helper_drawing(board, beat)
+    key = _helper_key(beat.edge)
+    anims: list = [_replace(board, key, drawn)]
+    anims.append(Indicate(board.markers[beat.vertex], color=board.theme.sweep))
+    least = 0.0 if beat.pace >= 1.0 else board.shared_time(beat)
+    board.play(beat, *anims, run_time=0.9, least=least)
+
+
+def _helper_key(edge: tuple[str, str]) -> str:
+    """The key a helper's drawing is kept under: its edge's (``helper:A–B``)."""
+    return f"helper:{edge[0]}–{edge[1]}"
+
+
+def _helper_drawing(board: Board, beat: Helper) -> VGroup:
+    """The edge, thick, and the segment from the vertex straight to it, each with a gap
+    round every vertex label it would run through."""
+    theme = board.theme
+    labels = unary_union([box(*area_of(marker[-1])).buffer(HELPER_LABEL_GAP, join_style="mitre")
+                          for marker in board.markers.values()])
+    top, bottom = (board.vertex(v)[:2] for v in beat.edge)
+    seen = (board.vertex(beat.vertex)[:2], board.at(beat.meets)[:2])
+    parts = [tag(Line((*p, 0), (*q, 0), color=theme.sweep, stroke_width=theme.stroke * 2.2),
+                 "called", "helper:edge") for p, q in around_labels([(tuple(top), tuple(bottom))], labels)]
+    parts += [tag(Line((*p, 0), (*q, 0), color=theme.sweep, stroke_width=theme.stroke * 1.3),
+                  "called", "helper:sight") for p, q in around_labels([(tuple(seen[0]), tuple(seen[1]))], labels)]
+    group = VGroup(*parts)
+    if not group.submobjects:  # keeps a transform happy: always one (empty) piece
+        group.add(Line((*top, 0), (*top, 0), stroke_opacity=0))
+    return tag(group, "called", "helper")
+
+
 def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
     u, w = beat.points
     line = tag(Line(board.at(u), board.at(w), color=board.theme.argument,
@@ -231,7 +310,8 @@ def pieces(board: Board, beat: Pieces) -> None:
                    f"piece:{k + 1}")
         board.keep(f"piece:{k + 1}", tint)
         tints.append(FadeIn(tint))
-    board.play(beat, *board.drop("sweep"), *tints, run_time=1.2)
+    helpers = [key for key in board.objects if key.startswith("helper:")]
+    board.play(beat, *board.drop("sweep", *helpers), *tints, run_time=1.2)
 
 
 def stack_step(board: Board, beat: StackStep) -> None:
@@ -403,8 +483,10 @@ def _whole(board: Board, beat: Stack) -> None:
     tints = [k for k in board.objects if k.startswith("piece:")]
     whole = triangulation_pieces(beat.triangulation, board.at, theme)
     n = board.polygon.n + sum(len(h.points) for h in board.holes)
-    count = _count(board, count_words(n, len(board.holes), len(whole)))
+    count, gone = _count(board, count_words(n, len(board.holes), len(whole)))
     board.keep("triangulation", VGroup(*whole))
+    if gone:  # the panel's polygon goes before the count comes in its place (never crossfaded)
+        board.scene.play(*[FadeOut(m) for m in gone], run_time=0.5)
     shown: list[FadeIn] = []
     if count is not None:
         board.keep("counter", count)
@@ -418,30 +500,54 @@ def _whole(board: Board, beat: Stack) -> None:
     board.scene.wait(1.0)
 
 
-def _count(board: Board, words: str) -> VMobject | None:
+def _count(board: Board, words: str) -> tuple[VMobject | None, list[VMobject]]:
     """The count ``words`` (n − 2, or n + 2h − 2 with holes), where it keeps clear of P, its
     labels, the title, the panel and the subtitle (:func:`_taken`,
     :func:`metaphors.layout.free_place`), far enough from a label not to be read with it
-    (:data:`COUNT_GAP`): outside P's hull where it can (not in a notch of P), in one line or
-    two. None where nothing fits (a panel of source takes the whole right half): the
-    triangles and the caption's count alone then, as for divide and conquer
-    (:mod:`metaphors.pieces`); under P the count met the bottom vertex's label and the
-    subtitle."""
+    (:data:`COUNT_GAP`): outside P's hull where it can (not in a notch of P), on one line;
+    where no line is free, in the panel's polygon's place, the panel giving it up (what to
+    fade out: :meth:`metaphors.panel.Panel.give_up_polygon`); in two lines only where even
+    that is not free (split over two lines in the top-left corner, "n − 2 = 13 − 2" over
+    "= 11 triangles" read as two things, chapter 5 at 94 s). None where nothing fits (a
+    panel of source takes the whole right half): the triangles and the caption's count alone
+    then, as for divide and conquer (:mod:`metaphors.pieces`); under P the count met the
+    bottom vertex's label and the subtitle."""
     theme = board.theme
-    taken = _taken(board)
-    hull = Region([tuple(board.at(p)[:2]) for p in board.polygon.points]).convex_hull
     head, _, tail = words.rpartition(" = ")  # "n − 2 = 13 − 2", "11 triangles"
-    # the last try nearer P's labels: a keyhole's long "n + 2h − 2 = …" found no room else
-    for around, gap in ((unary_union([taken, hull]), COUNT_GAP), (taken, COUNT_GAP),
-                        (taken, COUNT_GAP / 3)):
-        for said in (words, f"{head}\n= {tail}"):
-            count = tag(text(said, font=theme.font, size=theme.label_size + 2,
-                             colour=theme.result), None, "counter")
-            found = free_place(count.width, count.height, around, clearance=gap)
-            if found is not None:
-                left, top = found
-                return count.move_to((left + count.width / 2, top - count.height / 2, 0))
-    return None
+
+    def placed(said: str, around: BaseGeometry, gap: float) -> VMobject | None:
+        count = tag(text(said, font=theme.font, size=theme.label_size + 2,
+                         colour=theme.result), None, "counter")
+        found = free_place(count.width, count.height, around, clearance=gap)
+        if found is None:
+            return None
+        left, top = found
+        return count.move_to((left + count.width / 2, top - count.height / 2, 0))
+
+    def tries(taken: BaseGeometry, near: bool) -> list[tuple[BaseGeometry, float]]:
+        hull = Region([tuple(board.at(p)[:2]) for p in board.polygon.points]).convex_hull
+        # ``near``: the last try nearer P's labels and edges (a keyhole's long
+        # "n + 2h − 2 = …" found no room else)
+        return [(unary_union([taken, hull]), COUNT_GAP), (taken, COUNT_GAP),
+                *([(taken, COUNT_GAP / 3)] if near else [])]
+
+    panel = board.panel
+    room = None
+    if panel.shows_polygon and not panel.polygon_gone:
+        panel.polygon_gone = True  # its place, as if it were gone, for the search
+        room = _taken(board)
+        panel.polygon_gone = False
+    # one line clear of all; else in the panel's polygon's place; else nearer P; else two
+    for said, taken, near, gone in ((words, _taken(board), False, False),
+                                    (words, room, False, True),
+                                    (words, _taken(board), True, False),
+                                    (f"{head}\n= {tail}", _taken(board), True, False)):
+        if taken is None:
+            continue
+        for around, gap in tries(taken, near):
+            if (count := placed(said, around, gap)) is not None:
+                return count, panel.give_up_polygon() if gone else []
+    return None, []
 
 
 # --- what the monotone triangulation reads from the log ------------------------------------------
@@ -470,6 +576,17 @@ class MonotoneDiagonal(Beat):
 
     labels: tuple[str, str]
     points: tuple[Point, Point]
+
+
+@beat_kind("helper")
+class Helper(Beat):
+    """``vertex`` becomes the helper of ``edge`` (its upper end, then its lower), the edge
+    directly left of it: the lowest vertex yet that sees it straight to its left; ``meets``:
+    where the horizontal through the vertex meets the edge."""
+
+    vertex: str
+    edge: tuple[str, str]
+    meets: Point
 
 
 @beat_kind("pieces")
@@ -513,13 +630,71 @@ def _kinds(walk: Walk) -> dict[str, str]:
     return walk.memo("monotone.kinds", dict)
 
 
+def _joined(walk: Walk) -> set[str]:
+    """The vertices a diagonal joins (both ends of each ``add_diagonal``): the step where
+    each became a helper is one the viewer must see (F became B–C's helper under "Vertices
+    H, B, G and F: the same steps, faster", then "D joins its helper F"), and a vertex whose
+    step adds a diagonal is seen whole (the holes' E: its helper step, after its diagonal,
+    went under the next vertex's summary)."""
+    labels = list(walk.root_points())
+    return walk.memo("monotone.joined", lambda: {
+        labels[k] for e in walk.log.events
+        if e.kind == "return" and e.name == "add_diagonal" for k in walk.result_ints(e)})
+
+
+def _key_vertices(walk: Walk) -> set[str]:
+    """The vertices whose steps play at full pace under their own words (:func:`read_classify`)."""
+    return walk.memo("monotone.key", set)
+
+
 def read_classify(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """The sweep reaches v: its kind. Its steps are key steps (full pace, their own words,
+    never in a summary) if it is a split or merge vertex, the first of its kind (each kind
+    is taught once on the picture: the end vertices E and C went by in a summary, never
+    named), or a helper a diagonal will join."""
     v, kind = walk.ref(call, "v"), walk.result_string(ret)
     _kinds(walk)[v] = kind
+    seen = walk.memo("monotone.kinds seen", set)
+    key = kind in ("split", "merge") or kind not in seen or v in _joined(walk)
+    seen.add(kind)
+    if key:
+        _key_vertices(walk).add(v)
     yield walk.call_beat(Classify, f"{v}: {KINDS.get(kind, kind)}", call, ret,
-                         key_step=kind in ("split", "merge"), roles={v: _kind_role(kind)},
+                         key_step=key, roles={v: _kind_role(kind)},
                          vertex=v, kind=kind, at=point(walk.root_points()[v]))
     walk.count_claim("vertex", v)  # after its beat: the beat belongs to the vertex it classifies
+
+
+def _helpers(walk: Walk) -> dict[tuple[str, str], str]:
+    """Each edge's helper as the run has set it so far (an edge not here: its upper end,
+    the vertex that put it on the line)."""
+    return walk.memo("monotone.helpers", dict)
+
+
+#: what a helper is, said with the first (de Berg et al.: the lowest vertex above the sweep
+#: line whose horizontal segment to the edge lies inside P)
+HELPER_WORDS = "the lowest vertex yet that sees {edge} straight left"
+
+
+def read_helper(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """v becomes the helper of the edge directly left of it: the first time with what a
+    helper is, then in place of whom."""
+    where = walk.root_points()
+    v, top, bottom = (walk.ref(call, name) for name in ("v", "top", "bottom"))
+    helpers = _helpers(walk)
+    first = not walk.memo("monotone.helped", list)
+    walk.memo("monotone.helped", list).append(v)
+    # one line each: two lines' first ran over the bottom vertex's label (C, at 37 s)
+    edge = f"{top}–{bottom}"
+    said = (f"{v} becomes {edge}'s helper: {HELPER_WORDS.format(edge=edge)}" if first
+            else f"{v} becomes {edge}'s helper in place of {helpers.get((top, bottom), top)}")
+    helpers[(top, bottom)] = v
+    (x0, y0), (x1, y1), (_, y) = where[top], where[bottom], where[v]
+    meets = (x0 + (x1 - x0) * (y - y0) / (y1 - y0), y) if y1 != y0 else (x1, y)
+    beat = walk.call_beat(Helper, said, call, ret, key_step=first or v in _key_vertices(walk),
+                          roles={v: _kind_role(_kinds(walk).get(v, ""))}, vertex=v,
+                          edge=(top, bottom), meets=point(meets))
+    yield walk.closing_claim(beat)  # a step of v's, not of the vertex after it
 
 
 def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -527,8 +702,10 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     labels = list(where)
     u, w = (labels[k] for k in walk.result_ints(ret))
     handler = walk.stack[-2].name if len(walk.stack) > 1 else ""
-    why = (f"the split vertex {u} joins its helper {w}" if handler == "handle_split"
-           else f"{u} takes over from the merge vertex {w}")
+    edge = "–".join(_helped_edge(walk, w, ret))
+    why = (f"the split vertex {u} joins {w}, the helper of edge {edge} on its left"
+           if handler == "handle_split"
+           else f"{edge}'s helper {w} is a merge vertex, so {u} joins it")
     # u keeps the colour of its kind: a merge vertex taking over (K from M) stays pink, not
     # the blue a start vertex had (one colour, one meaning: metaphors/theme.py)
     yield walk.call_beat(MonotoneDiagonal, f"Diagonal {named_together((u, w))}: {why}", call,
@@ -536,6 +713,20 @@ def read_diagonal(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
                          roles={u: _kind_role(_kinds(walk).get(u, "")), w: (
                         "argument" if handler == "handle_split" else "merge")},
                          labels=(u, w), points=(point(where[u]), point(where[w])))
+
+
+def _helped_edge(walk: Walk, w: str, ret: Event) -> tuple[str, str]:
+    """The edge whose helper ``w`` is when a diagonal joins it: as the run set it, else (the
+    edge's own upper end, never set) the edge of the next helper set, the one the split
+    vertex takes over."""
+    found = [edge for edge, helper in _helpers(walk).items() if helper == w]
+    if found:
+        return found[-1]
+    after = next((e for e in walk.log.events[ret.seq:]
+                  if e.kind == "call" and e.name == "set_helper"), None)
+    if after is None:
+        return (w, w)
+    return walk.ref(after, "top"), walk.ref(after, "bottom")
 
 
 def read_pieces(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -572,15 +763,28 @@ def read_push(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     shown = _shown(walk)
     done = [v for v in shown if v not in chain]
     if done or shown != list(chain[:-1]):
-        waiting = ", ".join(chain[:-1]) + f" and {chain[-1]}" if len(chain) > 1 else chain[-1]
-        caption = (f"{', '.join(done)} {'is' if len(done) == 1 else 'are'} done: "
-                   if done else "") + f"{waiting} wait{'s' if len(chain) == 1 else ''} on the stack"
+        # the words say the change drawn: the bottom goes, the old top comes back (it had
+        # "left" under the cut before: "H leaves", then "H and B wait" read as a contradiction)
+        back = [v for v in chain[:-1] if v not in shown]
+        said = [f"{_listed(done)} {'is' if len(done) == 1 else 'are'} done"
+                ] if done else []
+        if back:
+            said.append(f"{_listed(back)} {'goes' if len(back) == 1 else 'go'} back on the "
+                        f"stack, {chain[-1]} on top")
+        else:
+            said.append(f"{chain[-1]} waits on the stack")
+        caption = ": ".join(said)
     else:
         caption = f"{chain[-1]} waits on the stack"
     shown[:] = chain
     yield walk.call_beat(StackStep, caption, call, ret, roles={},
                          chain=chain, points=points_of(where[v] for v in chain), cut=(), triangle=(),
                          depth=_depth(walk))
+
+
+def _listed(labels: Sequence[str]) -> str:
+    """``H``, ``H and I``, ``G, H and I``."""
+    return labels[0] if len(labels) == 1 else ", ".join(labels[:-1]) + " and " + labels[-1]
 
 
 def read_cut(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
@@ -636,9 +840,10 @@ def _bare_run(walk: Walk, ret: Event) -> int:
 
 
 READS: Mapping[str, Reading] = {"classify_vertex": read_classify, "add_diagonal": read_diagonal,
+         "set_helper": read_helper,
          "monotone_pieces": read_pieces, "triangulate_monotone_piece": read_stack,
          "push": read_push, "cut_off": read_cut}
 PERFORMS: Performances = performs(act(Classify, classify),
-                                  act(MonotoneDiagonal, monotone_diagonal),
+                                  act(MonotoneDiagonal, monotone_diagonal), act(Helper, helper),
                                   act(Pieces, pieces), act(StackStep, stack_step),
                                   act(Stack, stack))

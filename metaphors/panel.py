@@ -125,6 +125,19 @@ class Panel:
         #: with the result (metaphors.drawing.ending_beat); None: not known
         self.run_call: str | None = None
         self.roles: dict[str, str] = {}
+        #: the panel's polygon was taken off at the run's end (:meth:`give_up_polygon`)
+        self.polygon_gone = False
+
+    def give_up_polygon(self) -> list:
+        """Take the panel's polygon and its markers off for the rest of the run, and give
+        them (to fade out): at a run's end, where the whole triangulation is drawn large, the
+        small copy says nothing more and its place holds what has no other (the monotone
+        count on one line, split over two in the top-left corner before). Nothing if it
+        shows none."""
+        if not self.shows_polygon or self.polygon_gone:
+            return []
+        self.polygon_gone = True
+        return [self.outline, *self.markers.values()]
 
     def show_code(self, code) -> None:
         """Show these (line number, text) rows instead (before the panel is on screen): a
@@ -171,7 +184,7 @@ class Panel:
         return self.mode != SOURCE or not self.code_lines
 
     def mobjects(self) -> list:
-        if not self.shows_polygon:
+        if not self.shows_polygon or self.polygon_gone:
             return [self.code, self.call]
         return [self.outline, *self.markers.values(), self.code, self.call]
 
@@ -287,7 +300,8 @@ class Panel:
         the source); ``at_rest``: all back to their ink (:meth:`metaphors.board.Board.play`);
         ``focus``: the part of P the call runs on, as the board's
         (:func:`metaphors.labels.new_colour`)."""
-        return self._recolour(beat.roles, at_rest, focus) if self.shows_polygon else []
+        shown = self.shows_polygon and not self.polygon_gone
+        return self._recolour(beat.roles, at_rest, focus) if shown else []
 
     def follow_text(self, beat: Beat) -> list[Animation]:
         """Animations moving the light to this beat's line and showing its call line (none if

@@ -89,13 +89,15 @@ def _label_places(board: Board, new: Frame,
     (:func:`metaphors.labels.place_ring_labels`: its outline, the lines drawn on it and the
     claims still to come). Kept upright and carried round with the turn, the labels of a
     thin fruit shrunk by a zoom stood inside it (chapter 4's M and G) and left its ✓ no room.
-    The labels moved off the ball's way for now are placed too: they do not go back."""
+    The labels moved off the ball's way for now, or aside off a test triangle, are placed
+    too: they do not go back."""
     markers = {name: m for name, m in board.markers.items()
                if isinstance(m, VGroup) and len(m) > 1}
     if _upright(board.frame):
         board.home = {name: m[1].get_center() - m[0].get_center() for name, m in markers.items()}
     for name in markers:
         board.moved_for_now.pop(name, None)
+        board.aside.pop(name, None)
     if _upright(new) and board.home:
         home, board.home = board.home, {}
         return {name: new.to_scene(board.where[name]) + home[name]

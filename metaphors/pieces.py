@@ -1,7 +1,10 @@
 """Divide and conquer (Lennes): the verified diagonal becomes an edge and the polygon falls into
-two pieces, each tinted unlike its neighbours; a piece that is a triangle is finished and fills
-in; after the last split the whole triangulation shows with its count, n − 2. The pieces, their
-points and labels come from the log (the ``split`` call and the pieces it enters).
+two pieces, each tinted unlike its neighbours; the run takes up each part in turn (the
+recursion, ``next_part``: it lights up), and a part that is a triangle is done (the base case,
+``done``: it fills in, in the result's green, unlike its neighbours); after the last the whole
+triangulation shows with its count, n − 2. Each step lights its own row of the pseudocode. The
+pieces, their points and labels come from the log (the ``split`` call and the pieces it
+enters, the triangles ``done`` enters).
 
 With its heuristic a black box (:class:`story.beats.FindDiagonal`), the piece worked on lights
 up and a box beside the picture asks for its inner diagonal; the claim that comes out is drawn
@@ -13,11 +16,16 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
 
-from manim import DOWN, RIGHT, FadeIn, Indicate, Mobject, RoundedRectangle, VGroup
+from manim import DOWN, RIGHT, FadeIn, FadeOut, Indicate, Mobject, RoundedRectangle, VGroup
 from manim import Polygon as MPolygon
 
 from metaphors.board import Board, Playable
-from metaphors.drawing import ending_beat, triangulation_pieces
+from metaphors.drawing import (
+    ending_beat,
+    neighbour_shades,
+    shaded_triangle,
+    triangulation_pieces,
+)
 from metaphors.layout import (
     METAPHOR,
     PANEL_POLYGON,
@@ -64,6 +72,65 @@ def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
         labels=tuple(tuple(entered[k]["labels"]) for k in pieces if k in entered)))
 
 
+@beat_kind("next-part")
+class NextPart(Beat):
+    """The run takes up ``piece`` (a key), a part a split made, to triangulate it the same
+    way: the recursion."""
+
+    piece: str
+
+
+@beat_kind("done")
+class Done(Beat):
+    """The part ``piece`` (a key) is a triangle, with its ``points`` and ``labels``: done, the
+    base case. ``shade``: its fill among the run's triangles (:func:`neighbour_shades`)."""
+
+    piece: str
+    points: tuple[Point, ...]
+    labels: tuple[str, ...]
+    shade: int
+
+
+#: what the recursion's step says (the first time, with what grey means:
+#: :data:`GREY_SAID`)
+SAME_WAY = "Triangulate this part the same way"
+
+
+def read_next_part(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """A part taken up: a beat of its own unless it is a triangle (its ``done`` says so)."""
+    piece = walk.ref(call, "piece")
+    state = walk.live.get(piece) or walk.entered_after(call, piece)
+    if len(state.get("labels", ())) != 3:
+        yield walk.call_beat(NextPart, SAME_WAY, call, ret, piece=piece, roles={})
+
+
+def read_done(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """A triangle done: its corners, and its shade among all the run's triangles."""
+    made = walk.result_ref(ret)
+    state = walk.entered_after(call, made)
+    shades = walk.memo("triangle shades", lambda: _shades(walk))
+    points = points_of(state["points"])
+    # the last claim's (its split made the triangle): counted with the next, a triangle done
+    # came under the next diagonal's summary ("Diagonal 10" over diagonal 9's triangles)
+    yield walk.closing_claim(walk.call_beat(Done, f"{''.join(state['labels'])} is a triangle: done", call, ret,
+                         piece=walk.ref(call, "piece"), points=points,
+                         labels=tuple(state["labels"]), shade=shades[_corners_key(points)],
+                         roles={}))
+
+
+def _corners_key(points: Sequence[Sequence[float]]) -> tuple:
+    return tuple(sorted((float(x), float(y)) for x, y in points))
+
+
+def _shades(walk: Walk) -> dict[tuple, int]:
+    """Each of the run's triangles (every one ``done`` enters, by its corners) → its shade:
+    as the whole triangulation is drawn at the end (:func:`triangulation_pieces`)."""
+    found = [points_of(state_of(e)["points"]) for e in walk.log.events
+             if e.kind == "enter" and e.target is not None and e.target.startswith("△")]
+    return {_corners_key(t): shade for t, shade in zip(found, neighbour_shades(found),
+                                                       strict=True)}
+
+
 def _tint_colour(board: Board, labels: Sequence[str], avoid: set[str]) -> str:
     """A palette colour for a new piece: unlike its neighbours (tints sharing an edge), then the
     least used; ties by palette order."""
@@ -86,20 +153,20 @@ def _labels(tint: Mobject) -> list[str]:
     return labels
 
 
-def _tint(board: Board, points: Sequence[Sequence[float]], labels: Sequence[str], colour: str,
-          done: bool) -> MPolygon:
+def _tint(board: Board, points: Sequence[Sequence[float]], labels: Sequence[str],
+          colour: str) -> MPolygon:
+    """A part's tint, under the edges and labels."""
     theme = board.theme
-    role, name = ("result", "triangle:") if done else ("idle", "piece:")
     mobject = MPolygon(*[board.at(p) for p in points], stroke_width=0, fill_color=colour,
-                       fill_opacity=theme.done_opacity if done else theme.piece_opacity)
+                       fill_opacity=theme.piece_opacity)
     mobject.set_z_index(-1)
     vars(mobject).update(trex_colour=colour, trex_labels=list(labels))  # see _colour, _labels
-    return tag(mobject, role, name + "".join(labels))
+    return tag(mobject, "idle", "piece:" + "".join(labels))
 
 
 def split(board: Board, beat: Split) -> None:
-    """The verified diagonal becomes an edge; the two halves get their own tints, and a half
-    that is a triangle is finished: it fills in."""
+    """The verified diagonal becomes an edge; the two halves get their own tints (a half that
+    is a triangle too: it is done when the run takes it up, :func:`done`)."""
     theme = board.theme
     anims = []
     line = board.objects.pop("claim", None)
@@ -110,28 +177,54 @@ def split(board: Board, beat: Split) -> None:
     anims += board.drop("verdict", f"piece:{beat.parent}")
     if board.outline.get_fill_opacity() > 0:
         anims.append(board.outline.animate.set_fill(opacity=0))
-    last = all(len(p) == 3 for p in beat.points) and not any(
-        key.startswith("piece:") for key in board.objects)
     chosen: set[str] = set()
     made: list[Mobject] = []
     for piece, points, labels in zip(beat.pieces, beat.points,
                                      beat.labels, strict=False):
-        done = len(points) == 3
         colour = _tint_colour(board, labels, chosen)
         chosen.add(colour)
-        tint = _tint(board, points, labels, colour, done)
-        board.keep(f"triangle:{''.join(labels)}" if done else f"piece:{piece}", tint)
+        tint = _tint(board, points, labels, colour)
+        board.keep(f"piece:{piece}", tint)
         anims.append(FadeIn(tint))
         made.append(tint)
     board.play(beat, *anims, *board.clear_labels(*made), run_time=1.2)
-    if last:  # the whole triangulation under its own caption: the split's is over
-        triangles = sum(1 for key in board.objects if key.startswith("triangle:"))
-        # the black box goes before the count comes where it stood: never two texts at once
-        finder = board.objects.get("finder")
-        if finder is not None:
-            board.scene.play(*board.drop("finder"), run_time=0.5)
-        board.play(ending_beat(beat, board.panel.pseudocode, triangles, board.panel.run_call),
-                   *_whole(board, finder), run_time=1.2, at_rest=True)
+
+
+def next_part(board: Board, beat: NextPart) -> None:
+    """The part taken up lights up, its vertices in their ink and the others grey (said the
+    first time): its caption comes with the colour (:meth:`Board.play` ``together``)."""
+    anims, said_grey = _light(board, beat.piece)
+    if said_grey:
+        beat = replace(beat, caption=f"{SAME_WAY}: grey vertices are not in it")
+    board.play(beat, *anims, run_time=1.2, together=True)
+
+
+def done(board: Board, beat: Done) -> None:
+    """A triangle is done: its part fills in, in the result's green at its shade, the other
+    vertices grey while it is looked at; after the last, the whole triangulation with its
+    count."""
+    theme = board.theme
+    part = board.objects.pop(f"piece:{beat.piece}", None)
+    corners = [board.at(p) for p in beat.points]
+    triangle = shaded_triangle(corners, beat.shade, theme).set_z_index(-1)
+    vars(triangle).update(trex_colour=theme.result, trex_labels=list(beat.labels))
+    board.keep(f"triangle:{''.join(beat.labels)}", tag(triangle, "result",
+                                                        f"triangle:{''.join(beat.labels)}"))
+    anims: list[Playable] = [FadeIn(triangle)]
+    if part is not None:
+        anims.append(FadeOut(part))
+    board.focus = frozenset(beat.labels)
+    board.play(beat, *anims, run_time=1.2, together=True)
+    if any(key.startswith("piece:") for key in board.objects):
+        return
+    # the last: the whole triangulation under its own caption, the black box gone before the
+    # count comes where it stood (never two texts at once)
+    triangles = sum(1 for key in board.objects if key.startswith("triangle:"))
+    finder = board.objects.get("finder")
+    if finder is not None:
+        board.scene.play(*board.drop("finder"), run_time=0.5)
+    board.play(ending_beat(beat, board.panel.pseudocode, triangles, board.panel.run_call),
+               *_whole(board, finder), run_time=1.2, at_rest=True)
 
 
 def _whole(board: Board, finder: Mobject | None) -> list[Playable]:
@@ -141,7 +234,7 @@ def _whole(board: Board, finder: Mobject | None) -> list[Playable]:
     theme = board.theme
     done = [k for k in board.objects if k.startswith("triangle:")]
     corners = [[board.where[label] for label in _labels(board.objects[k])] for k in done]
-    whole = triangulation_pieces(corners, board.at, theme)
+    whole = triangulation_pieces(corners, board.at, theme)  # the shades each was done in
     n = board.polygon.n
     shown: list[Playable] = [*board.drop(*done), *[FadeIn(t) for t in whole],
                              *board.clear_labels(*whole)]
@@ -252,10 +345,25 @@ def _place(finder: Mobject, taken: Sequence[Rect],
 GREY_SAID = "Find an inner diagonal of this polygon: grey vertices are not in it"
 
 
+def _light(board: Board, key: str) -> tuple[list[Playable], bool]:
+    """The animations lighting the piece ``key`` (P itself if it has none) as the one worked
+    on, its vertices in their ink and the others grey; and whether grey is said now (the
+    first time a smaller polygon is: grey, "not in the current call", drawn and never
+    explained read as a leftover)."""
+    theme = board.theme
+    piece = board.objects.get(f"piece:{key}", board.outline)
+    every = frozenset(board.markers)
+    focus = every if piece is board.outline else frozenset(_labels(piece))
+    said = (board.focus is None or board.focus >= every) and not focus >= every
+    board.focus = focus
+    vars(piece)["trex_lit"] = True  # lit: asked for its diagonal, it is not lit again
+    return [piece.animate.set_fill(theme.called, opacity=theme.active_opacity)], said
+
+
 def find(board: Board, beat: FindDiagonal) -> None:
-    """The piece worked on lights up, its vertices in their ink and the others grey (said
-    the first time: grey, "not in the current call", drawn and never explained read as a
-    leftover), and the black box is asked for its inner diagonal."""
+    """The black box is asked for an inner diagonal of the piece worked on (lit up here
+    unless its recursion's step lit it: :func:`next_part`): its caption comes with the
+    question's box and the piece's colour."""
     theme = board.theme
     finder = board.objects.get("finder")
     anims: list[Playable]
@@ -266,15 +374,15 @@ def find(board: Board, beat: FindDiagonal) -> None:
     else:
         # asked again: its "?" pulses in the black box's own blue (amber is a pick's)
         anims = [Indicate(finder[1], color=theme.called, scale_factor=1.3)]
-    piece = board.objects.get(f"piece:{beat.piece}", board.outline)
-    anims.append(piece.animate.set_fill(theme.called, opacity=theme.active_opacity))
-    every = frozenset(board.markers)
-    focus = every if piece is board.outline else frozenset(_labels(piece))
-    if (board.focus is None or board.focus >= every) and not focus >= every:
-        beat = replace(beat, caption=GREY_SAID)
-    board.focus = focus
-    board.play(beat, *anims, run_time=1.2)
+    if not vars(board.objects.get(f"piece:{beat.piece}", board.outline)).get("trex_lit"):
+        lighting, said_grey = _light(board, beat.piece)
+        anims += lighting
+        if said_grey:
+            beat = replace(beat, caption=GREY_SAID)
+    board.play(beat, *anims, run_time=1.2, together=True)
 
 
-READS: Mapping[str, Reading] = {"split": read_split}
-PERFORMS: Performances = performs(act(Split, split), act(FindDiagonal, find))
+READS: Mapping[str, Reading] = {"split": read_split, "next_part": read_next_part,
+                                "done": read_done}
+PERFORMS: Performances = performs(act(Split, split), act(FindDiagonal, find),
+                                  act(NextPart, next_part), act(Done, done))

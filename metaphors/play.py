@@ -20,12 +20,13 @@ from manim import Animation, FadeOut, Mobject
 from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.fruit import Keyhole
+from metaphors.gravity import GravityTurn
 from metaphors.layout import TITLE_Y, Box
 from metaphors.panel import Panel
 from metaphors.recorded import Recorded, captions_of, mark_step
 from metaphors.tags import tag
 from rendering.typeset import glyphs
-from story.beats import Beat, Claim, ShowPolygon
+from story.beats import Beat, Claim, ShowPolygon, ShowTriangle
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
 from story.storyboard import run_call, staged_pseudocode
@@ -54,11 +55,17 @@ def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
     first = cast(ShowPolygon, beats[0])  # a storyboard opens with its polygon
     holes = first.holes if isinstance(first, ShowPolygon) else ()
     recorded = cast(Recorded, scene)  # every BoardScene is Recorded (TraceScene, the player's)
-    claims = [beat.labels for run in (beats, *later) for beat in run if isinstance(beat, Claim)]
+    runs = [beats, *later]
+    claims = [*(beat.labels for run in runs for beat in run if isinstance(beat, Claim)),
+              *(side for run in runs for beat in run if isinstance(beat, ShowTriangle)
+                for side in _sides(beat.labels))]
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded),
                   claims=list(dict.fromkeys(claims)),
-                  cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)])
+                  cuts=[beat.points for beat in beats if isinstance(beat, Keyhole)],
+                  # a label with no room outside P beside it, with a leader, where the picture
+                  # never turns (a turn keeps labels upright and places them again)
+                  leaders=not any(isinstance(beat, GravityTurn) for run in runs for beat in run))
     _fill_panel(board.panel, scene, log)
     _fit_title(board.title)
     return board
@@ -103,6 +110,13 @@ def go_on(board: Board, scene: BoardScene, log: Log, title: str) -> list[Animati
     _fit_title(board.title)
     board.arriving = [board.title, *(panel.mobjects() if not kept else [panel.code, panel.call])]
     return [*(FadeOut(m) for m in going), *board.drop("claim", "crossed", "crossing", "verdict")]
+
+
+def _sides(corners: Sequence[str]) -> list[tuple[str, str]]:
+    """The sides of T = ABC as pairs of labels: its labels are placed clear of them as of
+    the claims (the exercise's E, placed clear of P's edges only, stood 0.1 from T's side
+    AC, and its pulse as a candidate pushed it onto the line)."""
+    return [(corners[k - 1], corners[k]) for k in range(len(corners))]
 
 
 def stretches(beats: Sequence[Beat]) -> list[int]:

@@ -15,13 +15,13 @@ from typing import Protocol
 
 import numpy as np
 import shapely
-from manim import Create, FadeIn, FadeOut, Line, Square, VGroup, VMobject, Write
+from manim import Create, FadeIn, FadeOut, Line, Square, Transform, VGroup, VMobject, Write
 from manim import Polygon as MPolygon
 
 from geometry.polygon import Polygon
 from metaphors.captions import whole_frames
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import measured_markers
+from metaphors.labels import haloed, measured_markers
 from metaphors.layout import (
     SUBTITLE_WIDTH,
     TITLE_Y,
@@ -42,6 +42,8 @@ LEGEND = (3.6, 2.2)  # top left corner of the legend
 #: what red is in a wrong heuristic's pass and in its run: the one legend entry for both
 #: (its words narrow enough for the legend's column, from :data:`LEGEND` to the frame's margin)
 OUTSIDE = "outside P, in T"
+#: how far round a red line (a tool's part outside P, stroked thick) a marker counts as on it
+RED_LINE_REACH = 0.04
 
 
 class Stage:
@@ -59,8 +61,11 @@ class Stage:
                            "analysis:polygon")
         # the labels clear of the claims to come (``claims``: pairs of labels) as of the edges
         pairs = [(self.polygon.labels.index(u), self.polygon.labels.index(v)) for u, v in claims]
+        # and of T's sides (D stood 0.08 from T's side AC in chapter 2's analyses)
+        corners = self.frame.many(triangle) if triangle else []
+        sides = [(corners[k - 1], corners[k]) for k in range(len(corners))]
         self.markers = {label: tag(m, "idle", f"vertex:{label}").set_z_index(4) for label, m in
-                        measured_markers(self.polygon, (), self.frame, theme, pairs)}
+                        measured_markers(self.polygon, (), self.frame, theme, pairs, sides)}
         self.triangle = None
         if triangle:
             self.triangle = tag(MPolygon(*self.frame.many(triangle), color=theme.called,
@@ -86,6 +91,23 @@ class Stage:
         anims = [Write(self.title), Create(self.outline), *[FadeIn(m) for m in
                                                             self.markers.values()]]
         return anims + ([Create(self.triangle)] if self.triangle is not None else [])
+
+    def set_apart(self, red, line=None) -> list:
+        """The transforms giving each marker that the red region ``red`` (shapely, polygon
+        coordinates: a tool's sweep outside P) or the red ``line`` (its stroke) touches — its
+        label or its dot — a dark halo: the vertex reads on the red, and the red round it
+        (chapter 2's amber D, the pick, stood inside the red wedge, its dot on the wedge's
+        edge: neither read)."""
+        def on_screen(shape):
+            return shapely.transform(shape, lambda xy: np.array([self.at(p)[:2] for p in xy]))
+
+        shapes = [on_screen(red)]
+        if line is not None:
+            shapes.append(on_screen(line).buffer(RED_LINE_REACH))
+        touched = shapely.union_all(shapes)
+        return [Transform(marker, haloed(marker, self.theme.background, dot=True))
+                for marker in self.markers.values()
+                if any(touched.intersects(shapely.box(*area_of(part))) for part in marker)]
 
     def retitle(self, words: str) -> list:
         new = self._title(words)

@@ -8,12 +8,16 @@ Colours come from the theme: T and its corners in the *called* colour, candidate
 
 from __future__ import annotations
 
-from manim import Camera, DashedLine, Scene, VGroup
+from typing import cast
+
+from manim import DL, UR, Camera, DashedLine, LineJointType, Scene, VGroup, VMobject
 from manim import Polygon as MPolygon
+from shapely.geometry import Polygon as Region
+from shapely.geometry import box as area
 
 from geometry.diagonals import find_diagonal
 from metaphors.drawing import Frame, polygon_mobject
-from metaphors.labels import placed_vertex_markers
+from metaphors.labels import LABEL_HALO, placed_vertex_markers
 from metaphors.theme import THEME, Theme
 from rendering import typeset
 from rendering.typeset import FlatText
@@ -49,6 +53,7 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME,
     # question names or the answer draws: a class reads them with no run to explain them
     markers = placed_vertex_markers(p, frame, theme, diagonals=drawn_diagonals(exercise),
                                     lines=answer_front(exercise))
+    _haloed_on(markers, [frame.to_scene(p.points[k])[:2] for k in (a, b, c)], theme)
     for k in (a, b, c):
         markers[k].set_color(theme.called)
     for k in exercise.candidates:
@@ -66,17 +71,30 @@ def still_mobjects(exercise: Exercise, theme: Theme = THEME,
     return [polygon_mobject(p, frame, theme), t, *options, markers, title, legend]
 
 
+def _haloed_on(markers: VGroup, corners: list, theme: Theme) -> None:
+    """Each label that stands over T's tint (a candidate's must: its vertex lies in T) on a
+    dark halo, so that it reads as on the background (E, F, G and M stood on the tint)."""
+    t = Region(corners)
+    for marker in markers:
+        label = cast(VMobject, marker[1])  # a marker is its dot and its label's text
+        (x0, y0, _), (x1, y1, _) = label.get_corner(DL), label.get_corner(UR)
+        if t.intersects(area(x0, y0, x1, y1)):
+            label.joint_type = LineJointType.ROUND  # a mitred halo spikes at M's points
+            label.set_stroke(theme.background, width=LABEL_HALO, background=True)
+
+
 #: where :func:`still_mobjects` puts the vertices' markers (dot and label each) in its list
 MARKERS_AT = -3
 
 
 def drawn_diagonals(exercise: Exercise) -> tuple[tuple[int, int], ...]:
     """The diagonals the still and the answer draw on the polygon: T's AC, the options, the
-    claim asked about."""
+    claim asked about, the pairs a rule of one's own measured."""
     a, _, c = exercise.triangle
-    claimed = ((find_diagonal(exercise.polygon, exercise.heuristic).pair,)
+    claimed = ((exercise.claim,) if exercise.claim is not None else
+               (find_diagonal(exercise.polygon, exercise.heuristic).pair,)
                if exercise.kind == "claim" and exercise.heuristic else ())
-    return ((a, c), *exercise.options, *claimed)
+    return ((a, c), *exercise.options, *claimed, *exercise.measured)
 
 
 def answer_front(exercise: Exercise) -> list[list[tuple[float, float]]]:

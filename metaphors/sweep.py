@@ -177,7 +177,7 @@ def drawn_segment(board: Board, start: np.ndarray, end: np.ndarray, colour: str,
 def label_gaps(board: Board, gap: float = LABEL_GAP) -> shapely.Geometry:
     """The vertex labels' boxes, each grown by ``gap``: where a tool's line leaves a gap
     (:func:`around_labels`)."""
-    return shapely.union_all([shapely.box(*area_of(marker[-1])).buffer(gap, join_style="mitre")
+    return shapely.union_all([shapely.box(*area_of(marker[1])).buffer(gap, join_style="mitre")
                               for marker in board.markers.values()])
 
 
@@ -232,7 +232,9 @@ def light(board: Board, label: str, first: bool, axis: Line,
     ring = tag(Circle(radius=0.13, color=colour, stroke_width=theme.stroke).move_to(at),
                role, f"lit:{label}")
     kept = [ring]
-    anims: list[Animation] = [FadeIn(ring, scale=1.6), Indicate(board.markers[label], color=colour)]
+    anims: list[Animation] = [FadeIn(ring, scale=1.6)]
+    if not first:  # the pick is not pulsed: the play turns it amber now, as the tool reaches it
+        anims.append(Indicate(board.markers[label], color=colour))
     piece = _astray_at(board, axis, clip, at) if first else None
     if piece is not None:
         p, q = _3d(piece[0]), _3d(piece[1])
@@ -327,13 +329,14 @@ def sweep(board: Board, beat: Sweep) -> None:
     origin = board.at(through)
     step = board.at((through[0] + normal[0], through[1] + normal[1])) - origin  # one unit, scene
     board.scene.add(axis)
-    board.play(beat, FadeIn(drawing), run_time=0.6)
+    # the pick stays a candidate until the line reaches it: amber then, with its ring
+    board.play(beat.before_pick(), FadeIn(drawing), run_time=0.6)
     lit, offset = [], 0.0
     last = reached[-1][0].offset
     for k, (state, label) in enumerate(reached):
         travel = state.offset - offset
         offset = state.offset
-        board.play(beat, axis.animate.shift(step * travel),
+        board.play(beat if picked[0] else beat.before_pick(), axis.animate.shift(step * travel),
                    run_time=0.6 + board.length(abs(travel)) / 2.5)
         # what the line still sweeps over, from here to its last candidate
         now, then = _tool(axis, box), _tool(axis.copy().shift(step * (last - offset)), box)

@@ -13,8 +13,9 @@ called        blue        the object a call runs on (a vertex being looked at)
 argument      amber       a call's other inputs while it runs; a diagonal being drawn;
                           a claim not yet judged (then green or red)
 result        green       what a call gives; a correct claim; a triangulation's count
-rejected      red         fails: a wrong claim, its part outside P, the crossed edge,
-                          a vertex inside a triangle that is not an ear — never a kind
+rejected      red         fails: a wrong claim, its part outside P, the crossed edge
+                          (dashed in the recap, beside its solid claim), a vertex inside
+                          a triangle that is not an ear — never a kind
 idle          grey        everything not in the current call: the code's rows; a vertex
                           outside the piece divide and conquer works on (said in
                           chapter 1); elsewhere a vertex out of the call is in its ink
@@ -35,7 +36,9 @@ dial          grey        the frame of a close-up (gravity's window)
 fruit, rind   orange,     the fruit sliced (ear clipping), on its plate
               olive
 pieces        tints       the sub-polygons of divide and conquer and the monotone
-                          pieces; the triangles of a finished triangulation
+                          pieces (the parts a split or a partition makes)
+triangles     green       the triangles of a finished triangulation: the result's green,
+              shades      neighbours in other shades (never the pieces' tints)
 ============  ==========  ===========================================================
 
 >>> THEME.role_colour("result") == THEME.result
@@ -80,6 +83,9 @@ class Theme:
     #: tints of the sub-polygons of divide and conquer (the two halves of a split differ)
     pieces: tuple[str, ...] = ("#8e6cf0", "#2bb5a8", "#c9a25a", "#5b8fd5", "#9cbf4a")
     piece_opacity: float = 0.3
+    #: the fills of a finished triangulation's triangles, in the result's green: two that
+    #: share a side differ (:func:`metaphors.drawing.neighbour_shades`; a polygon's need two)
+    triangle_shades: tuple[float, ...] = (0.5, 0.2, 0.75, 0.35)
     done_opacity: float = 0.62
     active_opacity: float = 0.5  # the piece divide and conquer works on
     hand: str = "#c792ea"  # the clock hand (drawn solid inside the polygon, dashed outside)

@@ -8,12 +8,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Mapping
-from typing import Any
+from typing import Any, TypeVar
 
 import shapely
 from manim import (
     FadeIn,
     FadeOut,
+    Flash,
     Indicate,
     Mobject,
     UpdateFromAlphaFunc,
@@ -151,15 +152,31 @@ def water(board: Board, beat: Water) -> None:
     """The disk grows through each radius in turn; the first vertex it wets is the pick."""
     states = beat.states
     disk = _disk(board, states[0].center, 0.0)
-    board.play(beat, FadeIn(disk), run_time=0.5)
+    # the pick stays a candidate until the water reaches it (:func:`wets`)
+    shown = beat.before_pick()
+    board.play(shown, FadeIn(disk), run_time=0.5)
     radius = 0.0
-    for k, (state, reached) in enumerate(hits(states[1:])):
-        # the first wetted is the pick, the claim to be (amber); the others stay candidates
-        colour = board.theme.argument if k == 0 else board.theme.candidate
-        board.play(beat, _grow(board, disk, state.center, radius, state.radius),
-                   Indicate(board.markers[reached], color=colour), run_time=1.2)
+    for state, reached in hits(states[1:]):
+        board.play(shown, _grow(board, disk, state.center, radius, state.radius), run_time=1.2)
+        shown = wets(board, beat, shown, reached)
         radius = state.radius
     board.play(beat, FadeOut(disk), run_time=0.5)
+
+
+M = TypeVar("M", bound=Moving)
+
+
+def wets(board: Board, beat: M, shown: M, reached: str) -> M:
+    """The water has reached ``reached``: the pick turns amber (the claim to be) now, with
+    a flash where it stands (a pulse would hide its recolouring); another candidate pulses
+    in its pink. Returns the beat as shown from now on."""
+    if reached == beat.result:
+        board.play(beat, Flash(board.vertex(reached), color=board.theme.argument,
+                               flash_radius=0.3), run_time=0.6)
+        return beat
+    board.play(shown, Indicate(board.markers[reached], color=board.theme.candidate),
+               run_time=0.6)
+    return shown
 
 
 def _grow(board: Board, disk: MPolygon, center: Point, start: float, end: float,
@@ -178,21 +195,24 @@ def walled_water(board: Board, beat: WalledWater) -> None:
     centre = states[0].center
     region = visible_region(board.polygon, board.polygon.points.index(tuple(centre)))
     disk = tag(MPolygon(board.at(centre), board.at(centre)), "argument", "water")
-    board.play(beat, FadeIn(disk), run_time=0.3)
+    # the pick stays a candidate until the water reaches it (:func:`wets`)
+    shown = beat.before_pick()
+    board.play(shown, FadeIn(disk), run_time=0.3)
     visible = dict(beat.visible)
     radius = 0.0
     for state, reached in hits(states[1:]):
-        # the vertex it wets flashes amber, the claim to be, as the panel shows it; one an
-        # edge keeps the water from is never wet, and does not flash (it flashed red, a
-        # colour the legend keeps for "fails", and B's not seeing it went unsaid)
-        wets = ([Indicate(board.markers[reached], color=board.theme.argument)]
-                if visible.get(reached, False) else [])
 
         def wet(alpha: float, start: float = radius, end: float = state.radius):
             return region.intersection(
                 shapely.Point(centre).buffer(max(start + (end - start) * alpha, 1e-9), 64))
 
-        board.play(beat, _filling(board, disk, wet, "water", centre), *wets, run_time=1.2)
+        board.play(shown, _filling(board, disk, wet, "water", centre), run_time=1.2)
+        # the vertex it wets flashes as it is wet (the pick amber, the claim to be, as the
+        # panel shows it); one an edge keeps the water from is never wet, and does not flash
+        # (it flashed red, a colour the legend keeps for "fails", and B's not seeing it went
+        # unsaid)
+        if visible.get(reached, False):
+            shown = wets(board, beat, shown, reached)
         radius = state.radius
     board.play(beat, FadeOut(disk), run_time=0.5)
 
@@ -241,19 +261,17 @@ def flood(board: Board, beat: Flood) -> None:
     board.play(beat, FadeIn(band), run_time=0.3)
     level = 0.0
     middle = ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2)
+    # going under is no failure: a candidate still, as the clock's and the sweep's later
+    # ones (red means "fails", metaphors.theme's legend); the last one, the pick, amber as
+    # the water reaches it (:func:`wets`): the claim to be
+    shown = beat.before_pick()
     for state, reached in hits(states[1:]):
-        drowned = board.markers[reached]
-        is_last = state is states[-1]
-        # going under is no failure: a candidate still, as the clock's and the sweep's later
-        # ones (red means "fails", metaphors.theme's legend); the last one, the pick, amber:
-        # the claim to be
-        colour = board.theme.argument if is_last else board.theme.candidate
 
         def wet(alpha: float, start: float = level, end: float = state.level):
             return inner.intersection(_strip(a, c, towards, start + (end - start) * alpha))
 
-        board.play(beat, _filling(board, band, wet, "flood", middle),
-                   Indicate(drowned, color=colour), run_time=1.2)
+        board.play(shown, _filling(board, band, wet, "flood", middle), run_time=1.2)
+        shown = wets(board, beat, shown, reached)
         level = state.level
     board.play(beat, FadeOut(band), run_time=0.5)
 

@@ -36,8 +36,8 @@ from __future__ import annotations
 import itertools
 import math
 import random
-from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass, field
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from dataclasses import dataclass, field, replace
 
 from shapely.geometry import LineString
 from shapely.geometry import Point as ShapelyPoint
@@ -60,12 +60,25 @@ from geometry.predicates import (
 from geometry.samples import sample_from_spec
 from story.hunt import in_general_position
 from story.reach import reach_of
+from story.reading import reading_time
 from story.refs import call_of, state_of, target_of
-from story.registry import heuristics, spoken, wrong
+from story.registry import entry, heuristics, spoken, wrong
 from story.words import why_not_inner
 
-__all__ = ["KINDS", "PICKABLE", "Exercise", "answers_markdown", "crossed_edges", "front", "front_gap",
-           "make_exercises"]
+__all__ = [
+    "KINDS",
+    "PICKABLE",
+    "Exercise",
+    "answers_markdown",
+    "checking_time",
+    "confusions",
+    "crossed_edges",
+    "front",
+    "front_gap",
+    "hunted_exercise",
+    "make_exercises",
+    "measured_pairs",
+]
 
 KINDS = ("pick", "claim", "inner")
 #: (generator, smallest n, largest n): shapes whose T often holds several candidates.
@@ -90,6 +103,10 @@ MIN_CLEARANCE = 0.045
 #: the least angle at a vertex, inside or out (degrees): a needle under it is a sliver on
 #: screen, its labels crowded (the lecture polygon's rule, issue 22 item 5)
 MIN_ANGLE = 15.0
+#: how long an answer stays up (seconds): at least :data:`LEAST_CHECKING`, and its reading
+#: time with :data:`CHECK_EACH` for each thing on the picture it asks the class to check (an
+#: answer naming three diagonals was up 4.5 s, too short to check them against the picture)
+LEAST_CHECKING, CHECK_EACH = 8.0, 2.0
 
 #: each rule's story as a reason tells it: its lead, and what its number means at the pick
 #: (the ``{v}`` in it, an angle) or None: a length is left unsaid (the class cannot measure it
@@ -126,10 +143,23 @@ class Exercise:
     candidates: tuple[int, ...]  # indices of the candidates in T
     options: tuple[tuple[int, int], ...] = ()  # the diagonals a question names (inner)
     polygon: Polygon = field(compare=False, repr=False, default=None)  # type: ignore[assignment]  # always given (by _exercise); the default only lets it follow the fields that have one
+    #: the claim asked about, for a rule the registry does not run (a heuristic of one's own:
+    #: :func:`hunted_exercise`); None: the registry's heuristic claims it
+    claim: tuple[int, int] | None = None
+    #: the vertex pairs whose distance the rule compared: the answer draws them, so that
+    #: the class sees what "nearer" means ("Distance to C for D: 2.2" was a bare number)
+    measured: tuple[tuple[int, int], ...] = ()
 
     @property
     def title(self) -> str:
         return f"{self.number}. {self.question}"
+
+    @property
+    def checks(self) -> int:
+        """How many things the answer asks the class to check against the picture: each
+        diagonal a question names, else its one pick or claim (the answer stays up the
+        longer: :data:`CHECK_EACH`)."""
+        return max(1, len(self.options))
 
     @property
     def still(self) -> str:
@@ -389,18 +419,61 @@ def front(polygon: Polygon, triangle: tuple[int, int, int], heuristic: str,
     return _lines_of(shapes[heuristic]().intersection(region))
 
 
-def _pick(number: int, heuristic: str) -> Callable[[_Frame], Exercise | None]:
+def confusions(heuristic: str) -> tuple[str, ...]:
+    """The rules a class may apply in place of ``heuristic``: Scaling (the nearest candidate
+    to B, what a class guesses with no rule) and the rule's twin of the same metaphor (a
+    wrong rule's correction, a correct rule's first wrong one). A pick exercise is fair only
+    where each of them picks another vertex: on the old first exercise Correct Translation,
+    Translation and Scaling all picked E, and a class using a wrong rule got it right. (Not
+    every wrong rule: the two clocks at B always pick apart, so that no candidate but a third
+    could differ from both.)
+
+    >>> confusions("translation-correct"), confusions("scaling"), confusions("rotation-ccw")
+    (('scaling', 'translation'), ('scaling-correct',), ('scaling', 'rotation-correct'))
+    """
+    fix = entry(heuristic).correction
+    twin = fix or next(h for h in wrong() if entry(h).correction == heuristic)
+    return tuple(dict.fromkeys(h for h in ("scaling", twin) if h != heuristic))
+
+
+def _would_pick(polygon: Polygon, picks: dict[str, int]) -> str:
+    """"Scaling and Translation would pick D": the confused rules' picks, said together where
+    they agree."""
+    by_pick: dict[int, list[str]] = {}
+    for h, v in picks.items():
+        by_pick.setdefault(v, []).append(spoken(h))
+    return "; ".join(f"{_and(names)} would pick {polygon.labels[v]}"
+                     for v, names in by_pick.items())
+
+
+def _pick(number: int, heuristics: list[str]) -> Callable[[_Frame], Exercise | None]:
+    """A pick exercise on the frame, for the first of ``heuristics`` (a seeded order) that it
+    is fair for: rules that the wrong ones (:func:`confusions`) agree with on most polygons
+    (Scaling and Translation pick Correct Translation's vertex on about three polygons in
+    four) would make the search for a fixed rule many times longer."""
+
     def build(frame: _Frame) -> Exercise | None:
-        d, steps = _reached(frame.polygon, heuristic)
-        reason = _pick_reason(heuristic, steps)
-        if reason is None or front_gap(frame.polygon, frame.triangle, frame.candidates,
-                                       heuristic, d) < MIN_CLEARANCE * _scale(frame.polygon):
-            return None  # a tie as printed, or as seen
-        return _exercise(number, "pick", frame, heuristic,
-                         f"Which vertex does {spoken(heuristic)} pick?", frame.polygon.labels[d],
-                         reason)
+        return next((e for h in heuristics if (e := _fair_pick(number, frame, h)) is not None),
+                    None)
 
     return build
+
+
+def _fair_pick(number: int, frame: _Frame, heuristic: str) -> Exercise | None:
+    """"Which vertex does … pick?" on the frame, if its answer tells the rule apart from the
+    rules a class may confuse it with, and the pick is ahead by a margin the class can see."""
+    p = frame.polygon
+    d, steps = _reached(p, heuristic)
+    picks = {h: find_diagonal(p, h).v.index for h in confusions(heuristic)}
+    if d in picks.values():
+        return None  # a class applying a wrong rule would get it right
+    reason = _pick_reason(heuristic, steps)
+    if reason is None or front_gap(p, frame.triangle, frame.candidates,
+                                   heuristic, d) < MIN_CLEARANCE * _scale(p):
+        return None  # a tie as printed, or as seen
+    return _exercise(number, "pick", frame, heuristic,
+                     f"Which vertex does {spoken(heuristic)} pick?", p.labels[d],
+                     f"{reason}; {_would_pick(p, picks)}")
 
 
 def crossed_edges(polygon: Polygon, i: int, j: int) -> list[tuple[tuple[int, int], Point]]:
@@ -447,7 +520,8 @@ def _claim(number: int, heuristics: list[str], wanted: bool) -> Callable[[_Frame
 
 
 def _inside(polygon: Polygon, i: int, j: int) -> str:
-    return f"{_label(polygon, i)}–{_label(polygon, j)} crosses no edge and touches no vertex: " \
+    # a diagonal is named XY, an edge X–Y: "BF … B–F" in one sentence read as two things
+    return f"{_label(polygon, i, j)} crosses no edge and touches no vertex: " \
         "it runs inside the polygon"
 
 
@@ -480,6 +554,46 @@ def _exercise(number: int, kind: str, frame: _Frame, heuristic: str | None, ques
                     frame.triangle, frame.candidates, tuple(options), frame.polygon)
 
 
+def measured_pairs(log: tracing.Log, labels: Sequence[str]) -> tuple[tuple[int, int], ...]:
+    """The vertex pairs a rule of one's own measured, in the order it measured them: each
+    call of a function of its own on exactly two of P's vertices (``distance_to_c(C, D)``:
+    C and D), not the frame's claim."""
+    pairs = []
+    for e in log.events:
+        refs = [a.get("ref") for a in (e.args or {}).values() if isinstance(a, dict)]
+        if e.kind == "call" and e.name != "claim" and len(refs) == len(e.args or {}) == 2 \
+                and all(r in labels for r in refs):
+            pairs.append((labels.index(str(refs[0])), labels.index(str(refs[1]))))
+    return tuple(dict.fromkeys(pairs))
+
+
+def hunted_exercise(number: int, spec: str, polygon: Polygon, name: str, claim: tuple[int, int],
+                    why: str, measured: tuple[tuple[int, int], ...] = ()) -> Exercise:
+    """"Is the claim of ``name`` an inner diagonal?" for a rule of one's own on the polygon a
+    hunt found (``spec`` names it), its ``claim`` judged here exactly; ``why`` says why it
+    claims its vertex, with ``{pick}`` and ``{others}`` for the labels (no number: "E is
+    nearer to C than D", not "Distance to C for E: 1"); ``measured``: the pairs the answer
+    draws (:func:`measured_pairs`)."""
+    t = triangle_at(polygon, leftmost_vertex(polygon))
+    candidates = tuple(v.index for v in candidates_in_triangle(polygon, t))
+    frame = _Frame(spec, polygon, (t.a.index, t.b.index, t.c.index), candidates)
+    verdict = is_inner_diagonal(polygon, *claim)
+    pick = claim[1]
+    said = why.format(pick=polygon.labels[pick],
+                      others=_and([polygon.labels[k] for k in candidates if k != pick]))
+    judged = _not_inner(polygon, *claim, verdict) if not verdict.ok else _inside(polygon, *claim)
+    answer = f"{'yes' if verdict.ok else 'no'} (it claims {_label(polygon, *claim)})"
+    made = _exercise(number, "claim", frame, None, f"Is the claim of {name} an inner diagonal?",
+                     answer, f"{said}; {judged}")
+    return replace(made, claim=claim, measured=measured)
+
+
+def checking_time(exercise: Exercise, said: str) -> float:
+    """How long the answer ``said`` stays up: read, then each thing it names checked against
+    the picture (:data:`LEAST_CHECKING`, :data:`CHECK_EACH`)."""
+    return max(LEAST_CHECKING, reading_time(said) + CHECK_EACH * exercise.checks)
+
+
 def make_exercises(n: int = 6, seed: int = 0) -> list[Exercise]:
     """``n`` exercises, kinds in turn (pick, claim, inner, pick …), polygons from the
     generators in turn, all from ``seed``."""
@@ -494,7 +608,7 @@ def make_exercises(n: int = 6, seed: int = 0) -> list[Exercise]:
     for k in range(n):
         kind = KINDS[k % len(KINDS)]
         if kind == "pick":
-            build = _pick(k + 1, rng.choice(PICKABLE))
+            build = _pick(k + 1, rng.sample(PICKABLE, len(PICKABLE)))
         elif kind == "claim":
             build = _claim(k + 1, rng.sample(wrong(), len(wrong())), wanted.pop())
         else:

@@ -314,10 +314,10 @@ _ENTRIES = (
     _triangulation("divide-and-conquer", metaphor="pieces", shown=divide_and_conquer,
                    idea="Lennes splits along inner diagonals",
                    pseudocode=(
-                       PseudocodeRow("if P is a triangle, we are done"),
+                       PseudocodeRow("if P is a triangle, we are done", ("done",)),
                        PseudocodeRow("else find an inner diagonal d of P", _HEURISTICS_TRACED),
                        PseudocodeRow("divide P along d into P1 and P2", ("split",)),
-                       PseudocodeRow("triangulate P1 and P2 the same way"),
+                       PseudocodeRow("triangulate P1 and P2 the same way", ("next_part",)),
                        PseudocodeRow("their union is the triangulation of P", (RESULT,)),
                    )),
     _triangulation("ear-clipping-naive", metaphor="fruit",
@@ -364,10 +364,11 @@ _ENTRIES = (
                    pseudocode=(
                        PseudocodeRow("sweep a line down P, vertex by vertex:", ("make_monotone",)),
                        PseudocodeRow("  v is start, end, split, merge or regular", ("classify_vertex",)),
-                       PseudocodeRow("  start, end, regular: v updates its edges",
-                            ("handle_start", "handle_end", "handle_regular")),
-                       PseudocodeRow("  split, merge: v helps the edge on its left",
-                            ("handle_split", "handle_merge")),
+                       # a regular vertex on P's right side helps too (geometry.monotone);
+                       # the helper is said on the picture the first time it is set
+                       PseudocodeRow("  split, merge, or regular with P to its left:"),
+                       PseudocodeRow("    v becomes helper of the edge on its left",
+                                     ("set_helper",)),
                        # end, regular and merge vertices add one too (geometry.monotone)
                        PseudocodeRow("  split, or v ends or replaces a merge helper:"),
                        PseudocodeRow("    add the diagonal v–helper", ("add_diagonal",)),

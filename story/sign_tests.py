@@ -35,9 +35,11 @@ from geometry.io import read_polygon
 from geometry.lennes import divide_and_conquer
 from geometry.polygon import Polygon
 from geometry.results import Triangulation
+from geometry.samples import is_seeded
 from geometry.triangulate import RUNNERS
 
-#: the runs a plot measures: random simple polygons ``random-2opt:n:SEED``, these seeds
+#: the runs a plot measures: random simple polygons ``random-2opt:n:SEED``, these seeds (a
+#: seeded family; a family by size alone, such as ``half-disc``, is one polygon a size)
 SEEDS = (1, 2, 3)
 #: the algorithms that can be measured, as :func:`geometry.triangulate.triangulate` names
 #: them (divide and conquer with Gravity, as the lecture runs it)
@@ -57,21 +59,26 @@ def count_sign_tests(run: Callable[[], Any]) -> int:
 
 
 @functools.cache  # the same runs for every build of the chapter in one process
-def measured(algorithm: str, n: int) -> int:
-    """The sign tests ``algorithm`` decides on random polygons of ``n`` vertices
-    (``random-2opt:n:SEED``, :data:`SEEDS`), on average, rounded."""
+def measured(algorithm: str, n: int, shape: str = "random-2opt") -> int:
+    """The sign tests ``algorithm`` decides on polygons of ``n`` vertices of the sample
+    family ``shape``: random ones (``random-2opt:n:SEED``, :data:`SEEDS`) on average,
+    rounded; a family by size alone (``half-disc:n``), its one polygon.
+
+    >>> measured("ear-clipping", 40, "half-disc") > 4 * measured("ear-clipping", 20, "half-disc") / 2
+    True
+    """
     run = ALGORITHMS[algorithm]
     counts = []
-    for seed in SEEDS:
-        read = _random_polygon(n, seed)
+    for seed in (SEEDS if is_seeded(shape) else (0,)):
+        read = _polygon(shape, n, seed)
         fresh = read.sub_polygon(range(read.n))  # nothing cached: its turns are tests too
         counts.append(count_sign_tests(functools.partial(run, fresh)))
     return round(sum(counts) / len(counts))
 
 
 @functools.cache  # made once for all the algorithms measured on it
-def _random_polygon(n: int, seed: int) -> Polygon:
-    return read_polygon(f"random-2opt:{n}:{seed}")
+def _polygon(shape: str, n: int, seed: int) -> Polygon:
+    return read_polygon(f"{shape}:{n}:{seed}" if is_seeded(shape) else f"{shape}:{n}")
 
 
 __all__ = ["ALGORITHMS", "SEEDS", "count_sign_tests", "measured"]

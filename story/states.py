@@ -27,8 +27,8 @@ True
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
-from typing import TypeVar
+from dataclasses import dataclass, replace
+from typing import Self, TypeVar
 
 from story.beats import Beat
 from story.beats import Point as Point  # re-exported: the metaphors' records use it
@@ -109,6 +109,20 @@ class Moving(Beat):
 
     def at_pick(self) -> Tool | None:
         return self.pick_of(self.states, self.result)
+
+    def before_pick(self) -> Self:
+        """This beat as it plays until its tool reaches the pick: the pick still one of T's
+        candidates, neutral, amber only as the tool gets there (chapter 2's working runs lit
+        it amber as the tool set out, a second before it arrived).
+
+        >>> beat = Moving(caption="", seq=0, states=(), result="E",
+        ...               roles={"B": "called", "E": "argument", "F": "candidate"})
+        >>> dict(beat.before_pick().roles)
+        {'B': 'called', 'E': 'candidate', 'F': 'candidate'}
+        """
+        if self.roles.get(self.result) != "argument":
+            return self
+        return replace(self, roles={**self.roles, self.result: "candidate"})
 
 
 # --- gravity's ball and band ---------------------------------------------------------------------

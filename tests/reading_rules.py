@@ -297,8 +297,9 @@ def _near(p: tuple[float, float], corners: list[tuple[float, float]], within: fl
 
 
 def hidden_failures(data: dict) -> list[str]:
-    """Issue 22 items 3 and 6: the red (rejected) claims, and exercises' rejected diagonals,
-    whose part outside their polygon is under
+    """Issue 22 items 3 and 6: the red (rejected) claims (a run's, an analysis's, a card's
+    figure's: the recap's BD was not measured), and exercises' rejected diagonals, whose part
+    outside their polygon is under
     :data:`LEAST_OUTSIDE` on screen, as ``"claim (x, y)–(x, y): 0.14 outside"``, or which
     pass nearer than :data:`LEAST_CLEARANCE` to a vertex not their own. A claim is
     matched to the drawn polygon that has both its ends as corners; one with no such polygon
@@ -309,13 +310,19 @@ def hidden_failures(data: dict) -> list[str]:
 
     nodes = list(graph_nodes(data))
     polygons = [_corners(n) for n in nodes if n.get("points") and (
-        n.get("name") in _POLYGONS or (n.get("name"), n["type"]) == ("exercise", "Polygon"))]
+        n.get("name") in (*_POLYGONS, "figure:polygon")
+        or (n.get("name"), n["type"]) == ("exercise", "Polygon"))]
     found = {}
     for node in nodes:
-        if node.get("name") not in _CLAIMS \
-                or (node.get("stroke") or "").upper() != _REJECTED:
+        # a card's figure's too: the overview's "DI leaves P" is seen to leave it
+        if node.get("name") not in (*_CLAIMS, "figure:claim"):
             continue
-        a, b = (tuple(node["points"][k][:2]) for k in (0, -1))
+        # a card's claim is a line on a dark casing: the line is its last part
+        line = node if node.get("points") else next(
+            (c for c in reversed(node.get("submobjects", ())) if c.get("points")), {})
+        if (line.get("stroke") or "").upper() != _REJECTED:
+            continue
+        a, b = (tuple(line["points"][k][:2]) for k in (0, -1))
         # the polygon itself, not an exercise's triangle T drawn on it
         home = sorted((c for c in polygons if _near(a, c) and _near(b, c)), key=len,
                       reverse=True)
@@ -1037,7 +1044,7 @@ def stale_test_triangles(data: dict) -> list[str]:
             moved_on = True
         for anim in play["animations"]:
             for kind, node in _recorded(anim):
-                if node.get("name") != _TEST_TRIANGLE:
+                if node.get("name") not in (_TEST_TRIANGLE, _TEST_ANGLE):
                     continue
                 if kind in OUTGOING:
                     since, moved_on = -1, False
@@ -1046,6 +1053,77 @@ def stale_test_triangles(data: dict) -> list[str]:
         if since >= 0 and moved_on and not play.get("subcaption") and _draws_picture(play):
             found.append(f"play {k}: red {_TEST_TRIANGLE} of play {since}")
             since, moved_on = -1, False  # each triangle once
+    return found
+
+
+# --- issue 22: an ear test answered no shows why --------------------------------------------------
+
+#: what a not-convex vertex's test shows (:func:`metaphors.fruit.angle_wedge`): its angle
+_TEST_ANGLE = "ear-angle"
+#: the least height of a red test triangle, and the least radius of a test's angle: 1.5 %
+#: of the frame's height (a line, or a sliver, shows no inside)
+LEAST_TEST_HEIGHT = 0.12
+
+
+def _pulsed(play: dict) -> dict[str, tuple[float, float]]:
+    """The vertices a play pulses (``Indicate``), by label: where their dots stand."""
+    dots = {}
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if anim.get("type") == "Indicate" and (node.get("name") or "").startswith("vertex:"):
+            dot = _dot_centre(node)
+            if dot is not None:
+                dots[node["name"].removeprefix("vertex:")] = dot
+    return dots
+
+
+def _strictly_inside(p: tuple[float, float], corners: list[tuple[float, float]]) -> bool:
+    """Whether ``p`` lies in the triangle ``corners`` (closed), and is none of its corners."""
+    if _near(p, corners, within=MARKER_AT_CORNER):
+        return False
+    sides = [(b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+             for a, b in zip(corners, corners[1:] + corners[:1], strict=True)]
+    return all(x >= -1e-9 for x in sides) or all(x <= 1e-9 for x in sides)
+
+
+def _shoelace(corners: list[tuple[float, float]]) -> float:
+    return abs(sum(a[0] * b[1] - b[0] * a[1]
+                   for a, b in zip(corners, corners[1:] + corners[:1], strict=True))) / 2
+
+
+def unseen_ear_tests(data: dict) -> list[str]:
+    """The ear tests answered no whose picture does not show why, as ``"play 151 H: red
+    triangle 0.00 high"``, ``"play 93 G: red triangle, no vertex inside"`` or ``"play 9 G: angle
+    0.010 wide"``. An ear is a convex vertex whose triangle holds no other vertex (the thesis,
+    Meisters), so a vertex is no ear for one of two reasons, each drawn: a vertex inside its
+    triangle (red, at least :data:`LEAST_TEST_HEIGHT` high, that vertex pulsing inside it),
+    or its angle, 180° or more (a red wedge round it, :data:`_TEST_ANGLE`, at least as large
+    as half a disc of radius :data:`LEAST_TEST_HEIGHT`). Prune and search's "is H an ear? no" (chapter 4 at
+    96 s) drew the straight G-H-K, a red line with no inside, and its reflex G, the holes'
+    a₁, b₁, a₂ and b₂ a red triangle holding nothing, mostly outside the fruit."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        pulsed = _pulsed(play)
+        for anim in play["animations"]:
+            if anim.get("type") in OUTGOING:
+                continue
+            node = anim.get("target") or anim.get("mobject") or {}
+            name = node.get("name")
+            if node.get("role") != "rejected" or name not in (_TEST_TRIANGLE, _TEST_ANGLE):
+                continue
+            corners = _corners(node)
+            # the vertex at a corner of its triangle, or the one pulsing with its angle
+            tested = next((v for v, dot in pulsed.items()
+                           if _near(dot, corners, MARKER_AT_CORNER) or name == _TEST_ANGLE), "?")
+            if name == _TEST_ANGLE:
+                if _shoelace(corners) < math.pi * LEAST_TEST_HEIGHT ** 2 / 2:
+                    found.append(f"play {k} {tested}: angle {_shoelace(corners):.3f} wide")
+                continue
+            height = _altitude(*corners[:3])
+            if height < LEAST_TEST_HEIGHT:
+                found.append(f"play {k} {tested}: red triangle {height:.2f} high")
+            elif not any(_strictly_inside(dot, corners[:3]) for dot in pulsed.values()):
+                found.append(f"play {k} {tested}: red triangle, no vertex inside")
     return found
 
 
@@ -1456,6 +1534,10 @@ KIND_FARTHEST = 1.0
 #: how many times farther than its own vertex every other vertex's dot must be from a kind
 #: word: nearer, the word reads as the other's ("start" between A and L)
 KIND_OWN = 1.5
+#: the farthest a kind word's box may stand from its vertex as drawn, its dot or its label
+#: (3.75 % of the frame's height, 18 px at 480p): "regular" stood in the slot left of I,
+#: 0.35 from I's label and 0.45 from its dot, read as the slot's, not I's
+KIND_BESIDE = 0.3
 
 
 def _dot_centres(node: dict) -> Iterator[tuple[str, tuple[float, float]]]:
@@ -1473,9 +1555,11 @@ def _dot_centres(node: dict) -> Iterator[tuple[str, tuple[float, float]]]:
 def stray_kind_words(data: dict) -> list[str]:
     """Issue 22: the monotone partition's kind words not beside their own vertex (the one the
     play flashes, Indicate): farther than :data:`KIND_FARTHEST` from its dot, as
-    ``"'regular' for B 1.4 away"``, or with another vertex's dot or label nearer than
-    :data:`KIND_OWN` times its own dot, as ``"'start' for A nearer L"``. The dots and labels
-    are those of the polygon drawn last, where they were last drawn."""
+    ``"'regular' for B 1.4 away"``, farther than :data:`KIND_BESIDE` from both its dot and
+    its label, as ``"'regular' for I 0.35 from it"``, or with another vertex's dot or label
+    nearer than :data:`KIND_OWN` times its own (dot or label), as ``"'start' for A nearer
+    L"``. The dots and labels are those of the polygon drawn last, where they were last
+    drawn."""
     from shapely.geometry import Point
     from shapely.geometry import box as rectangle
 
@@ -1502,10 +1586,14 @@ def stray_kind_words(data: dict) -> list[str]:
                 gap = shape.distance(Point(dots[v]))
                 if gap > KIND_FARTHEST + 0.01:  # the graph rounds boxes to 0.001
                     found.append(f"{word['text']!r} for {v} {gap:.1f} away")
+                beside = min(gap, shape.distance(rectangle(*labels[v])) if v in labels else gap)
+                if beside > KIND_BESIDE + 0.01:
+                    found.append(f"{word['text']!r} for {v} {beside:.2f} from it")
                 marks = [(w, Point(at)) for w, at in dots.items()]
                 marks += [(w, rectangle(*b)) for w, b in labels.items()]
                 found += [f"{word['text']!r} for {v} nearer {w}" for w, mark in sorted(
-                    marks, key=lambda m: m[0]) if w != v and shape.distance(mark) < KIND_OWN * gap]
+                    marks, key=lambda m: m[0])
+                    if w != v and shape.distance(mark) < KIND_OWN * beside]
     return sorted(set(found))
 
 
@@ -2419,7 +2507,7 @@ def labels_under_the_fall(data: dict) -> list[str]:
 # --- issue 22: a label is read clear of ear clipping's red test triangle ------------------------
 
 #: the red triangle of a vertex that is not an ear (:func:`metaphors.fruit.ear_test`)
-_TEST_TRIANGLES = ("ear-triangle",)
+_TEST_TRIANGLES = ("ear-triangle", "ear-angle")
 #: a dark card under a label the triangle could not be kept off (its vertex inside it)
 _BACKINGS = "backing:"
 #: how opaque a card must be to read a label on it
@@ -2696,8 +2784,10 @@ def crowded_vertex_labels(data: dict) -> list[str]:
 
 # --- issue 22: a run's verdict stands by its claim -------------------------------------------
 
-#: the farthest a run's ✓ or ✗ may stand from the claim it judges (1/8 of the frame's height)
-FARTHEST_MARK = 1.0
+#: the farthest a run's ✓ or ✗ may stand from the claim it judges (5 % of the frame's
+#: height, 24 px at 480p): at 0.73 (44 px), prune and search's ✓ for GB stood over the fruit
+#: by H's label, read as judging nothing near it
+FARTHEST_MARK = 0.4
 #: the names of a run's marks and of its claim
 _RUN_MARKS, _CLAIM = ("tick", "cross"), "claim"
 
@@ -2706,7 +2796,7 @@ def far_verdicts(data: dict) -> list[str]:
     """A run's ✓ or ✗ standing farther than :data:`FARTHEST_MARK` from the claim it judges
     (the last claim drawn before it), as ``"play 115 tick 1.80 from its claim"``: so far
     off, it seems to judge what it stands by (prune and search's ✓ for GB stood outside P
-    beside edge AB)."""
+    beside edge AB, then 0.73 off over the fruit)."""
     from shapely.geometry import LineString
     from shapely.geometry import box as area
 
@@ -2855,8 +2945,9 @@ def fills_over_labels(data: dict) -> list[str]:
     """The fills drawn over a vertex label they cover, as ``"play 93 triangulation over M"``:
     manim draws by z-index, then in the order mobjects came, so a fill that comes after a
     label (a whole triangulation's triangles) at its z-index or above tints it (chapter 1's
-    M and G at 81.5 s). The labels as the plays leave them; a polygon coming in begins a new
-    picture. Each label and fill once, where it first covers."""
+    M and G at 81.5 s; a card's figure whose triangles come with a line after its labels,
+    likewise). The labels as the plays leave them; a polygon coming in begins a new picture.
+    Each label and fill once, where it first covers."""
     from shapely.geometry import box as area
 
     labels: dict[str, tuple[list, int]] = {}  # vertex: (its label layers, when it came)
@@ -2865,15 +2956,22 @@ def fills_over_labels(data: dict) -> list[str]:
     for k, play in enumerate(data["plays"]):
         for anim in play["animations"]:
             top = anim.get("mobject") or {}
-            if anim["type"] in INCOMING and top.get("name") in _POLYGONS:
+            if anim["type"] in INCOMING and top.get("name") in (*_POLYGONS, "figure:polygon"):
                 labels = {}
             for kind, node in _recorded(anim):
                 name = node.get("name") or ""
                 came += 1
                 if kind in OUTGOING:
                     labels.pop(name, None)
+                    if name == "figure:vertices":
+                        labels = {k: v for k, v in labels.items() if not k.startswith(name)}
                 elif name.startswith("vertex:"):
                     labels[name] = (_label_layers(node), labels.get(name, (None, came))[1])
+                elif name == "figure:vertices":  # a card's figure: its markers in one group
+                    for marker in node.get("submobjects", ()):
+                        held = {**marker, "z": marker.get("z", node.get("z", 0))}
+                        said = " ".join(_text_of(part) for part in marker.get("submobjects", ()))
+                        labels[f"{name}:{said.strip()}"] = (_label_layers(held), came)
                 elif kind in INCOMING:
                     for shape, z in _fill_shapes(node):
                         for vertex, (layers, when) in labels.items():
@@ -2881,7 +2979,7 @@ def fills_over_labels(data: dict) -> list[str]:
                                    and shape.intersection(area(*box)).area > 1e-4
                                    for box, lz in layers):
                                 found.setdefault((vertex, name), f"play {k} {name} over "
-                                                 f"{vertex.removeprefix('vertex:')}")
+                                                 f"{vertex.split(':')[-1]}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
 
 
@@ -2932,6 +3030,94 @@ def shifting_colours(data: dict) -> list[str]:
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
 
 
+# --- one thing, one colour: a card's figure and the run it tells of ------------------------------
+
+#: the names under which one thing is drawn, on a card's figure and in its run: prune and
+#: search's good sub-polygon (:func:`metaphors.fruit.good_style`)
+SAME_THINGS = {"the good sub-polygon": ("good", "figure:good", "figure:smaller")}
+#: how far apart two colours on screen may be (the largest of their channels' differences,
+#: of 255) and still read as one
+SAME_COLOUR = 12
+
+
+def _on_screen(fill: str, opacity: float, under: str | None) -> str:
+    from metaphors.theme import THEME
+
+    return _over(fill, opacity, under or THEME.background)
+
+
+def shifting_tints(data: dict) -> list[str]:
+    """The things of :data:`SAME_THINGS` drawn in more than one colour as the screen shows
+    them (the fill over the polygon's fill it lies on, over the background), as ``"the good
+    sub-polygon: #6250a7 (play 79 figure:good), #9b837e (play 126 good)"``: the same thing
+    keeps its colour. Chapter 4's card drew prune and search's good sub-polygons in violet
+    and teal over P's navy, and its run in blue over the fruit's orange, a greyish pink."""
+    from metaphors.theme import THEME
+
+    found = []
+    for thing, names in SAME_THINGS.items():
+        colours: dict[str, str] = {}
+        under: dict[str, str] = {}  # the fill as shown of the polygon a figure or run draws
+        for k, play in enumerate(data["plays"]):
+            for anim in play["animations"]:
+                for kind, node, name in _ends(anim):
+                    fill = _one_colour(node.get("fill"))
+                    opacity = float(node.get("fill_opacity") or 0)
+                    if name in ("polygon", "figure:polygon") and fill and opacity > 0:
+                        under[name] = _over(fill, opacity, THEME.background)
+                    if name not in names or kind in OUTGOING or not fill or opacity <= 0:
+                        continue
+                    polygon = "figure:polygon" if name.startswith("figure:") else "polygon"
+                    colour = _on_screen(fill, opacity, under.get(polygon))
+                    if not any(_apart(colour, c) <= SAME_COLOUR for c in colours):
+                        colours[colour] = f"play {k} {name}"
+        if len(colours) > 1:
+            found.append(f"{thing}: " + ", ".join(f"{c} ({where})" for c, where in colours.items()))
+    return found
+
+
+#: gravity's close-up: one drawing standing in for the picture's outline while zoomed
+#: (:class:`metaphors.gravity.CloseUp`)
+_CLOSE_UP = "close-up"
+
+
+def recoloured_close_ups(data: dict) -> list[str]:
+    """The close-ups that draw the picture in other colours than its outline had, as ``"play
+    101: fill #2A3A55 0.35, edges #E8ECF2 3.0 (the picture: fill #F4A259 0.75, edges #7A9E3D
+    6.6)"``: a close-up is the same picture, nearer. Chapter 4's fruit turned into P's navy
+    with white edges for the close-up of prune and search's gravity step (73-77 s), and
+    orange again after it."""
+    found = []
+    outline: tuple | None = None
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if node.get("name") == "polygon":
+                state = anim.get("target") or node
+                outline = (state.get("fill"), state.get("fill_opacity"), state.get("stroke"),
+                           state.get("stroke_width"))
+            if node.get("name") != _CLOSE_UP or outline is None:
+                continue
+            parts = node.get("submobjects") or []
+            # what is seen: a fill with some opacity, a line with some width (a zoom's
+            # ``become`` leaves a line of none behind)
+            fills = {(c.get("fill"), c.get("fill_opacity")) for c in parts
+                     if (c.get("fill_opacity") or 0) > 0}
+            edges = {(c.get("stroke"), c.get("stroke_width")) for c in parts
+                     if c.get("type") == "Line" and (c.get("stroke_width") or 0) > 0}
+            if fills | edges and (fills - {outline[:2]} or edges - {outline[2:]}):
+                said = ", ".join([*(f"fill {f} {o}" for f, o in sorted(fills)),
+                                  *(f"edges {e} {w}" for e, w in sorted(edges))])
+                found.append(f"play {k}: {said} (the picture: fill {outline[0]} {outline[1]}, "
+                             f"edges {outline[2]} {outline[3]})")
+    return found
+
+
+def _apart(a: str, b: str) -> int:
+    """The largest difference of two ``#rrggbb`` colours' channels."""
+    return max(abs(int(a[k:k + 2], 16) - int(b[k:k + 2], 16)) for k in (1, 3, 5))
+
+
 # --- the exercises' countdown: one number a second ----------------------------------------------
 
 #: one frame at the lecture's lowest quality (15 fps): how far a number's time may be off 1 s
@@ -2949,18 +3135,21 @@ def _countdown_number(play: dict) -> str | None:
 
 def uneven_countdowns(data: dict) -> list[str]:
     """The countdowns whose numbers are not each up for one second (± :data:`ONE_FRAME`) in
-    order down to 1, as ``"play 8: 15 up 15.00 s"``: one eased play for the whole wait kept
-    "15" and "1" up for 3.7 s each and rushed the others by. A number's time is the run time
-    of the plays it is shown in (the graph cannot see a rate function, so each second is a
-    play of its own)."""
+    order down to 1, then 0 as the time is up (as it goes), as ``"play 8: 15 up 15.00 s"`` or
+    ``"play 8: counts 15, …, 1"``: one eased play for the whole wait kept "15" and "1" up for
+    3.7 s each and rushed the others by, and a count that stops at 1 leaves the class a second
+    short. A number's time is the run time of the plays it is shown in (the graph cannot see a
+    rate function, so each second is a play of its own)."""
     found = []
     numbers: list[tuple[int, str, float]] = []  # (first play, number, seconds up), this countdown
 
     def check() -> None:
-        expected = [str(k) for k in range(len(numbers), 0, -1)]
+        expected = [str(k) for k in range(len(numbers) - 1, -1, -1)]
         if numbers and [n for _, n, _ in numbers] != expected:
-            found.append(f"play {numbers[0][0]}: counts {', '.join(n for _, n, _ in numbers)}")
-        found.extend(f"play {k}: {n} up {t:.2f} s" for k, n, t in numbers
+            shown = [n for _, n, _ in numbers]
+            counted = ", ".join(shown if len(shown) < 5 else [*shown[:2], "…", *shown[-2:]])
+            found.append(f"play {numbers[0][0]}: counts {counted}")
+        found.extend(f"play {k}: {n} up {t:.2f} s" for k, n, t in numbers[:-1]
                      if abs(t - 1.0) > ONE_FRAME)
         numbers.clear()
 
@@ -3088,6 +3277,41 @@ def labels_on_edges(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> list[st
                         if gap < margin - 1e-9:
                             found.setdefault((text, owner),
                                              f"play {k} {text} {gap:.2f} from {owner}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+# --- a label off the lines it is not on: T's sides -------------------------------------------
+
+#: the triangle T = ABC of the heuristics' frame, on a run's board and an analysis's stage
+_TRIANGLES = ("T", "analysis:T")
+
+
+def labels_by_triangle_sides(data: dict, margin: float = LEAST_LABEL_EDGE_GAP) -> list[str]:
+    """The vertex labels nearer than ``margin`` to a side of T that their vertex is not on
+    (T's side AC, a chord of P, for a candidate inside T), as ``"play 80 E 0.10 from T"``:
+    each label and T once, at the first play that shows it so, the labels and T as
+    :func:`_shown_after_plays` follows them. A letter by a line it is not on reads as part
+    of it (the exercises' E stood 0.10 from AC, and its pulse as a candidate, 1.4 times its
+    size, pushed it against the line at 91 s)."""
+    from shapely.geometry import LineString, Point
+    from shapely.geometry import box as area
+
+    found: dict[tuple[str, str], str] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:", *_TRIANGLES)):
+        sides = [(name, s) for name, node in shown.items() if name in _TRIANGLES
+                 for s in _segments(node)]
+        for name, marker in shown.items():
+            dot = _dot_centre(marker) if name.startswith("vertex:") else None
+            if dot is None:
+                continue
+            for owner, (a, b) in sides:
+                if min(Point(a).distance(Point(dot)), Point(b).distance(Point(dot))) < 0.02:
+                    continue  # a side of its own vertex: the label stands by it
+                for box in _label_boxes(marker, direct=True):
+                    gap = LineString([a, b]).distance(area(*box))
+                    if gap < margin - 1e-9:
+                        label = name.removeprefix("vertex:")
+                        found.setdefault((label, owner), f"play {k} {label} {gap:.2f} from {owner}")
     return sorted(found.values(), key=lambda s: int(s.split()[1]))
 
 
@@ -3325,8 +3549,9 @@ def words_over_the_picture(data: dict) -> list[str]:
 
 
 #: the least gap the monotone sweep line (:data:`_TOOL_LINES`) leaves round a vertex label: at
-#: 0.04 its dashes ran up to M's and K's letters at their height, read as struck through
-LEAST_SWEEP_GAP = 0.1
+#: 0.04 its dashes ran up to M's and K's letters at their height, read as struck through; at
+#: 0.12 it still ran along the top of A's letter (chapter 5 at 16–19 s)
+LEAST_SWEEP_GAP = 0.15
 
 
 def labels_struck_by_the_sweep(data: dict) -> list[str]:
@@ -3649,3 +3874,937 @@ def _room_off(dot, box, fruit, walls, others, dots) -> bool:
         near = shapely.distance(boxes, shapely.Point(d))
         ok &= (near >= ROOM_GAP) & (near > shapely.distance(boxes, here))
     return bool(ok.any())
+
+
+# --- colour4: chapters 2 and 3, colours and timings as a viewer sees them -------------------------
+
+
+def _vertex_roles(anim: dict) -> Iterator[tuple[str, str]]:
+    """(label, role) of every vertex marker (a picture's ``vertex:K``, the panel's ``panel:K``)
+    an animation (or its members) records, in the role it is tagged with: the role its
+    colour shows (a board recolours a marker and tags it together)."""
+    for _, node in _recorded(anim):
+        label = _vertex_label(node)
+        if label is not None and node.get("role"):
+            yield label, node["role"]
+
+
+def _reaches(anim: dict) -> Iterator[str]:
+    """The vertices a tool is seen to reach in an animation (or its members): its ring lit
+    there (``lit:K``, the clock's and the sweep line's), or the pulse it gives the marker in
+    the pick's or a candidate's colour (the water's)."""
+    for child in anim.get("animations", ()):
+        yield from _reaches(child)
+    name = (anim.get("mobject") or {}).get("name") or ""
+    if anim.get("type") == "FadeIn" and name.startswith("lit:"):
+        yield name.removeprefix("lit:")
+    colour = str(anim.get("color") or "").upper()
+    if (anim.get("type") == "Indicate" and name.startswith("vertex:")
+            and colour in (_colour("argument"), _colour("candidate"))):
+        yield name.removeprefix("vertex:")
+
+
+def _new_picture(play: dict) -> bool:
+    """Whether a play brings a polygon in: a new picture, its markers afresh."""
+    return any(a.get("type") in INCOMING and (a.get("mobject") or {}).get("name") in _POLYGONS
+               for a in play["animations"])
+
+
+def early_picks(data: dict) -> list[str]:
+    """The picks lit amber (the claim to be) before the tool reaches them, as ``"play 132 E
+    amber, reached at play 134"``: chapter 2's working runs lit the pick amber as the tool
+    set out, about a second before it got there (the sweep's E at 165.0 s, reached at
+    166.2 s). A tool's reach is its ring or its pulse there (:func:`_reaches`)."""
+    found: list[str] = []
+    roles: dict[str, str] = {}
+    amber: dict[str, int] = {}  # vertex: the play it turned amber in
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            roles, amber = {}, {}
+        for anim in play["animations"]:
+            for label, role in _vertex_roles(anim):
+                if role == "argument" and roles.get(label) != "argument":
+                    amber.setdefault(label, k)
+                roles[label] = role
+        for label in sorted({v for anim in play["animations"] for v in _reaches(anim)}):
+            if amber.get(label, k) < k:
+                found.append(f"play {amber[label]} {label} amber, reached at play {k}")
+    return list(dict.fromkeys(found))
+
+
+#: the roles a vertex is lit in that say something of it (not the ink of one out of the call,
+#: nor a candidate's neutral pink): a viewer seeing a vertex turn one asks why
+_SAYING_ROLES = ("called", "argument", "result", "rejected")
+#: a word of a caption made only of vertex labels ("CH", "E", "a₂b₂")
+_LABEL_WORD = re.compile(r"(?:[A-Z][₀-₉′″]*)+|(?:[a-z][₀-₉′″]+)+")
+_ONE_LABEL = re.compile(r"[A-Z][₀-₉′″]*|[a-z][₀-₉′″]+")
+
+
+def labels_said(caption: str) -> set[str]:
+    """The vertex labels a caption names: its words of labels only, each label of them.
+
+    >>> sorted(labels_said("Claim: CH is an inner diagonal; BD crosses edge E–A"))
+    ['A', 'B', 'C', 'D', 'E', 'H']
+    >>> sorted(labels_said("Turn the polygon so that gravity points down"))
+    []
+    """
+    return {label for word in re.findall(r"[\w′″]+", caption) if _LABEL_WORD.fullmatch(word)
+            for label in _ONE_LABEL.findall(word)}
+
+
+#: the words of a caption that say its steps show what they showed before (a summary's fast
+#: beats, a frame built again): its colours were said then
+_AS_BEFORE = re.compile(r"the same steps|as before")
+
+
+def unsaid_colour_changes(data: dict) -> list[str]:
+    """The vertices lit in a new role under a caption that does not name them, as ``"play 16
+    C result → called under 'Turn the polygon so that gravity points down'"``: chapter 3's
+    C went green as it was picked, then blue a second later as the polygon turned, and G
+    green (where the ball slid), then amber under "The rubber band snags H". A vertex's
+    colour changes when the words say why; going back to its ink or to a candidate's pink
+    (neutral again) needs none, nor a step the caption says is as before (:data:`_AS_BEFORE`).
+    Each vertex, roles and caption once."""
+    found: list[str] = []
+    roles: dict[str, str] = {}
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        if _new_picture(play):
+            roles = {}
+        said = labels_said(caption) if not _AS_BEFORE.search(caption) else None
+        for anim in play["animations"]:
+            for label, role in _vertex_roles(anim):
+                was = roles.get(label, role)
+                roles[label] = role
+                if role != was and role in _SAYING_ROLES and said is not None \
+                        and label not in said:
+                    found.append(f"play {k} {label} {was} → {role} under {caption!r}")
+    # one line per change, the picture's marker and the panel's told once
+    return list(dict.fromkeys(found))
+
+
+#: the red regions of a failure: the part of a tool's sweep outside P (an analysis's)
+_RED_REGIONS = ("analysis:outside",)
+
+
+def picks_in_the_red(data: dict) -> list[str]:
+    """The vertex markers whose label or dot stands on a red region (:data:`_RED_REGIONS`)
+    with no dark halo (:func:`_haloed`) to set it apart, as ``"play 51 D label on
+    analysis:outside"``: chapter 2's analyses drew the amber D, the pick, inside the red
+    "outside P" wedge, its dot on the wedge's edge — amber on red, neither read. Each vertex
+    and part once."""
+    import shapely
+
+    found: list[str] = []
+    for k, shown in _shown_after_plays(data, ("vertex:", *_RED_REGIONS)):
+        red = [shapely.Polygon(ring) for name, node in shown.items()
+               if name.startswith(_RED_REGIONS) for part in mobject_nodes(node)
+               if (part.get("fill_opacity") or 0) > 0 for ring in _paths(part)]
+        red = [r for r in red if r.is_valid and r.area > 0]
+        if not red:
+            continue
+        wedge = shapely.union_all(red)
+        for name, marker in shown.items():
+            if not name.startswith("vertex:"):
+                continue
+            for part in marker.get("submobjects", ()):
+                if (part.get("text") or "").strip() and part.get("box"):
+                    kind, shape = "label", shapely.box(*part["box"])
+                elif part.get("type") == "Dot" and part.get("points"):
+                    kind, shape = "dot", shapely.MultiPoint(_corners(part)).convex_hull
+                else:
+                    continue
+                if shape.intersects(wedge) and not _haloed(part):
+                    found.append(f"play {k} {name.removeprefix('vertex:')} {kind} on "
+                                 f"{_RED_REGIONS[0]}")
+    return _once_each(found)
+
+
+def _once_each(found: list[str]) -> list[str]:
+    """The first of the findings about each thing (``"play 51 D label on …"``: by what
+    follows the play's number)."""
+    seen: dict[str, str] = {}
+    for line in found:
+        seen.setdefault(line.split(" ", 2)[2], line)
+    return list(seen.values())
+
+
+#: the seconds a caption may come before what it speaks of: the words' lead of a board's play
+#: (:data:`metaphors.board.WORDS_TIME`) and a frame's rounding
+WORDS_LEAD = 0.35
+#: gravity's ball on screen: a run's, an analysis's, a card's figure's
+_BALLS = ("ball", "analysis:ball", "figure:ball")
+#: a caption telling what the ball does now (not what it will do: "the ball will hang there")
+_BALL_NOW = re.compile(r"\bthe ball (?:falls|slides|hangs|hits|rests)\b", re.I)
+
+
+def balls_not_there(data: dict) -> list[str]:
+    """The captions that tell what the ball does (:data:`_BALL_NOW`) while none is on screen,
+    for longer than the words' lead (:data:`WORDS_LEAD`), as ``"55.9 s: 'A close-up: the
+    ball falls only a short way' not with the ball"``: chapter 3's close-up said the ball
+    falls a short way, zoomed, and showed the ball only under the next caption, 2.8 s later.
+    Times as the graph has them (the plays' run times, summed)."""
+    found: list[str] = []
+    shown: set[str] = set()
+    t, waiting = 0.0, None  # the caption waiting for the ball, and when it came
+    for play in data["plays"]:
+        caption = play.get("subcaption")
+        if caption:
+            if waiting is not None:
+                found.append(f"{waiting[1]:.1f} s: {waiting[0]!r} not with the ball")
+            waiting = (caption, t) if _BALL_NOW.search(caption) and not shown else None
+        for anim in play["animations"]:
+            for kind, _, name in _ends(anim):
+                if name in _BALLS:
+                    (shown.discard if kind in OUTGOING else shown.add)(name)
+        if waiting is not None and shown:
+            late = t - waiting[1]
+            if late > WORDS_LEAD:
+                found.append(f"{waiting[1]:.1f} s: {waiting[0]!r} {late:.1f} s before the ball")
+            waiting = None
+        t += play["run_time"]
+    return found
+
+
+def _fills_shown(shown: dict[str, dict]) -> Iterator[tuple[str, str, float, Any]]:
+    """(owner's name, colour, z-index, region) of each filled part of the things shown
+    (not a text, not a legend's swatch)."""
+    import shapely
+
+    for name, node in shown.items():
+        if name.startswith(_LEGEND):
+            continue
+        for part in mobject_nodes(node):
+            if (part.get("fill_opacity") or 0) <= 0 or "text" in part or not part.get("points"):
+                continue
+            rings = [shapely.Polygon(r) for r in _paths(part)]
+            rings = [r for r in rings if r.is_valid and r.area > 0]
+            if rings:
+                yield (name, str(part.get("fill")).upper(), float(part.get("z", 0)),
+                       shapely.union_all(rings))
+
+
+def keys_with_nothing_shown(data: dict) -> list[str]:
+    """The legend entries left up once every region in their colour is gone or covered by
+    another colour drawn over it, as ``"play 48 legend:band"``: chapter 3's analysis kept
+    "band swept" (rose) beside a picture whose rose region the green "swept: in P" covered
+    (chapter 2's blue "swept" went before its green came). Only entries whose colour was
+    shown as a region while they were up (a run's red "outside P" names a line)."""
+    import shapely
+
+    found: list[str] = []
+    shown: dict[str, dict] = {}
+    filled: set[str] = set()  # the entries whose colour was shown as a region
+    for k, play in enumerate(data["plays"]):
+        if _new_picture(play):
+            shown, filled = {}, set()
+        for anim in play["animations"]:
+            for kind, node, name in _ends(anim):
+                if kind in OUTGOING:
+                    shown.pop(name, None)
+                elif name:
+                    shown[name] = node
+        fills = list(_fills_shown(shown))
+        for name, node in shown.items():
+            swatch = next((p for p in mobject_nodes(node) if p.get("type") == "Square"
+                           and (p.get("fill_opacity") or 0) > 0), None)
+            if not name.startswith(_LEGEND) or swatch is None:
+                continue
+            colour = str(swatch.get("fill")).upper()
+            own = [(z, r) for _, c, z, r in fills if c == colour]
+            seen = shapely.union_all([r for _, r in own]) if own else shapely.Polygon()
+            if own:
+                cover = [r for _, c, z, r in fills if c != colour and z > min(z for z, _ in own)]
+                if cover:
+                    seen = seen.difference(shapely.union_all(cover))
+            if seen.area > 1e-3:
+                filled.add(name)
+            elif name in filled:
+                found.append(f"play {k} {name}")
+                filled.discard(name)
+    return found
+
+
+# --- the exercises chapter, reviewed as a class would use it (review of chapter 6) ------------
+
+#: the least an exercise's answer stays up (seconds), and what each thing it names on the
+#: picture adds to its reading time: a class checks the answer against the picture (an answer
+#: naming three diagonals was up 4.5 s)
+LEAST_CHECKING, CHECK_EACH = 8.0, 2.0
+#: what an answer draws that the class checks: a named diagonal, a pick
+_CHECKED = ("answer:diagonal", "pick")
+
+
+def hurried_answers(data: dict) -> list[str]:
+    """The exercises' answers taken down before a class can check them, as ``"4.5 s < 10.5
+    s: BF, BM: …"``: each answer's cue (the caption of the play that brings its text in)
+    lasts at least :data:`LEAST_CHECKING`, and its reading time with :data:`CHECK_EACH` for
+    each diagonal or pick it draws."""
+    from story.reading import reading_time
+
+    cues = {c["text"]: c for c in data["cues"]}
+    found = []
+    for play in data["plays"]:
+        nodes = [node for _, node in _recorded_all_nodes(play)]
+        if not any(n.get("name") == "answer" for n in nodes) or not play.get("subcaption"):
+            continue
+        said = play["subcaption"]
+        checked = sum(1 for n in nodes if n.get("name") in _CHECKED)
+        least = max(LEAST_CHECKING, reading_time(said) + CHECK_EACH * max(1, checked))
+        cue = cues.get(said)
+        up = cue["end"] - cue["start"] if cue else 0.0
+        if up < least - 1e-6:
+            found.append(f"{up:.1f} s < {least:.1f} s: {said}")
+    return found
+
+
+#: the words a card's figure writes on its picture (:func:`metaphors.figures._vertex_word`)
+_FIGURE_WORDS = ("convex", "reflex")
+
+
+def unsaid_figure_words(data: dict) -> list[str]:
+    """The words a figure writes on its picture ("Convex", "Reflex") that come in while the
+    caption up does not say them, as ``"play 1: Reflex under 'Exercises'"``: the exercises'
+    card showed both with its title and never said what they meant."""
+    found = []
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for kind, node in _recorded_all_nodes(play):
+            word = (node.get("name") or "").removeprefix("figure:")
+            if kind in INCOMING and word in _FIGURE_WORDS and word not in caption.lower():
+                found.append(f"play {k}: {word.capitalize()} under {caption!r}")
+    return found
+
+
+#: a measure said as a bare number at a caption's end: "Distance to C for D: 2.2" (from
+#: coordinates the class never saw: in what unit, compared with what?)
+_BARE_MEASURE = re.compile(r":\s*-?\d+(?:\.\d+)?$")
+
+
+def bare_measures(data: dict) -> list[str]:
+    """The captions that end on a number with nothing to say what it measures, as
+    ``"Distance to C for D: 2.2"``."""
+    return [c["text"] for c in data["cues"] if _BARE_MEASURE.search(c["text"])]
+
+
+#: what the screen should not say: how the answers are made ("checked by the geometry code")
+_IMPLEMENTATION = re.compile(r"\b(?:geometry|the|our|its) code\b", re.IGNORECASE)
+
+
+def implementation_talk(data: dict) -> list[str]:
+    """The captions that speak of the program rather than the polygon, as ``"… the answer is
+    checked by the geometry code."``."""
+    return [c["text"] for c in data["cues"] if _IMPLEMENTATION.search(c["text"])]
+
+
+def verdicts_before_red(data: dict) -> list[str]:
+    """The ✗ captions that come up before anything turns red, as ``"play 230: ✗ BE is not
+    …"``: the caption said BE was not inner while BE stood amber for half a second. The play
+    that brings a ✗ caption brings, or turns, something red (what it says fails)."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        said = play.get("subcaption") or ""
+        if not said.startswith("✗"):
+            continue
+        red = any(_REJECTED in json.dumps(node).upper() for kind, node in _recorded_all_nodes(play)
+                  if kind not in OUTGOING)
+        if not red:
+            found.append(f"play {k}: {said}")
+    return found
+
+
+def _exercise_t(node: dict) -> list[tuple[float, float]] | None:
+    """T's corners, if ``node`` is an exercise's tinted triangle (a filled polygon of three)."""
+    if node.get("type") != "Polygon" or not (node.get("fill_opacity") or 0):
+        return None
+    corners = list(dict.fromkeys(_corners(node)))
+    return corners if len(corners) == 3 else None
+
+
+def labels_on_t_without_halo(data: dict) -> list[str]:
+    """The exercises' vertex labels that stand over T's tint with no dark halo, as ``"E on
+    T"``: a candidate's label must (its vertex lies in T), and pink or green on the tint
+    read as on the picture, not beside it (E, F, G and M stood on it)."""
+    from shapely.geometry import Polygon as Region
+    from shapely.geometry import box as area
+
+    found: list[str] = []
+    for play in data["plays"]:
+        nodes = [node for anim in play["animations"] if anim.get("type") in INCOMING
+                 for node in mobject_nodes(anim.get("mobject") or {})
+                 if node.get("name") == "exercise" or anim["mobject"].get("name") == "exercise"]
+        tinted = [Region(t) for node in nodes if (t := _exercise_t(node))]
+        if not tinted:
+            continue
+        for node in nodes:
+            parts = [p["type"] for p in node.get("submobjects", ())]
+            if parts != ["Dot", "FlatText"]:
+                continue
+            label = node["submobjects"][1]
+            if label.get("box") and tinted[0].intersects(area(*label["box"])) \
+                    and not _haloed(label):
+                found.append(f"{label['text']} on T")
+    return found
+
+
+def labels_across_t(data: dict) -> list[str]:
+    """The vertex labels of a card's figure that stand across T's side from their vertex, as
+    ``"D across T's side"``: a vertex inside T whose label stands outside it reads as the
+    label of a point beyond the side (the counterexample's D, 28 px off across AC, on the
+    exercises' card)."""
+    from shapely.geometry import Point as ShapelyPoint
+    from shapely.geometry import Polygon as Region
+
+    found: list[str] = []
+    t = markers = None
+    for play in data["plays"]:
+        for kind, node in _recorded_all_nodes(play):
+            name = node.get("name")
+            if kind not in INCOMING:
+                continue
+            if name == "card:title":
+                t = markers = None
+            elif name == "figure:T":
+                t = Region(list(dict.fromkeys(_corners(node))))
+            elif name == "figure:vertices":
+                markers = node
+        if t is None or markers is None:
+            continue
+        inside = t.buffer(-1e-3)
+        for marker in markers.get("submobjects", ()):
+            dot = _dot_centre(marker)
+            label = next((p for p in marker.get("submobjects", ()) if p.get("text")), None)
+            if dot is None or label is None or not label.get("box"):
+                continue
+            x0, y0, x1, y1 = label["box"]
+            beyond = not t.contains(ShapelyPoint((x0 + x1) / 2, (y0 + y1) / 2))
+            said = f"{label['text']} across T's side"
+            if inside.contains(ShapelyPoint(dot)) and beyond and said not in found:
+                found.append(said)
+    return found
+
+
+# --- ov5: a verdict's words come with its colour ---------------------------------------------------
+
+#: the captions whose words say a colour on the picture, and that colour as the graph writes
+#: it (metaphors.theme.THEME): a verdict's tick the result's green, its cross the rejected's
+#: red, divide and conquer's question and its recursion the piece lit in the called blue
+COLOURED_WORDS = (("✓", "#4CC46B"), ("✗", "#EF4B4B"),
+                  ("Find an inner diagonal of this polygon", "#4F8FF7"),
+                  ("Triangulate this part the same way", "#4F8FF7"))
+
+
+def _shown_colours(anim: dict) -> set[str]:
+    """The colours an animation (and its members) puts on the picture: what a fade or a
+    drawing brings in, or what a recolouring turns a mobject to (its target), every part; the
+    subtitle and the panel (its lit row's light, its rows, its small polygon) are not the
+    picture."""
+    found: set[str] = set()
+    node = anim.get("target") if anim["type"] == "_MethodAnimation" else anim.get("mobject")
+    name = (node or {}).get("name") or ""
+    if anim["type"] not in OUTGOING and node and name != "subtitle" \
+            and not name.startswith(("panel:", "code:")):
+        for part in mobject_nodes(node):
+            found |= {(part.get(key) or "").upper() for key in ("stroke", "fill")}
+    for child in anim.get("animations", ()):
+        found |= _shown_colours(child)
+    return found
+
+
+def words_ahead_of_colours(data: dict) -> list[str]:
+    """The plays that put up a caption saying a colour (:data:`COLOURED_WORDS`: "✓ DG is an
+    inner diagonal", "Find an inner diagonal of this polygon") without bringing that colour on
+    the picture, which came only in a later play, as ``"play 26: '✓ DG is an inner
+    diagonal' before #4CC46B"``: chapter 1's ✓ stood 0.6 s over an amber DG, its question
+    0.5 s before the piece turned blue, chapters 3 and 6's ✗ over an amber BE."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        said = play.get("subcaption") or ""
+        colour = next((c for words, c in COLOURED_WORDS if said.startswith(words)), None)
+        if colour is None:
+            continue
+        shown = set().union(*(_shown_colours(a) for a in play["animations"]))
+        if colour not in shown:
+            found.append(f"play {k}: {said!r} before {colour}")
+    return found
+
+
+# --- ov5: each row of a run's pseudocode is lit when it runs ----------------------------------------
+
+
+def _listed_rows(anim: dict) -> list[str]:
+    """The rows of a pseudocode listing an animation puts on the screen (its ``code:`` rows,
+    not lit: the panel's whole listing), in order."""
+    if anim["type"] not in INCOMING:
+        return []
+    return [(node.get("text") or "").strip() for node in mobject_nodes(anim.get("mobject") or {})
+            if (node.get("name") or "").startswith("code:") and node.get("role") != "called"
+            and node is not anim.get("mobject") and (node.get("text") or "").strip()]
+
+
+def unlit_rows(data: dict) -> list[str]:
+    """The rows of a run's pseudocode never lit while its listing is shown, as ``"'if P is a
+    triangle, we are done' (run 1)"``: chapter 1's divide and conquer ran its base case and
+    its recursion eleven and nine times, and lit neither row (nothing it ran said so). For a
+    run whose every row runs (divide and conquer on a polygon of four vertices or more)."""
+    found, runs = [], 0
+    listed: list[str] = []
+    lit: set[str] = set()
+
+    def close() -> None:
+        found.extend(f"{row!r} (run {runs})" for row in listed if row not in lit)
+
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            rows = _listed_rows(anim)
+            if rows:
+                close()
+                runs, listed, lit = runs + 1, rows, set()
+            lit.update(_lit_rows(anim))
+    close()
+    return found
+
+
+# --- recap5: the recap's rules each with the picture of why; claims told from edges --------
+
+#: the cards that give the rules' verdicts ("Recap: the rules that fail", "… that hold")
+_VERDICT_CARD = re.compile(r"\brules that (fail|hold)\b")
+#: the rules a verdict card may name, as the screen names them: the wrong ones (their name
+#: alone, not after "Correct") and the holding ones
+_WRONG_NAMES = re.compile(r"(?<!Correct )\b(Scaling|Rotation|Translation)\b")
+_RIGHT_NAMES = re.compile(r"\b(Correct (?:Scaling|Rotation|Translation)|Gravity)\b")
+
+
+def _card_title(play: dict) -> str | None:
+    """The title of the card a play brings in, if it does."""
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if node.get("name") == "card:title" and anim["type"] in INCOMING:
+            return _text_of(node) or play.get("subcaption") or ""
+    return None
+
+
+def rules_without_their_picture(data: dict) -> list[str]:
+    """Issue 22 item 8: on a card giving the rules' verdicts (:data:`_VERDICT_CARD`), each rule
+    its words name without the picture of why coming as they name it, as ``"Recap: the rules
+    that fail: Scaling"``: a wrong rule with a region filled red (its motion outside P), a
+    holding one with a region filled green (what its motion swept, inside P) or in the
+    band's colour (gravity's band). The recap's one picture of BD crossing E–A stood for all
+    three wrong rules, their motion never drawn, and the holding rules' none."""
+    red, kept = {_colour("rejected")}, {_colour("result"), _colour("band")}
+    found: list[str] = []
+    card: str | None = None
+    named: dict[str, bool] = {}
+
+    def close() -> None:
+        if card is not None:
+            found.extend(f"{card}: {rule}" for rule, seen in named.items() if not seen)
+
+    for play in data["plays"]:
+        title = _card_title(play)
+        if title is not None:
+            close()
+            card, named = (title if _VERDICT_CARD.search(title) else None), {}
+        said = play.get("subcaption") or ""
+        if card is None or not said or title is not None:
+            continue
+        fills = [n for anim in play["animations"] if anim["type"] not in OUTGOING
+                 for n in _shaded(anim, red | kept)]
+        has_red = any(_filled_in(n, red) for n in fills)
+        has_kept = any(_filled_in(n, kept) for n in fills)
+        for rule in _WRONG_NAMES.findall(said):
+            named[rule] = named.get(rule, False) or has_red
+        for rule in _RIGHT_NAMES.findall(said):
+            named[rule] = named.get(rule, False) or has_kept
+    close()
+    return found
+
+
+# --- ov5: a finished triangulation's triangles counted one by one -----------------------------------
+
+#: the names of a finished triangulation's triangles: a run's end, a card's figure, the
+#: comparison's
+_TRIANGLES = ("triangulation", "figure:triangle", "compare:triangle")
+
+
+def alike_neighbours(data: dict) -> list[str]:
+    """The triangles of a finished triangulation drawn alike (one fill, one opacity) beside a
+    triangle that shares a side with them, and those filled in a colour the parts of a split
+    had (a ``piece:`` tint), as ``"play 104: 2 sides between alike triangles"`` and ``"play
+    104: a triangle in a part's tint #8E6CF0"``: chapter 1's GCD and GDF, side by side in one
+    purple, read as one triangle, and purple had been "the other half" at 41 s. Triangles
+    drawn as outlines only (the Delaunay card's) have no fill to tell apart."""
+    tints = {(n.get("fill") or "").upper() for n in graph_nodes(data)
+             if (n.get("name") or "").startswith("piece:")}
+    found = []
+    for k, play in enumerate(data["plays"]):
+        drawn = [a["mobject"] for a in play["animations"] if a["type"] in INCOMING
+                 and (a.get("mobject") or {}).get("name") in _TRIANGLES
+                 and a["mobject"].get("points") and (a["mobject"].get("fill_opacity") or 0) > 0]
+        looks = [((n.get("fill") or "").upper(), round(n.get("fill_opacity") or 0, 3))
+                 for n in drawn]
+        corners = [_corners(n) for n in drawn]
+        alike = sum(1 for i, j in itertools.combinations(range(len(drawn)), 2)
+                    if looks[i] == looks[j]
+                    and sum(_near(p, corners[j]) for p in corners[i]) == 2)
+        if alike:
+            found.append(f"play {k}: {alike} sides between alike triangles")
+        found += [f"play {k}: a triangle in a part's tint {colour}"
+                  for colour in sorted({c for c, _ in looks} & tints)]
+    return found
+
+
+# --- ov5: one picture per idea; the rule before its numbers ----------------------------------------
+
+
+def _normalised(points: list, frame: tuple[float, float, float, float]) -> frozenset:
+    """Corners in the unit box of their polygon's ``frame`` (its box on screen), rounded:
+    the same vertex drawn in a card's figure and on a run's board is the same point."""
+    x0, y0, x1, y1 = frame
+    scale = max(x1 - x0, y1 - y0) or 1.0
+    return frozenset((round((x - x0) / scale, 2), round((y - y0) / scale, 2))
+                     for x, y in points)
+
+
+def _pictures(data: dict, kinds: dict[str, str]) -> Iterator[tuple[int, str, frozenset]]:
+    """(play, kind, corners) of every shape named as ``kinds`` says (a name, or a prefix ending
+    in ``:``) that a play brings in, its corners in the unit box of the polygon drawn last
+    before it (a run's ``polygon``, a card's ``figure:polygon``)."""
+    frame = None
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name = node.get("name") or ""
+            if anim["type"] not in INCOMING or not node.get("points"):
+                continue
+            corners = _corners(node)
+            if name in ("polygon", "figure:polygon"):
+                xs, ys = [p[0] for p in corners], [p[1] for p in corners]
+                frame = (min(xs), min(ys), max(xs), max(ys))
+            for prefix, kind in kinds.items():
+                if frame and (name == prefix or (prefix.endswith(":") and name.startswith(prefix))):
+                    yield k, kind, _normalised(corners, frame)
+
+
+def replayed_splits(data: dict) -> list[str]:
+    """The parts a card's figure cuts P into (``figure:half``) that a run then cuts it into
+    again (a ``piece:``), as ``"play 11: a card's part is the run's, play 30"``: chapter 1's
+    Lennes card split along DG into 4 and 11 vertices, then the run found DG and split along
+    it again (one picture per idea)."""
+    cut = [(k, c) for k, kind, c in _pictures(data, {"figure:half": "card"}) if kind == "card"]
+    split = [(k, c) for k, _, c in _pictures(data, {"piece:": "run"})]
+    return [f"play {k}: a card's part is the run's, play {m}" for k, c in cut
+            for m, d in split if m > k and c == d][:len(cut)]
+
+
+def restyled_triangulations(data: dict) -> list[str]:
+    """A triangulation drawn twice in a chapter (a card's figure, a run's end) in other
+    fills, unsaid, as ``"play 104: 11 triangles, 2 as on play 0"``:
+    chapter 1's card at 0–18 s and its run's end at 83 s were one triangulation in other
+    colours, which read as another."""
+    drawn: dict[int, dict[frozenset, tuple]] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and node.get("name") in ("figure:triangle",
+                                                                 "triangulation"):
+                drawn.setdefault(k, {})[frozenset(_corners(node))] = (
+                    (node.get("fill") or "").upper(), round(node.get("fill_opacity") or 0, 3))
+    # each picture's triangles in the unit box of its own corners
+    shown = []
+    for k, triangles in sorted(drawn.items()):
+        points = [p for t in triangles for p in t]
+        xs, ys = [p[0] for p in points], [p[1] for p in points]
+        frame = (min(xs), min(ys), max(xs), max(ys))
+        shown.append((k, {_normalised(list(t), frame): look for t, look in triangles.items()}))
+    found = []
+    for (k, first), (m, later) in itertools.combinations(shown, 2):
+        if set(first) != set(later):  # another triangulation: its own run says so
+            continue
+        alike = sum(1 for t, look in later.items() if first.get(t) == look)
+        if alike < len(later):
+            found.append(f"play {m}: {len(later)} triangles, {alike} as on play {k}")
+    return found
+
+
+#: a count of triangles (a number), and the rule it follows from
+_COUNT, _RULE = re.compile(r"\b\d+ triangles\b"), "n − 2"
+
+
+def numbers_before_rules(data: dict) -> list[str]:
+    """The counts of triangles ("11 triangles") shown or said in a chapter before the rule
+    they follow ("n − 2") is, as ``"play 6: 'n = 13: 11 triangles, 10 inner diagonals'
+    before the rule"``: chapter 1 counted 11 triangles 4 s before it said n − 2."""
+    for k, play in enumerate(data["plays"]):
+        texts = [play.get("subcaption") or ""] + [
+            _text_of(a["mobject"]) for a in play["animations"]
+            if a["type"] in INCOMING and a.get("mobject")]
+        if any(_RULE in t for t in texts):
+            return []
+        counted = [t for t in texts if _COUNT.search(t)]
+        if counted:
+            return [f"play {k}: {counted[0]!r} before the rule"]
+    return []
+
+
+# --- mono5: chapter 5 taught on its picture (fresh teacher's review of 05-faster) ----------------
+
+#: each word of the monotone lesson, and what the first caption that says it must say with it
+#: (a word said before it is taught): y-monotone with its horizontal line, the helper with
+#: the lowest vertex that sees its edge, each kind of vertex with its neighbours (as the sweep
+#: meets it). The card opened with "y-monotone pieces" and "split and merge vertices" 14 s
+#: before the run said what they are, and "D joins its helper F" said helper unexplained.
+TAUGHT = {
+    "y-monotone": re.compile(r"horizontal line"),
+    "helper": re.compile(r"the lowest vertex"),
+    "split": re.compile(r"neighbours below, interior above: a split vertex"),
+    "merge": re.compile(r"neighbours above, interior below: a merge vertex"),
+}
+
+
+def _captions(data: dict) -> list[str]:
+    """The captions in the order they are said, each once where it first comes."""
+    said: list[str] = []
+    for play in data["plays"]:
+        caption = play.get("subcaption")
+        if caption and (not said or said[-1] != caption):
+            said.append(caption)
+    return said
+
+
+def untaught_words(data: dict) -> list[str]:
+    """The words of :data:`TAUGHT` whose first caption does not teach them, as ``"'helper'
+    before taught: 'Diagonal DF: …'"``."""
+    found = []
+    for word, teaching in TAUGHT.items():
+        first = next((c for c in _captions(data) if re.search(rf"\b{re.escape(word)}\b", c)),
+                     None)
+        if first is not None and not teaching.search(first):
+            found.append(f"{word!r} before taught: {first!r}")
+    return found
+
+
+#: the kinds of vertex of the monotone sweep
+VERTEX_KINDS = ("start", "end", "split", "merge", "regular")
+
+
+def kinds_said(data: dict) -> set[str]:
+    """The kinds of vertex a caption names a vertex as (``"E: … an end vertex"``): chapter
+    5's sweep met two end vertices, E and C, and named neither (both went by under "Vertices
+    E and C: the same steps, faster")."""
+    return {kind for caption in _captions(data) for kind in VERTEX_KINDS
+            if re.match(rf"^\S+: .*\ban? {kind} vertex\b", caption)}
+
+
+_DIAGONAL_CAPTION = re.compile(r"^Diagonal (\S+(?: \S+)*?): ")
+_HELPER_SET = re.compile(r"^(\S+) becomes \S+'s helper\b")
+
+
+def unseen_helpers(data: dict) -> list[str]:
+    """The diagonals of the monotone sweep whose helper (the diagonal's second end) was
+    never seen becoming one: no earlier caption says ``"F becomes B–C's helper"`` with the
+    helper drawn (an object named ``helper``) in its play, as ``"DF: F never seen to become
+    a helper"``. F became D's helper under "Vertices H, B, G and F: the same steps, faster",
+    and "Diagonal DF: the split vertex D joins its helper F" came from nowhere."""
+    seen: set[str] = set()
+    found, caption = [], ""
+    for play in data["plays"]:
+        new = play.get("subcaption")
+        caption = new or caption  # the picture plays after its words, under them
+        if (m := _HELPER_SET.match(caption)) and any(
+                node.get("name") == "helper" for anim in play["animations"]
+                for key in ("mobject", "target") for node in mobject_nodes(anim.get(key) or {})):
+            seen.add(m.group(1))
+        if new and (m := _DIAGONAL_CAPTION.match(new)):
+            ends = m.group(1)
+            helper = ends.split()[-1] if " " in ends else ends[-1]
+            if helper not in seen:
+                found.append(f"{ends}: {helper} never seen to become a helper")
+    return sorted(set(found))
+
+
+def stack_returns_unsaid(data: dict) -> list[str]:
+    """The monotone stack's labels that come back onto its column after leaving it under
+    words that do not say so, as ``"'A is done: H and B wait on the stack': H left, comes
+    back unsaid"``: "H leaves" then "H and B wait" read as a contradiction (72–81 s), while
+    the column drew H popped and pushed back."""
+    found, caption = [], ""
+    shown: list[str] = []
+    left: set[str] = set()
+    for play in data["plays"]:
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if node.get("name") != "stack:column":
+                continue
+            if anim.get("type") in OUTGOING:
+                shown, left = [], set()
+                continue
+            new = _stack_labels(anim.get("target", node))
+            for v in new:
+                if v in left and v not in shown and not re.search(
+                        rf"\b{re.escape(v)}\b[^:]*\b(?:goes|go|comes|come) back\b", caption):
+                    found.append(f"{caption!r}: {v} left, comes back unsaid")
+            left |= {v for v in shown if v not in new}
+            shown = new
+    return found
+
+
+#: the least gap beside a label (scene units) that the sweep line leaves where it passes at
+#: the label's height: 0.12 each side of K's and M's letters read as a line through them
+LEAST_SWEEP_SIDE_GAP = 0.35
+
+
+def labels_beside_the_sweep(data: dict) -> list[str]:
+    """The vertex labels the monotone sweep line passes at their own height (a dash meeting
+    the label's band, its bottom to its top) nearer than :data:`LEAST_SWEEP_SIDE_GAP` beside
+    them, as ``"the sweep 0.12 beside K"``; each label once, at its least gap."""
+    least: dict[str, float] = {}
+    for anim, labels in _with_labels(data):
+        for key in ("mobject", "target"):
+            for line in mobject_nodes(anim.get(key) or {}):
+                if line.get("name") not in _TOOL_LINES:
+                    continue
+                for dash in mobject_nodes(line):
+                    if len(dash.get("points", ())) < 2 or (dash.get("stroke_opacity") or 0) == 0:
+                        continue
+                    xs = [p[0] for p in dash["points"]]
+                    ys = [p[1] for p in dash["points"]]
+                    for v, (x0, y0, x1, y1) in labels.items():
+                        if max(ys) < y0 or min(ys) > y1:
+                            continue  # not at the label's height
+                        gap = max(x0 - max(xs), min(xs) - x1, 0.0)
+                        if gap < LEAST_SWEEP_SIDE_GAP - 1e-3:
+                            least[v] = min(gap, least.get(v, gap))
+    return [f"the sweep {gap:.2f} beside {v}" for v, gap in sorted(least.items())]
+
+
+def counts_on_two_lines(data: dict) -> list[str]:
+    """The counts (a ``counter`` text) broken over lines, as ``"'n − 2 = 13 − 2 / = 11
+    triangles'"``: its halves read as two things (chapter 5's count in the top-left corner)."""
+    found = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for node in mobject_nodes(anim.get("mobject") or {}):
+                text = node.get("text") or ""
+                if node.get("name") == "counter" and "\n" in text.strip():
+                    found.append(repr(text.replace("\n", " / ")))
+    return sorted(set(found))
+
+
+#: another name for an algorithm, said on screen only beside its one name (:data:`SPOKEN`):
+#: chapter 4 said "With ear status kept up to date" and its plot "ear status kept", chapter 5
+#: then "Faster ear clipping", never taught
+OTHER_NAMES = {"ear status kept": "faster ear clipping"}
+
+
+def names_said_otherwise(data: dict) -> list[str]:
+    """The texts on screen (and the cues) that name an algorithm by another name of
+    :data:`OTHER_NAMES` without its own, as ``"'ear status kept: 235' for faster ear
+    clipping"``."""
+    captions = [" ".join(c.split()) for c in _captions(data)]
+    found = {}
+    for text in _all_shown_texts(data, frozenset()):
+        said = " ".join(text.split())
+        if any(said in caption and said != caption for caption in captions):
+            continue  # a row of a card's line: the line is read whole, as its caption
+        for other, name in OTHER_NAMES.items():
+            if other in said.lower() and name not in said.lower():
+                found[f"{said!r} for {name}"] = None
+    return sorted(found)
+
+
+#: the claims a reading rule measures against the edges: a run's, an analysis's, an
+#: exercise's answer's and a card's figure's
+_ALL_CLAIMS = (*_CLAIMS, "figure:claim")
+#: a claim that runs within this many degrees of an edge of P at the vertex they share, its
+#: far end nearer than :data:`LEAST_OUTSIDE` (4 % of the frame's height) to the edge's line,
+#: reads as a part of the edge (gravity's EC ran 7° off B–C, its E 2.9 % of the frame's
+#: height from it; the corrections' BE 4° off it)
+LEAST_CLAIM_ANGLE = 15.0
+
+
+def _segment_of(node: dict) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """A drawn line's ends: its own points', or its last part's with points (a claim on a
+    casing is the casing, then the line)."""
+    if node.get("points"):
+        return tuple(node["points"][0][:2]), tuple(node["points"][-1][:2])
+    for child in reversed(node.get("submobjects", ())):
+        found = _segment_of(child)
+        if found is not None:
+            return found
+    return None
+
+
+def claims_along_edges(data: dict, least: float = LEAST_CLAIM_ANGLE) -> list[str]:
+    """Issue 22 item 3: the claims drawn within ``least`` degrees of an edge of their polygon
+    at a vertex they share, their other end nearer than :data:`LEAST_OUTSIDE` to the edge's
+    line, as ``"figure:claim (x, y)–(x, y): 7.3° off an edge, 0.23 from it"``: such a claim
+    reads as a part of the edge. A claim is matched to the drawn polygon that has both its
+    ends as corners."""
+    nodes = list(graph_nodes(data))
+    polygons = [_corners(n) for n in nodes if n.get("points") and n.get("name") in _PICTURES]
+    found = {}
+    for node in nodes:
+        if node.get("name") not in _ALL_CLAIMS:
+            continue
+        ends = _segment_of(node)
+        if ends is None:
+            continue
+        home = [c for c in polygons if _near(ends[0], c) and _near(ends[1], c)]
+        if not home:
+            continue
+        corners = home[0]
+        for here, there in (ends, ends[::-1]):
+            k = next(i for i, q in enumerate(corners) if _near(here, [q]))
+            for q in (corners[k - 1], corners[(k + 1) % len(corners)]):
+                if _near(q, [there]):
+                    continue  # the claim is this edge: no diagonal
+                a = math.atan2(there[1] - here[1], there[0] - here[0])
+                b = math.atan2(q[1] - here[1], q[0] - here[0])
+                off = abs(math.degrees((a - b + math.pi) % (2 * math.pi) - math.pi))
+                gap = math.dist(here, there) * math.sin(math.radians(off))
+                if off < least and gap < LEAST_OUTSIDE:
+                    where = f"{node['name']} ({ends[0][0]:g}, {ends[0][1]:g})–" \
+                            f"({ends[1][0]:g}, {ends[1][1]:g})"
+                    found[where] = f"{off:.1f}° off an edge, {gap:.2f} from it"
+    return [f"{where}: {what}" for where, what in sorted(found.items())]
+
+
+def _solid_strokes(node: dict) -> set[str]:
+    """The stroke colours a node draws in solid lines (a dashed line is drawn in pieces: a
+    ``DashedLine``, or a group of dashes; a dark casing under a line is none)."""
+    if node.get("type") == "DashedLine":
+        return set()
+    own = (node.get("stroke") or "").upper()
+    found = {own} if node.get("points") and own and (node.get("stroke_opacity") or 1) > 0 \
+        and own != _colour("background") else set()
+    for child in node.get("submobjects", ()):
+        found |= _solid_strokes(child)
+    return found
+
+
+def claims_like_their_edges(data: dict) -> list[str]:
+    """Issue 22 item 4: a card's figure drawing a crossed edge (``figure:edge:…``) in the same
+    solid colour as a claim it shows, as ``"play 4: figure:edge:E–A like its claim"``: BD and
+    E–A, both solid red, read as one red cross, the claim not told from the edge it crosses."""
+    found = []
+    claims: list[set[str]] = []
+    for k, play in enumerate(data["plays"]):
+        if _card_title(play) is not None:
+            claims = []
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in OUTGOING or anim["type"] not in INCOMING | {"UpdateFromAlphaFunc"}:
+                continue
+            if node.get("name") == "figure:claim":
+                claims.append(_solid_strokes(node))
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name = node.get("name") or ""
+            if name.startswith("figure:edge:") and anim["type"] not in OUTGOING \
+                    and any(_solid_strokes(node) & c for c in claims):
+                found.append(f"play {k}: {name} like its claim")
+    return found

@@ -18,7 +18,7 @@ from trex.cli import main
 ROOT = Path(__file__).resolve().parent.parent
 BAD = ROOT / "tests" / "data" / "bad"
 BAD_INPUTS = [*sorted(p.name for p in BAD.iterdir()), "missing.json"]
-COUNTER_LINE = "valid, 5 vertices, counter-clockwise, area 10.8, 1 reflex vertex (E)"
+COUNTER_LINE = "valid, 5 vertices, counter-clockwise, area 12.52, 1 reflex vertex (E)"
 
 
 def invoke(*args: str):
@@ -64,7 +64,7 @@ def test_many_reflex_labels_are_truncated():
 
 def test_files_and_warnings(tmp_path):
     path = tmp_path / "c.json"
-    path.write_text("[[0.3, 2.7], [6.5, 1.1], [6.5, 1.1], [4.25, 2.85], [4.5, 1.9], [0.4, 7], [0.3, 2.7]]")
+    path.write_text("[[0.4, 2.5], [7, 1], [7, 1], [4, 3.5], [4.4, 2.2], [0.8, 7], [0.4, 2.5]]")
     result = invoke("check", str(path))
     assert result.exit_code == 0
     assert result.stdout == f"{path}: {COUNTER_LINE}\n"

@@ -74,7 +74,7 @@ def test_human_lines():
     assert out.splitlines() == [
         "lecture: divide-and-conquer: 11 triangles, valid",
         "counterexample: divide-and-conquer: stopped after 0 triangles: "
-        "B–D crosses edge E–A at (3.75149, 2.83107)",
+        "B–D crosses edge E–A at (3.52414, 3.36782)",
     ]
 
 

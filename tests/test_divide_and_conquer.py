@@ -57,7 +57,7 @@ def test_counterexample_failure_names_the_crossed_edge():
     assert not result.valid
     assert [p.labels[k] for k in result.claim] == ["B", "D"]
     assert [p.labels[k] for k in result.failure.edge] == ["E", "A"]
-    assert result.failure.why == "B–D crosses edge E–A at (3.75149, 2.83107)"
+    assert result.failure.why == "B–D crosses edge E–A at (3.52414, 3.36782)"
     (note,) = log.find(kind="note")
     assert note.name == "bad-diagonal" and note.args["diagonal"] == ["B", "D"]
 

@@ -12,7 +12,7 @@ from geometry.frame import candidates_in_triangle, leftmost_vertex, triangle_at
 from geometry.io import read_polygon
 from story.exercises import PICKABLE, answers_markdown, make_exercises
 from story.hunt import in_general_position
-from story.registry import SPOKEN, wrong
+from story.registry import SPOKEN, spoken, wrong
 from story.words import why_not_inner
 from trex.cli import main
 
@@ -324,12 +324,69 @@ def test_a_pick_is_not_a_near_tie_on_screen():
 
 
 def test_a_diagonal_that_crosses_several_edges_names_each():
-    """The lecture's third exercise: AC leaves P through L–M, comes back through F–G and
+    """The lecture's old third exercise: AC leaves P through L–M, comes back through F–G and
     leaves again through E–F; the answer said "AC crosses edge L–M" alone (review r567)."""
-    e = make_exercises(3, 2022)[2]
-    assert e.kind == "inner"
+    from story.exercises import _frame, _inner
+
+    e = _inner(3)(_frame("random-2opt:13:11576"))
+    assert e is not None and e.kind == "inner"
     assert "AC crosses edges L–M, F–G and E–F" in e.reason, e.reason
     # the old reason fails the rule
     with pytest.raises(AssertionError):
         assert_why_not(e.polygon, "AC", is_inner_diagonal(e.polygon, *e.options[0]),
                        "AC crosses edge L–M; BF and BM run inside the polygon")
+
+
+def test_a_pick_tells_the_rule_apart_from_the_rules_a_class_may_confuse_it_with():
+    """Review of chapter 6: "Which vertex does Correct Translation pick?" on
+    random-2opt:13:5957 had E for answer, Scaling's pick and Translation's too: a class
+    applying a wrong rule got it right. A pick exercise's answer differs from the pick of
+    Scaling and of the rule's twin (:func:`story.exercises.confusions`), and says theirs."""
+    from story.exercises import _fair_pick, _frame, confusions
+
+    old = _frame("random-2opt:13:5957")
+    assert old is not None
+    asked = find_diagonal(old.polygon, "translation-correct").v.index
+    assert asked in {find_diagonal(old.polygon, h).v.index
+                     for h in confusions("translation-correct")}
+    assert _fair_pick(1, old, "translation-correct") is None
+    for seed in (0, 7, 2022):
+        for e in make_exercises(3, seed):
+            if e.kind != "pick":
+                continue
+            for h in confusions(e.heuristic):
+                other = find_diagonal(e.polygon, h).v.label
+                assert other != e.answer, (seed, e.spec, h)
+                assert f"would pick {other}" in e.reason and spoken(h) in e.reason, e.reason
+
+
+_DASHED = re.compile(r"\b([A-Z])–([A-Z])\b")
+
+
+@pytest.mark.parametrize("seed", [0, 7, 2022])
+def test_an_edge_is_written_with_a_dash_a_diagonal_without(seed):
+    """Review of chapter 6: "yes (Scaling claims BF): B–F crosses no edge …" named one
+    diagonal two ways in one sentence. An answer writes an edge X–Y and a diagonal XY: every
+    dashed pair it names is an edge of its polygon."""
+    from story.exercises import _inside
+
+    for e in make_exercises(6, seed):
+        p = e.polygon
+        for u, v in _DASHED.findall(f"{e.answer}: {e.reason}"):
+            i, j = p.labels.index(u), p.labels.index(v)
+            assert (j - i) % p.n in (1, p.n - 1), (e.spec, f"{u}–{v}", e.reason)
+    p = read_polygon("random-2opt:7:79865")  # the old second exercise's claim, BF
+    assert _inside(p, 1, p.labels.index("F")).startswith("BF crosses no edge")
+
+
+def test_an_answer_stays_up_until_it_is_checked_against_the_picture():
+    """Review of chapter 6: the third answer, three diagonals to check, was up 4.5 s. An
+    answer stays up 8 s at least, and its reading time with 2 s for each thing it names."""
+    from story.exercises import checking_time
+    from story.reading import reading_time
+
+    e = make_exercises(3, 2022)[2]
+    said = f"{e.answer}: {e.reason}"
+    assert e.kind == "inner" and e.checks == len(e.options) >= 3
+    assert checking_time(e, said) == max(8.0, reading_time(said) + 2.0 * len(e.options)) > 10
+    assert checking_time(make_exercises(3, 2022)[1], "yes") == 8.0

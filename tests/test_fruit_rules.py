@@ -5,6 +5,8 @@ on the board with its slices on the plate and the fruit gone) and on the same gr
 
 from __future__ import annotations
 
+import math
+
 from tests.reading_rules import (
     faint_cuts,
     flickering_counts,
@@ -14,8 +16,11 @@ from tests.reading_rules import (
     leftover_verdicts,
     placeholders_as_labels,
     polygon_names,
+    recoloured_close_ups,
+    shifting_tints,
     stale_good_parts,
     stray_vertex_markers,
+    unseen_ear_tests,
 )
 from tests.test_tool_rules import _closed, _graph
 
@@ -273,3 +278,86 @@ def test_a_label_on_the_fruit_with_room_off_it_is_found():
     # a hole's vertex in a fruit all round it, the hole too small: no room off it
     whole = _graph([fruit((-3, -3), (5, -3), (5, 5), (-3, 5)), label])
     assert labels_on_the_fruit_with_room(whole) == []
+
+
+# --- chapter 4, ears4: an ear test answered no shows why; the good sub-polygon's one colour ---
+
+
+def _pulse(label: str, at: tuple[float, float]) -> dict:
+    """A vertex marker pulsing (``Indicate``): its dot a small square round ``at``."""
+    x, y = at
+    dot = {"name": "Dot", "points": _closed((x - 0.05, y - 0.05), (x + 0.05, y - 0.05),
+                                            (x + 0.05, y + 0.05), (x - 0.05, y + 0.05))}
+    return {"type": "Indicate", "mobject": {"name": f"vertex:{label}", "submobjects": [dot]}}
+
+
+def _red(name: str, *corners: tuple[float, float]) -> dict:
+    return {"type": "_MethodAnimation",
+            "mobject": {"name": name, "role": "rejected", "points": _closed(*corners)},
+            "target": {"name": name, "role": "rejected", "points": _closed(*corners)}}
+
+
+def test_an_ear_test_that_does_not_show_why_is_found():
+    """Prune and search's "is H an ear? no" at 96 s: H straight between G and K, its red
+    triangle a line; a reflex vertex's red triangle holds no vertex (it lies outside P)."""
+    g, h, k = (0.0, 0.0), (1.0, 1.0), (2.5, 2.5)
+    flat = _graph([_pulse("H", h), _red("ear-triangle", g, h, k)])
+    assert unseen_ear_tests(flat) == ["play 0 H: red triangle 0.00 high"]
+    empty = _graph([_pulse("G", (0, 0)), _red("ear-triangle", (2, -1), (0, 0), (2, 1))])
+    assert unseen_ear_tests(empty) == ["play 0 G: red triangle, no vertex inside"]
+    # mended: the vertex inside pulses in a triangle with room; a not-convex one's angle
+    inside = _graph([_pulse("B", (0, 0)), _pulse("G", (1.5, 0.1)),
+                     _red("ear-triangle", (2, -1), (0, 0), (2, 1))])
+    assert unseen_ear_tests(inside) == []
+    arc = [(h[0] + 0.3 * math.cos(math.pi / 4 + math.pi * t / 12),
+            h[1] + 0.3 * math.sin(math.pi / 4 + math.pi * t / 12)) for t in range(13)]
+    angle = _graph([_pulse("H", h), _red("ear-angle", h, *arc)])
+    assert unseen_ear_tests(angle) == []
+    # an angle too small to see is no reason shown
+    speck = [(h[0] + 0.05 * (x - h[0]) / 0.3, h[1] + 0.05 * (y - h[1]) / 0.3) for x, y in arc]
+    assert unseen_ear_tests(_graph([_pulse("H", h), _red("ear-angle", h, *speck)])) == [
+        "play 0 H: angle 0.004 wide"]
+    # an ear's green triangle, however thin, is no answer of "no"
+    assert unseen_ear_tests(_graph([{**_red("ear-triangle", g, h, k),
+                                     "target": {"name": "ear-triangle", "role": "result",
+                                                "points": _closed(g, h, k)}}])) == []
+
+
+def _tinted(name: str, fill: str, opacity: float, polygon: str, under: str,
+            under_opacity: float) -> list[dict]:
+    shape = _closed((0, 0), (4, 0), (4, 4))
+    return [{"type": "FadeIn", "mobject": {"name": polygon, "points": shape, "fill": under,
+                                           "fill_opacity": under_opacity}},
+            {"type": "FadeIn", "mobject": {"name": name, "points": shape, "fill": fill,
+                                           "fill_opacity": opacity}}]
+
+
+def test_a_good_sub_polygon_in_two_colours_is_found():
+    """Chapter 4's prune and search card tinted its good sub-polygon teal over P's navy,
+    the run blue over the fruit's orange."""
+    card = _tinted("figure:smaller", "#2BB5A8", 0.62, "figure:polygon", "#2A3A55", 0.35)
+    run = _tinted("good", "#4F8FF7", 0.3, "polygon", "#F4A259", 0.75)
+    assert shifting_tints(_graph(card, run)) == [
+        "the good sub-polygon: #247d7a (play 0 figure:smaller), #9b837e (play 1 good)"]
+    # mended: the card draws the fruit and tints it as the run does
+    card = _tinted("figure:good", "#4F8FF7", 0.3, "figure:polygon", "#F4A259", 0.75)
+    assert shifting_tints(_graph(card, run)) == []
+
+
+def _close_up(fill: str, edge: str, width: float) -> dict:
+    parts = [{"type": "Polygon", "fill": fill, "fill_opacity": 0.75, "stroke_width": 0.0},
+             {"type": "Line", "stroke": edge, "stroke_width": width},
+             {"type": "Line", "stroke": "#58C4DD", "stroke_width": 0.0}]  # unseen: not judged
+    return {"type": "UpdateFromAlphaFunc", "mobject": {"name": "close-up", "submobjects": parts}}
+
+
+def test_a_close_up_in_other_colours_is_found():
+    """Chapter 4's gravity close-up drew the fruit in P's navy with white edges."""
+    fruit = {"type": "Transform", "mobject": {"name": "polygon", "fill": "#F4A259",
+                                              "fill_opacity": 0.75, "stroke": "#7A9E3D",
+                                              "stroke_width": 6.6}}
+    navy = _graph([fruit], [_close_up("#2A3A55", "#E8ECF2", 3.0)])
+    assert recoloured_close_ups(navy) == [
+        "play 1: fill #2A3A55 0.75, edges #E8ECF2 3.0 (the picture: fill #F4A259 0.75, edges "
+        "#7A9E3D 6.6)"]
+    assert recoloured_close_ups(_graph([fruit], [_close_up("#F4A259", "#7A9E3D", 6.6)])) == []

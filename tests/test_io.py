@@ -241,7 +241,7 @@ def test_unreadable_file_is_one_line(tmp_path, monkeypatch):
 
 def test_sample_names_and_specs():
     assert read_polygon("counterexample").input_points() == [
-        (0.3, 2.7), (6.5, 1.1), (4.25, 2.85), (4.5, 1.9), (0.4, 7.0)
+        (0.4, 2.5), (7.0, 1.0), (4.0, 3.5), (4.4, 2.2), (0.8, 7.0)
     ]
     assert read_polygon("random-orthogonal:30:4").n == 30
     with pytest.raises(InputFormatError, match="needs n ≥ 3"):

@@ -255,7 +255,9 @@ def test_a_summary_said_again_later_shares_its_time_only_within_its_own_stretch(
 
     class SaidTwice(TraceScene):
         algorithm = "monotone"
-        polygon = "lecture"
+        # two summaries apart (the lecture's polygon has one since F's step, whose helper a
+        # diagonal joins, and E's, the first end vertex, are their own)
+        polygon = "random-2opt:14:5"
 
         def beats(self, log):
             beats = super().beats(log)
@@ -265,7 +267,7 @@ def test_a_summary_said_again_later_shares_its_time_only_within_its_own_stretch(
             return [replace(b, caption=first) if b.caption == last else b for b in beats]
 
     runs = _fast_steps(build(SaidTwice.handed()).data)
-    assert [len(steps) for _, steps in runs] == [4, 2] and runs[0][0] == runs[1][0]
+    assert len(runs) == 2 and runs[0][0] == runs[1][0]
     for said, steps in runs:
         assert min(steps) >= 0.5, (said, steps)
         assert sum(steps) >= reading_time(said) - 0.5, (said, steps)
@@ -350,8 +352,8 @@ def test_every_split_and_merge_vertex_and_diagonal_is_a_step_of_its_own():
         assert rows[b.row].calls == ("add_diagonal",)
     # what is fast-forwarded holds no split or merge vertex
     fast = [b for b in beats if "the same steps, faster" in b.caption]
-    assert fast and all(not isinstance(b, MonotoneDiagonal) and b.kind not in ("split", "merge")
-                        for b in fast)
+    assert fast and all(not isinstance(b, MonotoneDiagonal)
+                        and getattr(b, "kind", None) not in ("split", "merge") for b in fast)
 
 
 def test_the_stack_drawn_is_the_stack_of_the_log():

@@ -7,7 +7,12 @@ from __future__ import annotations
 
 from itertools import pairwise
 
-from tests.reading_rules import fleeting_kind_words, jumping_stacks, stray_kind_words
+from tests.reading_rules import (
+    fleeting_kind_words,
+    jumping_stacks,
+    labels_beside_the_sweep,
+    stray_kind_words,
+)
 
 
 def _dot(x: float, y: float) -> dict:
@@ -134,8 +139,32 @@ def test_a_sweep_line_that_runs_up_to_a_label_is_found():
                    ([{"type": "Transform", "mobject": _sweep((-2.0, 2.0, 1.0)),
                       "target": _sweep((-2.0, -0.39, 0.0), (-0.11, 2.0, 0.0))}], None, 1.0))
     clear = _graph((SHOWN[:1], None, 1.0),
-                   ([{"type": "Create", "mobject": _sweep((-2.0, -0.47, 0.0), (-0.03, 2.0, 0.0))}],
+                   ([{"type": "Create", "mobject": _sweep((-2.0, -0.75, 0.0), (0.25, 2.0, 0.0))}],
                     None, 1.0))
+    # 0.12 beside it at its height (K and M at 22.7–30 s), and 0.12 over its top (A at 16 s)
+    beside = _graph((SHOWN[:1], None, 1.0),
+                    ([{"type": "Create", "mobject": _sweep((-2.0, -0.47, 0.0), (-0.03, 2.0, 0.0))}],
+                     None, 1.0))
+    over = _graph((SHOWN[:1], None, 1.0),
+                  ([{"type": "Create", "mobject": _sweep((-2.0, 2.0, 0.22))}], None, 1.0))
     assert labels_struck_by_the_sweep(near) == ["the sweep 0.04 from A"]
     assert labels_struck_by_the_sweep(moved) == ["the sweep 0.04 from A"]
-    assert labels_struck_by_the_sweep(clear) == []
+    assert labels_struck_by_the_sweep(over) == ["the sweep 0.12 from A"]
+    assert labels_beside_the_sweep(beside) == ["the sweep 0.12 beside A"]
+    assert labels_beside_the_sweep(over) == []
+    assert labels_struck_by_the_sweep(clear) == labels_beside_the_sweep(clear) == []
+
+
+def test_a_vertex_that_comes_back_onto_the_stack_unsaid_is_found():
+    """Chapter 5 at 72–77 s: "Triangle ABH cut off: H leaves", then "A is done: H and B wait
+    on the stack", the column drawing H popped and pushed back: said to come back, it reads."""
+    from tests.reading_rules import stack_returns_unsaid
+
+    def plays(said: str) -> dict:
+        return _graph(([_column("FadeIn", "H", "A")], "H waits on the stack", 1.0),
+                      ([_column("Transform", "A")], "Triangle ABH cut off: H leaves", 1.0),
+                      ([_column("Transform", "B", "H")], said, 1.0))
+
+    assert stack_returns_unsaid(plays("A is done: H and B wait on the stack")) == [
+        "'A is done: H and B wait on the stack': H left, comes back unsaid"]
+    assert stack_returns_unsaid(plays("A is done: H goes back on the stack, B on top")) == []

@@ -77,11 +77,11 @@ def test_a_wrong_heuristic_of_ones_own_stops_at_its_first_wrong_claim(mine):
     assert code == 1  # as for a wrong built-in: a finding (the run stopped), the input was fine
     record = json.loads(out)
     assert record["valid"] is False and record["triangles"] == []
-    assert record["why"] == "B–E crosses edge C–D at (3.75149, -2.83107)"
+    assert record["why"] == "B–E crosses edge C–D at (3.52414, -3.36782)"
     code, out, _ = run("triangulate", "counterexample-twin", "--heuristic",
                        f"{mine}:nearest_to_c")
     assert out.strip() == ("counterexample-twin: divide-and-conquer: stopped after 0 "
-                           "triangles: B–E crosses edge C–D at (3.75149, -2.83107)")
+                           "triangles: B–E crosses edge C–D at (3.52414, -3.36782)")
 
 
 def test_the_readmes_example_fails_like_a_wrong_builtin():
@@ -91,7 +91,7 @@ def test_the_readmes_example_fails_like_a_wrong_builtin():
     right, wrong = out.splitlines()
     assert right == "counterexample: divide-and-conquer: 3 triangles, valid"
     assert wrong.endswith("stopped after 0 triangles: B–E crosses edge C–D at "
-                          "(3.75149, -2.83107)")
+                          "(3.52414, -3.36782)")
     p = Polygon.from_points(make_sample("counterexample-twin"))
     assert not is_inner_diagonal(p, p.labels.index("B"), p.labels.index("E"))
 

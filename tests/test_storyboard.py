@@ -43,7 +43,8 @@ def test_fruit_beats_count_every_slice():
 @pytest.mark.parametrize("polygon", ["lecture", "comb", "random-2opt:12:7", "random-comb:14:3"])
 def test_a_vertex_that_is_no_ear_shows_why(algorithm, polygon):
     """Issue 22 item 5: "Is B an ear? no" names a vertex in B's triangle (which the fruit
-    scene pulses inside the triangle drawn), or says B is not convex; checked exactly."""
+    scene pulses inside the triangle drawn), or says B is not convex and how wide its angle
+    is (the scene draws the angle); checked exactly."""
     from geometry.batch import in_closed_triangle
     from geometry.io import read_polygon
     from geometry.predicates import orient
@@ -62,9 +63,9 @@ def test_a_vertex_that_is_no_ear_shows_why(algorithm, polygon):
         a, v, c = (tuple(q) for q in b.data["triangle"])
         assert v == where[b.data["vertex"]]
         inside = b.data["inside"]
-        if inside is None:
+        if inside is None:  # its angle, drawn, is said: 180° exactly when straight
             assert orient(a, v, c) <= 0
-            said = "is not convex"
+            said = f"is not convex, its angle is {'180°' if orient(a, v, c) == 0 else 'over 180°'}"
         else:
             assert orient(a, v, c) > 0 and where[inside] not in (a, v, c)
             assert in_closed_triangle(where[inside], a, v, c), b.caption

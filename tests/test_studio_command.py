@@ -145,7 +145,7 @@ def test_the_polygon_and_ones_own_heuristic_given_on_the_command_line(tmp_path):
     process, url = start_studio(tmp_path, "--polygon", "counterexample", "--heuristic", mine)
     try:
         setup = get(url + "api/setup")
-        assert setup["initial"] == {"polygon": [[0.3, 2.7], [6.5, 1.1], [4.25, 2.85], [4.5, 1.9], [0.4, 7]],
+        assert setup["initial"] == {"polygon": [[0.4, 2.5], [7, 1], [4, 3.5], [4.4, 2.2], [0.8, 7]],
                                     "holes": []}
         assert get(url + "api/rules")[-1]["name"] == mine
         rows = post(url + "api/claims", setup["initial"])

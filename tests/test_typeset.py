@@ -3,6 +3,7 @@ one merged path draws the same picture as the glyphs did."""
 
 from __future__ import annotations
 
+import itertools
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -271,3 +272,18 @@ def test_a_long_caption_takes_two_lines_at_its_size(words, pad):
     breaks = [k for k, c in enumerate(caption) if c == " "]
     assert longer <= min(max(k, len(caption) - k - 1) for k in breaks) + 8
     assert first.get_center()[0] == pytest.approx(second.get_center()[0])  # centred
+
+
+def test_wrapped_lines_stand_one_pitch_apart_by_their_baselines():
+    """The lecture's answers: lines arranged by their ink stood unevenly, a line with no
+    descender ("Answer: E — the") 2 px at 480p nearer the next than the others were; by their
+    baselines they stand one pitch apart, left-aligned."""
+    said = "Answer: E — the line parallel to AC, swept from B, reaches E first, before D"
+    lines = typeset.wrapped(said, size=28, width=3.8, font=SANS)
+    assert len(lines) >= 4
+    baselines = [line.get_top()[1] - typeset._above_baseline(line.original_text, SANS, 28,
+                                                               NORMAL, NORMAL)
+                 for line in lines]
+    steps = [a - b for a, b in itertools.pairwise(baselines)]
+    assert max(steps) - min(steps) < 1e-6, steps
+    assert len({round(line.get_left()[0], 6) for line in lines}) == 1

@@ -63,9 +63,9 @@ def test_storyboard_generic_beats_light_the_users_lines():
     shapes = [b for b in beats if b.action == "shape"]
     assert [b.data["event"] for b in shapes] == ["enter", "change", "exit"]
     assert shapes[0].data["key"] == "best"
-    assert shapes[0].data["state"] == {"kind": "segment", "points": [[0.3, 2.7], [4.25, 2.85]]}
+    assert shapes[0].data["state"] == {"kind": "segment", "points": [[0.4, 2.5], [4, 3.5]]}
     calls = [b for b in beats if b.action == "call" and b.call.startswith("angle_at_b")]
-    assert [b.call for b in calls] == ["angle_at_b(B, A, D) → 86.5", "angle_at_b(B, A, E) → 99.5"]
+    assert [b.call for b in calls] == ["angle_at_b(B, A, D) → 69.4", "angle_at_b(B, A, E) → 89.2"]
     assert calls[0].roles == {"B": "called", "A": "argument", "D": "argument"}
     code = dict((line, text.strip()) for line, text in log.meta["code"])
     assert code[beats[-1].line] == "return b, best"  # the claim lights the user's return

@@ -5,6 +5,7 @@ Run: ``manim -pql scenes/chapters/ch4_ears.py``; the whole lecture: ``trex lectu
 
 from metaphors.figures import Figure
 from metaphors.lecture import FRUIT_BOX, Card, LectureScene, Run
+from story.registry import spoken
 
 
 class Ears(LectureScene):
@@ -33,7 +34,9 @@ class Ears(LectureScene):
             Run("prune-and-search", None, "Prune and search: the good sub-polygons shrink",
                 box=FRUIT_BOX, speed=0.5),
             Card("How fast", (
-                "Ear clipping, naive: O(n³). With ear status kept up to date: O(n²).",
+                # one name for it, the one the later chapters say (SPOKEN), taught here
+                "Ear clipping, naive: O(n³). Faster ear clipping keeps each vertex's ear "
+                "status up to date: O(n²).",
                 "Finding one ear by prune and search: O(n); clipping them all: O(n²)."),
                  Figure("growth")),
             Card("Fruit with holes: a keyhole cut", (
@@ -41,6 +44,7 @@ class Ears(LectureScene):
                 "Cut from each hole's right-most vertex to a vertex it sees (Eberly, 2002):",
                 "one ring again, with two vertices more per hole. Then slice as before."),
                  Figure("keyhole", "keyhole")),
-            Run("ear-clipping", "keyhole", "Ear clipping with holes: keyholes, then slices",
+            Run("ear-clipping", "keyhole",
+                f"{spoken('ear-clipping', start=True)} with holes: keyholes, then slices",
                 box=FRUIT_BOX, speed=0.5),
         )

@@ -13,18 +13,25 @@ class Faster(LectureScene):
 
     def chapter_segments(self) -> tuple:
         return (
+            # y-monotone said and drawn (the line meeting P twice) before it is used; split
+            # and merge are the run's to teach, on the picture, when the sweep meets them
             Card("Garey, Johnson, Preparata, Tarjan (1978)", (
-                "Cut the polygon into y-monotone pieces in O(n log n);",
+                "y-monotone: every horizontal line meets the polygon in one segment, or none.",
+                "Cut P into y-monotone pieces with a line swept down, in O(n log n);",
                 "a stack triangulates each piece in linear time: O(n log n) in all.",
-                "The sweep shown, with split and merge vertices, is the textbooks' later telling."),
+                "The sweep shown next is the textbooks' later telling of their cut."),
                  Figure("monotone-pieces")),
             Run("monotone", None, "Monotone partition, then the stack", speed=0.7),
-            Card("Tarjan and van Wyk (1988), Chazelle (1991)", (
-                "O(n log log n) time: Tarjan and van Wyk, with finger trees and Jordan sorting;",
-                "Kirkpatrick, Klawe and Tarjan matched it with simple data structures (1990).",
-                "Chazelle: O(n), famously hard to implement; no implementation is known to be "
-                "practical.",
-                "Neither is implemented here: the dashed lines are bounds, not measurements."),
+            # the plot's words: which polygons were counted, and what each line shows (it
+            # showed random polygons only, where faster ear clipping keeps pace with
+            # monotone partition, while the chapter set O(n²) against O(n log n))
+            Card("Tarjan and van Wyk (1988), Chazelle (1990)", (
+                "Counted on dented half discs: faster ear clipping grows as n², monotone "
+                "partition as n log n;",
+                "on random polygons the two keep pace.",
+                "O(n log log n): Tarjan and van Wyk; Kirkpatrick et al. matched it simply "
+                "(1990).",
+                "Chazelle: O(n), not practical. Neither runs here: the dashed lines are bounds."),
                  Figure("measured")),
             # one sentence a bullet; libraries by their own names (Shapely, Mapbox's earcut)
             Card("Constrained Delaunay", (

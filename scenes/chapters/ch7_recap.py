@@ -15,6 +15,12 @@ from story.words import why_not_inner
 FAILING = ("scaling", "rotation", "translation")
 HOLDING = ("scaling-correct", "rotation-correct", "translation-correct")
 POLYGON = "counterexample"
+#: what each wrong rule's tool is, as its line says it
+TOOLS = {"scaling": "the water", "rotation": "the hand", "translation": "the line"}
+#: the holding rules' pictures, each with its line, in the order their lines say why: the
+#: line parallel to AC, the clock at C, the water rising from AC (farthest from AC: that
+#: line's first), gravity
+WHY_ORDER = ("translation-correct", "rotation-correct", "scaling-correct", "gravity")
 
 
 def _claim(heuristic: str) -> tuple[str, str]:
@@ -23,11 +29,6 @@ def _claim(heuristic: str) -> tuple[str, str]:
     claim = find_diagonal(polygon, heuristic)
     verdict = is_inner_diagonal(polygon, *claim.pair)
     return claim.name, "" if verdict.ok else why_not_inner(verdict, polygon.labels, claim.name)
-
-
-def _names(heuristics: tuple[str, ...], first: bool = False) -> str:
-    said = [spoken(h, first=first) for h in heuristics]
-    return ", ".join(said[:-1]) + " and " + said[-1]
 
 
 class Recap(LectureScene):
@@ -41,28 +42,36 @@ class Recap(LectureScene):
         assert not gravity_why, "Gravity fails on the counterexample"
         assert all(_claim(h)[0] == wrong_claim for h in FAILING), "the failing rules differ"
         assert all(_claim(h) == (right_claim, "") for h in HOLDING), "the holding rules differ"
+        pick = wrong_claim[1]
         return (
+            # each wrong rule with the picture of why, one after another on one polygon drawn
+            # large: its tool stopped at its pick, its part outside P red (one shared picture
+            # of BD crossing E–A stood for all three, their motion never drawn); then their
+            # claim, solid red, across the crossed edge, dashed (the same red line before)
             Card("Recap: the rules that fail", (
-                f"{_names(FAILING, first=True)} all claim {wrong_claim}, which is not inner.",
-                f"{why}: one polygon of five vertices defeats all three.",
-                "Their motion leaves P before it reaches the vertex it picks."),
-                Figure("claims", POLYGON, heuristics=()),
-                line_figures=(Figure("claims", POLYGON, heuristics=FAILING),)),
+                *(f"{spoken(h, first=True)}: {TOOLS[h]} leaves P (red) before it reaches "
+                  f"{pick}." for h in FAILING),
+                f"All three claim {wrong_claim}. {why}: one polygon of five vertices defeats "
+                "all three."),
+                Figure("failing-motions", POLYGON, heuristics=FAILING)),
+            # the thesis's argument (ch. 2): what a correction sweeps in T stays in P until it
+            # meets its pick ("inside T" held for the wrong clock hand too)
             Card("Recap: the rules that hold", (
-                f"{_names(HOLDING)} claim {right_claim}, inside P.",
-                "Their motion stays inside T until it meets the first candidate.",
+                f"{spoken('translation-correct')} claims {right_claim}: the line parallel to "
+                f"AC meets {right_claim[1]} before any part of it in T leaves P.",
+                f"{spoken('rotation-correct')} claims {right_claim}: so does the hand of the "
+                "clock at C.",
+                f"{spoken('scaling-correct')} claims {right_claim}: {right_claim[1]} is the "
+                "candidate farthest from AC, the first that line meets.",
                 f"Gravity claims {gravity_claim}: its ball and band never leave P."),
-                # P alone, then each claim with the line that says it, one at a time: BE
-                # and EC both hug B–C and would read as one path
-                Figure("claims", POLYGON, heuristics=()),
-                line_figures=(Figure("claims", POLYGON, heuristics=HOLDING), None,
-                              Figure("claims", POLYGON, heuristics=("gravity",)))),
+                Figure("holding-motions", POLYGON, heuristics=WHY_ORDER)),
             Card("Recap: the algorithms", (
-                # each named as its picture's legend names it (one name for one method)
+                # each named as its picture's legend names it (one name for one method), said
+                # once, under its picture
                 f"{spoken('divide-and-conquer', start=True)}: O(n) per diagonal, "
                 "n − 3 diagonals: O(n²).",
                 f"{spoken('ear-clipping', start=True)}, each vertex's ear status kept: O(n²).",
                 f"{spoken('monotone', start=True)}, each piece cut with a stack: O(n log n). "
                 "Chazelle: O(n), not practical."),
-                Figure("three-triangulations")),
+                Figure("three-triangulations"), layout="columns"),
         )
