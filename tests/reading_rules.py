@@ -4808,3 +4808,20 @@ def claims_like_their_edges(data: dict) -> list[str]:
                     and any(_solid_strokes(node) & c for c in claims):
                 found.append(f"play {k}: {name} like its claim")
     return found
+
+
+def unanswered_card_questions(data: dict) -> list[str]:
+    """The card lines that ask a question and leave it open (a ``card:line`` ending in "?"),
+    as their text: chapter 2's frame card asked "say G: is BG inner?" over a dashed amber
+    BG, and nothing on that card, nor after it, said whether it is (review of chapter 2). A
+    card says what a thing is; a question for the class goes in the exercises, with its
+    answer after time to think (:func:`rushed_questions`)."""
+    found: list[str] = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and node.get("name") == "card:line":
+                text = _text_of(node).strip()
+                if text.endswith("?") and text not in found:
+                    found.append(text)
+    return found

@@ -112,6 +112,7 @@ from tests.reading_rules import (
     tails_beside_labels,
     texts_over_the_picture,
     ticks_outside,
+    unanswered_card_questions,
     uneven_countdowns,
     unexplained_grey,
     unexplained_tool_parts,
@@ -1042,6 +1043,8 @@ def test_the_heuristics_chapter_shows_each_wrong_heuristic_once():
     chapter = next(c for c in lecture_chapters() if c.slug == "heuristics")
     data = build(_chapter_class(chapter).handed()).data
     assert replayed_beats(data) == [] and repeated_verdicts(data) == []
+    # the frame card asks nothing it leaves open ("say G: is BG inner?", never answered)
+    assert unanswered_card_questions(data) == []
     cues = [c["text"] for c in data["cues"]]
     crosses = [c for c in cues if c.startswith("✗")]
     assert len(crosses) == 3  # one per wrong heuristic, in its pass

@@ -93,8 +93,11 @@ class Heuristics(LectureScene):
               if reflex else []),
             "A and C: its neighbours; T = triangle ABC.",
             # the figure's own names: its D is a reflex vertex outside T, its candidates G, H
-            "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate, "
-            "say G: is BG inner?"),
+            "No other vertex in T: AC is an inner diagonal.",
+            # the dashed amber BG is a claim, and the card says what decides it ("say G: is
+            # BG inner?" asked it and nothing answered, review of chapter 2)
+            "Otherwise claim BG for a candidate G: BG is inner only if G is picked well. "
+            "Each heuristic is a way to pick it."),
             Figure("frame"))
         families = [family_segments(f, INTRO_FIRST if k == 0 else INTRO_AGAIN)
                     for k, f in enumerate(FAMILIES)]
