@@ -3910,6 +3910,14 @@ def _new_picture(play: dict) -> bool:
                for a in play["animations"])
 
 
+def _new_run(play: dict) -> bool:
+    """Whether a play brings a run's title in: a run going on on the board the last one
+    played on (the counterexample's corrections, :func:`metaphors.play.go_on`), its pick
+    its own (the wrong rule's D, amber in its run, is a candidate of the correction's)."""
+    return any(a.get("type") in INCOMING and (a.get("mobject") or {}).get("name") == "title"
+               for a in play["animations"])
+
+
 def early_picks(data: dict) -> list[str]:
     """The picks lit amber (the claim to be) before the tool reaches them, as ``"play 132 E
     amber, reached at play 134"``: chapter 2's working runs lit the pick amber as the tool
@@ -3919,7 +3927,7 @@ def early_picks(data: dict) -> list[str]:
     roles: dict[str, str] = {}
     amber: dict[str, int] = {}  # vertex: the play it turned amber in
     for k, play in enumerate(data["plays"]):
-        if _new_picture(play):
+        if _new_picture(play) or _new_run(play):
             roles, amber = {}, {}
         for anim in play["animations"]:
             for label, role in _vertex_roles(anim):
