@@ -65,15 +65,28 @@ __all__ = [
 
 
 def _ranked(
-    candidates: list[Vertex], rule: Callable[[Vertex, Vertex], int], origin: Vertex, n: int, b: int
+    candidates: list[Vertex], rule: Callable[[Vertex, Vertex], int], origin: Vertex, b: int
 ) -> list[Vertex]:
-    """Candidates sorted by the rule, then by distance from origin, then ccw order after B."""
+    """Candidates sorted by the rule, then by distance from origin, then ccw order after B.
+
+    Counter-clockwise after B: the vertices after B's index first, then those before it,
+    each in index order (what ``(index - b) % n`` orders, without asking for n: the traced
+    picks take only what their call line shows, so that the call line is the real call).
+
+    >>> from geometry.polygon import Polygon
+    >>> p = Polygon.from_points([(0, 0), (2, 0), (2, 2), (0, 2)])
+    >>> [v.index for v in _ranked([p.vertex(k) for k in range(4)], lambda u, v: 0, p.vertex(0), 2)]  # 1, 3 tie
+    [0, 3, 1, 2]
+    """
+
+    def after_b(u: Vertex) -> tuple[bool, int]:
+        return u.index < b, u.index
 
     def compare(u: Vertex, v: Vertex) -> int:
         return (
             rule(u, v)
             or compare_distance(origin.point, u.point, v.point)
-            or ((u.index - b) % n) - ((v.index - b) % n)
+            or (after_b(u) > after_b(v)) - (after_b(u) < after_b(v))
         )
 
     return sorted(candidates, key=cmp_to_key(compare))
@@ -82,20 +95,20 @@ def _ranked(
 # --- water: scaling ------------------------------------------------------------------------------
 
 
-@tracing.traced(exclude_args=("n",))
-def nearest_to(b: Vertex, candidates: list[Vertex], n: int) -> Vertex:
+@tracing.traced
+def nearest_to(b: Vertex, candidates: list[Vertex]) -> Vertex:
     """Water spilled at B spreads as a growing circle; the first candidate it wets is D."""
-    return _ranked(candidates, lambda u, v: 0, b, n, b.index)[0]
+    return _ranked(candidates, lambda u, v: 0, b, b.index)[0]
 
 
-@tracing.traced(exclude_args=("n",))
-def last_dry(t: Triangle, candidates: list[Vertex], n: int) -> Vertex:
+@tracing.traced
+def last_dry(t: Triangle, candidates: list[Vertex]) -> Vertex:
     """Water rises from the shore AC towards B; the last candidate to get wet is D."""
 
     def rule(u: Vertex, v: Vertex) -> int:  # farther from AC first
         return -compare_line_distance(t.a.point, t.c.point, u.point, v.point)
 
-    return _ranked(candidates, rule, t.b, n, t.b.index)[0]
+    return _ranked(candidates, rule, t.b, t.b.index)[0]
 
 
 @tracing.traced
@@ -109,7 +122,7 @@ def nearest_visible(polygon: Polygon, t: Triangle) -> Vertex:
     """Water that respects the walls: the vertex nearest to B among those B sees (not A, C)."""
     b, n = t.b, polygon.n
     others = [polygon.vertex((b.index + k) % n) for k in range(2, n - 1)]
-    for v in _ranked(others, lambda u, v: 0, b, n, b.index):
+    for v in _ranked(others, lambda u, v: 0, b, b.index):
         if sees(polygon, b, v):
             return v
     raise AssertionError("a convex vertex with candidates always sees one")  # thesis, lemma 2
@@ -118,22 +131,22 @@ def nearest_visible(polygon: Polygon, t: Triangle) -> Vertex:
 # --- clock: rotation -----------------------------------------------------------------------------
 
 
-@tracing.traced(exclude_args=("n",))
-def first_hit_rotating(centre: Vertex, start: Vertex, candidates: list[Vertex], n: int) -> Vertex:
+@tracing.traced
+def first_hit_rotating(centre: Vertex, start: Vertex, candidates: list[Vertex]) -> Vertex:
     """A clock hand at `centre`, set to `start`, turns; the first candidate it passes is D."""
 
     def rule(u: Vertex, v: Vertex) -> int:
         return compare_angle(centre.point, start.point, u.point, v.point)
 
-    return _ranked(candidates, rule, centre, n, centre.index)[0]
+    return _ranked(candidates, rule, centre, centre.index)[0]
 
 
 # --- sweep: translation --------------------------------------------------------------------------
 
 
-@tracing.traced(exclude_args=("n",))
+@tracing.traced
 def first_hit_sweeping(
-    b: Vertex, direction: list[float], candidates: list[Vertex], n: int, shore: Triangle | None
+    b: Vertex, direction: list[float], candidates: list[Vertex], shore: Triangle | None
 ) -> Vertex:
     """A line through B, along `direction`, moves across T; the first candidate it touches is D.
 
@@ -147,7 +160,7 @@ def first_hit_sweeping(
         def rule(u: Vertex, v: Vertex) -> int:
             return -compare_line_distance(shore.a.point, shore.c.point, u.point, v.point)
 
-    return _ranked(candidates, rule, b, n, b.index)[0]
+    return _ranked(candidates, rule, b, b.index)[0]
 
 
 # --- the heuristics ------------------------------------------------------------------------------
@@ -181,15 +194,15 @@ def _direction(p: Point, q: Point) -> list[float]:
 
 
 _PICKS: dict[str, Callable[[Polygon, Triangle, list[Vertex]], Vertex]] = {
-    "scaling": lambda p, t, cs: nearest_to(t.b, cs, p.n),
-    "rotation": lambda p, t, cs: first_hit_rotating(t.b, t.a, cs, p.n),
-    "rotation-ccw": lambda p, t, cs: first_hit_rotating(t.b, t.c, cs, p.n),
-    "translation": lambda p, t, cs: first_hit_sweeping(t.b, [0.0, 1.0], cs, p.n, None),
+    "scaling": lambda p, t, cs: nearest_to(t.b, cs),
+    "rotation": lambda p, t, cs: first_hit_rotating(t.b, t.a, cs),
+    "rotation-ccw": lambda p, t, cs: first_hit_rotating(t.b, t.c, cs),
+    "translation": lambda p, t, cs: first_hit_sweeping(t.b, [0.0, 1.0], cs, None),
     "translation-correct": lambda p, t, cs: first_hit_sweeping(
-        t.b, _direction(t.a.point, t.c.point), cs, p.n, t
+        t.b, _direction(t.a.point, t.c.point), cs, t
     ),
-    "scaling-correct": lambda p, t, cs: last_dry(t, cs, p.n),
-    "rotation-correct": lambda p, t, cs: first_hit_rotating(t.c, t.b, cs, p.n),
+    "scaling-correct": lambda p, t, cs: last_dry(t, cs),
+    "rotation-correct": lambda p, t, cs: first_hit_rotating(t.c, t.b, cs),
     "scaling-walled": lambda p, t, cs: nearest_visible(p, t),
 }
 

@@ -54,7 +54,7 @@ MIN_PLAY = 0.1
 WORDS_Z = 10
 
 #: z-index of the vertex markers (dots and labels): over every fill and tool a performer
-#: draws after them (tints −1, the clock hand and the sweep line 1, the dial 2), which at
+#: draws after them (tints −1, the clock hand and the sweep line 1), which at
 #: their own z-index would tint a label (chapter 1's M and G under the triangulation) or
 #: run through it (chapter 2's clock hand through F)
 LABEL_Z = 5
@@ -139,6 +139,9 @@ class Board:
         # notes of a beat that stay up while its caption is read and go with the next beat's
         # words (the monotone sweep's kind word)
         self.leaving: list[Mobject] = []
+        # text that comes with the next beat's words (a run going on on this board: its
+        # title and its pseudocode come with its first caption, never before it)
+        self.arriving: list[Mobject] = []
         # the keys of metaphor objects that only the beat which drew them speaks of (ear
         # clipping's red test triangle): the next beat's words take them away, whatever
         # metaphor plays it (left up, the triangle lay under the gravity step after it)
@@ -234,11 +237,11 @@ class Board:
         recolour, after = self._recolour(beat.roles, busy, at_rest)
         action = [*anims, *recolour]
         words = [*self.panel.follow_text(beat), *self._subtitle(beat.caption),
-                 *(FadeOut(m) for m in self.leaving)]
+                 *(FadeOut(m) for m in self.leaving), *(FadeIn(m) for m in self.arriving)]
         # the panel's colours change with its call line and lit row, not after them: under
         # "is_ear(B) → False" its E and F were still green from the slice before (review)
         roles = self.panel.follow_roles(beat, at_rest, self.focus)
-        self.leaving = []
+        self.leaving, self.arriving = [], []
         paced = max(0.1, run_time * beat.pace)
         lead = min(WORDS_TIME, paced / 2)
         split = bool(words) and lead >= MIN_PLAY and not together

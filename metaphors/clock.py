@@ -1,12 +1,13 @@
-"""The clock: B is the middle of a clock face, the candidates are its hour marks; set the hand
-to A and let it turn — the first mark it passes is D (``rotation``). ``rotation-ccw`` sets it
-to C and turns the other way; ``rotation-correct`` moves the clock to C and sets it to B.
+"""The clock: a hand at B, set to A, turns — the first candidate it passes is D
+(``rotation``; the thesis's clock has B in the middle and the candidates as hour marks: the
+hand is all that is drawn of it). ``rotation-ccw`` sets it to C and turns the other way;
+``rotation-correct`` moves the clock to C and sets it to B.
 
 The hand is drawn solid inside the polygon and dashed outside; the part outside the polygon
-but inside T is dashed red on the way to the first mark — when the hand reaches it with that
-part, the claim will cross an edge; turning on past it, the hand is red nowhere. The angles and the order of the marks are the log's shape states (each
-``angle`` unsigned, from the start ``heading``); the way the hand turns is the way towards the
-candidates.
+but inside T is dashed red on the way to the first candidate — when the hand reaches it with
+that part, the claim will cross an edge; turning on past it, the hand is red nowhere. The
+angles and the order of the candidates are the log's shape states (each ``angle`` unsigned,
+from the start ``heading``); the way the hand turns is the way towards the candidates.
 """
 
 from __future__ import annotations
@@ -17,8 +18,7 @@ from typing import Any
 
 import numpy as np
 import shapely
-from manim import DEGREES, Dot, FadeIn, FadeOut, Line, Rotate, VGroup
-from manim import Polygon as MPolygon
+from manim import DEGREES, Dot, FadeIn, FadeOut, Line, Rotate
 
 from metaphors.board import Board
 from metaphors.performing import Performances, act, performs
@@ -33,13 +33,12 @@ from tracing import Event
 
 @beat_kind("clock")
 class Clock(Moving):
-    """The clock hand's ``states`` (heading, angle turned, the mark reached)."""
+    """The clock hand's ``states`` (heading, angle turned, the candidate reached)."""
 
     states: tuple[Hand, ...]
 
 
-#: Radius of the clock face (scene units); the hand reaches past the farthest mark.
-FACE_RADIUS = 0.55
+#: how far the hand reaches past the farthest candidate (scene units)
 HAND_MARGIN = 0.35
 
 
@@ -57,9 +56,12 @@ def turn_sign(origin: Sequence[float], heading: float, point: Sequence[float]) -
 
 
 def clock(board: Board, beat: Clock) -> None:
-    """The face appears at the centre with a mark towards each candidate, the hand towards the
-    start vertex; it turns through the log's angles, and each mark lights as the hand passes it
-    (the first green, the others amber)."""
+    """The hand appears at its hub, set to the start vertex; it turns through the log's
+    angles, and each candidate lights as the hand passes it (the first, the pick, amber).
+
+    A hand turning about its hub is the clock: no face is drawn, nor hour marks (a grey
+    wedge of 15–33 px at the hub, with an amber tick on the hand at the pick, that nothing
+    on screen explained; review of the rotation scenes)."""
     theme = board.theme
     states = beat.states
     first = states[0]
@@ -75,20 +77,13 @@ def clock(board: Board, beat: Clock) -> None:
     tip = centre + _unit(board.at(_ahead(origin, heading)) - centre) * (reach + HAND_MARGIN)
 
     last = reached[-1][0].angle
-    face = tag(MPolygon(*_face(centre, tip, sign * last), color=theme.dial,
-                        stroke_width=theme.thin_stroke, fill_color=theme.dial,
-                        fill_opacity=0.12), "idle", "dial")
-    marks = {label: _mark(board, centre, board.vertex(label), theme.dial, f"mark:{label}")
-             for label in labels}
-    twelve = _mark(board, centre, tip, theme.hand, "mark:start", long=True)
     hub = tag(Dot(centre, radius=theme.dot_radius * 1.4, color=theme.hand), "argument", "hub")
-    dial = VGroup(face, twelve, *marks.values()).set_z_index(2)  # lit marks show over the hand
     axis = tag(Line(centre, tip, stroke_opacity=0), "argument", "hand")
     picked = [False]  # set once the hand has passed its pick
     hand = follower(board, axis, theme.hand, "hand", picked=picked).set_z_index(1)  # over the rings
     board.scene.add(axis)
     # the pick stays a candidate until the hand passes it: amber then, with its ring
-    board.play(beat.before_pick(), FadeIn(dial), FadeIn(hand), FadeIn(hub), run_time=0.8)
+    board.play(beat.before_pick(), FadeIn(hand), FadeIn(hub), run_time=0.8)
 
     lit, turned = [], 0.0
     for k, (state, label) in enumerate(reached):
@@ -100,39 +95,11 @@ def clock(board: Board, beat: Clock) -> None:
         kept, anims = light(board, label, k == 0, axis,
                             ahead=_wedge(centre, axis.get_end(), sign * (last - turned)))
         lit += kept
-        mark = marks[label]
-        # the first passed is the pick, the claim to be (amber); the others stay candidates
-        role = "argument" if k == 0 else "candidate"
-        anims.append(tag(mark, role).animate.set_color(theme.role_colour(role)))
         board.play(beat, *anims, run_time=0.8 if k == 0 else 0.6)
         picked[0] = True
     hand.clear_updaters()
     board.scene.remove(axis)
-    board.play(beat, *[FadeOut(m) for m in (dial, hand, hub, *lit)], run_time=0.5)
-
-
-#: degrees the face reaches past the hand's first and last directions: room for the marks
-FACE_PAD = 12.0
-
-
-def _face(centre: np.ndarray, tip: np.ndarray, degrees: float) -> list[np.ndarray]:
-    """The clock face: the part of a disk the hand turns through (from ``tip``'s direction by
-    ``degrees``, counter-clockwise if positive), a little wider, not the whole disk. The
-    vertex label at the hub lies outside the polygon, away from the way the hand turns: a
-    whole face would cover it (B in Rotation, C in Correct Rotation).
-
-    >>> corners = _face(np.array([0.0, 0, 0]), np.array([2.0, 0, 0]), 90)
-    >>> [round(float(c), 2) for c in corners[1][:2]], [round(float(c), 2) for c in corners[-1][:2]]
-    ([0.54, -0.11], [-0.11, 0.54])
-    """
-    (dx, dy) = (tip - centre)[:2]
-    start = math.atan2(dy, dx) - math.copysign(math.radians(FACE_PAD), degrees)
-    span = degrees + math.copysign(2 * FACE_PAD, degrees)
-    steps = max(2, math.ceil(abs(span) / 4) + 1)
-    rim = [centre + FACE_RADIUS * np.array([math.cos(start + math.radians(span) * k / (steps - 1)),
-                                            math.sin(start + math.radians(span) * k / (steps - 1)),
-                                            0.0]) for k in range(steps)]
-    return [centre, *rim]
+    board.play(beat, *[FadeOut(m) for m in (hand, hub, *lit)], run_time=0.5)
 
 
 def _wedge(centre: np.ndarray, tip: np.ndarray, degrees: float) -> shapely.Polygon:
@@ -150,15 +117,6 @@ def _wedge(centre: np.ndarray, tip: np.ndarray, degrees: float) -> shapely.Polyg
         fan.append((cx + dx * math.cos(a) - dy * math.sin(a), cy + dx * math.sin(a) + dy * math.cos(a)))
     shape = shapely.Polygon(fan)
     return shape if shape.area > 1e-9 else shapely.LineString(fan[:2]).buffer(1e-6)
-
-
-def _mark(board: Board, centre: np.ndarray, towards: np.ndarray, colour: str, name: str,
-          long: bool = False) -> Line:
-    """An hour mark: a short tick on the rim of the face, in the direction of `towards`."""
-    direction = _unit(towards - centre)
-    inner = FACE_RADIUS * (0.45 if long else 0.65)
-    return tag(Line(centre + direction * inner, centre + direction * FACE_RADIUS * 1.08,
-                    color=colour, stroke_width=board.theme.stroke * 1.3), "idle", name)
 
 
 def _point(board: Board, label: str) -> Point:

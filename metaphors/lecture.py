@@ -246,6 +246,11 @@ class LectureScene(TraceScene):
 
     def play_segment(self, segment) -> None:
         """Play one segment by its kind."""
+        if not isinstance(segment, (Card, Run)):
+            # it draws a polygon of its own: the next run's frame is no longer the one just
+            # seen, not "as before" (chapter 2 said so of the working example after the
+            # counterexample's analysis)
+            self.frames_seen.clear()
         match segment:
             case Card():
                 self.play_card(segment)

@@ -22,6 +22,7 @@ from typing import cast
 
 import numpy as np
 from manim import (
+    DOWN,
     LEFT,
     Animation,
     Create,
@@ -633,7 +634,7 @@ class Panel:
             new = typeset.text(_one_line(text, font, 20, width), font=font, size=20,
                                colour=self.theme.ink)
         else:
-            new = typeset.wrapped(text, font=font, size=20, colour=self.theme.ink, width=width)
+            new = _call_text(text, font, 20, self.theme.ink, width)
         new = tag(new, "called", "panel:call")
         new.move_to((PANEL_CODE.x, PANEL_CALL_Y, 0))
         # the old one is cut, not faded out: two calls fading through each other in one
@@ -657,6 +658,60 @@ def _note(lines: int, where: str) -> str:
     ('⋮ 1 line above', '⋮ 12 lines below', '')
     """
     return f"⋮ {lines} line{'s' if lines != 1 else ''} {where}" if lines else ""
+
+
+def call_pieces(text: str) -> list[str]:
+    """A call line cut where a programmer would break it: after each argument's comma (at
+    the call's own level, never inside a list or a nested call) and before its result's
+    arrow; the pieces joined by spaces are the text again.
+
+    >>> call_pieces("first_hit_sweeping(B, [6.1, -5.9], [D, E], T(ABC)) → E")
+    ['first_hit_sweeping(B,', '[6.1, -5.9],', '[D, E],', 'T(ABC))', '→ E']
+    >>> call_pieces("candidates_in_triangle(P, T(ABC)) → [D, E]")
+    ['candidates_in_triangle(P,', 'T(ABC))', '→ [D, E]']
+    """
+    pieces, depth, start, called = [], 0, 0, False  # called: the call's parenthesis closed
+    for k, c in enumerate(text):
+        if c in "([{":
+            depth += 1
+        elif c in ")]}":
+            depth -= 1
+            called = called or depth == 0
+        at_space = c == " " and k > start
+        if at_space and ((depth == 1 and not called and text[k - 1] == ",") or (
+                depth == 0 and text.startswith("→", k + 1))):
+            pieces.append(text[start:k])
+            start = k + 1
+    return [*pieces, text[start:]]
+
+
+def call_lines(text: str, font: str, size: float, width: float) -> list[str]:
+    """The lines of a call line ``text`` at ``size`` within ``width``: as many of its
+    :func:`call_pieces` on each as fit (a piece wider than ``width`` alone on its line). The
+    call wrapped as words broke its lists ("[D," then "E]) → D", review of the scenes:
+    TranslationCorrect's ``[D,`` / ``E], T(ABC)) → E``).
+
+    >>> call_lines("first_hit_sweeping(B, [6.1, -5.9], [D, E], T(ABC)) → E",
+    ...            "DejaVu Sans Mono", 20, 6.6)
+    ['first_hit_sweeping(B, [6.1, -5.9],', '[D, E], T(ABC)) → E']
+    """
+    lines: list[str] = []
+    for piece in call_pieces(text):
+        trial = f"{lines[-1]} {piece}" if lines else piece
+        if lines and typeset.natural_width(trial, font, size) <= width:
+            lines[-1] = trial
+        else:
+            lines.append(piece)
+    return lines
+
+
+def _call_text(text: str, font: str, size: float, colour: str, width: float) -> Mobject:
+    """The call line set in as many lines as it needs (:func:`call_lines`), left-aligned."""
+    parts = [typeset.text(line, font=font, size=size, colour=colour, width=width)
+             for line in call_lines(text, font, size, width)]
+    if len(parts) == 1:
+        return parts[0]
+    return VGroup(*parts).arrange(DOWN, aligned_edge=LEFT, buff=0.1)
 
 
 def _one_line(text: str, font: str, size: float, width: float) -> str:

@@ -14,13 +14,19 @@ from collections.abc import Callable, Sequence
 from itertools import groupby
 from typing import Protocol, cast
 
+import numpy as np
+from manim import Animation, FadeOut, Mobject
+
 from metaphors.board import Board
 from metaphors.catalog import perform
 from metaphors.fruit import Keyhole, Slice
 from metaphors.gravity import GravityTurn
-from metaphors.layout import Box
+from metaphors.layout import TITLE_Y, Box
 from metaphors.monotone import MonotoneDiagonal
+from metaphors.panel import Panel
 from metaphors.recorded import Recorded, captions_of, mark_step
+from metaphors.tags import tag
+from rendering.typeset import glyphs
 from story.beats import Beat, Claim, Point, ShowPolygon, ShowTriangle
 from story.pseudocode import PSEUDOCODE
 from story.refs import meta
@@ -43,36 +49,76 @@ class BoardScene(Protocol):
 
 
 def board_for(scene: BoardScene, log: Log, beats: Sequence[Beat], title: str,
-              theme) -> Board:
+              theme, *, later: Sequence[Sequence[Beat]] = ()) -> Board:
     """The board a log plays on; its panel shows what the scene's ``panel`` says (the
-    pseudocode, when the run has some, or the source)."""
+    pseudocode, when the run has some, or the source). ``later``: the beats of the runs
+    that go on on this board after this one (:func:`go_on`): the labels keep clear of their
+    claims too."""
     first = cast(ShowPolygon, beats[0])  # a storyboard opens with its polygon
     holes = first.holes if isinstance(first, ShowPolygon) else ()
     recorded = cast(Recorded, scene)  # every BoardScene is Recorded (TraceScene, the player's)
+    runs = [beats, *later]
+    claims = [*(beat.labels for run in runs for beat in run if isinstance(beat, Claim)),
+              *(side for run in runs for beat in run if isinstance(beat, ShowTriangle)
+                for side in _sides(beat.labels))]
     board = Board(recorded, first.points, first.labels, meta(log, "shown"), title, theme,
                   scene.metaphor_box, holes, captions=captions_of(recorded),
-                  claims=list(dict.fromkeys([
-                      *(beat.labels for beat in beats if isinstance(beat, Claim)),
-                      *(side for beat in beats if isinstance(beat, ShowTriangle)
-                        for side in _sides(beat.labels))])),
+                  claims=list(dict.fromkeys(claims)),
                   cuts=[*(beat.points for beat in beats if isinstance(beat, Keyhole)),
                         *knife_cuts([beat for beat in beats if beat.pace >= 1.0])],
-                  drawn=panel_lines(beats),
+                  drawn=[line for run in runs for line in panel_lines(run)],
                   # a label with no room outside P beside it, with a leader, where the picture
                   # never turns (a turn keeps labels upright and places them again)
-                  leaders=not any(isinstance(beat, GravityTurn) for beat in beats))
-    board.panel.shows_calls = scene.call_line
+                  leaders=not any(isinstance(beat, GravityTurn) for run in runs for beat in run))
     board.kept_end = scene.keep_end
-    board.panel.run_call = run_call(log)
+    _fill_panel(board.panel, scene, log)
+    _fit_title(board.title)
+    return board
+
+
+def _fill_panel(panel: Panel, scene: BoardScene, log: Log) -> None:
+    """The panel's text for ``log``'s run: its pseudocode (its rows named as the run goes:
+    :func:`story.storyboard.pseudocode_stages`), or its source, and the call line's
+    settings."""
+    panel.shows_calls = scene.call_line
+    panel.run_call = run_call(log)
     code = log.meta.get("code")
     rows, stages = pseudocode_stages(log)
     if scene.panel == PSEUDOCODE and rows:
-        board.panel.show_pseudocode(rows, stages)
+        panel.show_pseudocode(rows, stages)
     elif code:
-        board.panel.show_code(code)
-    if board.title.width > TITLE_WIDTH:
-        board.title.scale_to_fit_width(TITLE_WIDTH)
-    return board
+        panel.show_code(code)
+
+
+def _fit_title(title: Mobject) -> None:
+    if title.width > TITLE_WIDTH:
+        title.scale_to_fit_width(TITLE_WIDTH)
+
+
+def go_on(board: Board, scene: BoardScene, log: Log, title: str) -> list[Animation]:
+    """Make ``board`` ready for another run on its polygon (a correction after the rule it
+    mends: the same polygon, not drawn again). Returns the fades of what goes — the last
+    run's claim, its verdict and the edge it crossed, its title and its panel's text — for
+    one play; the run's title and its panel's text come with its first words
+    (:attr:`Board.arriving`). The panel's small polygon stays, its labels in their roles."""
+    old = board.panel
+    panel = Panel(board.polygon.points, board.polygon.labels, meta(log, "shown"), board.theme,
+                  board.holes)
+    _fill_panel(panel, scene, log)
+    kept = np.allclose(panel.outline.points, old.outline.points)
+    if kept:  # the same box: the polygon drawn there stays
+        panel.outline, panel.markers, panel.roles = old.outline, old.markers, old.roles
+    # and what the last run drew on the panel's polygon (its claim, the edge it crossed, the
+    # part it worked in): the new run draws its own
+    going = [board.title, old.code, old.call, *(old.lit[1:] if old.lit else ()),
+             *old.lines.values(), *([old.part] if old.part else []),
+             *([] if kept else [old.outline, *old.markers.values()])]
+    board.panel = panel
+    board.title = tag(glyphs(title, font=board.theme.font, size=30, colour=board.theme.ink),
+                      None, "title").move_to((0, TITLE_Y, 0))
+    _fit_title(board.title)
+    board.arriving = [board.title, *(panel.mobjects() if not kept else [panel.code, panel.call])]
+    return [*(FadeOut(m) for m in going), *board.drop("claim", "crossed", "crossing", "verdict")]
 
 
 def knife_cuts(beats: Sequence[Beat]) -> list[tuple[Point, Point]]:

@@ -41,7 +41,7 @@ class Recorded(_Mixin):
     #: every caption the scene shows goes through this one track (made by the first
     #: :func:`captions_of`: its clock counts the plays from the first caption on)
     caption_track: CaptionTrack | None
-    #: the first frames (:func:`story.reading.frame_key`) of the runs played so far
+    #: the first frame (:func:`story.reading.frame_key`) of the run played last, if any
     frames_seen: set[tuple]
     #: the beats and the board of the run played last (for tests and checks)
     played_beats: list[Beat]

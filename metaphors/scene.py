@@ -19,24 +19,25 @@ from dataclasses import replace
 from types import MappingProxyType
 from typing import Self, TypeVar, cast
 
-from manim import DOWN, Camera, FadeIn, FadeOut, Scene, VGroup, config
+from manim import Camera, FadeOut, Scene, config
 from manim.constants import RendererType
 
 from metaphors import catalog
 from metaphors.board import Board
-from metaphors.layout import METAPHOR
-from metaphors.play import board_for, play_beats
-from metaphors.recorded import Recorded, captions_of, lead_in
+from metaphors.layout import METAPHOR, TITLE_Y
+from metaphors.play import TITLE_WIDTH, board_for, go_on, play_beats
+from metaphors.recorded import Recorded, captions_of, lead_in, mark_step
 from metaphors.tags import tag
 from metaphors.theme import THEME
 from rendering.camera import PathCamera
 from rendering.renderer import BackdropRenderer
-from rendering.typeset import text
-from story.beats import Beat
+from rendering.typeset import glyphs
+from story.beats import Beat, Note, ShowPolygon
 from story.environment import spec_from_environment, specs_from_environment
 from story.pseudocode import PANELS, PSEUDOCODE
 from story.reading import frame_key, frame_summarised
 from story.registry import heuristics, spoken
+from story.sequence import framed_again, going_on, in_its_name
 from story.spec import RunSpec
 from story.storyboard import Pacing
 from tracing import Log
@@ -174,32 +175,50 @@ class TraceScene(SpecScene, Recorded, Scene):
         """Turn one log into beats and play them on a fresh board (both kept, as
         ``played_beats`` and ``played_board``, for tests)."""
         beats = self.beats(log)
-        # the frame a run shown before showed too (same polygon, T, candidates): one caption
+        # the frame the run just before showed too (same polygon, T, candidates): one
+        # caption. Only the last one shown is "as before": a frame shown two runs ago, with
+        # another between, is no longer what the viewer just saw (the counterexample scene
+        # said "The frame as before" as the mirror image gave way to the polygon)
         key, seen = frame_key(beats), self.frames_seen
         self.played_beats = frame_summarised(beats) if key is not None and key in seen else beats
         if key is not None:
+            seen.clear()
             seen.add(key)
         self.played_board = board_for(self, log, self.played_beats, title, self.theme)
         return play_beats(self.played_board, self.played_beats)
 
 
 class SequenceScene(TraceScene):
-    """Plays several runs one after another: a short title card, the run, then a clean board.
+    """Plays several runs one after another, as a teacher would show them: its point said
+    first, over its first polygon; the runs on one polygon on one board, each going on from
+    the one before (a correction after the rule it mends: the polygon not drawn again, T and
+    the candidates said once, the claim and the verdict in the rule's name); a later polygon
+    on a board of its own; its ending said over the last picture. No card on black: each
+    run's title stands over its picture (a card of 34–48 characters up 0.8 s could not be
+    read).
 
     ``runs`` lists (algorithm, polygon, title). The runs name their own polygons: a handed
     polygon, or ``TREX_POLYGON``, is not played; ``specs`` (or ``TREX_LOG``, one saved log per
     run joined with ``os.pathsep``: ``a.json:b.json:…``) may replay saved logs instead.
+    ``pictures`` names each polygon the runs play on, in order, with what is said as it is
+    drawn (the first: the scene's point, ``{n}`` its vertices); ``title`` stands over the
+    first polygon while its point is said; ``ending`` is said last.
     """
 
     runs: tuple[tuple[str, str, str], ...] = ()
     #: the runs handed to the class, one per run (None: the defaults, as the environment says)
     specs: tuple[RunSpec, ...] | None = None
-    #: × run time of each beat action: the set-up every run repeats goes quickly, the verdict
-    #: stays long enough to read; ``pace`` for the rest
+    #: each polygon the runs play on, in order: its name (the runs on it go on "on the same
+    #: polygon") and what is said as it is drawn; a polygon past these is "polygon", unsaid
+    pictures: tuple[tuple[str, str], ...] = ()
+    #: said over the last picture, at the end ("" nothing)
+    ending: str = ""
+    #: × run time of each beat action: the set-up every run repeats goes quickly; the tools
+    #: move at their own pace, the whole of their caption's time (the water covered T in
+    #: 0.8 s, then the picture stood still 2.5 s under its caption)
     paces = MappingProxyType({"polygon": 0.15, "pick": 0.15, "triangle": 0.2, "candidates": 0.2,
                               "claim": 0.3, "verdict": 0.55})
-    pace = 0.32
-    card_time = 0.8
+    pace = 1.0
 
     def beats(self, log) -> list[Beat]:
         return [replace(b, pace=self.paces.get(b.action, self.pace)) for b in catalog.beats(log)]
@@ -245,28 +264,97 @@ class SequenceScene(TraceScene):
 
     def construct(self) -> None:
         self.camera.background_color = self.theme.background  # type: ignore[assignment]  # manim's setter is typed ManimColor, and parses any colour
-        for k, (log, (_, _, title)) in enumerate(zip(self.logs(), self.runs, strict=True)):
+        runs = [self.beats(log) for log in self.logs()]
+        boards = boards_of(runs)
+        said: set[str] = set()
+        board: Board | None = None
+        for k, (log, beats, (algorithm, _, title)) in enumerate(
+                zip(self.logs(), runs, self.runs, strict=True)):
+            picture, opening = self._picture(boards[k])
+            name = spoken(algorithm, start=True)
             captions_of(self).finish()  # the caption on screen is read in its own step
-            lead_in(self)  # the fade and the title card open the run's first step
-            if self.mobjects:
-                self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.3)
-                self.clear()
-            self.card(k, title)
-            self.play_log(log, title)
-            self.wait(0.4)
-        self.wait(0.5)
+            lead_in(self)  # what clears the last run opens this run's first step
+            if board is not None and boards[k] == boards[k - 1]:
+                self.play(*go_on(board, self, log, title), run_time=0.4)
+                beats = going_on(beats, name, picture)
+            else:
+                if self.mobjects:
+                    self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.3)
+                    self.clear()
+                later = [runs[j] for j in range(k + 1, len(runs)) if boards[j] == boards[k]]
+                first = boards[k] == 0 and self.title != title
+                board = board_for(self, log, beats, self.title if first else title,
+                                  self.theme, later=later)
+                beats = self._opening(beats, boards[k], picture, opening)
+                if first:  # the scene's title over its point, then the run's own
+                    beats = self._retitled(board, beats, title)
+            beats = in_its_name(beats, name, said)
+            self.played_beats, self.played_board = beats, board
+            play_beats(board, beats)
+        if board is not None and self.ending:
+            self._end(board)
         captions_of(self).finish()  # the last cue lasts as long as its caption is shown
 
-    def card(self, k: int, title: str) -> None:
-        """A title card between runs: the run's number and its title."""
-        theme = self.theme
-        number = text(f"{k + 1} / {len(self.runs)}", font=theme.font, size=theme.label_size,
-                      colour=theme.idle)
-        name = text(title, font=theme.font, size=theme.title_size, colour=theme.ink, width=13)
-        card = tag(VGroup(number, name).arrange(DOWN, buff=0.3), None, "card")
-        self.play(FadeIn(card), run_time=0.25)
-        self.wait(self.card_time - 0.5)
-        self.play(FadeOut(card), run_time=0.25)
+    def _picture(self, board: int) -> tuple[str, str]:
+        """The name of the ``board``-th polygon and what is said as it is drawn."""
+        if board < len(self.pictures):
+            return self.pictures[board]
+        return "polygon", ""
+
+    def _opening(self, beats: list[Beat], board: int, picture: str, opening: str) -> list[Beat]:
+        """The first run's beats on a board: the polygon drawn under what the scene says of
+        it (its point, for the first: ``{n}`` its vertices); on a later board, B, T and the
+        candidates under one caption, as said of the polygon before."""
+        shown = next((b for b in beats if isinstance(b, ShowPolygon)), None)
+        words = opening.format(n=len(shown.labels) if shown else 0)
+        if board > 0:
+            return framed_again(beats, picture, words or f"The {picture}")
+        return [replace(b, caption=words) if isinstance(b, ShowPolygon) and words else b
+                for b in beats]
+
+    def _retitled(self, board: Board, beats: list[Beat], title: str) -> list[Beat]:
+        """The beats after the polygon's played under the run's own title: the scene's
+        goes with the first of them and the run's comes with its words (two titles never
+        fade through each other: the scene's goes in a play of its own)."""
+        first, rest = beats[:1], beats[1:]
+        play_beats(board, first)
+        self.play(FadeOut(board.title), run_time=0.3)
+        board.title = tag(glyphs(title, font=self.theme.font, size=30, colour=self.theme.ink),
+                          None, "title").move_to((0, TITLE_Y, 0))
+        if board.title.width > TITLE_WIDTH:
+            board.title.scale_to_fit_width(TITLE_WIDTH)
+        board.arriving.append(board.title)
+        return rest
+
+    def _end(self, board: Board) -> None:
+        """The scene's ending, said over its last picture (every label back in its ink)."""
+        last = self.played_beats[-1] if self.played_beats else None
+        note = Note(caption=self.ending, seq=(last.seq + 1) if last else 0,
+                    row=last.row if last else None, pace=1.5)
+        mark_step(self, note.caption, None, note.action)  # a step of its own: a slide too
+        board.play(note, at_rest=True)
+        board.close()
+
+
+def boards_of(runs: Sequence[Sequence[Beat]]) -> list[int]:
+    """For each run, the board it plays on, counted from 0: a run on the polygon of the run
+    before goes on on its board (its first beat draws the same points and labels).
+
+    >>> from story.beats import ShowPolygon as P
+    >>> square, twin = P("a", 0, points=((0, 0), (1, 0)), labels=("A", "B")), P("b", 0, points=((0, 1), (1, 0)), labels=("A", "B"))
+    >>> boards_of([[square], [square], [twin], [twin], [square]])
+    [0, 0, 1, 1, 2]
+    """
+    boards: list[int] = []
+    for k, beats in enumerate(runs):
+        same = k > 0 and _polygon_of(beats) == _polygon_of(runs[k - 1])
+        boards.append(boards[-1] if same else (boards[-1] + 1 if boards else 0))
+    return boards
+
+
+def _polygon_of(beats: Sequence[Beat]) -> tuple | None:
+    shown = next((b for b in beats if isinstance(b, ShowPolygon)), None)
+    return None if shown is None else (tuple(map(tuple, shown.points)), tuple(shown.labels))
 
 
 # --- the scene of a heuristic of one's own -------------------------------------------------------

@@ -33,7 +33,7 @@ hand, sweep   purple      the clock hand (Rotation) and the sweeping line
                           (Translation, the monotone sweep)
 swept         pale blue   what water, clock hand or sweep line swept on its way to its
                           pick (one colour for all three; red where it is outside P)
-dial          grey        the clock face
+dial          grey        the frame of a close-up (gravity's window)
 fruit, rind   orange,     the fruit sliced (ear clipping), on its plate; its rind a
               brown       peel's brown, no role's (its olive was near the "yes" green)
 pieces        tints       the sub-polygons of divide and conquer and the monotone
@@ -94,7 +94,7 @@ class Theme:
     #: what a heuristic's tool (water, clock hand, sweep line) has swept on its way to its
     #: pick: one colour for all three, so that the same region means the same colour
     swept: str = "#8fc1ff"
-    dial: str = "#8a93a3"  # the clock face and its hour marks before the hand passes them
+    dial: str = "#8a93a3"  # the frame of a close-up (the clock draws no face: its hand only)
     fruit: str = "#f4a259"  # the fruit's flesh (ear clipping)
     #: its rind: a peel's brown, far from every role's colour (CIE76 ΔE 48 and more; the
     #: olive #7a9e3d was 29 from the result's green, and read as "yes" round the fruit)

@@ -7,7 +7,7 @@ Radii, levels and the order in which vertices get wet are read from the log's sh
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from typing import Any, TypeVar
 
 import shapely
@@ -28,10 +28,10 @@ from metaphors.board import Board
 from metaphors.layout import SUBTITLE_Y, TITLE_Y
 from metaphors.performing import Performances, act, performs
 from metaphors.tags import tag
-from story.beats import beat_kind
+from story.beats import Beat, beat_kind
 from story.reach import distance
 from story.states import Disk, Moving, Point, Tide, hits, point
-from story.storyboard import Reading, Walk, read_step
+from story.storyboard import Reading, Walk, pick_roles, read_step, refs, show
 from tracing import Event
 
 
@@ -78,6 +78,35 @@ def _walled(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
                               walled=True) for v in reached)),
             "visible": tuple((v, bool(walk.returns[s.seq].result)) for v, s in
                              zip(reached, sees, strict=True))}
+
+
+def _read_walled(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
+    """Water that respects the edges: its beat (:func:`_walled`), its caption saying which
+    vertices it never reaches (an edge in the way) before the one it wets, and the roles
+    the picture and the panel share: what it wets amber (the claim to be), every candidate
+    of T it never reaches still a candidate (D went white in the panel while it flashed an
+    unexplained red on the picture, review of ScalingWalled at 9.0 s)."""
+    made = _walled(walk, call, ret)
+    result = show(ret.result)
+    dry = [v for v, seen in made["visible"] if not seen]
+    caption = (f"The edges keep the water from {_and(dry)}; the first vertex it wets is {result}"
+               if dry else f"The water, kept in by the edges, wets {result} first")
+    candidates = set(_frame_candidates(walk, call))
+    made["roles"] = {**pick_roles(call, ret),
+                     **{v: "candidate" for v in dry if v in candidates}}
+    yield walk.call_beat(WalledWater, caption, call, ret, result=result, **made)
+
+
+def _frame_candidates(walk: Walk, call: Event) -> list[str]:
+    """The candidates in T the run found before ``call`` (none if it found none)."""
+    found = [e for e in walk.log.events[:call.seq]
+             if e.kind == "return" and e.name == "candidates_in_triangle"]
+    return refs(found[-1].result) if found else []
+
+
+def _and(names: list[str]) -> str:
+    """``D``, ``D and F``, ``D, F and G``."""
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
 
 
 def _rise(walk: Walk, call: Event, ret: Event) -> dict[str, Any]:
@@ -166,19 +195,24 @@ def walled_water(board: Board, beat: WalledWater) -> None:
     centre = states[0].center
     region = visible_region(board.polygon, board.polygon.points.index(tuple(centre)))
     disk = tag(MPolygon(board.at(centre), board.at(centre)), "argument", "water")
-    board.play(beat, FadeIn(disk), run_time=0.3)
+    # the pick stays a candidate until the water reaches it (:func:`wets`)
+    shown = beat.before_pick()
+    board.play(shown, FadeIn(disk), run_time=0.3)
     visible = dict(beat.visible)
     radius = 0.0
     for state, reached in hits(states[1:]):
-        seen = visible.get(reached, False)
-        colour = board.theme.result if seen else board.theme.rejected
 
         def wet(alpha: float, start: float = radius, end: float = state.radius):
             return region.intersection(
                 shapely.Point(centre).buffer(max(start + (end - start) * alpha, 1e-9), 64))
 
-        board.play(beat, _filling(board, disk, wet, "water", centre),
-                   Indicate(board.markers[reached], color=colour), run_time=1.2)
+        board.play(shown, _filling(board, disk, wet, "water", centre), run_time=1.2)
+        # the vertex it wets flashes as it is wet (the pick amber, the claim to be, as the
+        # panel shows it); one an edge keeps the water from is never wet, and does not flash
+        # (it flashed red, a colour the legend keeps for "fails", and B's not seeing it went
+        # unsaid)
+        if visible.get(reached, False):
+            shown = wets(board, beat, shown, reached)
         radius = state.radius
     board.play(beat, FadeOut(disk), run_time=0.5)
 
@@ -262,9 +296,7 @@ READS: Mapping[str, Reading] = {
     "nearest_to": read_step(
         Water, "Water spilled at B spreads; the first candidate it wets is {result}", _spread,
         picks=True),
-    "nearest_visible": read_step(
-        WalledWater, "Water that respects the walls reaches {result} first", _walled,
-        picks=True),
+    "nearest_visible": _read_walled,
     "last_dry": read_step(
         Flood, "Water rises from the shore AC; the last dry candidate is {result}", _rise, picks=True),
 }

@@ -13,9 +13,9 @@ The panel shows the pseudocode or the real source: :data:`PANELS`, :data:`PSEUDO
 No manim here.
 
 >>> rows = (PseudocodeRow("B = the left-most vertex", ("leftmost_vertex",)),
-...         PseudocodeRow("none: AC is an inner diagonal", ("claim",)),
+...         PseudocodeRow("none: claim AC is an inner diagonal", ("claim",)),
 ...         PseudocodeRow("else: D = the candidate closest to B", ("pick", "nearest_to")),
-...         PseudocodeRow("  BD is an inner diagonal", ("claim",)))
+...         PseudocodeRow("  claim BD is an inner diagonal", ("claim",)))
 >>> lit_row(rows, ["scaling", "pick", "nearest_to"], lit=0)
 2
 >>> lit_row(rows, ["scaling", "claim"], lit=2), lit_row(rows, ["scaling", "claim"], lit=0)
@@ -128,11 +128,11 @@ def named(pseudocode: Sequence[PseudocodeRow], vertices: dict[str, str],
     letter by letter, all at once (``BD`` → ``BE``); other capitals (``P``, ``T``) stay.
 
     >>> rows = (PseudocodeRow("else: D = the candidate closest to B", ("pick",)),
-    ...         PseudocodeRow("  BD is an inner diagonal", ("claim",)))
+    ...         PseudocodeRow("  claim BD is an inner diagonal", ("claim",)))
     >>> [s.text for s in named(rows, {"B": "B", "D": "E"}, "ABCDE")]
-    ['else: E = the candidate closest to B', '  BE is an inner diagonal']
+    ['else: E = the candidate closest to B', '  claim BE is an inner diagonal']
     >>> [s.text for s in named(rows, {"B": "D", "D": "B"}, "ABCDE")]
-    ['else: B = the candidate closest to D', '  DB is an inner diagonal']
+    ['else: B = the candidate closest to D', '  claim DB is an inner diagonal']
     >>> named(rows, {"D": "E"}, "ABC") == rows  # no D on screen: the rule's D is no one else
     True
     """

@@ -26,9 +26,9 @@ Examples
 B = the left-most vertex (lowest on ties)    leftmost_vertex
 A, C = its neighbours; T = triangle ABC      triangle_at
 candidates = the other vertices inside T     candidates_in_triangle
-none: AC is an inner diagonal                claim
+none: claim AC is an inner diagonal          claim
 else: D = the candidate closest to B         pick, nearest_to
-  BD is an inner diagonal                    claim
+  claim BD is an inner diagonal              claim
 """
 
 from __future__ import annotations
@@ -97,7 +97,9 @@ SPOKEN: Mapping[str, Spoken] = MappingProxyType({
     "translation-correct": Spoken("Correct Translation", "the line parallel to AC"),
     "scaling-correct": Spoken("Correct Scaling", "water rising from AC"),
     "rotation-correct": Spoken("Correct Rotation", "the clock at C"),
-    "scaling-walled": Spoken("Scaling with walls", "water that respects the edges"),
+    # the thesis's first Correct Scaling (ch. 2.1.2: "make the water respect the edges"),
+    # before "another correct variant", the water rising from AC: both its name
+    "scaling-walled": Spoken("Correct Scaling", "water that respects the edges"),
     "gravity": Spoken("Gravity", "the ball on a rubber band"),
     "divide-and-conquer": Spoken("divide and conquer", "cut along inner diagonals"),
     "ear-clipping-naive": Spoken("ear clipping", "slicing fruit"),
@@ -217,10 +219,13 @@ def _frame(rule: str, *calls: str, inside: tuple[PseudocodeRow, ...] = ()) -> tu
         PseudocodeRow("B = the left-most vertex (lowest on ties)", ("leftmost_vertex",)),
         PseudocodeRow("A, C = its neighbours; T = triangle ABC", ("triangle_at",)),
         PseudocodeRow("candidates = the other vertices inside T", ("candidates_in_triangle",)),
-        PseudocodeRow("none: AC is an inner diagonal", ("claim",)),
+        PseudocodeRow("none: claim AC is an inner diagonal", ("claim",)),
         PseudocodeRow(f"else: D = {rule}", ("pick", *calls)),
         *inside,
-        PseudocodeRow("  BD is an inner diagonal", ("claim",)),
+        # the rule's claim, not a fact: lit while the verdict refutes it ("✗ BD is not an
+        # inner diagonal"), "BD is an inner diagonal" read as the panel contradicting the
+        # caption (review of the scenes' renders)
+        PseudocodeRow("  claim BD is an inner diagonal", ("claim",)),
     )
 
 
@@ -300,7 +305,7 @@ _ENTRIES = (
                idea="the clock moves to C, set to B",
                pseudocode=_frame("first hit of a hand at C set to B", "first_hit_rotating")),
     _heuristic("scaling-walled", correct=True, metaphor="water", polygon="counterexample",
-               idea="water that cannot pass the edges",
+               idea="water that respects the edges",
                pseudocode=_frame("the nearest vertex that B sees", "nearest_visible",
                                  inside=(PseudocodeRow("  B sees V if BV runs inside P", ("sees",)),))),
     _heuristic("gravity", correct=True, metaphor="gravity", polygon="gravity-snag",

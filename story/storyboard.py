@@ -144,8 +144,14 @@ def call_line(call: Event, ret: Event | None) -> str:
     'triangulate(P, "ear-clipping-naive")'
     >>> call_line(Event(0, "call", "is_ear", args={"v": {"ref": "B"}}), None)
     'is_ear(B)'
+
+    An argument None is Python's ``None`` (not the dash a result of nothing shows: the
+    vertical sweep's call read ``first_hit_sweeping(B, [0, 1], [D, E], —)``):
+
+    >>> call_line(Event(0, "call", "f", args={"b": {"ref": "B"}, "shore": None}), None)
+    'f(B, None)'
     """
-    args = ", ".join(show(v) for v in (call.args or {}).values())
+    args = ", ".join("None" if v is None else show(v) for v in (call.args or {}).values())
     text = (f"{call.name}({args})" if call.name.isidentifier()
             else f'triangulate({args}, "{call.name}")')
     return f"{text} → {_shown_result(ret.result)}" if ret is not None else text

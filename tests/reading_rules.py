@@ -6,6 +6,7 @@ lecture apply them."""
 
 from __future__ import annotations
 
+import ast
 import itertools
 import json
 import math
@@ -549,6 +550,102 @@ def text_only_seconds(data: dict) -> tuple[float, float]:
     return text_only, total
 
 
+def _card_text(node: dict) -> str:
+    return " ".join(t for part in mobject_nodes(node) if (t := (part.get("text") or "").strip()))
+
+
+def unreadable_cards(data: dict) -> list[str]:
+    """The cards of a scene (``card``: a run's number and title on black) up for less than
+    their words take to read (:func:`story.reading.readable`: 17 characters a second, 0.83 s
+    at least), from the play that brings one in to the one that takes it off, as ``"0.80 s,
+    60 cps: '1 / 8 Scaling fails: …'"``: the counterexample scene's cards of 34–48
+    characters stood 0.6–0.8 s."""
+    found, shown = [], None
+    clock = 0.0
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if node.get("name") != "card":
+                continue
+            if anim["type"] in INCOMING:
+                shown = (clock, _card_text(node))
+            elif anim["type"] in OUTGOING and shown is not None:
+                seconds = clock + play["run_time"] - shown[0]
+                if not readable(shown[1], seconds):
+                    found.append(f"{seconds:.2f} s, {len(shown[1]) / seconds:.0f} cps: "
+                                 f"{shown[1]!r}")
+                shown = None
+        clock += play["run_time"]
+    return found
+
+
+def captions_said_again(data: dict) -> list[str]:
+    """The captions a graph says more than once, as ``"3 × '✗ BD is not an inner diagonal:
+    BD crosses edge E–A'"``: the counterexample scene said its ✗ ending three times and "The
+    frame as before" seven, over other runs each time."""
+    counts: dict[str, int] = {}
+    for cue in data["cues"]:
+        counts[cue["text"]] = counts.get(cue["text"], 0) + 1
+    return [f"{n} × {text!r}" for text, n in counts.items() if n > 1]
+
+
+#: what a caption says to speak of the picture the viewer saw just before
+_AS_BEFORE = re.compile(r"\bas before\b|\bthe same (?:polygon|frame|picture)\b", re.IGNORECASE)
+
+
+def false_as_before(data: dict) -> list[str]:
+    """The captions that speak of the picture shown before ("The frame as before", "on the
+    same polygon") said over a polygon just drawn that is not the one drawn before it, as
+    ``"'The frame as before: candidates D, E' over another polygon"``: the counterexample
+    scene said it as the mirror image gave way to the polygon (62 s), and the polygon to the
+    mirror image (96 s)."""
+    found, drawn, fresh = [], [], False
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and node.get("name") in _RUN_POLYGONS and node.get("points"):
+                drawn.append([tuple(round(c, 3) for c in p[:2]) for p in node["points"]])
+                fresh = True
+        caption = play.get("subcaption")
+        if caption:
+            if _AS_BEFORE.search(caption) and fresh and (len(drawn) < 2 or drawn[-1] != drawn[-2]):
+                found.append(f"{caption!r} over another polygon")
+            fresh = False
+    return found
+
+
+#: the tools that move to their pick, by the names of their drawings, and the animations that
+#: move them (a play of waits only is the picture standing still)
+_MOVING_TOOLS = ("water", "flood", "hand", "sweep")
+_MOVES = ("UpdateFromAlphaFunc", "Rotate", "_MethodAnimation", "Transform")
+
+
+def rushed_tools(data: dict) -> list[str]:
+    """The captions under which a tool moves to its pick for less time than the picture then
+    stands still, as ``"'Water spilled …': moves 0.77 s, still 2.47 s"``: the counterexample
+    scene's water covered all of T in 0.8 s and stood still 2.5 s (8.7–9.5 s), its clock hand
+    likewise (21.3–22.9 s)."""
+    found: list[str] = []
+    spans: list[tuple[str, float, float]] = []
+    caption, moving, still = None, 0.0, 0.0
+    for play in data["plays"]:
+        if play.get("subcaption"):
+            if caption is not None:
+                spans.append((caption, moving, still))
+            caption, moving, still = play["subcaption"], 0.0, 0.0
+        kinds = [(a["type"], (a.get("mobject") or {}).get("name")) for a in play["animations"]]
+        if any(kind in _MOVES and name in _MOVING_TOOLS for kind, name in kinds):
+            moving += play["run_time"]
+        elif kinds and all(kind == "Wait" for kind, _ in kinds):
+            still += play["run_time"]
+    if caption is not None:
+        spans.append((caption, moving, still))
+    for caption, moving, still in spans:
+        if moving > 0 and still > moving:
+            found.append(f"{caption!r}: moves {moving:.2f} s, still {still:.2f} s")
+    return found
+
+
 # --- issue 22 item 4: one picture per idea ----------------------------------------------------
 
 #: the polygons a run or an analysis draws its steps on (a card's figure is no run)
@@ -777,6 +874,47 @@ def stale_call_lines(data: dict) -> list[str]:
     return found
 
 
+_SUBSCRIPTS = str.maketrans({**{c: str(k) for k, c in enumerate("₀₁₂₃₄₅₆₇₈₉")}, "′": "_",
+                             "″": "__"})
+
+
+def _depth(text: str) -> int:
+    """How many brackets are open at the end of ``text``."""
+    return sum(text.count(c) for c in "([{") - sum(text.count(c) for c in ")]}")
+
+
+def unreal_call_lines(data: dict) -> list[str]:
+    """Issue 22 item 1, a programmer's call line: the call lines (the part before the
+    result's arrow) Python could not read as a call, and those broken into lines anywhere
+    but after an argument's comma or before the arrow, as ``"'first_hit_sweeping(B, [0,
+    1], [D, E], —) → D': not Python"`` or ``"'…[D, | E], T(ABC)) → E': broken inside an
+    argument"`` (the vertical sweep's unset shore was a dash, and TranslationCorrect's list
+    [D, E] broke over two lines)."""
+    found: list[str] = []
+    for node in graph_nodes(data):
+        if node.get("name") != "panel:call":
+            continue
+        lines = [t for part in mobject_nodes(node) if (t := (part.get("text") or "").strip())]
+        whole = " ".join(lines)
+        if not whole:
+            continue
+        # a label's subscript (c₁) is its name's digit, its prime (c₁′) a letter, an elision (``{…}``, a cut line's
+        # end) Python's ``...``
+        call = whole.split(" →")[0].translate(_SUBSCRIPTS).replace("…", "...")
+        try:
+            parsed = ast.parse(call, mode="eval").body
+        except SyntaxError:
+            parsed = None
+        if not isinstance(parsed, ast.Call) and not call.endswith("..."):  # a cut one: its start
+            found.append(f"{whole!r}: not Python")
+        for k in range(1, len(lines)):
+            before = " ".join(lines[:k])
+            if not (lines[k].startswith("→") or (before.endswith(",") and _depth(before) == 1
+                                                 and "→" not in before)):
+                found.append(f"{' | '.join(lines)!r}: broken inside an argument")
+    return sorted(set(found))
+
+
 #: the end of a run's call line under its whole triangulation: the triangles it gives,
 #: counted (``→ 11 triangles``), not their index triples (``→ [[12, 7, 8], [0, 1, 12], …]``)
 _COUNTED_CALL = re.compile(r"→\s*\d+\s*triangles$")
@@ -818,6 +956,51 @@ def stale_lit_rows(data: dict) -> list[str]:
         if lit is not None and lit not in results and any(
                 kind in INCOMING and name == "triangulation" for kind, name in tops):
             found.append(f"play {k}: {lit!r}")
+    return found
+
+
+#: the diagonals a ✗ caption refutes: "✗ BD is not an inner diagonal: …", "✗ Scaling
+#: fails: BD crosses edge E–A"
+_REFUTED = re.compile(r"\b([A-Z][a-z₀-₉]*[A-Z][a-z₀-₉]*) (?:is not an inner diagonal|crosses)")
+
+
+def refuted_lit_rows(data: dict) -> list[str]:
+    """The plays whose lit pseudocode row states as a fact what the caption on screen then
+    refutes, as ``"play 31: 'BD is an inner diagonal' under '✗ BD is not an inner
+    diagonal: …'"``: the rule's row said "BD is an inner diagonal", lit while the ✗ said it
+    was not (Scaling, Rotation and Translation at 13–18 s). A row saying it as the rule's
+    claim ("claim BD is an inner diagonal") is what the rule does, not a fact."""
+    found, lit, caption = [], None, ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            for text in _lit_rows(anim):
+                lit = text
+        if lit is None or not caption.startswith("✗"):
+            continue
+        if any(re.search(rf"(?<!claim )\b{name} is an inner diagonal", lit)
+               for name in _REFUTED.findall(caption)):
+            found.append(f"play {k}: {lit!r} under {caption!r}")
+    return found
+
+
+def flashes_against_roles(data: dict) -> list[str]:
+    """The vertices a run's picture flashes (``Indicate``) in another colour than the role
+    it has then — the colour the panel shows it in, and the legend's — as ``"play 12:
+    vertex:D flashes #EF4B4B, idle"``: Scaling with walls flashed D red (no failure: B does
+    not see it, unsaid) while the panel kept it white, and E green (no verdict yet) while
+    the panel showed it amber."""
+    from metaphors.theme import THEME
+
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name, role = node.get("name") or "", node.get("role") or "idle"
+            if anim["type"] != "Indicate" or not name.startswith("vertex:"):
+                continue
+            if str(anim.get("color", "")).upper() != THEME.role_colour(role).upper():
+                found.append(f"play {k}: {name} flashes {anim.get('color')}, {role}")
     return found
 
 
@@ -1875,6 +2058,31 @@ def _with_labels(data: dict) -> Iterator[tuple[dict, dict[str, tuple[float, floa
             for key in ("mobject", "target"):
                 labels.update(dict(_named_label_boxes(anim.get(key, {}))))
             yield anim, labels
+
+
+#: the parts of a tool's drawing only a word on screen could explain: a face round its hub,
+#: its hour marks
+_UNSAID_PARTS = ("dial", "mark:")
+#: the words that would say what they are
+_FACE_WORDS = re.compile(r"\b(?:dial|face|hour marks?)\b", re.IGNORECASE)
+
+
+def unexplained_tool_parts(data: dict) -> list[str]:
+    """The parts of a tool drawn (:data:`_UNSAID_PARTS`) that no caption, title or legend
+    says anything of, as ``"dial"``, ``"mark:D"``: the clock's grey wedge at its hub (33 px
+    at B, 15–25 px at C) and the amber tick it lit on the hand at the pick read as nothing
+    (review of the rotation scenes)."""
+    said = any(_FACE_WORDS.search(text) for text in _all_shown_texts(data, frozenset()))
+    if said:
+        return []
+    found = set()
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                name = node.get("name") or ""
+                if anim.get("type") in INCOMING and name.startswith(_UNSAID_PARTS):
+                    found.add(name)
+    return sorted(found)
 
 
 def labels_under_faces(data: dict) -> list[str]:
@@ -3752,6 +3960,14 @@ def _new_picture(play: dict) -> bool:
                for a in play["animations"])
 
 
+def _new_run(play: dict) -> bool:
+    """Whether a play brings a run's title in: a run going on on the board the last one
+    played on (the counterexample's corrections, :func:`metaphors.play.go_on`), its pick
+    its own (the wrong rule's D, amber in its run, is a candidate of the correction's)."""
+    return any(a.get("type") in INCOMING and (a.get("mobject") or {}).get("name") == "title"
+               for a in play["animations"])
+
+
 def early_picks(data: dict) -> list[str]:
     """The picks lit amber (the claim to be) before the tool reaches them, as ``"play 132 E
     amber, reached at play 134"``: chapter 2's working runs lit the pick amber as the tool
@@ -3761,7 +3977,7 @@ def early_picks(data: dict) -> list[str]:
     roles: dict[str, str] = {}
     amber: dict[str, int] = {}  # vertex: the play it turned amber in
     for k, play in enumerate(data["plays"]):
-        if _new_picture(play):
+        if _new_picture(play) or _new_run(play):
             roles, amber = {}, {}
         for anim in play["animations"]:
             for label, role in _vertex_roles(anim):
@@ -5181,3 +5397,20 @@ def lines_lost_on_the_fruit(data: dict) -> list[str]:
                     if ratio < LEAST_CONTRAST and not _cased(node):
                         found.setdefault(name, f"play {k} {name} {ratio:.1f} : 1")
     return sorted(found.values())
+
+
+def unanswered_card_questions(data: dict) -> list[str]:
+    """The card lines that ask a question and leave it open (a ``card:line`` ending in "?"),
+    as their text: chapter 2's frame card asked "say G: is BG inner?" over a dashed amber
+    BG, and nothing on that card, nor after it, said whether it is (review of chapter 2). A
+    card says what a thing is; a question for the class goes in the exercises, with its
+    answer after time to think (:func:`rushed_questions`)."""
+    found: list[str] = []
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            if anim["type"] in INCOMING and node.get("name") == "card:line":
+                text = _text_of(node).strip()
+                if text.endswith("?") and text not in found:
+                    found.append(text)
+    return found

@@ -58,6 +58,7 @@ from tests.reading_rules import (
     early_snags,
     ears_without_convexity,
     faint_cuts,
+    false_as_before,
     far_verdicts,
     fills_over_labels,
     fleeting_kind_words,
@@ -100,6 +101,7 @@ from tests.reading_rules import (
     red_after_the_pick,
     redrawn_pictures,
     refaded_texts,
+    refuted_lit_rows,
     repeated_verdicts,
     replayed_beats,
     replayed_splits,
@@ -122,10 +124,12 @@ from tests.reading_rules import (
     tails_beside_labels,
     texts_over_the_picture,
     ticks_outside,
+    unanswered_card_questions,
     uneven_countdowns,
     unexplained_grey,
     unexplained_plates,
     unexplained_primes,
+    unexplained_tool_parts,
     unlit_givens,
     unmarked_candidates,
     unnamed_axes,
@@ -667,6 +671,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22: the whole triangulation comes under its own caption, not the last step's
     assert stale_endings(data) == [], chapter.slug
     assert stale_lit_rows(data) == [], chapter.slug
+    # and no lit row states what the ✗ on screen refutes ("BD is an inner diagonal")
+    assert refuted_lit_rows(data) == [], chapter.slug
+    # "as before" only over the picture just seen (said as the mirror image gave way)
+    assert false_as_before(data) == [], chapter.slug
     # and no ✓ or ✗ of a step is left over on it (prune and search's diagonals)
     assert leftover_verdicts(data) == [], chapter.slug
     # issue 22: a verdict's ✓ or ✗ stands clear of every edge and label
@@ -698,6 +706,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # and no tool red after its pick (red says "fails")
     assert red_after_the_pick(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
+    # and no part of a tool that nothing on screen explains (the clock's grey face)
+    assert unexplained_tool_parts(data) == [], chapter.slug
     assert labels_under_tools(data) == [], chapter.slug
     assert tails_beside_labels(data) == [], chapter.slug
     # issue 22: the monotone sweep's kind word ("split") clear of every label and edge
@@ -1084,6 +1094,8 @@ def test_the_heuristics_chapter_shows_each_wrong_heuristic_once():
     chapter = next(c for c in lecture_chapters() if c.slug == "heuristics")
     data = build(_chapter_class(chapter).handed()).data
     assert replayed_beats(data) == [] and repeated_verdicts(data) == []
+    # the frame card asks nothing it leaves open ("say G: is BG inner?", never answered)
+    assert unanswered_card_questions(data) == []
     cues = [c["text"] for c in data["cues"]]
     crosses = [c for c in cues if c.startswith("✗")]
     assert len(crosses) == 3  # one per wrong heuristic, in its pass

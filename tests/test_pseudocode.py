@@ -175,12 +175,12 @@ def test_the_claim_lights_its_branch():
     rows = entry("scaling").pseudocode
     square = storyboard(run_logged("scaling", "square"))  # T holds no candidate: AC
     assert {rows[b.row].text for b in square if b.action in ("claim", "verdict")} == {
-        "none: AC is an inner diagonal"}
+        "none: claim AC is an inner diagonal"}
     wrong = storyboard(run_logged("scaling", "counterexample"))  # D, the nearest: BD
     assert [rows[b.row].text for b in wrong[1:]] == [
         "B = the left-most vertex (lowest on ties)", "A, C = its neighbours; T = triangle ABC",
         "candidates = the other vertices inside T", "else: D = the candidate closest to B",
-        "  BD is an inner diagonal", "  BD is an inner diagonal"]
+        "  claim BD is an inner diagonal", "  claim BD is an inner diagonal"]
 
 
 @pytest.mark.parametrize("name", ["ear-clipping", "ear-clipping-naive"])

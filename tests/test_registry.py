@@ -67,6 +67,22 @@ def test_the_thesis_says_which_heuristics_are_correct():
     assert wrong(TRIANGULATION) == ()
 
 
+#: the heuristics' names in the thesis (ch. 2.1; headings and text): its Correct Scaling is
+#: both water that respects the edges and the water rising from AC
+THESIS_NAMES = ("Scaling", "Rotation", "Translation", "Correct Translation", "Correct Scaling",
+                "Correct Rotation", "Gravity")
+
+
+@pytest.mark.parametrize("name", heuristics())
+def test_every_heuristic_is_spoken_of_by_the_thesis_name(name):
+    """A title says the thesis's name: "Scaling with walls" is none (the thesis calls the
+    water that respects the edges Correct Scaling). Rotation the other way is the thesis's
+    Rotation from C, counter-clockwise."""
+    said = registry.spoken(name)
+    assert said in (*THESIS_NAMES, "Rotation the other way"), said
+    assert entry(name).title.startswith(f"{said}: ")
+
+
 def test_the_mapping_and_entries_are_read_only():
     with pytest.raises(TypeError):
         REGISTRY["magic"] = REGISTRY["scaling"]  # type: ignore[index]  # on purpose: it must raise

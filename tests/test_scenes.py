@@ -39,7 +39,7 @@ from geometry.diagonals import find_diagonal
 from geometry.io import read_any_polygon, read_polygon
 from metaphors.pseudocode import source_of
 from metaphors.scene import SequenceScene, TraceScene
-from story.registry import entry, hole_pseudocode, spoken, triangulations, wrong
+from story.registry import entry, hole_pseudocode, names, spoken, triangulations, wrong
 from story.scene_kinds import Handed, WithPanel, algorithm_of, heuristic_of, plays_several
 from story.spec import RunSpec
 from story.storyboard import spoken_pseudocode
@@ -52,6 +52,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     calls_over_code,
+    captions_said_again,
     claims_along_edges,
     claims_missing_from_panel,
     close_ups_left_early,
@@ -68,7 +69,9 @@ from tests.reading_rules import (
     crowded_vertex_labels,
     early_picks,
     ears_without_convexity,
+    false_as_before,
     far_verdicts,
+    flashes_against_roles,
     fleeting_kind_words,
     flickering_counts,
     graph_nodes,
@@ -95,10 +98,12 @@ from tests.reading_rules import (
     red_after_the_pick,
     redrawn_pictures,
     refaded_texts,
+    refuted_lit_rows,
     repeated_verdicts,
     replayed_beats,
     rows_behind_words,
     run_together_labels,
+    rushed_tools,
     shapes_under_text,
     short_falls,
     small_texts,
@@ -115,9 +120,12 @@ from tests.reading_rules import (
     ticks_outside,
     unexplained_plates,
     unexplained_primes,
+    unexplained_tool_parts,
     unlit_givens,
     unnamed_marks,
+    unreadable_cards,
     unreadable_cues,
+    unreal_call_lines,
     unsaid_colour_changes,
     unseen_ear_tests,
     unspoken_words,
@@ -332,6 +340,9 @@ def test_the_whole_triangulation_comes_under_its_own_caption(case):
     assert stale_endings(graph(case).data) == [], case.id
     # nor its lit pseudocode row: the row saying the result ("their union is …") is lit
     assert stale_lit_rows(graph(case).data) == [], case.id
+    # nor, under a ✗, a row stating what the ✗ refutes ("BD is an inner diagonal" lit under
+    # "✗ BD is not an inner diagonal" in every wrong heuristic's scene): the rule's claim
+    assert refuted_lit_rows(graph(case).data) == [], case.id
     # nor its call line: the run's own call with its result, not the last split's
     assert stale_call_lines(graph(case).data) == [], case.id
     # nor the last step's label colours: every label in its ink, on the board and the panel
@@ -540,10 +551,79 @@ def test_no_label_is_under_the_clock_face(case):
     """Issue 22, labels stay readable: the clock's face at B (Rotation) or at C (Correct
     Rotation) covers no vertex label, the hub's own included."""
     assert labels_under_faces(graph(case).data) == [], case.id
+    # nor any part of the clock nothing explains: its grey face at the hub, its hour marks
+    assert unexplained_tool_parts(graph(case).data) == [], case.id
     # nor under the line of a tool where it stands: it leaves a gap round a label
     assert labels_under_tools(graph(case).data) == [], case.id
     # nor does a dashed tail of one or two dashes beyond a vertex stand by its label ("A′")
     assert tails_beside_labels(graph(case).data) == [], case.id
+
+
+def _plays_heuristics(case: SceneCase) -> bool:
+    """Whether a scene plays a heuristic's run (or several)."""
+    cls = case.cls
+    if cls is None:
+        return False
+    if plays_several(cls):
+        return True
+    algorithm = algorithm_of(cls)
+    return algorithm in names() and entry(algorithm).is_heuristic
+
+
+@pytest.mark.parametrize("case", _params([c for c in SCENES if _plays_heuristics(c)]))
+def test_a_heuristics_picture_flashes_a_vertex_in_its_roles_colour(case):
+    """Review of the scenes: a vertex flashes in the colour of its role then, the colour the
+    panel shows it in (Scaling with walls flashed D red, B not seeing it unsaid, while the
+    panel kept D white, and E green while the panel showed it amber)."""
+    assert flashes_against_roles(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params([c for c in SCENES if _plays_heuristics(c)]))
+def test_a_heuristics_scene_says_each_caption_once_and_lets_its_tools_move(case):
+    """Review of the counterexample scene: no caption said twice (its ✗ ending three times,
+    "The frame as before" seven), and each tool moves for as long as the picture then stands
+    still under its caption (its water covered T in 0.8 s, then stood still 2.5 s)."""
+    data = graph(case).data
+    assert captions_said_again(data) == [], case.id
+    assert rushed_tools(data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_a_card_is_up_long_enough_to_read_and_as_before_means_just_before(case):
+    """Review of the counterexample scene: a card stays up as long as its words take to read
+    (its run cards of 34–48 characters stood 0.6–0.8 s), and "as before" or "the same
+    polygon" is said only over the polygon the viewer saw just before (it was said as the
+    mirror image gave way to the polygon, and back)."""
+    data = graph(case).data
+    assert unreadable_cards(data) == [], case.id
+    assert false_as_before(data) == [], case.id
+
+
+def test_the_counterexample_says_its_point_first_and_pairs_each_rule_with_its_correction():
+    """Review of the counterexample scene: its title and its point come first, said once
+    (neither ever appeared); each wrong rule is followed by its correction on the same
+    polygon, not drawn again (four failures, then four corrections, each on a polygon drawn
+    anew); no card on black; it ends on what it showed, not on the last run's ✓."""
+    from scenes.counterexample import Counterexample
+
+    case = next(c for c in SCENES if c.id == "counterexample.Counterexample")
+    data = graph(case).data
+    titles = [n["text"] for p in data["plays"] for a in p["animations"]
+              if a["type"] in ("Write", "FadeIn") and (n := a.get("mobject") or {}).get("name")
+              == "title"]
+    assert titles[0] == Counterexample.title == "The counterexample", titles[:2]
+    cues = [c["text"] for c in data["cues"]]
+    point = [c for c in cues if "defeats all three wrong rules" in c]
+    assert point == [cues[0]] and "mirror image defeats the clock turned the other way" in cues[0]
+    runs = Counterexample.runs
+    for k, (algorithm, polygon, _) in enumerate(runs):
+        if not entry(algorithm).correct:
+            assert runs[k + 1][:2] == (entry(algorithm).correction, polygon), runs[k + 1]
+    drawn = [a for p in data["plays"] for a in p["animations"]
+             if a["type"] == "Create" and (a.get("mobject") or {}).get("name") == "polygon"]
+    assert len(drawn) == len({polygon for _, polygon, _ in runs}), len(drawn)
+    assert not any(n.get("name") == "card" for n in nodes(graph(case)))
+    assert not cues[-1].startswith(("✓", "✗")), cues[-1]
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
@@ -692,6 +772,10 @@ def test_the_call_line_is_a_real_call(case):
              and (n.get("text") or "").strip()}
     unreal = sorted(c for c in calls if not re.match(r"[A-Za-z_]\w*\(", c))
     assert unreal == [], case.id
+    # Python could read it, and it breaks only between arguments: the vertical sweep's unset
+    # shore read "—", and "[D, E]" broke over two lines (TranslationCorrect's call, every
+    # scene's candidates)
+    assert unreal_call_lines(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))

@@ -56,7 +56,7 @@ def test_the_pseudocode_names_the_vertex_the_run_picked():
     assert run_vertices(log) == {"A": "A", "B": "B", "C": "C", "D": "E"}
     rows = [step.text.strip() for step in spoken_pseudocode(log)]
     assert "else: E = first hit of a hand at B set to C" in rows
-    assert "BE is an inner diagonal" in rows
+    assert "claim BE is an inner diagonal" in rows
     assert not any("D" in row.split() or "BD" in row for row in rows), rows
     assert [s.calls for s in spoken_pseudocode(log)] == [s.calls for s in pseudocode_of(log)]
 

@@ -17,9 +17,10 @@ from story.runs import working_example
 #: the polygon that defeats all three wrong heuristics
 COUNTEREXAMPLE = "counterexample"
 #: the pass opens on the frame: the first time with what this polygon is (said once, not per
-#: heuristic), then as the same polygon
+#: heuristic), then as that polygon again — not "the same polygon", said just after a run on
+#: another one (the working example), which it is not the same as
 INTRO_FIRST = "This polygon of {n} vertices defeats all three heuristics. Candidates: {candidates}."
-INTRO_AGAIN = "The same polygon of {n} vertices. Candidates in T: {candidates}."
+INTRO_AGAIN = "Back to the polygon of {n} vertices that defeats them. Candidates in T: {candidates}."
 #: seconds each tool takes to its pick, and the picture holds at the decisive moments: the
 #: pass is shown once, so it is shown slowly
 SLOW, FREEZE = 8.5, 3.5
@@ -92,8 +93,11 @@ class Heuristics(LectureScene):
               if reflex else []),
             "A and C: its neighbours; T = triangle ABC.",
             # the figure's own names: its D is a reflex vertex outside T, its candidates G, H
-            "No other vertex in T: AC is an inner diagonal. Otherwise pick a candidate, "
-            "say G: is BG inner?"),
+            "No other vertex in T: AC is an inner diagonal.",
+            # the dashed amber BG is a claim, and the card says what decides it ("say G: is
+            # BG inner?" asked it and nothing answered, review of chapter 2)
+            "Otherwise claim BG for a candidate G: BG is inner only if G is picked well. "
+            "Each heuristic is a way to pick it."),
             Figure("frame"))
         families = [family_segments(f, INTRO_FIRST if k == 0 else INTRO_AGAIN)
                     for k, f in enumerate(FAMILIES)]
