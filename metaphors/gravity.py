@@ -382,7 +382,10 @@ def slide(board: Board, beat: Slide) -> None:
             said = _snagging(board, beat, y)
             if k == 1 and y in board.markers:
                 anims.append(Indicate(board.markers[y], color=board.theme.argument))
-        board.play(said, *anims, run_time=max(SLIDE_SECONDS * (end - start), 0.1))
+        # the words, Y's amber and the band wrapping Y in one play: Y went amber in the panel
+        # a play before the band reached it (the gravity scene, play 19)
+        board.play(said, *anims, run_time=max(SLIDE_SECONDS * (end - start), 0.1),
+                   together=said is not beat)
     # the ball rests at X under X's dot and label: on top it hid the vertex it names
     if beat.result in board.markers:
         board.scene.bring_to_front(board.markers[beat.result])

@@ -327,12 +327,14 @@ class SequenceScene(TraceScene):
         return rest
 
     def _end(self, board: Board) -> None:
-        """The scene's ending, said over its last picture (every label back in its ink)."""
+        """The scene's ending, said over its last picture as it stands: its claim's ends keep
+        their colour (back in the ink, B and D stood white under the green BD it ended on)."""
         last = self.played_beats[-1] if self.played_beats else None
         note = Note(caption=self.ending, seq=(last.seq + 1) if last else 0,
-                    row=last.row if last else None, pace=1.5)
+                    row=last.row if last else None, pace=1.5,
+                    roles=dict(last.roles) if last else {})
         mark_step(self, note.caption, None, note.action)  # a step of its own: a slide too
-        board.play(note, at_rest=True)
+        board.play(note)
         board.close()
 
 

@@ -3977,8 +3977,12 @@ def early_picks(data: dict) -> list[str]:
     roles: dict[str, str] = {}
     amber: dict[str, int] = {}  # vertex: the play it turned amber in
     for k, play in enumerate(data["plays"]):
-        if _new_picture(play) or _new_run(play):
+        # a new run on the same board starts its picks afresh; its markers keep the colours
+        # they have on screen (an amber vertex said amber again has not turned amber)
+        if _new_picture(play):
             roles, amber = {}, {}
+        elif _new_run(play):
+            amber = {}
         for anim in play["animations"]:
             for label, role in _vertex_roles(anim):
                 if role == "argument" and roles.get(label) != "argument":
