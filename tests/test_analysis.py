@@ -136,18 +136,39 @@ def gravity():
 
 
 def _segments(plays, titles) -> list[list]:
-    """The plays of each analysis: from the one that writes its title to the one that clears
+    """The plays of each analysis: from the one that puts up its title to the one that clears
     the screen after it (fading its polygon out)."""
+    return [plays[start:end] for start, end in _spans(plays, titles)]
+
+
+def _spans(plays, titles) -> list[tuple[int, int]]:
+    """Where each analysis starts and the play that clears it. An analysis on its own stage
+    writes its title (``analysis:title``) and clears its own polygon; one that goes on from
+    the run's picture (:attr:`Analysis.on_run`, chapter 3) retitles the run's board and
+    clears the run's polygon."""
     starts = [(k, a["mobject"]["text"]) for k, p in enumerate(plays)
-              for a in p.graph["animations"]
-              if a["type"] == "Write" and a["mobject"].get("name") == "analysis:title"]
+              for a in p.graph["animations"] if _puts_up_title(a, titles)]
     assert [title for _, title in starts] == titles
-    return [plays[k:_cleared(plays, k)] for k, _ in starts]
+    return [(k, _cleared(plays, k)) for k, _ in starts]
+
+
+def _puts_up_title(animation: dict, titles) -> bool:
+    name = animation.get("mobject", {}).get("name")
+    return ((animation["type"] == "Write" and name == "analysis:title")
+            or (animation["type"] == "FadeIn" and name == "title"
+                and animation["mobject"].get("text") in titles))
+
+
+def _on_run(plays, start: int) -> bool:
+    """Whether the analysis starting at ``start`` goes on from the run's picture."""
+    return not any(a["type"] == "Write" and a["mobject"].get("name") == "analysis:title"
+                   for a in plays[start].graph["animations"])
 
 
 def _cleared(plays, start: int) -> int:
+    polygon = "polygon" if _on_run(plays, start) else "analysis:polygon"
     return next(k for k in range(start + 1, len(plays)) for a in plays[k].graph["animations"]
-                if a["type"] == "FadeOut" and a["mobject"].get("name") == "analysis:polygon")
+                if a["type"] == "FadeOut" and a.get("mobject", {}).get("name") == polygon)
 
 
 def _named(plays, name: str) -> list[dict]:
@@ -244,24 +265,73 @@ def test_the_corrections_shaded_region_lies_inside_the_polygon(heuristics, k):
     assert holds in _captions(segment)
 
 
+#: what gravity's run and analysis draw of the band: the band, the part it has swept (shaded as
+#: it sweeps) and that part turned green when the analysis says why
+BAND_REGIONS, BAND_LINES = ("swept", "analysis:witness"), ("band",)
+
+
+def _turned(plays, name: str, before: int) -> int:
+    """The last play before ``before`` that turns ``name`` (a Turn's graph holds where it
+    starts from), or -1."""
+    return max((k for k in range(before) for a in plays[k].graph["animations"]
+                if a["type"] == "Turn" and a.get("mobject", {}).get("name") == name), default=-1)
+
+
 def test_gravitys_band_is_shown_always_inside_the_polygon(gravity):
+    """The analysis goes on from the run's picture (issue 22 item 4: one picture per idea):
+    the band, the part it swept as the run went and that part shaded green when the analysis
+    says why, lie inside P — the run's polygon as the run turned it — in every play that draws
+    them, from the run's turn to the analysis clearing the screen."""
     plays = gravity[1]
-    (segment,) = _segments(plays, TITLES["gravity"])
-    polygon, _ = _frame_of(segment)
-    shaded = _regions(_named(segment, "analysis:witness")[0])
-    assert shaded.area > 0.5 and polygon.buffer(GRAPH_SLACK).covers(shaded)
-    # the run's end, told once: not its steps said again (review r34 item 2)
-    assert "The ball fell from C and slid to G; the band is taut round H" in _captions(segment)
-    assert "The rubber band snags H" not in _captions(segment)
+    ((start, end),) = _spans(plays, TITLES["gravity"])
+    assert _on_run(plays, start)
+    polygon = _outline(_named(plays[end:end + 1], "polygon")[0])  # as it goes: turned
+    turn = _turned(plays, "polygon", start)
+    assert turn >= 0 and _turned(plays, "polygon", end + 1) == turn  # not turned again
+    shaded = _regions(_named(plays[start:end], "analysis:witness")[0])
+    assert shaded.area > 0.5
+    shown = {"regions": 0, "lines": 0}
+    for k in range(turn + 1, end + 1):
+        for node in (n for name in BAND_REGIONS for n in _named(plays[k:k + 1], name)):
+            region = _regions(node) if node.get("submobjects") else _outline(node).buffer(0)
+            if region.area < 1e-6:  # not swept yet: a sliding animation's graph is its start
+                continue
+            assert polygon.buffer(GRAPH_SLACK).covers(region), (k, node["name"])
+            shown["regions"] += 1
+        for node in (n for name in BAND_LINES for n in _named(plays[k:k + 1], name)):
+            line = shapely.LineString(np.array(node["points"])[:, :2])
+            if line.length < 1e-6:  # the band before the ball falls: C itself
+                continue
+            assert polygon.buffer(GRAPH_SLACK).covers(line), (k, node["name"])
+            shown["lines"] += 1
+    # the band as the ball falls, slides, snags and stays; its shading as it slides and snags,
+    # then green
+    assert shown["regions"] >= 3 and shown["lines"] >= 4, shown
+    # said once: the analysis says why, on the run's picture, and none of the run's steps again
+    # (review r34 item 2); it draws nothing again (the polygon, the ball and the band stay)
+    said = _captions(plays[start:end])
+    run = _captions(plays[:start])
+    assert said == [_families(gravity[0])[0].holds.format(pick="H", claim="CH")]
+    assert run.count("The rubber band snags H") == 1 and not set(said) & set(run)
+    assert not [a["mobject"]["name"] for p in plays[start:end] for a in p.graph["animations"]
+                if a["type"] in ("Create", "Write", "FadeIn")
+                and a["mobject"].get("name") in ("polygon", "analysis:polygon", "ball", "band")]
     assert not any("Why the band is always right" in c for c in _captions(plays))
+
+
+#: an analysis on its own stage speaks in steps; gravity's says why in one caption on the
+#: run's picture, and the run's verdict it takes over from is read in its time too
+LEAST_SAID = {"heuristics": 3, "gravity": 2}
 
 
 @pytest.mark.parametrize("chapter", ["heuristics", "gravity"])
 def test_every_analysis_caption_is_on_screen_long_enough_to_read(chapter, request):
     plays = request.getfixturevalue(chapter)[1]
-    for segment in _segments(plays, TITLES[chapter]):
-        held = _held(segment)
-        assert len(held) >= 3
+    for start, end in _spans(plays, TITLES[chapter]):
+        if _on_run(plays, start):  # from the run's last caption, which the analysis ends
+            start = max(k for k in range(start) if plays[k].subcaption)
+        held = _held(plays[start:end])
+        assert len(held) >= LEAST_SAID[chapter]
         for caption, seconds in held:  # as the .srt writes it: whole milliseconds
             assert int(seconds * 1000) / 1000 >= reading_time(caption), (caption, seconds)
 
