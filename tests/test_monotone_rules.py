@@ -49,8 +49,8 @@ def test_a_kind_word_nearer_another_vertex_or_far_from_its_own_is_found():
                                       "A: a start vertex", 1.0))
     beside = _graph((SHOWN, None, 1.0), ([_kind("FadeIn", [-0.5, 0.25, 0.1, 0.45]), flash],
                                          "A: a start vertex", 1.0))
-    assert stray_kind_words(between) == ["'start' for A nearer L"]
-    assert stray_kind_words(far) == ["'start' for A 1.4 away"]
+    assert stray_kind_words(between) == ["'start' for A 0.32 from it", "'start' for A nearer L"]
+    assert stray_kind_words(far) == ["'start' for A 1.30 from it", "'start' for A 1.4 away"]
     assert stray_kind_words(beside) == []
 
 
