@@ -133,7 +133,7 @@ def level_line(polygon: Polygon) -> tuple[float, list[tuple[float, float]]] | No
 
     >>> y, segments = level_line(read_polygon("lecture"))
     >>> y, [(round(a, 2), round(b, 2)) for a, b in segments]
-    (13.0, [(4.81, 5.9), (7.57, 9.0)])
+    (13.0, [(4.81, 5.9), (7.57, 9.25)])
     """
     region = shapely.Polygon(polygon.points)
     (left, _, right, _), heights = region.bounds, sorted({p[1] for p in polygon.points})
