@@ -343,7 +343,7 @@ def boards_of(runs: Sequence[Sequence[Beat]]) -> list[int]:
     before goes on on its board (its first beat draws the same points and labels).
 
     >>> from story.beats import ShowPolygon as P
-    >>> square, twin = P("a", 0, points=((0, 0), (1, 0)), labels=("A", "B")), P("b", 0, points=((0, 1), (1, 0)), labels=("A", "B"))
+    >>> square, twin = P(caption="a", seq=0, points=((0, 0), (1, 0)), labels=("A", "B")), P(caption="b", seq=0, points=((0, 1), (1, 0)), labels=("A", "B"))
     >>> boards_of([[square], [square], [twin], [twin], [square]])
     [0, 0, 1, 1, 2]
     """
