@@ -85,7 +85,9 @@ def scaled_spot(size: tuple[float, float], claim: Segment, edges: Iterable[Segme
                 ) -> tuple[np.ndarray, float]:
     """:func:`mark_spot`, the mark smaller (each of ``scales`` in turn) where its own size
     finds no place inside ``inside``: the centre and the scale. Beside the claim at full
-    size comes first, then inside at each scale, then outside at full size."""
+    size (within :data:`MARK_FARTHEST`) comes first, then by it inside at each scale, then
+    beside it at the least scale where it is crowded (:func:`_crowded_spot`), then anywhere
+    inside at each scale, then outside at full size."""
     a, b = np.asarray(claim[0], dtype=float)[:2], np.asarray(claim[1], dtype=float)[:2]
     edges, labels = list(edges), list(labels)
     obstacles = Obstacles(boxes=labels, segments=[(a, b), *edges])

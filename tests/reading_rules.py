@@ -3604,6 +3604,19 @@ def words_over_the_picture(data: dict) -> list[str]:
 LEAST_SWEEP_GAP = 0.15
 
 
+def _sweep_dashes(data: dict) -> Iterator[tuple[list, dict]]:
+    """(the points of a drawn dash of the monotone sweep line, the labels then shown) for
+    every place the line is recorded: as it comes, and each place a Transform moves it to."""
+    for anim, labels in _with_labels(data):
+        for key in ("mobject", "target"):
+            for line in mobject_nodes(anim.get(key) or {}):
+                if line.get("name") not in _TOOL_LINES:
+                    continue
+                for dash in mobject_nodes(line):
+                    if len(dash.get("points", ())) >= 2 and (dash.get("stroke_opacity") or 0):
+                        yield dash["points"], labels
+
+
 def labels_struck_by_the_sweep(data: dict) -> list[str]:
     """The vertex labels the monotone sweep line's dashes come nearer than
     :data:`LEAST_SWEEP_GAP` to, where the line is recorded (as it comes, and each place a
@@ -3613,19 +3626,12 @@ def labels_struck_by_the_sweep(data: dict) -> list[str]:
     from shapely.geometry import box as rectangle
 
     least: dict[str, float] = {}
-    for anim, labels in _with_labels(data):
-        for key in ("mobject", "target"):
-            for line in mobject_nodes(anim.get(key) or {}):
-                if line.get("name") not in _TOOL_LINES:
-                    continue
-                for dash in mobject_nodes(line):
-                    if len(dash.get("points", ())) < 2 or (dash.get("stroke_opacity") or 0) == 0:
-                        continue
-                    drawn = LineString([p[:2] for p in dash["points"]])
-                    for v, box in labels.items():
-                        gap = drawn.distance(rectangle(*box))
-                        if gap < LEAST_SWEEP_GAP - 1e-3:
-                            least[v] = min(gap, least.get(v, gap))
+    for points, labels in _sweep_dashes(data):
+        drawn = LineString([p[:2] for p in points])
+        for v, box in labels.items():
+            gap = drawn.distance(rectangle(*box))
+            if gap < LEAST_SWEEP_GAP - 1e-3:
+                least[v] = min(gap, least.get(v, gap))
     return [f"the sweep {gap:.2f} from {v}" for v, gap in sorted(least.items())]
 
 
@@ -5174,22 +5180,14 @@ def labels_beside_the_sweep(data: dict) -> list[str]:
     the label's band, its bottom to its top) nearer than :data:`LEAST_SWEEP_SIDE_GAP` beside
     them, as ``"the sweep 0.12 beside K"``; each label once, at its least gap."""
     least: dict[str, float] = {}
-    for anim, labels in _with_labels(data):
-        for key in ("mobject", "target"):
-            for line in mobject_nodes(anim.get(key) or {}):
-                if line.get("name") not in _TOOL_LINES:
-                    continue
-                for dash in mobject_nodes(line):
-                    if len(dash.get("points", ())) < 2 or (dash.get("stroke_opacity") or 0) == 0:
-                        continue
-                    xs = [p[0] for p in dash["points"]]
-                    ys = [p[1] for p in dash["points"]]
-                    for v, (x0, y0, x1, y1) in labels.items():
-                        if max(ys) < y0 or min(ys) > y1:
-                            continue  # not at the label's height
-                        gap = max(x0 - max(xs), min(xs) - x1, 0.0)
-                        if gap < LEAST_SWEEP_SIDE_GAP - 1e-3:
-                            least[v] = min(gap, least.get(v, gap))
+    for points, labels in _sweep_dashes(data):
+        xs, ys = [p[0] for p in points], [p[1] for p in points]
+        for v, (x0, y0, x1, y1) in labels.items():
+            if max(ys) < y0 or min(ys) > y1:
+                continue  # not at the label's height
+            gap = max(x0 - max(xs), min(xs) - x1, 0.0)
+            if gap < LEAST_SWEEP_SIDE_GAP - 1e-3:
+                least[v] = min(gap, least.get(v, gap))
     return [f"the sweep {gap:.2f} beside {v}" for v, gap in sorted(least.items())]
 
 
