@@ -88,16 +88,16 @@ class Heuristics(LectureScene):
         # (it stood unspoken of beside "Convex", chapter 2 at 2 s)
         reflex = ringed_reflex(self.lecture_polygon())
         frame = Card("The frame every heuristic shares", (
-            "B: the left-most vertex (lowest on ties) — always convex: P lies to its right.",
-            *([f"{reflex} is reflex: the angle inside P there is more than 180°."]
+            "B: the left-most vertex, always convex: P lies to its right.",
+            *([f"{reflex} is reflex: its angle inside P is over 180°."]
               if reflex else []),
             "A and C: its neighbours; T = triangle ABC.",
             # the figure's own names: its D is a reflex vertex outside T, its candidates G, H
             "No other vertex in T: AC is an inner diagonal.",
             # the dashed amber BG is a claim, and the card says what decides it ("say G: is
             # BG inner?" asked it and nothing answered, review of chapter 2)
-            "Otherwise claim BG for a candidate G: BG is inner only if G is picked well. "
-            "Each heuristic is a way to pick it."),
+            "Else claim BG: inner only if the candidate G is picked well. "
+            "Each heuristic picks G its own way."),
             Figure("frame"))
         families = [family_segments(f, INTRO_FIRST if k == 0 else INTRO_AGAIN)
                     for k, f in enumerate(FAMILIES)]
