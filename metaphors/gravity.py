@@ -295,6 +295,10 @@ class CloseUp:
         """After the zoom in: the faded markers stand where the close-up puts them."""
         self._move_hidden(1.0)
 
+    def made_here(self, key: str) -> bool:
+        """Whether the board's object ``key`` was drawn up close (it was not there before)."""
+        return key in self.board.objects and id(self.board.objects[key]) not in self.before
+
     def zoom_out(self) -> list[Playable]:
         board = self.board
         self._move_hidden(-1.0)
@@ -304,11 +308,6 @@ class CloseUp:
         for label, m in self.shown.items():
             anims.append(animate(m).shift(back.to_scene(board.where[label])
                                           - board.vertex(label)))
-        # the ✓ or ✗ seen up close beside its claim goes as the picture zooms back: kept at
-        # its size, it landed on the claim, the needle of P it stood in shrunk under it
-        # (chapter 3's ✓ on EC at 76-78 s); the claim's colour and the words still judge it
-        if id(board.objects.get("verdict")) not in self.before:
-            anims += board.drop("verdict")
         # what was drawn up close (the ball, the band, what it swept, the claim)
         # zooms back with the picture; not what stood before (faded, or the outline itself:
         # ear clipping's fruit, which the close-up's drawing stood in for, is not zoomed)

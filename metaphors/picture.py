@@ -153,7 +153,12 @@ def upright(board: Board, beat: Beat) -> None:
     close = board.close_up
     if close is not None:  # the ✓ seen up close, by the claim it judges, before all goes
         board.scene.wait(max(0.1, CLOSE_HOLD * beat.pace))
-    gone = board.drop(*TRANSIENT)
+    # the ✓ or ✗ seen up close beside its claim goes with them, before the zoom back: kept
+    # at its size, it landed on the claim, the needle of P it stood in shrunk under it
+    # (chapter 3's ✓ on EC at 76-78 s); gone with the zoom, it faded under the labels the
+    # zoom brings back (chapter 4's ✓ under M); the claim's colour and the words still judge it
+    up_close = ("verdict",) if close is not None and close.made_here("verdict") else ()
+    gone = board.drop(*TRANSIENT, *up_close)
     if gone:
         again(board, beat, *gone, run_time=0.5)
     if close is not None:
