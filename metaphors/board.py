@@ -78,7 +78,10 @@ def animate(mobject: Mobject, **anim_args: Any) -> _AnimationBuilder:
 
 
 class CloseUp(Protocol):
-    """A close-up on the board (:class:`metaphors.gravity.CloseUp`): what ends it."""
+    """A close-up on the board (:class:`metaphors.gravity.CloseUp`): what ends it, and
+    what was drawn up close (to go before it ends)."""
+
+    def made_here(self, key: str) -> bool: ...
 
     def zoom_out(self) -> list[Playable]: ...
 

@@ -57,7 +57,8 @@ def turn_sign(origin: Sequence[float], heading: float, point: Sequence[float]) -
 
 def clock(board: Board, beat: Clock) -> None:
     """The hand appears at its hub, set to the start vertex; it turns through the log's
-    angles, and each candidate lights as the hand passes it (the first, the pick, amber).
+    angles, and stops at the first candidate it passes, the pick, which lights amber: the
+    candidates after it decide nothing (:func:`story.states.hits`).
 
     A hand turning about its hub is the clock: no face is drawn, nor hour marks (a grey
     wedge of 15–33 px at the hub, with an amber tick on the hand at the pick, that nothing
@@ -66,7 +67,7 @@ def clock(board: Board, beat: Clock) -> None:
     states = beat.states
     first = states[0]
     origin, heading = first.origin, first.heading
-    reached = hits(states[1:])
+    reached = hits(states[1:], until=beat.result)
     if not reached:
         board.play(beat, run_time=1.0)
         return

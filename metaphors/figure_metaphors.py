@@ -2,8 +2,8 @@
 
 The card "Scaling: spilled water" (and the clock hand's, the sweeping line's) draws its
 metaphor as a :class:`metaphors.figures.Figure` of kind ``metaphor``: the polygon, T, and the
-tool stopped at the vertex it picks — the circle of water grown from B, the hand turned from
-A, the line swept from B — with what it swept, in the colours of the lecture's analysis
+tool on its way to the vertex it picks, short of every candidate — the circle of water grown
+from B, the hand turned from A, the line swept from B — with what it swept, in the colours of the lecture's analysis
 (:func:`metaphors.analysis.tool_drawing`: the one swept colour, the tool in its own). The
 card teaches the rule before its failure is shown: what the tool swept is shaded inside P
 only, for the legend's swept blue means inside P and its red outside P (a card's blue past
@@ -29,6 +29,8 @@ from metaphors.theme import Theme
 from story.analysis import Point, inside
 from story.registry import entry
 
+#: how far the card's tool goes towards its pick (1: there): short of every candidate
+CARD_REACH = 0.6
 #: what the card's figure says below it, by the heuristic's metaphor
 SAID = {"water": "the water from B wets {pick} first",
         "clock": "the hand at B passes {pick} first",
@@ -49,9 +51,9 @@ Bounds = tuple[float, float, float, float]
 
 def metaphor_parts(heuristic: str, polygon_spec: str, frame: Frame, theme: Theme,
                    within: Bounds | None = None) -> tuple[list[Mobject], list[Mobject], str]:
-    """``heuristic``'s tool stopped at its pick on ``polygon_spec`` (the run's own, read from
-    its beats): T and what the tool swept (drawn under the vertices), the pick marked (over
-    them), and the words to say below it; the tool's faint part beyond T kept ``within``
+    """``heuristic``'s tool on its way to its pick on ``polygon_spec`` (the run's own, read
+    from its beats, :data:`CARD_REACH` of the way): T and what the tool swept (drawn under
+    the vertices), the candidates marked (over them), and the words to say below it; the tool's faint part beyond T kept ``within``
     the figure's box."""
     metaphor = entry(heuristic).metaphor or ""
     if metaphor not in SAID:
@@ -74,16 +76,17 @@ def metaphor_parts(heuristic: str, polygon_spec: str, frame: Frame, theme: Theme
             _clip_beyond(tool, within)
         return tool
 
-    # the tool moves with the card's first line, which says how it moves; the pick turns
-    # amber with the line that names it (both stood there with the title, before any bullet
-    # said them: chapter 2 at 16 s); the candidates, pink, with the title, as T
-    tool = grows(comes_with(drawn_at(1.0), ""), drawn_at)
+    # the tool moves with the card's first line, which says how it moves (it stood there
+    # with the title, before any bullet said it: chapter 2 at 16 s), and stops short of the
+    # first candidate: where it goes is the pass's to show, which follows on this polygon
+    # (drawn on to its pick here too, the pass showed the same run twice); the candidates,
+    # pink, with the title, as T
+    tool = grows(comes_with(drawn_at(CARD_REACH), ""),
+                 lambda time: drawn_at(time * CARD_REACH))
     where = dict(zip(seen.labels, seen.points, strict=True))
     marks = [tag(Dot(frame.to_scene(where[c]), radius=0.11, color=theme.candidate),
                  "candidate", "figure:candidate") for c in seen.candidates]
-    pick = comes_with(tag(Dot(frame.to_scene(where[seen.pick]), radius=0.11,
-                              color=theme.argument), "argument", "figure:pick"), seen.pick)
-    return [t, tool], [*marks, pick], SAID[metaphor].format(pick=seen.pick)
+    return [t, tool], marks, SAID[metaphor].format(pick=seen.pick)
 
 
 def _swept_inside(tool: VGroup, sheet: Sheet, swept: shapely.Geometry,

@@ -310,12 +310,13 @@ def _3d(p) -> np.ndarray:
 
 
 def sweep(board: Board, beat: Sweep) -> None:
-    """The line starts through B and moves across T by the log's offsets; each candidate lights
-    when the line reaches it (the first green, the others amber)."""
+    """The line starts through B and moves across T by the log's offsets, and stops at the
+    first candidate it touches, the pick, which lights amber: the candidates after it decide
+    nothing (:func:`story.states.hits`)."""
     states = beat.states
     first = states[0]
     through, direction = first.through, first.direction
-    reached = hits(states[1:])
+    reached = hits(states[1:], until=beat.result)
     if not reached:
         board.play(beat, run_time=1.0)
         return

@@ -149,14 +149,14 @@ def _disk(board: Board, center: Point, radius: float) -> MPolygon:
 
 
 def water(board: Board, beat: Water) -> None:
-    """The disk grows through each radius in turn; the first vertex it wets is the pick."""
+    """The disk grows to the first candidate it wets, the pick, and stops there."""
     states = beat.states
     disk = _disk(board, states[0].center, 0.0)
     # the pick stays a candidate until the water reaches it (:func:`wets`)
     shown = beat.before_pick()
     board.play(shown, FadeIn(disk), run_time=0.5)
     radius = 0.0
-    for state, reached in hits(states[1:]):
+    for state, reached in hits(states[1:], until=beat.result):
         board.play(shown, _grow(board, disk, state.center, radius, state.radius), run_time=1.2)
         shown = wets(board, beat, shown, reached)
         radius = state.radius
@@ -200,7 +200,7 @@ def walled_water(board: Board, beat: WalledWater) -> None:
     board.play(shown, FadeIn(disk), run_time=0.3)
     visible = dict(beat.visible)
     radius = 0.0
-    for state, reached in hits(states[1:]):
+    for state, reached in hits(states[1:], until=beat.result):
 
         def wet(alpha: float, start: float = radius, end: float = state.radius):
             return region.intersection(
@@ -265,7 +265,7 @@ def flood(board: Board, beat: Flood) -> None:
     # ones (red means "fails", metaphors.theme's legend); the last one, the pick, amber as
     # the water reaches it (:func:`wets`): the claim to be
     shown = beat.before_pick()
-    for state, reached in hits(states[1:]):
+    for state, reached in hits(states[1:], until=beat.result):
 
         def wet(alpha: float, start: float = level, end: float = state.level):
             return inner.intersection(_strip(a, c, towards, start + (end - start) * alpha))

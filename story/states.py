@@ -83,15 +83,27 @@ Tool = Disk | Hand | Line | Tide
 T = TypeVar("T", bound=Tool)
 
 
-def hits(states: Iterable[T]) -> list[tuple[T, str]]:
+def hits(states: Iterable[T], until: str | None = None) -> list[tuple[T, str]]:
     """Each state that reached a candidate, with that candidate, in order (the start, which
-    reached none, is left out).
+    reached none, is left out); with ``until``, none after the one that reached it: a tool
+    stops at its pick, its decisive moment (the water went on to ring E after wetting D,
+    a candidate that decides nothing: chapter 2).
 
-    >>> hits([Hand(origin=(0.0, 0.0), heading=90.0, angle=0.0),
-    ...       Hand(origin=(0.0, 0.0), heading=90.0, angle=35.0, reached="D")])
-    [(Hand(origin=(0.0, 0.0), heading=90.0, angle=35.0, reached='D'), 'D')]
+    >>> start = Hand(origin=(0.0, 0.0), heading=90.0, angle=0.0)
+    >>> d = Hand(origin=(0.0, 0.0), heading=90.0, angle=35.0, reached="D")
+    >>> e = Hand(origin=(0.0, 0.0), heading=90.0, angle=50.0, reached="E")
+    >>> [label for _, label in hits([start, d, e])]
+    ['D', 'E']
+    >>> [label for _, label in hits([start, d, e], until="D")]
+    ['D']
     """
-    return [(s, s.reached) for s in states if s.reached is not None]
+    found: list[tuple[T, str]] = []
+    for state in states:
+        if state.reached is not None:
+            found.append((state, state.reached))
+            if state.reached == until:
+                break
+    return found
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -1783,31 +1783,30 @@ def shapes_under_text(data: dict) -> list[str]:
 
 #: the pieces of a moving tool's drawn line (:func:`metaphors.sweep.drawn_segment`)
 _TOOL_DRAWINGS = ("hand:", "sweep:")
+#: the unseen lines a tool's drawing follows, moved by a play (:func:`metaphors.clock.clock`)
+_TOOL_AXES = ("hand", "sweep")
 
 
-def red_after_the_pick(data: dict) -> list[str]:
-    """The tools (the clock hand, the sweep line) whose line is still red where it leaves P
-    when it goes, after it reached its pick, as ``"play 203: hand"``: what the tool passes
-    after its pick is no verdict, and red says "fails" (Correct Rotation's hand drew C–E red
-    across the notch of the mirror image as it turned on from its pick D). The line as
-    recorded when it goes: its pieces keep their first names, so a piece is read by colour."""
+def moved_after_the_pick(data: dict) -> list[str]:
+    """The tools (the clock hand, the sweep line) moved on after their pick lit, as
+    ``"play 14: hand"``: a tool stops at its pick, its decisive moment. Moved on, it rang a
+    candidate that decides nothing (the water wetted E after D, chapter 2), and red on its
+    line said "fails" where nothing was judged (Correct Rotation's hand drew C–E red across
+    the notch of the mirror image as it turned on from its pick D). The red of the part that
+    reached the pick from outside P, said by its legend, is the failure, and stays."""
     found = []
     lit = False
     for k, play in enumerate(data["plays"]):
         for anim in play["animations"]:
             node = anim.get("mobject") or {}
-            if (node.get("name") or "").startswith("lit:") and anim["type"] in INCOMING:
+            name = node.get("name") or ""
+            if name.startswith("lit:") and anim["type"] in INCOMING:
                 lit = True
-            parts = node.get("submobjects", ())
-            if not any((c.get("name") or "").startswith(_TOOL_DRAWINGS) for c in parts):
-                continue
-            if anim["type"] in INCOMING:
-                lit = False
-            elif anim["type"] in OUTGOING and lit and any(
-                    (n.get("stroke") or "").upper() == _REJECTED and n.get("points")
-                    and (n.get("stroke_opacity") or 0) > 0
-                    for c in parts for n in mobject_nodes(c)):
-                found.append(f"play {k}: {parts[0]['name'].split(':')[0]}")
+            elif any((c.get("name") or "").startswith(_TOOL_DRAWINGS)
+                     for c in node.get("submobjects", ())) and anim["type"] in INCOMING:
+                lit = False  # a new tool, not yet at its pick
+            elif lit and name in _TOOL_AXES and anim["type"] not in (*INCOMING, *OUTGOING):
+                found.append(f"play {k}: {name}")
     return found
 
 

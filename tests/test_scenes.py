@@ -95,7 +95,7 @@ from tests.reading_rules import (
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
-    red_after_the_pick,
+    moved_after_the_pick,
     redrawn_pictures,
     refaded_texts,
     refuted_lit_rows,
@@ -541,9 +541,9 @@ def test_no_note_is_under_a_moving_tool(case):
     ("outside P, inside T") is clear of the path the line or the hand still sweeps while the
     note is up, not only of where the tool stands when it is written."""
     assert notes_under_moving_tools(graph(case).data) == [], case.id
-    # nor is the tool red after its pick: red says "fails", and what it passes later is no
-    # verdict (Correct Rotation's hand drew C–E red on the mirror image)
-    assert red_after_the_pick(graph(case).data) == [], case.id
+    # nor does the tool move on after its pick: what it passes later decides nothing, and its
+    # red said "fails" there (Correct Rotation's hand drew C–E red on the mirror image)
+    assert moved_after_the_pick(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
