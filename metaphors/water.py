@@ -258,13 +258,14 @@ def flood(board: Board, beat: Flood) -> None:
     inner = shapely.Polygon(board.polygon.points).intersection(shapely.Polygon([a, c, towards]))
     band = _region_mobject(board, shapely.GeometryCollection(), "flood",
                            ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2))
-    board.play(beat, FadeIn(band), run_time=0.3)
-    level = 0.0
-    middle = ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2)
     # going under is no failure: a candidate still, as the clock's and the sweep's later
     # ones (red means "fails", metaphors.theme's legend); the last one, the pick, amber as
-    # the water reaches it (:func:`wets`): the claim to be
+    # the water reaches it (:func:`wets`): the claim to be, and not before (shown as the
+    # beat with the band coming in, E went amber, back to pink, then amber again)
     shown = beat.before_pick()
+    board.play(shown, FadeIn(band), run_time=0.3)
+    level = 0.0
+    middle = ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2)
     for state, reached in hits(states[1:], until=beat.result):
 
         def wet(alpha: float, start: float = level, end: float = state.level):

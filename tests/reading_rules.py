@@ -2921,6 +2921,35 @@ def shifting_vertex_colours(data: dict, legend: dict[str, str], kinds: tuple[str
     return list(dict.fromkeys(found))
 
 
+def picks_amber_twice(data: dict) -> list[str]:
+    """The vertices turned amber (the claim to be), back to a candidate's pink, then amber
+    again, as ``"play 52 E: amber, pink, amber"``: a pick goes amber once, as its tool
+    reaches it (Correct Scaling's E went amber as the water came in, back to pink as it
+    rose, then amber as it went under). A polygon coming in (its markers faded in), or a
+    run's T drawn, starts afresh: the next run's candidates are pink again."""
+    from metaphors.theme import THEME
+
+    amber, pink = THEME.argument.upper(), THEME.candidate.upper()
+    found: list[str] = []
+    seen: dict[str, list[str]] = {}  # vertex label -> the colours it was given, in order
+    for k, play in enumerate(data["plays"]):
+        if any(a.get("type") in INCOMING and (
+                (a.get("mobject") or {}).get("name", "").startswith("vertex:")
+                or (a.get("mobject") or {}).get("name") == "T") for a in play["animations"]):
+            seen.clear()
+        for anim in play["animations"]:
+            for label, colour, how in _given_colours(anim):
+                if how != "target" or colour not in (amber, pink):
+                    continue
+                given = seen.setdefault(label, [])
+                if given and given[-1] == colour:
+                    continue
+                given.append(colour)
+                if given[-3:] == [amber, pink, amber]:
+                    found.append(f"play {k} {label}: amber, pink, amber")
+    return found
+
+
 # --- a pseudocode's names read apart from the picture's labels ----------------------------------
 
 #: the pseudocode names of a polygon (not a vertex): a part a row names ("Q = P (good)", "Q =

@@ -97,6 +97,7 @@ from tests.reading_rules import (
     notes_over_fills,
     notes_under_moving_tools,
     panels_behind_the_picture,
+    picks_amber_twice,
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
@@ -704,6 +705,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert notes_over_fills(data) == [], chapter.slug
     # and no tool moved on after its pick (it rang candidates that decide nothing)
     assert moved_after_the_pick(data) == [], chapter.slug
+    # a pick goes amber once, as its tool reaches it (Correct Scaling's E flickered)
+    assert picks_amber_twice(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
     # and no part of a tool that nothing on screen explains (the clock's grey face)
     assert unexplained_tool_parts(data) == [], chapter.slug

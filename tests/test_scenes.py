@@ -93,6 +93,7 @@ from tests.reading_rules import (
     moved_after_the_pick,
     notes_under_moving_tools,
     panels_behind_the_picture,
+    picks_amber_twice,
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
@@ -544,6 +545,8 @@ def test_no_note_is_under_a_moving_tool(case):
     # nor does the tool move on after its pick: what it passes later decides nothing, and its
     # red said "fails" there (Correct Rotation's hand drew C–E red on the mirror image)
     assert moved_after_the_pick(graph(case).data) == [], case.id
+    # a pick goes amber once, as its tool reaches it (Correct Scaling's E flickered)
+    assert picks_amber_twice(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
