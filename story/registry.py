@@ -267,7 +267,9 @@ _GRAVITY = (
     PseudocodeRow("turn P: V's edges point up, no edge level", ("gravity_direction",)),
     PseudocodeRow("drop a ball on a band at V: it hits an edge", ("drop_ball",)),
     PseudocodeRow("it slides down the edge to a vertex X", ("slide_to_vertex",)),
-    PseudocodeRow("Y = the first vertex the band snags", ("band_snag",)),
+    # "(if any)": lit under "The rubber band stays straight", the row said a Y there was
+    # (chapter 3)
+    PseudocodeRow("Y = the first vertex the band snags (if any)", ("band_snag",)),
     PseudocodeRow("claim VY, or VX if the band stays straight", ("claim",)),
     PseudocodeRow("no reflex or straight vertex: claim AC", ("triangle_at", "claim")),
 )

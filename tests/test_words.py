@@ -194,7 +194,7 @@ def _gravity_log(sample: str) -> tracing.Log:
 @pytest.mark.parametrize("sample, tied", [
     ("gravity-snag", ["V = C, the first reflex vertex after B",
                       "it slides down the edge to a vertex X = G",
-                      "Y = H, the first vertex the band snags",
+                      "Y = H, the first vertex the band snags (if any)",
                       "claim VY = CH, or VX if the band stays straight"]),
     ("counterexample", ["V = E, the first reflex vertex after B",
                         "it slides down the edge to a vertex X = C",
