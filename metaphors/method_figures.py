@@ -42,7 +42,7 @@ from metaphors.drawing import (
 )
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_steps import comes_with
-from metaphors.fruit import TEST_OPACITY, TEST_STROKE, fruit_style, good_style
+from metaphors.fruit import CUT_WIDTH, TEST_OPACITY, TEST_STROKE, fruit_style, good_style
 from metaphors.labels import LABEL_HALO, drawn_edges, measured_markers, placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -254,8 +254,11 @@ def _rule(polygon: Polygon, heuristic: str, box: Box,
 
 
 def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
-    """P with its holes, each hole's right-most vertex marked and its bridge drawn green to
-    the vertex it sees (Eberly's, as the run computes it)."""
+    """P with its holes, each hole's right-most vertex marked and its bridge cut to the vertex
+    it sees (Eberly's, as the run computes it). P is drawn as the run that follows draws it,
+    the fruit, its labels on dark halos, and a bridge as its keyhole cut: a dark slit
+    (:data:`metaphors.fruit.CUT_WIDTH`), the background seen through the fruit (the card drew
+    it green on P's navy, the run dark on the fruit: two colours for one cut, chapter 4)."""
     polygon_read = read_any_polygon(polygon_spec)
     if not isinstance(polygon_read, PolygonWithHoles):
         frame = Frame(polygon_read.points, *box)
@@ -266,14 +269,17 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
     outer = Polygon.from_points(pts[:starts[1]])  # ring 0: labelled as in the polygon read
     holes = [Hole(points=pts[a:b], labels=labels[a:b]) for a, b in pairwise(starts[1:])]
     frame = Frame(outer.points, *box)
-    drawn: list[Mobject] = [tag(polygon_mobject(outer, frame, theme, holes), "idle",
-                                "figure:polygon")]
+    shape = polygon_mobject(outer, frame, theme, holes).set_style(**_style(fruit_style(theme)))
+    drawn: list[Mobject] = [tag(shape, "idle", "figure:polygon")]
     ring = bridge_holes(polygon_read)
-    drawn += [_line(frame, pts[p], pts[m], theme.result, theme.stroke * 1.6, "result",
-                    f"figure:bridge:{labels[p]}–{labels[m]}") for p, m in ring.bridges]
+    drawn += [_line(frame, pts[p], pts[m], theme.background, theme.stroke * CUT_WIDTH,
+                    "result", f"figure:bridge:{labels[p]}–{labels[m]}")
+              for p, m in ring.bridges]
     # every label clear of the bridges too: a cut through d₂ reads as ending there
     markers = measured_markers(outer, holes, frame, theme, lines=[
         (frame.to_scene(pts[p]), frame.to_scene(pts[m])) for p, m in ring.bridges])
+    for _, marker in markers:  # on the fruit's orange, a label reads on its dark halo
+        marker[1].set_stroke(theme.background, width=LABEL_HALO, background=True)
     drawn.append(tag(VGroup(*(m for _, m in markers[:outer.n])), "idle", "figure:vertices"))
     drawn += [tag(marker, "idle", f"figure:hole-vertex:{label}")
               for label, marker in markers[outer.n:]]
@@ -282,7 +288,7 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
     cuts = ", ".join(f"{labels[p]}{labels[m]}" for p, m in ring.bridges)
     size = len(ring.walk())
     words = f"bridges {cuts}: one ring of {size} vertices ({polygon_read.n} + 2 per hole)"
-    return [*drawn, figure_caption(box, theme, (words, theme.result))]
+    return [*drawn, figure_caption(box, theme, (words, theme.ink))]
 
 
 __all__ = ["KINDS", "TurnedFrame", "method_figure"]

@@ -246,6 +246,17 @@ def test_every_bridge_joins_a_holes_rightmost_vertex_to_a_vertex_it_sees():
         p, m = bridge.name.removeprefix("figure:bridge:").split("–")
         assert points[p][0] in rightmost and shape.ring_of(shape.labels.index(p)) > 0
         assert region.contains(LineString([points[p], points[m]]))  # P sees M, inside P
+    # drawn as the run draws it (metaphors.fruit.keyhole): the fruit, each cut a dark slit
+    # (the card's green on navy and the run's dark on orange were two colours for one cut)
+    from manim import ManimColor
+
+    from metaphors.fruit import CUT_WIDTH
+    from metaphors.theme import THEME
+
+    assert {b.get_stroke_color() for b in bridges} == {ManimColor(THEME.background)}
+    assert {b.get_stroke_width() for b in bridges} == {THEME.stroke * CUT_WIDTH}
+    (fruit,) = named(drawn, "figure:polygon")
+    assert fruit.get_fill_color() == ManimColor(THEME.fruit)
 
 
 def test_the_rule_is_drawn_with_its_claim_green_when_inner_red_when_not():
