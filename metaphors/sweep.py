@@ -215,7 +215,8 @@ def follower(board: Board, axis: Line, colour: str, name: str,
 def light(board: Board, label: str, first: bool, axis: Line,
           clip: shapely.Polygon | None = None, ahead: shapely.Geometry | None = None,
           ) -> tuple[list[Mobject], list[Animation]]:
-    """A ring round a candidate the tool has just reached: green for the first, amber after.
+    """A ring round a candidate the tool has just reached: amber for the first, the pick,
+    with an amber flash; a candidate's pink after.
 
     If the first one is reached by a part of the tool outside the polygon but inside T, that
     part is traced over in red, and the legend says what red is (the analyses' entry,
@@ -235,6 +236,8 @@ def light(board: Board, label: str, first: bool, axis: Line,
     anims: list[Animation] = [FadeIn(ring, scale=1.6)]
     if not first:  # the pick is not pulsed: the play turns it amber now, as the tool reaches it
         anims.append(Indicate(board.markers[label], color=colour))
+    else:  # it flashes amber, as the water's pick does (:func:`metaphors.water.wets`)
+        anims.append(Flash(at, color=theme.argument, flash_radius=0.3))
     piece = _astray_at(board, axis, clip, at) if first else None
     if piece is not None:
         p, q = _3d(piece[0]), _3d(piece[1])
@@ -244,7 +247,9 @@ def light(board: Board, label: str, first: bool, axis: Line,
         left, top = _legend_place(board, key, _tool(axis, clip), ahead)
         key.move_to((left + key.width / 2, top - key.height / 2, 0))
         kept += [trace, key]
-        anims += [Create(trace), FadeIn(key), Flash(at, color=theme.rejected, flash_radius=0.35)]
+        # no red burst: red is the verdict's, which comes with the claim (a red flash at the
+        # pick stood before any claim was made, Rotation in chapter 2)
+        anims += [Create(trace), FadeIn(key)]
     return kept, anims
 
 

@@ -2921,6 +2921,23 @@ def shifting_vertex_colours(data: dict, legend: dict[str, str], kinds: tuple[str
     return list(dict.fromkeys(found))
 
 
+def red_bursts_before_verdicts(data: dict) -> list[str]:
+    """The red flashes in a play that brings no ✗ in, as ``"play 51"``: red is the
+    verdict's ("fails"), and a red burst at the pick stood before any claim was made
+    (Rotation's D, chapter 2)."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        # a flash is recorded as its rays, each a passing line in its colour
+        red = any(a.get("type") == "Flash" and any(
+            str((ray.get("mobject") or {}).get("stroke", "")).upper() == _REJECTED
+            for ray in a.get("animations", ())) for a in play["animations"])
+        judged = any(a.get("type") in INCOMING and (a.get("mobject") or {}).get("name") == "cross"
+                     for a in play["animations"])
+        if red and not judged:
+            found.append(f"play {k}")
+    return found
+
+
 def picks_amber_twice(data: dict) -> list[str]:
     """The vertices turned amber (the claim to be), back to a candidate's pink, then amber
     again, as ``"play 52 E: amber, pink, amber"``: a pick goes amber once, as its tool

@@ -101,6 +101,7 @@ from tests.reading_rules import (
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
+    red_bursts_before_verdicts,
     redrawn_pictures,
     refaded_texts,
     refuted_lit_rows,
@@ -707,6 +708,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert moved_after_the_pick(data) == [], chapter.slug
     # a pick goes amber once, as its tool reaches it (Correct Scaling's E flickered)
     assert picks_amber_twice(data) == [], chapter.slug
+    # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
+    assert red_bursts_before_verdicts(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug
     # and no part of a tool that nothing on screen explains (the clock's grey face)
     assert unexplained_tool_parts(data) == [], chapter.slug

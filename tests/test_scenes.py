@@ -97,6 +97,7 @@ from tests.reading_rules import (
     picks_in_the_red,
     placeholders_as_labels,
     recoloured_close_ups,
+    red_bursts_before_verdicts,
     redrawn_pictures,
     refaded_texts,
     refuted_lit_rows,
@@ -547,6 +548,8 @@ def test_no_note_is_under_a_moving_tool(case):
     assert moved_after_the_pick(graph(case).data) == [], case.id
     # a pick goes amber once, as its tool reaches it (Correct Scaling's E flickered)
     assert picks_amber_twice(graph(case).data) == [], case.id
+    # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
+    assert red_bursts_before_verdicts(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
