@@ -43,7 +43,7 @@ from manim import (
 from metaphors import catalog
 from metaphors.board import Board
 from metaphors.captions import whole_frames
-from metaphors.drawing import crossed_edge
+from metaphors.drawing import crossed_edge_dashed
 from metaphors.gravity import RESTING, Drop, GravityTurn, Slide, Snag
 from metaphors.play import TITLE_WIDTH
 from metaphors.recorded import Recorded, mark_step
@@ -295,11 +295,13 @@ def fails(stage: Stage, wrong: Moment, analysis: Analysis) -> list:
                           "analysis:outside", "rejected").set_z_index(2)
     at = stage.vertex(wrong.pick)
     # the vertices on the red set apart from it by a dark halo (the pick amber, not pulsed
-    # red: in the red it vanished), the flash says where the red wets it
+    # red: in the red it vanished), its amber flash says where the red reaches it
     stage.say(wrong.words(analysis.fails),
               ([Create(outside_tool), FadeIn(outside_area),
                 *stage.key(theme.rejected, OUTSIDE, "astray"),
-                Flash(at, color=theme.rejected, flash_radius=0.45),
+                # the pick flashes amber as the tool reaches it: red is the verdict's, and a
+                # red burst here stood before the claim was drawn
+                Flash(at, color=theme.argument, flash_radius=0.45),
                 *stage.set_apart(m.astray(stage.polygon.points), stray)], 1.6),
               ([], analysis.freeze))
     return [drawing, outside_tool, outside_area, *crossing(stage, wrong, analysis.freeze)]
@@ -317,16 +319,19 @@ def crossing(stage: Stage, wrong: Moment, hold: float = 0.0) -> list:
     flashes = []
     if verdict.edge:
         a, b = (stage.vertex(k) for k in verdict.edge)
-        edge = crossed_edge(a, b, f"analysis:edge:{'–'.join(verdict.edge)}",
-                            theme).set_z_index(3)
+        # dashed on its casing, under the solid claim: both solid red, BD and E–A read as one
+        # red cross (chapter 2), as the recap's and the overview's did
+        key = f"analysis:edge:{'–'.join(verdict.edge)}"
+        edge = crossed_edge_dashed(a, b, key, theme).set_z_index(3)
+        dashes = tag(edge[1], "rejected", key)  # what flashes: the red, not its casing
         name = tag(typeset.text(f"edge {'–'.join(verdict.edge)}", font=theme.font,
                                 size=theme.label_size + 2, colour=theme.rejected),
                    "rejected", "analysis:edge-name").set_z_index(4)
         place_name(stage, name, a, b, [claim])
         shown += [edge, name]
         anims += [Create(edge), FadeIn(name)]
-        flashes = [([Indicate(edge, color=theme.ink, scale_factor=1.0)], 0.5),
-                   ([Indicate(edge, color=theme.ink, scale_factor=1.0)], 0.5)]
+        flashes = [([Indicate(dashes, color=theme.ink, scale_factor=1.0)], 0.5),
+                   ([Indicate(dashes, color=theme.ink, scale_factor=1.0)], 0.5)]
     if verdict.point:
         at = stage.at(verdict.point)
         spot = tag(Dot(at, radius=0.09, color=theme.rejected), "rejected", "analysis:crossing")
