@@ -2934,8 +2934,8 @@ def red_bursts_before_verdicts(data: dict) -> list[str]:
             for ray in a.get("animations", ())) for a in play["animations"])
         judged = any(a.get("type") in INCOMING and (
             (a.get("mobject") or {}).get("name") == "cross"
-            or (a.get("mobject") or {}).get("name") == "subtitle"
-            and str((a.get("mobject") or {}).get("text", "")).startswith("✗"))
+            or ((a.get("mobject") or {}).get("name") == "subtitle"
+            and str((a.get("mobject") or {}).get("text", "")).startswith("✗")))
             for a in play["animations"])
         if red and not judged:
             found.append(f"play {k}")
