@@ -2921,9 +2921,17 @@ def shifting_vertex_colours(data: dict, legend: dict[str, str], kinds: tuple[str
     return list(dict.fromkeys(found))
 
 
+def _judging(node: dict) -> bool:
+    """Whether a node coming in judges a claim: a ✗, words that start with one, or the edge
+    it crosses (a run's ``edge:…``, an analysis's)."""
+    name = node.get("name") or ""
+    return (name == "cross" or name.startswith(("edge:", "analysis:edge:"))
+            or (name == "subtitle" and str(node.get("text", "")).startswith("✗")))
+
+
 def red_bursts_before_verdicts(data: dict) -> list[str]:
-    """The red flashes in a play that brings no ✗ in (a mark, or the words that judge), as
-    ``"play 51"``: red is the
+    """The red flashes in a play that judges nothing (:func:`_judging`), as ``"play 51"``:
+    red is the
     verdict's ("fails"), and a red burst at the pick stood before any claim was made
     (Rotation's D, chapter 2)."""
     found = []
@@ -2932,11 +2940,8 @@ def red_bursts_before_verdicts(data: dict) -> list[str]:
         red = any(a.get("type") == "Flash" and any(
             str((ray.get("mobject") or {}).get("stroke", "")).upper() == _REJECTED
             for ray in a.get("animations", ())) for a in play["animations"])
-        judged = any(a.get("type") in INCOMING and (
-            (a.get("mobject") or {}).get("name") == "cross"
-            or ((a.get("mobject") or {}).get("name") == "subtitle"
-            and str((a.get("mobject") or {}).get("text", "")).startswith("✗")))
-            for a in play["animations"])
+        judged = any(a.get("type") in INCOMING and _judging(a.get("mobject") or {})
+                     for a in play["animations"])
         if red and not judged:
             found.append(f"play {k}")
     return found
