@@ -3,11 +3,13 @@
 from fractions import Fraction
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 import tracing
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import HEURISTICS, find_diagonal
+from geometry.errors import PolygonError
 from geometry.polygon import Polygon
 from geometry.predicates import in_triangle, orient, orient_det
 from geometry.samples import make_sample
@@ -178,3 +180,34 @@ def test_the_convex_fallback_names_the_pieces_own_vertices():
     assert b != "B" and note.args["reason"].endswith(
         f"so claim {claim.u.label}{claim.v.label}, cutting off the left-most {b}"), \
         note.args["reason"]
+
+
+# --- two of the thesis's teaching points, said in chapter 2, checked ----------------------------
+
+_QUADRILATERALS = st.lists(st.tuples(st.integers(-40, 40), st.integers(-40, 40)),
+                           min_size=4, max_size=4, unique=True)
+
+
+@settings(max_examples=300)
+@given(_QUADRILATERALS)
+def test_no_quadrilateral_defeats_any_heuristic(raw):
+    """Chapter 2 says the counterexample's five vertices are the fewest: with four, T holds
+    one candidate at most, and B's diagonal to it is inner. So every rule, the wrong ones
+    too, claims an inner diagonal of every quadrilateral (collinear ones included)."""
+    try:
+        p = Polygon.from_points(raw)
+    except PolygonError:
+        assume(False)
+    assume(p.n == 4)
+    for name in heuristics():
+        claim = find_diagonal(p, name)
+        assert is_inner_diagonal(p, *claim.pair), (name, claim.name)
+
+
+@settings(max_examples=200)
+@given(generated_polygons())
+def test_correct_scaling_and_correct_translation_pick_the_same_vertex(p):
+    """Chapter 2 says so: the water rising from AC goes over the candidates nearest AC first,
+    and the line parallel to AC, from B, touches the farthest from AC first: the last dry
+    candidate is the first touched."""
+    assert find_diagonal(p, "scaling-correct").pair == find_diagonal(p, "translation-correct").pair

@@ -1106,8 +1106,9 @@ def test_the_heuristics_chapter_shows_each_wrong_heuristic_once():
     assert len(crosses) == 3  # one per wrong heuristic, in its pass
     said = [c for c in cues if "defeats all three" in c]
     counterexample = read_polygon("counterexample")
-    assert said == ["This polygon of 5 vertices defeats all three heuristics. "
-                    "Candidates: D, E."] and counterexample.n == 5
+    assert said == ["This polygon of 5 vertices defeats all three heuristics; no smaller one "
+                    "can: with four, T holds one candidate at most. Candidates: D, E."] and (
+                        counterexample.n == 5)
     for wrong in ("scaling", "rotation", "translation"):  # and it is so
         assert not is_inner_diagonal(counterexample, *find_diagonal(counterexample, wrong).pair)
     # the chapter's length: the pass breathes instead of repeating (issue 22: 12-18 minutes)

@@ -17,9 +17,11 @@ from story.runs import working_example
 #: the polygon that defeats all three wrong heuristics
 COUNTEREXAMPLE = "counterexample"
 #: the pass opens on the frame: the first time with what this polygon is (said once, not per
-#: heuristic), then as that polygon again — not "the same polygon", said just after a run on
+#: heuristic) and why five is the fewest (tests/test_diagonals.py checks that no quadrilateral
+#: defeats any rule), then as that polygon again — not "the same polygon", said just after a run on
 #: another one (the working example), which it is not the same as
-INTRO_FIRST = "This polygon of {n} vertices defeats all three heuristics. Candidates: {candidates}."
+INTRO_FIRST = ("This polygon of {n} vertices defeats all three heuristics; no smaller one can: "
+               "with four, T holds one candidate at most. Candidates: {candidates}.")
 INTRO_AGAIN = "Back to the polygon of {n} vertices that defeats them. Candidates in T: {candidates}."
 #: seconds each tool takes to its pick, and the picture holds at the decisive moments: the
 #: pass is shown once, so it is shown slowly
@@ -43,7 +45,9 @@ FAMILIES = (
      ("Sweep a vertical line from B to the right.",
       "The first candidate it touches is picked: the left-most."),
      "Red: the line outside P but inside T. That part touches {pick} first.",
-     "Parallel to AC, the line meets {pick} before any part of it in T leaves P."),
+     # Correct Scaling's pick too (tests/test_diagonals.py): the same rule, two pictures
+     "Parallel to AC, the line meets {pick} before any part of it in T leaves P. "
+     "{pick} is the farthest from AC: Correct Scaling's pick too."),
 )
 
 
