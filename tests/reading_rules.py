@@ -2821,10 +2821,21 @@ def far_verdicts(data: dict) -> list[str]:
     (the last claim drawn before it), as ``"play 115 tick 1.80 from its claim"``: so far
     off, it seems to judge what it stands by (prune and search's ✓ for GB stood outside P
     beside edge AB, then 0.73 off over the fruit)."""
+    found = []
+    for k, kind, name, mark, claim in _marks_by_claims(data):
+        if kind in INCOMING and (far := claim.distance(mark)) > FARTHEST_MARK:
+            found.append(f"play {k} {name} {far:.2f} from its claim")
+    return found
+
+
+def _marks_by_claims(data: dict) -> Iterator[tuple[int, str, str, Any, Any]]:
+    """Each run's ✓ or ✗ a play records, with the claim it judges (the last claim recorded,
+    in that play or before): (play, how it is recorded, its name, its box and the claim as
+    shapely geometry)."""
     from shapely.geometry import LineString
     from shapely.geometry import box as area
 
-    found, claim = [], None
+    claim = None
     for k, play in enumerate(data["plays"]):
         records = [(kind, node) for a in play["animations"] for kind, node in _recorded(a)]
         for _, node in records:
@@ -2832,11 +2843,8 @@ def far_verdicts(data: dict) -> list[str]:
                 claim = LineString([node["points"][0][:2], node["points"][-1][:2]])
         for kind, node in records:
             box = _box_of(node) if node.get("name") in _RUN_MARKS else None
-            if kind in INCOMING and box is not None and claim is not None:
-                far = claim.distance(area(*box))
-                if far > FARTHEST_MARK:
-                    found.append(f"play {k} {node['name']} {far:.2f} from its claim")
-    return found
+            if box is not None and claim is not None:
+                yield k, kind, node["name"], area(*box), claim
 
 
 def verdicts_on_claims(data: dict) -> list[str]:
@@ -2845,20 +2853,8 @@ def verdicts_on_claims(data: dict) -> list[str]:
     a later play finds it (a turn records where it starts). Chapter 3's ✓ for EC, beside EC
     up close, zoomed back out with the picture onto EC itself (76-78 s): the needle of P it
     stood in shrank under it."""
-    from shapely.geometry import LineString
-    from shapely.geometry import box as area
-
-    found, claim = [], None
-    for k, play in enumerate(data["plays"]):
-        records = [(kind, node) for a in play["animations"] for kind, node in _recorded(a)]
-        for _, node in records:
-            if node.get("name") == _CLAIM and len(node.get("points") or []) >= 2:
-                claim = LineString([node["points"][0][:2], node["points"][-1][:2]])
-        for kind, node in records:
-            box = _box_of(node) if node.get("name") in _RUN_MARKS else None
-            if kind not in OUTGOING and box is not None and claim is not None \
-                    and claim.intersects(area(*box)):
-                found.append(f"play {k} {node['name']} over its claim")
+    found = [f"play {k} {name} over its claim" for k, kind, name, mark, claim
+             in _marks_by_claims(data) if kind not in OUTGOING and claim.intersects(mark)]
     return list(dict.fromkeys(found))
 
 
