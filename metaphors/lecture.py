@@ -248,8 +248,8 @@ class LectureScene(TraceScene):
         """Play one segment by its kind."""
         if not isinstance(segment, (Card, Run)):
             # it draws a polygon of its own: the next run's frame is no longer the one just
-            # seen, not "as before" (chapter 2 said so of the working example after the
-            # counterexample's analysis)
+            # seen, not "as before" (chapter 2 once said so of a run on another polygon after
+            # the counterexample's analysis)
             self.frames_seen.clear()
         match segment:
             case Card():

@@ -13,12 +13,9 @@ import inspect
 from typing import Any, cast
 
 import tracing
-from geometry.check import is_inner_diagonal
-from geometry.diagonals import find_diagonal
 from geometry.holes import PolygonWithHoles
 from geometry.io import AnyPolygon, read_any_polygon
 from geometry.polygon import Polygon
-from geometry.samples import make_sample
 from geometry.triangulate import refuse_holes, triangulate
 from story.pseudocode import from_docstring, to_json
 from story.registry import REGISTRY, hole_pseudocode, shown
@@ -115,22 +112,3 @@ def record_user_run(heuristic: UserHeuristic, p: Polygon, polygon: str) -> traci
     with tracing.record(**meta) as log:
         heuristic.run(p)
     return log
-
-
-def working_example(heuristic: str, n: int = 9, tries: int = 500) -> str:
-    """A seeded random polygon where a wrong heuristic happens to claim an inner diagonal,
-    with at least two candidates in T so the choice matters (deterministic search).
-
-    >>> working_example("scaling")
-    'random-2opt:9:3'
-    """
-    for seed in range(tries):
-        spec = f"random-2opt:{n}:{seed}"
-        polygon = Polygon.from_points(make_sample("random-2opt", n, seed))
-        log = run_logged(heuristic, spec)
-        candidates: Any = next((e.result for e in log.events
-                           if e.kind == "return" and e.name == "candidates_in_triangle"), [])
-        if len(candidates or []) >= 2 and is_inner_diagonal(
-                polygon, *find_diagonal(polygon, heuristic).pair):
-            return spec
-    raise LookupError(f"no polygon among {tries} seeds where {heuristic} works")

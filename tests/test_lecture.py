@@ -1000,7 +1000,9 @@ def test_a_card_with_a_figure_is_not_text_alone():
 
 
 # (chapter 6 played its hunted rule as a run too: it asks it as an exercise now, no tool)
-@pytest.mark.parametrize("slug, label", [("heuristics", "B"), ("gravity", "C")])
+# (chapter 2 ran each wrong heuristic on another polygon first, where T round B turned B grey;
+# its one pass on the counterexample draws T without recolouring B)
+@pytest.mark.parametrize("slug, label", [("gravity", "C")])
 def test_the_vertex_a_tool_or_claim_is_drawn_from_keeps_its_colour(slug, label):
     """Grey: the vertex a call runs on keeps its blue while what is drawn from it stays (T
     round B, gravity's band hanging from C), until its claim is judged: B went grey as T was
@@ -1111,8 +1113,10 @@ def test_the_heuristics_chapter_shows_each_wrong_heuristic_once():
                         counterexample.n == 5)
     for wrong in ("scaling", "rotation", "translation"):  # and it is so
         assert not is_inner_diagonal(counterexample, *find_diagonal(counterexample, wrong).pair)
-    # the chapter's length: the pass breathes instead of repeating (issue 22: 12-18 minutes)
-    assert sum(float(p["run_time"]) for p in data["plays"]) >= 200
+    # the chapter's length: the pass breathes instead of repeating (issue 22: 12-18 minutes);
+    # and no run on another polygon between card and pass: a second picture of the same
+    # motion (183 s; 232 s with one per heuristic)
+    assert 170 <= sum(float(p["run_time"]) for p in data["plays"]) <= 200
 
 
 def test_a_run_played_again_is_a_replay_and_one_step_per_piece_is_not():

@@ -1,28 +1,27 @@
 """Lecture chapter 2: Inner diagonals: water, clock, sweep.
 
-Each wrong heuristic is shown once (issue 22 item 4): its card with its metaphor drawn, a run
-on a polygon where it happens to work, then one continuous pass on the counterexample — the
-metaphor runs and freezes at the decisive moment, the part outside P turns red, the crossed
-edge flashes and is named, and its correction runs on the same polygon, inside P
-(:mod:`metaphors.analysis`). Nothing is replayed.
+Each wrong heuristic is shown once (issue 22 item 4): its card with its metaphor drawn, then
+one continuous pass on the counterexample — the metaphor runs and freezes at the decisive
+moment, the part outside P turns red, the crossed edge flashes and is named, and its
+correction runs on the same polygon, inside P (:mod:`metaphors.analysis`). No run on another
+polygon comes between: the card already shows the motion, so a second run of it would tell the
+same idea twice. Nothing is replayed.
 
 Run: ``manim -pql scenes/chapters/ch2_heuristics.py``; the whole lecture: ``trex lecture``.
 """
 
 from metaphors.figures import Figure, ringed_reflex
-from metaphors.lecture import Analysis, Card, LectureScene, Run
-from story.registry import SPOKEN, entry, spoken
-from story.runs import working_example
+from metaphors.lecture import Analysis, Card, LectureScene
+from story.registry import SPOKEN, entry
 
 #: the polygon that defeats all three wrong heuristics
 COUNTEREXAMPLE = "counterexample"
 #: the pass opens on the frame: the first time with what this polygon is (said once, not per
 #: heuristic) and why five is the fewest (tests/test_diagonals.py checks that no quadrilateral
-#: defeats any rule), then as that polygon again — not "the same polygon", said just after a run on
-#: another one (the working example), which it is not the same as
+#: defeats any rule), then as the same polygon: every card and pass of the chapter draws it
 INTRO_FIRST = ("This polygon of {n} vertices defeats all three heuristics; no smaller one can: "
                "with four, T holds one candidate at most. Candidates: {candidates}.")
-INTRO_AGAIN = "Back to the polygon of {n} vertices that defeats them. Candidates in T: {candidates}."
+INTRO_AGAIN = "The same polygon of {n} vertices. Candidates in T: {candidates}."
 #: seconds each tool takes to its pick, and the picture holds at the decisive moments: the
 #: pass is shown once, so it is shown slowly
 SLOW, FREEZE = 8.5, 3.5
@@ -52,8 +51,8 @@ FAMILIES = (
 
 
 def family_segments(family: tuple, intro: str = INTRO_AGAIN) -> tuple:
-    """A wrong heuristic's segments: its card (its metaphor drawn at B), a run where it
-    happens to work, and the one pass on the counterexample that ends on its correction."""
+    """A wrong heuristic's segments: its card (its metaphor drawn at B) and the one pass on
+    the counterexample that ends on its correction."""
     wrong, metaphor, fails, holds = family
     known = entry(wrong)
     if known.correct or known.correction is None:
@@ -62,8 +61,6 @@ def family_segments(family: tuple, intro: str = INTRO_AGAIN) -> tuple:
     return (
         Card(f"{said.name}: {said.picture}", metaphor,
              Figure("metaphor", COUNTEREXAMPLE, heuristic=wrong)),
-        Run(wrong, working_example(wrong), f"{spoken(wrong)} on a polygon where it happens to "
-            "work"),
         Analysis(wrong, COUNTEREXAMPLE, fails=fails, holds=holds, intro=intro, slow=SLOW,
                  freeze=FREEZE),
     )
