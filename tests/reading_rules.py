@@ -943,7 +943,7 @@ def _lit_rows(anim: dict) -> Iterator[str]:
 def stale_lit_rows(data: dict) -> list[str]:
     """The plays that draw a run's whole triangulation while the pseudocode's lit row is
     not the one saying the result ("their union is the triangulation of P"), as
-    ``"play 40: 'divide P along d into P1 and P2'"``: the last step's row no longer says what
+    ``"play 40: 'divide P along it into P1 and P2'"``: the last step's row no longer says what
     the picture shows. A run without pseudocode rows lit (no panel, or its source) is not
     judged."""
     results = _result_rows()
@@ -2975,7 +2975,7 @@ def picks_amber_twice(data: dict) -> list[str]:
 # --- a pseudocode's names read apart from the picture's labels ----------------------------------
 
 #: the pseudocode names of a polygon (not a vertex): a part a row names ("Q = P (good)", "Q =
-#: the good part beyond V–W", "T = triangle ABC", "divide P along d into P1 and P2")
+#: the good part beyond V–W", "T = triangle ABC", "divide P along it into P1 and P2")
 _POLYGON_NAME = re.compile(
     r"(?<![\w′])([A-Z][0-9]*) = (?:P\b|the good part|triangle)|\binto ([A-Z][0-9]*) and ([A-Z][0-9]*)")
 
@@ -3018,6 +3018,40 @@ def placeholders_as_labels(data: dict) -> list[str]:
             found.append(f"play {k}: {name}")
             said.add(name)
     return found
+#: a one-letter name in lower case (``d``), not the article "a": read beside a vertex
+#: labelled with its capital (``D``), the two are one letter in two sizes
+_LOWER_NAME = re.compile(r"(?<![\w′'’])([b-z])(?![\w′'’])")
+
+
+def case_twin_names(data: dict) -> list[str]:
+    """The one-letter names in lower case a run's pseudocode rows say while a vertex on its
+    picture is labelled with the same letter in capitals, as ``"play 12: d (D)"``: divide and
+    conquer's "find an inner diagonal d of P", "divide P along d", lit beside the vertex D
+    (the diagonal split along at 26 s was DG itself) — one letter, two things, told apart by
+    its size only. Each name once per run (its polygon drawn begins one), at the first play
+    showing both."""
+    found: list[str] = []
+    labels: set[str] = set()
+    rows: set[str] = set()
+    said: set[str] = set()
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            if anim.get("type") == "Create" and (anim.get("mobject") or {}).get("name") in _POLYGONS:
+                labels, rows, said = set(), set(), set()
+            for _, node in _recorded(anim):
+                for part in mobject_nodes(node):
+                    name = part.get("name") or ""
+                    if name.startswith("vertex:"):
+                        labels.add(name.removeprefix("vertex:"))
+                    elif name.startswith("code:") and (part.get("text") or "").strip():
+                        rows.add(part["text"].strip())
+        names = {m for row in rows for m in _LOWER_NAME.findall(row)}
+        for name in sorted(n for n in names if n.upper() in labels and n not in said):
+            found.append(f"play {k}: {name} ({name.upper()})")
+            said.add(name)
+    return found
+
+
 # --- a fill never tints a vertex label: labels and dots are drawn over fills -----------------
 
 

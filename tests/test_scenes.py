@@ -53,6 +53,7 @@ from tests.reading_rules import (
     broken_summaries,
     calls_over_code,
     captions_said_again,
+    case_twin_names,
     claims_along_edges,
     claims_missing_from_panel,
     close_ups_left_early,
@@ -742,6 +743,14 @@ def test_no_pseudocode_name_of_a_polygon_is_a_vertex_label(case):
     """Review r34: the panel's pseudocode names no polygon with a label on the picture (prune
     and search's good part was "G", and G the vertex tested first)."""
     assert placeholders_as_labels(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_pseudocode_name_is_a_vertex_label_in_lower_case(case):
+    """Issue 22 review: the panel's pseudocode says no one-letter name whose capital labels a
+    vertex on the picture (divide and conquer's diagonal "d" beside the vertex D, while the
+    diagonal split along was DG: one letter, two things)."""
+    assert case_twin_names(graph(case).data) == [], case.id
 
 
 def test_no_label_is_under_the_balls_fall_on_the_counterexample():
