@@ -100,7 +100,7 @@ def gravity_turn(board: Board, beat: GravityTurn) -> None:
     active = board.objects.get(f"piece:{beat.polygon}")
     if active is not None:  # divide and conquer: the piece being worked on lights up
         anims.append(tag(active, "called").animate.set_fill(opacity=theme.active_opacity)
-                     .set_stroke(theme.called, width=theme.stroke * 2.5, opacity=1.0))
+                     .set_stroke(theme.called, width=theme.active_stroke, opacity=1.0))
     board.play(beat, *anims, run_time=0.8)
     board.keep("gravity", arrow)
     turn = turn_to(board, beat.turn_picture)

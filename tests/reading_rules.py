@@ -3210,6 +3210,70 @@ def shifting_tints(data: dict) -> list[str]:
     return found
 
 
+# --- the part worked on stands out: one colour, one meaning ----------------------------------
+
+#: how far apart (CIE76 ΔE, as the screen shows them) another part's tint must stand from the
+#: part worked on: the palette's blue and violet were 21 and 18 from it, its teal is 37
+LEAST_PART_APART = 25.0
+
+
+def _lab(colour: str) -> tuple[float, float, float]:
+    """CIE L*a*b* (D65) of a ``#rrggbb`` colour."""
+    def linear(u: float) -> float:
+        return ((u + 0.055) / 1.055) ** 2.4 if u > 0.04045 else u / 12.92
+
+    r, g, b = (linear(int(colour.lstrip("#")[k:k + 2], 16) / 255) for k in (0, 2, 4))
+    x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047
+    y = 0.2126 * r + 0.7152 * g + 0.0722 * b
+    z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883
+
+    def f(t: float) -> float:
+        return t ** (1 / 3) if t > 0.008856 else 7.787 * t + 16 / 116
+
+    return 116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))
+
+
+def delta_e(a: str, b: str) -> float:
+    """CIE76 ΔE of two ``#rrggbb`` colours: about 2 is just seen, over 25 two colours.
+
+    >>> round(delta_e("#000000", "#ffffff"))
+    100
+    """
+    return math.dist(_lab(a), _lab(b))
+
+
+def unmarked_parts(data: dict) -> list[str]:
+    """The plays where divide and conquer's part worked on (a ``piece:`` tinted in the
+    ``called`` blue, the legend's "the piece divide and conquer works on") does not stand out,
+    as ``"play 54 piece:GHIJKLMABCD: lit, not outlined"`` or ``"play 123 piece:HIJK reads as
+    piece:KLMAH, the part worked on"``: lit, it is outlined in that blue too, and no other
+    part's tint reads as its colour (:data:`LEAST_PART_APART`, each over the background: a
+    split clears P's fill). The palette tinted a part in a blue (#5b8fd5) beside the lit one
+    (HIJK beside KLMAH at 66 s of the scene's graph), and only gravity's turn outlined the
+    lit part: a convex part (HKLM) was never outlined. Each part and fault once."""
+    from metaphors.theme import THEME
+
+    called = THEME.called.upper()
+    found: dict[tuple[str, str], str] = {}
+    for k, shown in _shown_after_plays(data, ("piece:",)):
+        lit = {name: node for name, node in shown.items()
+               if _one_colour(node.get("fill")) == called and (node.get("fill_opacity") or 0) > 0}
+        for name, node in lit.items():
+            if _one_colour(node.get("stroke")) != called or not node.get("stroke_width"):
+                found.setdefault((name, "outline"), f"play {k} {name}: lit, not outlined")
+        for name, node in lit.items():
+            seen = _over(called, float(node["fill_opacity"]), THEME.background)
+            for other, part in shown.items():
+                fill = _one_colour(part.get("fill"))
+                if other in lit or not fill or not (part.get("fill_opacity") or 0) > 0:
+                    continue
+                tint = _over(fill, float(part["fill_opacity"]), THEME.background)
+                if delta_e(seen, tint) < LEAST_PART_APART:
+                    found.setdefault((other, "alike"),
+                                     f"play {k} {other} reads as {name}, the part worked on")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
 #: gravity's close-up: one drawing standing in for the picture's outline while zoomed
 #: (:class:`metaphors.gravity.CloseUp`)
 _CLOSE_UP = "close-up"

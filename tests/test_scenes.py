@@ -125,6 +125,7 @@ from tests.reading_rules import (
     unexplained_primes,
     unexplained_tool_parts,
     unlit_givens,
+    unmarked_parts,
     unnamed_marks,
     unreadable_cards,
     unreadable_cues,
@@ -743,6 +744,14 @@ def test_no_pseudocode_name_of_a_polygon_is_a_vertex_label(case):
     """Review r34: the panel's pseudocode names no polygon with a label on the picture (prune
     and search's good part was "G", and G the vertex tested first)."""
     assert placeholders_as_labels(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_part_worked_on_stands_out(case):
+    """Issue 22 review: divide and conquer's part worked on is filled and outlined in the
+    blue whose meaning that is, and no other part is tinted in a colour that reads as it
+    (the palette's blue part HIJK stood beside the lit KLMAH)."""
+    assert unmarked_parts(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
