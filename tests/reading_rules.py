@@ -2972,6 +2972,48 @@ def picks_amber_twice(data: dict) -> list[str]:
     return found
 
 
+# --- each claim told under a caption of its own -------------------------------------------------
+
+
+def untold_claims(data: dict) -> list[str]:
+    """The claims that come in under a caption not naming them, as ``"play 71: GB under
+    'Diagonals 3–7: the same steps, faster'"``, and the captions standing over more than one
+    claim, as ``"'Diagonals 3–7: the same steps, faster' over 5 claims (plays 71–165)"``: the
+    caption says what the picture does. Divide and conquer's fast part stood one summary over
+    five runs (51–81 s), each a part lit, gravity's ball, a claim, its ✓ and a split. A
+    claim's name: the two vertices its play turns amber (its ends), either way round; a
+    claim no caption stands over is not judged."""
+    from metaphors.theme import THEME
+
+    amber = THEME.argument.upper()
+    found: list[str] = []
+    caption, shown = "", 0  # the subtitle on screen, and how many have come in
+    over: dict[int, list[int]] = {}  # subtitle shown → the plays of the claims under it
+    said: dict[int, str] = {}
+    for k, play in enumerate(data["plays"]):
+        claims, ends = 0, set()
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                name = node.get("name") or ""
+                if name == "subtitle" and kind in INCOMING:
+                    caption, shown = _text_of(node) or caption, shown + 1
+                elif name == "claim" and kind in INCOMING:
+                    claims += 1
+            ends |= {label for label, colour, _ in _given_colours(anim) if colour == amber}
+        if not claims or not caption:
+            continue
+        over.setdefault(shown, []).extend([k] * claims)
+        said[shown] = caption
+        if len(ends) == 2:
+            u, v = sorted(ends)
+            if not re.search(rf"\b(?:{u}{v}|{v}{u})\b", caption):
+                found.append(f"play {k}: {u}{v} under {caption!r}")
+    for shown, plays in over.items():
+        if len(plays) > 1:
+            found.append(f"{said[shown]!r} over {len(plays)} claims (plays {plays[0]}–{plays[-1]})")
+    return found
+
+
 # --- a pseudocode's names read apart from the picture's labels ----------------------------------
 
 #: the pseudocode names of a polygon (not a vertex): a part a row names ("Q = P (good)", "Q =
