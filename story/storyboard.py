@@ -636,8 +636,9 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
 
 def told_claim(noun: str, heuristic: str | None) -> Told:
     """The caption of one fast claim of divide and conquer (:attr:`Pacing.told`): its
-    number, who finds it, in the part lit up (the blue one: the part worked on), the split
-    along it and the triangles done under it — what its beats show.
+    number, the vertex its run starts from (its first pick, the left-most, lit blue: named,
+    as every vertex lit is), who finds it, in the part lit up (the blue one: the part worked
+    on), the split along it and the triangles done under it — what its beats show.
 
     >>> told = told_claim("diagonal", "gravity")
     >>> from story.beats import beat_kind
@@ -645,6 +646,8 @@ def told_claim(noun: str, heuristic: str | None) -> Told:
     ...               points=((0.0, 0.0), (1.0, 0.0)))
     >>> told(3, [claim])
     'Diagonal 3: Gravity finds GB in the blue part; split along it'
+    >>> told(3, [Pick(caption="B is the left-most vertex", seq=0, vertex="B"), claim])
+    'Diagonal 3: from B, Gravity finds GB in the blue part; split along it'
     >>> @beat_kind("done")
     ... class Done(Beat):
     ...     labels: tuple[str, ...] = ()
@@ -657,7 +660,9 @@ def told_claim(noun: str, heuristic: str | None) -> Told:
         claim = next((b for b in beats if isinstance(b, Claim)), None)
         if claim is None:  # no claim under it: nothing of its own to say
             return f"{noun.capitalize()} {number}: the same steps, faster"
-        said = f"{noun.capitalize()} {number}: {who} finds {''.join(claim.labels)} in the blue part"
+        start = next((b.vertex for b in beats if isinstance(b, Pick)), None)
+        said = (f"{noun.capitalize()} {number}: {f'from {start}, ' if start else ''}{who} finds "
+                f"{''.join(claim.labels)} in the blue part")
         done = ["".join(getattr(b, "labels", ())) for b in beats if b.action == "done"]
         return f"{said}; split, {' and '.join(done)} done" if done else f"{said}; split along it"
 
