@@ -303,7 +303,6 @@ class CloseUp:
         board = self.board
         self._move_hidden(-1.0)
         anims: list[Playable] = [self._zooming(self.zoom, 1.0), FadeOut(self.window)]
-        anims += [FadeIn(m) for m in (*self.hidden.values(), *self.others)]
         back = self.frame
         for label, m in self.shown.items():
             anims.append(animate(m).shift(back.to_scene(board.where[label])
@@ -322,6 +321,12 @@ class CloseUp:
         self.board.outline = self.outline
         self.board.scene.replace(self.fragment, self.outline)
         self.board.close_up = None
+
+    def come_back(self) -> list[Playable]:
+        """What the close-up faded comes back, once the picture is whole: faded in with the
+        zoom out, at their places in the whole picture, the vertices outside the box stood
+        off P while it was still drawn zoomed (chapter 3 at 75 s: A's dot above the box)."""
+        return [FadeIn(m) for m in (*self.hidden.values(), *self.others)]
 
 
 #: the reach of the spot where the ball hits (its burst), and the room a label keeps round

@@ -5466,3 +5466,25 @@ def unanswered_card_questions(data: dict) -> list[str]:
                 if text.endswith("?") and text not in found:
                     found.append(text)
     return found
+
+
+#: the drawing of P a close-up zooms (:class:`metaphors.gravity.CloseUp`)
+_CLOSE_UP = "close-up"
+
+
+def fading_in_while_zooming(data: dict) -> list[str]:
+    """What fades in while a close-up zooms, as ``"play 76: vertex:A"``: a vertex the
+    close-up faded (outside its box) came back at its place in the whole picture while P was
+    still drawn zoomed, so its dot and label stood off P, outside the picture's box
+    (chapter 3 at 75 s: A above the box, B left of it). What the zoom brought back comes once
+    the picture is whole."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        zooming = any((anim.get("mobject") or {}).get("name") == _CLOSE_UP
+                      and anim["type"] == "UpdateFromAlphaFunc" for anim in play["animations"])
+        if zooming:
+            found += [f"play {k}: {(anim.get('mobject') or {}).get('name')}"
+                      for anim in play["animations"] if anim["type"] in INCOMING
+                      and not ((anim.get("mobject") or {}).get("name") or "").startswith(
+                          _CLOSE_UP)]
+    return found
