@@ -5472,19 +5472,20 @@ def unanswered_card_questions(data: dict) -> list[str]:
 _CLOSE_UP = "close-up"
 
 
-def fading_in_while_zooming(data: dict) -> list[str]:
-    """What fades in while a close-up zooms, as ``"play 76: vertex:A"``: a vertex the
-    close-up faded (outside its box) came back at its place in the whole picture while P was
-    still drawn zoomed, so its dot and label stood off P, outside the picture's box
-    (chapter 3 at 75 s: A above the box, B left of it). What the zoom brought back comes once
-    the picture is whole."""
+def fading_while_zooming(data: dict) -> list[str]:
+    """What fades in or out while a close-up zooms, as ``"play 76: vertex:A"``: the
+    vertices outside the close-up's box faded at their places in the whole picture while P
+    was drawn zoomed, so their dots and labels stood off P — ghosts of L, K and M over the
+    zoomed fruit as the close-up came (chapter 4 at 79 s), A's dot above the box and B's
+    left of it as it went (chapter 3 at 75 s). They go before the zoom in and come back
+    once the picture is whole."""
     found = []
     for k, play in enumerate(data["plays"]):
         zooming = any((anim.get("mobject") or {}).get("name") == _CLOSE_UP
                       and anim["type"] == "UpdateFromAlphaFunc" for anim in play["animations"])
         if zooming:
             found += [f"play {k}: {(anim.get('mobject') or {}).get('name')}"
-                      for anim in play["animations"] if anim["type"] in INCOMING
+                      for anim in play["animations"] if anim["type"] in INCOMING | OUTGOING
                       and not ((anim.get("mobject") or {}).get("name") or "").startswith(
                           _CLOSE_UP)]
     return found

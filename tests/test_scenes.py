@@ -69,7 +69,7 @@ from tests.reading_rules import (
     crowded_vertex_labels,
     early_picks,
     ears_without_convexity,
-    fading_in_while_zooming,
+    fading_while_zooming,
     false_as_before,
     far_verdicts,
     flashes_against_roles,
@@ -549,8 +549,8 @@ def test_no_note_is_under_a_moving_tool(case):
     assert moved_after_the_pick(graph(case).data) == [], case.id
     # a pick goes amber once, as its tool reaches it (Correct Scaling's E flickered)
     assert picks_amber_twice(graph(case).data) == [], case.id
-    # what a close-up faded comes back once the picture is whole (A stood off P, chapter 3)
-    assert fading_in_while_zooming(graph(case).data) == [], case.id
+    # what a close-up fades goes before it zooms in and comes back once the picture is whole
+    assert fading_while_zooming(graph(case).data) == [], case.id
     # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
     assert red_bursts_before_verdicts(graph(case).data) == [], case.id
 
