@@ -87,6 +87,8 @@ class CloseUp(Protocol):
 
     def done(self) -> None: ...
 
+    def come_back(self) -> list[Playable]: ...
+
 
 #: the least a step of a summary takes (seconds): long enough to see what changed
 SEEN_STEP = 0.5

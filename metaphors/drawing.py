@@ -233,7 +233,7 @@ def ending_beat(beat: B, pseudocode: Sequence[PseudocodeRow], triangles: int,
     whole triangulation); the last step's if the run's call is not known.
 
     >>> from story.pseudocode import RESULT
-    >>> rows = (PseudocodeRow("divide P along d", ("split",)),
+    >>> rows = (PseudocodeRow("divide P along it", ("split",)),
     ...         PseudocodeRow("their union is the triangulation of P", (RESULT,)))
     >>> end = ending_beat(Beat(caption="Split", seq=9, row=0, pace=0.35), rows, 11)
     >>> end.caption, end.row, end.pace

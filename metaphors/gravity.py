@@ -100,7 +100,7 @@ def gravity_turn(board: Board, beat: GravityTurn) -> None:
     active = board.objects.get(f"piece:{beat.polygon}")
     if active is not None:  # divide and conquer: the piece being worked on lights up
         anims.append(tag(active, "called").animate.set_fill(opacity=theme.active_opacity)
-                     .set_stroke(theme.called, width=theme.stroke * 2.5, opacity=1.0))
+                     .set_stroke(theme.called, width=theme.active_stroke, opacity=1.0))
     board.play(beat, *anims, run_time=0.8)
     board.keep("gravity", arrow)
     turn = turn_to(board, beat.turn_picture)
@@ -130,6 +130,9 @@ def drop(board: Board, beat: Drop) -> None:
         zooming = replace(beat, caption=CLOSE_WORDS)
         board.play(zooming, *hangs, run_time=0.4)
         hangs = []
+        faded = close.fade_first()  # before the zoom: faded as it zooms, they stood off P
+        if faded:
+            again(board, zooming, *faded, run_time=0.5)
         again(board, zooming, *close.zoom_in(), animate(ball).shift(close.zoomed(v) - v),
               run_time=1.2)
         close.zoomed_in()
@@ -273,11 +276,16 @@ class CloseUp:
         fixed = np.linalg.solve(np.eye(2) - linear, offset)
         return old.turned(old.angle, fixed, old.zoom * k)
 
+    def fade_first(self) -> list[Playable]:
+        """What the close-up leaves out fades, before the zoom in: the vertices outside its
+        box, and what else stands on the picture (faded as P zoomed, they were ghosts over
+        it where P no longer was: chapter 4's L, K and M over the zoomed fruit)."""
+        return [FadeOut(m) for m in (*self.hidden.values(), *self.others)]
+
     def zoom_in(self) -> list[Playable]:
         board = self.board
         board.scene.replace(self.outline, self.fragment)  # the same picture, in its place
         anims: list[Playable] = [self._zooming(1.0, self.zoom), FadeIn(self.window)]
-        anims += [FadeOut(m) for m in (*self.hidden.values(), *self.others)]
         anims += [animate(m).shift(self.zoomed(board.vertex(label)) - board.vertex(label))
                   for label, m in self.shown.items()]
         board.frame = self._frame()
@@ -303,7 +311,6 @@ class CloseUp:
         board = self.board
         self._move_hidden(-1.0)
         anims: list[Playable] = [self._zooming(self.zoom, 1.0), FadeOut(self.window)]
-        anims += [FadeIn(m) for m in (*self.hidden.values(), *self.others)]
         back = self.frame
         for label, m in self.shown.items():
             anims.append(animate(m).shift(back.to_scene(board.where[label])
@@ -322,6 +329,13 @@ class CloseUp:
         self.board.outline = self.outline
         self.board.scene.replace(self.fragment, self.outline)
         self.board.close_up = None
+
+    def come_back(self) -> list[Playable]:
+        """What the close-up faded (:meth:`fade_first`) comes back, once the picture is
+        whole: faded in with the zoom out, at their places in the whole picture, the
+        vertices outside the box stood off P while it was still drawn zoomed (chapter 3 at
+        75 s: A's dot above the box)."""
+        return [FadeIn(m) for m in (*self.hidden.values(), *self.others)]
 
 
 #: the reach of the spot where the ball hits (its burst), and the room a label keeps round

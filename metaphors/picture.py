@@ -169,6 +169,9 @@ def upright(board: Board, beat: Beat) -> None:
             again(board, beat, *back, run_time=0.4)
         again(board, beat, *close.zoom_out(), run_time=1.2)
         close.done()
+        faded = close.come_back()  # once the picture is whole, not while it zooms
+        if faded:
+            again(board, beat, *faded, run_time=0.5)
     turn = turn_to(board, 0.0)
     if turn:
         again(board, beat, *turn, run_time=1.5)

@@ -136,7 +136,7 @@ def _shades(walk: Walk) -> dict[tuple, int]:
 def _tint_colour(board: Board, labels: Sequence[str], avoid: set[str]) -> str:
     """A palette colour for a new piece: unlike its neighbours (tints sharing an edge), then the
     least used; ties by palette order."""
-    palette = board.theme.pieces
+    palette = board.theme.part_tints  # none reads as the blue of the part worked on
     tints = [m for k, m in board.objects.items() if k.startswith(("piece:", "triangle:"))]
     near = {_colour(m) for m in tints if len(set(_labels(m)) & set(labels)) >= 2}
     used = [_colour(m) for m in tints]
@@ -366,7 +366,13 @@ def _light(board: Board, key: str) -> tuple[list[Playable], bool]:
     said = (board.focus is None or board.focus >= every) and not focus >= every
     board.focus = focus
     vars(piece)["trex_lit"] = True  # lit: asked for its diagonal, it is not lit again
-    return [piece.animate.set_fill(theme.called, opacity=theme.active_opacity)], said
+    lit = piece.animate.set_fill(theme.called, opacity=theme.active_opacity)
+    if piece is not board.outline:
+        # a part of P outlined in the same blue, beside parts of other tints: it stands out
+        # from the first step on it, not only from gravity's turn (a convex part was never
+        # outlined); P's own outline keeps its edges (no other part to tell it from)
+        lit = lit.set_stroke(theme.called, width=theme.active_stroke, opacity=1.0)
+    return [lit], said
 
 
 def find(board: Board, beat: FindDiagonal) -> None:

@@ -10,7 +10,8 @@ The legend: each colour has one meaning for the whole lecture and every scene.
 field         colour      meaning
 ============  ==========  ===========================================================
 called        blue        the object a call runs on (a vertex being looked at; the
-                          panel tints the piece divide and conquer works on)
+                          piece divide and conquer works on, filled and outlined in it,
+                          and in the panel tinted)
 argument      amber       a call's other inputs while it runs; a diagonal being drawn;
                           a claim not yet judged (then green or red)
 result        green       what a call gives; a correct claim; a triangulation's count
@@ -37,7 +38,8 @@ dial          grey        the frame of a close-up (gravity's window)
 fruit, rind   orange,     the fruit sliced (ear clipping), on its plate; its rind a
               brown       peel's brown, no role's (its olive was near the "yes" green)
 pieces        tints       the sub-polygons of divide and conquer and the monotone
-                          pieces (the parts a split or a partition makes)
+                          pieces (the parts a split or a partition makes); divide and
+                          conquer's only those far from the blue of the piece worked on
 triangles     green       the triangles of a finished triangulation: the result's green,
               shades      neighbours in other shades (never the pieces' tints)
 ============  ==========  ===========================================================
@@ -84,11 +86,19 @@ class Theme:
     #: tints of the sub-polygons of divide and conquer (the two halves of a split differ)
     pieces: tuple[str, ...] = ("#8e6cf0", "#2bb5a8", "#c9a25a", "#5b8fd5", "#9cbf4a")
     piece_opacity: float = 0.3
+    #: the tints divide and conquer's parts take: the palette's but its blue and violet, which
+    #: beside the part worked on (``called`` at :attr:`active_opacity`) read as its colour
+    #: (CIE76 ΔE 21 and 18 as the screen shows them; teal 37, tan 47, olive 54): the part
+    #: worked on was told from its neighbours only by a shade of blue (the scene at 72 s)
+    part_tints: tuple[str, ...] = ("#2bb5a8", "#c9a25a", "#9cbf4a")
     #: the fills of a finished triangulation's triangles, in the result's green: two that
     #: share a side differ (:func:`metaphors.drawing.neighbour_shades`; a polygon's need two)
     triangle_shades: tuple[float, ...] = (0.5, 0.2, 0.75, 0.35)
     done_opacity: float = 0.62
     active_opacity: float = 0.5  # the piece divide and conquer works on
+    #: the width of its outline in ``called``: drawn as it lights up (only gravity's turn
+    #: drew it, a convex piece, which gravity does not turn, had none)
+    active_stroke: float = 7.5
     hand: str = "#c792ea"  # the clock hand (drawn solid inside the polygon, dashed outside)
     sweep: str = "#c792ea"  # the sweep line (likewise)
     #: what a heuristic's tool (water, clock hand, sweep line) has swept on its way to its

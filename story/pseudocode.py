@@ -104,10 +104,10 @@ RESULT = "(result)"
 def result_row(pseudocode: Sequence[PseudocodeRow]) -> int | None:
     """The row saying the run's result (covering :data:`RESULT`); None if none does.
 
-    >>> result_row((PseudocodeRow("divide P along d", ("split",)),
+    >>> result_row((PseudocodeRow("divide P along it", ("split",)),
     ...             PseudocodeRow("their union is the triangulation of P", (RESULT,))))
     1
-    >>> result_row((PseudocodeRow("divide P along d", ("split",)),)) is None
+    >>> result_row((PseudocodeRow("divide P along it", ("split",)),)) is None
     True
     """
     return next((k for k, row in enumerate(pseudocode) if RESULT in row.calls), None)

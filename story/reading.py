@@ -17,7 +17,7 @@ caption does not flash.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import replace
 from types import MappingProxyType
 from typing import Any, cast
@@ -32,6 +32,10 @@ LEAST_CUE = 0.83
 SUMMARY_CLAIMS = 5
 #: the beats every heuristic's run begins with: the frame (polygon, B, T, candidates)
 FRAME_BEATS = (ShowPolygon, Pick, ShowTriangle, Candidates)
+
+#: what a run says of one repeated claim, its own caption instead of a summary's, from the
+#: claim's number and its beats (:func:`summarised` ``told``)
+Told = Callable[[int, Sequence[Beat]], str]
 
 
 def reading_time(caption: str) -> float:
@@ -52,7 +56,8 @@ def readable(caption: str, seconds: float) -> bool:
 def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: str,
                kept: Sequence[bool] = (), numbers: Sequence[int] = (),
                names: Mapping[int, str] = MappingProxyType({}),
-               order: Sequence[str] = (), total: int | None = None) -> list[Beat]:
+               order: Sequence[str] = (), total: int | None = None,
+               told: Told | None = None) -> list[Beat]:
     """The beats with the captions of repeated claims replaced by summaries.
 
     ``claims[k]`` is how many claims were counted when beat ``k`` was made (beat ``k``
@@ -68,7 +73,10 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
     claims all have one names them by it (:func:`_named_summary`, ``order`` the labels'
     order a range means), for the picture never shows their numbers. ``total``: the claims
     of the whole run (default ``claims[-1]``), the count at which the run's end is kept (a
-    beat closing the last claim, counted with it, is not the end).
+    beat closing the last claim, counted with it, is not the end). ``told``: each repeated
+    claim gets a caption of its own, ``told(number, its beats)``, saying what its beats
+    show, not one summary over up to five (divide and conquer's: one summary stood over
+    five runs, each a part lit, gravity's ball, a claim, its ✓ and a split).
 
     A summary covers one unbroken run of fast beats (:func:`_fast_runs`): a key step ends
     it, and the fast beats after it get a summary of their own that names only the claims
@@ -86,28 +94,36 @@ def summarised(beats: Sequence[Beat], claims: Sequence[int], full: int, noun: st
     >>> [b.caption for b in summarised(beats[:6], [0, 1, 2, 3, 4, 5], 1, "vertex",
     ...                                names={2: "H", 3: "B", 4: "G", 5: "F"})][1]
     'Vertices H, B, G and F: the same steps, faster'
+    >>> [b.caption for b in summarised(beats[:6], [0, 1, 1, 2, 2, 3], 1, "diagonal",
+    ...                                told=lambda n, run: f"{n}: {len(run)} beats")]
+    ['step 0', '2: 2 beats', '2: 2 beats', '3: 2 beats', '3: 2 beats', 'step 5']
     """
     if not beats:
         return []
     out = list(beats)
     said = list(numbers) or list(claims)
-    for run in _fast_runs(beats, claims, full, kept, total):
+    for run in _fast_runs(beats, claims, full, kept, total, 1 if told else SUMMARY_CLAIMS):
         if len(run) < 2:
             continue  # one beat: its own caption says more than a summary of it
         first, last = said[run[0]] + 1, said[run[-1]] + 1
         labels = [names.get(c) for c in range(first, last + 1)]
-        caption = (_named_summary(noun, cast(list[str], labels), order)
-                   if names and None not in labels else _summary(noun, first, last))
+        if told is not None:
+            caption = told(first, [beats[k] for k in run])
+        elif names and None not in labels:
+            caption = _named_summary(noun, cast(list[str], labels), order)
+        else:
+            caption = _summary(noun, first, last)
         for k in run:
             out[k] = replace(beats[k], caption=caption)
     return out
 
 
 def _fast_runs(beats: Sequence[Beat], claims: Sequence[int], full: int,
-               kept: Sequence[bool], total: int | None = None) -> list[list[int]]:
+               kept: Sequence[bool], total: int | None = None,
+               size: int = SUMMARY_CLAIMS) -> list[list[int]]:
     """The indices of the beats that go under summaries, in unbroken runs: consecutive fast
-    beats of at most :data:`SUMMARY_CLAIMS` claims, counted from the run's first. A beat kept
-    as it is (a key step, the run's end, a failing verdict and after) ends a run."""
+    beats of at most ``size`` claims, counted from the run's first. A beat kept as it is (a
+    key step, the run's end, a failing verdict and after) ends a run."""
     last = claims[-1] if total is None else total
     keep = list(kept) or [False] * len(beats)
     runs: list[list[int]] = []
@@ -117,7 +133,7 @@ def _fast_runs(beats: Sequence[Beat], claims: Sequence[int], full: int,
         if failed or key or counted < full or counted >= last:
             open_run = False
             continue
-        if not open_run or counted - claims[runs[-1][0]] >= SUMMARY_CLAIMS:
+        if not open_run or counted - claims[runs[-1][0]] >= size:
             runs.append([])
         runs[-1].append(k)
         open_run = True

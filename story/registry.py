@@ -318,8 +318,10 @@ _ENTRIES = (
                    idea="Lennes splits along inner diagonals",
                    pseudocode=(
                        PseudocodeRow("if P is a triangle, we are done", ("done",)),
-                       PseudocodeRow("else find an inner diagonal d of P", _HEURISTICS_TRACED),
-                       PseudocodeRow("divide P along d into P1 and P2", ("split",)),
+                       # no name "d" for the diagonal: beside the vertex D it read as D
+                       # (the diagonal split along first is DG; case_twin_names)
+                       PseudocodeRow("else find an inner diagonal of P", _HEURISTICS_TRACED),
+                       PseudocodeRow("divide P along it into P1 and P2", ("split",)),
                        PseudocodeRow("triangulate P1 and P2 the same way", ("next_part",)),
                        PseudocodeRow("their union is the triangulation of P", (RESULT,)),
                    )),

@@ -26,7 +26,7 @@ No manim here.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from types import MappingProxyType
 from typing import Any
@@ -52,7 +52,7 @@ from story.beats import (
 )
 from story.pseudocode import PseudocodeRow, bound, from_json, lit_row, named
 from story.reach import Reach, reach_of
-from story.reading import summarised
+from story.reading import Told, summarised
 from story.refs import (
     arg_int,
     arg_ints,
@@ -70,7 +70,7 @@ from story.refs import (
     string,
     target_of,
 )
-from story.registry import heuristics, pseudocode
+from story.registry import heuristics, pseudocode, spoken
 from story.roles import ROLES
 from story.words import number, said, why_not_inner
 from tracing import Event, Log
@@ -89,6 +89,9 @@ class Pacing:
 
     full: int = 2
     fast: float = 0.35
+    #: each fast claim under a caption of its own saying what it shows (:func:`told_claim`),
+    #: not a summary over up to five ("Diagonals 3–7: the same steps, faster")
+    told: bool = False
 
 
 # --- objects of the log by their keys -----------------------------------------------------------
@@ -626,7 +629,44 @@ def storyboard(log: Log, pacing: Pacing | None = None, shown_code: str | None = 
     return summarised(beats, [walk.counted.get(id(b), 0) for b in beats], walk.pacing.full,
                       walk.noun, total=walk.claims, kept=[id(b) in walk.kept for b in beats],
                       numbers=[walk.counted_of.get(id(b), {}).get(walk.noun, 0) for b in beats],
-                      names=walk.named.get(walk.noun, {}), order=tuple(walk.root_polygon()[0]))
+                      names=walk.named.get(walk.noun, {}), order=tuple(walk.root_polygon()[0]),
+                      told=told_claim(walk.noun, meta(log, "heuristic")) if walk.pacing.told
+                      else None)
+
+
+def told_claim(noun: str, heuristic: str | None) -> Told:
+    """The caption of one fast claim of divide and conquer (:attr:`Pacing.told`): its
+    number, the vertex its run starts from (its first pick, the left-most, lit blue: named,
+    as every vertex lit is), who finds it, in the part lit up (the blue one: the part worked
+    on), the split along it and the triangles done under it — what its beats show.
+
+    >>> told = told_claim("diagonal", "gravity")
+    >>> from story.beats import beat_kind
+    >>> claim = Claim(caption="Claim: GB is an inner diagonal", seq=1, labels=("G", "B"),
+    ...               points=((0.0, 0.0), (1.0, 0.0)))
+    >>> told(3, [claim])
+    'Diagonal 3: Gravity finds GB in the blue part; split along it'
+    >>> told(3, [Pick(caption="B is the left-most vertex", seq=0, vertex="B"), claim])
+    'Diagonal 3: from B, Gravity finds GB in the blue part; split along it'
+    >>> @beat_kind("done")
+    ... class Done(Beat):
+    ...     labels: tuple[str, ...] = ()
+    >>> told(5, [claim, Done(caption="MAH is a triangle: done", seq=2, labels=("M", "A", "H"))])
+    'Diagonal 5: Gravity finds GB in the blue part; split, MAH done'
+    """
+    who = spoken(heuristic, start=True) if heuristic else "The rule"
+
+    def told(number: int, beats: Sequence[Beat]) -> str:
+        claim = next((b for b in beats if isinstance(b, Claim)), None)
+        if claim is None:  # no claim under it: nothing of its own to say
+            return f"{noun.capitalize()} {number}: the same steps, faster"
+        start = next((b.vertex for b in beats if isinstance(b, Pick)), None)
+        said = (f"{noun.capitalize()} {number}: {f'from {start}, ' if start else ''}{who} finds "
+                f"{''.join(claim.labels)} in the blue part")
+        done = ["".join(getattr(b, "labels", ())) for b in beats if b.action == "done"]
+        return f"{said}; split, {' and '.join(done)} done" if done else f"{said}; split along it"
+
+    return told
 
 
 def _boxed(walk: Walk, beats: list[Beat]) -> list[Beat]:

@@ -943,7 +943,7 @@ def _lit_rows(anim: dict) -> Iterator[str]:
 def stale_lit_rows(data: dict) -> list[str]:
     """The plays that draw a run's whole triangulation while the pseudocode's lit row is
     not the one saying the result ("their union is the triangulation of P"), as
-    ``"play 40: 'divide P along d into P1 and P2'"``: the last step's row no longer says what
+    ``"play 40: 'divide P along it into P1 and P2'"``: the last step's row no longer says what
     the picture shows. A run without pseudocode rows lit (no panel, or its source) is not
     judged."""
     results = _result_rows()
@@ -2972,10 +2972,52 @@ def picks_amber_twice(data: dict) -> list[str]:
     return found
 
 
+# --- each claim told under a caption of its own -------------------------------------------------
+
+
+def untold_claims(data: dict) -> list[str]:
+    """The claims that come in under a caption not naming them, as ``"play 71: GB under
+    'Diagonals 3–7: the same steps, faster'"``, and the captions standing over more than one
+    claim, as ``"'Diagonals 3–7: the same steps, faster' over 5 claims (plays 71–165)"``: the
+    caption says what the picture does. Divide and conquer's fast part stood one summary over
+    five runs (51–81 s), each a part lit, gravity's ball, a claim, its ✓ and a split. A
+    claim's name: the two vertices its play turns amber (its ends), either way round; a
+    claim no caption stands over is not judged."""
+    from metaphors.theme import THEME
+
+    amber = THEME.argument.upper()
+    found: list[str] = []
+    caption, shown = "", 0  # the subtitle on screen, and how many have come in
+    over: dict[int, list[int]] = {}  # subtitle shown → the plays of the claims under it
+    said: dict[int, str] = {}
+    for k, play in enumerate(data["plays"]):
+        claims, ends = 0, set()
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                name = node.get("name") or ""
+                if name == "subtitle" and kind in INCOMING:
+                    caption, shown = _text_of(node) or caption, shown + 1
+                elif name == "claim" and kind in INCOMING:
+                    claims += 1
+            ends |= {label for label, colour, _ in _given_colours(anim) if colour == amber}
+        if not claims or not caption:
+            continue
+        over.setdefault(shown, []).extend([k] * claims)
+        said[shown] = caption
+        if len(ends) == 2:
+            u, v = sorted(ends)
+            if not re.search(rf"\b(?:{u}{v}|{v}{u})\b", caption):
+                found.append(f"play {k}: {u}{v} under {caption!r}")
+    for shown, plays in over.items():
+        if len(plays) > 1:
+            found.append(f"{said[shown]!r} over {len(plays)} claims (plays {plays[0]}–{plays[-1]})")
+    return found
+
+
 # --- a pseudocode's names read apart from the picture's labels ----------------------------------
 
 #: the pseudocode names of a polygon (not a vertex): a part a row names ("Q = P (good)", "Q =
-#: the good part beyond V–W", "T = triangle ABC", "divide P along d into P1 and P2")
+#: the good part beyond V–W", "T = triangle ABC", "divide P along it into P1 and P2")
 _POLYGON_NAME = re.compile(
     r"(?<![\w′])([A-Z][0-9]*) = (?:P\b|the good part|triangle)|\binto ([A-Z][0-9]*) and ([A-Z][0-9]*)")
 
@@ -3018,6 +3060,40 @@ def placeholders_as_labels(data: dict) -> list[str]:
             found.append(f"play {k}: {name}")
             said.add(name)
     return found
+#: a one-letter name in lower case (``d``), not the article "a": read beside a vertex
+#: labelled with its capital (``D``), the two are one letter in two sizes
+_LOWER_NAME = re.compile(r"(?<![\w′'’])([b-z])(?![\w′'’])")
+
+
+def case_twin_names(data: dict) -> list[str]:
+    """The one-letter names in lower case a run's pseudocode rows say while a vertex on its
+    picture is labelled with the same letter in capitals, as ``"play 12: d (D)"``: divide and
+    conquer's "find an inner diagonal d of P", "divide P along d", lit beside the vertex D
+    (the diagonal split along at 26 s was DG itself) — one letter, two things, told apart by
+    its size only. Each name once per run (its polygon drawn begins one), at the first play
+    showing both."""
+    found: list[str] = []
+    labels: set[str] = set()
+    rows: set[str] = set()
+    said: set[str] = set()
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            if anim.get("type") == "Create" and (anim.get("mobject") or {}).get("name") in _POLYGONS:
+                labels, rows, said = set(), set(), set()
+            for _, node in _recorded(anim):
+                for part in mobject_nodes(node):
+                    name = part.get("name") or ""
+                    if name.startswith("vertex:"):
+                        labels.add(name.removeprefix("vertex:"))
+                    elif name.startswith("code:") and (part.get("text") or "").strip():
+                        rows.add(part["text"].strip())
+        names = {m for row in rows for m in _LOWER_NAME.findall(row)}
+        for name in sorted(n for n in names if n.upper() in labels and n not in said):
+            found.append(f"play {k}: {name} ({name.upper()})")
+            said.add(name)
+    return found
+
+
 # --- a fill never tints a vertex label: labels and dots are drawn over fills -----------------
 
 
@@ -3174,6 +3250,70 @@ def shifting_tints(data: dict) -> list[str]:
         if len(colours) > 1:
             found.append(f"{thing}: " + ", ".join(f"{c} ({where})" for c, where in colours.items()))
     return found
+
+
+# --- the part worked on stands out: one colour, one meaning ----------------------------------
+
+#: how far apart (CIE76 ΔE, as the screen shows them) another part's tint must stand from the
+#: part worked on: the palette's blue and violet were 21 and 18 from it, its teal is 37
+LEAST_PART_APART = 25.0
+
+
+def _lab(colour: str) -> tuple[float, float, float]:
+    """CIE L*a*b* (D65) of a ``#rrggbb`` colour."""
+    def linear(u: float) -> float:
+        return ((u + 0.055) / 1.055) ** 2.4 if u > 0.04045 else u / 12.92
+
+    r, g, b = (linear(int(colour.lstrip("#")[k:k + 2], 16) / 255) for k in (0, 2, 4))
+    x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047
+    y = 0.2126 * r + 0.7152 * g + 0.0722 * b
+    z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883
+
+    def f(t: float) -> float:
+        return t ** (1 / 3) if t > 0.008856 else 7.787 * t + 16 / 116
+
+    return 116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))
+
+
+def delta_e(a: str, b: str) -> float:
+    """CIE76 ΔE of two ``#rrggbb`` colours: about 2 is just seen, over 25 two colours.
+
+    >>> round(delta_e("#000000", "#ffffff"))
+    100
+    """
+    return math.dist(_lab(a), _lab(b))
+
+
+def unmarked_parts(data: dict) -> list[str]:
+    """The plays where divide and conquer's part worked on (a ``piece:`` tinted in the
+    ``called`` blue, the legend's "the piece divide and conquer works on") does not stand out,
+    as ``"play 54 piece:GHIJKLMABCD: lit, not outlined"`` or ``"play 123 piece:HIJK reads as
+    piece:KLMAH, the part worked on"``: lit, it is outlined in that blue too, and no other
+    part's tint reads as its colour (:data:`LEAST_PART_APART`, each over the background: a
+    split clears P's fill). The palette tinted a part in a blue (#5b8fd5) beside the lit one
+    (HIJK beside KLMAH at 66 s of the scene's graph), and only gravity's turn outlined the
+    lit part: a convex part (HKLM) was never outlined. Each part and fault once."""
+    from metaphors.theme import THEME
+
+    called = THEME.called.upper()
+    found: dict[tuple[str, str], str] = {}
+    for k, shown in _shown_after_plays(data, ("piece:",)):
+        lit = {name: node for name, node in shown.items()
+               if _one_colour(node.get("fill")) == called and (node.get("fill_opacity") or 0) > 0}
+        for name, node in lit.items():
+            if _one_colour(node.get("stroke")) != called or not node.get("stroke_width"):
+                found.setdefault((name, "outline"), f"play {k} {name}: lit, not outlined")
+        for name, node in lit.items():
+            seen = _over(called, float(node["fill_opacity"]), THEME.background)
+            for other, part in shown.items():
+                fill = _one_colour(part.get("fill"))
+                if other in lit or not fill or not (part.get("fill_opacity") or 0) > 0:
+                    continue
+                tint = _over(fill, float(part["fill_opacity"]), THEME.background)
+                if delta_e(seen, tint) < LEAST_PART_APART:
+                    found.setdefault((other, "alike"),
+                                     f"play {k} {other} reads as {name}, the part worked on")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
 
 
 #: gravity's close-up: one drawing standing in for the picture's outline while zoomed
@@ -5465,4 +5605,27 @@ def unanswered_card_questions(data: dict) -> list[str]:
                 text = _text_of(node).strip()
                 if text.endswith("?") and text not in found:
                     found.append(text)
+    return found
+
+
+#: the drawing of P a close-up zooms (:class:`metaphors.gravity.CloseUp`)
+_CLOSE_UP = "close-up"
+
+
+def fading_while_zooming(data: dict) -> list[str]:
+    """What fades in or out while a close-up zooms, as ``"play 76: vertex:A"``: the
+    vertices outside the close-up's box faded at their places in the whole picture while P
+    was drawn zoomed, so their dots and labels stood off P — ghosts of L, K and M over the
+    zoomed fruit as the close-up came (chapter 4 at 79 s), A's dot above the box and B's
+    left of it as it went (chapter 3 at 75 s). They go before the zoom in and come back
+    once the picture is whole."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        zooming = any((anim.get("mobject") or {}).get("name") == _CLOSE_UP
+                      and anim["type"] == "UpdateFromAlphaFunc" for anim in play["animations"])
+        if zooming:
+            found += [f"play {k}: {(anim.get('mobject') or {}).get('name')}"
+                      for anim in play["animations"] if anim["type"] in INCOMING | OUTGOING
+                      and not ((anim.get("mobject") or {}).get("name") or "").startswith(
+                          _CLOSE_UP)]
     return found

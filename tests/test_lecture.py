@@ -57,6 +57,7 @@ from tests.reading_rules import (
     early_picks,
     early_snags,
     ears_without_convexity,
+    fading_while_zooming,
     faint_cuts,
     false_as_before,
     far_verdicts,
@@ -708,6 +709,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert moved_after_the_pick(data) == [], chapter.slug
     # a pick goes amber once, as its tool reaches it (Correct Scaling's E flickered)
     assert picks_amber_twice(data) == [], chapter.slug
+    # what a close-up fades goes before it zooms in and comes back once the picture is whole
+    assert fading_while_zooming(data) == [], chapter.slug
     # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
     assert red_bursts_before_verdicts(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug

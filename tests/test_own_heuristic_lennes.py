@@ -124,7 +124,7 @@ def test_the_storyboard_judges_its_claims_on_each_piece(mine):
     assert len(verdicts) == 1 and not verdicts[0].ok
     assert verdicts[0].edge == ("C", "D")
     rows = [b.row for b in beats if b.action in ("claim", "verdict")]
-    assert rows == [1, 1]  # "else find an inner diagonal d of P"
+    assert rows == [1, 1]  # "else find an inner diagonal of P"
     right = storyboard(RunSpec("divide-and-conquer", "lecture",
                                heuristic=f"{mine}:like_gravity").log())
     assert sum(b.action == "verdict" and b.ok for b in right) == 10

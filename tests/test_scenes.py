@@ -53,6 +53,7 @@ from tests.reading_rules import (
     broken_summaries,
     calls_over_code,
     captions_said_again,
+    case_twin_names,
     claims_along_edges,
     claims_missing_from_panel,
     close_ups_left_early,
@@ -69,6 +70,7 @@ from tests.reading_rules import (
     crowded_vertex_labels,
     early_picks,
     ears_without_convexity,
+    fading_while_zooming,
     false_as_before,
     far_verdicts,
     flashes_against_roles,
@@ -124,6 +126,7 @@ from tests.reading_rules import (
     unexplained_primes,
     unexplained_tool_parts,
     unlit_givens,
+    unmarked_parts,
     unnamed_marks,
     unreadable_cards,
     unreadable_cues,
@@ -132,6 +135,7 @@ from tests.reading_rules import (
     unseen_ear_tests,
     unspoken_words,
     untied_placeholders,
+    untold_claims,
     verdicts_on_claims,
     water_outside_polygon,
     words_ahead_of_colours,
@@ -548,6 +552,8 @@ def test_no_note_is_under_a_moving_tool(case):
     assert moved_after_the_pick(graph(case).data) == [], case.id
     # a pick goes amber once, as its tool reaches it (Correct Scaling's E flickered)
     assert picks_amber_twice(graph(case).data) == [], case.id
+    # what a close-up fades goes before it zooms in and comes back once the picture is whole
+    assert fading_while_zooming(graph(case).data) == [], case.id
     # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
     assert red_bursts_before_verdicts(graph(case).data) == [], case.id
 
@@ -742,6 +748,29 @@ def test_no_pseudocode_name_of_a_polygon_is_a_vertex_label(case):
     """Review r34: the panel's pseudocode names no polygon with a label on the picture (prune
     and search's good part was "G", and G the vertex tested first)."""
     assert placeholders_as_labels(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_each_claim_comes_under_a_caption_naming_it(case):
+    """Issue 22 review: a claim comes under a caption of its own that names it (divide and
+    conquer's "Diagonals 3–7: the same steps, faster" stood over five runs, 51–81 s)."""
+    assert untold_claims(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_part_worked_on_stands_out(case):
+    """Issue 22 review: divide and conquer's part worked on is filled and outlined in the
+    blue whose meaning that is, and no other part is tinted in a colour that reads as it
+    (the palette's blue part HIJK stood beside the lit KLMAH)."""
+    assert unmarked_parts(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_pseudocode_name_is_a_vertex_label_in_lower_case(case):
+    """Issue 22 review: the panel's pseudocode says no one-letter name whose capital labels a
+    vertex on the picture (divide and conquer's diagonal "d" beside the vertex D, while the
+    diagonal split along was DG: one letter, two things)."""
+    assert case_twin_names(graph(case).data) == [], case.id
 
 
 def test_no_label_is_under_the_balls_fall_on_the_counterexample():
