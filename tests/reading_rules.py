@@ -2972,6 +2972,44 @@ def picks_amber_twice(data: dict) -> list[str]:
     return found
 
 
+# --- a diagonal made settles ---------------------------------------------------------------------
+
+#: the names of a diagonal made, on the picture and in the panel (the monotone sweep's
+#: ``diagonal:b₂A``, divide and conquer's ``diagonal:0``)
+_DIAGONAL = re.compile(r"^(?:panel/)?diagonal:")
+
+
+def amber_diagonals_left(data: dict) -> list[str]:
+    """The diagonals (``diagonal:…``, and the panel's ``panel/diagonal:…``) still amber once
+    the caption after the one they came under is up, as ``"play 19 diagonal:b₂A amber under
+    'b₂ becomes A–B's helper in place of A'"``: amber means "being decided now" (the theme's
+    legend), so a diagonal added is amber while its own words say why, then takes the ink of
+    a diagonal made. The holes' sweep kept b₂A amber from 20 s to the pieces at 60 s."""
+    from metaphors.theme import THEME
+
+    amber = THEME.argument.upper()
+    found: list[str] = []
+    shown: dict[str, str] = {}  # an amber diagonal's name -> the caption it came under
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name = node.get("name") or ""
+            if not _DIAGONAL.match(name):
+                continue
+            now = (anim.get("target") or node).get("stroke")
+            if anim["type"] in OUTGOING or (now or "").upper() != amber:
+                shown.pop(name, None)
+            elif anim["type"] in INCOMING:
+                shown[name] = caption
+        for name, said in list(shown.items()):
+            if play.get("subcaption") and caption != said:
+                found.append(f"play {k} {name} amber under {caption!r}")
+                del shown[name]  # each once
+    return found
+
+
 # --- a pseudocode's names read apart from the picture's labels ----------------------------------
 
 #: the pseudocode names of a polygon (not a vertex): a part a row names ("Q = P (good)", "Q =

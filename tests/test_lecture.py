@@ -29,6 +29,7 @@ from click.testing import CliRunner
 from tests.reading_rules import (
     VERTEX_KINDS,
     alike_neighbours,
+    amber_diagonals_left,
     amber_figure_marks,
     answers_on_cards,
     answers_over_pictures,
@@ -708,6 +709,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert moved_after_the_pick(data) == [], chapter.slug
     # a pick goes amber once, as its tool reaches it (Correct Scaling's E flickered)
     assert picks_amber_twice(data) == [], chapter.slug
+    # a diagonal added is amber while its words are up, then settles in the ink (the holes'
+    # sweep kept its diagonals amber, "being decided now", for 40 s)
+    assert amber_diagonals_left(data) == [], chapter.slug
     # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
     assert red_bursts_before_verdicts(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug

@@ -46,6 +46,7 @@ from story.storyboard import spoken_pseudocode
 from tests.reading_rules import (
     LEAST_LINE,
     LEAST_TRIANGLE,
+    amber_diagonals_left,
     answers_on_cards,
     arithmetic_vertex_names,
     balls_not_there,
@@ -548,6 +549,9 @@ def test_no_note_is_under_a_moving_tool(case):
     assert moved_after_the_pick(graph(case).data) == [], case.id
     # a pick goes amber once, as its tool reaches it (Correct Scaling's E flickered)
     assert picks_amber_twice(graph(case).data) == [], case.id
+    # a diagonal added is amber while its words are up, then settles in the ink (the holes'
+    # sweep kept its diagonals amber, "being decided now", for 40 s)
+    assert amber_diagonals_left(graph(case).data) == [], case.id
     # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
     assert red_bursts_before_verdicts(graph(case).data) == [], case.id
 
