@@ -2972,6 +2972,42 @@ def picks_amber_twice(data: dict) -> list[str]:
     return found
 
 
+# --- a keyhole cut said while it is drawn --------------------------------------------------------
+
+#: what the words up while a run's first keyhole cut is drawn say (the knife cutting, then
+#: the cut made): the rule (the right-most hole's right-most vertex, to a vertex it sees) and
+#: what the cut is for (one ring, to slice)
+KEYHOLE_SAID = ("right-most", "sees", "one ring")
+
+
+def unexplained_keyholes(data: dict) -> list[str]:
+    """The runs whose first keyhole cut (``keyhole:N`` coming in, the ``knife`` drawn just
+    before it) is drawn under captions that do not say what it is and why, as ``"play 9
+    keyhole:2 drawn under words without: right-most, sees, one ring"``: the viewer saw
+    "Hole 2: a keyhole cut from c₂ to F" and a dark slit, and was never told that each
+    hole, the right-most first, is cut open from its right-most vertex to a vertex it sees,
+    making one ring that ear clipping slices (:data:`KEYHOLE_SAID`, case aside)."""
+    found: list[str] = []
+    caption, knife, explained = "", "", False
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            name = (anim.get("mobject") or {}).get("name") or ""
+            if name == "polygon" and anim["type"] == "Create":  # a run starts
+                explained = False
+            if anim["type"] not in INCOMING:
+                continue
+            if name == "knife":
+                knife = caption
+            elif name.startswith(_KEYHOLE) and not explained:
+                words = f"{knife} {caption}".lower()
+                missing = [w for w in KEYHOLE_SAID if w not in words]
+                if missing:
+                    found.append(f"play {k} {name} drawn under words without: {', '.join(missing)}")
+                explained = True  # the run's first cut says it; the next say less
+    return found
+
+
 # --- a diagonal made settles ---------------------------------------------------------------------
 
 #: the names of a diagonal made, on the picture and in the panel (the monotone sweep's

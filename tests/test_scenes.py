@@ -121,6 +121,7 @@ from tests.reading_rules import (
     tails_beside_labels,
     thinnest_triangle,
     ticks_outside,
+    unexplained_keyholes,
     unexplained_plates,
     unexplained_primes,
     unexplained_tool_parts,
@@ -552,6 +553,9 @@ def test_no_note_is_under_a_moving_tool(case):
     # a diagonal added is amber while its words are up, then settles in the ink (the holes'
     # sweep kept its diagonals amber, "being decided now", for 40 s)
     assert amber_diagonals_left(graph(case).data) == [], case.id
+    # a run's first keyhole cut is said while it is drawn: the right-most hole's right-most
+    # vertex, to a vertex it sees, one ring to slice (the cut came with no why)
+    assert unexplained_keyholes(graph(case).data) == [], case.id
     # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
     assert red_bursts_before_verdicts(graph(case).data) == [], case.id
 
