@@ -25,12 +25,16 @@ import numpy as np
 from geometry.predicates import Point
 
 #: Fixed polygons with holes, by name (``trex check keyhole``): ``keyhole``, the explainer's
-#: fruit with two holes (a triangle and a quadrilateral, their bridges sharing a vertex).
+#: fruit with two holes (a triangle and a quadrilateral, their bridges sharing a vertex),
+#: in general position: no three of its vertices, the holes' counted, on one line (issue 22
+#: item 3). Its a₁ stood at (2, 3), on one line with E and c₁ and with d₂ and c₂, and its a₂
+#: at (5.5, 6.5), halfway from F to A; each moved by a quarter, a step floats hold exactly
+#: (the exact predicates judge the points as written, not a decimal's nearest float).
 HOLE_SAMPLES: MappingProxyType[str, tuple[tuple[Point, ...], ...]] = MappingProxyType({
     "keyhole": (
         ((0, 0), (6, -1), (10, 1), (11, 5), (9, 9), (4, 10), (0, 8), (-1, 4)),
-        ((2, 3), (4, 2.5), (3.5, 5)),
-        ((6, 4), (8, 4.5), (7.5, 7), (5.5, 6.5)),
+        ((2, 2.75), (4, 2.5), (3.5, 5)),
+        ((6, 4), (8, 4.5), (7.5, 7), (5.5, 6.25)),
     ),
 })
 

@@ -153,6 +153,10 @@ class Board:
         # clipping's red test triangle): the next beat's words take them away, whatever
         # metaphor plays it (left up, the triangle lay under the gravity step after it)
         self.passing: dict[str, Mobject] = {}
+        # the keys of lines drawn amber ("being decided now") that are settled once their
+        # beat is over: the next beat's words turn them to the ink of a diagonal made, on the
+        # picture and in the panel (the holes' sweep kept its diagonals amber for 40 s)
+        self.settling: list[str] = []
         self.captions = captions  # the scene's one track (metaphors.recorded.captions_of)
         self.roles: dict[str, str] = {}
         # the labels of the part of P the current call runs on (divide and conquer's piece,
@@ -236,6 +240,7 @@ class Board:
         passed: list[Playable] = [*self.drop(*[key for key, m in self.passing.items()
                                                if self.objects.get(key) is m])]
         self.passing = {}
+        passed += self._settle()
         # the labels moved aside off what goes go back with it
         busy = {id(getattr(a, "mobject", None)) for a in anims}
         passed += self.labels_aside_back(busy) if passed else []
@@ -463,6 +468,24 @@ class Board:
         """The objects kept under ``keys`` go with the next beat's words (:attr:`passing`),
         unless taken away or replaced before."""
         self.passing.update({key: self.objects[key] for key in keys if key in self.objects})
+
+    def settles(self, *keys: str) -> None:
+        """The lines kept under ``keys`` turn to the ink with the next beat's words: drawn
+        amber while their beat decides them, settled after it (:attr:`settling`)."""
+        self.settling += [key for key in keys if key in self.objects]
+
+    def _settle(self) -> list[Playable]:
+        """The lines waiting to settle (:meth:`settles`), turning to the ink, in the panel
+        too; each kept under its key, now in the idle role."""
+        anims: list[Playable] = []
+        for key in self.settling:
+            line = self.objects.get(key)
+            if line is None:
+                continue
+            tag(line, "idle", line.name)
+            anims += [line.animate.set_color(self.theme.ink), *self.panel.recolour(key, None)]
+        self.settling = []
+        return anims
 
     def drop(self, *keys: str) -> list[Animation]:
         """Fade-outs for remembered objects, and for what the panel draws of them under the

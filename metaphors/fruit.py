@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import replace
 from typing import Any, cast
 
 import manim
@@ -417,7 +418,9 @@ def keyhole(board: Board, beat: Keyhole) -> None:
               "result", f"keyhole:{beat.hole}")
     board.play(beat, Create(knife), Indicate(board.markers[beat.corners[0]], color=theme.result),
                run_time=0.8)
-    board.play(beat, FadeOut(knife), FadeIn(cut), *board.clear_labels(cut),
+    # then, the cut made, what it is for (:attr:`Keyhole.then`), the one caption up
+    said = replace(beat, caption=beat.then) if beat.then else beat
+    board.play(said, FadeOut(knife), FadeIn(cut), *board.clear_labels(cut),
                *board.panel.draw(f"keyhole:{beat.hole}", *beat.points, None), run_time=0.5)
     board.keep(f"keyhole:{beat.hole}", cut)
 
@@ -611,6 +614,9 @@ class Keyhole(Beat):
     hole: int
     corners: tuple[str, str]
     points: tuple[Point, Point]
+    #: the words said once the cut is made (what it is for), after the caption said while the
+    #: knife cuts (which cut, from where to where); empty: the caption stays
+    then: str = ""
 
 
 @beat_kind("ear-test")
@@ -730,13 +736,34 @@ def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     p, m = (show(r) for r in walk.result_list(ret))
     hole = int("".join(ch for ch in p if ch in "₀₁₂₃₄₅₆₇₈₉").translate(_DIGITS))
     point_of = walk.root_points()
-    caption = f"Hole {hole}: a keyhole cut from {p} to {m}"
+    caption, then = _keyhole_words(walk.memo("fruit.holes cut", list), hole, p, m)
     copies = _far_side(walk, ret, p)
     if copies is not None:  # the call lines name them (clip_ear(c₁′, F″, c₂)): said once
-        caption += f"; on its other side, {p} and {m} are named {copies[0]} and {copies[1]}"
+        then += f"; past the cut, {p} and {m} are named {copies[0]} and {copies[1]}"
     yield walk.call_beat(Keyhole, caption, call, ret,
                          roles={p: "result", m: "result"}, hole=hole, corners=(p, m),
-                         points=(point(point_of[p]), point(point_of[m])))
+                         points=(point(point_of[p]), point(point_of[m])), then=then)
+
+
+def _keyhole_words(cut: list[int], hole: int, p: str, m: str) -> tuple[str, str]:
+    """What a keyhole cut from ``p`` to ``m`` is, said while the knife cuts, and what it is
+    for, said once it is made: the first says the rule (each hole, the right-most first, cut
+    from its right-most vertex to a vertex it sees) and why (one ring, which ear clipping
+    slices); the next holes, the rule again, shorter. ``cut``: the holes cut so far in the
+    run (appended to). Before, "Hole 2: a keyhole cut from c₂ to F" showed the cut and never
+    said what it was or why.
+
+    >>> _keyhole_words([], 2, "c₂", "F")[0]
+    'Hole 2, the right-most, first: a keyhole cut from its right-most vertex c₂ to F, a rind vertex it sees'
+    """
+    first = not cut
+    cut.append(hole)
+    if first:
+        return (f"Hole {hole}, the right-most, first: a keyhole cut from its right-most "
+                f"vertex {p} to {m}, a rind vertex it sees",
+                "Hole and rind are now one ring, which the knife slices as before")
+    return (f"Then hole {hole}: a keyhole cut from its right-most vertex {p} to {m}, a vertex "
+            "it sees", "One ring again")
 
 
 def _far_side(walk: Walk, ret: Event, p: str) -> tuple[str, str] | None:

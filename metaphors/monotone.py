@@ -293,14 +293,17 @@ def _helper_drawing(board: Board, beat: Helper) -> VGroup:
 
 
 def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
+    """A diagonal drawn amber while its beat says why it is added, then settled in the ink
+    of a diagonal made with the next beat (:meth:`Board.settles`): amber means "being
+    decided now", and the holes' sweep kept its first diagonal so for 40 s."""
     u, w = beat.points
+    key = f"diagonal:{''.join(beat.labels)}"
     line = tag(Line(board.at(u), board.at(w), color=board.theme.argument,
-                    stroke_width=board.theme.stroke * 1.3), "argument",
-               f"diagonal:{''.join(beat.labels)}")
-    board.keep(f"diagonal:{''.join(beat.labels)}", line)
+                    stroke_width=board.theme.stroke * 1.3), "argument", key)
+    board.keep(key, line)
     board.play(beat, Create(line), *board.clear_labels(line),
-               *board.panel.draw(f"diagonal:{''.join(beat.labels)}", u, w, "argument"),
-               run_time=1.0)
+               *board.panel.draw(key, u, w, "argument"), run_time=1.0)
+    board.settles(key)
 
 
 def pieces(board: Board, beat: Pieces) -> None:

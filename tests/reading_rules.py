@@ -3014,6 +3014,80 @@ def untold_claims(data: dict) -> list[str]:
     return found
 
 
+# --- a keyhole cut said while it is drawn --------------------------------------------------------
+
+#: what the words up while a run's first keyhole cut is drawn say (the knife cutting, then
+#: the cut made): the rule (the right-most hole's right-most vertex, to a vertex it sees) and
+#: what the cut is for (one ring, to slice)
+KEYHOLE_SAID = ("right-most", "sees", "one ring")
+
+
+def unexplained_keyholes(data: dict) -> list[str]:
+    """The runs whose first keyhole cut (``keyhole:N`` coming in, the ``knife`` drawn just
+    before it) is drawn under captions that do not say what it is and why, as ``"play 9
+    keyhole:2 drawn under words without: right-most, sees, one ring"``: the viewer saw
+    "Hole 2: a keyhole cut from c₂ to F" and a dark slit, and was never told that each
+    hole, the right-most first, is cut open from its right-most vertex to a vertex it sees,
+    making one ring that ear clipping slices (:data:`KEYHOLE_SAID`, case aside)."""
+    found: list[str] = []
+    caption, knife, explained = "", "", False
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            name = (anim.get("mobject") or {}).get("name") or ""
+            if name == "polygon" and anim["type"] == "Create":  # a run starts
+                explained = False
+            if anim["type"] not in INCOMING:
+                continue
+            if name == "knife":
+                knife = caption
+            elif name.startswith(_KEYHOLE) and not explained:
+                words = f"{knife} {caption}".lower()
+                missing = [w for w in KEYHOLE_SAID if w not in words]
+                if missing:
+                    found.append(f"play {k} {name} drawn under words without: {', '.join(missing)}")
+                explained = True  # the run's first cut says it; the next say less
+    return found
+
+
+# --- a diagonal made settles ---------------------------------------------------------------------
+
+#: the names of a diagonal made, on the picture and in the panel (the monotone sweep's
+#: ``diagonal:b₂A``, divide and conquer's ``diagonal:0``)
+_DIAGONAL = re.compile(r"^(?:panel/)?diagonal:")
+
+
+def amber_diagonals_left(data: dict) -> list[str]:
+    """The diagonals (``diagonal:…``, and the panel's ``panel/diagonal:…``) still amber once
+    the caption after the one they came under is up, as ``"play 19 diagonal:b₂A amber under
+    'b₂ becomes A–B's helper in place of A'"``: amber means "being decided now" (the theme's
+    legend), so a diagonal added is amber while its own words say why, then takes the ink of
+    a diagonal made. The holes' sweep kept b₂A amber from 20 s to the pieces at 60 s."""
+    from metaphors.theme import THEME
+
+    amber = THEME.argument.upper()
+    found: list[str] = []
+    shown: dict[str, str] = {}  # an amber diagonal's name -> the caption it came under
+    caption = ""
+    for k, play in enumerate(data["plays"]):
+        caption = play.get("subcaption") or caption
+        for anim in play["animations"]:
+            node = anim.get("mobject") or {}
+            name = node.get("name") or ""
+            if not _DIAGONAL.match(name):
+                continue
+            now = (anim.get("target") or node).get("stroke")
+            if anim["type"] in OUTGOING or (now or "").upper() != amber:
+                shown.pop(name, None)
+            elif anim["type"] in INCOMING:
+                shown[name] = caption
+        for name, said in list(shown.items()):
+            if play.get("subcaption") and caption != said:
+                found.append(f"play {k} {name} amber under {caption!r}")
+                del shown[name]  # each once
+    return found
+
+
 # --- a pseudocode's names read apart from the picture's labels ----------------------------------
 
 #: the pseudocode names of a polygon (not a vertex): a part a row names ("Q = P (good)", "Q =

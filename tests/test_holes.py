@@ -353,6 +353,22 @@ def test_simple_polygons_are_untouched_by_holes_support():
     assert triangulate(shape, "ear-clipping").triangles == ((0, 1, 4), (1, 2, 4), (2, 3, 4))
 
 
+def test_the_keyhole_sample_is_in_general_position():
+    """Issue 22 item 3: no three of the shown sample's vertices on one line, its holes'
+    counted (decided exactly). Its a₁ stood on one line with E and c₁ and with d₂ and c₂,
+    and its a₂ halfway from F to A."""
+    from itertools import combinations
+
+    from story.hunt import in_general_position
+
+    shape = read_any_polygon("keyhole")
+    on_a_line = [" ".join(shape.labels[k] for k in three)
+                 for three in combinations(range(shape.n), 3)
+                 if orient(*(shape.points[k] for k in three)) == 0]
+    assert on_a_line == []
+    assert in_general_position(shape.points)
+
+
 # --- the log and the beats of a run with holes ------------------------------------------------
 
 

@@ -29,6 +29,7 @@ from click.testing import CliRunner
 from tests.reading_rules import (
     VERTEX_KINDS,
     alike_neighbours,
+    amber_diagonals_left,
     amber_figure_marks,
     answers_on_cards,
     answers_over_pictures,
@@ -131,6 +132,7 @@ from tests.reading_rules import (
     unanswered_card_questions,
     uneven_countdowns,
     unexplained_grey,
+    unexplained_keyholes,
     unexplained_plates,
     unexplained_primes,
     unexplained_tool_parts,
@@ -711,6 +713,13 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert picks_amber_twice(data) == [], chapter.slug
     # what a close-up fades goes before it zooms in and comes back once the picture is whole
     assert fading_while_zooming(data) == [], chapter.slug
+
+    # a diagonal added is amber while its words are up, then settles in the ink (the holes'
+    # sweep kept its diagonals amber, "being decided now", for 40 s)
+    assert amber_diagonals_left(data) == [], chapter.slug
+    # a run's first keyhole cut is said while it is drawn: the right-most hole's right-most
+    # vertex, to a vertex it sees, one ring to slice (the cut came with no why)
+    assert unexplained_keyholes(data) == [], chapter.slug
     # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
     assert red_bursts_before_verdicts(data) == [], chapter.slug
     assert labels_under_faces(data) == [], chapter.slug

@@ -46,6 +46,7 @@ from story.storyboard import spoken_pseudocode
 from tests.reading_rules import (
     LEAST_LINE,
     LEAST_TRIANGLE,
+    amber_diagonals_left,
     answers_on_cards,
     arithmetic_vertex_names,
     balls_not_there,
@@ -122,6 +123,7 @@ from tests.reading_rules import (
     tails_beside_labels,
     thinnest_triangle,
     ticks_outside,
+    unexplained_keyholes,
     unexplained_plates,
     unexplained_primes,
     unexplained_tool_parts,
@@ -554,6 +556,13 @@ def test_no_note_is_under_a_moving_tool(case):
     assert picks_amber_twice(graph(case).data) == [], case.id
     # what a close-up fades goes before it zooms in and comes back once the picture is whole
     assert fading_while_zooming(graph(case).data) == [], case.id
+
+    # a diagonal added is amber while its words are up, then settles in the ink (the holes'
+    # sweep kept its diagonals amber, "being decided now", for 40 s)
+    assert amber_diagonals_left(graph(case).data) == [], case.id
+    # a run's first keyhole cut is said while it is drawn: the right-most hole's right-most
+    # vertex, to a vertex it sees, one ring to slice (the cut came with no why)
+    assert unexplained_keyholes(graph(case).data) == [], case.id
     # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
     assert red_bursts_before_verdicts(graph(case).data) == [], case.id
 
