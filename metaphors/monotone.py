@@ -306,11 +306,43 @@ def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
     board.settles(key)
 
 
+def piece_tints(pieces: Sequence[Sequence[Point]], palette: Sequence[str]) -> list[str]:
+    """A tint for each piece, those sharing a side unlike: breadth first from the first
+    piece, each the first of ``palette`` its coloured neighbours leave (the least used if
+    they take all). The pieces of a polygon without holes, split along diagonals, neighbour
+    as a tree does: two tints do.
+
+    >>> square = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    >>> piece_tints([square[:3], [square[0], square[2], square[3]], [(5, 5), (6, 5), (6, 6)]],
+    ...             ("teal", "tan", "olive"))
+    ['teal', 'tan', 'teal']
+    """
+    sides = [{frozenset(pair) for pair in zip(piece, [*piece[1:], piece[0]], strict=True)}
+             for piece in pieces]
+    tints: dict[int, str] = {}
+    for start in range(len(pieces)):
+        queue = [start] if start not in tints else []
+        while queue:
+            k = queue.pop(0)
+            if k in tints:
+                continue
+            near = [j for j in range(len(pieces)) if j != k and sides[j] & sides[k]]
+            taken = {tints[j] for j in near if j in tints}
+            free = [c for c in palette if c not in taken]
+            tints[k] = free[0] if free else min(
+                palette, key=lambda c: (list(tints.values()).count(c), palette.index(c)))
+            queue += [j for j in near if j not in tints]
+    return [tints[k] for k in range(len(pieces))]
+
+
 def pieces(board: Board, beat: Pieces) -> None:
+    """The y-monotone pieces tinted, neighbours unlike, in divide and conquer's tints: the
+    palette's blue read as the blue of what a call runs on, and its violet as the sweep's
+    purple (chapter 5: a blue piece beside the violet rest of P)."""
     theme = board.theme
     tints = []
-    for k, points in enumerate(beat.pieces):
-        colour = theme.pieces[k % len(theme.pieces)]
+    for k, (points, colour) in enumerate(zip(beat.pieces, piece_tints(
+            beat.pieces, theme.part_tints), strict=True)):
         tint = tag(MPolygon(*[board.at(p) for p in points], color=colour, stroke_width=1,
                             fill_color=colour, fill_opacity=theme.piece_opacity), None,
                    f"piece:{k + 1}")

@@ -38,8 +38,8 @@ dial          grey        the frame of a close-up (gravity's window)
 fruit, rind   orange,     the fruit sliced (ear clipping), on its plate; its rind a
               brown       peel's brown, no role's (its olive was near the "yes" green)
 pieces        tints       the sub-polygons of divide and conquer and the monotone
-                          pieces (the parts a split or a partition makes); divide and
-                          conquer's only those far from the blue of the piece worked on
+                          pieces (the parts a split or a partition makes): teal, tan
+                          and olive, far from the blue of what a call runs on
 triangles     green       the triangles of a finished triangulation: the result's green,
               shades      neighbours in other shades (never the pieces' tints)
 ============  ==========  ===========================================================
@@ -83,13 +83,14 @@ class Theme:
     ball: str = "#ff8c42"
     band: str = "#ff5fa2"
     gravity: str = "#c7cfdb"
-    #: tints of the sub-polygons of divide and conquer (the two halves of a split differ)
+    #: tints of the figures' series and parts (the overview's, chapter 5's plot)
     pieces: tuple[str, ...] = ("#8e6cf0", "#2bb5a8", "#c9a25a", "#5b8fd5", "#9cbf4a")
     piece_opacity: float = 0.3
-    #: the tints divide and conquer's parts take: the palette's but its blue and violet, which
-    #: beside the part worked on (``called`` at :attr:`active_opacity`) read as its colour
-    #: (CIE76 ΔE 21 and 18 as the screen shows them; teal 37, tan 47, olive 54): the part
-    #: worked on was told from its neighbours only by a shade of blue (the scene at 72 s)
+    #: the tints divide and conquer's parts and the monotone pieces take (neighbours unlike):
+    #: the palette's but its blue and violet, which beside the part worked on (``called`` at
+    #: :attr:`active_opacity`) read as its colour (CIE76 ΔE 21 and 18 as the screen shows
+    #: them; teal 37, tan 47, olive 54): the part worked on was told from its neighbours only
+    #: by a shade of blue (the scene at 72 s)
     part_tints: tuple[str, ...] = ("#2bb5a8", "#c9a25a", "#9cbf4a")
     #: the fills of a finished triangulation's triangles, in the result's green: two that
     #: share a side differ (:func:`metaphors.drawing.neighbour_shades`; a polygon's need two)

@@ -5682,10 +5682,6 @@ def unanswered_card_questions(data: dict) -> list[str]:
     return found
 
 
-#: the drawing of P a close-up zooms (:class:`metaphors.gravity.CloseUp`)
-_CLOSE_UP = "close-up"
-
-
 def fading_while_zooming(data: dict) -> list[str]:
     """What fades in or out while a close-up zooms, as ``"play 76: vertex:A"``: the
     vertices outside the close-up's box faded at their places in the whole picture while P
@@ -5703,3 +5699,27 @@ def fading_while_zooming(data: dict) -> list[str]:
                       and not ((anim.get("mobject") or {}).get("name") or "").startswith(
                           _CLOSE_UP)]
     return found
+
+
+def pieces_in_the_called_blue(data: dict) -> list[str]:
+    """The pieces (``piece:…``, a split's or a partition's parts) tinted so that they read as
+    the blue of what a call runs on, as ``"play 60 piece:2"``: within
+    :data:`LEAST_PART_APART` of that blue at the piece's own opacity, each over the
+    background. Chapter 5's monotone pieces took the palette in turn, and the piece KLM was
+    blue beside the violet rest of P: no call runs on it. The piece a call runs on, in that
+    blue itself (divide and conquer's part worked on), is not judged. Each piece once."""
+    from metaphors.theme import THEME
+
+    found: dict[str, str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                name, fill = node.get("name") or "", _one_colour(node.get("fill"))
+                opacity = float(node.get("fill_opacity") or 0)
+                if (not name.startswith("piece:") or not fill or not opacity or name in found
+                        or fill == THEME.called.upper()):
+                    continue
+                blue = _over(THEME.called.upper(), opacity, THEME.background)
+                if delta_e(_over(fill, opacity, THEME.background), blue) < LEAST_PART_APART:
+                    found[name] = f"play {k} {name}"
+    return list(found.values())

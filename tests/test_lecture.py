@@ -101,6 +101,7 @@ from tests.reading_rules import (
     panels_behind_the_picture,
     picks_amber_twice,
     picks_in_the_red,
+    pieces_in_the_called_blue,
     placeholders_as_labels,
     recoloured_close_ups,
     red_bursts_before_verdicts,
@@ -717,6 +718,8 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # a diagonal added is amber while its words are up, then settles in the ink (the holes'
     # sweep kept its diagonals amber, "being decided now", for 40 s)
     assert amber_diagonals_left(data) == [], chapter.slug
+    # no piece a split or partition makes reads as the blue of what a call runs on
+    assert pieces_in_the_called_blue(data) == [], chapter.slug
     # a run's first keyhole cut is said while it is drawn: the right-most hole's right-most
     # vertex, to a vertex it sees, one ring to slice (the cut came with no why)
     assert unexplained_keyholes(data) == [], chapter.slug

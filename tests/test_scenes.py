@@ -98,6 +98,7 @@ from tests.reading_rules import (
     panels_behind_the_picture,
     picks_amber_twice,
     picks_in_the_red,
+    pieces_in_the_called_blue,
     placeholders_as_labels,
     recoloured_close_ups,
     red_bursts_before_verdicts,
@@ -560,6 +561,8 @@ def test_no_note_is_under_a_moving_tool(case):
     # a diagonal added is amber while its words are up, then settles in the ink (the holes'
     # sweep kept its diagonals amber, "being decided now", for 40 s)
     assert amber_diagonals_left(graph(case).data) == [], case.id
+    # no piece a split or partition makes reads as the blue of what a call runs on
+    assert pieces_in_the_called_blue(graph(case).data) == [], case.id
     # a run's first keyhole cut is said while it is drawn: the right-most hole's right-most
     # vertex, to a vertex it sees, one ring to slice (the cut came with no why)
     assert unexplained_keyholes(graph(case).data) == [], case.id
