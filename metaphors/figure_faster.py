@@ -50,6 +50,7 @@ from metaphors.figure_caption import figure_caption
 from metaphors.figure_plots import MARKS, Area, Series, axis_names, line_plot, point_mark
 from metaphors.labels import EDGE_MARGIN, placed_vertex_markers
 from metaphors.layout import area_of
+from metaphors.monotone import piece_tints
 from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
@@ -157,11 +158,12 @@ def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
     frame = Frame(polygon.points, *box)
     cut = monotone_partition(polygon)
     level = level_line(polygon)
-    tints = [tag(MPolygon(*frame.many([polygon.points[k] for k in piece]),
-                          color=theme.pieces[n % len(theme.pieces)], stroke_width=0,
-                          fill_color=theme.pieces[n % len(theme.pieces)],
+    corners = [[polygon.points[k] for k in piece] for piece in cut.pieces]
+    # the run's tints, neighbours unlike (a blue piece read as what a call runs on)
+    tints = [tag(MPolygon(*frame.many(points), color=tint, stroke_width=0, fill_color=tint,
                           fill_opacity=theme.done_opacity), None, "figure:piece")
-             for n, piece in enumerate(cut.pieces)]
+             for points, tint in zip(corners, piece_tints(corners, theme.part_tints),
+                                     strict=True)]
     # amber, as the run draws them (its diagonals stay amber): one colour, one meaning
     lines = [tag(Line(frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[w]),
                       color=theme.argument, stroke_width=theme.stroke * 1.5), "argument",
@@ -402,7 +404,8 @@ def circle_figure(polygon: Polygon, circle: Circumcircle, theme: Theme, box: Box
 
 def _labels_clear(polygon: Polygon, figure: CircleFigure) -> bool:
     """Whether every label of ``figure`` found a place :data:`metaphors.labels.EDGE_MARGIN`
-    clear of its circle and of every side (HKM's circle ran along M's label)."""
+    clear of its circle and of every side (HKM's circle ran along M's label), nearer its
+    own dot than any other (:func:`_labels_own`)."""
     (cx, cy), r = (float(v) for v in figure.circle.centre), figure.circle.radius
     scene = figure.frame
     rim = shapely.Point(*scene.to_scene((cx, cy))[:2]).buffer(r * scene.scale, 256).exterior
@@ -410,7 +413,23 @@ def _labels_clear(polygon: Polygon, figure: CircleFigure) -> bool:
                                                           scene.to_scene(polygon.points[w])[:2]])
                                       for u, w in figure.sides)])
     return all(shapely.box(*area_of(marker[1])).distance(lines) >= EDGE_MARGIN - 1e-6
-               for marker in figure.markers)
+               for marker in figure.markers) and _labels_own(figure.markers)
+
+
+def _labels_own(markers: VGroup) -> bool:
+    """Whether each label without a leader stands nearer its own dot than any other dot
+    (CDG's circle: G's label, with no room by G on the circle, stood above H's dot, and H's,
+    led off to the right, left G's the nearest label to H: "the circle of CDG" named a G
+    the viewer found at H)."""
+    dots = [shapely.Point(*marker[0].get_center()[:2]) for marker in markers]
+    for k, marker in enumerate(markers):
+        if len(marker) > 2:  # its leader points at its dot
+            continue
+        box = shapely.box(*area_of(marker[1]))
+        own = box.distance(dots[k])
+        if any(box.distance(dot) < own for j, dot in enumerate(dots) if j != k):
+            return False
+    return True
 
 
 def shown_circle(polygon: Polygon, theme: Theme, box: Box) -> CircleFigure:

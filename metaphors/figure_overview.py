@@ -243,7 +243,7 @@ def _why_n_minus_2(polygon: Polygon, frame: Frame, found: Examples, box: Box,
     name = found.name(found.inner, polygon)
     halves = _halves(polygon, *found.inner)
     tints = [tag(MPolygon(*frame.many([polygon.points[k] for k in half]), stroke_width=0,
-                          fill_color=theme.pieces[k], fill_opacity=theme.piece_opacity * 1.5),
+                          fill_color=theme.part_tints[k], fill_opacity=theme.piece_opacity * 1.5),
                  None, "figure:half") for k, half in enumerate(halves)]
     cut = _line(polygon, frame, found.inner, theme.result, "result", "figure:inner-diagonal",
                 theme)

@@ -203,7 +203,7 @@ def _diagonal(figure: Figure, polygon: Polygon, frame: Frame, theme: Theme) -> l
     lo, hi = sorted((i, j))
     halves = [list(range(lo, hi + 1)), [*range(hi, polygon.n), *range(0, lo + 1)]]
     tints = [tag(MPolygon(*frame.many([polygon.points[k] for k in half]),
-                          color=theme.pieces[n], stroke_width=0, fill_color=theme.pieces[n],
+                          color=theme.part_tints[n], stroke_width=0, fill_color=theme.part_tints[n],
                           fill_opacity=theme.piece_opacity), None, "figure:half")
              for n, half in enumerate(halves)]
     line = tag(Line(frame.to_scene(polygon.points[i]), frame.to_scene(polygon.points[j]),

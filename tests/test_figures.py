@@ -684,14 +684,36 @@ def test_the_delaunay_figure_s_labels_keep_clear_of_its_circle_and_triangles(mon
     assert {"K × circle", "G × triangle"} <= set(labels_on_lines(old, old_ring, triangles))
     # and M, whose mark sat on the line, was said to be only just inside
     assert "M (just)" in label(old_figure)
-    # the circle drawn now is the first whose labels find clear places: on the lecture polygon
-    # in general position (K and I moved), CDG's, whose three labels stand off its rim
+    # the circle drawn now is the first whose labels find clear places, each by its own dot:
+    # on the lecture polygon in general position, HKM's
     monkeypatch.undo()
     shown = figure_mobjects(Figure("delaunay-circle"), "lecture")
-    assert label(shown).startswith("the circle of CDG")
+    assert label(shown).startswith("the circle of HKM")
     (rim,) = named(shown, "figure:circumcircle")
     (marks,) = named(shown, "figure:vertices")
     assert labels_on_lines(marks, rim, named(shown, "figure:triangle")) == []
+    assert labels_by_other_dots(marks) == []
+    # CDG's, drawn before: no room by G on its rim, G's label stood above H's dot (chapter 5
+    # at 154 s: "the circle of CDG" named a G the viewer found at H)
+    p = read_polygon("lecture")
+    cdg = next(c for c in faster.ranked_circles(p)
+               if "".join(p.labels[k] for k in c.triangle) == "CDG")
+    assert "G" in labels_by_other_dots(faster.circle_figure(p, cdg, THEME, BOX).markers)
+
+
+def labels_by_other_dots(markers) -> list[str]:
+    """The labels (without a leader) nearer another vertex's dot than their own."""
+    import shapely
+
+    dots = [shapely.Point(*marker[0].get_center()[:2]) for marker in markers]
+    found = []
+    for k, marker in enumerate(markers):
+        text = marker[1]
+        box = shapely.box(*text.get_corner([-1, -1, 0])[:2], *text.get_corner([1, 1, 0])[:2])
+        if len(marker) == 2 and any(box.distance(dot) < box.distance(dots[k])
+                                    for j, dot in enumerate(dots) if j != k):
+            found.append(text.original_text)
+    return found
 
 
 def dots_near_the_rim(drawn) -> list[str]:
