@@ -3116,6 +3116,17 @@ def placeholders_as_labels(data: dict) -> list[str]:
     no"). A name of a polygon is never a vertex the run substitutes for it. Each name once
     per run (its polygon drawn begins one), at the first play showing both."""
     found: list[str] = []
+    for k, rows, labels, said in _rows_beside_labels(data):
+        for name in sorted((polygon_names(sorted(rows)) & labels) - said):
+            found.append(f"play {k}: {name}")
+            said.add(name)
+    return found
+
+
+def _rows_beside_labels(data: dict) -> Iterator[tuple[int, set[str], set[str], set[str]]]:
+    """For each play: its index, the pseudocode rows (``code:``) and the vertex labels its
+    run has shown so far, and the names said of it (to fill: each name once per run). A run
+    begins where its polygon is drawn."""
     labels: set[str] = set()
     rows: set[str] = set()
     said: set[str] = set()
@@ -3130,10 +3141,7 @@ def placeholders_as_labels(data: dict) -> list[str]:
                         labels.add(name.removeprefix("vertex:"))
                     elif name.startswith("code:") and (part.get("text") or "").strip():
                         rows.add(part["text"].strip())
-        for name in sorted((polygon_names(sorted(rows)) & labels) - said):
-            found.append(f"play {k}: {name}")
-            said.add(name)
-    return found
+        yield k, rows, labels, said
 #: a one-letter name in lower case (``d``), not the article "a": read beside a vertex
 #: labelled with its capital (``D``), the two are one letter in two sizes
 _LOWER_NAME = re.compile(r"(?<![\w′'’])([b-z])(?![\w′'’])")
@@ -3147,20 +3155,7 @@ def case_twin_names(data: dict) -> list[str]:
     its size only. Each name once per run (its polygon drawn begins one), at the first play
     showing both."""
     found: list[str] = []
-    labels: set[str] = set()
-    rows: set[str] = set()
-    said: set[str] = set()
-    for k, play in enumerate(data["plays"]):
-        for anim in play["animations"]:
-            if anim.get("type") == "Create" and (anim.get("mobject") or {}).get("name") in _POLYGONS:
-                labels, rows, said = set(), set(), set()
-            for _, node in _recorded(anim):
-                for part in mobject_nodes(node):
-                    name = part.get("name") or ""
-                    if name.startswith("vertex:"):
-                        labels.add(name.removeprefix("vertex:"))
-                    elif name.startswith("code:") and (part.get("text") or "").strip():
-                        rows.add(part["text"].strip())
+    for k, rows, labels, said in _rows_beside_labels(data):
         names = {m for row in rows for m in _LOWER_NAME.findall(row)}
         for name in sorted(n for n in names if n.upper() in labels and n not in said):
             found.append(f"play {k}: {name} ({name.upper()})")

@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 from tests.reading_rules import (
+    delta_e,
     faint_cuts,
     flickering_counts,
     labels_moved_by_cuts,
@@ -367,22 +368,6 @@ def test_a_close_up_in_other_colours_is_found():
 # --- the review of ear clipping (panel7) ----------------------------------------------------------
 
 
-def _lab(colour: str) -> tuple[float, float, float]:
-    """CIE L*a*b* (D65) of a ``#rrggbb`` colour."""
-    def linear(c: float) -> float:
-        return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
-
-    r, g, b = (linear(int(colour.lstrip("#")[k:k + 2], 16) / 255) for k in (0, 2, 4))
-    x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047
-    y = 0.2126 * r + 0.7152 * g + 0.0722 * b
-    z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883
-
-    def f(t: float) -> float:
-        return t ** (1 / 3) if t > 0.008856 else 7.787 * t + 16 / 116
-
-    return 116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))
-
-
 def test_the_rind_has_a_colour_no_role_has():
     """One colour, one meaning (issue 22 item 4): the rind's olive (#7a9e3d) was 29 (CIE76
     ΔE) from the result's green, the "yes" of every ear test drawn round the fruit it
@@ -390,8 +375,7 @@ def test_the_rind_has_a_colour_no_role_has():
     from metaphors.theme import THEME
     from story.roles import ROLES
 
-    near = {role: round(math.dist(_lab(THEME.rind), _lab(THEME.role_colour(role))))
-            for role in ROLES}
+    near = {role: round(delta_e(THEME.rind, THEME.role_colour(role))) for role in ROLES}
     assert min(near.values()) >= 40, near
 
 
