@@ -143,33 +143,39 @@ def triangle_mobject(
     )
 
 
-def neighbour_shades(triangles: Sequence[Sequence[Sequence[float]]]) -> list[int]:
-    """Each triangle's shade (an index into :attr:`metaphors.theme.Theme.triangle_shades`),
-    two triangles that share a side never alike, so that each is counted (chapter 1's GCD and
-    GDF, side by side in one purple, read as one). Greedy, breadth first from the first
-    triangle in sorted order, each neighbour in sorted order: a polygon's triangles sharing
-    sides form a tree, so two shades alternate; with holes a third may come. The same
-    triangles give the same shades in any order.
+def neighbour_shades(rings: Sequence[Sequence[Sequence[float]]]) -> list[int]:
+    """Each ring's shade (for triangles, an index into
+    :attr:`metaphors.theme.Theme.triangle_shades`), two rings that share a side never alike,
+    so that each is counted (chapter 1's GCD and GDF, side by side in one purple, read as
+    one). Greedy, breadth first from the first ring in sorted order, each neighbour in sorted
+    order: a polygon's pieces sharing sides (triangles, or the parts of any cut along
+    diagonals) form a tree, so two shades alternate; with holes a third may come. The same
+    rings give the same shades in any order.
 
     >>> neighbour_shades([((0, 0), (1, 0), (0, 1)), ((1, 0), (1, 1), (0, 1)),
     ...                   ((1, 1), (2, 1), (1, 0))])
     [0, 1, 0]
+    >>> neighbour_shades([((2, 0), (3, 0), (3, 1), (2, 1)), ((0, 0), (2, 0), (2, 1))])
+    [1, 0]
     """
-    keys = [tuple(sorted((float(x), float(y)) for x, y in t)) for t in triangles]
-    sides: dict[tuple, list[int]] = {}  # a side (its two corners) → the triangles on it
-    for k, key in enumerate(keys):
-        for side in ((key[0], key[1]), (key[0], key[2]), (key[1], key[2])):
-            sides.setdefault(side, []).append(k)
-    near = [sorted({j for side in ((key[0], key[1]), (key[0], key[2]), (key[1], key[2]))
-                    for j in sides[side] if j != k}, key=lambda j: keys[j])
-            for k, key in enumerate(keys)]
+    corners = [[(float(x), float(y)) for x, y in ring] for ring in rings]
+    keys = [tuple(sorted(ring)) for ring in corners]
+    sides: dict[frozenset, list[int]] = {}  # a side (its two corners) → the rings on it
+    for k, ring in enumerate(corners):
+        for side in zip(ring, [*ring[1:], ring[0]], strict=True):
+            sides.setdefault(frozenset(side), []).append(k)
+    near: list[set[int]] = [set() for _ in keys]
+    for on_side in sides.values():
+        for k in on_side:
+            near[k].update(j for j in on_side if j != k)
+    ordered = [sorted(js, key=lambda j: keys[j]) for js in near]
     shades: dict[int, int] = {}
     for root in sorted(range(len(keys)), key=lambda k: keys[k]):
         if root in shades:
             continue
         shades[root], queue = 0, [root]
         while queue:
-            for j in near[queue.pop(0)]:
+            for j in ordered[queue.pop(0)]:
                 if j not in shades:
                     taken = {shades[m] for m in near[j] if m in shades}
                     shades[j] = min(s for s in range(len(taken) + 1) if s not in taken)

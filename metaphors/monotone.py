@@ -38,7 +38,7 @@ from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 
 from metaphors.board import Board
-from metaphors.drawing import count_words, ending_beat, triangulation_pieces
+from metaphors.drawing import count_words, ending_beat, neighbour_shades, triangulation_pieces
 from metaphors.layout import (
     FRAME_AREA,
     SUBTITLE_TOP,
@@ -307,32 +307,16 @@ def monotone_diagonal(board: Board, beat: MonotoneDiagonal) -> None:
 
 
 def piece_tints(pieces: Sequence[Sequence[Point]], palette: Sequence[str]) -> list[str]:
-    """A tint for each piece, those sharing a side unlike: breadth first from the first
-    piece, each the first of ``palette`` its coloured neighbours leave (the least used if
-    they take all). The pieces of a polygon without holes, split along diagonals, neighbour
-    as a tree does: two tints do.
+    """A tint for each piece, those sharing a side unlike (:func:`neighbour_shades`, its
+    shades taken in ``palette``'s order). The pieces of a polygon without holes, split along
+    diagonals, neighbour as a tree does: two tints do.
 
     >>> square = [(0, 0), (1, 0), (1, 1), (0, 1)]
     >>> piece_tints([square[:3], [square[0], square[2], square[3]], [(5, 5), (6, 5), (6, 6)]],
     ...             ("teal", "tan", "olive"))
-    ['teal', 'tan', 'teal']
+    ['tan', 'teal', 'teal']
     """
-    sides = [{frozenset(pair) for pair in zip(piece, [*piece[1:], piece[0]], strict=True)}
-             for piece in pieces]
-    tints: dict[int, str] = {}
-    for start in range(len(pieces)):
-        queue = [start] if start not in tints else []
-        while queue:
-            k = queue.pop(0)
-            if k in tints:
-                continue
-            near = [j for j in range(len(pieces)) if j != k and sides[j] & sides[k]]
-            taken = {tints[j] for j in near if j in tints}
-            free = [c for c in palette if c not in taken]
-            tints[k] = free[0] if free else min(
-                palette, key=lambda c: (list(tints.values()).count(c), palette.index(c)))
-            queue += [j for j in near if j not in tints]
-    return [tints[k] for k in range(len(pieces))]
+    return [palette[shade % len(palette)] for shade in neighbour_shades(pieces)]
 
 
 def pieces(board: Board, beat: Pieces) -> None:
