@@ -5718,3 +5718,134 @@ def pieces_in_the_called_blue(data: dict) -> list[str]:
                 if delta_e(_over(fill, opacity, THEME.background), blue) < LEAST_PART_APART:
                     found[name] = f"play {k} {name}"
     return list(found.values())
+
+
+# --- open9: chapters 1 and 2 as a teacher reviewed them (labels, marks, captions off the picture) --
+
+#: the least gap between a subtitle's lines and a vertex label of the picture on screen (1 %
+#: of the frame's height): nearer, the caption reads over the picture, or covers a letter. A
+#: run's board leaves its lowest label 0.10 above a one-line subtitle (chapters 1, 3 and 5)
+LEAST_CAPTION_LABEL_GAP = 0.08
+
+
+def _text_boxes_of(node: dict) -> list[tuple[float, float, float, float]]:
+    """The boxes of a node's texts (a subtitle's lines)."""
+    return [tuple(part["box"]) for part in mobject_nodes(node)
+            if part.get("box") and (part.get("text") or "").strip()]
+
+
+def captions_over_labels(data: dict, gap: float = LEAST_CAPTION_LABEL_GAP) -> list[str]:
+    """The vertex labels (a board's, a stage's, a card's figure's) that a subtitle shown
+    with them comes nearer than ``gap`` to, as ``"play 96 C 0.00 from the subtitle"``: chapter
+    2's two-line caption "Parallel to AC, … / E is the farthest from AC …" ran over C's label
+    at 176-182 s. The picture sits clear of the subtitles' band. (:func:`words_on_the_picture`
+    judged only the end's texts, in the scenes.) Each label once, at the first play."""
+    from shapely.geometry import box as area
+
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:", "figure:vertices", "subtitle")):
+        subtitle = shown.get("subtitle")
+        if subtitle is None:
+            continue
+        lines = [area(*b) for b in _text_boxes_of(subtitle)]
+        for name, node in shown.items():
+            if not name.startswith(("vertex:", "figure:vertices")):
+                continue
+            for text, box in _marker_labels(name, node):
+                near = min((line.distance(area(*box)) for line in lines), default=gap)
+                if near < gap - 1e-9:
+                    found.setdefault(text, f"play {k} {text} {near:.2f} from the subtitle")
+    return sorted(found.values(), key=lambda s: (int(s.split()[1]), s))
+
+
+#: how much of a label's box may lie on the red "outside P" region (scene units²): a speck
+#: where a box's corner grazes it
+MOST_ON_THE_RED = 1e-3
+#: the least gap between the crossed edge's name and the red region or P's fill (3 % of the
+#: frame's height): "edge E–A" 0.14 from the red wedge, in T's thin corridor beside it, read
+#: as written on it (chapter 2 at 56-60 s)
+LEAST_NAME_GAP = 0.24
+
+
+def labels_on_the_red(data: dict) -> list[str]:
+    """The vertex labels over the red "outside P" region (:data:`_RED_REGIONS`), halo or not,
+    and the crossed edge's name (``analysis:edge-name``) within :data:`LEAST_NAME_GAP` of it
+    or of P's fill, as ``"play
+    51 D on the red"`` or ``"play 53 'edge E–A' on P"``: chapter 2's amber D and "edge E–A"
+    stood on the red wedge (56-60 s, and again in each heuristic's pass), where a dark halo
+    (:func:`picks_in_the_red`) let them read but hid the red the pass is about. A name of the
+    edge stands beside it, off the picture's fills. Each text and region once a picture."""
+    import shapely
+
+    found: dict[tuple[str, str], str] = {}
+    names = ("vertex:", "analysis:edge-name", "analysis:polygon", *_RED_REGIONS)
+    picture, last = 0, None
+    for k, shown in _shown_after_plays(data, names):
+        if shown is not last:  # a picture opened: each pass judged on its own
+            picture, last = picture + 1, shown
+        red = [shapely.Polygon(ring) for name, node in shown.items()
+               if name.startswith(_RED_REGIONS) for part in mobject_nodes(node)
+               if (part.get("fill_opacity") or 0) > 0 for ring in _paths(part)]
+        regions = [("the red", shapely.union_all([r for r in red if r.is_valid]))] if red else []
+        edge_regions = list(regions)
+        if "analysis:polygon" in shown:
+            edge_regions.append(("P", _outline(shown["analysis:polygon"])))
+        for name, node in shown.items():
+            if name.startswith("vertex:"):
+                texts, against = list(_marker_labels(name, node)), regions
+            elif name == "analysis:edge-name":
+                texts, against = [(repr(t), b) for t, b in _marker_labels(name, {
+                    "submobjects": [node]})] or [(repr(node.get("text")), node.get("box"))], \
+                    edge_regions
+            else:
+                continue
+            for text, box in texts:
+                if not box:
+                    continue
+                for where, region in against:
+                    if region is None:
+                        continue
+                    on = (region.intersection(shapely.box(*box)).area > MOST_ON_THE_RED
+                          if name.startswith("vertex:")
+                          else region.distance(shapely.box(*box)) < LEAST_NAME_GAP - 1e-9)
+                    if on:
+                        found.setdefault((picture, text, where),
+                                         f"play {k} {text} on {where}")
+    return sorted(found.values(), key=lambda s: (int(s.split()[1]), s))
+
+
+#: the plays within which a polygon faded out is not drawn again: one picture per idea
+REDRAWN_WITHIN = 4
+#: the pictures' polygons: a run's board, an analysis's stage, a card's figure
+_ALL_POLYGONS = ("polygon", "analysis:polygon", "figure:polygon")
+
+
+def refaded_polygons(data: dict, within: int = REDRAWN_WITHIN,
+                     involving: tuple[str, ...] = _ALL_POLYGONS) -> list[str]:
+    """The polygons (:data:`_ALL_POLYGONS`) faded out and drawn anew, the same shape
+    (:func:`_shape`: wherever, however large), within ``within`` plays, as ``"play 14:
+    figure:polygon faded at play 12, analysis:polygon drawn"``: chapter 2's card drew the
+    counterexample small beside its words, faded it, and its pass drew it again full size
+    (20-30 s, in each heuristic): two pictures of one idea. The picture goes on: moved and
+    grown into place, or drawn once. Only the hand-overs where the one faded or the one
+    drawn is named in ``involving``."""
+    found: list[str] = []
+    faded: list[tuple[int, str, tuple]] = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                for part in mobject_nodes(node):
+                    if part.get("name") not in _ALL_POLYGONS or len(part.get("points") or ()) < 12:
+                        continue
+                    if kind in OUTGOING:
+                        faded.append((k, part["name"], _shape(part)))
+                    elif kind in INCOMING:
+                        shape = _shape(part)
+                        went = [(j, name) for j, name, was in faded
+                                if was == shape and 0 < k - j <= within
+                                and involving and (name in involving
+                                                   or part["name"] in involving)]
+                        if went:
+                            found.append(f"play {k}: {went[-1][1]} faded at play {went[-1][0]}, "
+                                         f"{part['name']} drawn")
+    return found

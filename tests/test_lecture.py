@@ -39,6 +39,7 @@ from tests.reading_rules import (
     bare_ticks,
     broken_counts,
     broken_summaries,
+    captions_over_labels,
     claims_along_edges,
     claims_given_away,
     claims_like_their_edges,
@@ -82,6 +83,7 @@ from tests.reading_rules import (
     labels_on_t_without_halo,
     labels_on_the_ball,
     labels_on_the_fruit_with_room,
+    labels_on_the_red,
     labels_struck_by_the_sweep,
     labels_under_faces,
     labels_under_test_triangles,
@@ -106,6 +108,7 @@ from tests.reading_rules import (
     recoloured_close_ups,
     red_bursts_before_verdicts,
     redrawn_pictures,
+    refaded_polygons,
     refaded_texts,
     refuted_lit_rows,
     repeated_verdicts,
@@ -881,6 +884,16 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 item 4: a card's claim told from the edge it crosses (BD and E–A, both solid
     # red, read as one red cross)
     assert claims_like_their_edges(data) == [], chapter.slug
+
+    # open9 (teacher review of chapters 1 and 2): no subtitle over a vertex label (chapter 2's
+    # two-line caption ran over C at 176-182 s), and no label on the red "outside P" region
+    # nor the crossed edge's name by it or on P's fill (chapter 2's D and "edge E–A", 56 s)
+    assert captions_over_labels(data) == [], chapter.slug
+    assert labels_on_the_red(data) == [], chapter.slug
+    # one picture per idea: a pass's polygon is its card's, moved into place, not faded and
+    # drawn again (chapter 2's cards and passes, 20-30 s). Judged where a pass is one side:
+    # the cards and runs of chapters 1, 3, 4, 5 and 7 still fade P and draw it again
+    assert refaded_polygons(data, involving=("analysis:polygon",)) == [], chapter.slug
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
     """Issue 22 item 7: Forišek–Steinová's experience is for the teacher: no chapter plays
