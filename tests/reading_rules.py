@@ -2442,8 +2442,11 @@ def ticks_outside(data: dict) -> list[str]:
     from shapely.geometry import box as area
 
     found = []
+    boxed = ticks_by_the_box(data)  # the black box's answer, beside it: off P on purpose
     for k, tick, polygon, _ in _marks_on_polygons(data, _TICKS, settled=True):
         box = _box_of(tick)
+        if box is not None and tuple(box) in boxed:
+            continue
         if polygon is None or box is None:
             found.append(f"play {k} {tick['name']}: no polygon drawn")
             continue
@@ -2822,7 +2825,10 @@ def far_verdicts(data: dict) -> list[str]:
     off, it seems to judge what it stands by (prune and search's ✓ for GB stood outside P
     beside edge AB, then 0.73 off over the fruit)."""
     found = []
+    boxed = ticks_by_the_box(data)  # the black box's answer stands by the box, not the claim
     for k, kind, name, mark, claim in _marks_by_claims(data):
+        if tuple(mark.bounds) in boxed:
+            continue
         if kind in INCOMING and (far := claim.distance(mark)) > FARTHEST_MARK:
             found.append(f"play {k} {name} {far:.2f} from its claim")
     return found
@@ -5848,4 +5854,118 @@ def refaded_polygons(data: dict, within: int = REDRAWN_WITHIN,
                         if went:
                             found.append(f"play {k}: {went[-1][1]} faded at play {went[-1][0]}, "
                                          f"{part['name']} drawn")
+    return found
+
+
+#: the least gap a label of the panel's polygon keeps from a line the run draws on it (a
+#: claim, a diagonal, a crossed edge): :data:`LABEL_ROOM`, as from its edges
+_PANEL_LINES = "panel/"
+
+
+def panel_labels_on_lines(data: dict, room: float = LABEL_ROOM) -> list[str]:
+    """The labels of the panel's polygon that a line the run draws on it (``panel/…``: its
+    claims, diagonals, crossed edges) comes within ``room`` of, as ``"play 40 M × panel/
+    diagonal:3"``: chapter 1's mini-map drew its diagonals through M, H and G (68-102 s).
+    :func:`crowded_panel_labels` measured the labels against the outline only, as they first
+    came. Each label and line once, at the first play that shows them so."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    found: dict[tuple[str, str], str] = {}
+    for k, shown in _shown_after_plays(data, ("panel:", _PANEL_LINES)):
+        lines = [(name, LineString(s)) for name, node in shown.items()
+                 if name.startswith(_PANEL_LINES) for part in mobject_nodes(node)
+                 if (part.get("stroke_opacity") or 0) > 0 for s in _segments(part)]
+        for name, node in shown.items():
+            if not name.startswith("panel:") or name in _PANEL_PARTS:
+                continue
+            for part in mobject_nodes(node):
+                if not (part.get("box") and (part.get("text") or "").strip()):
+                    continue
+                for owner, line in lines:
+                    if line.distance(area(*part["box"])) < room:
+                        found.setdefault((part["text"], owner.partition("@")[0]),
+                                         f"play {k} {part['text']} × {owner}")
+    return sorted(found.values(), key=lambda s: (int(s.split()[1]), s))
+
+
+#: the names of crossed edges: an analysis's, a card's figure's
+_EDGE_NAMES = ("analysis:edge-name", "figure:edge-name")
+
+
+def edge_names_on_the_picture(data: dict, gap: float = LEAST_NAME_GAP) -> list[str]:
+    """The crossed edges' names (:data:`_EDGE_NAMES`) nearer than ``gap`` to the convex hull
+    of the polygon drawn with them, as ``"play 5 'F–G' 0.00 from figure:polygon"``: a name in
+    a slot of P, its fill on both sides (chapter 1's "F–G" between F–G and H–I, 16 s), or in
+    T's corridor by the red wedge (chapter 2's "edge E–A", 56 s), reads as written on the
+    picture. Beside the picture, by its edge's end, it names the edge. Each name once a
+    picture."""
+    import shapely
+
+    found: dict[tuple[int, str], str] = {}
+    picture, last = 0, None
+    for k, shown in _shown_after_plays(data, (*_EDGE_NAMES, *_ALL_POLYGONS)):
+        if shown is not last:
+            picture, last = picture + 1, shown
+        hulls = [(name, _outline(node).convex_hull) for name, node in shown.items()
+                 if name in _ALL_POLYGONS and node.get("points") and _outline(node) is not None]
+        for name, node in shown.items():
+            if name not in _EDGE_NAMES:
+                continue
+            for text, box in [(repr(p.get("text")), p["box"]) for p in mobject_nodes(node)
+                              if p.get("box") and (p.get("text") or "").strip()][:1]:
+                for owner, hull in hulls:
+                    near = hull.distance(shapely.box(*box))
+                    if near < gap - 1e-9:
+                        found.setdefault((picture, text),
+                                         f"play {k} {text} {near:.2f} from {owner}")
+    return sorted(found.values(), key=lambda s: (int(s.split()[1]), s))
+
+
+#: how near the black box (``finder``) a run's ✓ stands to be its answer, checked
+NEAR_THE_BOX = 0.4
+
+
+def ticks_by_the_box(data: dict) -> set[tuple[float, ...]]:
+    """The boxes of the run's ✓ marks that come in beside the black box (``finder``, on
+    screen), within :data:`NEAR_THE_BOX` of it: the box asked "an inner diagonal?" and its
+    answer holds — the ✓ stands off the picture (chapter 1). :func:`ticks_outside` and
+    :func:`far_verdicts` leave them be."""
+    from shapely.geometry import box as area
+
+    finder, found = None, set()
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                name = node.get("name")
+                if name == "finder":
+                    finder = None if kind in OUTGOING else (_box_of(node) or finder)
+                elif name == "tick" and kind in INCOMING and finder is not None:
+                    box = _box_of(node)
+                    if box is not None and area(*box).distance(area(*finder)) <= NEAR_THE_BOX:
+                        found.add(tuple(box))
+    return found
+
+
+def ticks_on_the_picture(data: dict) -> list[str]:
+    """A run's ✓ marks (``tick``) over its polygon's fill while the black box (``finder``)
+    is on screen, as ``"play 36 tick 0.19 over P"``: chapter 1's ✓ stood on P's fill beside
+    each diagonal the box gave (68-102 s), where the box's own answer stands beside it, off
+    the picture (:func:`ticks_by_the_box`)."""
+    from shapely.geometry import box as area
+
+    found, finder, polygon = [], False, None
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                name = node.get("name")
+                if name == "finder":
+                    finder = kind not in OUTGOING
+                elif name == "polygon" and kind in INCOMING and node.get("points"):
+                    polygon = _outline(node)
+                elif name == "tick" and kind in INCOMING and finder and polygon is not None:
+                    box = _box_of(node)
+                    over = polygon.intersection(area(*box)).area if box else 0.0
+                    if over > MOST_TEXT_OVER_FILL:
+                        found.append(f"play {k} tick {over:.2f} over P")
     return found

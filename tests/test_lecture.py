@@ -59,6 +59,7 @@ from tests.reading_rules import (
     early_picks,
     early_snags,
     ears_without_convexity,
+    edge_names_on_the_picture,
     fading_while_zooming,
     faint_cuts,
     false_as_before,
@@ -100,6 +101,7 @@ from tests.reading_rules import (
     names_said_otherwise,
     notes_over_fills,
     notes_under_moving_tools,
+    panel_labels_on_lines,
     panels_behind_the_picture,
     picks_amber_twice,
     picks_in_the_red,
@@ -132,6 +134,7 @@ from tests.reading_rules import (
     swept_outside_polygon,
     tails_beside_labels,
     texts_over_the_picture,
+    ticks_on_the_picture,
     ticks_outside,
     unanswered_card_questions,
     uneven_countdowns,
@@ -590,6 +593,12 @@ KNOWN_LABELS_ACROSS_FILLS = {"ears": ["b₁ on triangulation"]}
 #: close, placed with no inside (the close-up's drawing held P's ring twice, one copy with a
 #: corner more at each side's middle, and the two made a polygon with itself as its hole).
 KNOWN_FAR_VERDICTS: dict[str, list[str]] = {}
+#: Likewise (open9): the mini-map's labels a line the run draws on it runs through
+#: (reading_rules.panel_labels_on_lines, new). Chapter 1's H and M have no place round their
+#: dots clear of the diagonals divide and conquer fans from them (G now has); chapter 4's
+#: whole triangulation, prune and search's good part and claim, and the keyhole's cut reach
+#: its labels likewise.
+KNOWN_PANEL_LABELS_ON_LINES = {"overview": {"H", "M"}}
 
 
 @pytest.mark.parametrize("chapter", _chapters())
@@ -894,6 +903,14 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # drawn again (chapter 2's cards and passes, 20-30 s). Judged where a pass is one side:
     # the cards and runs of chapters 1, 3, 4, 5 and 7 still fade P and draw it again
     assert refaded_polygons(data, involving=("analysis:polygon",)) == [], chapter.slug
+    # and the crossed edge's name beside the picture, off its hull (chapter 1's "F–G" in the
+    # slot between F–G and H–I, 16 s), the black box's ✓ beside the box, off P (chapter 1's
+    # stood on P's fill, 68-102 s), and the mini-map's labels off the lines the run draws
+    # on it (chapter 1's G on BG; H and M are known)
+    assert edge_names_on_the_picture(data) == [], chapter.slug
+    assert ticks_on_the_picture(data) == [], chapter.slug
+    on_lines = {found.split()[2] for found in panel_labels_on_lines(data)}
+    assert on_lines == KNOWN_PANEL_LABELS_ON_LINES.get(chapter.slug, set()), sorted(on_lines)
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
     """Issue 22 item 7: Forišek–Steinová's experience is for the teacher: no chapter plays
