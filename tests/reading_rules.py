@@ -5862,19 +5862,26 @@ def refaded_polygons(data: dict, within: int = REDRAWN_WITHIN,
 _PANEL_LINES = "panel/"
 
 
+#: the whole triangulation drawn in the panel at a run's end: every label stands among its
+#: lines, on a halo (metaphors.panel.panel_markers), as the run ends
+_PANEL_WHOLE = ("panel/triangulation",)
+
+
 def panel_labels_on_lines(data: dict, room: float = LABEL_ROOM) -> list[str]:
     """The labels of the panel's polygon that a line the run draws on it (``panel/…``: its
     claims, diagonals, crossed edges) comes within ``room`` of, as ``"play 40 M × panel/
     diagonal:3"``: chapter 1's mini-map drew its diagonals through M, H and G (68-102 s).
     :func:`crowded_panel_labels` measured the labels against the outline only, as they first
-    came. Each label and line once, at the first play that shows them so."""
+    came. The whole triangulation at the end (:data:`_PANEL_WHOLE`) is not judged. Each label
+    and line once, at the first play that shows them so."""
     from shapely.geometry import LineString
     from shapely.geometry import box as area
 
     found: dict[tuple[str, str], str] = {}
     for k, shown in _shown_after_plays(data, ("panel:", _PANEL_LINES)):
         lines = [(name, LineString(s)) for name, node in shown.items()
-                 if name.startswith(_PANEL_LINES) for part in mobject_nodes(node)
+                 if name.startswith(_PANEL_LINES) and name not in _PANEL_WHOLE
+                 for part in mobject_nodes(node)
                  if (part.get("stroke_opacity") or 0) > 0 for s in _segments(part)]
         for name, node in shown.items():
             if not name.startswith("panel:") or name in _PANEL_PARTS:

@@ -595,10 +595,9 @@ KNOWN_LABELS_ACROSS_FILLS = {"ears": ["b₁ on triangulation"]}
 KNOWN_FAR_VERDICTS: dict[str, list[str]] = {}
 #: Likewise (open9): the mini-map's labels a line the run draws on it runs through
 #: (reading_rules.panel_labels_on_lines, new). Chapter 1's H and M have no place round their
-#: dots clear of the diagonals divide and conquer fans from them (G now has); chapter 4's
-#: whole triangulation, prune and search's good part and claim, and the keyhole's cut reach
-#: its labels likewise.
-KNOWN_PANEL_LABELS_ON_LINES = {"overview": {"H", "M"}}
+#: dots clear of the diagonals divide and conquer fans from them (G now has); in chapter 4,
+#: prune and search's good part and claim reach G and M, and the keyhole's cut c₂ and d₂.
+KNOWN_PANEL_LABELS_ON_LINES = {"overview": {"H", "M"}, "ears": {"G", "M", "c₂", "d₂"}}
 
 
 @pytest.mark.parametrize("chapter", _chapters())
