@@ -22,6 +22,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import TypeVar, cast
 
+import numpy as np
 import shapely
 from manim import (
     DOWN,
@@ -327,7 +328,11 @@ def crossing(stage: Stage, wrong: Moment, hold: float = 0.0) -> list:
         name = tag(typeset.text(f"edge {'–'.join(verdict.edge)}", font=theme.font,
                                 size=theme.label_size + 2, colour=theme.rejected),
                    "rejected", "analysis:edge-name").set_z_index(4)
-        place_name(stage, name, a, b, [claim])
+        # off the red the pass is about, as off P's fill
+        red = shapely.transform(wrong.moved.astray(stage.polygon.points),
+                                lambda xy: np.array([stage.at(p)[:2] for p in xy])) \
+            if wrong.motion is not None else None
+        place_name(stage, name, a, b, [claim], red)
         shown += [edge, name]
         anims += [Create(edge), FadeIn(name)]
         flashes = [([Indicate(dashes, color=theme.ink, scale_factor=1.0)], 0.5),
@@ -506,8 +511,9 @@ def holds_on_run(board: Board, last: Beat, right: Moment, analysis: Analysis,
 def _stage(scene, seen: Moment, title: str, theme: Theme, *later: tuple[str, str]) -> Stage:
     """The stage of ``seen``, its labels clear of its claim and of the ``later`` ones (its
     correction's)."""
+    red = seen.moved.astray(seen.points) if seen.motion is not None else None  # none if right
     return Stage(scene, seen.points, seen.labels, seen.triangle, title, theme,
-                 seen.band.turn if seen.band else 0.0, (seen.claim.labels, *later))
+                 seen.band.turn if seen.band else 0.0, (seen.claim.labels, *later), red)
 
 
 def _check(analysis: Analysis, seen: Moment) -> None:

@@ -7,6 +7,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from manim import (
+    RIGHT,
     Create,
     DashedLine,
     Dot,
@@ -106,7 +107,10 @@ def _judged(board: Board, beat: Verdict) -> None:
         if "fruit" in board.objects:  # green on the fruit's orange (1.5 : 1): a dark halo
             mark.set_stroke(theme.background, width=6.0, background=True)
             mark.joint_type = LineJointType.ROUND
-        if line is not None:  # beside the claim, clear of every edge and label
+        finder = board.objects.get("finder")
+        if finder is not None:  # the black box's answer holds: beside the box, off P
+            mark.next_to(finder[0], RIGHT, buff=BOX_GAP)
+        elif line is not None:  # beside the claim, clear of every edge and label
             mark.move_to(board_spot(board, mark, line))
         board.keep("verdict", mark)
         held: list[Playable] = [] if line is None else [line.animate.set_color(theme.result)]
@@ -138,6 +142,11 @@ def _judged(board: Board, beat: Verdict) -> None:
         mark.move_to(board_spot(board, mark, line))
     board.keep("verdict", mark)
     board.play(beat, *anims, FadeIn(mark, scale=1.5), run_time=1.5, together=True)
+
+
+#: the gap between the black box and the ✓ beside it: its answer checked, "an inner diagonal?"
+#: answered off the picture (on P's fill, chapter 1's ✓ marks stood on the polygon, 68-102 s)
+BOX_GAP = 0.2
 
 
 def note(board: Board, beat: Beat) -> None:

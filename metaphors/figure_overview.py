@@ -44,6 +44,11 @@ ANSWERING = "gravity"
 #: a wrong diagonal shown leaves P by more than 4 % of the frame's height (0.32) and keeps
 #: further than 3 % (0.24) from every vertex not its own, on screen
 LEAST_OUT, LEAST_GAP = 0.4, 0.3
+#: the least gap the crossed edge's name keeps from P's fill (3 % of the frame's height): in
+#: the slot between F–G and H–I, 0.06 off both, "F–G" read as written on P (review, 16 s)
+NAME_OFF = 0.24
+#: the farthest the name stands from its edge: off P, the mouth of the slot the edge lines
+NAME_REACH = 0.9
 
 
 @dataclass(frozen=True)
@@ -209,8 +214,11 @@ def _edge_name(polygon: Polygon, frame: Frame, found: Examples, words: str,
     ys = np.arange(y0 - reach, y1 + reach, 0.05)
     cx, cy = (v.ravel() for v in np.meshgrid(xs, ys))
     boxes = shapely.box(cx - half[0], cy - half[1], cx + half[0], cy + half[1])
-    room = (~shapely.intersects(boxes, inside) & (shapely.distance(boxes, busy) >= 0.06)
-            & (shapely.distance(boxes, edge) <= 0.6) & _in_frame(boxes))
+    # off the picture: clear of P's hull, not in a slot of P with its fill on both sides
+    # (in the slot between F–G and H–I, "F–G" read as written on P: review, 16 s)
+    room = ((shapely.distance(boxes, inside.convex_hull) >= NAME_OFF)
+            & (shapely.distance(boxes, busy) >= 0.06)
+            & (shapely.distance(boxes, edge) <= NAME_REACH) & _in_frame(boxes))
     near = np.where(room, shapely.distance(boxes, crossing), np.inf)
     k = int(np.argmin(near))
     if not np.isfinite(near[k]):  # no room: beside the edge's middle, as best it can

@@ -53,6 +53,7 @@ from metaphors.labels import measured_markers
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
+from metaphors.stage import hand_over
 from metaphors.stills import MARKERS_AT, answer_front, still_mobjects
 from metaphors.tags import tag
 from rendering import typeset
@@ -88,6 +89,20 @@ COMPARE_Y, COMPARE_HEIGHT, COMPARE_COUNT_Y = -0.45, 4.6, 2.65
 def _on_run(segment) -> bool:
     """Whether ``segment`` plays on the picture the run before it left."""
     return isinstance(segment, Analysis) and segment.on_run
+
+
+def _one_picture(before, segment, lecture_polygon: str) -> bool:
+    """Whether ``segment`` draws the polygon ``before`` left on screen, the same, so that the
+    picture goes on: a wrong heuristic's card (its metaphor on the counterexample) and its
+    pass, and that pass and the next heuristic's card (chapter 2)."""
+    def drawn(s) -> str | None:
+        if isinstance(s, Card) and s.figure is not None and s.figure.kind == "metaphor":
+            return s.figure.polygon or lecture_polygon
+        if isinstance(s, Analysis) and not s.on_run:
+            return s.polygon
+        return None
+
+    return drawn(before) is not None and drawn(before) == drawn(segment)
 
 
 def inner_edges(polygon, triangles: Sequence[TriangleIndices]) -> list[tuple[int, int]]:
@@ -217,6 +232,8 @@ class LectureScene(TraceScene):
     teacher_notes: tuple[Card, ...] = ()
     polygon = "lecture"  # the lecture's polygon, unless one is handed (trex lecture --polygon)
     call_line = False  # no code in the lecture: a run's steps are its lit rows and captions
+    #: the picture the segment before left to go on (:func:`metaphors.stage.hand_over`)
+    carried: tuple | None = None
     asked = 0  # the number of the last exercise asked (a hunted one takes the next)
 
     def chapter_segments(self) -> tuple:
@@ -236,8 +253,12 @@ class LectureScene(TraceScene):
             # an analysis on the run before it goes on from its last picture: the run keeps
             # it (not turned back, its ball and band kept), and the screen is not cleared
             self.keep_end = k + 1 < len(segments) and _on_run(segments[k + 1])
+            # a heuristic's card and its pass draw one polygon: the picture goes on, moved
+            # into place, not faded and drawn again (hand_over)
+            self.carried = self._picture() if k and _one_picture(
+                segments[k - 1], segment, self.lecture_polygon()) else None
             if not _on_run(segment):
-                self.clear_screen()
+                self.clear_screen(keep=self._kept())
             self.play_segment(segment)
         captions_of(self).hold()  # the last caption is read within the last step
         end_steps(self)
@@ -267,14 +288,32 @@ class LectureScene(TraceScene):
             case _:
                 raise TypeError(f"{type(self).__name__}: no way to play {segment!r}")
 
-    def clear_screen(self) -> None:
-        """Fade out everything (the caption on screen read first): the fade opens the step
-        that follows (it ends on its picture)."""
+    def clear_screen(self, keep: Sequence = ()) -> None:
+        """Fade out everything but ``keep`` (the caption on screen read first): the fade opens
+        the step that follows (it ends on its picture)."""
         captions_of(self).finish()
         lead_in(self)
-        if self.mobjects:
-            self.play(*[FadeOut(m) for m in self.mobjects], run_time=0.4)
-            self.clear()
+        going = [m for m in self.mobjects if all(m is not k for k in keep)]
+        if going:
+            self.play(*[FadeOut(m) for m in going], run_time=0.4)
+            self.remove(*going)
+
+    def _picture(self):
+        """The polygon on screen and its vertex markers in the polygon's order (a card's
+        figure's or a pass's), or None: what :func:`metaphors.stage.hand_over` moves on."""
+        named = {getattr(m, "name", ""): m for m in self.mobjects}
+        polygon = named.get("figure:polygon") or named.get("analysis:polygon")
+        if polygon is None:
+            return None
+        if "figure:vertices" in named:
+            group = named["figure:vertices"]
+            return polygon, list(group.submobjects), [polygon, group]
+        markers = [m for m in self.mobjects if getattr(m, "name", "").startswith("vertex:")]
+        return polygon, markers, [polygon, *markers]
+
+    def _kept(self) -> list:
+        """What the screen keeps for the next segment: the picture it carries on."""
+        return [] if self.carried is None else list(self.carried[2])
 
     def text(self, text: str, size: int, colour: str | None = None) -> FlatText:
         return typeset.text(text, font=self.theme.font, size=size,
@@ -334,9 +373,17 @@ class LectureScene(TraceScene):
         parts = figure_steps.steps(figure_mobjects(card.figure, self.lecture_polygon(),
                                                    self.theme, box) if card.figure else [],
                                    card.lines)
+        # the picture the pass before drew, moved into the figure's place (chapter 2)
+        carried, self.carried = self.carried, None
+        named = {getattr(m, "name", ""): m for m in parts[0]}
+        shape, vertices = named.get("figure:polygon"), named.get("figure:vertices")
+        cut = hand_over(self, carried, shape, list(vertices.submobjects), [vertices]) \
+            if shape is not None and vertices is not None else []
         cue = captions.show(card.title, 0.8)  # the caption before is read in its own step
         self.mark_card_line(None, card)
-        self.play(Write(title), *[FadeIn(m) for m in parts[0]], run_time=0.8, **cue)
+        self.play(Write(title), *cut, *[FadeIn(m) for m in parts[0]
+                                        if not cut or m not in (shape, vertices)],
+                  run_time=0.8, **cue)
         shown: list[VMobject] = []  # the last figure's claims and crossed edges
         on: list = list(parts[0])  # the figure's parts on screen
         # the parts that give way to the next as a line comes (figure_steps.goes_with)

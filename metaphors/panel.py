@@ -835,10 +835,13 @@ def panel_markers(polygon: Polygon, holes: Sequence[Hole], frame: Frame, theme: 
         else those clear of the edges (a vertex many diagonals meet, ear clipping's G, has
         no room between them: kept clear of all, its label stood nearer C than G)."""
         if lines:
-            clear_of_all = _tiers(k, points, away, width, height, drawn, bounds,
-                                  LABEL_DISTANCES, LABEL_DIRECTIONS)[0]
-            if clear_of_all:
-                return clear_of_all
+            # roomy ones first, then the narrower ones still nearer their own dot than any
+            # other: kept clear of the edges only, chapter 1's M, H and G stood on the
+            # diagonals drawn through them (68-102 s)
+            for clear_of_all in _tiers(k, points, away, width, height, drawn, bounds,
+                                       LABEL_DISTANCES, LABEL_DIRECTIONS)[:2]:
+                if clear_of_all:
+                    return clear_of_all
         return _label_places(k, points, away, width, height, fixed, bounds)
 
     places = [places_of(k, away, t.width, t.height)

@@ -36,8 +36,11 @@ from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
 
-#: where the polygon goes: the left two thirds, the legend to its right
-BOX = Box(-1.0, -0.1, 8.0, 5.6)
+#: where the polygon goes: the left two thirds, the legend to its right; its bottom high
+#: enough that a label under its lowest vertex stays clear of a two-line subtitle (from 2.9
+#: below the middle, chapter 2's "Parallel to AC, … / E is the farthest …" ran over C's
+#: label at 176-182 s)
+BOX = Box(-1.0, 0.15, 8.0, 5.1)
 LEGEND = (3.6, 2.2)  # top left corner of the legend
 #: what red is in a wrong heuristic's pass and in its run: the one legend entry for both
 #: (its words narrow enough for the legend's column, from :data:`LEGEND` to the frame's margin)
@@ -52,7 +55,7 @@ class Stage:
     subtitle and a legend — and the one way it speaks: :meth:`say`."""
 
     def __init__(self, scene, points, labels, triangle, title: str, theme: Theme,
-                 turn: float = 0.0, claims: Sequence[tuple[str, str]] = ()):
+                 turn: float = 0.0, claims: Sequence[tuple[str, str]] = (), red=None):
         self.scene, self.theme = scene, theme
         self.polygon = Polygon(tuple(map(tuple, points)), tuple(labels),
                                tuple(range(len(labels))))
@@ -64,6 +67,10 @@ class Stage:
         # and of T's sides (D stood 0.08 from T's side AC in chapter 2's analyses)
         corners = self.frame.many(triangle) if triangle else []
         sides = [(corners[k - 1], corners[k]) for k in range(len(corners))]
+        # and of the red region to come (``red``, shapely in P's coordinates: the part of a
+        # wrong tool outside P), its outline as lines: the amber D stood on the red wedge, a
+        # halo round it (chapter 2 at 56 s)
+        sides += _outline_of(red, self.frame)
         self.markers = {label: tag(m, "idle", f"vertex:{label}").set_z_index(4) for label, m in
                         measured_markers(self.polygon, (), self.frame, theme, pairs, sides)}
         self.triangle = None
@@ -87,9 +94,13 @@ class Stage:
         return self.at(self.polygon.points[self.polygon.labels.index(label)])
 
     def appear(self) -> list:
-        """The animations that put the polygon, its labels, T and the title on screen."""
-        anims = [Write(self.title), Create(self.outline), *[FadeIn(m) for m in
-                                                            self.markers.values()]]
+        """The animations that put the polygon, its labels, T and the title on screen; the
+        picture the card before drew (the scene's ``carried``), moved into place first
+        (:func:`hand_over`)."""
+        carried, self.scene.carried = getattr(self.scene, "carried", None), None
+        cut = hand_over(self.scene, carried, self.outline, list(self.markers.values()))
+        anims = [Write(self.title), *(cut or [Create(self.outline), *[
+            FadeIn(m) for m in self.markers.values()]])]
         return anims + ([Create(self.triangle)] if self.triangle is not None else [])
 
     def set_apart(self, red, line=None) -> list:
@@ -170,6 +181,19 @@ def legend_entry(theme: Theme, colour: str, words: str, name: str, opacity: floa
     return tag(VGroup(swatch, label), None, f"legend:{name}")
 
 
+def _outline_of(shape, frame: Frame) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The sides of a shapely region's outlines (P's coordinates), on screen."""
+    if shape is None or shape.is_empty:
+        return []
+    parts = getattr(shape, "geoms", [shape])
+    found = []
+    for part in parts:
+        ring = [frame.to_scene(p) for p in list(part.exterior.coords)[:-1]] \
+            if hasattr(part, "exterior") else []
+        found += [(ring[k - 1], ring[k]) for k in range(len(ring))]
+    return found
+
+
 def _fitted(points, angle: float) -> Frame:
     """The frame of :data:`BOX`, turned by ``angle`` degrees and zoomed to fit it."""
     frame = Frame(points, BOX.center, BOX.width, BOX.height)
@@ -179,6 +203,41 @@ def _fitted(points, angle: float) -> Frame:
     reach = np.abs(turned).max(axis=0)
     zoom = min(1.0, BOX.width / 2 / max(reach[0], 1e-9), BOX.height / 2 / max(reach[1], 1e-9))
     return frame.turned(angle, BOX.center, zoom)
+
+
+# --- one picture per idea: a picture handed on to the next segment ------------------------------
+
+
+def _at_the_end(t: float) -> float:
+    """A rate that holds still until the animation's last frame (a fade that is a cut)."""
+    return 1.0 if t >= 1.0 else 0.0
+
+
+def _at_once(t: float) -> float:
+    """A rate at its end from the first frame (a fade that is a cut)."""
+    return 1.0
+
+
+def hand_over(scene, carried, polygon, markers: Sequence, shown: Sequence = ()) -> list:
+    """The picture the last segment left (``carried``: its polygon, its vertex markers in
+    the polygon's order, and the mobjects on screen that hold them) moved and grown into the
+    place of the new ``polygon`` and ``markers`` (played here), then given up to them:
+    returns the cut for the new picture's first play (the new ones in, ``shown`` if they
+    come as a group, the carried ones out: the same drawing in the same place).
+    Nothing if nothing is carried or it is not this picture: the new one comes as usual. One
+    picture per idea: chapter 2's card drew the counterexample small, faded it, and its pass
+    drew it again full size (review, 20-30 s)."""
+    if carried is None:
+        return []
+    old_polygon, old_markers, holders = carried
+    if len(old_markers) != len(markers):
+        return []
+    scene.play(Transform(old_polygon, polygon.copy()),
+               *[Transform(old, new.copy()) for old, new in zip(old_markers, markers,
+                                                                 strict=True)],
+               run_time=1.2)
+    return [*[FadeIn(m, rate_func=_at_once) for m in (polygon, *(shown or markers))],
+            *[FadeOut(m, rate_func=_at_the_end) for m in holders]]
 
 
 # --- shapes as mobjects ---------------------------------------------------------------------------
@@ -229,9 +288,16 @@ def _never_empty(stage: Canvas, group: VGroup) -> VGroup:
 # --- labels --------------------------------------------------------------------------------------
 
 
-def place_name(stage: Stage, name, a, b, avoid: Sequence = ()) -> None:
+#: the least gap an edge's name keeps from the fills it is kept off (3 % of the frame's height)
+NAME_OFF = 0.24
+
+
+def place_name(stage: Stage, name, a, b, avoid: Sequence = (), off=None) -> None:
     """Put an edge's name beside it (a to b, scene points), where it keeps clearest of the
-    polygon's edges, the vertices and their labels, and the lines in ``avoid``."""
+    polygon's edges, the vertices and their labels, and the lines in ``avoid``; ``off``
+    (shapely, on screen: the red "outside P" region) and P's fill kept :data:`NAME_OFF` away,
+    where such a place is within reach ("edge E–A" stood in T's thin corridor 0.14 from the
+    red wedge, read as written on it: chapter 2 at 56 s)."""
     corners = [tuple(p[:2]) for p in stage.frame.many(stage.polygon.points)]
     lines = [shapely.LineString([corners[k - 1], corners[k]]) for k in range(len(corners))]
     lines += [shapely.LineString([tuple(m.get_start()[:2]), tuple(m.get_end()[:2])])
@@ -249,9 +315,14 @@ def place_name(stage: Stage, name, a, b, avoid: Sequence = ()) -> None:
         return shapely.box(*(centre[:2] - half), *(centre[:2] + half))
 
     spots = [a + (b - a) * k + normal * side * (gap + float(np.abs(normal[:2]) @ half))
-             for k in (0.2, 0.35, 0.5, 0.65, 0.8) for side in (1, -1) for gap in (0.15, 0.4)]
-    best = max(spots, key=lambda p: min(box(p).distance(busy), 0.3) - 0.2 * box(p).distance(
-        edge))
+             for k in (0.2, 0.35, 0.5, 0.65, 0.8) for side in (1, -1)
+             for gap in (0.15, 0.4, 0.7, 1.0)]
+    fills = shapely.union_all([shapely.Polygon(corners), *([off] if off is not None else [])])
+    left, bottom = BOX.x - BOX.width / 2, BOX.y - BOX.height / 2
+    room = shapely.box(left, bottom, left + BOX.width, bottom + BOX.height)
+    clear = [p for p in spots if box(p).distance(fills) >= NAME_OFF and room.contains(box(p))]
+    best = max(clear or spots, key=lambda p: min(box(p).distance(busy), 0.3)
+               - 0.2 * box(p).distance(edge))
     name.move_to(best)
 
 

@@ -2442,8 +2442,11 @@ def ticks_outside(data: dict) -> list[str]:
     from shapely.geometry import box as area
 
     found = []
+    boxed = ticks_by_the_box(data)  # the black box's answer, beside it: off P on purpose
     for k, tick, polygon, _ in _marks_on_polygons(data, _TICKS, settled=True):
         box = _box_of(tick)
+        if box is not None and tuple(box) in boxed:
+            continue
         if polygon is None or box is None:
             found.append(f"play {k} {tick['name']}: no polygon drawn")
             continue
@@ -2822,7 +2825,10 @@ def far_verdicts(data: dict) -> list[str]:
     off, it seems to judge what it stands by (prune and search's ✓ for GB stood outside P
     beside edge AB, then 0.73 off over the fruit)."""
     found = []
+    boxed = ticks_by_the_box(data)  # the black box's answer stands by the box, not the claim
     for k, kind, name, mark, claim in _marks_by_claims(data):
+        if tuple(mark.bounds) in boxed:
+            continue
         if kind in INCOMING and (far := claim.distance(mark)) > FARTHEST_MARK:
             found.append(f"play {k} {name} {far:.2f} from its claim")
     return found
@@ -5718,3 +5724,255 @@ def pieces_in_the_called_blue(data: dict) -> list[str]:
                 if delta_e(_over(fill, opacity, THEME.background), blue) < LEAST_PART_APART:
                     found[name] = f"play {k} {name}"
     return list(found.values())
+
+
+# --- open9: chapters 1 and 2 as a teacher reviewed them (labels, marks, captions off the picture) --
+
+#: the least gap between a subtitle's lines and a vertex label of the picture on screen (1 %
+#: of the frame's height): nearer, the caption reads over the picture, or covers a letter. A
+#: run's board leaves its lowest label 0.10 above a one-line subtitle (chapters 1, 3 and 5)
+LEAST_CAPTION_LABEL_GAP = 0.08
+
+
+def _text_boxes_of(node: dict) -> list[tuple[float, float, float, float]]:
+    """The boxes of a node's texts (a subtitle's lines)."""
+    return [tuple(part["box"]) for part in mobject_nodes(node)
+            if part.get("box") and (part.get("text") or "").strip()]
+
+
+def captions_over_labels(data: dict, gap: float = LEAST_CAPTION_LABEL_GAP) -> list[str]:
+    """The vertex labels (a board's, a stage's, a card's figure's) that a subtitle shown
+    with them comes nearer than ``gap`` to, as ``"play 96 C 0.00 from the subtitle"``: chapter
+    2's two-line caption "Parallel to AC, … / E is the farthest from AC …" ran over C's label
+    at 176-182 s. The picture sits clear of the subtitles' band. (:func:`words_on_the_picture`
+    judged only the end's texts, in the scenes.) Each label once, at the first play."""
+    from shapely.geometry import box as area
+
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, ("vertex:", "figure:vertices", "subtitle")):
+        subtitle = shown.get("subtitle")
+        if subtitle is None:
+            continue
+        lines = [area(*b) for b in _text_boxes_of(subtitle)]
+        for name, node in shown.items():
+            if not name.startswith(("vertex:", "figure:vertices")):
+                continue
+            for text, box in _marker_labels(name, node):
+                near = min((line.distance(area(*box)) for line in lines), default=gap)
+                if near < gap - 1e-9:
+                    found.setdefault(text, f"play {k} {text} {near:.2f} from the subtitle")
+    return sorted(found.values(), key=lambda s: (int(s.split()[1]), s))
+
+
+#: how much of a label's box may lie on the red "outside P" region (scene units²): a speck
+#: where a box's corner grazes it
+MOST_ON_THE_RED = 1e-3
+#: the least gap between the crossed edge's name and the red region or P's fill (3 % of the
+#: frame's height): "edge E–A" 0.14 from the red wedge, in T's thin corridor beside it, read
+#: as written on it (chapter 2 at 56-60 s)
+LEAST_NAME_GAP = 0.24
+
+
+def labels_on_the_red(data: dict) -> list[str]:
+    """The vertex labels over the red "outside P" region (:data:`_RED_REGIONS`), halo or not,
+    and the crossed edge's name (``analysis:edge-name``) within :data:`LEAST_NAME_GAP` of it
+    or of P's fill, as ``"play
+    51 D on the red"`` or ``"play 53 'edge E–A' on P"``: chapter 2's amber D and "edge E–A"
+    stood on the red wedge (56-60 s, and again in each heuristic's pass), where a dark halo
+    (:func:`picks_in_the_red`) let them read but hid the red the pass is about. A name of the
+    edge stands beside it, off the picture's fills. Each text and region once a picture."""
+    import shapely
+
+    found: dict[tuple[str, str], str] = {}
+    names = ("vertex:", "analysis:edge-name", "analysis:polygon", *_RED_REGIONS)
+    picture, last = 0, None
+    for k, shown in _shown_after_plays(data, names):
+        if shown is not last:  # a picture opened: each pass judged on its own
+            picture, last = picture + 1, shown
+        red = [shapely.Polygon(ring) for name, node in shown.items()
+               if name.startswith(_RED_REGIONS) for part in mobject_nodes(node)
+               if (part.get("fill_opacity") or 0) > 0 for ring in _paths(part)]
+        regions = [("the red", shapely.union_all([r for r in red if r.is_valid]))] if red else []
+        edge_regions = list(regions)
+        if "analysis:polygon" in shown:
+            edge_regions.append(("P", _outline(shown["analysis:polygon"])))
+        for name, node in shown.items():
+            if name.startswith("vertex:"):
+                texts, against = list(_marker_labels(name, node)), regions
+            elif name == "analysis:edge-name":
+                texts, against = [(repr(t), b) for t, b in _marker_labels(name, {
+                    "submobjects": [node]})] or [(repr(node.get("text")), node.get("box"))], \
+                    edge_regions
+            else:
+                continue
+            for text, box in texts:
+                if not box:
+                    continue
+                for where, region in against:
+                    if region is None:
+                        continue
+                    on = (region.intersection(shapely.box(*box)).area > MOST_ON_THE_RED
+                          if name.startswith("vertex:")
+                          else region.distance(shapely.box(*box)) < LEAST_NAME_GAP - 1e-9)
+                    if on:
+                        found.setdefault((picture, text, where),
+                                         f"play {k} {text} on {where}")
+    return sorted(found.values(), key=lambda s: (int(s.split()[1]), s))
+
+
+#: the plays within which a polygon faded out is not drawn again: one picture per idea
+REDRAWN_WITHIN = 4
+#: the pictures' polygons: a run's board, an analysis's stage, a card's figure
+_ALL_POLYGONS = ("polygon", "analysis:polygon", "figure:polygon")
+
+
+def refaded_polygons(data: dict, within: int = REDRAWN_WITHIN,
+                     involving: tuple[str, ...] = _ALL_POLYGONS) -> list[str]:
+    """The polygons (:data:`_ALL_POLYGONS`) faded out and drawn anew, the same shape
+    (:func:`_shape`: wherever, however large), within ``within`` plays, as ``"play 14:
+    figure:polygon faded at play 12, analysis:polygon drawn"``: chapter 2's card drew the
+    counterexample small beside its words, faded it, and its pass drew it again full size
+    (20-30 s, in each heuristic): two pictures of one idea. The picture goes on: moved and
+    grown into place, or drawn once. Only the hand-overs where the one faded or the one
+    drawn is named in ``involving``."""
+    found: list[str] = []
+    faded: list[tuple[int, str, tuple]] = []
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                for part in mobject_nodes(node):
+                    if part.get("name") not in _ALL_POLYGONS or len(part.get("points") or ()) < 12:
+                        continue
+                    if kind in OUTGOING:
+                        faded.append((k, part["name"], _shape(part)))
+                    elif kind in INCOMING:
+                        shape = _shape(part)
+                        went = [(j, name) for j, name, was in faded
+                                if was == shape and 0 < k - j <= within
+                                and involving and (name in involving
+                                                   or part["name"] in involving)]
+                        if went:
+                            found.append(f"play {k}: {went[-1][1]} faded at play {went[-1][0]}, "
+                                         f"{part['name']} drawn")
+    return found
+
+
+#: the least gap a label of the panel's polygon keeps from a line the run draws on it (a
+#: claim, a diagonal, a crossed edge): :data:`LABEL_ROOM`, as from its edges
+_PANEL_LINES = "panel/"
+
+
+#: the whole triangulation drawn in the panel at a run's end: every label stands among its
+#: lines, on a halo (metaphors.panel.panel_markers), as the run ends
+_PANEL_WHOLE = ("panel/triangulation",)
+
+
+def panel_labels_on_lines(data: dict, room: float = LABEL_ROOM) -> list[str]:
+    """The labels of the panel's polygon that a line the run draws on it (``panel/…``: its
+    claims, diagonals, crossed edges) comes within ``room`` of, as ``"play 40 M × panel/
+    diagonal:3"``: chapter 1's mini-map drew its diagonals through M, H and G (68-102 s).
+    :func:`crowded_panel_labels` measured the labels against the outline only, as they first
+    came. The whole triangulation at the end (:data:`_PANEL_WHOLE`) is not judged. Each label
+    and line once, at the first play that shows them so."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as area
+
+    found: dict[tuple[str, str], str] = {}
+    for k, shown in _shown_after_plays(data, ("panel:", _PANEL_LINES)):
+        lines = [(name, LineString(s)) for name, node in shown.items()
+                 if name.startswith(_PANEL_LINES) and name not in _PANEL_WHOLE
+                 for part in mobject_nodes(node)
+                 if (part.get("stroke_opacity") or 0) > 0 for s in _segments(part)]
+        for name, node in shown.items():
+            if not name.startswith("panel:") or name in _PANEL_PARTS:
+                continue
+            for part in mobject_nodes(node):
+                if not (part.get("box") and (part.get("text") or "").strip()):
+                    continue
+                for owner, line in lines:
+                    if line.distance(area(*part["box"])) < room:
+                        found.setdefault((part["text"], owner.partition("@")[0]),
+                                         f"play {k} {part['text']} × {owner}")
+    return sorted(found.values(), key=lambda s: (int(s.split()[1]), s))
+
+
+#: the names of crossed edges: an analysis's, a card's figure's
+_EDGE_NAMES = ("analysis:edge-name", "figure:edge-name")
+
+
+def edge_names_on_the_picture(data: dict, gap: float = LEAST_NAME_GAP) -> list[str]:
+    """The crossed edges' names (:data:`_EDGE_NAMES`) nearer than ``gap`` to the convex hull
+    of the polygon drawn with them, as ``"play 5 'F–G' 0.00 from figure:polygon"``: a name in
+    a slot of P, its fill on both sides (chapter 1's "F–G" between F–G and H–I, 16 s), or in
+    T's corridor by the red wedge (chapter 2's "edge E–A", 56 s), reads as written on the
+    picture. Beside the picture, by its edge's end, it names the edge. Each name once a
+    picture."""
+    import shapely
+
+    found: dict[tuple[int, str], str] = {}
+    picture, last = 0, None
+    for k, shown in _shown_after_plays(data, (*_EDGE_NAMES, *_ALL_POLYGONS)):
+        if shown is not last:
+            picture, last = picture + 1, shown
+        hulls = [(name, _outline(node).convex_hull) for name, node in shown.items()
+                 if name in _ALL_POLYGONS and node.get("points") and _outline(node) is not None]
+        for name, node in shown.items():
+            if name not in _EDGE_NAMES:
+                continue
+            for text, box in [(repr(p.get("text")), p["box"]) for p in mobject_nodes(node)
+                              if p.get("box") and (p.get("text") or "").strip()][:1]:
+                for owner, hull in hulls:
+                    near = hull.distance(shapely.box(*box))
+                    if near < gap - 1e-9:
+                        found.setdefault((picture, text),
+                                         f"play {k} {text} {near:.2f} from {owner}")
+    return sorted(found.values(), key=lambda s: (int(s.split()[1]), s))
+
+
+#: how near the black box (``finder``) a run's ✓ stands to be its answer, checked
+NEAR_THE_BOX = 0.4
+
+
+def ticks_by_the_box(data: dict) -> set[tuple[float, ...]]:
+    """The boxes of the run's ✓ marks that come in beside the black box (``finder``, on
+    screen), within :data:`NEAR_THE_BOX` of it: the box asked "an inner diagonal?" and its
+    answer holds — the ✓ stands off the picture (chapter 1). :func:`ticks_outside` and
+    :func:`far_verdicts` leave them be."""
+    from shapely.geometry import box as area
+
+    finder, found = None, set()
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                name = node.get("name")
+                if name == "finder":
+                    finder = None if kind in OUTGOING else (_box_of(node) or finder)
+                elif name == "tick" and kind in INCOMING and finder is not None:
+                    box = _box_of(node)
+                    if box is not None and area(*box).distance(area(*finder)) <= NEAR_THE_BOX:
+                        found.add(tuple(box))
+    return found
+
+
+def ticks_on_the_picture(data: dict) -> list[str]:
+    """A run's ✓ marks (``tick``) over its polygon's fill while the black box (``finder``)
+    is on screen, as ``"play 36 tick 0.19 over P"``: chapter 1's ✓ stood on P's fill beside
+    each diagonal the box gave (68-102 s), where the box's own answer stands beside it, off
+    the picture (:func:`ticks_by_the_box`)."""
+    from shapely.geometry import box as area
+
+    found, finder, polygon = [], False, None
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                name = node.get("name")
+                if name == "finder":
+                    finder = kind not in OUTGOING
+                elif name == "polygon" and kind in INCOMING and node.get("points"):
+                    polygon = _outline(node)
+                elif name == "tick" and kind in INCOMING and finder and polygon is not None:
+                    box = _box_of(node)
+                    over = polygon.intersection(area(*box)).area if box else 0.0
+                    if over > MOST_TEXT_OVER_FILL:
+                        found.append(f"play {k} tick {over:.2f} over P")
+    return found

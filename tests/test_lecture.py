@@ -39,6 +39,7 @@ from tests.reading_rules import (
     bare_ticks,
     broken_counts,
     broken_summaries,
+    captions_over_labels,
     claims_along_edges,
     claims_given_away,
     claims_like_their_edges,
@@ -58,6 +59,7 @@ from tests.reading_rules import (
     early_picks,
     early_snags,
     ears_without_convexity,
+    edge_names_on_the_picture,
     fading_while_zooming,
     faint_cuts,
     false_as_before,
@@ -82,6 +84,7 @@ from tests.reading_rules import (
     labels_on_t_without_halo,
     labels_on_the_ball,
     labels_on_the_fruit_with_room,
+    labels_on_the_red,
     labels_struck_by_the_sweep,
     labels_under_faces,
     labels_under_test_triangles,
@@ -98,6 +101,7 @@ from tests.reading_rules import (
     names_said_otherwise,
     notes_over_fills,
     notes_under_moving_tools,
+    panel_labels_on_lines,
     panels_behind_the_picture,
     picks_amber_twice,
     picks_in_the_red,
@@ -106,6 +110,7 @@ from tests.reading_rules import (
     recoloured_close_ups,
     red_bursts_before_verdicts,
     redrawn_pictures,
+    refaded_polygons,
     refaded_texts,
     refuted_lit_rows,
     repeated_verdicts,
@@ -129,6 +134,7 @@ from tests.reading_rules import (
     swept_outside_polygon,
     tails_beside_labels,
     texts_over_the_picture,
+    ticks_on_the_picture,
     ticks_outside,
     unanswered_card_questions,
     uneven_countdowns,
@@ -587,6 +593,11 @@ KNOWN_LABELS_ACROSS_FILLS = {"ears": ["b₁ on triangulation"]}
 #: close, placed with no inside (the close-up's drawing held P's ring twice, one copy with a
 #: corner more at each side's middle, and the two made a polygon with itself as its hole).
 KNOWN_FAR_VERDICTS: dict[str, list[str]] = {}
+#: Likewise (open9): the mini-map's labels a line the run draws on it runs through
+#: (reading_rules.panel_labels_on_lines, new). Chapter 1's H and M have no place round their
+#: dots clear of the diagonals divide and conquer fans from them (G now has); in chapter 4,
+#: prune and search's good part and claim reach G and M, and the keyhole's cut c₂ and d₂.
+KNOWN_PANEL_LABELS_ON_LINES = {"overview": {"H", "M"}, "ears": {"G", "M", "c₂", "d₂"}}
 
 
 @pytest.mark.parametrize("chapter", _chapters())
@@ -881,6 +892,24 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # issue 22 item 4: a card's claim told from the edge it crosses (BD and E–A, both solid
     # red, read as one red cross)
     assert claims_like_their_edges(data) == [], chapter.slug
+
+    # open9 (teacher review of chapters 1 and 2): no subtitle over a vertex label (chapter 2's
+    # two-line caption ran over C at 176-182 s), and no label on the red "outside P" region
+    # nor the crossed edge's name by it or on P's fill (chapter 2's D and "edge E–A", 56 s)
+    assert captions_over_labels(data) == [], chapter.slug
+    assert labels_on_the_red(data) == [], chapter.slug
+    # one picture per idea: a pass's polygon is its card's, moved into place, not faded and
+    # drawn again (chapter 2's cards and passes, 20-30 s). Judged where a pass is one side:
+    # the cards and runs of chapters 1, 3, 4, 5 and 7 still fade P and draw it again
+    assert refaded_polygons(data, involving=("analysis:polygon",)) == [], chapter.slug
+    # and the crossed edge's name beside the picture, off its hull (chapter 1's "F–G" in the
+    # slot between F–G and H–I, 16 s), the black box's ✓ beside the box, off P (chapter 1's
+    # stood on P's fill, 68-102 s), and the mini-map's labels off the lines the run draws
+    # on it (chapter 1's G on BG; H and M are known)
+    assert edge_names_on_the_picture(data) == [], chapter.slug
+    assert ticks_on_the_picture(data) == [], chapter.slug
+    on_lines = {found.split()[2] for found in panel_labels_on_lines(data)}
+    assert on_lines == KNOWN_PANEL_LABELS_ON_LINES.get(chapter.slug, set()), sorted(on_lines)
 
 def test_teacher_notes_leave_the_video_for_teacher_notes_md():
     """Issue 22 item 7: Forišek–Steinová's experience is for the teacher: no chapter plays
