@@ -140,8 +140,9 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     :data:`KIND_REACH` of its dot that keeps every other vertex's dot and label :data:`KIND_OWN`
     times as far as its own, and a
     gap of :data:`KIND_GAPS` from every vertex label and dot, every edge and diagonal drawn, the
-    sweep line at ``y``, the title and the panel, outside P, on screen above the subtitle; None
-    where there is none (the caption names the kind)."""
+    sweep line at ``y``, the title and the panel, outside P's convex hull (in a notch or slot
+    of P it reads as written on P), on screen above the subtitle; None where there is none
+    (:func:`_kind_key` says it beside the picture)."""
     theme = board.theme
     dot = board.markers[vertex][0].get_center()[:2]
     size = (float(kind.width), float(kind.height))
@@ -173,9 +174,12 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
                        dots=[(*m[0].get_center()[:2], 0.0) for v, m in board.markers.items()
                              if v != vertex])
     ours = clear(centres, size, others, KIND_OWN * beside)
-    # P's region too: a word over P's fill is text over the picture (review s35: "merge" stood
-    # on the fill beside M, "split" beside D); outside P, the edges' gap keeps it off them
-    region = Region([p[:2] for p in rings[0]], [[p[:2] for p in ring] for ring in rings[1:]])
+    # P's hull too: a word over P's fill is text over the picture (review s35: "merge" stood
+    # on the fill beside M, "split" beside D), and so is one in a notch or slot of P, whose
+    # dark hardly differs from P's faint fill (teacher review, faster9: "regular" in the slot
+    # by I at 52 s and by F at 64 s, "merge" in K's notch at 42 s, "split" in D's, all read as
+    # written on P); outside the hull, the edges' gap keeps it off them
+    region = Region([p[:2] for p in rings[0]]).convex_hull
     obstacles = Obstacles(boxes=boxes, segments=edges, dots=dots, shapes=[region])
     within = (FRAME_AREA[0], SUBTITLE_TOP, FRAME_AREA[2], FRAME_AREA[3])
     free = [ours & clear(centres, size, obstacles, gap, within) for gap in KIND_GAPS]
@@ -211,10 +215,12 @@ def classify(board: Board, beat: Classify) -> None:
     anims: list[Animation] = [
         Indicate(board.markers[data.vertex], color=colour)]
     shown: VMobject | None = kind.move_to(place) if place is not None else None
-    if shown is None and named and _kind_role(data.kind) != "called":
-        # no room beside it off P's fill (M and K in their notches): the kind's colour said
-        # beside the picture, as a legend entry, the vertex lit in that colour
-        shown = _kind_key(board, data.kind, line)
+    if shown is None and named:
+        # no room beside it outside P's hull (M and K in their notches, I and F by the slot,
+        # D by its notch): the kind said beside the picture, a split or merge vertex's as a
+        # legend entry of its colour, the vertex lit in it; another's with its vertex named
+        # ("I: regular vertex"): its blue is the vertex looked at, no kind's colour
+        shown = _kind_key(board, data.kind, data.vertex, line)
     if shown is not None:  # None: no room, no word (the caption names the kind)
         anims.append(FadeIn(shown))
     # an edge that ends at this vertex leaves the line, and its helper with it
@@ -231,19 +237,30 @@ def classify(board: Board, beat: Classify) -> None:
         board.leaving.append(shown)
 
 
-def _kind_key(board: Board, kind: str, sweep: VGroup) -> VGroup | None:
-    """The legend entry of a split or merge vertex (a dot in its colour, "merge vertex"), in
-    the first free place beside the picture (:func:`metaphors.layout.free_place`, clear of
-    what the stack keeps clear of, :func:`_taken`, of the sweep line and of the title's whole
-    line: beside a short title it reads as part of it), None if none is."""
+def _kind_key(board: Board, kind: str, vertex: str, sweep: VGroup) -> VGroup | None:
+    """The legend entry of a split or merge vertex (a dot in its colour, "merge vertex"), or
+    the note of another kind, its vertex named ("I: regular vertex", in the blue of the vertex
+    looked at: no swatch, which would make that blue a kind's), in the first free place
+    beside the picture (:func:`metaphors.layout.free_place`, clear of what the stack keeps
+    clear of, :func:`_taken`, of the sweep line and of the title's whole line: beside a short
+    title it reads as part of it), None if none is."""
     theme = board.theme
-    colour = theme.role_colour(_kind_role(kind))
-    words = text(f"{kind} vertex", font=theme.font, size=theme.label_size + 2, colour=theme.ink)
-    swatch = tag(Dot(radius=theme.dot_radius * 1.8, color=colour), kind, "legend:swatch")
-    key = tag(VGroup(swatch, words.next_to(swatch, RIGHT, buff=0.15)), None, "legend:kind")
+    role = _kind_role(kind)
+    colour = theme.role_colour(role)
+    if role == "called":
+        words = text(f"{vertex}: {kind} vertex", font=theme.font, size=theme.label_size + 2,
+                     colour=colour)
+        key = tag(VGroup(words), None, "legend:kind")
+    else:
+        words = text(f"{kind} vertex", font=theme.font, size=theme.label_size + 2,
+                     colour=theme.ink)
+        swatch = tag(Dot(radius=theme.dot_radius * 1.8, color=colour), kind, "legend:swatch")
+        key = tag(VGroup(swatch, words.next_to(swatch, RIGHT, buff=0.15)), None, "legend:kind")
     drawn = [box(*area_of(piece)) for piece in sweep.submobjects]
     title = box(*title_area(board.title, whole_line=True))
-    found = free_place(key.width, key.height, unary_union([_taken(board), title, *drawn]))
+    # and P's hull: in its slot, "F: regular vertex" was as much on the picture as "regular"
+    hull = Region([tuple(board.at(p)[:2]) for p in board.polygon.points]).convex_hull
+    found = free_place(key.width, key.height, unary_union([_taken(board), title, hull, *drawn]))
     if found is None:
         return None
     left, top = found

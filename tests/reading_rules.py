@@ -5718,3 +5718,57 @@ def pieces_in_the_called_blue(data: dict) -> list[str]:
                 if delta_e(_over(fill, opacity, THEME.background), blue) < LEAST_PART_APART:
                     found[name] = f"play {k} {name}"
     return list(found.values())
+
+
+# --- faster9: chapter 5's kind words off P's hull, its stack drawn as a stack, its plot's colours --
+
+#: the notes that say a vertex's kind: the word beside it, and the legend entry or note beside
+#: the picture where no place beside it is free
+_KIND_NOTES = (*_KIND_WORDS, "legend:kind")
+
+
+def kind_words_in_the_picture(data: dict) -> list[str]:
+    """The monotone sweep's kind words and kind notes (:data:`_KIND_NOTES`) whose box lies
+    within the convex hull of the polygon drawn last (:data:`_INTERIORS`) by more than
+    :data:`MOST_TEXT_OVER_FILL`, as ``"play 34 'regular' 0.44 in P's hull"``: in a notch or
+    slot of P the background hardly differs from P's faint fill, and a word there reads as
+    written on the picture (teacher review: "regular" in the slot by I, chapter 5 at 52 s,
+    "merge" in K's notch at 42 s, passed :func:`words_over_the_picture`, being just off P).
+    Each text at each place once."""
+    from shapely.geometry import box as rectangle
+
+    hull = None
+    found: dict[tuple[str, tuple[float, ...]], str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                if kind in INCOMING and node.get("name") in _INTERIORS and node.get("points"):
+                    outline = _outline(node)
+                    hull = outline.convex_hull if outline is not None else None
+                if kind not in INCOMING or hull is None:
+                    continue
+                for part in mobject_nodes(node):
+                    if part.get("name") not in _KIND_NOTES:
+                        continue
+                    box = _box_of_parts(part)
+                    if box is None:
+                        continue
+                    said = " ".join(t for p in mobject_nodes(part) if (t := p.get("text")))
+                    over = rectangle(*box).intersection(hull).area
+                    if over > MOST_TEXT_OVER_FILL:
+                        found.setdefault((said, box), f"play {k} {said!r} {over:.2f} in P's hull")
+    return list(found.values())
+
+
+def _box_of_parts(node: dict) -> tuple[float, float, float, float] | None:
+    """A node's box with all its parts: their text boxes and their points."""
+    xs, ys = [], []
+    for part in mobject_nodes(node):
+        if part.get("box") is not None:
+            x0, y0, x1, y1 = part["box"]
+            xs += [x0, x1]
+            ys += [y0, y1]
+        for x, y, *_ in part.get("points") or ():
+            xs.append(x)
+            ys.append(y)
+    return (min(xs), min(ys), max(xs), max(ys)) if xs else None

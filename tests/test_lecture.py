@@ -71,6 +71,7 @@ from tests.reading_rules import (
     implementation_talk,
     jumping_stacks,
     keys_with_nothing_shown,
+    kind_words_in_the_picture,
     kinds_said,
     labels_across_fills,
     labels_across_t,
@@ -741,6 +742,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # review s35: and off P's fill ("merge" beside M and "split" beside D stood on it), and
     # the sweep line clear of every label (at 28 s its dashes ran up to M's and K's letters)
     assert words_over_the_picture(data) == [], chapter.slug
+    # faster9: nor in a notch or slot of P, whose dark hardly differs from its faint fill
+    # ("regular" by I at 52 s, "merge" in K's notch at 42 s read as written on P)
+    assert kind_words_in_the_picture(data) == [], chapter.slug
     if chapter.slug in KNOWN_LABELS_OVER_P:  # and no label over it but those known
         over = {found.split()[2] for found in texts_over_the_picture(data)}
         assert over == KNOWN_LABELS_OVER_P[chapter.slug], sorted(over)

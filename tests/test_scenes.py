@@ -1253,3 +1253,12 @@ def test_every_scene_says_each_caption_once(case):
     found = captions_said_again(graph(case).data)
     assert sorted(found) == sorted(KNOWN_REPEATED_CAPTIONS.get(case.id, [])), case.id
 
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_kind_word_stands_in_the_picture(case):
+    """Teacher review (faster9): the monotone sweep's kind words stand outside P's hull or
+    beside the picture, never in a notch, slot or hole of P (chapter 5's "regular" stood in
+    the slot by I, read as written on P)."""
+    from tests.reading_rules import kind_words_in_the_picture
+
+    assert kind_words_in_the_picture(graph(case).data) == [], case.id
