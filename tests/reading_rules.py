@@ -5772,3 +5772,46 @@ def _box_of_parts(node: dict) -> tuple[float, float, float, float] | None:
             xs.append(x)
             ys.append(y)
     return (min(xs), min(ys), max(xs), max(ys)) if xs else None
+
+
+#: the lines of a card's plots, by their names' beginnings (chapter 5's measured steps and
+#: the bounds it drew, chapter 4's ear tests)
+_PLOT_SERIES = ("figure:measured:", "figure:bound:", "figure:growth:")
+#: nearer than this (CIE76 ΔE) to a colour of the legend, a line reads as that meaning
+LEAST_SERIES_APART = 20.0
+
+
+def _legend_colours() -> dict[str, str]:
+    """The colours of :mod:`metaphors.theme`'s legend, by their meaning: the roles, the kinds
+    of vertex, the stack, P's fill, the metaphors' tools and what they sweep, the fruit, the
+    pieces' tints and the triangles' green."""
+    from metaphors.theme import THEME
+
+    fields = ("called", "argument", "result", "rejected", "idle", "candidate", "split", "merge",
+              "stack", "polygon_fill", "water", "ball", "band", "hand", "sweep", "swept",
+              "dial", "fruit", "rind")
+    colours = {field: getattr(THEME, field) for field in fields}
+    colours.update({f"piece tint {k + 1}": c for k, c in enumerate(THEME.part_tints)})
+    return colours
+
+
+def plot_series_in_role_colours(data: dict) -> list[str]:
+    """The lines of a card's plot (:data:`_PLOT_SERIES`) drawn in a colour of the legend, or
+    within :data:`LEAST_SERIES_APART` of one, as ``"figure:measured:ear-clipping:half-disc
+    reads as piece tint 1"``: a line in the called blue or a piece's teal reads as that
+    meaning (teacher review of chapter 5's plot: its six lines took the palette's teal and tan,
+    the pieces' tints, its blue, the called blue's neighbour, and its olive). Each line once."""
+    legend = _legend_colours()
+    found: dict[str, str] = {}
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                name = node.get("name") or ""
+                colour = node.get("stroke")
+                if not name.startswith(_PLOT_SERIES) or name in found or not colour:
+                    continue
+                near = min(legend, key=lambda k: delta_e(colour, legend[k]))
+                if delta_e(colour, legend[near]) < LEAST_SERIES_APART:
+                    found[name] = f"{name} reads as {near}"
+    return list(found.values())
+

@@ -104,6 +104,7 @@ from tests.reading_rules import (
     picks_in_the_red,
     pieces_in_the_called_blue,
     placeholders_as_labels,
+    plot_series_in_role_colours,
     recoloured_close_ups,
     red_bursts_before_verdicts,
     redrawn_pictures,
@@ -588,6 +589,12 @@ KNOWN_LABELS_ACROSS_FILLS = {"ears": ["b₁ on triangulation"]}
 #: close, placed with no inside (the close-up's drawing held P's ring twice, one copy with a
 #: corner more at each side's middle, and the two made a polygon with itself as its hole).
 KNOWN_FAR_VERDICTS: dict[str, list[str]] = {}
+#: Likewise (faster9): chapter 4's plot of ear tests draws two of its three ear clippers in
+#: the palette's teal and tan, the pieces' tints; the rule found it while mending chapter 5's
+#: plot, left to chapter 4's own mending.
+KNOWN_PLOT_SERIES_IN_ROLE_COLOURS: dict[str, list[str]] = {"ears": [
+    "figure:growth:ear-clipping reads as piece tint 1",
+    "figure:growth:prune-and-search reads as piece tint 2"]}
 
 
 @pytest.mark.parametrize("chapter", _chapters())
@@ -745,6 +752,10 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # faster9: nor in a notch or slot of P, whose dark hardly differs from its faint fill
     # ("regular" by I at 52 s, "merge" in K's notch at 42 s read as written on P)
     assert kind_words_in_the_picture(data) == [], chapter.slug
+    # faster9: no line of a card's plot in a colour of the legend (chapter 5's took the pieces'
+    # teal and tan and a blue beside the called blue's); chapter 4's known (its ear tests)
+    assert plot_series_in_role_colours(data) == KNOWN_PLOT_SERIES_IN_ROLE_COLOURS.get(
+        chapter.slug, []), chapter.slug
     if chapter.slug in KNOWN_LABELS_OVER_P:  # and no label over it but those known
         over = {found.split()[2] for found in texts_over_the_picture(data)}
         assert over == KNOWN_LABELS_OVER_P[chapter.slug], sorted(over)
