@@ -241,8 +241,9 @@ def _measured(theme: Theme, box: Box) -> list[Mobject]:
         drawn.append(tag(said, None, "figure:series-name"))
     icon = _icon(theme)
     said = typeset.text(COUNTED_ON, font=theme.font, size=theme.label_size, colour=theme.ink)
-    row = VGroup(icon, said).arrange(RIGHT, buff=0.15)
-    row.move_to((area.left + area.width / 2, area.bottom - 1.05, 0))
+    left = area.left + area.width / 2 - (icon.width + 0.15 + said.width) / 2  # the two centred
+    icon.move_to((left + icon.width / 2, area.bottom - 1.05, 0))
+    said.next_to(icon, RIGHT, buff=0.15)
     drawn += [icon, tag(said, None, "figure:counted-on")]
     return [*drawn, figure_caption(box, theme, (STEP, theme.ink))]
 
