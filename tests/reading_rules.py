@@ -1645,8 +1645,10 @@ def fleeting_kind_words(data: dict) -> list[str]:
 
 
 def _stack_labels(node: dict) -> list[str]:
-    """The labels the monotone stack's column shows, the top first ("stack" over them)."""
-    return [t for p in mobject_nodes(node) if (t := (p.get("text") or "").strip())][1:]
+    """The labels the monotone stack's column shows, the top first ("stack" over them; the
+    mark of its top, ``stack:top``, is no label)."""
+    return [t for p in mobject_nodes(node) if (t := (p.get("text") or "").strip())
+            and p.get("name") != "stack:top"][1:]
 
 
 def jumping_stacks(data: dict) -> list[str]:
@@ -5760,17 +5762,43 @@ def kind_words_in_the_picture(data: dict) -> list[str]:
     return list(found.values())
 
 
+#: the least gap between a kind's note beside the picture (``legend:kind``) and a vertex
+#: label: "F: regular vertex" stood 0.1 right of L's label, read as L's (chapter 5 at 64 s)
+KIND_NOTE_OFF_LABELS = 0.45
+
+
+def kind_notes_by_labels(data: dict) -> list[str]:
+    """The kind notes beside the picture (``legend:kind``) nearer than
+    :data:`KIND_NOTE_OFF_LABELS` to a vertex label on screen, as ``"'F: regular vertex' by
+    L"``: beside a label, the note is read as that vertex's."""
+    from shapely.geometry import box as rectangle
+
+    found = []
+    for anim, labels in _with_labels(data):
+        if anim.get("type") not in INCOMING:
+            continue
+        for part in mobject_nodes(anim.get("mobject", {})):
+            if part.get("name") != "legend:kind" or (box := _box_of_parts(part)) is None:
+                continue
+            said = " ".join(t for p in mobject_nodes(part) if (t := p.get("text")))
+            found += [f"{said!r} by {v}" for v, b in sorted(labels.items())
+                      if rectangle(*box).distance(rectangle(*b)) < KIND_NOTE_OFF_LABELS]
+    return sorted(set(found))
+
+
 def _box_of_parts(node: dict) -> tuple[float, float, float, float] | None:
-    """A node's box with all its parts: their text boxes and their points."""
+    """A note's box with all its parts: its texts' boxes and its swatches' (``Dot``) points
+    (a text's own glyph points are not where it stands on screen)."""
     xs, ys = [], []
     for part in mobject_nodes(node):
         if part.get("box") is not None:
             x0, y0, x1, y1 = part["box"]
             xs += [x0, x1]
             ys += [y0, y1]
-        for x, y, *_ in part.get("points") or ():
-            xs.append(x)
-            ys.append(y)
+        elif part.get("type") == "Dot":
+            for x, y, *_ in part.get("points") or ():
+                xs.append(x)
+                ys.append(y)
     return (min(xs), min(ys), max(xs), max(ys)) if xs else None
 
 
@@ -5815,3 +5843,75 @@ def plot_series_in_role_colours(data: dict) -> list[str]:
                     found[name] = f"{name} reads as {near}"
     return list(found.values())
 
+
+def _bounds_centre(node: dict) -> tuple[float, float] | None:
+    """The centre of a node's points' bounds."""
+    points = node.get("points") or ()
+    if not points:
+        return None
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    return (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+
+
+#: how near (scene units) a chain's mark or segment end stands to the vertex it marks
+CHAIN_AT = 0.02
+
+
+def _chain_faults(chain: dict, stacked: list[str], dots: dict[str, tuple[float, float]]
+                  ) -> list[str]:
+    """What a drawn chain (``stack:chain``) misses of the stack ``stacked`` (bottom first): a
+    vertex with no mark (a ``Dot`` of the chain) at its dot, a mark on no stacked vertex, two
+    vertices one above the other on the stack with no segment between them."""
+    marks = [c for p in mobject_nodes(chain) if p.get("type") == "Dot" and (c := _bounds_centre(p))]
+    ends = [(p["points"][0][:2], p["points"][-1][:2]) for p in mobject_nodes(chain)
+            if p.get("type") == "Line" and len(p.get("points") or ()) >= 2]
+
+    def at(point, v: str) -> bool:
+        return v in dots and math.dist(point, dots[v]) <= CHAIN_AT
+
+    found = [f"no mark on {v}" for v in stacked if not any(at(m, v) for m in marks)]
+    found += [f"a mark on no stacked vertex at ({m[0]:.1f}, {m[1]:.1f})" for m in marks
+              if not any(at(m, v) for v in stacked)]
+    found += [f"no segment {u}–{v}" for u, v in itertools.pairwise(stacked)
+              if not any((at(a, u) and at(b, v)) or (at(a, v) and at(b, u)) for a, b in ends)]
+    return found
+
+
+def chains_off_the_stack(data: dict) -> list[str]:
+    """The monotone stack's changes whose waiting chain, drawn on P, is not the stack's: at
+    each play that changes the column (``stack:column``, as it comes or what it turns into),
+    the chain (``stack:chain``, likewise) marks each stacked vertex at its dot, marks no
+    other, and joins each two vertices one above the other on the stack with a segment
+    (:func:`_chain_faults`), as ``"'M waits on the stack': no mark on A"``; and the column
+    marks its top (``stack:top``) beside its top name, as ``"'A waits …': top unmarked"``.
+    The issue asked for "the chain waiting to be triangulated, as it grows and pops": it was
+    one yellow line, its vertices unmarked, beside a column of words (chapter 5, 90–120 s)."""
+    dots: dict[str, tuple[float, float]] = {}
+    found, caption = [], ""
+    for play in data["plays"]:
+        caption = play.get("subcaption") or caption
+        column = chain = None
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                dots = {}
+            for key in ("mobject", "target"):
+                dots.update(dict(_dot_centres(anim.get(key, {}))))
+            if anim.get("type") in OUTGOING:
+                continue
+            shown = anim.get("target", node)
+            if shown.get("name") == "stack:column":
+                column = shown
+            elif shown.get("name") == "stack:chain":
+                chain = shown
+        if column is None:
+            continue
+        stacked = list(reversed(_stack_labels(column)))  # the bottom first
+        if chain is None:
+            found.append(f"{caption!r}: no chain drawn")
+        else:
+            found += [f"{caption!r}: {fault}" for fault in _chain_faults(chain, stacked, dots)]
+        tops = [p for p in mobject_nodes(column) if p.get("name") == "stack:top"]
+        if stacked and not tops:
+            found.append(f"{caption!r}: top unmarked")
+    return found

@@ -39,6 +39,7 @@ from tests.reading_rules import (
     bare_ticks,
     broken_counts,
     broken_summaries,
+    chains_off_the_stack,
     claims_along_edges,
     claims_given_away,
     claims_like_their_edges,
@@ -71,6 +72,7 @@ from tests.reading_rules import (
     implementation_talk,
     jumping_stacks,
     keys_with_nothing_shown,
+    kind_notes_by_labels,
     kind_words_in_the_picture,
     kinds_said,
     labels_across_fills,
@@ -752,6 +754,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # faster9: nor in a notch or slot of P, whose dark hardly differs from its faint fill
     # ("regular" by I at 52 s, "merge" in K's notch at 42 s read as written on P)
     assert kind_words_in_the_picture(data) == [], chapter.slug
+    # and a kind's note beside the picture stands clear of every label ("F: regular vertex"
+    # by L's label read as L's)
+    assert kind_notes_by_labels(data) == [], chapter.slug
     # faster9: no line of a card's plot in a colour of the legend (chapter 5's took the pieces'
     # teal and tan and a blue beside the called blue's); chapter 4's known (its ear tests)
     assert plot_series_in_role_colours(data) == KNOWN_PLOT_SERIES_IN_ROLE_COLOURS.get(
@@ -761,6 +766,9 @@ def test_every_chapter_builds_with_its_captions(chapter):
         assert over == KNOWN_LABELS_OVER_P[chapter.slug], sorted(over)
     assert labels_struck_by_the_sweep(data) == [], chapter.slug
     assert jumping_stacks(data) == [], chapter.slug
+    # faster9: the waiting chain drawn on P is the stack's at every push and pop, each
+    # vertex marked, and the column marks its top
+    assert chains_off_the_stack(data) == [], chapter.slug
     # issue 22: gravity's hit is seen, no label under the hit ring or the ball's path
     assert labels_under_the_fall(data) == [], chapter.slug
     # and the ball is seen to fall: 4 % of the frame's height at least (a close-up zooms a

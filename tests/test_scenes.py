@@ -1262,3 +1262,13 @@ def test_no_kind_word_stands_in_the_picture(case):
     from tests.reading_rules import kind_words_in_the_picture
 
     assert kind_words_in_the_picture(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_stacks_chain_is_the_stack(case):
+    """Issue 22 item 5 (faster9): the monotone stack is drawn as a stack, its top marked, and
+    the chain waiting on it is drawn on P through exactly its vertices, each marked, at every
+    push and pop (it was one yellow line beside a column of words)."""
+    from tests.reading_rules import chains_off_the_stack
+
+    assert chains_off_the_stack(graph(case).data) == [], case.id
