@@ -11,13 +11,10 @@ centre, width and height), the card's words on the right:
   before the run said what they are);
 * ``measured``: the steps (sign tests: orientations and comparisons) faster ear clipping
   and monotone partition take, counted in real runs (:func:`story.sign_tests.measured`) on
-  half discs whose straight side is dented in (ear clipping's worst case: its n² shows) and
-  on random polygons (where the two keep pace), against n on logarithmic axes named in
-  plain words, each algorithm with its own colour and marks (filled on the half discs), and
-  dashed, the shapes of the bounds no run here measures (Tarjan and van Wyk's
-  n log log n, Chazelle's n), from monotone partition's first mark (a bound has no
-  constant); the legend's table says which lines were counted on which polygons, and which
-  are bounds, not measured;
+  half discs whose straight side is dented in (ear clipping's worst case: its n² shows),
+  against n on logarithmic axes named and ticked in plain words, two lines in the ink, each
+  with its own mark and its name beside its end (no legend, no role's colour), the half disc
+  drawn beside the words that say what was counted;
 * ``delaunay-circle``: P's constrained Delaunay triangulation with one triangle's
   circumcircle, every vertex clearly inside or outside it, those inside (none of them seen
   from inside the triangle) marked;
@@ -34,8 +31,9 @@ from dataclasses import dataclass
 from fractions import Fraction
 from itertools import pairwise
 
+import numpy as np
 import shapely
-from manim import LEFT, Circle, DashedLine, Dot, Line, Mobject, VGroup
+from manim import DR, RIGHT, UL, Circle, DashedLine, Dot, Line, Mobject, VGroup
 from manim import Polygon as MPolygon
 
 from geometry.cdt import constrained_delaunay
@@ -47,7 +45,7 @@ from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
 from metaphors.drawing import Frame, polygon_mobject, triangle_mobject, triangulation_figure
 from metaphors.figure_caption import figure_caption
-from metaphors.figure_plots import MARKS, Area, Series, axis_names, line_plot, point_mark
+from metaphors.figure_plots import Area, Series, axis_names, line_plot
 from metaphors.labels import EDGE_MARGIN, placed_vertex_markers
 from metaphors.layout import area_of
 from metaphors.monotone import piece_tints
@@ -55,7 +53,7 @@ from metaphors.tags import tag
 from metaphors.theme import Theme
 from rendering import typeset
 from story.registry import spoken
-from story.sign_tests import SEEDS, measured
+from story.sign_tests import measured
 
 Box = tuple[tuple[float, float], float, float]  # a figure's centre, width and height
 
@@ -63,19 +61,19 @@ KINDS = ("monotone-pieces", "measured", "delaunay-circle", "three-triangulations
 #: the measured plot: the two faster algorithms, counted on polygons of these sizes
 MEASURED_SIZES = (10, 20, 40, 80, 160)
 MEASURED_RUNS = ("ear-clipping", "monotone")
-#: the kinds of polygon counted (sample families) and how the legend names them: half discs
-#: whose straight side is dented in, where ear clipping's n² shows (on random polygons alone
-#: the two lines ran together, while the chapter said O(n²) against O(n log n)), and random
-#: ones; each algorithm's marks filled on the first, hollow on the second
-MEASURED_SHAPES = (("half-disc", "half discs"), ("random-2opt", "random polygons"))
-#: the half disc drawn beside its name in the legend (what "half disc" means there: its
-#: dented side is seen), this many vertices, this high (scene units)
+#: the polygons counted (a sample family): half discs whose straight side is dented in, where
+#: ear clipping's n² shows. Only these: the random polygons' two lines, where the two keep
+#: pace, ran together with monotone partition's here, and with two dashed bounds made six
+#: lines and a legend table that the teacher's review found crowded (the card says the
+#: random polygons' result in words)
+MEASURED_SHAPE = "half-disc"
+#: each run's mark (:data:`metaphors.figure_plots.MARKS`): the lines are told apart by their
+#: marks and the names beside their ends, both drawn in the ink, no role's colour (the palette's
+#: teal and tan were the pieces' tints, its blue the called blue)
+MEASURED_MARKS = {"ear-clipping": "square", "monotone": "dot"}
+#: the half disc drawn beside the words that say what was counted (its dented side is seen),
+#: this many vertices, this high (scene units)
 ICON_N, ICON_HEIGHT = 12, 0.4
-#: the line the bounds start from: its first mark (a bound has no constant)
-BOUND_FROM = ("monotone", "half-disc")
-#: the bounds drawn for comparison, never run: (their key, their name on screen, their shape)
-BOUNDS = (("tarjan-van-wyk", "O(n log log n)", lambda n: n * math.log2(math.log2(n))),
-          ("chazelle", "O(n)", float))
 #: the recap's triangulations and the time bound each card says
 RECAPPED = (("divide-and-conquer", "O(n²)"), ("ear-clipping", "O(n²)"),
             ("monotone", "O(n log n)"))
@@ -198,82 +196,55 @@ def _pieces(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
 
 
 def measured_series(theme: Theme) -> list[Series]:
-    """The plot's lines: each algorithm's counts at :data:`MEASURED_SIZES` on each kind of
-    polygon (:data:`MEASURED_SHAPES`; an algorithm's colour and mark on both, filled on the
-    first), then the bounds (dashed), their shapes only: a bound has no constant, so each
-    starts on the first mark of :data:`BOUND_FROM`'s line, a point the plot shows (it started
-    in the plot's corner, an unlabelled point below the "100" tick)."""
-    lines = [Series(f"figure:measured:{name}:{shape}",
-                    tuple(measured(name, n, shape) for n in MEASURED_SIZES),
-                    # the colours and marks they had beside divide and conquer (first)
-                    theme.pieces[(k + 1) % len(theme.pieces)], mark=MARKS[(k + 1) % len(MARKS)],
-                    filled=j == 0)
-             for k, name in enumerate(MEASURED_RUNS) for j, (shape, _) in enumerate(MEASURED_SHAPES)]
-    first = MEASURED_SIZES[0]
-    start = measured(*BOUND_FROM[:1], first, BOUND_FROM[1])
-    for k, (key, _, shape_of) in enumerate(BOUNDS, start=len(MEASURED_RUNS) + 1):
-        counts = tuple(start * shape_of(n) / shape_of(first) for n in MEASURED_SIZES)
-        lines.append(Series(f"figure:bound:{key}", counts, theme.pieces[k % len(theme.pieces)],
-                            dashed=True))
-    return lines
+    """The plot's lines: each algorithm's counts at :data:`MEASURED_SIZES` on the dented half
+    discs (:data:`MEASURED_SHAPE`), in the ink with its own mark (:data:`MEASURED_MARKS`)."""
+    return [Series(f"figure:measured:{name}",
+                   tuple(measured(name, n, MEASURED_SHAPE) for n in MEASURED_SIZES),
+                   theme.ink, mark=MEASURED_MARKS[name], filled=True)
+            for name in MEASURED_RUNS]
 
 
 #: what the plot's y axis counts, in plain words, and what one of them is (its caption)
-STEPS = f"steps (geometric tests)\nrandom polygons: each a mean of {len(SEEDS)}"
+STEPS = "steps (geometric tests)"
 STEP = "a test: which side of a line a point is on, or which of two points is nearer"
-#: the legend's columns (scene units from the box's left): names, then one per kind of polygon
-LEGEND_COLUMNS = (0.0, 2.4, 4.15)
+#: what the lines were counted on, said under the x axis's name beside the drawn half disc
+COUNTED_ON = "counted on dented half discs"
+#: where each line's name stands: by its mark at a size, above the steeper line (up and to
+#: the left of its mark at 80, where the line is lower; at 40 it ran into the "1 000" tick)
+#: and below the other (down and to the right of its mark at 40, where it is higher): beside
+#: its own line, clear of both, in the room the rising lines leave; and its gap from the
+#: mark (scene units)
+NAME_AT, NAME_GAP = {True: 80, False: 40}, 0.14
 
 
 def _measured(theme: Theme, box: Box) -> list[Mobject]:
-    """The plot with its axes named, its legend below it as a table (a row per algorithm,
-    its name in its colour; a column per kind of polygon, each with the algorithm's mark on
-    it; then the bounds, not measured), and what a step is."""
+    """The plot with its axes named and ticked in the ink, each line's name beside it (no
+    legend to look up), what the lines were counted on (the half disc drawn) and what a
+    step is."""
     (x, y), width, height = box
-    row, rows = 0.36, len(MEASURED_RUNS) + 3.3  # x's name, the header, the lines, the bounds
-    # the x axis: its ticks, its name and the legend below it, in the box
-    bottom = y - height / 2 + row * rows
-    # the y axis's name over it, with what a count is: by the numbers it speaks of
+    # under the x axis: its ticks, its name, then what was counted on
+    bottom = y - height / 2 + 1.45
     area = Area(x - width / 2 + 1.0, bottom, width - 1.15, y + height / 2 - 0.45 - bottom)
     series = measured_series(theme)
-    drawn, _ = line_plot(MEASURED_SIZES, series, area, theme, log=True)
+    drawn, at = line_plot(MEASURED_SIZES, series, area, theme, log=True, ticks=theme.ink)
     drawn += axis_names(area, "vertices n", STEPS, theme)
-    counted, bounds = series[:-len(BOUNDS)], series[-len(BOUNDS):]
-    left = x - width / 2
-
-    def words(said: str, colour: str, at: tuple[float, float]) -> Mobject:
-        # a size smaller than the ticks': the table fits the box
-        text = typeset.text(said, font=theme.font, size=theme.label_size - 2, colour=colour)
-        return tag(text.move_to((*at, 0), aligned_edge=LEFT), None, "figure:legend")
-
-    top = bottom - 0.62 - 1.3 * row  # clear of the x axis's name
-    drawn.append(words("counted on", theme.ink, (left + LEGEND_COLUMNS[0], top)))
-    middles = []  # each column's middle: its marks stand under its name
-    for (shape, said), column in zip(MEASURED_SHAPES, LEGEND_COLUMNS[1:], strict=True):
-        at = left + column
-        if shape == "half-disc":  # its picture first: the dented side seen, not only said
-            icon = _icon(theme).move_to((at, top, 0), aligned_edge=LEFT)
-            drawn.append(icon)
-            at += icon.width + 0.12
-        header = words(said, theme.ink, (at, top))
-        drawn.append(header)
-        middles.append((left + column + header.get_right()[0]) / 2)
-    for k, name in enumerate(MEASURED_RUNS):
-        at_y = top - row * (k + 1)
-        drawn.append(words(spoken(name), counted[k * len(MEASURED_SHAPES)].colour,
-                           (left + LEGEND_COLUMNS[0], at_y)))
-        for j, middle in enumerate(middles):
-            s = counted[k * len(MEASURED_SHAPES) + j]
-            assert s.mark is not None
-            drawn.append(tag(point_mark(s.mark, s.colour, (middle, at_y, 0.0), theme,
-                                        s.filled), None, "figure:key"))
-    at_y, at_x = top - row * (len(MEASURED_RUNS) + 1), left + LEGEND_COLUMNS[0]
-    for (_, said, _), s in zip(BOUNDS, bounds, strict=True):
-        shown = words(said, s.colour, (at_x, at_y))
-        drawn.append(shown)
-        at_x += shown.width + 0.25
-    # (the card's words say the dashed lines are these bounds)
-    drawn.append(words("bounds, not measured", theme.ink, (at_x, at_y)))
+    steepest = max(series, key=lambda s: s.counts[-1] / s.counts[0])
+    for name, line in zip(MEASURED_RUNS, series, strict=True):
+        said = typeset.text(spoken(name), font=theme.font, size=theme.label_size,
+                            colour=theme.ink)
+        n = NAME_AT[line is steepest]
+        mark = np.array(at(n, line.counts[MEASURED_SIZES.index(n)]))
+        if line is steepest:
+            said.move_to(mark + np.array((-NAME_GAP, NAME_GAP, 0.0)), aligned_edge=DR)
+        else:
+            said.move_to(mark + np.array((NAME_GAP, -NAME_GAP, 0.0)), aligned_edge=UL)
+        drawn.append(tag(said, None, "figure:series-name"))
+    icon = _icon(theme)
+    said = typeset.text(COUNTED_ON, font=theme.font, size=theme.label_size, colour=theme.ink)
+    left = area.left + area.width / 2 - (icon.width + 0.15 + said.width) / 2  # the two centred
+    icon.move_to((left + icon.width / 2, area.bottom - 1.05, 0))
+    said.next_to(icon, RIGHT, buff=0.15)
+    drawn += [icon, tag(said, None, "figure:counted-on")]
     return [*drawn, figure_caption(box, theme, (STEP, theme.ink))]
 
 
@@ -525,7 +496,7 @@ def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
     return drawn
 
 
-__all__ = ["BOUNDS", "BOUND_FROM", "KINDS", "MEASURED_RUNS", "MEASURED_SHAPES", "MEASURED_SIZES",
+__all__ = ["KINDS", "MEASURED_MARKS", "MEASURED_RUNS", "MEASURED_SHAPE", "MEASURED_SIZES",
            "RECAPPED", "CircleFigure", "Circumcircle", "Partition", "circle_figure",
            "circumcircle", "clear_of_rim", "clearly_inside", "figure_mobjects", "level_line",
            "measured_series", "monotone_partition", "panels",

@@ -80,8 +80,9 @@ def point_mark(kind: str, colour: str, at: Point3, theme: Theme, filled: bool = 
     return shape.move_to(at)
 
 
-def _tick(words: str, theme: Theme) -> Mobject:
-    return typeset.text(words, font=theme.font, size=theme.label_size, colour=theme.idle)
+def _tick(words: str, theme: Theme, colour: str | None = None) -> Mobject:
+    return typeset.text(words, font=theme.font, size=theme.label_size,
+                        colour=colour or theme.idle)
 
 
 def spoken_count(count: float) -> str:
@@ -94,9 +95,11 @@ def spoken_count(count: float) -> str:
 
 
 def line_plot(sizes: Sequence[int], series: Sequence[Series], area: Area, theme: Theme, *,
-              log: bool = False) -> tuple[list[Mobject], Callable[[float, float], Point3]]:
+              log: bool = False, ticks: str | None = None
+              ) -> tuple[list[Mobject], Callable[[float, float], Point3]]:
     """The axes, their ticks and one line per series (back to front), and ``at(n, count)``,
-    the point on screen of a count. Linear: the first and last size ticked, and the top
+    the point on screen of a count; ``ticks``: the ticks' colour (the idle grey unless
+    given: the ink reads better on a card's dark). Linear: the first and last size ticked, and the top
     count. Logarithmic: every size ticked, and every power of ten above the least count's
     decade up to the top count."""
     top = max(max(s.counts) for s in series)
@@ -122,9 +125,9 @@ def line_plot(sizes: Sequence[int], series: Sequence[Series], area: Area, theme:
                      stroke_width=theme.thin_stroke), None, "figure:axis"),
             tag(Line(at(*corner), at(corner[0], top), color=theme.idle,
                      stroke_width=theme.thin_stroke), None, "figure:axis")]
-    words = [tag(_tick(str(n), theme).next_to(at(n, corner[1]), direction=DOWN, buff=0.12),
+    words = [tag(_tick(str(n), theme, ticks).next_to(at(n, corner[1]), direction=DOWN, buff=0.12),
                  None, "figure:tick") for n in ticked]
-    words += [tag(_tick(spoken_count(c), theme).next_to(at(corner[0], c), direction=LEFT,
+    words += [tag(_tick(spoken_count(c), theme, ticks).next_to(at(corner[0], c), direction=LEFT,
                                                         buff=0.12), None, "figure:tick")
               for c in marks]
     lines: list[Mobject] = []

@@ -11,11 +11,10 @@ from __future__ import annotations
 
 import weakref
 from collections.abc import Iterator, Mapping, Sequence
+from itertools import pairwise
 
 import numpy as np
 from manim import (
-    DOWN,
-    ORIGIN,
     RIGHT,
     Animation,
     Create,
@@ -25,6 +24,7 @@ from manim import (
     FadeOut,
     Indicate,
     Line,
+    Rectangle,
     Transform,
     VGroup,
     VMobject,
@@ -140,8 +140,9 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
     :data:`KIND_REACH` of its dot that keeps every other vertex's dot and label :data:`KIND_OWN`
     times as far as its own, and a
     gap of :data:`KIND_GAPS` from every vertex label and dot, every edge and diagonal drawn, the
-    sweep line at ``y``, the title and the panel, outside P, on screen above the subtitle; None
-    where there is none (the caption names the kind)."""
+    sweep line at ``y``, the title and the panel, outside P's convex hull (in a notch or slot
+    of P it reads as written on P), on screen above the subtitle; None where there is none
+    (:func:`_kind_key` says it beside the picture)."""
     theme = board.theme
     dot = board.markers[vertex][0].get_center()[:2]
     size = (float(kind.width), float(kind.height))
@@ -173,9 +174,12 @@ def _kind_place(board: Board, kind: VMobject, vertex: str, y: float) -> np.ndarr
                        dots=[(*m[0].get_center()[:2], 0.0) for v, m in board.markers.items()
                              if v != vertex])
     ours = clear(centres, size, others, KIND_OWN * beside)
-    # P's region too: a word over P's fill is text over the picture (review s35: "merge" stood
-    # on the fill beside M, "split" beside D); outside P, the edges' gap keeps it off them
-    region = Region([p[:2] for p in rings[0]], [[p[:2] for p in ring] for ring in rings[1:]])
+    # P's hull too: a word over P's fill is text over the picture (review s35: "merge" stood
+    # on the fill beside M, "split" beside D), and so is one in a notch or slot of P, whose
+    # dark hardly differs from P's faint fill (teacher review, faster9: "regular" in the slot
+    # by I at 52 s and by F at 64 s, "merge" in K's notch at 42 s, "split" in D's, all read as
+    # written on P); outside the hull, the edges' gap keeps it off them
+    region = Region([p[:2] for p in rings[0]]).convex_hull
     obstacles = Obstacles(boxes=boxes, segments=edges, dots=dots, shapes=[region])
     within = (FRAME_AREA[0], SUBTITLE_TOP, FRAME_AREA[2], FRAME_AREA[3])
     free = [ours & clear(centres, size, obstacles, gap, within) for gap in KIND_GAPS]
@@ -211,10 +215,12 @@ def classify(board: Board, beat: Classify) -> None:
     anims: list[Animation] = [
         Indicate(board.markers[data.vertex], color=colour)]
     shown: VMobject | None = kind.move_to(place) if place is not None else None
-    if shown is None and named and _kind_role(data.kind) != "called":
-        # no room beside it off P's fill (M and K in their notches): the kind's colour said
-        # beside the picture, as a legend entry, the vertex lit in that colour
-        shown = _kind_key(board, data.kind, line)
+    if shown is None and named:
+        # no room beside it outside P's hull (M and K in their notches, I and F by the slot,
+        # D by its notch): the kind said beside the picture, a split or merge vertex's as a
+        # legend entry of its colour, the vertex lit in it; another's with its vertex named
+        # ("I: regular vertex"): its blue is the vertex looked at, no kind's colour
+        shown = _kind_key(board, data.kind, data.vertex, line)
     if shown is not None:  # None: no room, no word (the caption names the kind)
         anims.append(FadeIn(shown))
     # an edge that ends at this vertex leaves the line, and its helper with it
@@ -231,19 +237,38 @@ def classify(board: Board, beat: Classify) -> None:
         board.leaving.append(shown)
 
 
-def _kind_key(board: Board, kind: str, sweep: VGroup) -> VGroup | None:
-    """The legend entry of a split or merge vertex (a dot in its colour, "merge vertex"), in
-    the first free place beside the picture (:func:`metaphors.layout.free_place`, clear of
-    what the stack keeps clear of, :func:`_taken`, of the sweep line and of the title's whole
-    line: beside a short title it reads as part of it), None if none is."""
+#: the least gap between a kind's note beside the picture and any vertex label (scene units):
+#: nearer, it is read as that vertex's (the reading rule's :data:`KIND_NOTE_OFF_LABELS`)
+NOTE_OFF_LABELS = 0.5
+
+
+def _kind_key(board: Board, kind: str, vertex: str, sweep: VGroup) -> VGroup | None:
+    """The legend entry of a split or merge vertex (a dot in its colour, "merge vertex"), or
+    the note of another kind, its vertex named ("I: regular vertex", in the blue of the vertex
+    looked at: no swatch, which would make that blue a kind's), in the first free place
+    beside the picture (:func:`metaphors.layout.free_place`, clear of what the stack keeps
+    clear of, :func:`_taken`, of the sweep line and of the title's whole line: beside a short
+    title it reads as part of it), None if none is."""
     theme = board.theme
-    colour = theme.role_colour(_kind_role(kind))
-    words = text(f"{kind} vertex", font=theme.font, size=theme.label_size + 2, colour=theme.ink)
-    swatch = tag(Dot(radius=theme.dot_radius * 1.8, color=colour), kind, "legend:swatch")
-    key = tag(VGroup(swatch, words.next_to(swatch, RIGHT, buff=0.15)), None, "legend:kind")
+    role = _kind_role(kind)
+    colour = theme.role_colour(role)
+    if role == "called":
+        words = text(f"{vertex}: {kind} vertex", font=theme.font, size=theme.label_size + 2,
+                     colour=colour)
+        key = tag(VGroup(words), None, "legend:kind")
+    else:
+        words = text(f"{kind} vertex", font=theme.font, size=theme.label_size + 2,
+                     colour=theme.ink)
+        swatch = tag(Dot(radius=theme.dot_radius * 1.8, color=colour), kind, "legend:swatch")
+        key = tag(VGroup(swatch, words.next_to(swatch, RIGHT, buff=0.15)), None, "legend:kind")
     drawn = [box(*area_of(piece)) for piece in sweep.submobjects]
     title = box(*title_area(board.title, whole_line=True))
-    found = free_place(key.width, key.height, unary_union([_taken(board), title, *drawn]))
+    # and P's hull: in its slot, "F: regular vertex" was as much on the picture as "regular";
+    # and room round every label: by L's, "F: regular vertex" read as L's (64 s)
+    hull = Region([tuple(board.at(p)[:2]) for p in board.polygon.points]).convex_hull
+    labels = [box(*area_of(marker[1])).buffer(NOTE_OFF_LABELS) for marker in board.markers.values()]
+    found = free_place(key.width, key.height,
+                       unary_union([_taken(board), title, hull, *drawn, *labels]))
     if found is None:
         return None
     left, top = found
@@ -337,12 +362,14 @@ def pieces(board: Board, beat: Pieces) -> None:
 
 
 def stack_step(board: Board, beat: StackStep) -> None:
-    """The stack changes: its waiting chain is redrawn thick along P and its column of labels
-    (top at the top) rewritten; a triangle cut off is drawn as it leaves."""
+    """The stack changes: its waiting chain is redrawn along P through its vertices, each
+    marked, and its column of slots refilled (the top marked); a triangle cut off is drawn
+    as it leaves."""
     theme = board.theme
-    chain = tag(_chain(board, beat.points), None, "stack:chain")
+    chain = tag(_chain(board, beat.chain, beat.points), None, "stack:chain")
     column = tag(_column(board, beat.chain, beat.depth), None, "stack:column")
-    anims: list = [_replace(board, "stack:chain", chain), *_restack(board, column)]
+    anims: list = [*_restack(board, "stack:chain", chain),
+                   *_restack(board, "stack:column", column)]
     if beat.triangle:
         cut = tag(MPolygon(*[board.at(p) for p in beat.triangle], color=theme.ink,
                            stroke_width=theme.thin_stroke, fill_color=theme.stack,
@@ -363,103 +390,181 @@ def _replace(board: Board, key: str, new: VMobject) -> Transform | FadeIn:
     return FadeIn(new)
 
 
-#: the share of a stack change that the words coming onto it wait, invisible, for the words
-#: moving down to clear their row (a row's height is a word's and :data:`STACK_BUFF`)
+#: the share of a stack change that the parts coming onto it wait, invisible, for the parts
+#: moving to clear their place, and that the parts leaving take to fade
 COMING_AFTER = 0.75
 
 
 class Restack(Animation):
-    """The stack's column (``old``, on screen) rewritten as ``new`` word by word, each word
-    paired by its name (its label): one that stays moves to its new row, one that leaves
-    goes at once (a cut), one that comes fades in once the moves have cleared its row. One
-    Transform of the whole column paired its words by place, so that a leaving label faded
-    over the "stack" heading (review s567). The column on screen stays ``old``, turned into
-    ``new`` (its target, as a scene graph reads it)."""
+    """A group of named parts (the stack's column, its chain: ``old``, on screen) rewritten as
+    ``new`` part by part, each paired by its name: one that stays moves to its new place, one
+    that leaves fades out at once, one that comes fades in once the moves have cleared its
+    place. One Transform of the whole group paired its parts by place, so that a leaving
+    label faded over the "stack" heading (review s567). The group on screen stays ``old``,
+    turned into ``new`` (its target, as a scene graph reads it)."""
 
     def __init__(self, old: VGroup, new: VGroup, **kwargs) -> None:
         super().__init__(old, rate_func=linear, **kwargs)
         self.old, self.target_mobject = old, new
-        #: per word of ``new``: the word on screen, where it starts and ends, whether it came
-        self.words: list[tuple[VMobject, VMobject, VMobject, bool]] = []
+        #: per part: the part on screen, where it starts and ends, how ("stays", "comes",
+        #: "goes")
+        self.parts: list[tuple[VMobject, VMobject, VMobject, str]] = []
+        self.going: list[VMobject] = []
 
     def begin(self) -> None:
         new: VGroup = self.target_mobject
-        before = {word.name: word for word in self.old}
-        self.old.remove(*(word for word in self.old if word.name not in {w.name for w in new}))
-        for word in new:
-            came = word.name not in before
-            shown = word.copy().set_opacity(0) if came else before[word.name]
-            self.words.append((shown, shown.copy(), word, came))
-        self.old.submobjects = [shown for shown, *_ in self.words]  # in the new column's order
+        names = {part.name for part in new}
+        before = {part.name: part for part in self.old}
+        self.going = [part for part in self.old if part.name not in names]
+        for part in new:
+            came = part.name not in before
+            shown = part.copy().set_opacity(0) if came else before[part.name]
+            self.parts.append((shown, shown.copy(), part, "comes" if came else "stays"))
+        self.parts += [(part, part.copy(), part.copy().set_opacity(0), "goes")
+                       for part in self.going]
+        self.old.submobjects = [shown for shown, *_ in self.parts]
         super().begin()
 
     def interpolate_mobject(self, alpha: float) -> None:
-        for shown, start, end, came in self.words:
-            t = smooth(max(0.0, (alpha - COMING_AFTER) / (1 - COMING_AFTER)) if came else alpha)
+        for shown, start, end, how in self.parts:
+            t = smooth({"comes": max(0.0, (alpha - COMING_AFTER) / (1 - COMING_AFTER)),
+                        "goes": min(1.0, alpha / (1 - COMING_AFTER))}.get(how, alpha))
             for part, a, b in zip(shown.family_members_with_points(),
                                   start.family_members_with_points(),
                                   end.family_members_with_points(), strict=True):
                 part.interpolate(a, b, t)
 
+    def finish(self) -> None:
+        super().finish()
+        self.old.remove(*self.going)  # faded: gone
 
-def _restack(board: Board, column: VGroup) -> list:
-    """The stack's column rewritten as ``column`` (:class:`Restack`), or brought in."""
-    old = board.objects.get("stack:column")
+
+def _restack(board: Board, key: str, group: VGroup) -> list:
+    """The group kept as ``key`` (the stack's column, its chain) rewritten as ``group``
+    (:class:`Restack`), or brought in."""
+    old = board.objects.get(key)
     if not isinstance(old, VGroup):
-        board.keep("stack:column", column)
-        return [FadeIn(column)]
-    return [Restack(old, column)]
+        board.keep(key, group)
+        return [FadeIn(group)]
+    return [Restack(old, group)]
 
 
-def _chain(board: Board, points: Sequence[Point]) -> VMobject:
-    """The waiting chain: a thick line through its vertices, a large dot when one waits."""
+#: the radius of the mark on each waiting vertex, in dot radii: larger than a vertex's dot,
+#: so that the chain's vertices are seen as its, one by one
+CHAIN_MARK = 2.0
+
+
+def _chain(board: Board, labels: Sequence[str], points: Sequence[Point]) -> VGroup:
+    """The waiting chain drawn on P: a thick segment between each two vertices one above the
+    other on the stack, and a mark on each vertex (named by its vertex: a change of the
+    stack draws or takes away its own parts, :class:`Restack`). The issue asked for "the
+    chain waiting to be triangulated, as it grows and pops": one yellow line through the
+    chain's corners did not show which vertices wait."""
     theme = board.theme
     corners = [board.at(p) for p in points]
-    if len(corners) == 1:
-        return Dot(corners[0], radius=theme.dot_radius * 2.2, color=theme.stack)
-    line = VMobject(stroke_color=theme.stack, stroke_width=theme.stroke * 2.6)
-    line.set_points_as_corners(corners)
-    return line
+    placed = list(zip(labels, corners, strict=True))
+    parts: list[VMobject] = [
+        tag(Line(a, b, color=theme.stack, stroke_width=theme.stroke * 2.2), None,
+            f"stack:chain:{u}–{v}") for (u, a), (v, b) in pairwise(placed)]
+    parts += [tag(Dot(at, radius=theme.dot_radius * CHAIN_MARK, color=theme.stack), None,
+                  f"stack:chain:{v}") for v, at in zip(labels, corners, strict=True)]
+    return VGroup(*parts)
 
 
-def _words(board: Board, chain: Sequence[str]) -> list[VMobject]:
-    """The stack's words: "stack", then its labels, the top first."""
+#: the stack's slots: a vertex's name in a box this much wider and taller than the widest and
+#: tallest name of P (scene units), the slots this far apart, the top's mark this far off
+SLOT_PAD, SLOT_BUFF, TOP_BUFF = (0.3, 0.16), 0.06, 0.12
+#: what marks the top of the stack, beside its top slot
+TOP_WORDS = "← top"
+
+
+def _label_size(board: Board) -> int:
+    """The stack's words' size: four up from the labels (2.5 % of the frame high and more,
+    "stack" has no capital)."""
+    return board.theme.label_size + 4
+
+
+def _slot_size(board: Board) -> tuple[float, float]:
+    """A slot's width and height: the widest and tallest name of P, padded."""
     theme = board.theme
-    size = theme.label_size + 4  # "stack" has no capital: a line of it still ≥ 2.5 % high
-    # each named, so that a change of the stack moves each word to its new row
-    return [tag(text(word, font=theme.font, size=size, colour=theme.stack), None,
-                f"stack:{name}")
-            for word, name in (("stack", "heading"), *((c, c) for c in reversed(chain)))]
+    names = [text(v, font=theme.font, size=_label_size(board), colour=theme.ink)
+             for v in board.where]
+    return (max(n.width for n in names) + SLOT_PAD[0],
+            max(n.height for n in names) + SLOT_PAD[1])
+
+
+def _heading(board: Board) -> VMobject:
+    theme = board.theme
+    return tag(text("stack", font=theme.font, size=_label_size(board), colour=theme.stack),
+               None, "stack:heading")
+
+
+def _top_mark(board: Board) -> VMobject:
+    theme = board.theme
+    return tag(text(TOP_WORDS, font=theme.font, size=_label_size(board), colour=theme.stack),
+               None, "stack:top")
 
 
 def _column(board: Board, chain: Sequence[str], depth: int) -> VGroup:
-    """The stack beside P: "stack" over its labels, the top first, standing where the
-    tallest stack of the run keeps clear of everything else on screen (:func:`_place`);
-    a row, "stack" and its labels left to right, where no column fits."""
+    """The stack beside P, as a stack: "stack" over ``depth`` slots, the bottom slot lowest,
+    each waiting vertex's name in its slot (a box in the stack's yellow), the top marked
+    (:data:`TOP_WORDS`) beside the top slot filled; standing where the tallest stack of the
+    run keeps clear of everything else on screen (:func:`_place`). Where no column fits, a
+    row: "stack", then the names bottom first, left to right, the top marked after them."""
+    theme = board.theme
     left, top, row = _place(board, depth)
-    words = VGroup(*_words(board, chain)).arrange(RIGHT if row else DOWN, buff=STACK_BUFF,
-                                                  aligned_edge=DOWN if row else ORIGIN)
-    return words.move_to((left + words.width / 2, top - words.height / 2, 0))
+    width, height = _slot_size(board)
+    heading = _heading(board)
+    parts: list[VMobject] = [heading]
+
+    def slot(k: int) -> np.ndarray:
+        """The centre of slot ``k`` (the bottom 0)."""
+        if row:
+            return np.array((left + heading.width + STACK_BUFF + width / 2
+                             + k * (width + SLOT_BUFF), top - height / 2, 0.0))
+        below = top - heading.height - STACK_BUFF
+        return np.array((left + width / 2,
+                         below - (max(depth, 1) - 1 - k) * (height + SLOT_BUFF) - height / 2,
+                         0.0))
+
+    if row:
+        heading.move_to((left + heading.width / 2, top - height / 2, 0))
+    else:
+        heading.move_to((left + heading.width / 2, top - heading.height / 2, 0))
+        parts += [tag(Rectangle(width=width, height=height, color=theme.stack,
+                                stroke_width=theme.thin_stroke, stroke_opacity=0.45),
+                      None, f"stack:slot:{k}").move_to(slot(k)) for k in range(max(depth, 1))]
+    for k, v in reversed(list(enumerate(chain))):  # the top first, as the column is read
+        name = text(v, font=theme.font, size=_label_size(board), colour=theme.ink)
+        box = Rectangle(width=width, height=height, color=theme.stack,
+                        stroke_width=theme.stroke, fill_color=theme.stack, fill_opacity=0.22)
+        parts.append(tag(VGroup(box, name.move_to(box)), None, f"stack:{v}").move_to(slot(k)))
+    if chain:
+        mark = _top_mark(board)
+        at = slot(len(chain) - 1)
+        parts.append(mark.move_to((at[0] + width / 2 + TOP_BUFF + mark.width / 2, at[1], 0)))
+    return VGroup(*parts)
 
 
 def _place(board: Board, depth: int) -> tuple[float, float, bool]:
     """Where the run's stack stands: the left and top of the first free place
-    (:func:`metaphors.layout.free_place`) for its tallest column (``depth`` labels, each as
-    large as the largest label of P), and whether it is a row. Found once a board, so the
-    stack never jumps; where neither fits, the frame's top-left corner, as it was."""
+    (:func:`metaphors.layout.free_place`) for its tallest column (``depth`` slots, each as
+    large as the largest label of P, the top's mark beside them), and whether it is a row.
+    Found once a board, so the stack never jumps; where neither fits, the frame's top-left
+    corner, as it was."""
     if board in _PLACES:
         return _PLACES[board]
-    widest = max(_words(board, list(board.where)), key=lambda w: w.width)
-    tallest = max(_words(board, list(board.where)), key=lambda w: w.height)
-    heading = _words(board, [])[0]
+    width, height = _slot_size(board)
+    heading, mark = _heading(board), _top_mark(board)
     n = max(depth, 1)
-    column = (max(widest.width, heading.width),
-              heading.height + n * (tallest.height + STACK_BUFF))
-    row = (heading.width + n * (widest.width + STACK_BUFF), max(heading.height, tallest.height))
+    column = (max(width + TOP_BUFF + mark.width, heading.width),
+              heading.height + STACK_BUFF + n * (height + SLOT_BUFF))
+    row = (heading.width + STACK_BUFF + n * (width + SLOT_BUFF) + TOP_BUFF + mark.width,
+           max(heading.height, height))
     taken = _taken(board)
     place: tuple[float, float, bool] = (FRAME_AREA[0], FRAME_AREA[3] - 0.6, False)
-    for (width, height), as_row in ((column, False), (row, True)):
-        found = free_place(width, height, taken)
+    for (w, h), as_row in ((column, False), (row, True)):
+        found = free_place(w, h, taken)
         if found is not None:
             place = (*found, as_row)
             break

@@ -49,6 +49,7 @@ from story.beats import Beat, FindDiagonal, Point, beat_kind, points_of
 from story.pseudocode import PSEUDOCODE
 from story.refs import state_of, target_of
 from story.storyboard import Reading, Walk
+from story.words import named_together
 from tracing import Event
 
 
@@ -66,12 +67,27 @@ def read_split(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     pieces = walk.result_refs(ret)
     entered = {target_of(e): state_of(e) for e in walk.log.events[ret.seq:]
                if e.kind == "enter" and e.target in pieces}
-    # the split closes the claim of the diagonal it splits along (one step at a time)
+    labels = tuple(tuple(entered[k]["labels"]) for k in pieces if k in entered)
+    # the split closes the claim of the diagonal it splits along (one step at a time); the
+    # caption names it (the first half is the chain from one end to the other): the same
+    # words for every split were said twice in the scene's first two diagonals (24 s, 45 s)
     yield walk.closing_claim(walk.call_beat(
-        Split, "Split along the diagonal into two smaller polygons", call, ret,
+        Split, f"Split along {_diagonal_name(labels)} into two smaller polygons", call, ret,
         pieces=tuple(pieces), parent=walk.ref(call, "piece"),
         points=tuple(points_of(entered[k]["points"]) for k in pieces if k in entered),
-        labels=tuple(tuple(entered[k]["labels"]) for k in pieces if k in entered)))
+        labels=labels))
+
+
+def _diagonal_name(halves: Sequence[Sequence[str]]) -> str:
+    """The diagonal two halves share, by its ends (the first half runs from one to the
+    other): ``DG``; "the diagonal" where the halves are not known.
+
+    >>> _diagonal_name([("D", "E", "F", "G"), ("G", "H", "D")]), _diagonal_name([])
+    ('DG', 'the diagonal')
+    """
+    if not halves or len(halves[0]) < 2:
+        return "the diagonal"
+    return named_together((halves[0][0], halves[0][-1]))
 
 
 @beat_kind("next-part")

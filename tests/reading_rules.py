@@ -1645,8 +1645,10 @@ def fleeting_kind_words(data: dict) -> list[str]:
 
 
 def _stack_labels(node: dict) -> list[str]:
-    """The labels the monotone stack's column shows, the top first ("stack" over them)."""
-    return [t for p in mobject_nodes(node) if (t := (p.get("text") or "").strip())][1:]
+    """The labels the monotone stack's column shows, the top first ("stack" over them; the
+    mark of its top, ``stack:top``, is no label)."""
+    return [t for p in mobject_nodes(node) if (t := (p.get("text") or "").strip())
+            and p.get("name") != "stack:top"][1:]
 
 
 def jumping_stacks(data: dict) -> list[str]:
@@ -5975,4 +5977,196 @@ def ticks_on_the_picture(data: dict) -> list[str]:
                     over = polygon.intersection(area(*box)).area if box else 0.0
                     if over > MOST_TEXT_OVER_FILL:
                         found.append(f"play {k} tick {over:.2f} over P")
+# --- faster9: chapter 5's kind words off P's hull, its stack drawn as a stack, its plot's colours --
+
+#: the notes that say a vertex's kind: the word beside it, and the legend entry or note beside
+#: the picture where no place beside it is free
+_KIND_NOTES = (*_KIND_WORDS, "legend:kind")
+
+
+def kind_words_in_the_picture(data: dict) -> list[str]:
+    """The monotone sweep's kind words and kind notes (:data:`_KIND_NOTES`) whose box lies
+    within the convex hull of the polygon drawn last (:data:`_INTERIORS`) by more than
+    :data:`MOST_TEXT_OVER_FILL`, as ``"play 34 'regular' 0.44 in P's hull"``: in a notch or
+    slot of P the background hardly differs from P's faint fill, and a word there reads as
+    written on the picture (teacher review: "regular" in the slot by I, chapter 5 at 52 s,
+    "merge" in K's notch at 42 s, passed :func:`words_over_the_picture`, being just off P).
+    Each text at each place once."""
+    from shapely.geometry import box as rectangle
+
+    hull = None
+    found: dict[tuple[str, tuple[float, ...]], str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            for kind, node in _recorded(anim):
+                if kind in INCOMING and node.get("name") in _INTERIORS and node.get("points"):
+                    outline = _outline(node)
+                    hull = outline.convex_hull if outline is not None else None
+                if kind not in INCOMING or hull is None:
+                    continue
+                for part in mobject_nodes(node):
+                    if part.get("name") not in _KIND_NOTES:
+                        continue
+                    box = _box_of_parts(part)
+                    if box is None:
+                        continue
+                    said = " ".join(t for p in mobject_nodes(part) if (t := p.get("text")))
+                    over = rectangle(*box).intersection(hull).area
+                    if over > MOST_TEXT_OVER_FILL:
+                        found.setdefault((said, box), f"play {k} {said!r} {over:.2f} in P's hull")
+    return list(found.values())
+
+
+#: the least gap between a kind's note beside the picture (``legend:kind``) and a vertex
+#: label: "F: regular vertex" stood 0.1 right of L's label, read as L's (chapter 5 at 64 s)
+KIND_NOTE_OFF_LABELS = 0.45
+
+
+def kind_notes_by_labels(data: dict) -> list[str]:
+    """The kind notes beside the picture (``legend:kind``) nearer than
+    :data:`KIND_NOTE_OFF_LABELS` to a vertex label on screen, as ``"'F: regular vertex' by
+    L"``: beside a label, the note is read as that vertex's."""
+    from shapely.geometry import box as rectangle
+
+    found = []
+    for anim, labels in _with_labels(data):
+        if anim.get("type") not in INCOMING:
+            continue
+        for part in mobject_nodes(anim.get("mobject", {})):
+            if part.get("name") != "legend:kind" or (box := _box_of_parts(part)) is None:
+                continue
+            said = " ".join(t for p in mobject_nodes(part) if (t := p.get("text")))
+            found += [f"{said!r} by {v}" for v, b in sorted(labels.items())
+                      if rectangle(*box).distance(rectangle(*b)) < KIND_NOTE_OFF_LABELS]
+    return sorted(set(found))
+
+
+def _box_of_parts(node: dict) -> tuple[float, float, float, float] | None:
+    """A note's box with all its parts: its texts' boxes and its swatches' (``Dot``) points
+    (a text's own glyph points are not where it stands on screen)."""
+    xs, ys = [], []
+    for part in mobject_nodes(node):
+        if part.get("box") is not None:
+            x0, y0, x1, y1 = part["box"]
+            xs += [x0, x1]
+            ys += [y0, y1]
+        elif part.get("type") == "Dot":
+            for x, y, *_ in part.get("points") or ():
+                xs.append(x)
+                ys.append(y)
+    return (min(xs), min(ys), max(xs), max(ys)) if xs else None
+
+
+#: the lines of a card's plots, by their names' beginnings (chapter 5's measured steps and
+#: the bounds it drew, chapter 4's ear tests)
+_PLOT_SERIES = ("figure:measured:", "figure:bound:", "figure:growth:")
+#: nearer than this (CIE76 ΔE) to a colour of the legend, a line reads as that meaning
+LEAST_SERIES_APART = 20.0
+
+
+def _legend_colours() -> dict[str, str]:
+    """The colours of :mod:`metaphors.theme`'s legend, by their meaning: the roles, the kinds
+    of vertex, the stack, P's fill, the metaphors' tools and what they sweep, the fruit, the
+    pieces' tints and the triangles' green."""
+    from metaphors.theme import THEME
+
+    fields = ("called", "argument", "result", "rejected", "idle", "candidate", "split", "merge",
+              "stack", "polygon_fill", "water", "ball", "band", "hand", "sweep", "swept",
+              "dial", "fruit", "rind")
+    colours = {field: getattr(THEME, field) for field in fields}
+    colours.update({f"piece tint {k + 1}": c for k, c in enumerate(THEME.part_tints)})
+    return colours
+
+
+def plot_series_in_role_colours(data: dict) -> list[str]:
+    """The lines of a card's plot (:data:`_PLOT_SERIES`) drawn in a colour of the legend, or
+    within :data:`LEAST_SERIES_APART` of one, as ``"figure:measured:ear-clipping:half-disc
+    reads as piece tint 1"``: a line in the called blue or a piece's teal reads as that
+    meaning (teacher review of chapter 5's plot: its six lines took the palette's teal and tan,
+    the pieces' tints, its blue, the called blue's neighbour, and its olive). Each line once."""
+    legend = _legend_colours()
+    found: dict[str, str] = {}
+    for play in data["plays"]:
+        for anim in play["animations"]:
+            for node in animation_nodes(anim):
+                name = node.get("name") or ""
+                colour = node.get("stroke")
+                if not name.startswith(_PLOT_SERIES) or name in found or not colour:
+                    continue
+                near = min(legend, key=lambda k: delta_e(colour, legend[k]))
+                if delta_e(colour, legend[near]) < LEAST_SERIES_APART:
+                    found[name] = f"{name} reads as {near}"
+    return list(found.values())
+
+
+def _bounds_centre(node: dict) -> tuple[float, float] | None:
+    """The centre of a node's points' bounds."""
+    points = node.get("points") or ()
+    if not points:
+        return None
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    return (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+
+
+#: how near (scene units) a chain's mark or segment end stands to the vertex it marks
+CHAIN_AT = 0.02
+
+
+def _chain_faults(chain: dict, stacked: list[str], dots: dict[str, tuple[float, float]]
+                  ) -> list[str]:
+    """What a drawn chain (``stack:chain``) misses of the stack ``stacked`` (bottom first): a
+    vertex with no mark (a ``Dot`` of the chain) at its dot, a mark on no stacked vertex, two
+    vertices one above the other on the stack with no segment between them."""
+    marks = [c for p in mobject_nodes(chain) if p.get("type") == "Dot" and (c := _bounds_centre(p))]
+    ends = [(p["points"][0][:2], p["points"][-1][:2]) for p in mobject_nodes(chain)
+            if p.get("type") == "Line" and len(p.get("points") or ()) >= 2]
+
+    def at(point, v: str) -> bool:
+        return v in dots and math.dist(point, dots[v]) <= CHAIN_AT
+
+    found = [f"no mark on {v}" for v in stacked if not any(at(m, v) for m in marks)]
+    found += [f"a mark on no stacked vertex at ({m[0]:.1f}, {m[1]:.1f})" for m in marks
+              if not any(at(m, v) for v in stacked)]
+    found += [f"no segment {u}–{v}" for u, v in itertools.pairwise(stacked)
+              if not any((at(a, u) and at(b, v)) or (at(a, v) and at(b, u)) for a, b in ends)]
+    return found
+
+
+def chains_off_the_stack(data: dict) -> list[str]:
+    """The monotone stack's changes whose waiting chain, drawn on P, is not the stack's: at
+    each play that changes the column (``stack:column``, as it comes or what it turns into),
+    the chain (``stack:chain``, likewise) marks each stacked vertex at its dot, marks no
+    other, and joins each two vertices one above the other on the stack with a segment
+    (:func:`_chain_faults`), as ``"'M waits on the stack': no mark on A"``; and the column
+    marks its top (``stack:top``) beside its top name, as ``"'A waits …': top unmarked"``.
+    The issue asked for "the chain waiting to be triangulated, as it grows and pops": it was
+    one yellow line, its vertices unmarked, beside a column of words (chapter 5, 90–120 s)."""
+    dots: dict[str, tuple[float, float]] = {}
+    found, caption = [], ""
+    for play in data["plays"]:
+        caption = play.get("subcaption") or caption
+        column = chain = None
+        for anim in play["animations"]:
+            node = anim.get("mobject", {})
+            if anim.get("type") in INCOMING and node.get("name") in _POLYGONS:
+                dots = {}
+            for key in ("mobject", "target"):
+                dots.update(dict(_dot_centres(anim.get(key, {}))))
+            if anim.get("type") in OUTGOING:
+                continue
+            shown = anim.get("target", node)
+            if shown.get("name") == "stack:column":
+                column = shown
+            elif shown.get("name") == "stack:chain":
+                chain = shown
+        if column is None:
+            continue
+        stacked = list(reversed(_stack_labels(column)))  # the bottom first
+        if chain is None:
+            found.append(f"{caption!r}: no chain drawn")
+        else:
+            found += [f"{caption!r}: {fault}" for fault in _chain_faults(chain, stacked, dots)]
+        tops = [p for p in mobject_nodes(column) if p.get("name") == "stack:top"]
+        if stacked and not tops:
+            found.append(f"{caption!r}: top unmarked")
     return found

@@ -502,52 +502,75 @@ def _plotted_counts(drawn, prefix):
 
 
 def test_the_measured_plot_draws_the_sign_tests_counted_in_real_runs():
-    from metaphors.figure_faster import BOUNDS, MEASURED_RUNS, MEASURED_SHAPES, MEASURED_SIZES
+    from metaphors.figure_faster import MEASURED_RUNS, MEASURED_SHAPE, MEASURED_SIZES
     from story.sign_tests import ALGORITHMS, SEEDS, count_sign_tests, measured
 
     drawn = figure_mobjects(Figure("measured"), "lecture")
     plotted = _plotted_counts(drawn, "figure:measured:")
-    assert plotted == {f"{name}:{shape}": [measured(name, n, shape) for n in MEASURED_SIZES]
-                       for name in MEASURED_RUNS for shape, _ in MEASURED_SHAPES}
-    # a count on random polygons is a mean over runs: one counted again here; on a half
-    # disc, its one run
+    assert plotted == {name: [measured(name, n, MEASURED_SHAPE) for n in MEASURED_SIZES]
+                       for name in MEASURED_RUNS}
+    # a count on random polygons (said on the card) is a mean over runs: one counted again
+    # here; on a half disc, its one run
     polygons = [read_polygon(f"random-2opt:20:{seed}") for seed in SEEDS]
     runs = [count_sign_tests(lambda p=p: ALGORITHMS["monotone"](p)) for p in polygons]
     assert measured("monotone", 20) == round(sum(runs) / len(runs))
     disc = read_polygon("half-disc:20")
     assert measured("ear-clipping", 20, "half-disc") == count_sign_tests(
         lambda: ALGORITHMS["ear-clipping"](disc))
-    # the bounds: dashed, each named on the legend, which says they are not measured
-    bounds = named(drawn, "figure:bound:")
-    assert [m.name for m in bounds] == [f"figure:bound:{key}" for key, _, _ in BOUNDS]
-    assert all(type(m).__name__ == "DashedVMobject" for m in bounds)
+    # measured lines only, solid: no bound drawn (their shapes crowded the plot)
+    assert not named(drawn, "figure:bound:")
     assert all(type(m).__name__ != "DashedVMobject" for m in named(drawn, "figure:measured:"))
-    legend = [m.original_text for m in named(drawn, "figure:legend")]
-    assert "bounds, not measured" in legend and "counted on" in legend
-    assert all(said in legend for _, said, _ in BOUNDS)
-    # the axes named in plain words, what a count is said by them (r567: unnamed, and
-    # "sign tests, mean of 3 random polygons" stood under the legend, far off)
+    # the axes named in plain words (r567: unnamed)
     (across,), (up,) = named(drawn, "figure:x-name"), named(drawn, "figure:y-name")
     assert across.original_text == "vertices n" and up.original_text.startswith("steps (")
-    assert f"random polygons: each a mean of {len(SEEDS)}" in up.original_text
     assert "sign tests" not in label(drawn)
-    # each counted line wears its algorithm's marks, filled on the half discs, and the
-    # legend's table has one per line
-    points, keys = named(drawn, "figure:point"), named(drawn, "figure:key")
-    lines = len(MEASURED_RUNS) * len(MEASURED_SHAPES)
-    assert len(points) == lines * len(MEASURED_SIZES) and len(keys) == lines
-    assert len({type(m).__name__ for m in keys}) == len(MEASURED_RUNS)
+    # each line wears its own marks, one at each size
+    points = named(drawn, "figure:point")
+    assert len(points) == len(MEASURED_RUNS) * len(MEASURED_SIZES)
+    assert len({type(m).__name__ for m in points}) == len(MEASURED_RUNS)
+
+
+def test_the_measured_plot_names_each_line_beside_it_in_no_roles_colour():
+    """Teacher review (faster9): the plot's six lines (two algorithms on two kinds of polygon,
+    two dashed bounds) and its legend table were crowded, and its lines took the palette's
+    teal and tan (the pieces' tints) and a blue by the called blue. Now two lines, the half
+    discs', in the ink, each named beside itself (nearer its own line than the other's, and
+    crossing neither), the ticks in the ink, what was counted said under the axis with the
+    half disc drawn."""
+    import numpy as np
+    from shapely.geometry import LineString
+    from shapely.geometry import box as rectangle
+
+    from metaphors.figure_faster import MEASURED_RUNS
+    from metaphors.layout import area_of
+    from metaphors.theme import THEME
+    from story.registry import spoken
+
+    drawn = figure_mobjects(Figure("measured"), "lecture")
+    lines = {m.name.removeprefix("figure:measured:"): LineString(_corners(m)[:, :2])
+             for m in named(drawn, "figure:measured:")}
+    assert all(m.get_stroke_color().to_hex().lower() == THEME.ink.lower()
+               for m in named(drawn, "figure:measured:"))
+    names = {m.original_text: rectangle(*area_of(m)) for m in named(drawn, "figure:series-name")}
+    assert set(names) == {spoken(name) for name in MEASURED_RUNS}
+    for name in MEASURED_RUNS:
+        own, other = lines[name], next(v for k, v in lines.items() if k != name)
+        shape = names[spoken(name)]
+        assert not shape.intersects(own) and not shape.intersects(other), name
+        assert shape.distance(own) < 0.3 < shape.distance(other), name
+    ticks = named(drawn, "figure:tick")
+    assert ticks and all(np.allclose(t.get_fill_color().to_rgb(), np.array(
+        [int(THEME.ink[k:k + 2], 16) / 255 for k in (1, 3, 5)]), atol=0.01) for t in ticks)
+    assert named(drawn, "figure:icon") and named(drawn, "figure:counted-on")
 
 
 def test_the_measured_plot_shows_what_its_card_says():
     """mono5: the card sets faster ear clipping's O(n²) against monotone partition's
     O(n log n), and its plot showed both at about 700 steps at n = 160, slope 1 (random
     polygons only, unsaid). Now, on the half discs it names, ear clipping's count grows
-    about fourfold when n doubles and monotone partition's about twofold; the legend and the
-    card's words name the polygons counted; and each dashed bound starts on a mark the plot
-    draws (it started at an unlabelled point below the "100" tick)."""
-    import numpy as np
-
+    about fourfold when n doubles and monotone partition's about twofold; the plot and the
+    card's words name the polygons counted, and the card says the random polygons' result is
+    not drawn."""
     from metaphors.figure_faster import MEASURED_SIZES
     from metaphors.lecture import Card
     from story.sign_tests import measured
@@ -560,21 +583,17 @@ def test_the_measured_plot_shows_what_its_card_says():
     assert growth("ear-clipping", "half-disc") > 3.5
     assert growth("monotone", "half-disc") < 2.5 and growth("monotone", "random-2opt") < 2.5
     drawn = figure_mobjects(Figure("measured"), "lecture")
-    legend = [m.original_text for m in named(drawn, "figure:legend")]
-    assert "half discs" in legend and "random polygons" in legend
-    assert named(drawn, "figure:icon")  # what a half disc is, drawn beside its name
-    marks = [np.asarray(m.get_center())[:2] for m in named(drawn, "figure:point")]
-    for bound in named(drawn, "figure:bound:"):
-        start = np.asarray(bound.submobjects[0].get_start())[:2]
-        assert min(float(np.linalg.norm(start - m)) for m in marks) < 1e-6, bound.name
+    (counted,) = named(drawn, "figure:counted-on")
+    assert "half discs" in counted.original_text
     chapter = next(c for c in lecture_chapters() if c.slug == "faster")
     cls = load_scene_class(Path(__file__).resolve().parents[1] / chapter.scene_file,
                            chapter.scene_class)
     card = next(s for s in cls.__new__(cls).chapter_segments()
                 if isinstance(s, Card) and s.figure == Figure("measured"))
     words = " ".join(card.lines)
-    assert all(said in words for said in ("dented half discs", "random polygons", "n²",
-                                           "n log n"))
+    assert all(said in words for said in ("dented half discs", "random polygons, not drawn",
+                                           "n²", "n log n"))
+    assert "dashed" not in words  # no bound drawn
 
 
 def test_the_growth_plot_still_counts_ear_tests_after_sharing_its_plot():

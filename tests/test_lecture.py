@@ -40,6 +40,7 @@ from tests.reading_rules import (
     broken_counts,
     broken_summaries,
     captions_over_labels,
+    chains_off_the_stack,
     claims_along_edges,
     claims_given_away,
     claims_like_their_edges,
@@ -73,6 +74,8 @@ from tests.reading_rules import (
     implementation_talk,
     jumping_stacks,
     keys_with_nothing_shown,
+    kind_notes_by_labels,
+    kind_words_in_the_picture,
     kinds_said,
     labels_across_fills,
     labels_across_t,
@@ -107,6 +110,7 @@ from tests.reading_rules import (
     picks_in_the_red,
     pieces_in_the_called_blue,
     placeholders_as_labels,
+    plot_series_in_role_colours,
     recoloured_close_ups,
     red_bursts_before_verdicts,
     redrawn_pictures,
@@ -598,6 +602,12 @@ KNOWN_FAR_VERDICTS: dict[str, list[str]] = {}
 #: dots clear of the diagonals divide and conquer fans from them (G now has); in chapter 4,
 #: prune and search's good part and claim reach G and M, and the keyhole's cut c₂ and d₂.
 KNOWN_PANEL_LABELS_ON_LINES = {"overview": {"H", "M"}, "ears": {"G", "M", "c₂", "d₂"}}
+#: Likewise (faster9): chapter 4's plot of ear tests draws two of its three ear clippers in
+#: the palette's teal and tan, the pieces' tints; the rule found it while mending chapter 5's
+#: plot, left to chapter 4's own mending.
+KNOWN_PLOT_SERIES_IN_ROLE_COLOURS: dict[str, list[str]] = {"ears": [
+    "figure:growth:ear-clipping reads as piece tint 1",
+    "figure:growth:prune-and-search reads as piece tint 2"]}
 
 
 @pytest.mark.parametrize("chapter", _chapters())
@@ -752,11 +762,24 @@ def test_every_chapter_builds_with_its_captions(chapter):
     # review s35: and off P's fill ("merge" beside M and "split" beside D stood on it), and
     # the sweep line clear of every label (at 28 s its dashes ran up to M's and K's letters)
     assert words_over_the_picture(data) == [], chapter.slug
+    # faster9: nor in a notch or slot of P, whose dark hardly differs from its faint fill
+    # ("regular" by I at 52 s, "merge" in K's notch at 42 s read as written on P)
+    assert kind_words_in_the_picture(data) == [], chapter.slug
+    # and a kind's note beside the picture stands clear of every label ("F: regular vertex"
+    # by L's label read as L's)
+    assert kind_notes_by_labels(data) == [], chapter.slug
+    # faster9: no line of a card's plot in a colour of the legend (chapter 5's took the pieces'
+    # teal and tan and a blue beside the called blue's); chapter 4's known (its ear tests)
+    assert plot_series_in_role_colours(data) == KNOWN_PLOT_SERIES_IN_ROLE_COLOURS.get(
+        chapter.slug, []), chapter.slug
     if chapter.slug in KNOWN_LABELS_OVER_P:  # and no label over it but those known
         over = {found.split()[2] for found in texts_over_the_picture(data)}
         assert over == KNOWN_LABELS_OVER_P[chapter.slug], sorted(over)
     assert labels_struck_by_the_sweep(data) == [], chapter.slug
     assert jumping_stacks(data) == [], chapter.slug
+    # faster9: the waiting chain drawn on P is the stack's at every push and pop, each
+    # vertex marked, and the column marks its top
+    assert chains_off_the_stack(data) == [], chapter.slug
     # issue 22: gravity's hit is seen, no label under the hit ring or the ball's path
     assert labels_under_the_fall(data) == [], chapter.slug
     # and the ball is seen to fall: 4 % of the frame's height at least (a close-up zooms a

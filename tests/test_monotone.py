@@ -409,7 +409,7 @@ def stack_collisions(data) -> list[str]:
     from shapely.geometry import Polygon as Region
     from shapely.geometry import box
 
-    from tests.reading_rules import INCOMING, graph_nodes
+    from tests.reading_rules import INCOMING, graph_nodes, mobject_nodes
 
     columns, others = [], {}
     for play in data["plays"]:
@@ -429,7 +429,7 @@ def stack_collisions(data) -> list[str]:
     assert columns and "polygon" in others  # not vacuous: a stack drawn beside a polygon
     found = []
     for column in columns:
-        words = " ".join(p["text"] for p in column["submobjects"])
+        words = " ".join(p["text"] for p in mobject_nodes(column) if p.get("text"))
         here = box(*_box_of(column))
         found += [f"stack {words!r} × {name}" for name, shape in others.items()
                   if here.distance(shape) < 0.1]

@@ -1229,3 +1229,46 @@ def test_gravity_marks_rows_and_close_ups_say_what_they_show(case):
     assert verdicts_on_claims(data) == [], case.id
     assert answers_on_cards(data) == [], case.id
     assert redrawn_pictures(data) == [], case.id
+
+
+# --- faster9: every scene says each caption once ---------------------------------------------------
+
+#: Captions a scene says twice because its run does the same step twice, each said as it runs:
+#: naive ear clipping asks again whether B is an ear after a slice (and G still lies in its
+#: triangle); the holes' sweep pushes a vertex on the stack of each of two pieces it is in.
+KNOWN_REPEATED_CAPTIONS = {
+    "ears.Ears": ["2 × 'Is B an ear? no: G lies in its triangle'"],
+    "holes.HolesSweep": ["2 × 'b₂ waits on the stack'", "2 × 'a₂ waits on the stack'",
+                         "2 × 'b₁ waits on the stack'", "2 × 'c₁ waits on the stack'"],
+}
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_every_scene_says_each_caption_once(case):
+    """Teacher review (faster9): divide and conquer said "Split along the diagonal into two
+    smaller polygons" after both of its first two diagonals (24 s and 45 s). The rule of
+    said-once captions (:func:`captions_said_again`) was asked of scenes playing a heuristic
+    only, and divide and conquer plays an algorithm: it is asked of every scene now, the
+    repeats a run makes step by step known (:data:`KNOWN_REPEATED_CAPTIONS`)."""
+    found = captions_said_again(graph(case).data)
+    assert sorted(found) == sorted(KNOWN_REPEATED_CAPTIONS.get(case.id, [])), case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_no_kind_word_stands_in_the_picture(case):
+    """Teacher review (faster9): the monotone sweep's kind words stand outside P's hull or
+    beside the picture, never in a notch, slot or hole of P (chapter 5's "regular" stood in
+    the slot by I, read as written on P)."""
+    from tests.reading_rules import kind_words_in_the_picture
+
+    assert kind_words_in_the_picture(graph(case).data) == [], case.id
+
+
+@pytest.mark.parametrize("case", _params(SCENES))
+def test_the_stacks_chain_is_the_stack(case):
+    """Issue 22 item 5 (faster9): the monotone stack is drawn as a stack, its top marked, and
+    the chain waiting on it is drawn on P through exactly its vertices, each marked, at every
+    push and pop (it was one yellow line beside a column of words)."""
+    from tests.reading_rules import chains_off_the_stack
+
+    assert chains_off_the_stack(graph(case).data) == [], case.id

@@ -24,14 +24,16 @@ class Faster(LectureScene):
             Run("monotone", None, "Monotone partition, then the stack", speed=0.7),
             # the plot's words: which polygons were counted, and what each line shows (it
             # showed random polygons only, where faster ear clipping keeps pace with
-            # monotone partition, while the chapter set O(n²) against O(n log n))
+            # monotone partition, while the chapter set O(n²) against O(n log n)); two lines
+            # now, the half discs' (six lines and a legend table read as crowded): the random
+            # polygons' result and the bounds are said, not drawn
             Card("Tarjan and van Wyk (1988), Chazelle (1990)", (
                 "Counted on dented half discs: faster ear clipping grows as n², monotone "
                 "partition as n log n;",
-                "on random polygons the two keep pace.",
+                "on random polygons, not drawn, the two keep pace.",
                 "O(n log log n): Tarjan and van Wyk; Kirkpatrick et al. matched it simply "
                 "(1990).",
-                "Chazelle: O(n), not practical. Neither runs here: the dashed lines are bounds."),
+                "Chazelle: O(n), not practical. Neither runs here."),
                  Figure("measured")),
             # one sentence a bullet; libraries by their own names (Shapely, Mapbox's earcut)
             Card("Constrained Delaunay", (
