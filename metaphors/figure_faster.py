@@ -461,8 +461,11 @@ def recap_triangulations(polygon: Polygon) -> list[tuple[str, str, tuple[Triangl
     return [(name, bound, triangulate(polygon, name).triangles) for name, bound in RECAPPED]
 
 
-#: over each of the recap's pictures, the room for its count; round P, for its labels' room
-COUNT_ROOM, PICTURE_MARGIN = 0.5, 0.3
+#: over each of the recap's pictures, the room for its heading (its name and bound, then its
+#: count); round P, for its labels' room
+COUNT_ROOM, PICTURE_MARGIN = 0.8, 0.25
+#: the headings' rows: the name's centre above the count's (scene units)
+HEADING_ROW = 0.36
 
 
 def panels(count: int, box: Box) -> list[tuple[tuple[float, float], Box]]:
@@ -477,22 +480,39 @@ def panels(count: int, box: Box) -> list[tuple[tuple[float, float], Box]]:
             for k in range(count)]
 
 
+def _diagonals(polygon: Polygon, triangles: Sequence[TriangleIndices]) -> list[tuple[int, int]]:
+    """The diagonals of a triangulation: the triangles' sides that are not P's edges."""
+    n = polygon.n
+    sides = {tuple(sorted((t[a], t[b]))) for t in triangles for a, b in ((0, 1), (1, 2), (0, 2))}
+    return sorted((i, j) for i, j in sides if (j - i) % n not in (1, n - 1))
+
+
 def _three(polygon: Polygon, theme: Theme, box: Box) -> list[Mobject]:
     """Side by side across ``box`` (a wide card's: its words, one per algorithm, go under
     the pictures): each algorithm's triangulation of P, big enough to count its triangles,
-    and their count over it. The name and the bound are its line's, said once (review:
-    each bound stood under a 110-px thumbnail and again in a bullet beside it)."""
+    its diagonals drawn in the ink so that the three read as three (in green shades alone
+    they looked alike, review of the recap at 42 s), and over it its name and bound, as its
+    line says them, and its count (the three stood unnamed until their lines came, one by
+    one)."""
     drawn: list[Mobject] = []
-    for (name, _, triangles), (heading, fitted) in zip(recap_triangulations(polygon),
-                                                       panels(len(RECAPPED), box), strict=True):
+    for (name, bound, triangles), (heading, fitted) in zip(recap_triangulations(polygon),
+                                                           panels(len(RECAPPED), box),
+                                                           strict=True):
         frame = Frame(polygon.points, *fitted)
         drawn.append(tag(polygon_mobject(polygon, frame, theme), "idle", "figure:polygon"))
         drawn += triangulation_figure(polygon, triangles, frame, f"figure:triangle:{name}",
                                       theme)
+        drawn += [tag(Line(frame.to_scene(polygon.points[i]), frame.to_scene(polygon.points[j]),
+                           color=theme.ink, stroke_width=theme.stroke * 0.8),
+                      None, f"figure:diagonal:{name}") for i, j in _diagonals(polygon, triangles)]
+        (x, y), room = heading, fitted[1] + 2 * PICTURE_MARGIN
+        title = typeset.text(f"{spoken(name, start=True)}, {bound}", font=theme.font,
+                             size=theme.label_size + 2, colour=theme.ink, width=room)
+        drawn.append(tag(title.move_to((x, y + HEADING_ROW / 2, 0)), None, "figure:name"))
         count = f"{len(triangles)} triangle{'s' * (len(triangles) > 1)}"
         text = typeset.text(count, font=theme.font, size=theme.label_size + 2,
                             colour=theme.result)
-        drawn.append(tag(text.move_to((*heading, 0)), "result", "figure:count"))
+        drawn.append(tag(text.move_to((x, y - HEADING_ROW / 2, 0)), "result", "figure:count"))
     return drawn
 
 

@@ -11,10 +11,14 @@ joins them.
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
+from typing import cast
 
+import numpy as np
+import shapely
 from manim import (
     DOWN,
     LEFT,
@@ -36,6 +40,7 @@ from geometry.cdt import constrained_delaunay
 from geometry.check import is_inner_diagonal
 from geometry.diagonals import find_diagonal
 from geometry.io import read_polygon
+from geometry.polygon import Polygon
 from geometry.results import TriangleIndices
 from geometry.triangulate import triangulate
 from metaphors import catalog, figure_steps
@@ -49,13 +54,14 @@ from metaphors.drawing import (
     triangulation_figure,
 )
 from metaphors.figures import WIDE_BOX, WIDE_KINDS, Figure, figure_mobjects
-from metaphors.labels import measured_markers
+from metaphors.labels import LABEL_HALO, measured_markers
 from metaphors.layout import METAPHOR, Box
 from metaphors.recorded import captions_of, end_steps, lead_in, mark_step
 from metaphors.scene import TraceScene
-from metaphors.stage import hand_over
+from metaphors.stage import OUTSIDE, Stage, hand_over, place_name, region
 from metaphors.stills import MARKERS_AT, answer_front, still_mobjects
 from metaphors.tags import tag
+from metaphors.theme import Theme
 from rendering import typeset
 from rendering.typeset import FlatText
 from story.exercises import (
@@ -126,10 +132,55 @@ ANSWER_COMING = 1.2
 #: the space before a number (a no-break space there keeps it on its word's line)
 _NUMBER = re.compile(r" (?=\d)")
 #: the colour of each pick's front, as its metaphor draws it (:mod:`metaphors.theme`)
+#: an answer that says no (its text in the red of what fails)
+_SAYS_NO = re.compile(r"no\b")
+#: T's part outside P in an answer, as opaque as the analyses' (:func:`metaphors.analysis.fails`)
+OUTSIDE_OPACITY = 0.6
+#: the row of the red's key, under the answer (the picture's legend row)
+KEY_Y = -3.6
 _FRONT_COLOUR = {"scaling": "water", "scaling-correct": "water", "rotation": "hand",
                  "rotation-ccw": "hand", "rotation-correct": "hand", "translation": "sweep",
                  "translation-correct": "sweep"}
 DEFAULT_PACING = Pacing(full=2, fast=0.35)
+
+
+def _on_screen(area, frame: Frame):
+    """A shapely region in the polygon's coordinates, as it stands on screen."""
+    return shapely.transform(area, lambda xy: np.array([frame.to_scene(p)[:2] for p in xy]))
+
+
+def _off_the_red(name, a, b, red, busy) -> None:
+    """An edge's name moved off the red region ``red`` (on screen), if it stands on it: to
+    the spot beside the edge, either side, clear of the red and clearest of ``busy`` (P's
+    edges on screen; an exercise's "edge F–G" stood on T's red part outside P, and read as
+    the red's own); left where none is."""
+    if not _box(name.get_center(), name).intersects(red):
+        return
+    along = (b - a) / max(float(np.linalg.norm(b - a)), 1e-9)
+    normal = np.array([-along[1], along[0], 0.0])
+    lift = float(np.abs(normal[:2]) @ np.array([name.width / 2, name.height / 2]))
+    spots = [a + (b - a) * k + normal * side * (gap + lift)
+             for k, side, gap in itertools.product((0.2, 0.35, 0.5, 0.65, 0.8), (1, -1),
+                                                   (0.2, 0.45))]
+    clear = [p for p in spots if not _box(p, name).intersects(red)]
+    if clear:
+        name.move_to(max(clear, key=lambda p: min(_box(p, name).distance(busy), 0.3)))
+
+
+def _box(centre, name) -> shapely.Polygon:
+    half = np.array([name.width / 2, name.height / 2])
+    return shapely.box(*(centre[:2] - half), *(centre[:2] + half))
+
+
+@dataclass(frozen=True)
+class _Sheet:
+    """An exercise's picture as :func:`metaphors.stage.region` and
+    :func:`metaphors.stage.place_name` read it: its frame, theme, polygon and markers."""
+
+    frame: Frame
+    theme: Theme
+    polygon: Polygon | None = None
+    markers: dict | None = None
 
 
 @dataclass(frozen=True)
@@ -556,31 +607,74 @@ class LectureScene(TraceScene):
     def answer_animations(self, exercise: Exercise, markers: VGroup) -> list:
         """The answer's text beside the picture, and on the picture what it says: a pick's
         vertex in green (its dot and its label, ``markers`` the picture's) with the
-        metaphor's front reaching it; each diagonal named, green or red, a crossed edge red."""
+        metaphor's front reaching it; each diagonal named, green or red, a crossed edge red
+        and named, T's part outside P red (:meth:`_outside`)."""
         theme, polygon = self.theme, exercise.polygon
         frame = Frame(polygon.points, *QUIZ_BOX)
         # a number keeps to the word before it: "25.5" stood alone on the answer's last line
         said = _NUMBER.sub("\u00a0", f"Answer: {exercise.answer} — {exercise.reason}")
-        text = tag(typeset.wrapped(said, size=theme.caption_size, colour=theme.result,
-                                   font=theme.font, width=ANSWER_WIDTH), "result", "answer")
+        # a "no" in the red of what fails, never the green of "correct" (the hunted rule's
+        # "no (it claims BE)" stood green, chapter 6 at 120 s)
+        role = "rejected" if _SAYS_NO.match(exercise.answer) else "result"
+        text = tag(typeset.wrapped(said, size=theme.caption_size, colour=theme.role_colour(role),
+                                   font=theme.font, width=ANSWER_WIDTH), role, "answer")
         text.move_to(ANSWER_AT)
         anims: list[Animation] = [FadeIn(text)]
-        for i, j in exercise.measured:  # what the rule compared, under its claim
+        # what the rule compared, under its claim: over the crossed edge it may run along (the
+        # hunted rule's CD is edge C–D), thinner, so both read; the answer says "amber"
+        for i, j in exercise.measured:
             anims.append(Create(tag(Line(frame.to_scene(polygon.points[i]),
                                          frame.to_scene(polygon.points[j]), color=theme.argument,
-                                         stroke_width=theme.stroke * 1.5),
-                                    "argument", "answer:measured")))
+                                         stroke_width=theme.stroke * 1.2),
+                                    "argument", "answer:measured").set_z_index(3)))
         if exercise.kind == "pick":
             anims += self._picked(exercise, frame, markers)
+        rejected = []
+        # the vertices over the red of T's part outside P (E's label stood on it, unread)
+        markers.set_z_index(3)
+        astray = self._astray(exercise)
         for i, j in exercise.options or self._claimed(exercise):
             verdict = is_inner_diagonal(polygon, i, j)
             colour = theme.result if verdict.ok else theme.rejected
-            anims.append(Create(tag(Line(frame.to_scene(polygon.points[i]),
-                                         frame.to_scene(polygon.points[j]), color=colour,
-                                         stroke_width=theme.stroke * 1.5),
-                                    "result" if verdict.ok else "rejected", "answer:diagonal")))
-            anims += self._crossing(verdict, polygon, (i, j), frame)
+            line = tag(Line(frame.to_scene(polygon.points[i]), frame.to_scene(polygon.points[j]),
+                            color=colour, stroke_width=theme.stroke * 1.5),
+                       "result" if verdict.ok else "rejected", "answer:diagonal").set_z_index(2)
+            anims.append(Create(line))
+            if not verdict.ok:
+                rejected.append(line)
+            anims += self._crossing(verdict, polygon, (i, j), frame, markers,
+                                    [line, *self._rim(astray, frame)], astray)
+        if rejected:
+            anims += self._outside(astray, frame)
         return anims
+
+    @staticmethod
+    def _astray(exercise: Exercise):
+        """T's part outside P (shapely, the polygon's coordinates)."""
+        polygon = exercise.polygon
+        t = shapely.Polygon([polygon.points[k] for k in exercise.triangle])
+        return t.difference(shapely.Polygon(polygon.points))
+
+    @staticmethod
+    def _rim(area, frame: Frame) -> list[Line]:
+        """The sides of a region as lines on screen, for a name to keep off: an edge's name
+        stood on T's red part outside P, where it read as the red's own."""
+        rims = [list(part.exterior.coords) for part in shapely.get_parts(area)
+                if part.geom_type == "Polygon"]
+        return [Line(frame.to_scene(a), frame.to_scene(b))
+                for ring in rims for a, b in itertools.pairwise(ring)]
+
+    def _outside(self, astray, frame: Frame) -> list[Animation]:
+        """T's part outside P (``astray``) in the red of what fails, with its key: where a
+        wrong claim goes (as chapter 2's analyses show it; T stood all blue in the answers,
+        chapter 6 at 120 s, its part outside P unmarked)."""
+        theme = self.theme
+        area = region(_Sheet(frame, theme), astray, theme.rejected, OUTSIDE_OPACITY,
+                      "answer:outside", "rejected").set_z_index(1)
+        key = tag(typeset.text(f"red: {OUTSIDE}", font=theme.font, size=theme.label_size,
+                               colour=theme.rejected), "rejected", "answer:key")
+        key.move_to((ANSWER_AT[0], KEY_Y, 0))
+        return [FadeIn(area), FadeIn(key)]
 
     def _picked(self, exercise: Exercise, frame: Frame, markers: VGroup) -> list[Animation]:
         """The pick in green, label and all (its label stayed amber beside a green dot), and
@@ -596,17 +690,30 @@ class LectureScene(TraceScene):
         return [*[Create(f) for f in fronts], FadeIn(dot, scale=2.5),
                 tag(markers[pick], "result").animate.set_color(theme.result)]
 
-    def _crossing(self, verdict, polygon, pair: tuple[int, int], frame: Frame) -> list:
-        """A rejected diagonal's crossed edges, thick in red (the answer's text names them:
+    def _crossing(self, verdict, polygon, pair: tuple[int, int], frame: Frame,
+                  markers: VGroup, avoid: Sequence[Line], astray) -> list:
+        """A rejected diagonal's crossed edges, thick in red and named beside them ("edge
+        C–D", as chapter 2's analyses name it; the answer's text names them too:
         :func:`story.exercises.crossed_edges`), and a flash where each is crossed."""
         if verdict.edge is None:
             return []
         theme = self.theme
         anims: list[Animation] = []
+        sheet = _Sheet(frame, theme, polygon, dict(enumerate(markers)))
+        area = _on_screen(astray, frame)
+        ring = [tuple(frame.to_scene(p)[:2]) for p in polygon.points]
+        edges = shapely.LinearRing(ring)
         for (u, v), point in crossed_edges(polygon, *pair):
-            name = f"edge:{polygon.labels[u]}–{polygon.labels[v]}"
-            anims += [Create(crossed_edge(frame.to_scene(polygon.points[u]),
-                                          frame.to_scene(polygon.points[v]), name, theme)),
+            edge = f"{polygon.labels[u]}–{polygon.labels[v]}"
+            a, b = frame.to_scene(polygon.points[u]), frame.to_scene(polygon.points[v])
+            name = tag(typeset.text(f"edge {edge}", font=theme.font, size=theme.label_size + 2,
+                                    colour=theme.rejected), "rejected", "answer:edge-name")
+            # on a dark halo, as the vertex labels: over an edge it must cross, it still reads
+            name.set_stroke(theme.background, width=LABEL_HALO, background=True)
+            place_name(cast(Stage, sheet), name, a, b, avoid)
+            _off_the_red(name, a, b, area, edges)
+            anims += [Create(crossed_edge(a, b, f"edge:{edge}", theme).set_z_index(2)),
+                      FadeIn(name.set_z_index(4)),
                       Flash(frame.to_scene(point), color=theme.rejected, flash_radius=0.45)]
         return anims
 

@@ -28,8 +28,8 @@ merge         magenta     a merge vertex of the monotone sweep (a kind, not a ve
 stack         yellow      the monotone stack: the chain waiting to be triangulated
 polygon_fill  navy        inside P
 water         light blue  spilled or rising water (Scaling)
-ball, band    orange,     gravity's ball and its rubber band (Gravity)
-              rose
+ball, band    orange,     gravity's ball and its rubber band, and what the band swept
+              pale lemon  (Gravity): far from the red of "fails" (a correct rule)
 hand, sweep   purple      the clock hand (Rotation) and the sweeping line
                           (Translation, the monotone sweep)
 swept         pale blue   what water, clock hand or sweep line swept on its way to its
@@ -81,7 +81,10 @@ class Theme:
     polygon_fill: str = "#2a3a55"
     water: str = "#3aa0ff"
     ball: str = "#ff8c42"
-    band: str = "#ff5fa2"
+    #: the rubber band and what it sweeps: a pale lemon, no role's (CIE76 ΔE 55 from the red of
+    #: "fails" as both tint P at 0.6; the rose #ff5fa2 was 25, and its swept area read as
+    #: failing, chapter 3 and the recap at 38 s); 30 from the stack's yellow, 58 from the ball
+    band: str = "#f0f0a0"
     gravity: str = "#c7cfdb"
     #: tints of the figures' series and parts (the overview's, chapter 5's plot)
     pieces: tuple[str, ...] = ("#8e6cf0", "#2bb5a8", "#c9a25a", "#5b8fd5", "#9cbf4a")

@@ -583,8 +583,11 @@ def hunted_exercise(number: int, spec: str, polygon: Polygon, name: str, claim: 
                       others=_and([polygon.labels[k] for k in candidates if k != pick]))
     judged = _not_inner(polygon, *claim, verdict) if not verdict.ok else _inside(polygon, *claim)
     answer = f"{'yes' if verdict.ok else 'no'} (it claims {_label(polygon, *claim)})"
+    # the amber lines the answer draws, said while drawn (an amber E–C stood unexplained)
+    compared = (f" (amber: the lengths it compared, {_and([_label(polygon, *p) for p in measured])})"
+                if measured else "")
     made = _exercise(number, "claim", frame, None, f"Is the claim of {name} an inner diagonal?",
-                     answer, f"{said}; {judged}")
+                     answer, f"{said}{compared}; {judged}")
     return replace(made, claim=claim, measured=measured)
 
 

@@ -6170,3 +6170,128 @@ def chains_off_the_stack(data: dict) -> list[str]:
         if stacked and not tops:
             found.append(f"{caption!r}: top unmarked")
     return found
+# --- exer9: the exercises' answers say fails in its red; the recap's pictures named -------------
+
+#: a text that says a claim fails: an answer "no …", a ✗, "wrong", "fails" (not "crosses no
+#: edge", which says why a claim holds)
+_SAYS_FAILS = re.compile(r"^(?:Answer:\s*)?(?:no\b|✗)|\?\s*no\b|\bwrong\b|\bfails?\b")
+
+
+def _incoming_texts(play: dict) -> Iterator[tuple[dict, str]]:
+    """(node, its whole text) of each top-level mobject a play brings in that holds text (a
+    wrapped answer's lines joined)."""
+    for anim in play["animations"]:
+        node = anim.get("mobject") or {}
+        if anim.get("type") not in INCOMING:
+            continue
+        said = " ".join(n["text"] for n in mobject_nodes(node) if n.get("text"))
+        if said:
+            yield node, said
+
+
+def fails_in_the_correct_colour(data: dict) -> list[str]:
+    """The texts saying no, wrong or fails that come in, any line of them, in the green of
+    "correct" (the legend's ``result``), as ``"play 87: 'Answer: no (it claims BE) …'"``:
+    chapter 6 wrote every answer green, "no (it claims BE)" too."""
+    green = _colour("result")
+    found = []
+    for k, play in enumerate(data["plays"]):
+        for node, said in _incoming_texts(play):
+            if _SAYS_FAILS.search(said) and any(
+                    (n.get("fill") or "").upper() == green for n in mobject_nodes(node)
+                    if n.get("text")):
+                found.append(f"play {k}: {said[:40]!r}")
+    return found
+
+
+def unmarked_failures_in_answers(data: dict) -> list[str]:
+    """The exercises' answers that draw a claim in red (a rejected ``answer:diagonal``)
+    without T's part outside P in red (``answer:outside``) or without naming the edge it
+    crosses (``answer:edge-name``), as ``"play 87: T's part outside P not red"``: chapter 6's
+    answers kept T all blue, where chapter 2's analyses turn the part outside P red and
+    name the crossed edge."""
+    found = []
+    for k, play in enumerate(data["plays"]):
+        brought = [node for kind, node in _recorded_all_nodes(play) if kind in INCOMING]
+        names = {(n.get("name"), n.get("role")) for node in brought for n in mobject_nodes(node)
+                 if n.get("name") != "FlatText" or n.get("role")}
+        if ("answer:diagonal", "rejected") not in names:
+            continue
+        red = any(float(part.get("fill_opacity") or 0) > 0
+                  and (part.get("fill") or "").upper() == _REJECTED
+                  for node in brought for n in mobject_nodes(node)
+                  if n.get("name") == "answer:outside" for part in mobject_nodes(n))
+        if not red:
+            found.append(f"play {k}: T's part outside P not red")
+        if ("answer:edge-name", "rejected") not in names:
+            found.append(f"play {k}: the crossed edge unnamed")
+    return found
+
+
+def unexplained_amber_lines(data: dict) -> list[str]:
+    """The amber lines (``argument``, no text) an exercise's answer draws (``answer:…``)
+    while its caption does not say what amber is there, as ``"play 87 answer:measured"``:
+    the hunted rule's answer drew E–C amber and said nothing of it."""
+    amber = _colour("argument")
+    found = []
+    for k, play in enumerate(data["plays"]):
+        said = "amber" in (play.get("subcaption") or "").lower()
+        for kind, node in _recorded_all_nodes(play):
+            name = node.get("name") or ""
+            if (kind in INCOMING and name.startswith("answer:") and not node.get("text")
+                    and (node.get("stroke") or "").upper() == amber and not said):
+                found.append(f"play {k} {name}")
+    return sorted(set(found), key=lambda s: int(s.split()[1]))
+
+
+def unnamed_triangulations(data: dict) -> list[str]:
+    """The triangulations a figure draws side by side (``figure:triangle:<algorithm>``) with
+    no heading over them naming their algorithm (``figure:name`` texts, as
+    :func:`story.registry.spoken` says it), as ``"play 30 ear-clipping"``: the recap's three
+    pictures stood with "11 triangles" over each, alike, their names said one by one later."""
+    from story.registry import spoken
+
+    found = []
+    for k, play in enumerate(data["plays"]):
+        brought = [node for kind, node in _recorded_all_nodes(play) if kind in INCOMING]
+        drawn = dict.fromkeys(
+            n["name"].removeprefix("figure:triangle:") for node in brought
+            for n in mobject_nodes(node) if (n.get("name") or "").startswith("figure:triangle:"))
+        headings = " ".join(n.get("text") or "" for node in brought for n in mobject_nodes(node)
+                            if node.get("name") == "figure:name")
+        found += [f"play {k} {name}" for name in drawn
+                  if spoken(name, start=True) not in headings]
+    return found
+
+
+#: the least CIE76 ΔE between a tinted region not failing and the red of "fails", both at the
+#: opacity the analyses draw that red (:data:`SEEN_AT`) over P's fill, as a tint reads when it
+#: is plainly there: the rubber band's rose swept area (#ff5fa2) was 25 from it and read as
+#: failing in chapter 3 and the recap; the parts' tan is 40, the fruit's orange 32
+LEAST_APART_FROM_FAILS, SEEN_AT = 30.0, 0.6
+#: a tint: a region drawn at most this opaque (a dot, the ball dimmed too, is no region)
+MOST_TINT = 0.5
+
+
+def regions_read_as_failing(data: dict) -> list[str]:
+    """The tinted regions (no text; fill opacity up to :data:`MOST_TINT`) not in the red of
+    "fails" whose colour is within :data:`LEAST_APART_FROM_FAILS` of that red, as ``"play 28
+    swept #FF5FA2"``: a correct rule's region read as failing. Each name and colour once."""
+    from metaphors.theme import THEME
+
+    found: dict[tuple[str, str], str] = {}
+    red = _over(_REJECTED, SEEN_AT, THEME.polygon_fill)
+    for k, play in enumerate(data["plays"]):
+        for kind, node in _recorded_all_nodes(play):
+            if kind in OUTGOING:  # coming in, or redrawn as it sweeps (chapter 3's band)
+                continue
+            for n in mobject_nodes(node):
+                fill, opacity = _one_colour(n.get("fill")), float(n.get("fill_opacity") or 0)
+                if (not fill or not 0 < opacity <= MOST_TINT or n.get("text")
+                        or n.get("type") == "Dot" or fill.upper() == _REJECTED):
+                    continue
+                key = (n.get("name") or node.get("name") or "", fill.upper())
+                near = delta_e(_over(fill, SEEN_AT, THEME.polygon_fill), red)
+                if near < LEAST_APART_FROM_FAILS and key not in found:
+                    found[key] = f"play {k} {key[0]} {key[1]}"
+    return list(found.values())

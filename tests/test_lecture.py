@@ -620,6 +620,16 @@ def test_every_chapter_builds_with_its_captions(chapter):
     captions = [p["subcaption"] for p in data["plays"] if p["subcaption"]]
     assert len(data["plays"]) > 10 and captions, chapter.slug
     assert all(isinstance(c, str) and c.strip() for c in captions)
+    # exer9: a "no" never in the green of "correct"; an answer's failing claim with T's part
+    # outside P red and its crossed edge named, its amber lines said; the recap's pictures
+    # named; no region not failing in a red that reads as failing (gravity's rose band)
+    from tests import reading_rules as exer9
+
+    assert exer9.fails_in_the_correct_colour(data) == [], chapter.slug
+    assert exer9.unmarked_failures_in_answers(data) == [], chapter.slug
+    assert exer9.unexplained_amber_lines(data) == [], chapter.slug
+    assert exer9.unnamed_triangulations(data) == [], chapter.slug
+    assert exer9.regions_read_as_failing(data) == [], chapter.slug
     # issue 12: a class can read it: cues at reading speed, no text too small
     assert [c["text"] for c in data["cues"]] == captions
     assert unreadable_cues(data) == [], chapter.slug
@@ -1017,7 +1027,8 @@ def test_the_exercises_chapter_plays_a_counterexample_the_hunt_found():
     question = f"Is the claim of {hunted[0].name} an inner diagonal?"
     asked = cues.index(question)
     answer = cues[asked + 1]
-    assert answer == (f"no (it claims {found.claim_name}): E is nearer to C than D; "
+    assert answer == (f"no (it claims {found.claim_name}): E is nearer to C than D (amber: "
+                      "the lengths it compared, CD and CE); "
                       f"{found.claim_name} crosses edge C–D")
     cue = data["cues"][asked]
     assert cue["end"] - cue["start"] >= 15

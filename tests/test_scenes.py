@@ -568,6 +568,12 @@ def test_no_note_is_under_a_moving_tool(case):
     assert unexplained_keyholes(graph(case).data) == [], case.id
     # and no red burst before a ✗: red is the verdict's (Rotation's D flashed red unjudged)
     assert red_bursts_before_verdicts(graph(case).data) == [], case.id
+    # exer9: no region not failing in a red that reads as failing (gravity's rose band), no
+    # "no" in the green of "correct"
+    from tests import reading_rules as exer9
+
+    assert exer9.regions_read_as_failing(graph(case).data) == [], case.id
+    assert exer9.fails_in_the_correct_colour(graph(case).data) == [], case.id
 
 
 @pytest.mark.parametrize("case", _params(SCENES))
