@@ -28,8 +28,9 @@ merge         magenta     a merge vertex of the monotone sweep (a kind, not a ve
 stack         yellow      the monotone stack: the chain waiting to be triangulated
 polygon_fill  navy        inside P
 water         light blue  spilled or rising water (Scaling)
-ball, band    orange,     gravity's ball and its rubber band (Gravity)
-              rose
+ball, band    violet,     gravity's ball and its rubber band (Gravity); the ball violet,
+              rose        not orange: it falls on ear clipping's orange fruit too (prune and
+                          search), where an orange ball was lost (chapter 4, 80 s)
 hand, sweep   purple      the clock hand (Rotation) and the sweeping line
                           (Translation, the monotone sweep)
 swept         pale blue   what water, clock hand or sweep line swept on its way to its
@@ -80,7 +81,10 @@ class Theme:
     ink: str = DEFAULT_INK
     polygon_fill: str = "#2a3a55"
     water: str = "#3aa0ff"
-    ball: str = "#ff8c42"
+    #: a deep violet: it reads on P's navy (CIE76 ΔE 55 as the screen shows it), on the
+    #: fruit (87) and on prune and search's good sub-polygon over it (62); the orange
+    #: #ff8c42 was the fruit's own colour (ΔE 30 on it), and stood on it unseen
+    ball: str = "#6a3d9a"
     band: str = "#ff5fa2"
     gravity: str = "#c7cfdb"
     #: tints of the figures' series and parts (the overview's, chapter 5's plot)

@@ -50,6 +50,7 @@ from tests.reading_rules import (
     answers_on_cards,
     arithmetic_vertex_names,
     balls_not_there,
+    balls_on_like_fills,
     broken_counts,
     broken_summaries,
     calls_over_code,
@@ -83,6 +84,7 @@ from tests.reading_rules import (
     jumping_stacks,
     keys_with_nothing_shown,
     labels_by_triangle_sides,
+    labels_moved_off_their_dots,
     labels_on_edges,
     labels_under_faces,
     labels_under_test_triangles,
@@ -100,6 +102,7 @@ from tests.reading_rules import (
     picks_in_the_red,
     pieces_in_the_called_blue,
     placeholders_as_labels,
+    primes_not_on_screen,
     recoloured_close_ups,
     red_bursts_before_verdicts,
     redrawn_pictures,
@@ -107,6 +110,7 @@ from tests.reading_rules import (
     refuted_lit_rows,
     repeated_verdicts,
     replayed_beats,
+    results_on_method_cards,
     rows_behind_words,
     run_together_labels,
     rushed_tools,
@@ -563,6 +567,13 @@ def test_no_note_is_under_a_moving_tool(case):
     assert amber_diagonals_left(graph(case).data) == [], case.id
     # no piece a split or partition makes reads as the blue of what a call runs on
     assert pieces_in_the_called_blue(graph(case).data) == [], case.id
+    # ears9 (review of chapter 4): the ball reads on the fill it falls over (orange on the
+    # fruit); a primed name said only where it is shown; a label moved aside stands by its
+    # own dot (d₂ by b₁'s); a card poses its method, the run shows the result once
+    assert balls_on_like_fills(graph(case).data) == [], case.id
+    assert primes_not_on_screen(graph(case).data) == [], case.id
+    assert labels_moved_off_their_dots(graph(case).data) == [], case.id
+    assert results_on_method_cards(graph(case).data) == [], case.id
     # a run's first keyhole cut is said while it is drawn: the right-most hole's right-most
     # vertex, to a vertex it sees, one ring to slice (the cut came with no why)
     assert unexplained_keyholes(graph(case).data) == [], case.id
