@@ -385,6 +385,10 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
                 ok = _off(tried, size, fill,
                           clear(tried, size, base, MARGIN) & clear(tried, size, others, apart)
                           & by_own_dot(tried, size, at[name], dots))
+            if not ok.any():  # farther, then, but still nearer its own dot than any other
+                ok = _off(tried, size, fill,
+                          clear(tried, size, base, MARGIN) & clear(tried, size, others, apart)
+                          & by_own_dot(tried, size, at[name], dots, reach=np.inf))
             if ok.any():
                 moved[name] = tried[int(np.argmax(ok))]
                 boxes[name] = tuple(rects_at(moved[name], size)[0])
@@ -398,12 +402,12 @@ OWN_REACH = 0.45
 
 
 def by_own_dot(centres: np.ndarray, size: tuple[float, float], own: np.ndarray,
-               dots: Sequence[np.ndarray]) -> np.ndarray:
+               dots: Sequence[np.ndarray], reach: float = OWN_REACH) -> np.ndarray:
     """Which places (centres of a label ``size``) stand by the label's ``own`` dot: within
-    :data:`OWN_REACH` of it, and nearer it than any of the other ``dots``."""
+    ``reach`` of it, and nearer it than any of the other ``dots``."""
     rects = rects_at(centres, size)
     mine = dot_gaps(rects, [(float(own[0]), float(own[1]), 0.0)])[:, 0]
-    ok = mine <= OWN_REACH + 1e-9
+    ok = mine <= reach + 1e-9
     if len(dots):
         theirs = dot_gaps(rects, [(float(p[0]), float(p[1]), 0.0) for p in dots]).min(axis=1)
         ok &= mine < theirs

@@ -253,7 +253,7 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
     starts_at = [p for p, _ in bridge_holes(polygon_read).bridges]
     drawn += [_dot(frame, pts[p], theme.argument, "argument", "figure:step") for p in starts_at]
     said = ", ".join(labels[p] for p in starts_at)
-    words = f"each hole's right-most vertex ({said}): a cut from it joins the hole to the rind"
+    words = f"{said}: each hole's right-most vertex, where its cut to the rind starts"
     return [*drawn, figure_caption(box, theme, (words, theme.ink))]
 
 

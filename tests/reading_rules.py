@@ -5801,9 +5801,10 @@ def primes_not_on_screen(data: dict) -> list[str]:
 
 
 #: the farthest a vertex label moved aside may stand from its own dot on the picture (its
-#: box; scene units, 27 px at 480p): chapter 4's d₂, moved off a slice's cut, stood 0.6 off
-#: its dot, by b₁'s (184 s)
-FARTHEST_LABEL = 0.45
+#: box; scene units, 36 px at 480p: the farthest place labels.py tries, :data:`GAPS`): chapter
+#: 4's d₂, moved off a slice's cut, stood 0.6 off its dot and 0.19 from b₁'s (184 s). A label
+#: with no room nearer stands up to this far off for a moment (b₁ off a test triangle, 0.57)
+FARTHEST_LABEL = 0.6
 
 
 def labels_moved_off_their_dots(data: dict) -> list[str]:
