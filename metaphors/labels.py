@@ -371,47 +371,20 @@ def crossed_labels(rings: Sequence[Sequence[str]], markers: dict[str, VGroup],
             d = outward(at[ring[i - 1]], at[name], at[ring[(i + 1) % len(ring)]])
             tried = places_round(at[name], d, size)
             others = Obstacles(boxes=[box for other, box in boxes.items() if other != name])
-            dots = [p for other, p in at.items() if other != name]
             ok = _off(tried, size, fill, clear(tried, size, base, EDGE_MARGIN)
-                      & clear(tried, size, others, max(apart, EDGE_MARGIN))
-                      & by_own_dot(tried, size, at[name], dots))
+                      & clear(tried, size, others, max(apart, EDGE_MARGIN)))
             if not ok.any():  # between the ways tried, on a finer grid (:func:`_finer`)
                 tried = _finer(at[name], size)
                 ok = _off(tried, size, fill, clear(tried, size, base, EDGE_MARGIN)
-                          & clear(tried, size, others, max(apart, EDGE_MARGIN))
-                          & by_own_dot(tried, size, at[name], dots))
+                          & clear(tried, size, others, max(apart, EDGE_MARGIN)))
             if not ok.any():
                 tried = places_round(at[name], d, size)
                 ok = _off(tried, size, fill,
-                          clear(tried, size, base, MARGIN) & clear(tried, size, others, apart)
-                          & by_own_dot(tried, size, at[name], dots))
-            if not ok.any():  # farther, then, but still nearer its own dot than any other
-                ok = _off(tried, size, fill,
-                          clear(tried, size, base, MARGIN) & clear(tried, size, others, apart)
-                          & by_own_dot(tried, size, at[name], dots, reach=np.inf))
+                          clear(tried, size, base, MARGIN) & clear(tried, size, others, apart))
             if ok.any():
                 moved[name] = tried[int(np.argmax(ok))]
                 boxes[name] = tuple(rects_at(moved[name], size)[0])
     return moved
-
-
-#: the farthest a label moved aside stands from its own dot (its box's nearest side): a
-#: label farther off, or nearer another dot, names that one (chapter 4's d₂, moved 0.6 off
-#: its dot by a slice's cut, stood by b₁'s dot, stacked on b₁'s label)
-OWN_REACH = 0.45
-
-
-def by_own_dot(centres: np.ndarray, size: tuple[float, float], own: np.ndarray,
-               dots: Sequence[np.ndarray], reach: float = OWN_REACH) -> np.ndarray:
-    """Which places (centres of a label ``size``) stand by the label's ``own`` dot: within
-    ``reach`` of it, and nearer it than any of the other ``dots``."""
-    rects = rects_at(centres, size)
-    mine = dot_gaps(rects, [(float(own[0]), float(own[1]), 0.0)])[:, 0]
-    ok = mine <= reach + 1e-9
-    if len(dots):
-        theirs = dot_gaps(rects, [(float(p[0]), float(p[1]), 0.0) for p in dots]).min(axis=1)
-        ok &= mine < theirs
-    return np.asarray(ok, dtype=bool)
 
 
 #: the step of the finer grid a crossed label's place is looked for on (scene units)

@@ -5814,7 +5814,12 @@ def labels_moved_off_their_dots(data: dict) -> list[str]:
     by b₁"``: such a label names the dot it stands by (chapter 4's d₂ stood stacked on b₁'s
     label, by b₁'s dot). A label where it was first placed is not judged here (the placing's
     own rules judge it). Each vertex once, where first found; markers as
-    :func:`_shown_after_plays` follows them."""
+    :func:`_shown_after_plays` follows them.
+
+    Not asserted yet (ears9): it fires on chapter 4 (d₂ by b₁'s dot, 184 s; G, b₁, a₂). A
+    fix in :func:`metaphors.labels.crossed_labels` that keeps a moved label by its own dot
+    passed it, but left chapter 4's M and chapter 5's G across a triangulation's side
+    (labels_across_fills): their only clear place off the sides is nearer another dot."""
     from shapely.geometry import Point
     from shapely.geometry import box as area
 
