@@ -419,7 +419,8 @@ def keyhole(board: Board, beat: Keyhole) -> None:
     board.play(beat, Create(knife), Indicate(board.markers[beat.corners[0]], color=theme.result),
                run_time=0.8)
     # then, the cut made, what it is for (:attr:`Keyhole.then`), the one caption up
-    said = replace(beat, caption=beat.then) if beat.then else beat
+    then = "; ".join(w for w in (beat.then, beat.primes if board.panel.shows_calls else "") if w)
+    said = replace(beat, caption=then) if then else beat
     board.play(said, FadeOut(knife), FadeIn(cut), *board.clear_labels(cut),
                *board.panel.draw(f"keyhole:{beat.hole}", *beat.points, None), run_time=0.5)
     board.keep(f"keyhole:{beat.hole}", cut)
@@ -617,6 +618,11 @@ class Keyhole(Beat):
     #: the words said once the cut is made (what it is for), after the caption said while the
     #: knife cuts (which cut, from where to where); empty: the caption stays
     then: str = ""
+    #: what the ring names the cut's ends past it (``c₂′``, ``F′``), said after ``then`` only
+    #: where a call line shows those names (a scene's, ``clip_ear(c₁′, F″, c₂)``): the
+    #: picture labels each vertex once, and the lecture, with no call line, said names that
+    #: were nowhere on screen (chapter 4 at 153 s)
+    primes: str = ""
 
 
 @beat_kind("ear-test")
@@ -738,11 +744,13 @@ def read_join_hole(walk: Walk, call: Event, ret: Event) -> Iterator[Beat]:
     point_of = walk.root_points()
     caption, then = _keyhole_words(walk.memo("fruit.holes cut", list), hole, p, m)
     copies = _far_side(walk, ret, p)
-    if copies is not None:  # the call lines name them (clip_ear(c₁′, F″, c₂)): said once
-        then += f"; past the cut, {p} and {m} are named {copies[0]} and {copies[1]}"
+    # the call lines name them (clip_ear(c₁′, F″, c₂)): said once, where they are shown
+    primes = (f"past the cut, {p} and {m} are named {copies[0]} and {copies[1]}"
+              if copies is not None else "")
     yield walk.call_beat(Keyhole, caption, call, ret,
                          roles={p: "result", m: "result"}, hole=hole, corners=(p, m),
-                         points=(point(point_of[p]), point(point_of[m])), then=then)
+                         points=(point(point_of[p]), point(point_of[m])), then=then,
+                         primes=primes)
 
 
 def _keyhole_words(cut: list[int], hole: int, p: str, m: str) -> tuple[str, str]:

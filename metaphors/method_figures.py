@@ -42,7 +42,7 @@ from metaphors.drawing import (
 )
 from metaphors.figure_caption import figure_caption
 from metaphors.figure_steps import comes_with
-from metaphors.fruit import CUT_WIDTH, TEST_OPACITY, TEST_STROKE, fruit_style, good_style
+from metaphors.fruit import fruit_style
 from metaphors.labels import LABEL_HALO, drawn_edges, measured_markers, placed_vertex_markers
 from metaphors.tags import tag
 from metaphors.theme import Theme
@@ -172,47 +172,20 @@ def prune_rounds(polygon: Polygon) -> list[Round]:
 
 def _prune(polygon: Polygon, heuristic: str, box: Box,
            theme: Theme) -> tuple[Frame, list[Mobject], list[Mobject]]:
-    """A round of prune and search on P drawn as the run draws it, the fruit
-    (:func:`method_figure`): the good sub-polygon G it searches (P itself, or its cut edge
-    drawn), its middle vertex V tested, V's inner diagonal and the smaller good sub-polygon
-    it keeps, tinted as the run tints it (:func:`metaphors.fruit.good_style`); when the next
-    round's middle vertex is an ear, its triangle in green, as the run tests it."""
+    """Prune and search's question, not its answer: P drawn as the run draws it, the fruit
+    (:func:`method_figure`), and the middle vertex V of its first round marked, with the
+    question the run answers ("an ear? if not, a diagonal from it halves P"). The diagonal,
+    the smaller good sub-polygon and the ear are the run's to show: the card drew them
+    (GB, E an ear) and the run drew the same again a few seconds later (chapter 4 at 66 s)."""
     frame = Frame(polygon.points, *box)
     if polygon.n < 4:
         return frame, [], [figure_caption(box, theme, ("a triangle: it is its own ear", theme.ink))]
-    rounds = prune_rounds(polygon)
-    # the first round on a sub-polygon with a cut edge that cuts again, else the first round
-    r = next((k for k, (g, _, d) in enumerate(rounds) if g.has_cut and d is not None), 0)
-    g, v, diagonal = rounds[r]
-    ids, pts, labels = [int(k) for k in g.indices()], polygon.points, polygon.labels
-    under: list[Mobject] = []
-    if g.has_cut:  # its tint went as the smaller one came, in the run: its cut edge stays
-        under.append(_line(frame, pts[ids[-1]], pts[ids[0]], theme.called, theme.stroke,
-                           "called", "figure:cut"))
-    name = "P" if not g.has_cut else f"G (cut {labels[ids[-1]]}{labels[ids[0]]})"
-    if diagonal is None:
-        words = f"{name}: its middle vertex {labels[v]} is an ear"
-    else:
-        a, b = sorted((ids.index(diagonal[0]), ids.index(diagonal[1])))
-        under.append(tag(MPolygon(*frame.many([pts[k] for k in ids[a:b + 1]]),
-                                  **good_style(theme)), "called", "figure:good"))
-        under.append(_line(frame, pts[diagonal[0]], pts[diagonal[1]], theme.result,
-                           theme.stroke * 1.6, "result", "figure:diagonal"))
-        w = diagonal[1] if diagonal[0] == v else diagonal[0]
-        words = (f"{name}: middle {labels[v]} is no ear; {labels[v]}{labels[w]} keeps "
-                 f"{b - a + 1} of {len(ids)}")
-        nxt, e, last = rounds[r + 1]
-        if last is None:  # the smaller one's middle vertex is an ear: the search ends
-            m = nxt.middle()
-            ear = [pts[nxt.vertex_at(k).index] for k in (m - 1, m, m + 1)]
-            under.append(tag(MPolygon(*frame.many(ear), color=theme.result,
-                                      stroke_width=theme.stroke * TEST_STROKE,
-                                      fill_color=theme.result, fill_opacity=TEST_OPACITY),
-                             "result", "figure:ear"))
-            words += f"; there the middle {labels[e]} is an ear"
-    over = [_dot(frame, pts[v], theme.argument, "argument", "figure:step"),
+    _, v, _ = prune_rounds(polygon)[0]
+    name = polygon.labels[v]
+    words = f"P's middle vertex {name}: an ear? If not, a diagonal from {name} halves P"
+    over = [_dot(frame, polygon.points[v], theme.argument, "argument", "figure:step"),
             figure_caption(box, theme, (words, theme.ink))]
-    return frame, under, over
+    return frame, [], over
 
 
 # --- a rule of one's own ---------------------------------------------------------------------
@@ -254,11 +227,10 @@ def _rule(polygon: Polygon, heuristic: str, box: Box,
 
 
 def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
-    """P with its holes, each hole's right-most vertex marked and its bridge cut to the vertex
-    it sees (Eberly's, as the run computes it). P is drawn as the run that follows draws it,
-    the fruit, its labels on dark halos, and a bridge as its keyhole cut: a dark slit
-    (:data:`metaphors.fruit.CUT_WIDTH`), the background seen through the fruit (the card drew
-    it green on P's navy, the run dark on the fruit: two colours for one cut, chapter 4)."""
+    """P with its holes, each hole's right-most vertex marked, where its cut will start: the
+    question, not the cuts, which the run makes after the card (the card drew both bridges
+    and the run cut them again: chapter 4 at 138 s). P is drawn as the run that follows
+    draws it, the fruit, its labels on dark halos."""
     polygon_read = read_any_polygon(polygon_spec)
     if not isinstance(polygon_read, PolygonWithHoles):
         frame = Frame(polygon_read.points, *box)
@@ -271,23 +243,17 @@ def _keyhole(polygon_spec: str, box: Box, theme: Theme) -> list[Mobject]:
     frame = Frame(outer.points, *box)
     shape = polygon_mobject(outer, frame, theme, holes).set_style(**_style(fruit_style(theme)))
     drawn: list[Mobject] = [tag(shape, "idle", "figure:polygon")]
-    ring = bridge_holes(polygon_read)
-    drawn += [_line(frame, pts[p], pts[m], theme.background, theme.stroke * CUT_WIDTH,
-                    "result", f"figure:bridge:{labels[p]}–{labels[m]}")
-              for p, m in ring.bridges]
-    # every label clear of the bridges too: a cut through d₂ reads as ending there
-    markers = measured_markers(outer, holes, frame, theme, lines=[
-        (frame.to_scene(pts[p]), frame.to_scene(pts[m])) for p, m in ring.bridges])
+    markers = measured_markers(outer, holes, frame, theme)
     for _, marker in markers:  # on the fruit's orange, a label reads on its dark halo
         marker[1].set_stroke(theme.background, width=LABEL_HALO, background=True)
     drawn.append(tag(VGroup(*(m for _, m in markers[:outer.n])), "idle", "figure:vertices"))
     drawn += [tag(marker, "idle", f"figure:hole-vertex:{label}")
               for label, marker in markers[outer.n:]]
-    drawn += [_dot(frame, pts[p], theme.argument, "argument", "figure:step")
-              for p, _ in ring.bridges]
-    cuts = ", ".join(f"{labels[p]}{labels[m]}" for p, m in ring.bridges)
-    size = len(ring.walk())
-    words = f"bridges {cuts}: one ring of {size} vertices ({polygon_read.n} + 2 per hole)"
+    # each hole's right-most vertex (the bridges' start, as the run computes them)
+    starts_at = [p for p, _ in bridge_holes(polygon_read).bridges]
+    drawn += [_dot(frame, pts[p], theme.argument, "argument", "figure:step") for p in starts_at]
+    said = ", ".join(labels[p] for p in starts_at)
+    words = f"{said}: each hole's right-most vertex, where its cut to the rind starts"
     return [*drawn, figure_caption(box, theme, (words, theme.ink))]
 
 

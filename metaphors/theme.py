@@ -28,8 +28,10 @@ merge         magenta     a merge vertex of the monotone sweep (a kind, not a ve
 stack         yellow      the monotone stack: the chain waiting to be triangulated
 polygon_fill  navy        inside P
 water         light blue  spilled or rising water (Scaling)
-ball, band    orange,     gravity's ball and its rubber band, and what the band swept
-              pale lemon  (Gravity): far from the red of "fails" (a correct rule)
+ball, band    violet,     gravity's ball, its rubber band and what the band swept
+              pale lemon  (Gravity): the ball not orange, as it falls on ear clipping's
+                          orange fruit too (prune and search, chapter 4 at 80 s); the
+                          band far from the red of "fails" (a correct rule)
 hand, sweep   purple      the clock hand (Rotation) and the sweeping line
                           (Translation, the monotone sweep)
 swept         pale blue   what water, clock hand or sweep line swept on its way to its
@@ -80,10 +82,13 @@ class Theme:
     ink: str = DEFAULT_INK
     polygon_fill: str = "#2a3a55"
     water: str = "#3aa0ff"
-    ball: str = "#ff8c42"
+    #: a deep violet: it reads on P's navy (CIE76 ΔE 55 as the screen shows it), on the
+    #: fruit (87) and on prune and search's good sub-polygon over it (62); the orange
+    #: #ff8c42 was the fruit's own colour (ΔE 30 on it), and stood on it unseen
+    ball: str = "#6a3d9a"
     #: the rubber band and what it sweeps: a pale lemon, no role's (CIE76 ΔE 55 from the red of
     #: "fails" as both tint P at 0.6; the rose #ff5fa2 was 25, and its swept area read as
-    #: failing, chapter 3 and the recap at 38 s); 30 from the stack's yellow, 58 from the ball
+    #: failing, chapter 3 and the recap at 38 s); 30 from the stack's yellow
     band: str = "#f0f0a0"
     gravity: str = "#c7cfdb"
     #: tints of the figures' series and parts (the overview's, chapter 5's plot)

@@ -6294,4 +6294,145 @@ def regions_read_as_failing(data: dict) -> list[str]:
                 near = delta_e(_over(fill, SEEN_AT, THEME.polygon_fill), red)
                 if near < LEAST_APART_FROM_FAILS and key not in found:
                     found[key] = f"play {k} {key[0]} {key[1]}"
+# --- ears9 (chapter 4 review): the ball seen, labels by their dots, the plot as the words ------
+
+#: the least CIE76 ΔE between gravity's ball and the fill it falls over, as the screen shows
+#: them: the orange ball on ear clipping's orange fruit was 30 off it, and lost (chapter 4 at
+#: 80 s, prune and search)
+LEAST_BALL_APART = 40.0
+#: what a ball falls over: P's fill (the fruit's, a figure's, the close-up's unnamed copy) and
+#: what lies on it
+_BALLS_ON = ("polygon", "fruit", "figure:polygon", "analysis:polygon", "Polygon")
+_UNDER_BALLS = (*_BALLS_ON, "good", "figure:good", "swept")
+
+
+def balls_on_like_fills(data: dict) -> list[str]:
+    """Gravity's ball (:data:`_BALLS`, drawn solid: not resting see-through on X) over a fill
+    it does not stand out from, as ``"play 120 ball on fruit ΔE 30"``: P's fill under the
+    ball's centre over the background, each fill over that (a good sub-polygon, the band's
+    sweep) over what is under it, each nearer than :data:`LEAST_BALL_APART`. Each fill
+    once, where first found."""
+    from shapely.geometry import Point
+
+    from metaphors.theme import THEME
+
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, (*_BALLS, *_UNDER_BALLS)):
+        fills = _fills_under_balls(shown)
+        for name, node in shown.items():
+            colour = _one_colour(node.get("fill"))
+            if (name not in _BALLS or not colour or not node.get("points")
+                    or float(node.get("fill_opacity") or 0) < 0.99):
+                continue
+            at, screen = Point(_centre(node)), THEME.background
+            for owner, shape, (fill, opacity) in fills:  # back to front: P's first
+                if not shape.contains(at):
+                    continue
+                screen = _over(fill, opacity, screen)
+                if (apart := delta_e(colour, screen)) < LEAST_BALL_APART:
+                    found.setdefault(owner, f"play {k} {name} on {owner} ΔE {apart:.0f}")
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+def _fills_under_balls(shown: dict[str, dict]) -> list[tuple[str, Any, tuple[str, float]]]:
+    """The fills of :data:`_UNDER_BALLS` shown (name, shape, colour and opacity), P's before
+    those on it."""
+    from shapely.geometry import Polygon
+
+    fills = []
+    for name, node in shown.items():
+        colour = _one_colour(node.get("fill"))
+        if name not in _UNDER_BALLS or colour is None or not node.get("fill_opacity"):
+            continue
+        rings = sorted((Polygon(p) for p in _paths(node) if len(p) >= 3 and Polygon(p).is_valid),
+                       key=lambda r: -r.area)
+        if rings:
+            shape = Polygon(rings[0].exterior, [r.exterior for r in rings[1:]])
+            fills.append((name, shape, (colour, float(node["fill_opacity"]))))
+    return sorted(fills, key=lambda f: f[0] not in _BALLS_ON)
+
+
+def primes_not_on_screen(data: dict) -> list[str]:
+    """The primed vertex names (:data:`_PRIMED`: ``c₂′``, ``F″``) a caption says while no
+    text on screen (a label, the call line; not the subtitle) shows them, as ``"play 214
+    c₂′"``: chapter 4's keyhole said "past the cut, c₂ and F are named c₂′ and F′", and
+    neither name was anywhere on screen (the lecture shows no call line). Each name once."""
+    found: dict[str, str] = {}
+    for k, shown in _shown_after_plays(data, ("",)):
+        caption = data["plays"][k].get("subcaption") or ""
+        said = set(_PRIMED.findall(caption)) - set(found)
+        if not said:
+            continue
+        # the subtitle's lines, under any name, are not on the picture (a label is one word)
+        texts = " ".join(text for name, node in shown.items() if name != "subtitle"
+                         for part in mobject_nodes(node)
+                         if not (" " in (text := (part.get("text") or "").strip())
+                                 and text in caption))
+        for label in sorted(said):
+            if not re.search(rf"(?<![\w′″‴]){re.escape(label)}(?![′″‴₀-₉])", texts):
+                found[label] = f"play {k} {label}"
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+#: the farthest a vertex label moved aside may stand from its own dot on the picture (its
+#: box; scene units, 36 px at 480p: the farthest place labels.py tries, :data:`GAPS`): chapter
+#: 4's d₂, moved off a slice's cut, stood 0.6 off its dot and 0.19 from b₁'s (184 s). A label
+#: with no room nearer stands up to this far off for a moment (b₁ off a test triangle, 0.57)
+FARTHEST_LABEL = 0.6
+
+
+def labels_moved_off_their_dots(data: dict) -> list[str]:
+    """The vertex labels on the picture moved aside (off a cut, a test triangle, the ball's
+    fall) to a place farther than :data:`FARTHEST_LABEL` from their own dot, or nearer
+    another vertex's dot than their own (box to dot), as ``"play 239 d₂ 0.60 off its dot,
+    by b₁"``: such a label names the dot it stands by (chapter 4's d₂ stood stacked on b₁'s
+    label, by b₁'s dot). A label where it was first placed is not judged here (the placing's
+    own rules judge it). Each vertex once, where first found; markers as
+    :func:`_shown_after_plays` follows them.
+
+    Not asserted yet (ears9): it fires on chapter 4 (d₂ by b₁'s dot, 184 s; G, b₁, a₂). A
+    fix in :func:`metaphors.labels.crossed_labels` that keeps a moved label by its own dot
+    passed it, but left chapter 4's M and chapter 5's G across a triangulation's side
+    (labels_across_fills): their only clear place off the sides is nearer another dot."""
+    from shapely.geometry import Point
+    from shapely.geometry import box as area
+
+    found: dict[str, str] = {}
+    first: dict[str, tuple[float, ...]] = {}  # each label's box as it came in
+    for k, shown in _shown_after_plays(data, ("vertex:",)):
+        markers = {name.removeprefix("vertex:"): (dot, boxes[0]) for name, m in shown.items()
+                   if (dot := _dot_centre(m)) is not None
+                   and (boxes := list(_label_boxes(m, direct=True)))}
+        first = {v: box for v, box in first.items() if v in markers}
+        for vertex, (dot, box) in markers.items():
+            if first.setdefault(vertex, box) == box or vertex in found:
+                continue
+            label = area(*box)
+            own = label.distance(Point(dot))
+            by = min(((label.distance(Point(d)), v) for v, (d, _) in markers.items()
+                      if v != vertex and d != dot), default=(math.inf, ""))
+            if own > FARTHEST_LABEL or by[0] < own:
+                found[vertex] = f"play {k} {vertex} {own:.2f} off its dot, by {by[1]}"
+    return sorted(found.values(), key=lambda s: int(s.split()[1]))
+
+
+#: a method card's parts that are its run's result: prune and search's kept half, the
+#: keyhole's bridges
+_CARD_RESULTS = ("figure:good", "figure:bridge:")
+
+
+def results_on_method_cards(data: dict) -> list[str]:
+    """A card's figure that draws what the run after it computes (:data:`_CARD_RESULTS`), as
+    ``"play 79 figure:good"``: one picture per idea, the card poses the method and the run
+    shows its result once (chapter 4's prune and search card drew GB and the kept half, the
+    keyhole card both bridges, and the runs drew them again seconds later). Each name once."""
+    found: dict[str, str] = {}
+    for k, play in enumerate(data["plays"]):
+        for anim in play["animations"]:
+            if anim.get("type") not in INCOMING:
+                continue
+            for node in animation_nodes(anim):
+                name = node.get("name") or ""
+                if name.startswith(_CARD_RESULTS):
+                    found.setdefault(name, f"play {k} {name}")
     return list(found.values())

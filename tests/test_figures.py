@@ -208,53 +208,42 @@ def test_gravity_draws_its_rule_turned_not_its_runs_answer():
     assert abs(x1 - x0) < 1e-6 and y1 < y0  # the arrow points down on screen
 
 
-def test_prune_draws_an_inner_diagonal_that_keeps_at_most_half_and_one():
+def test_prune_poses_its_question_without_the_answer():
+    """The card marks the first round's middle vertex and draws no diagonal, no good
+    sub-polygon and no ear: the run shows them once (the card drew GB and E's ear, and the
+    run drew them again, chapter 4)."""
     from metaphors.method_figures import prune_rounds
 
     p = read_polygon("lecture")
     drawn = figure_mobjects(Figure("prune"), "lecture")
-    scene = {on_screen(Frame(p.points, *BOX), q): k for k, q in enumerate(p.points)}
-    a, b = (scene[q] for q in ends(named(drawn, "figure:diagonal")[0]))
-    assert is_inner_diagonal(p, a, b).ok
+    for part in ("figure:diagonal", "figure:good", "figure:ear", "figure:cut"):
+        assert named(drawn, part) == [], part
     g, v, _ = prune_rounds(p)[0]
-    # the good sub-polygon kept, at most half of the one searched and one
-    assert len(named(drawn, "figure:good")[0].get_vertices()) <= g.size // 2 + 1
     marked = named(drawn, "figure:step")[0].get_center()
     assert on_screen(Frame(p.points, *BOX), p.points[v]) == (round(marked[0], 6),
                                                             round(marked[1], 6))
     assert g.vertex_at(g.middle()).index == v
 
 
-def test_every_bridge_joins_a_holes_rightmost_vertex_to_a_vertex_it_sees():
-    from shapely.geometry import LineString
-    from shapely.geometry import Polygon as Region
+def test_the_keyhole_card_marks_each_holes_rightmost_vertex_and_cuts_nothing():
+    """The card marks where each cut starts, a hole's right-most vertex, and draws no bridge:
+    the run cuts them (the card drew both, and the run cut them again, chapter 4)."""
+    from manim import ManimColor
 
     from geometry.io import read_any_polygon
+    from metaphors.theme import THEME
 
     shape = read_any_polygon("keyhole")
     rings = [shape.points[a:b] for a, b in zip(shape.starts, shape.starts[1:], strict=False)]
-    region = Region(rings[0], rings[1:])
-    # the outer ring drawn on its own keeps the shape's labels, which the bridges name
+    # the outer ring drawn on its own keeps the shape's labels
     outer = Polygon.from_points(rings[0])
     assert outer.labels == shape.labels[:shape.starts[1]]
     drawn = figure_mobjects(Figure("keyhole", "keyhole"), "lecture")
-    bridges = named(drawn, "figure:bridge:")
-    assert len(bridges) == shape.hole_count
-    points = {shape.labels[k]: shape.points[k] for k in range(shape.n)}
-    rightmost = {max(ring)[0] for ring in rings[1:]}
-    for bridge in bridges:
-        p, m = bridge.name.removeprefix("figure:bridge:").split("–")
-        assert points[p][0] in rightmost and shape.ring_of(shape.labels.index(p)) > 0
-        assert region.contains(LineString([points[p], points[m]]))  # P sees M, inside P
-    # drawn as the run draws it (metaphors.fruit.keyhole): the fruit, each cut a dark slit
-    # (the card's green on navy and the run's dark on orange were two colours for one cut)
-    from manim import ManimColor
-
-    from metaphors.fruit import CUT_WIDTH
-    from metaphors.theme import THEME
-
-    assert {b.get_stroke_color() for b in bridges} == {ManimColor(THEME.background)}
-    assert {b.get_stroke_width() for b in bridges} == {THEME.stroke * CUT_WIDTH}
+    assert named(drawn, "figure:bridge:") == []
+    frame = Frame(outer.points, *BOX)
+    marked = {tuple(round(x, 6) for x in m.get_center()[:2]) for m in named(drawn, "figure:step")}
+    rightmost = {on_screen(frame, max(ring)) for ring in rings[1:]}
+    assert marked == rightmost and len(marked) == shape.hole_count
     (fruit,) = named(drawn, "figure:polygon")
     assert fruit.get_fill_color() == ManimColor(THEME.fruit)
 

@@ -35,6 +35,7 @@ from tests.reading_rules import (
     answers_over_pictures,
     arithmetic_vertex_names,
     balls_not_there,
+    balls_on_like_fills,
     bare_measures,
     bare_ticks,
     broken_counts,
@@ -111,6 +112,7 @@ from tests.reading_rules import (
     pieces_in_the_called_blue,
     placeholders_as_labels,
     plot_series_in_role_colours,
+    primes_not_on_screen,
     recoloured_close_ups,
     red_bursts_before_verdicts,
     redrawn_pictures,
@@ -121,6 +123,7 @@ from tests.reading_rules import (
     replayed_beats,
     replayed_splits,
     restyled_triangulations,
+    results_on_method_cards,
     rows_behind_words,
     rules_without_their_picture,
     run_together_labels,
@@ -753,6 +756,12 @@ def test_every_chapter_builds_with_its_captions(chapter):
     assert amber_diagonals_left(data) == [], chapter.slug
     # no piece a split or partition makes reads as the blue of what a call runs on
     assert pieces_in_the_called_blue(data) == [], chapter.slug
+    # ears9 (review of chapter 4): the ball reads on the fill it falls over (orange on the
+    # fruit); a primed name said only where it is shown; a label moved aside stands by its
+    # own dot (d₂ by b₁'s: not yet asserted, see the rule); a card poses its method, the run shows the result once
+    assert balls_on_like_fills(data) == [], chapter.slug
+    assert primes_not_on_screen(data) == [], chapter.slug
+    assert results_on_method_cards(data) == [], chapter.slug
     # a run's first keyhole cut is said while it is drawn: the right-most hole's right-most
     # vertex, to a vertex it sees, one ring to slice (the cut came with no why)
     assert unexplained_keyholes(data) == [], chapter.slug

@@ -50,6 +50,7 @@ from tests.reading_rules import (
     answers_on_cards,
     arithmetic_vertex_names,
     balls_not_there,
+    balls_on_like_fills,
     broken_counts,
     broken_summaries,
     calls_over_code,
@@ -107,6 +108,7 @@ from tests.reading_rules import (
     refuted_lit_rows,
     repeated_verdicts,
     replayed_beats,
+    results_on_method_cards,
     rows_behind_words,
     run_together_labels,
     rushed_tools,
@@ -563,6 +565,11 @@ def test_no_note_is_under_a_moving_tool(case):
     assert amber_diagonals_left(graph(case).data) == [], case.id
     # no piece a split or partition makes reads as the blue of what a call runs on
     assert pieces_in_the_called_blue(graph(case).data) == [], case.id
+    # ears9 (review of chapter 4): the ball reads on the fill it falls over (orange on the
+    # fruit) (a scene's primes are said before its call lines show them: unexplained_primes); a label moved aside stands by its
+    # own dot (d₂ by b₁'s: not yet asserted, see the rule); a card poses its method, the run shows the result once
+    assert balls_on_like_fills(graph(case).data) == [], case.id
+    assert results_on_method_cards(graph(case).data) == [], case.id
     # a run's first keyhole cut is said while it is drawn: the right-most hole's right-most
     # vertex, to a vertex it sees, one ring to slice (the cut came with no why)
     assert unexplained_keyholes(graph(case).data) == [], case.id

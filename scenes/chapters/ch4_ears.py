@@ -35,10 +35,15 @@ class Ears(LectureScene):
             Run("prune-and-search", None, "Prune and search: the good sub-polygons shrink",
                 box=FRUIT_BOX, speed=0.5),
             Card("How fast", (
-                # one name for it, the one the later chapters say (SPOKEN), taught here
-                "Ear clipping, naive: O(n³). Faster ear clipping keeps each vertex's ear "
-                "status up to date: O(n²).",
-                "Finding one ear by prune and search: O(n); clipping them all: O(n²)."),
+                # the plot counts ear tests on random polygons: the words say what it counts
+                # and the worst case apart (they said O(n³), O(n²), O(n) beside lines that
+                # grew almost straight); one name for faster ear clipping, the later chapters'
+                "An ear test looks at up to n vertices. Naive ear clipping may make O(n²) "
+                "tests: O(n³) at worst.",
+                "Faster ear clipping retests only a slice's two neighbours: O(n) tests, "
+                "O(n²) in all.",
+                "Prune and search: one ear in O(n). On the random polygons plotted, every "
+                "count stays far under n²."),
                  Figure("growth")),
             Card("Fruit with holes: a keyhole cut", (
                 "Real polygons have holes: the columns of a floor plan, a country's lakes.",
