@@ -5977,6 +5977,9 @@ def ticks_on_the_picture(data: dict) -> list[str]:
                     over = polygon.intersection(area(*box)).area if box else 0.0
                     if over > MOST_TEXT_OVER_FILL:
                         found.append(f"play {k} tick {over:.2f} over P")
+    return found
+
+
 # --- faster9: chapter 5's kind words off P's hull, its stack drawn as a stack, its plot's colours --
 
 #: the notes that say a vertex's kind: the word beside it, and the legend entry or note beside
@@ -6007,7 +6010,7 @@ def kind_words_in_the_picture(data: dict) -> list[str]:
                 for part in mobject_nodes(node):
                     if part.get("name") not in _KIND_NOTES:
                         continue
-                    box = _box_of_parts(part)
+                    box = box_of_parts(part)
                     if box is None:
                         continue
                     said = " ".join(t for p in mobject_nodes(part) if (t := p.get("text")))
@@ -6033,7 +6036,7 @@ def kind_notes_by_labels(data: dict) -> list[str]:
         if anim.get("type") not in INCOMING:
             continue
         for part in mobject_nodes(anim.get("mobject", {})):
-            if part.get("name") != "legend:kind" or (box := _box_of_parts(part)) is None:
+            if part.get("name") != "legend:kind" or (box := box_of_parts(part)) is None:
                 continue
             said = " ".join(t for p in mobject_nodes(part) if (t := p.get("text")))
             found += [f"{said!r} by {v}" for v, b in sorted(labels.items())
@@ -6041,16 +6044,18 @@ def kind_notes_by_labels(data: dict) -> list[str]:
     return sorted(set(found))
 
 
-def _box_of_parts(node: dict) -> tuple[float, float, float, float] | None:
-    """A note's box with all its parts: its texts' boxes and its swatches' (``Dot``) points
-    (a text's own glyph points are not where it stands on screen)."""
+def box_of_parts(node: dict, points_of: tuple[str, ...] | None = ("Dot",)
+                 ) -> tuple[float, float, float, float] | None:
+    """A node's box with all its parts: its texts' boxes and the points of its parts of the
+    types ``points_of`` (all types if None): a note's swatches (``Dot``) by default, a text's
+    own glyph points not being where it stands on screen."""
     xs, ys = [], []
     for part in mobject_nodes(node):
         if part.get("box") is not None:
             x0, y0, x1, y1 = part["box"]
             xs += [x0, x1]
             ys += [y0, y1]
-        elif part.get("type") == "Dot":
+        elif points_of is None or part.get("type") in points_of:
             for x, y, *_ in part.get("points") or ():
                 xs.append(x)
                 ys.append(y)
@@ -6294,6 +6299,9 @@ def regions_read_as_failing(data: dict) -> list[str]:
                 near = delta_e(_over(fill, SEEN_AT, THEME.polygon_fill), red)
                 if near < LEAST_APART_FROM_FAILS and key not in found:
                     found[key] = f"play {k} {key[0]} {key[1]}"
+    return list(found.values())
+
+
 # --- ears9 (chapter 4 review): the ball seen, labels by their dots, the plot as the words ------
 
 #: the least CIE76 ΔE between gravity's ball and the fill it falls over, as the screen shows

@@ -387,19 +387,10 @@ def test_the_stack_drawn_is_the_stack_of_the_log():
 
 
 def _box_of(node) -> tuple[float, float, float, float] | None:
-    """A graph node's box: its text's box, else its points' bounds, with all its parts."""
-    from tests.reading_rules import mobject_nodes
+    """A graph node's box: its texts' boxes and its other parts' points, with all its parts."""
+    from tests.reading_rules import box_of_parts
 
-    xs, ys = [], []
-    for part in mobject_nodes(node):
-        if part.get("box") is not None:
-            x0, y0, x1, y1 = part["box"]
-            xs += [x0, x1]
-            ys += [y0, y1]
-        for x, y, *_ in part.get("points") or ():
-            xs.append(x)
-            ys.append(y)
-    return (min(xs), min(ys), max(xs), max(ys)) if xs else None
+    return box_of_parts(node, points_of=None)
 
 
 def stack_collisions(data) -> list[str]:
