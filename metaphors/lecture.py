@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import itertools
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import cast
 
@@ -180,7 +180,7 @@ class _Sheet:
     frame: Frame
     theme: Theme
     polygon: Polygon | None = None
-    markers: dict | None = None
+    markers: Mapping[int, VMobject] | None = None  # a vertex's index → its marker (dot, label)
 
 
 @dataclass(frozen=True)

@@ -40,8 +40,8 @@ class Ears(LectureScene):
                 # grew almost straight); one name for faster ear clipping, the later chapters'
                 "An ear test looks at up to n vertices. Naive ear clipping may make O(n²) "
                 "tests: O(n³) at worst.",
-                "Faster ear clipping retests only a slice's two neighbours: O(n) tests, "
-                "O(n²) in all.",
+                "Faster ear clipping keeps each vertex's ear status: a slice retests its two "
+                "neighbours, so O(n) tests, O(n²) in all.",
                 "Prune and search: one ear in O(n). On the random polygons plotted, every "
                 "count stays far under n²."),
                  Figure("growth")),
